@@ -1,0 +1,93 @@
+# fxrt: fixed-point ray tracer. Quiet unless V=1; all output under build/.
+#   make          host tool build/fxrt
+#   make test     every test; ends with "N passed, N failed"
+#   make demo     render the seed scenes (see README)
+#   make deps     install missing Debian packages
+
+BUILD   ?= build
+CC      ?= gcc
+ifeq ($(origin CC),default)
+CC      := gcc
+endif
+V       ?= 0
+Q       := $(if $(filter 1,$(V)),,@)
+
+WARN    := -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror
+HOSTCFLAGS ?= -O2 -g
+CFLAGS_H := $(WARN) $(HOSTCFLAGS) -D_POSIX_C_SOURCE=200809L -MMD -MP
+LDLIBS_H := -lpng -lm
+
+NUMBERS := q16 float double
+num_id   = $(if $(filter q16,$1),1,$(if $(filter float,$1),2,3))
+
+CORE_NUM := num color cam geom world render
+HOST_SRC := main scene image compare engine_select
+
+# --- host tool -----------------------------------------------------------
+HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o \
+            $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
+
+all: $(BUILD)/fxrt
+
+$(BUILD)/fxrt: $(HOST_OBJ)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(CFLAGS_H) -o $@ $^ $(LDLIBS_H)
+
+$(BUILD)/host/%.o: host/%.c
+	@mkdir -p $(@D)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(CFLAGS_H) -c $< -o $@
+
+$(BUILD)/host/fx.o: core/fx.c
+	@mkdir -p $(@D)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(CFLAGS_H) -c $< -o $@
+
+define number_rules
+$(BUILD)/host/$(1)/%.o: core/%.c
+	@mkdir -p $$(@D)
+	@echo "  CC $(1)  $$<"
+	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
+$(BUILD)/host/engine-$(1).o: host/engine.c
+	@mkdir -p $$(@D)
+	@echo "  CC $(1)  $$<"
+	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
+endef
+$(foreach n,$(NUMBERS),$(eval $(call number_rules,$(n))))
+
+# --- tests ---------------------------------------------------------------
+UNIT_TESTS := test_fx test_image test_compare test_scene
+TEST_BIN   := $(UNIT_TESTS:%=$(BUILD)/tests/%)
+test_fx_DEPS      := $(BUILD)/host/fx.o
+test_image_DEPS   := $(BUILD)/host/image.o
+test_compare_DEPS := $(BUILD)/host/compare.o $(BUILD)/host/image.o
+test_scene_DEPS   := $(BUILD)/host/scene.o
+
+$(BUILD)/tests/%.o: tests/%.c
+	@mkdir -p $(@D)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(CFLAGS_H) -Ihost -Icore -c $< -o $@
+
+.SECONDARY:
+.SECONDEXPANSION:
+$(BUILD)/tests/%: $(BUILD)/tests/%.o $$($$*_DEPS)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(CFLAGS_H) -o $@ $^ $(LDLIBS_H)
+
+SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/freestanding.sh
+
+test: deps $(BUILD)/fxrt $(TEST_BIN)
+	$(Q)BUILD=$(BUILD) tests/run.sh $(SUITES)
+
+# --- demo ----------------------------------------------------------------
+demo: deps $(BUILD)/fxrt
+	$(Q)BUILD=$(BUILD) tests/demo.sh
+
+deps:
+	$(Q)host/deps.sh
+
+clean:
+	rm -rf $(BUILD)
+
+.PHONY: all test demo deps clean
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

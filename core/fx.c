@@ -1,0 +1,192 @@
+/* fx: Q16.16 operations that are too large to inline. See fx.h for formats,
+ * rounding and the overflow policy. */
+#include "fx.h"
+
+/* Magnitude of an int64 as uint64, defined for INT64_MIN too. */
+static uint64_t fx_uabs64(int64_t v)
+{
+    return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+}
+
+/* Apply a sign to a rounded magnitude and saturate to the fx_t range. */
+static fx_t fx_signed_sat(uint64_t mag, bool negative)
+{
+    if (negative)
+        return mag >= (uint64_t)1 << 31 ? FX_MIN : -(fx_t)mag;
+    return mag > (uint64_t)INT32_MAX ? FX_MAX : (fx_t)mag;
+}
+
+/* round(num / den) for unsigned operands, den != 0, without overflowing
+ * num + den / 2. */
+static uint64_t fx_udiv_round(uint64_t num, uint64_t den)
+{
+    uint64_t q = num / den;
+    uint64_t r = num - q * den;
+    /* r >= den - r is r >= den/2 (ties up) computed without overflow. */
+    return q + (r >= den - r ? 1u : 0u);
+}
+
+fx_t fx_div(fx_t a, fx_t b)
+{
+    if (b == 0)
+        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    bool neg = (a < 0) != (b < 0);
+    uint64_t num = fx_uabs64(a) << FX_FRAC_BITS;
+    return fx_signed_sat(fx_udiv_round(num, fx_uabs64(b)), neg);
+}
+
+fx_t fx_recip(fx_t a)
+{
+    return fx_div(FX_ONE, a);
+}
+
+uint32_t fx_isqrt64(uint64_t n)
+{
+    /* Digit-by-digit (restoring) square root, two bits of n per step: no
+     * multiply, no divide, the same instruction count for every input. */
+    uint64_t rem = 0, root = 0;
+    for (int i = 0; i < 32; i++) {
+        rem = (rem << 2) | (n >> 62);
+        n <<= 2;
+        root <<= 1;
+        uint64_t trial = (root << 1) | 1u;
+        if (rem >= trial) {
+            rem -= trial;
+            root |= 1u;
+        }
+    }
+    return (uint32_t)root;
+}
+
+/* Round-to-nearest integer square root: floor root r rounds up when
+ * n > r^2 + r, because (r + 1/2)^2 = r^2 + r + 1/4 and n is an integer. */
+static uint64_t fx_isqrt64_round(uint64_t n)
+{
+    uint64_t r = fx_isqrt64(n);
+    return n > r * r + r ? r + 1 : r;
+}
+
+fx_t fxw_sqrt(fxw_t w)
+{
+    /* sqrt(w * 2^-32) * 2^16 = sqrt(w): the Q32.32 integer's integer root is
+     * the Q16.16 result directly. */
+    if (w <= 0)
+        return 0;
+    return fx_signed_sat(fx_isqrt64_round((uint64_t)w), false);
+}
+
+fx_t fx_sqrt(fx_t a)
+{
+    if (a <= 0)
+        return 0;
+    return fxw_sqrt(fxw_from_fx(a));
+}
+
+/* Leading zero count of a non-zero uint64. */
+static int fx_clz64(uint64_t v)
+{
+    return __builtin_clzll(v);
+}
+
+fx_t fxw_div(fxw_t a, fxw_t b)
+{
+    if (b == 0)
+        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    if (a == 0)
+        return 0;
+    bool neg = (a < 0) != (b < 0);
+    uint64_t n = fx_uabs64(a), d = fx_uabs64(b);
+    /* We want n * 2^16 / d. Shift n up as far as it goes (k <= 16) and take
+     * the remaining 16 - k bits off d. When d must lose bits, the result is
+     * either saturated anyway or d keeps >= 31 significant bits, so the
+     * quotient stays within 1 LSB. */
+    int k = fx_clz64(n) - 1; /* keep the top bit clear */
+    if (k > FX_FRAC_BITS)
+        k = FX_FRAC_BITS;
+    int dshift = FX_FRAC_BITS - k;
+    n <<= k;
+    if (dshift > 0) {
+        uint64_t dr = (d + ((uint64_t)1 << (dshift - 1))) >> dshift;
+        if (dr == 0)
+            return fx_signed_sat(UINT64_MAX, neg);
+        d = dr;
+    }
+    return fx_signed_sat(fx_udiv_round(n, d), neg);
+}
+
+/* cos(x) and sin(x)/x for x (radians, Q2.30, 0 <= x <= pi/2) by Taylor
+ * series in unsigned Q2.30. Terms shrink fast (x^2 / ((2k+1)(2k+2)) < 1.24,
+ * then < 0.21), so the loop ends after at most 14 terms; each term is
+ * rounded once. sin(x)/x rather than sin(x) keeps full relative precision
+ * for tiny angles, where x itself has few significant bits in Q2.30. The
+ * alternating partial sums may dip below zero; unsigned arithmetic is
+ * modular, so the final sums are still exact. */
+static void fx_cos_sinc_q30(uint32_t x, uint64_t *cos_out, uint64_t *sinc_out)
+{
+    const uint64_t one = (uint64_t)1 << 30;
+    uint64_t x2 = ((uint64_t)x * x + (one >> 1)) >> 30;
+    uint64_t c = 0, s = 0;
+    uint64_t tc = one, ts = one;
+    for (uint32_t k = 0; tc != 0 || ts != 0; k++) {
+        if (k & 1u) {
+            c -= tc;
+            s -= ts;
+        } else {
+            c += tc;
+            s += ts;
+        }
+        tc = fx_udiv_round(((tc * x2) + (one >> 1)) >> 30, (uint64_t)(2 * k + 1) * (2 * k + 2));
+        ts = fx_udiv_round(((ts * x2) + (one >> 1)) >> 30, (uint64_t)(2 * k + 2) * (2 * k + 3));
+    }
+    *cos_out = c;
+    *sinc_out = s;
+}
+
+/* pi / 180 in Q19.45 (about 2^39.2). */
+#define FX_DEG_TO_RAD_Q45 ((uint64_t)(3.14159265358979323846 / 180.0 * 35184372088832.0 + 0.5))
+
+fx_t fx_cot_deg(fx_t deg)
+{
+    if (deg <= 0)
+        return FX_MAX;
+    if (deg >= F16(90.0))
+        return 0;
+    /* x = deg * pi/180 in Q2.30 feeds the series only. */
+    uint32_t x = (uint32_t)(((uint64_t)deg * FX_DEG_TO_RAD_Q45 + ((uint64_t)1 << 30)) >> 31);
+    uint64_t c, sinc;
+    fx_cos_sinc_q30(x, &c, &sinc);
+    /* cot = cos / (sinc * k * deg) with k = pi/180 and deg in Q16.16:
+     * y = sinc * k in Q45 (< 2^40), q = cos * 2^33 / y = cos / (sinc k) in
+     * Q18 (24+ significant bits), then cot in Q16.16 = q * 2^14 / deg. */
+    const uint64_t k_hi = FX_DEG_TO_RAD_Q45 >> 20, k_lo = FX_DEG_TO_RAD_Q45 & 0xfffff;
+    uint64_t y = ((sinc * k_hi) >> 10) + ((sinc * k_lo + ((uint64_t)1 << 29)) >> 30); /* no 2^70 product */
+    uint64_t q = fx_udiv_round(c << 33, y);
+    return fx_signed_sat(fx_udiv_round(q << 14, (uint64_t)deg), false);
+}
+
+bool fx_normalize3(fx_t v[3])
+{
+    uint64_t m = fx_uabs64(v[0]) | fx_uabs64(v[1]) | fx_uabs64(v[2]);
+    if (m == 0)
+        return false;
+    /* Scale by a power of two so the largest magnitude lies in [2^29, 2^30):
+     * the direction is unchanged, the squared length stays below 3 * 2^60,
+     * and the length keeps 30 significant bits. */
+    int shift = fx_clz64(m) - 34;
+    int64_t s[3];
+    for (int i = 0; i < 3; i++)
+        s[i] = shift >= 0 ? v[i] * ((int64_t)1 << shift) : (int64_t)v[i] / ((int64_t)1 << -shift);
+    uint64_t len2 = 0;
+    for (int i = 0; i < 3; i++)
+        len2 += (uint64_t)(s[i] * s[i]);
+    uint64_t len = fx_isqrt64_round(len2); /* in [2^29, 2^31) */
+    /* inv = 2^61 / len < 2^32 keeps 31+ significant bits, and s * inv stays
+     * below 2^62; the component is then (s * inv) / 2^45 in Q16.16. */
+    uint64_t inv = fx_udiv_round((uint64_t)1 << 61, len);
+    for (int i = 0; i < 3; i++) {
+        uint64_t p = fx_uabs64(s[i]) * inv + ((uint64_t)1 << 44);
+        fx_t c = (fx_t)(p >> 45);
+        v[i] = s[i] < 0 ? -c : c;
+    }
+    return true;
+}

@@ -1,0 +1,154 @@
+/* fx: Q16.16 fixed-point scalars, the number format of fxrt.
+ *
+ * Format: fx_t is a signed 32-bit integer holding value * 65536, so the
+ * range is [-32768, 32768 - 2^-16] with a step (1 LSB) of 2^-16 = 1.53e-5.
+ * fxw_t is a signed 64-bit integer in Q32.32: the exact product of two fx_t,
+ * used to accumulate dot products before rounding once.
+ *
+ * Rounding: every operation that drops bits rounds to nearest, ties toward
+ * +infinity (add half an LSB, then floor). Error bounds are per function
+ * below and in docs/ACCURACY.md; tests/test_fx.c checks each against double.
+ *
+ * Overflow policy: SATURATE. A result outside the range becomes FX_MAX or
+ * FX_MIN; nothing wraps and no signed overflow happens in C. Division by
+ * zero saturates by the dividend's sign (0/0 = 0). The square root of a
+ * negative number is 0. A saturated result is a legal value, so callers
+ * that must tell the difference compare with FX_MAX / FX_MIN (scene loaders
+ * keep inputs inside a domain where the renderer never saturates except
+ * for far hits, see docs/ACCURACY.md).
+ */
+#ifndef FXRT_FX_H
+#define FXRT_FX_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+typedef int32_t fx_t;  /* Q16.16 */
+typedef int64_t fxw_t; /* Q32.32 */
+
+#define FX_FRAC_BITS 16
+#define FX_ONE ((fx_t)0x00010000)
+#define FX_HALF ((fx_t)0x00008000)
+#define FX_MAX ((fx_t)INT32_MAX)
+#define FX_MIN ((fx_t)INT32_MIN)
+#define FX_PI ((fx_t)205887) /* round(pi * 65536) */
+
+/* Literal for constant initialisers only: F16(1.5). Rounds to nearest.
+ * Never use it on run-time values (it is floating-point arithmetic). */
+#define F16(x) ((fx_t)((x) >= 0 ? (x) * 65536.0 + 0.5 : (x) * 65536.0 - 0.5))
+
+/* Exact conversions. fx_from_int saturates outside [-32768, 32767]. */
+static inline fx_t fx_from_int(int32_t i)
+{
+    if (i > 32767)
+        return FX_MAX;
+    if (i < -32768)
+        return FX_MIN;
+    return (fx_t)((uint32_t)i << FX_FRAC_BITS);
+}
+
+/* Clamp a 64-bit intermediate to the fx_t range. */
+static inline fx_t fx_sat64(int64_t v)
+{
+    if (v > INT32_MAX)
+        return FX_MAX;
+    if (v < INT32_MIN)
+        return FX_MIN;
+    return (fx_t)v;
+}
+
+/* a + b, a - b, -a: exact, saturating. */
+static inline fx_t fx_add(fx_t a, fx_t b)
+{
+    fx_t s;
+    if (__builtin_add_overflow(a, b, &s))
+        return a < 0 ? FX_MIN : FX_MAX;
+    return s;
+}
+static inline fx_t fx_sub(fx_t a, fx_t b)
+{
+    fx_t s;
+    if (__builtin_sub_overflow(a, b, &s))
+        return a < 0 ? FX_MIN : FX_MAX;
+    return s;
+}
+static inline fx_t fx_neg(fx_t a)
+{
+    return a == FX_MIN ? FX_MAX : -a;
+}
+static inline fx_t fx_abs(fx_t a)
+{
+    return a < 0 ? fx_neg(a) : a;
+}
+
+/* a * b, |error| <= 0.5 LSB, saturating. The 64-bit product is exact. */
+static inline fx_t fx_mul(fx_t a, fx_t b)
+{
+    int64_t p = (int64_t)a * b;
+    /* >> of a negative int64 is an arithmetic shift on every compiler we
+     * support (gcc, clang); it floors, and the +half turns that into
+     * round-to-nearest. */
+    return fx_sat64((p + FX_HALF) >> FX_FRAC_BITS);
+}
+
+/* a * i for an integer i: exact, saturating. */
+static inline fx_t fx_mul_int(fx_t a, int32_t i)
+{
+    return fx_sat64((int64_t)a * i);
+}
+
+/* Q32.32 -> Q16.16, |error| <= 0.5 LSB, saturating. */
+static inline fx_t fxw_round(fxw_t w)
+{
+    if (w > INT64_MAX - FX_HALF)
+        return FX_MAX;
+    return fx_sat64((w + FX_HALF) >> FX_FRAC_BITS);
+}
+
+/* Q16.16 -> Q32.32, exact. */
+static inline fxw_t fxw_from_fx(fx_t a)
+{
+    return (fxw_t)a * FX_ONE;
+}
+
+/* a + b in Q32.32, saturating at the int64 range. */
+static inline fxw_t fxw_add(fxw_t a, fxw_t b)
+{
+    fxw_t s;
+    if (__builtin_add_overflow(a, b, &s))
+        return a < 0 ? INT64_MIN : INT64_MAX;
+    return s;
+}
+
+/* a / b, |error| <= 0.5 LSB, saturating; x/0 saturates by sign, 0/0 = 0. */
+fx_t fx_div(fx_t a, fx_t b);
+
+/* sqrt(a), |error| <= 0.5 LSB; sqrt of a negative value is 0. */
+fx_t fx_sqrt(fx_t a);
+
+/* floor(sqrt(n)) for any 64-bit unsigned n (exact). */
+uint32_t fx_isqrt64(uint64_t n);
+
+/* sqrt of a non-negative Q32.32 value as Q16.16, |error| <= 0.5 LSB,
+ * saturating at FX_MAX; negative input gives 0. */
+fx_t fxw_sqrt(fxw_t w);
+
+/* Q32.32 / Q32.32 as Q16.16, |error| <= 1 LSB, saturating; x/0 saturates
+ * by sign, 0/0 = 0. */
+fx_t fxw_div(fxw_t a, fxw_t b);
+
+/* 1 / a, |error| <= 0.5 LSB, saturating (1/0 = FX_MAX). */
+fx_t fx_recip(fx_t a);
+
+/* cot(deg degrees) for deg in (0, 90]: |error| <= 1 LSB + 1e-7 relative.
+ * Outside (0, 90] it saturates: deg <= 0 gives FX_MAX, deg > 90 gives 0.
+ * Computed from sine and cosine series in Q2.30, so it needs no tables. */
+fx_t fx_cot_deg(fx_t deg);
+
+/* Scale (x, y, z) to unit length in place, each component within 1 LSB of
+ * the exact result for any non-zero input (the vector is first shifted up
+ * to use the full 32 bits, so short vectors normalise as well as long ones).
+ * Returns false and leaves the vector unchanged when it is zero. */
+bool fx_normalize3(fx_t v[3]);
+
+#endif

@@ -1,0 +1,52 @@
+/* fxrt build configuration: every option lives here, documented where it is
+ * defined and in the README table. Override with -D or from a generated
+ * scene header included before this one. */
+#ifndef FXRT_CONFIG_H
+#define FXRT_CONFIG_H
+
+/* FXRT_NUMBER selects the renderer's number type:
+ *   1 = FXRT_Q16    Q16.16 fixed point (the product)
+ *   2 = FXRT_FLOAT  IEEE binary32 (what a user would otherwise write)
+ *   3 = FXRT_DOUBLE IEEE binary64 (the reference) */
+#define FXRT_Q16 1
+#define FXRT_FLOAT 2
+#define FXRT_DOUBLE 3
+#ifndef FXRT_NUMBER
+#define FXRT_NUMBER FXRT_Q16
+#endif
+#if FXRT_NUMBER != FXRT_Q16 && FXRT_NUMBER != FXRT_FLOAT && FXRT_NUMBER != FXRT_DOUBLE
+#error "FXRT_NUMBER must be FXRT_Q16 (1), FXRT_FLOAT (2) or FXRT_DOUBLE (3)"
+#endif
+
+/* World capacity per primitive kind (a static array each). 0 removes the
+ * kind from the build: its intersection code is not compiled. */
+#ifndef FXRT_MAX_PLANES
+#define FXRT_MAX_PLANES 64
+#endif
+#ifndef FXRT_MAX_SPHERES
+#define FXRT_MAX_SPHERES 64
+#endif
+#ifndef FXRT_MAX_TRIANGLES
+#define FXRT_MAX_TRIANGLES 64
+#endif
+#ifndef FXRT_MAX_BOXES
+#define FXRT_MAX_BOXES 64
+#endif
+
+/* The documented input domain (scene units). Inside it, no intermediate of
+ * the Q16.16 renderer overflows; scene loaders reject values outside it.
+ *   FXRT_COORD_LIMIT   |coordinate| of any point, eye or corner
+ *   FXRT_RADIUS_LIMIT  sphere radius, also the orthographic scale limit */
+#ifndef FXRT_COORD_LIMIT
+#define FXRT_COORD_LIMIT 8192
+#endif
+#ifndef FXRT_RADIUS_LIMIT
+#define FXRT_RADIUS_LIMIT 4096
+#endif
+
+/* Largest image width or height in pixels. */
+#ifndef FXRT_MAX_DIM
+#define FXRT_MAX_DIM 4096
+#endif
+
+#endif

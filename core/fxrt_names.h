@@ -1,0 +1,36 @@
+/* The host links the renderer once per number type into one program, so
+ * with FXRT_MULTI defined every external symbol whose code depends on the
+ * number type gets the type's suffix (render_row -> render_row_q16). The
+ * Q16.16 scalar library (fx_*) is the same in every build and keeps its
+ * names. Firmware builds one number type and leaves the names alone. */
+#ifndef FXRT_NAMES_H
+#define FXRT_NAMES_H
+
+#ifdef FXRT_MULTI
+#if FXRT_NUMBER == FXRT_Q16
+#define FXRT_SYM(name) name##_q16
+#elif FXRT_NUMBER == FXRT_FLOAT
+#define FXRT_SYM(name) name##_float
+#else
+#define FXRT_SYM(name) name##_double
+#endif
+#define num_cot_deg FXRT_SYM(num_cot_deg)
+#define color_to_rgb8 FXRT_SYM(color_to_rgb8)
+#define cam_setup FXRT_SYM(cam_setup)
+#define cam_strerror FXRT_SYM(cam_strerror)
+#define cam_ray FXRT_SYM(cam_ray)
+#define geom_plane_make FXRT_SYM(geom_plane_make)
+#define geom_sphere_make FXRT_SYM(geom_sphere_make)
+#define geom_triangle_make FXRT_SYM(geom_triangle_make)
+#define geom_box_make FXRT_SYM(geom_box_make)
+#define geom_plane_hit FXRT_SYM(geom_plane_hit)
+#define geom_sphere_hit FXRT_SYM(geom_sphere_hit)
+#define geom_triangle_hit FXRT_SYM(geom_triangle_hit)
+#define geom_box_hit FXRT_SYM(geom_box_hit)
+#define world_init FXRT_SYM(world_init)
+#define world_hit FXRT_SYM(world_hit)
+#define render_pixel FXRT_SYM(render_pixel)
+#define render_row FXRT_SYM(render_row)
+#endif
+
+#endif

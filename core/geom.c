@@ -1,0 +1,204 @@
+/* geom: ray intersection tests. Only the kinds the build's world can hold
+ * (FXRT_MAX_<KIND> > 0) are compiled, so a sphere-only firmware carries no
+ * plane, triangle or box code. */
+#include "geom.h"
+
+static inline num_t geom_axis(vec3_t v, int i)
+{
+    return i == 0 ? v.x : (i == 1 ? v.y : v.z);
+}
+
+static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
+{
+    c->color = color;
+    c->rgb = color_to_rgb8(color);
+    c->id = id;
+}
+
+/* Unit normal of the plane spanned by a and b, or false when they are
+ * parallel. In Q16.16 the cross product is formed exactly in Q32.32 and
+ * shifted down before rounding, so long edges (whose cross product exceeds
+ * the Q16.16 range) keep their direction. */
+static bool geom_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    numw_t c[3] = {numw_sub(numw_mul(a.y, b.z), numw_mul(a.z, b.y)),
+                   numw_sub(numw_mul(a.z, b.x), numw_mul(a.x, b.z)),
+                   numw_sub(numw_mul(a.x, b.y), numw_mul(a.y, b.x))};
+    uint64_t m = 0;
+    for (int i = 0; i < 3; i++)
+        m |= c[i] < 0 ? (uint64_t)0 - (uint64_t)c[i] : (uint64_t)c[i];
+    int shift = 16; /* Q32.32 -> Q16.16 */
+    while ((m >> shift) >= ((uint64_t)1 << 30))
+        shift++;
+    fx_t v[3];
+    for (int i = 0; i < 3; i++)
+        v[i] = (fx_t)(c[i] / ((int64_t)1 << shift));
+    *n = vec3_make(v[0], v[1], v[2]);
+#else
+    *n = vec3_cross(a, b);
+#endif
+    return vec3_normalize(n);
+}
+
+#if FXRT_MAX_PLANES > 0
+bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id)
+{
+    p->a = point;
+    p->n = normal;
+    geom_common_init(&p->obj, color, id);
+    return vec3_normalize(&p->n);
+}
+
+bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t)
+{
+    /* t = (a - o) . n / (d . n). Both dot products stay wide, so the sign
+     * tests are exact and the quotient is rounded once. */
+    numw_t den = vec3_dotw(ray->d, p->n);
+    numw_t num = vec3_dotw(vec3_sub(p->a, ray->o), p->n);
+    if (den == 0 || num == 0 || (num < 0) != (den < 0))
+        return false;
+    num_t tt = numw_div(num, den);
+    if (!(tt > NUM_ZERO))
+        return false;
+    *t = tt;
+    return true;
+}
+#endif
+
+#if FXRT_MAX_SPHERES > 0
+bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t color, uint16_t id)
+{
+    s->center = center;
+    s->radius = radius;
+    s->radius2 = numw_mul(radius, radius);
+    geom_common_init(&s->obj, color, id);
+    return radius > NUM_ZERO;
+}
+
+bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
+{
+    /* Numerically stable form: b = (c - o) . d is the t of the point on the
+     * ray closest to the centre, q = (c - o) - b d its offset from the
+     * centre, and the half chord is sqrt(r^2 - |q|^2). This avoids b^2 - ac,
+     * whose two large terms cancel for distant spheres. */
+    vec3_t oc = vec3_sub(s->center, ray->o);
+    num_t b = vec3_dot(oc, ray->d);
+    vec3_t q = vec3_sub(oc, vec3_scale(ray->d, b));
+    numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
+    if (disc < 0)
+        return false;
+    num_t h = numw_sqrt(disc);
+    num_t t0 = num_sub(b, h);
+    if (t0 > NUM_ZERO) {
+        *t = t0;
+        return true;
+    }
+    num_t t1 = num_add(b, h); /* origin inside the sphere */
+    if (t1 > NUM_ZERO) {
+        *t = t1;
+        return true;
+    }
+    return false;
+}
+#endif
+
+#if FXRT_MAX_TRIANGLES > 0
+bool geom_triangle_make(geom_triangle_t *tr, vec3_t a, vec3_t b, vec3_t c, color_t color, uint16_t id)
+{
+    tr->a = a;
+    tr->b = b;
+    tr->c = c;
+    geom_common_init(&tr->obj, color, id);
+    tr->degenerate = !geom_unit_cross(vec3_sub(b, a), vec3_sub(c, a), &tr->n);
+    return true;
+}
+
+/* Lexicographic order of points, to give each edge one canonical direction. */
+static bool geom_point_less(vec3_t p, vec3_t q)
+{
+    if (p.x != q.x)
+        return p.x < q.x;
+    if (p.y != q.y)
+        return p.y < q.y;
+    return p.z < q.z;
+}
+
+/* Which side of the edge p -> q the ray passes: d . ((p - o) x (q - o)),
+ * evaluated as (p - o) . ((q - o) x d). It is always computed with the edge
+ * in canonical order and negated for the other order, so two triangles
+ * sharing an edge see exactly opposite values: a ray cannot slip between
+ * them (watertight), whatever the rounding. */
+static numw_t geom_edge(vec3_t p, vec3_t q, const ray_t *ray)
+{
+    bool swap = geom_point_less(q, p);
+    vec3_t first = swap ? q : p, second = swap ? p : q;
+    numw_t e = vec3_dotw(vec3_sub(first, ray->o), vec3_cross(vec3_sub(second, ray->o), ray->d));
+    return swap ? numw_sub(numw_from(NUM_ZERO), e) : e;
+}
+
+bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
+{
+    if (tr->degenerate)
+        return false;
+    numw_t e0 = geom_edge(tr->a, tr->b, ray);
+    numw_t e1 = geom_edge(tr->b, tr->c, ray);
+    numw_t e2 = geom_edge(tr->c, tr->a, ray);
+    /* Inside when all three agree in sign (either winding; a zero means the
+     * ray grazes that edge and counts as a hit). */
+    bool neg = e0 < 0 || e1 < 0 || e2 < 0;
+    bool pos = e0 > 0 || e1 > 0 || e2 > 0;
+    if (neg && pos)
+        return false;
+    numw_t den = vec3_dotw(ray->d, tr->n);
+    numw_t num = vec3_dotw(vec3_sub(tr->a, ray->o), tr->n);
+    if (den == 0 || num == 0 || (num < 0) != (den < 0))
+        return false;
+    num_t tt = numw_div(num, den);
+    if (!(tt > NUM_ZERO))
+        return false;
+    *t = tt;
+    return true;
+}
+#endif
+
+#if FXRT_MAX_BOXES > 0
+bool geom_box_make(geom_box_t *b, vec3_t min, vec3_t max, color_t color, uint16_t id)
+{
+    b->min = min;
+    b->max = max;
+    geom_common_init(&b->obj, color, id);
+    return min.x <= max.x && min.y <= max.y && min.z <= max.z;
+}
+
+bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t)
+{
+    /* Slabs: the ray is inside the box for t in [tnear, tfar]. A direction
+     * component of zero cannot divide: the ray is then inside that slab for
+     * all t or for none. Near-zero components saturate the quotients to
+     * +-NUM_MAX, which orders correctly. */
+    num_t tnear = num_neg(NUM_MAX), tfar = NUM_MAX;
+    for (int i = 0; i < 3; i++) {
+        num_t o = geom_axis(ray->o, i), d = geom_axis(ray->d, i);
+        num_t lo = geom_axis(b->min, i), hi = geom_axis(b->max, i);
+        if (d == NUM_ZERO) {
+            if (o < lo || o > hi)
+                return false;
+            continue;
+        }
+        num_t t1 = num_div(num_sub(lo, o), d);
+        num_t t2 = num_div(num_sub(hi, o), d);
+        if (t1 > t2) {
+            num_t tmp = t1;
+            t1 = t2;
+            t2 = tmp;
+        }
+        tnear = num_max(tnear, t1);
+        tfar = num_min(tfar, t2);
+    }
+    if (tnear > tfar || !(tfar > NUM_ZERO))
+        return false;
+    *t = tnear > NUM_ZERO ? tnear : tfar; /* tnear <= 0: origin inside */
+    return true;
+}
+#endif

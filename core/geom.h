@@ -1,0 +1,63 @@
+/* geom: the primitives and their ray intersection tests.
+ *
+ * Each test returns true and the ray parameter t of the nearest hit with
+ * t > 0 (in Q16.16: t >= 1 LSB), or false. d is unit length, so t is a
+ * distance in scene units. A hit beyond the number range saturates to
+ * NUM_MAX and still counts: it is a far hit, not a miss. Objects store
+ * what the tests need precomputed (edges, squared radius) so that the
+ * per-ray work is only per-ray work.
+ */
+#ifndef FXRT_GEOM_H
+#define FXRT_GEOM_H
+
+#include "color.h"
+#include "ray.h"
+
+typedef enum { GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX } geom_kind_t;
+
+/* What every object carries besides its shape. */
+typedef struct {
+    color_t color;
+    rgb8_t rgb;  /* color as output pixels, computed once */
+    uint16_t id; /* position in the scene file: ties in t go to the lower id */
+} geom_common_t;
+
+typedef struct {
+    vec3_t a; /* a point on the plane */
+    vec3_t n; /* unit normal */
+    geom_common_t obj;
+} geom_plane_t;
+
+typedef struct {
+    vec3_t center;
+    num_t radius;
+    numw_t radius2; /* radius^2, exact (Q32.32) */
+    geom_common_t obj;
+} geom_sphere_t;
+
+typedef struct {
+    vec3_t a, b, c;  /* vertices (edge tests use them directly, see geom.c) */
+    vec3_t n;        /* unit normal, zero when degenerate */
+    bool degenerate; /* collinear vertices: never hit */
+    geom_common_t obj;
+} geom_triangle_t;
+
+typedef struct {
+    vec3_t min, max; /* lbf and run corners, min <= max per axis */
+    geom_common_t obj;
+} geom_box_t;
+
+/* Constructors fill the precomputed fields. They return false for
+ * degenerate input the renderer cannot use (a zero normal, radius <= 0,
+ * min > max); a degenerate (collinear) triangle is accepted and never hit. */
+bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id);
+bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t color, uint16_t id);
+bool geom_triangle_make(geom_triangle_t *t, vec3_t a, vec3_t b, vec3_t c, color_t color, uint16_t id);
+bool geom_box_make(geom_box_t *b, vec3_t min, vec3_t max, color_t color, uint16_t id);
+
+bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t);
+bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t);
+bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t);
+bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t);
+
+#endif

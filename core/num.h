@@ -1,0 +1,124 @@
+/* num: the renderer's arithmetic, defined once per number type.
+ *
+ * The ray, camera, geometry, world and render code is written only in terms
+ * of num_t and the operations below (the Opus/Speex fixed_generic model).
+ * Building it with FXRT_NUMBER = FXRT_Q16, FXRT_FLOAT or FXRT_DOUBLE gives
+ * the product, the float build a user would otherwise write, and the double
+ * reference: the same algorithm, so their differences measure precision.
+ *
+ *   num_t    scalar: Q16.16 / float / double
+ *   numw_t   wide accumulator: exact Q32.32 products / float / double
+ *
+ * Q16.16 operations round to nearest and saturate (see fx.h). Float and
+ * double operations are plain IEEE arithmetic.
+ */
+#ifndef FXRT_NUM_H
+#define FXRT_NUM_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "fxrt_config.h"
+#include "fx.h"
+#include "fxrt_names.h"
+
+#if FXRT_NUMBER == FXRT_Q16
+
+typedef fx_t num_t;
+typedef fxw_t numw_t;
+#define NUM_NAME "q16"
+#define NUM(x) F16(x) /* constant literal */
+#define NUM_ZERO 0
+#define NUM_ONE FX_ONE
+#define NUM_MAX FX_MAX
+
+static inline num_t num_add(num_t a, num_t b) { return fx_add(a, b); }
+static inline num_t num_sub(num_t a, num_t b) { return fx_sub(a, b); }
+static inline num_t num_neg(num_t a) { return fx_neg(a); }
+static inline num_t num_mul(num_t a, num_t b) { return fx_mul(a, b); }
+static inline num_t num_div(num_t a, num_t b) { return fx_div(a, b); }
+static inline num_t num_sqrt(num_t a) { return fx_sqrt(a); }
+static inline num_t num_from_int(int32_t i) { return fx_from_int(i); }
+/* a * i, exact for Q16.16 (the integer factor adds no rounding). */
+static inline num_t num_mul_int(num_t a, int32_t i) { return fx_mul_int(a, i); }
+/* a / 2^k, rounded to nearest. */
+static inline num_t num_half(num_t a) { return (fx_t)(((int64_t)a + 1) >> 1); }
+static inline num_t num_cot_deg(num_t deg) { return fx_cot_deg(deg); }
+
+static inline numw_t numw_mul(num_t a, num_t b) { return (fxw_t)a * b; }
+static inline numw_t numw_add(numw_t a, numw_t b) { return fxw_add(a, b); }
+static inline numw_t numw_sub(numw_t a, numw_t b) { return fxw_add(a, b == INT64_MIN ? INT64_MAX : -b); }
+static inline numw_t numw_from(num_t a) { return fxw_from_fx(a); }
+static inline num_t numw_round(numw_t w) { return fxw_round(w); }
+static inline num_t numw_sqrt(numw_t w) { return fxw_sqrt(w); }
+static inline num_t numw_div(numw_t a, numw_t b) { return fxw_div(a, b); }
+/* a * m / d kept wide (Q32.32, |error| <= 0.5 LSB of Q32.32), d > 0. Used
+ * for per-pixel steps that must not accumulate rounding across a row. */
+static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d)
+{
+    int64_t n = (int64_t)a * m * FX_ONE; /* |a| < 2^31, |m| <= 2^13: fits */
+    int64_t h = d / 2;
+    return (n >= 0 ? n + h : n - h) / d;
+}
+/* w * i, exact, saturating. */
+static inline numw_t numw_mul_int(numw_t w, int32_t i)
+{
+    numw_t p;
+    if (__builtin_mul_overflow(w, (int64_t)i, &p))
+        return (w < 0) != (i < 0) ? INT64_MIN : INT64_MAX;
+    return p;
+}
+
+#else /* float or double */
+
+#if FXRT_NUMBER == FXRT_FLOAT
+typedef float num_t;
+#define NUM_NAME "float"
+#define NUM(x) ((float)(x))
+#define NUM_MAX __FLT_MAX__
+static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrtf(a) : 0.0f; }
+#else
+typedef double num_t;
+#define NUM_NAME "double"
+#define NUM(x) ((double)(x))
+#define NUM_MAX __DBL_MAX__
+static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrt(a) : 0.0; }
+#endif
+typedef num_t numw_t;
+#define NUM_ZERO NUM(0)
+#define NUM_ONE NUM(1)
+
+static inline num_t num_add(num_t a, num_t b) { return a + b; }
+static inline num_t num_sub(num_t a, num_t b) { return a - b; }
+static inline num_t num_neg(num_t a) { return -a; }
+static inline num_t num_mul(num_t a, num_t b) { return a * b; }
+/* Division by zero follows the Q16.16 rule (saturate by sign, 0/0 = 0) so
+ * that all three builds agree on degenerate input, and no build makes NaN. */
+static inline num_t num_div(num_t a, num_t b)
+{
+    if (b == 0)
+        return a > 0 ? NUM_MAX : (a < 0 ? -NUM_MAX : NUM_ZERO);
+    return a / b;
+}
+static inline num_t num_from_int(int32_t i) { return (num_t)i; }
+static inline num_t num_mul_int(num_t a, int32_t i) { return a * (num_t)i; }
+static inline num_t num_half(num_t a) { return a * NUM(0.5); }
+num_t num_cot_deg(num_t deg);
+
+static inline numw_t numw_mul(num_t a, num_t b) { return a * b; }
+static inline numw_t numw_add(numw_t a, numw_t b) { return a + b; }
+static inline numw_t numw_sub(numw_t a, numw_t b) { return a - b; }
+static inline numw_t numw_from(num_t a) { return a; }
+static inline num_t numw_round(numw_t w) { return w; }
+static inline num_t numw_sqrt(numw_t w) { return num_sqrt(w); }
+static inline num_t numw_div(numw_t a, numw_t b) { return num_div(a, b); }
+static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d) { return a * (num_t)m / (num_t)d; }
+static inline numw_t numw_mul_int(numw_t w, int32_t i) { return w * (num_t)i; }
+
+#endif
+
+static inline num_t num_abs(num_t a) { return a < NUM_ZERO ? num_neg(a) : a; }
+static inline num_t num_min(num_t a, num_t b) { return a < b ? a : b; }
+static inline num_t num_max(num_t a, num_t b) { return a > b ? a : b; }
+
+#endif

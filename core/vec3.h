@@ -1,0 +1,82 @@
+/* vec3: 3-vectors of num_t. Dot and cross products accumulate the exact
+ * products in numw_t and round once, so in Q16.16 a dot product is within
+ * 0.5 LSB and a cross product component within 0.5 LSB of exact. */
+#ifndef FXRT_VEC3_H
+#define FXRT_VEC3_H
+
+#include "num.h"
+
+typedef struct {
+    num_t x, y, z;
+} vec3_t;
+
+static inline vec3_t vec3_make(num_t x, num_t y, num_t z)
+{
+    vec3_t v = {x, y, z};
+    return v;
+}
+static inline vec3_t vec3_add(vec3_t a, vec3_t b)
+{
+    return vec3_make(num_add(a.x, b.x), num_add(a.y, b.y), num_add(a.z, b.z));
+}
+static inline vec3_t vec3_sub(vec3_t a, vec3_t b)
+{
+    return vec3_make(num_sub(a.x, b.x), num_sub(a.y, b.y), num_sub(a.z, b.z));
+}
+static inline vec3_t vec3_neg(vec3_t a)
+{
+    return vec3_make(num_neg(a.x), num_neg(a.y), num_neg(a.z));
+}
+/* a * s, each component within 0.5 LSB. */
+static inline vec3_t vec3_scale(vec3_t a, num_t s)
+{
+    return vec3_make(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s));
+}
+/* a * i for an integer i, exact in Q16.16. */
+static inline vec3_t vec3_scale_int(vec3_t a, int32_t i)
+{
+    return vec3_make(num_mul_int(a.x, i), num_mul_int(a.y, i), num_mul_int(a.z, i));
+}
+/* a . b, unrounded (Q32.32 in the fixed-point build). */
+static inline numw_t vec3_dotw(vec3_t a, vec3_t b)
+{
+    return numw_add(numw_add(numw_mul(a.x, b.x), numw_mul(a.y, b.y)), numw_mul(a.z, b.z));
+}
+/* a . b rounded once. */
+static inline num_t vec3_dot(vec3_t a, vec3_t b)
+{
+    return numw_round(vec3_dotw(a, b));
+}
+/* a x b, each component rounded once. */
+static inline vec3_t vec3_cross(vec3_t a, vec3_t b)
+{
+    return vec3_make(numw_round(numw_sub(numw_mul(a.y, b.z), numw_mul(a.z, b.y))),
+                     numw_round(numw_sub(numw_mul(a.z, b.x), numw_mul(a.x, b.z))),
+                     numw_round(numw_sub(numw_mul(a.x, b.y), numw_mul(a.y, b.x))));
+}
+/* |a|, within 0.5 LSB (the squared length is exact before the root). */
+static inline num_t vec3_len(vec3_t a)
+{
+    return numw_sqrt(vec3_dotw(a, a));
+}
+/* a / |a|: each component within 1 LSB in Q16.16. Returns false (and leaves
+ * *a unchanged) for the zero vector. */
+static inline bool vec3_normalize(vec3_t *a)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    fx_t v[3] = {a->x, a->y, a->z};
+    if (!fx_normalize3(v))
+        return false;
+    *a = vec3_make(v[0], v[1], v[2]);
+    return true;
+#else
+    num_t len = vec3_len(*a);
+    if (len == 0)
+        return false;
+    num_t inv = num_div(NUM_ONE, len);
+    *a = vec3_scale(*a, inv);
+    return true;
+#endif
+}
+
+#endif

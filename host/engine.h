@@ -1,0 +1,30 @@
+/* engine: the renderer in each number type, behind one double-based
+ * interface. host/engine.c is compiled once per number type. */
+#ifndef FXRT_HOST_ENGINE_H
+#define FXRT_HOST_ENGINE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "scene.h"
+
+typedef enum { ENGINE_Q16, ENGINE_FLOAT, ENGINE_DOUBLE } engine_number_t;
+
+/* "q16", "float", "double" -> number type; returns -1 for anything else. */
+int engine_number_parse(const char *s, engine_number_t *out);
+const char *engine_number_name(engine_number_t n);
+
+/* Render the scene at width x height into rgb (3 * width * height bytes,
+ * top row first). Returns 0, or -1 with "PATH: ..." in err (for example a
+ * camera that the number type cannot represent at this size). */
+int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height,
+                  uint8_t *rgb, char *err, size_t errlen);
+
+/* The same, one build each (engine.c compiled three times). */
+int engine_render_q16(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
+                      char *err, size_t errlen);
+int engine_render_float(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
+                        char *err, size_t errlen);
+int engine_render_double(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
+                         char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,821 @@
+/* Scene files: a line-based text format, parsed and validated here so that
+ * every renderer build (Q16.16, float, double) receives the same, already
+ * checked values. The parser is meant to survive arbitrary bytes (it is
+ * fuzzed): it never reads past len, never relies on a terminating NUL and
+ * reports the first problem it finds as "NAME:LINE: message".
+ *
+ * Format, one statement per line, '#' starts a comment:
+ *   image W H
+ *   background R G B
+ *   camera perspective  eye X Y Z gaze X Y Z up X Y Z fov DEGREES
+ *   camera orthographic eye X Y Z gaze X Y Z up X Y Z scale HEIGHT
+ *   plane    point X Y Z normal X Y Z color R G B
+ *   sphere   center X Y Z radius R color R G B
+ *   triangle a X Y Z b X Y Z c X Y Z color R G B
+ *   box      min X Y Z max X Y Z color R G B
+ * Named fields may come in any order; each is required exactly once. */
+#include "scene.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Files above this size are refused before parsing: a scene of this format
+ * is at most a few hundred lines, anything bigger is a mistake (wrong file)
+ * and should not cost memory or time. */
+#define SCENE_MAX_FILE_BYTES (1024L * 1024L)
+
+/* A line of at most SCENE_MAX_LINE bytes holds at most this many tokens
+ * (each token needs one byte plus one separator). */
+#define SCENE_MAX_TOKENS (SCENE_MAX_LINE / 2 + 1)
+
+/* Tokens quoted in messages are cut to this many bytes, so that a 1000-byte
+ * token does not drown the message. */
+#define SCENE_QUOTE_MAX 40
+
+/* Smallest nonzero magnitude Q16.16 can hold; smaller values would silently
+ * become 0 in the fixed-point build, so they are rejected for all builds. */
+#define SCENE_Q16_EPS (1.0 / 65536.0)
+
+/* Parallel test for up vs gaze: |g x u| <= eps * |g| * |u|. */
+#define SCENE_PARALLEL_EPS 1e-6
+
+#if defined(__GNUC__) || defined(__clang__)
+#define SCENE_PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define SCENE_PRINTF(f, a)
+#endif
+
+/* A token is a view into the text (which is not NUL-terminated). */
+typedef struct {
+    const char *s;
+    size_t n;
+} scene_tok_t;
+
+/* What kind of value a field holds; decides count and range checks. */
+typedef enum {
+    SCENE_F_POINT,  /* 3 coordinates, |v| <= FXRT_COORD_LIMIT */
+    SCENE_F_DIR,    /* 3 components, |v| <= FXRT_COORD_LIMIT, nonzero length */
+    SCENE_F_COLOR,  /* 3 components in 0..1 */
+    SCENE_F_RADIUS, /* 1 value in (0, FXRT_RADIUS_LIMIT] */
+    SCENE_F_FOV,    /* 1 value in (0, 180) degrees */
+    SCENE_F_SCALE   /* 1 value in (0, FXRT_RADIUS_LIMIT] */
+} scene_ftype_t;
+
+typedef struct {
+    const char *name;
+    scene_ftype_t type;
+} scene_field_t;
+
+#define SCENE_MAX_FIELDS 4
+
+/* The fields of one statement, in the order they are stored and in which
+ * missing ones are reported. */
+typedef struct {
+    const char *label; /* used in messages: "sphere", "perspective camera" */
+    int nfields;
+    scene_field_t field[SCENE_MAX_FIELDS];
+} scene_shape_t;
+
+static const scene_shape_t scene_shape_plane = {
+    "plane", 3, {{"point", SCENE_F_POINT}, {"normal", SCENE_F_DIR}, {"color", SCENE_F_COLOR}}};
+static const scene_shape_t scene_shape_sphere = {
+    "sphere", 3, {{"center", SCENE_F_POINT}, {"radius", SCENE_F_RADIUS}, {"color", SCENE_F_COLOR}}};
+static const scene_shape_t scene_shape_triangle = {
+    "triangle", 4,
+    {{"a", SCENE_F_POINT}, {"b", SCENE_F_POINT}, {"c", SCENE_F_POINT}, {"color", SCENE_F_COLOR}}};
+static const scene_shape_t scene_shape_box = {
+    "box", 3, {{"min", SCENE_F_POINT}, {"max", SCENE_F_POINT}, {"color", SCENE_F_COLOR}}};
+static const scene_shape_t scene_shape_persp = {
+    "perspective camera", 4,
+    {{"eye", SCENE_F_POINT}, {"gaze", SCENE_F_DIR}, {"up", SCENE_F_DIR}, {"fov", SCENE_F_FOV}}};
+static const scene_shape_t scene_shape_ortho = {
+    "orthographic camera", 4,
+    {{"eye", SCENE_F_POINT}, {"gaze", SCENE_F_DIR}, {"up", SCENE_F_DIR}, {"scale", SCENE_F_SCALE}}};
+
+/* Every field name of every statement. A run of values ends at any of
+ * them, so "center 0 0 radius 1" reports "got 2" rather than trying to read
+ * "radius" as a number. */
+static const char *const scene_all_fields[] = {"point", "normal", "center", "radius", "a",
+                                                "b",     "c",      "min",    "max",    "color",
+                                                "eye",   "gaze",   "up",     "fov",    "scale"};
+
+/* Per object kind (indexed by scene_kind_t): names and capacities. */
+static const char *const scene_kind_plural[] = {"planes", "spheres", "triangles", "boxes"};
+static const char *const scene_kind_macro[] = {"FXRT_MAX_PLANES", "FXRT_MAX_SPHERES",
+                                               "FXRT_MAX_TRIANGLES", "FXRT_MAX_BOXES"};
+static const int scene_kind_capacity[] = {FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES,
+                                          FXRT_MAX_BOXES};
+
+/* Values read for one field, with their tokens so messages can quote what
+ * the user wrote (e.g. "1e99999" rather than "inf"). */
+typedef struct {
+    int seen;
+    double v[3];
+    scene_tok_t t[3];
+} scene_fval_t;
+
+typedef struct {
+    const char *name; /* file name for messages */
+    char *err;
+    size_t errlen;
+    int line; /* current line, 1-based */
+    scene_t *out;
+    int camera_line, image_line, background_line; /* 0 = not seen yet */
+    int kind_count[4];
+    int ntok;
+    scene_tok_t tok[SCENE_MAX_TOKENS];
+} scene_parser_t;
+
+/* A token copied for quoting in a message, shortened if very long. */
+typedef struct {
+    char s[SCENE_QUOTE_MAX + 4];
+} scene_quote_t;
+
+SCENE_PRINTF(3, 4)
+static void scene_errf(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+
+    if (err == NULL || errlen == 0)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+/* Write "NAME:LINE: message" and return -1, so callers can `return
+ * scene_fail(...)`. */
+SCENE_PRINTF(2, 3)
+static int scene_fail(scene_parser_t *p, const char *fmt, ...)
+{
+    va_list ap;
+    int n;
+
+    if (p->err == NULL || p->errlen == 0)
+        return -1;
+    n = snprintf(p->err, p->errlen, "%s:%d: ", p->name, p->line);
+    if (n < 0 || (size_t)n >= p->errlen)
+        return -1;
+    va_start(ap, fmt);
+    vsnprintf(p->err + n, p->errlen - (size_t)n, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+static scene_quote_t scene_quote(scene_tok_t t)
+{
+    scene_quote_t q;
+    size_t n = t.n < SCENE_QUOTE_MAX ? t.n : SCENE_QUOTE_MAX;
+
+    memcpy(q.s, t.s, n);
+    if (t.n > SCENE_QUOTE_MAX) {
+        memcpy(q.s + n, "...", 4);
+    } else {
+        q.s[n] = '\0';
+    }
+    return q;
+}
+
+static int scene_tok_is(scene_tok_t t, const char *word)
+{
+    size_t n = strlen(word);
+    return t.n == n && memcmp(t.s, word, n) == 0;
+}
+
+static int scene_is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+/* Case-insensitive prefix test without <ctype.h> (whose functions are
+ * locale-dependent and undefined for negative char values). */
+static int scene_tok_starts_ci(scene_tok_t t, size_t from, const char *word)
+{
+    size_t i;
+
+    for (i = 0; word[i] != '\0'; i++) {
+        char c;
+        if (from + i >= t.n)
+            return 0;
+        c = t.s[from + i];
+        if (c >= 'A' && c <= 'Z')
+            c = (char)(c - 'A' + 'a');
+        if (c != word[i])
+            return 0;
+    }
+    return 1;
+}
+
+static int scene_is_field_name(scene_tok_t t)
+{
+    size_t i;
+
+    for (i = 0; i < sizeof scene_all_fields / sizeof scene_all_fields[0]; i++)
+        if (scene_tok_is(t, scene_all_fields[i]))
+            return 1;
+    return 0;
+}
+
+/* Tokens that look like an attempt at a number: used only to count surplus
+ * values ("'center' needs 3 numbers, got 4") instead of calling the surplus
+ * an unexpected word. */
+static int scene_looks_numeric(scene_tok_t t)
+{
+    size_t i = 0;
+
+    if (t.n == 0)
+        return 0;
+    if (t.s[0] == '+' || t.s[0] == '-')
+        i = 1;
+    if (i < t.n && (scene_is_digit(t.s[i]) || t.s[i] == '.'))
+        return 1;
+    return scene_tok_starts_ci(t, i, "nan") || scene_tok_starts_ci(t, i, "inf");
+}
+
+/* Plain decimal: [+-] digits [. digits] [(e|E) [+-] digits], with at least
+ * one mantissa digit. Checked before strtod because strtod also accepts hex
+ * floats, "inf", "nan(...)" and leading spaces, none of which belong in a
+ * scene file. */
+static int scene_is_decimal(scene_tok_t t)
+{
+    size_t i = 0, digits = 0, exp_digits = 0;
+
+    if (i < t.n && (t.s[i] == '+' || t.s[i] == '-'))
+        i++;
+    while (i < t.n && scene_is_digit(t.s[i])) {
+        i++;
+        digits++;
+    }
+    if (i < t.n && t.s[i] == '.') {
+        i++;
+        while (i < t.n && scene_is_digit(t.s[i])) {
+            i++;
+            digits++;
+        }
+    }
+    if (digits == 0)
+        return 0;
+    if (i < t.n && (t.s[i] == 'e' || t.s[i] == 'E')) {
+        i++;
+        if (i < t.n && (t.s[i] == '+' || t.s[i] == '-'))
+            i++;
+        while (i < t.n && scene_is_digit(t.s[i])) {
+            i++;
+            exp_digits++;
+        }
+        if (exp_digits == 0)
+            return 0;
+    }
+    return i == t.n;
+}
+
+/* Parse one number of field `what`. Range checks belong to the caller;
+ * this rejects what no field accepts: non-numbers, NaN/infinity, hex, and
+ * nonzero values too small for Q16.16. Overflow ("1e99999") comes back as
+ * +-HUGE_VAL and is then rejected by every field's range check with the
+ * user's own spelling in the message. */
+static int scene_number(scene_parser_t *p, const char *what, scene_tok_t t, double *v)
+{
+    char buf[SCENE_MAX_LINE + 1];
+    scene_quote_t q = scene_quote(t);
+    char *end;
+    size_t i;
+    double d;
+    int range_err;
+
+    if (!scene_is_decimal(t)) {
+        i = (t.n > 0 && (t.s[0] == '+' || t.s[0] == '-')) ? 1 : 0;
+        if (scene_tok_starts_ci(t, i, "nan") || scene_tok_starts_ci(t, i, "inf"))
+            return scene_fail(p, "%s: NaN or infinity not allowed: '%s'", what, q.s);
+        if (scene_tok_starts_ci(t, i, "0x"))
+            return scene_fail(p, "%s: hexadecimal numbers not allowed: '%s'", what, q.s);
+        return scene_fail(p, "%s: '%s' is not a number", what, q.s);
+    }
+    /* Cannot happen after the line length check; keeps buf safe regardless. */
+    if (t.n > SCENE_MAX_LINE)
+        return scene_fail(p, "%s: '%s' is not a number", what, q.s);
+    memcpy(buf, t.s, t.n);
+    buf[t.n] = '\0';
+    errno = 0;
+    d = strtod(buf, &end);
+    range_err = errno == ERANGE;
+    /* Only a locale whose decimal point is not '.' gets here. */
+    if (end != buf + t.n)
+        return scene_fail(p, "%s: '%s' is not a number (check the C locale)", what, q.s);
+    /* ERANGE with a small result is underflow: "1e-400" reads as 0 or a
+     * denormal, although the user wrote a nonzero value. */
+    if ((range_err && fabs(d) < 1.0) || (d != 0.0 && fabs(d) < SCENE_Q16_EPS))
+        return scene_fail(p, "%s: too small for Q16.16: %s (nonzero values need magnitude >= 1/65536)",
+                          what, q.s);
+    /* Store -0 as +0: the double reference renderer should not see signed
+     * zeros that the fixed-point build cannot represent. */
+    *v = d == 0.0 ? 0.0 : d;
+    return 0;
+}
+
+/* Range check of one value of a field; t is quoted in messages. */
+static int scene_check_value(scene_parser_t *p, const char *what, scene_ftype_t type, scene_tok_t t,
+                             double v)
+{
+    scene_quote_t q = scene_quote(t);
+
+    switch (type) {
+    case SCENE_F_POINT:
+        if (!(fabs(v) <= FXRT_COORD_LIMIT))
+            return scene_fail(p, "%s: value %s out of range (|coordinate| <= %g)", what, q.s,
+                              (double)FXRT_COORD_LIMIT);
+        break;
+    case SCENE_F_DIR:
+        if (!(fabs(v) <= FXRT_COORD_LIMIT))
+            return scene_fail(p, "%s: value %s out of range (|component| <= %g)", what, q.s,
+                              (double)FXRT_COORD_LIMIT);
+        break;
+    case SCENE_F_COLOR:
+        if (!(v >= 0.0 && v <= 1.0)) {
+            /* "color" for objects, "background color" for the background */
+            if (strcmp(what, "color") == 0)
+                return scene_fail(p, "color component %s outside 0..1", q.s);
+            return scene_fail(p, "%s color component %s outside 0..1", what, q.s);
+        }
+        break;
+    case SCENE_F_RADIUS:
+    case SCENE_F_SCALE:
+        if (!(v > 0.0))
+            return scene_fail(p, "%s must be > 0, got %s", what, q.s);
+        if (!(v <= FXRT_RADIUS_LIMIT))
+            return scene_fail(p, "%s %s exceeds limit %g", what, q.s, (double)FXRT_RADIUS_LIMIT);
+        break;
+    case SCENE_F_FOV:
+        if (!(v > 0.0 && v < 180.0))
+            return scene_fail(p, "%s must be inside (0, 180), got %s", what, q.s);
+        break;
+    }
+    return 0;
+}
+
+static int scene_ftype_count(scene_ftype_t type)
+{
+    switch (type) {
+    case SCENE_F_POINT:
+    case SCENE_F_DIR:
+    case SCENE_F_COLOR:
+        return 3;
+    case SCENE_F_RADIUS:
+    case SCENE_F_FOV:
+    case SCENE_F_SCALE:
+        break;
+    }
+    return 1;
+}
+
+/* "center, radius, color": the field list used as a hint in messages. */
+static void scene_field_list(const scene_shape_t *sh, char *buf, size_t size)
+{
+    size_t used = 0;
+    int f;
+
+    buf[0] = '\0';
+    for (f = 0; f < sh->nfields; f++) {
+        int n = snprintf(buf + used, size - used, "%s%s", f ? ", " : "", sh->field[f].name);
+        if (n < 0 || (size_t)n >= size - used)
+            return;
+        used += (size_t)n;
+    }
+}
+
+/* Read "name values name values ..." from token `first` to the end of the
+ * line into vals (indexed like sh->field), checking counts, numbers,
+ * per-value ranges, duplicates and missing fields. Cross-field checks
+ * (zero length, parallel, min <= max) are the caller's. */
+static int scene_parse_fields(scene_parser_t *p, const scene_shape_t *sh, int first,
+                              scene_fval_t *vals)
+{
+    char list[128];
+    int i = first;
+    int f;
+
+    memset(vals, 0, sizeof(scene_fval_t) * SCENE_MAX_FIELDS);
+    while (i < p->ntok) {
+        scene_tok_t t = p->tok[i];
+        const scene_field_t *fd;
+        int want, got, extra, k;
+
+        for (f = 0; f < sh->nfields; f++)
+            if (scene_tok_is(t, sh->field[f].name))
+                break;
+        if (f == sh->nfields) {
+            scene_quote_t q = scene_quote(t);
+            scene_field_list(sh, list, sizeof list);
+            if (scene_is_field_name(t))
+                return scene_fail(p, "%s has no field '%s' (fields: %s)", sh->label, q.s, list);
+            return scene_fail(p, "unexpected '%s' after %s (fields: %s)", q.s, sh->label, list);
+        }
+        fd = &sh->field[f];
+        if (vals[f].seen)
+            return scene_fail(p, "duplicate field '%s' in %s", fd->name, sh->label);
+        vals[f].seen = 1;
+        want = scene_ftype_count(fd->type);
+        i++;
+        /* Count the values up to the next field name or the end of line. */
+        got = 0;
+        while (got < want && i + got < p->ntok && !scene_is_field_name(p->tok[i + got]))
+            got++;
+        /* Surplus numbers ("center 0 0 -3 4") are counted so the message
+         * says how many were given; a surplus word is left for the loop
+         * above to report as unexpected. */
+        extra = 0;
+        if (got == want)
+            while (i + got + extra < p->ntok && !scene_is_field_name(p->tok[i + got + extra]) &&
+                   scene_looks_numeric(p->tok[i + got + extra]))
+                extra++;
+        if (got != want || extra != 0)
+            return scene_fail(p, "'%s' needs %d number%s, got %d", fd->name, want,
+                              want == 1 ? "" : "s", got + extra);
+        for (k = 0; k < want; k++) {
+            vals[f].t[k] = p->tok[i + k];
+            if (scene_number(p, fd->name, vals[f].t[k], &vals[f].v[k]) != 0)
+                return -1;
+            if (scene_check_value(p, fd->name, fd->type, vals[f].t[k], vals[f].v[k]) != 0)
+                return -1;
+        }
+        i += want;
+    }
+    for (f = 0; f < sh->nfields; f++)
+        if (!vals[f].seen)
+            return scene_fail(p, "missing field '%s' for %s", sh->field[f].name, sh->label);
+    return 0;
+}
+
+static scene_vec_t scene_vec(const scene_fval_t *fv)
+{
+    scene_vec_t v;
+    v.x = fv->v[0];
+    v.y = fv->v[1];
+    v.z = fv->v[2];
+    return v;
+}
+
+/* Values are either 0 or at least 1/65536 in magnitude (scene_number), so
+ * any nonzero component means a usable length. */
+static int scene_is_zero(scene_vec_t v)
+{
+    return v.x == 0.0 && v.y == 0.0 && v.z == 0.0;
+}
+
+static int scene_parse_camera(scene_parser_t *p)
+{
+    const scene_shape_t *sh;
+    scene_fval_t vals[SCENE_MAX_FIELDS];
+    scene_camera_t *cam = &p->out->camera;
+    scene_vec_t g, u, x;
+    double gl, ul, xl;
+
+    if (p->camera_line)
+        return scene_fail(p, "second camera (first on line %d)", p->camera_line);
+    if (p->ntok < 2)
+        return scene_fail(p, "camera needs a type: perspective or orthographic");
+    if (scene_tok_is(p->tok[1], "perspective")) {
+        sh = &scene_shape_persp;
+        cam->kind = SCENE_CAM_PERSPECTIVE;
+    } else if (scene_tok_is(p->tok[1], "orthographic")) {
+        sh = &scene_shape_ortho;
+        cam->kind = SCENE_CAM_ORTHOGRAPHIC;
+    } else {
+        scene_quote_t q = scene_quote(p->tok[1]);
+        return scene_fail(p, "unknown camera type '%s' (expected perspective or orthographic)", q.s);
+    }
+    if (scene_parse_fields(p, sh, 2, vals) != 0)
+        return -1;
+    g = scene_vec(&vals[1]);
+    u = scene_vec(&vals[2]);
+    if (scene_is_zero(g))
+        return scene_fail(p, "gaze has zero length");
+    if (scene_is_zero(u))
+        return scene_fail(p, "up has zero length");
+    /* Relative test, so the answer does not depend on the vectors' scale. */
+    x.x = g.y * u.z - g.z * u.y;
+    x.y = g.z * u.x - g.x * u.z;
+    x.z = g.x * u.y - g.y * u.x;
+    gl = sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+    ul = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+    xl = sqrt(x.x * x.x + x.y * x.y + x.z * x.z);
+    if (xl <= SCENE_PARALLEL_EPS * gl * ul)
+        return scene_fail(p, "up is parallel to gaze");
+    cam->eye = scene_vec(&vals[0]);
+    cam->gaze = g;
+    cam->up = u;
+    cam->fov_deg = cam->kind == SCENE_CAM_PERSPECTIVE ? vals[3].v[0] : 0.0;
+    cam->scale = cam->kind == SCENE_CAM_ORTHOGRAPHIC ? vals[3].v[0] : 0.0;
+    cam->line = p->line;
+    p->camera_line = p->line;
+    return 0;
+}
+
+static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_shape_t *sh)
+{
+    scene_fval_t vals[SCENE_MAX_FIELDS];
+    scene_obj_t *o;
+    int f, color_field;
+
+    if (scene_kind_capacity[kind] <= 0)
+        return scene_fail(p, "%s are not in this build (%s is 0)", scene_kind_plural[kind],
+                          scene_kind_macro[kind]);
+    if (p->kind_count[kind] >= scene_kind_capacity[kind])
+        return scene_fail(p, "too many %s (capacity %d)", scene_kind_plural[kind],
+                          scene_kind_capacity[kind]);
+    if (scene_parse_fields(p, sh, 1, vals) != 0)
+        return -1;
+    if (kind == SCENE_PLANE && scene_is_zero(scene_vec(&vals[1])))
+        return scene_fail(p, "normal has zero length");
+    if (kind == SCENE_BOX) {
+        static const char axis[3] = {'x', 'y', 'z'};
+        int k;
+        for (k = 0; k < 3; k++) {
+            if (vals[0].v[k] > vals[1].v[k]) {
+                scene_quote_t lo = scene_quote(vals[0].t[k]);
+                scene_quote_t hi = scene_quote(vals[1].t[k]);
+                return scene_fail(p, "box min exceeds max on %c (%s > %s)", axis[k], lo.s, hi.s);
+            }
+        }
+    }
+    /* Per-kind capacities sum to SCENE_MAX_OBJECTS, so this cannot
+     * overflow obj[]; checked anyway because the array is the last line of
+     * defence against a miscounted kind. */
+    if (p->out->count >= SCENE_MAX_OBJECTS)
+        return scene_fail(p, "too many objects (capacity %d)", SCENE_MAX_OBJECTS);
+    o = &p->out->obj[p->out->count];
+    memset(o, 0, sizeof *o);
+    o->kind = kind;
+    o->line = p->line;
+    /* Color is always the last field; the others map in order onto p[]
+     * (sphere: center -> p[0], radius -> radius, p[1] stays zero). */
+    color_field = sh->nfields - 1;
+    for (f = 0; f < color_field; f++) {
+        if (sh->field[f].type == SCENE_F_RADIUS)
+            o->radius = vals[f].v[0];
+        else
+            o->p[f] = scene_vec(&vals[f]);
+    }
+    o->color[0] = vals[color_field].v[0];
+    o->color[1] = vals[color_field].v[1];
+    o->color[2] = vals[color_field].v[2];
+    p->out->count++;
+    p->kind_count[kind]++;
+    return 0;
+}
+
+/* Non-negative decimal integer without sign; saturates so that absurdly
+ * long digit strings still compare as "too big". */
+static int scene_parse_uint(scene_tok_t t, long *v)
+{
+    size_t i;
+    long n = 0;
+
+    if (t.n == 0)
+        return -1;
+    for (i = 0; i < t.n; i++) {
+        if (!scene_is_digit(t.s[i]))
+            return -1;
+        if (n < 100000000L) /* keeps n below 2^31 for 32-bit long */
+            n = n * 10 + (t.s[i] - '0');
+    }
+    *v = n;
+    return 0;
+}
+
+static int scene_parse_image(scene_parser_t *p)
+{
+    long size[2] = {0, 0};
+    int k;
+
+    if (p->image_line)
+        return scene_fail(p, "duplicate 'image' line (first on line %d)", p->image_line);
+    if (p->ntok != 3)
+        return scene_fail(p, "'image' needs 2 integers, got %d value%s", p->ntok - 1,
+                          p->ntok == 2 ? "" : "s");
+    for (k = 0; k < 2; k++) {
+        if (scene_parse_uint(p->tok[k + 1], &size[k]) != 0) {
+            scene_quote_t q = scene_quote(p->tok[k + 1]);
+            return scene_fail(p, "'image' needs 2 integers, got '%s'", q.s);
+        }
+    }
+    if (size[0] < 1 || size[0] > FXRT_MAX_DIM || size[1] < 1 || size[1] > FXRT_MAX_DIM) {
+        scene_quote_t qw = scene_quote(p->tok[1]);
+        scene_quote_t qh = scene_quote(p->tok[2]);
+        return scene_fail(p, "image size must be 1..%d x 1..%d, got %sx%s", FXRT_MAX_DIM,
+                          FXRT_MAX_DIM, qw.s, qh.s);
+    }
+    p->out->width = (int)size[0];
+    p->out->height = (int)size[1];
+    p->image_line = p->line;
+    return 0;
+}
+
+static int scene_parse_background(scene_parser_t *p)
+{
+    double c[3];
+    int k;
+
+    if (p->background_line)
+        return scene_fail(p, "duplicate 'background' line (first on line %d)", p->background_line);
+    if (p->ntok != 4)
+        return scene_fail(p, "'background' needs 3 numbers, got %d", p->ntok - 1);
+    for (k = 0; k < 3; k++) {
+        if (scene_number(p, "background", p->tok[k + 1], &c[k]) != 0)
+            return -1;
+        if (scene_check_value(p, "background", SCENE_F_COLOR, p->tok[k + 1], c[k]) != 0)
+            return -1;
+    }
+    memcpy(p->out->background, c, sizeof c);
+    p->background_line = p->line;
+    return 0;
+}
+
+/* Split [s, s+n) (comment already removed) at spaces and tabs. */
+static int scene_tokenize(scene_parser_t *p, const char *s, size_t n)
+{
+    size_t i = 0;
+
+    p->ntok = 0;
+    while (i < n) {
+        size_t start;
+        while (i < n && (s[i] == ' ' || s[i] == '\t'))
+            i++;
+        if (i == n)
+            break;
+        start = i;
+        while (i < n && s[i] != ' ' && s[i] != '\t')
+            i++;
+        /* Unreachable with lines <= SCENE_MAX_LINE bytes. */
+        if (p->ntok == SCENE_MAX_TOKENS)
+            return scene_fail(p, "too many words on one line");
+        p->tok[p->ntok].s = s + start;
+        p->tok[p->ntok].n = i - start;
+        p->ntok++;
+    }
+    return 0;
+}
+
+/* Reject bytes that cannot belong to a scene file before looking at
+ * words, so a binary file gets one clear message instead of a confusing
+ * syntax error. UTF-8 is allowed in comments only, where it is harmless. */
+static int scene_check_bytes(scene_parser_t *p, const char *s, size_t n)
+{
+    int in_comment = 0;
+    size_t i;
+
+    for (i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c == '#') {
+            in_comment = 1;
+        } else if (c == '\r') {
+            /* CRLF is fine; a lone CR (old Mac line ending) would otherwise
+             * glue lines together into one puzzling line. */
+            if (i + 1 != n)
+                return scene_fail(p, "carriage return inside a line at column %zu "
+                                     "(only LF or CRLF line endings are accepted)", i + 1);
+        } else if ((c < 0x20 && c != '\t') || c == 0x7f) {
+            return scene_fail(p, "binary data (byte 0x%02x) at column %zu", c, i + 1);
+        } else if (c >= 0x80 && !in_comment) {
+            return scene_fail(p, "non-ASCII byte 0x%02x at column %zu (only comments may contain it)",
+                              c, i + 1);
+        }
+    }
+    return 0;
+}
+
+static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
+{
+    const char *hash;
+    scene_tok_t kw;
+
+    if (scene_check_bytes(p, s, n) != 0)
+        return -1;
+    if (n > 0 && s[n - 1] == '\r')
+        n--;
+    if (n > SCENE_MAX_LINE)
+        return scene_fail(p, "line longer than %d bytes (%zu bytes)", SCENE_MAX_LINE, n);
+    hash = memchr(s, '#', n);
+    if (hash != NULL)
+        n = (size_t)(hash - s);
+    if (scene_tokenize(p, s, n) != 0)
+        return -1;
+    if (p->ntok == 0)
+        return 0;
+    kw = p->tok[0];
+    if (scene_tok_is(kw, "image"))
+        return scene_parse_image(p);
+    if (scene_tok_is(kw, "background"))
+        return scene_parse_background(p);
+    if (scene_tok_is(kw, "camera"))
+        return scene_parse_camera(p);
+    if (scene_tok_is(kw, "plane"))
+        return scene_parse_object(p, SCENE_PLANE, &scene_shape_plane);
+    if (scene_tok_is(kw, "sphere"))
+        return scene_parse_object(p, SCENE_SPHERE, &scene_shape_sphere);
+    if (scene_tok_is(kw, "triangle"))
+        return scene_parse_object(p, SCENE_TRIANGLE, &scene_shape_triangle);
+    if (scene_tok_is(kw, "box"))
+        return scene_parse_object(p, SCENE_BOX, &scene_shape_box);
+    {
+        scene_quote_t q = scene_quote(kw);
+        return scene_fail(p, "unknown keyword '%s' (expected image, background, camera, plane, "
+                             "sphere, triangle or box)", q.s);
+    }
+}
+
+int scene_parse(const char *name, const char *text, size_t len, scene_t *out, char *err,
+                size_t errlen)
+{
+    scene_parser_t p;
+    size_t pos = 0;
+
+    memset(&p, 0, sizeof p);
+    p.name = name != NULL ? name : "<scene>";
+    p.err = err;
+    p.errlen = errlen;
+    p.out = out;
+    if (err != NULL && errlen > 0)
+        err[0] = '\0';
+    if (out == NULL) {
+        p.line = 0;
+        return scene_fail(&p, "no output scene given");
+    }
+    if (text == NULL)
+        len = 0;
+
+    memset(out, 0, sizeof *out);
+    out->width = SCENE_DEFAULT_WIDTH;
+    out->height = SCENE_DEFAULT_HEIGHT;
+
+    while (pos < len) {
+        const char *s = text + pos;
+        const char *nl = memchr(s, '\n', len - pos);
+        size_t n = nl != NULL ? (size_t)(nl - s) : len - pos;
+
+        /* Lines are counted in an int; 1 MiB files have far fewer lines
+         * than INT_MAX, and direct callers with bigger texts simply stop
+         * being counted accurately rather than overflowing. */
+        if (p.line < 2147483647)
+            p.line++;
+        pos += n + (nl != NULL ? 1 : 0);
+        if (scene_parse_line(&p, s, n) != 0)
+            return -1;
+    }
+
+    if (!p.camera_line) {
+        /* Whole-file problem: reported at the last line, where the reader
+         * would have added the missing statement. */
+        if (p.line == 0) {
+            p.line = 1;
+            return scene_fail(&p, "no camera in scene (the file is empty)");
+        }
+        return scene_fail(&p, "no camera in scene");
+    }
+    return 0;
+}
+
+int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
+{
+    FILE *f;
+    char *buf;
+    size_t len;
+    int rc;
+
+    if (err != NULL && errlen > 0)
+        err[0] = '\0';
+    f = fopen(path, "rb");
+    if (f == NULL) {
+        int e = errno;
+        scene_errf(err, errlen, "%s: cannot open: %s", path, strerror(e));
+        return -1;
+    }
+    /* One byte more than allowed, so "exactly 1 MiB" and "larger" differ. */
+    buf = malloc((size_t)SCENE_MAX_FILE_BYTES + 1);
+    if (buf == NULL) {
+        fclose(f);
+        scene_errf(err, errlen, "%s: out of memory", path);
+        return -1;
+    }
+    len = fread(buf, 1, (size_t)SCENE_MAX_FILE_BYTES + 1, f);
+    if (ferror(f)) {
+        int e = errno;
+        fclose(f);
+        free(buf);
+        scene_errf(err, errlen, "%s: cannot read: %s", path, strerror(e));
+        return -1;
+    }
+    fclose(f);
+    if (len > (size_t)SCENE_MAX_FILE_BYTES) {
+        free(buf);
+        scene_errf(err, errlen, "%s: file too large (over 1 MiB)", path);
+        return -1;
+    }
+    rc = scene_parse(path, buf, len, out, err, errlen);
+    free(buf);
+    return rc;
+}

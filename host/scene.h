@@ -1,0 +1,56 @@
+/* Scene files: parsing and validation on the host. The parsed scene keeps
+ * the file's values as doubles; each renderer build converts them to its
+ * own number type (host/engine.c, host/scenec.c). */
+#ifndef FXRT_HOST_SCENE_H
+#define FXRT_HOST_SCENE_H
+
+#include <stddef.h>
+#include "../core/fxrt_config.h"
+
+#define SCENE_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
+#define SCENE_MAX_LINE 1024 /* longest accepted line, in bytes, without newline */
+#define SCENE_DEFAULT_WIDTH 160
+#define SCENE_DEFAULT_HEIGHT 120
+
+typedef struct {
+    double x, y, z;
+} scene_vec_t;
+
+typedef enum { SCENE_PLANE, SCENE_SPHERE, SCENE_TRIANGLE, SCENE_BOX } scene_kind_t;
+
+typedef struct {
+    scene_kind_t kind;
+    int line;          /* 1-based line of the file it came from */
+    double color[3];   /* 0..1 */
+    scene_vec_t p[3];  /* plane: point, normal; sphere: center; triangle: a, b, c; box: min, max */
+    double radius;     /* sphere only */
+} scene_obj_t;
+
+typedef enum { SCENE_CAM_PERSPECTIVE, SCENE_CAM_ORTHOGRAPHIC } scene_cam_kind_t;
+
+typedef struct {
+    scene_cam_kind_t kind;
+    int line; /* line of the 'camera' keyword */
+    scene_vec_t eye, gaze, up;
+    double fov_deg; /* perspective: full opening angle, (0, 180) */
+    double scale;   /* orthographic: height of the view in scene units */
+} scene_camera_t;
+
+typedef struct {
+    int width, height;     /* from 'image', else the defaults above */
+    double background[3];  /* 0..1, default black */
+    scene_camera_t camera;
+    int count;
+    scene_obj_t obj[SCENE_MAX_OBJECTS]; /* in file order */
+} scene_t;
+
+/* Parse scene text (len bytes, need not be NUL-terminated). name is used in
+ * messages. Returns 0, or -1 with "NAME:LINE: what is wrong" in err. */
+int scene_parse(const char *name, const char *text, size_t len, scene_t *out,
+                char *err, size_t errlen);
+
+/* Read and parse a file. Returns 0, or -1 with "PATH:LINE: ..." (or
+ * "PATH: ..." when the file cannot be read) in err. */
+int scene_load(const char *path, scene_t *out, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The core is freestanding and allocation-free:
+#  - it includes nothing but <stdint.h>, <stddef.h>, <stdbool.h> (checked in
+#    the source, and by compiling with -nostdinc so that only the
+#    compiler's own freestanding headers exist);
+#  - the Q16.16 build compiled for Cortex-M0 and Cortex-M3 references no
+#    malloc/free, no stdio, and no soft-float helper (__aeabi_f*, __aeabi_d*).
+set -u
+. "$(dirname "$0")/lib.sh"
+out=$BUILD/tests/freestanding
+mkdir -p "$out"
+CORE="fx num color cam geom world render"
+
+bad_includes=$(grep -hE '^\s*#\s*include\s*<' core/*.c core/*.h | grep -vE '<(stdint|stddef|stdbool)\.h>' || true)
+check "core includes only stdint/stddef/stdbool (found: $bad_includes)" test -z "$bad_includes"
+
+if ! command -v arm-none-eabi-gcc >/dev/null; then
+    bad "arm-none-eabi-gcc not installed (run make deps)"
+    report freestanding
+    exit 1
+fi
+inc=$(arm-none-eabi-gcc -print-file-name=include)
+for cpu in cortex-m0 cortex-m3; do
+    objs=()
+    for f in $CORE; do
+        o=$out/$cpu-$f.o
+        if arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror \
+            -Os -mcpu=$cpu -mthumb -ffreestanding -nostdinc -isystem "$inc" -DFXRT_NUMBER=1 \
+            -c core/$f.c -o "$o"; then
+            ok
+            objs+=("$o")
+        else
+            bad "$cpu: core/$f.c does not compile freestanding"
+        fi
+    done
+    arm-none-eabi-ld -r -o "$out/$cpu-core.o" "${objs[@]}"
+    undef=$(arm-none-eabi-nm -u "$out/$cpu-core.o" | awk '$1 == "U" {print $2}' | sort -u)
+    echo "$cpu undefined symbols:" $undef
+    forbidden=$(grep -E '^(malloc|free|calloc|realloc|_sbrk|_malloc_r|printf|puts|putchar|__aeabi_[fd].*|__.*sf[0-9]|__.*df[0-9])$' <<<"$undef" || true)
+    check "$cpu: no malloc/stdio/soft-float references (found: $forbidden)" test -z "$forbidden"
+    # And the check itself must be able to fail: a float build does pull
+    # soft-float helpers in on these cores.
+    arm-none-eabi-gcc -std=c11 -Os -mcpu=$cpu -mthumb -ffreestanding -DFXRT_NUMBER=2 -c core/geom.c -o "$out/$cpu-float-geom.o"
+    check "$cpu: the nm check sees soft-float in a float build" \
+        bash -c "arm-none-eabi-nm -u '$out/$cpu-float-geom.o' | grep -q __aeabi_f"
+done
+report freestanding

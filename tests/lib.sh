@@ -1,0 +1,22 @@
+# Shared helpers for shell test suites: check/ok/bad count results, and
+# report prints "NAME: N passed, N failed" and sets the exit status.
+PASSED=0
+FAILED=0
+BUILD=${BUILD:-build}
+FXRT=${FXRT:-$BUILD/fxrt}
+
+ok() { PASSED=$((PASSED + 1)); }
+bad() {
+    FAILED=$((FAILED + 1))
+    echo "FAIL: $*" >&2
+}
+# check DESCRIPTION COMMAND...: passes when the command exits 0.
+check() {
+    local desc=$1
+    shift
+    if "$@"; then ok; else bad "$desc"; fi
+}
+report() {
+    echo "$1: $PASSED passed, $FAILED failed"
+    [ "$FAILED" -eq 0 ]
+}

@@ -1,0 +1,264 @@
+/* Q16.16 scalar and vector maths against exact references: hard-case tables
+ * plus FX_TEST_RANDOM (default 10^6) random inputs per function, drawn both
+ * uniformly over all bit patterns and log-uniformly over magnitudes.
+ * Errors are measured in LSB (2^-16) against __int128 / long double. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "../core/vec3.h"
+#include "check.h"
+
+static long n_random = 1000000;
+
+/* xorshift64*: deterministic, so a failure reproduces. */
+static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
+static uint64_t rng(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return rng_state * 2685821657736338717ull;
+}
+
+/* A random fx_t: half uniform bit patterns, half log-uniform magnitudes
+ * (2^-16 .. 2^15) with random sign, so small values get tested too. */
+static fx_t rand_fx(void)
+{
+    uint64_t r = rng();
+    if (r & 1)
+        return (fx_t)(uint32_t)(r >> 32);
+    int bits = (int)((r >> 1) % 32); /* magnitude below 2^bits LSB */
+    uint32_t m = (uint32_t)(r >> 32);
+    m = bits ? (m >> (32 - bits)) : 0;
+    return (r & 2) ? -(fx_t)(m & 0x7fffffff) : (fx_t)(m & 0x7fffffff);
+}
+
+static const fx_t hard[] = {
+    0, 1, -1, 2, -2, 0x7fff, 0x8000, 0x8001, -0x8000, -0x8001, 0xffff, 0x10000, 0x10001,
+    -0x10000, -0x10001, 0x18000, -0x18000, 0x7fffffff, -0x7fffffff, INT32_MIN, 0x7ffffffe,
+    0x40000000, -0x40000000, 0x00b504f3, 0x00b504f4, 0x01000000, 46341, 46340, 181 << 16,
+    182 << 16, 3, 5, 0x12345678, -0x12345678,
+};
+#define N_HARD ((int)(sizeof hard / sizeof hard[0]))
+
+static double max_err_mul, max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv, max_err_cot,
+    max_err_norm, max_err_dot, max_err_cross;
+
+/* Saturate an exact value (in LSB) to the fx_t range. */
+static long double sat(long double v)
+{
+    if (v > INT32_MAX)
+        return INT32_MAX;
+    if (v < INT32_MIN)
+        return INT32_MIN;
+    return v;
+}
+
+static void track(double *m, long double e)
+{
+    if (e > *m)
+        *m = (double)e;
+}
+
+static void check_mul(fx_t a, fx_t b)
+{
+    /* a * b is exact in int64; long double (64-bit mantissa) holds it. */
+    long double exact = sat((long double)((int64_t)a * b) / 65536.0L);
+    long double e = fabsl((long double)fx_mul(a, b) - exact);
+    track(&max_err_mul, e);
+    CHECK_SWEEP(e <= 0.5L, "fx_mul(%d, %d) = %d, exact %.3Lf", a, b, fx_mul(a, b), exact);
+}
+
+static void check_div(fx_t a, fx_t b)
+{
+    fx_t q = fx_div(a, b);
+    long double exact;
+    if (b == 0)
+        exact = a > 0 ? INT32_MAX : (a < 0 ? INT32_MIN : 0);
+    else
+        exact = sat((long double)a * 65536.0L / (long double)b);
+    long double e = fabsl((long double)q - exact);
+    track(&max_err_div, e);
+    CHECK_SWEEP(e <= 0.5L, "fx_div(%d, %d) = %d, exact %.3Lf", a, b, q, exact);
+}
+
+static void check_sqrt(fx_t a)
+{
+    fx_t s = fx_sqrt(a);
+    long double exact = a <= 0 ? 0 : sqrtl((long double)a * 65536.0L);
+    long double e = fabsl((long double)s - exact);
+    track(&max_err_sqrt, e);
+    CHECK_SWEEP(e <= 0.5L, "fx_sqrt(%d) = %d, exact %.3Lf", a, s, exact);
+}
+
+static void check_wsqrt(fxw_t w)
+{
+    fx_t s = fxw_sqrt(w);
+    long double exact = w <= 0 ? 0 : sat(sqrtl((long double)w));
+    long double e = fabsl((long double)s - exact);
+    track(&max_err_wsqrt, e);
+    CHECK_SWEEP(e <= 0.5L, "fxw_sqrt(%lld) = %d, exact %.3Lf", (long long)w, s, exact);
+}
+
+static void check_wdiv(fxw_t a, fxw_t b)
+{
+    fx_t q = fxw_div(a, b);
+    long double exact;
+    if (b == 0)
+        exact = a > 0 ? INT32_MAX : (a < 0 ? INT32_MIN : 0);
+    else
+        exact = sat((long double)a / (long double)b * 65536.0L);
+    long double e = fabsl((long double)q - exact);
+    track(&max_err_wdiv, e);
+    CHECK_SWEEP(e <= 1.0L, "fxw_div(%lld, %lld) = %d, exact %.3Lf", (long long)a, (long long)b, q, exact);
+}
+
+static void check_cot(fx_t deg)
+{
+    fx_t c = fx_cot_deg(deg);
+    long double x = (long double)deg / 65536.0L * 3.14159265358979323846264338327950288L / 180.0L;
+    long double exact = sat(cosl(x) / sinl(x) * 65536.0L);
+    long double e = fabsl((long double)c - exact);
+    long double bound = 1.0L + 1e-7L * fabsl(exact);
+    track(&max_err_cot, e / bound);
+    CHECK_SWEEP(e <= bound, "fx_cot_deg(%d) = %d, exact %.3Lf", deg, c, exact);
+}
+
+static void check_norm(fx_t x, fx_t y, fx_t z)
+{
+    fx_t v[3] = {x, y, z};
+    bool ok = fx_normalize3(v);
+    if (x == 0 && y == 0 && z == 0) {
+        CHECK_SWEEP(!ok && v[0] == 0 && v[1] == 0 && v[2] == 0, "zero vector");
+        return;
+    }
+    long double len = sqrtl((long double)x * x + (long double)y * y + (long double)z * z);
+    long double in[3] = {x, y, z};
+    for (int i = 0; i < 3; i++) {
+        long double e = fabsl((long double)v[i] - in[i] / len * 65536.0L);
+        track(&max_err_norm, e);
+        CHECK_SWEEP(ok && e <= 1.0L, "fx_normalize3(%d,%d,%d)[%d] = %d, exact %.3Lf", x, y, z, i, v[i],
+                  in[i] / len * 65536.0L);
+    }
+}
+
+/* Random vector components inside the renderer's domain (|c| <= 2 *
+ * FXRT_COORD_LIMIT, so a dot of three products cannot leave Q32.32). */
+static fx_t rand_coord(void)
+{
+    fx_t v = rand_fx();
+    return v / 2; /* |v| < 2^30 LSB = 16384 */
+}
+
+static void check_vec(void)
+{
+    vec3_t a = vec3_make(rand_coord(), rand_coord(), rand_coord());
+    vec3_t b = vec3_make(rand_coord(), rand_coord(), rand_coord());
+    long double exact = ((long double)a.x * b.x + (long double)a.y * b.y + (long double)a.z * b.z) / 65536.0L;
+    long double e = fabsl((long double)vec3_dot(a, b) - sat(exact));
+    track(&max_err_dot, e);
+    CHECK_SWEEP(e <= 0.5L, "vec3_dot error %.3Lf", e);
+    vec3_t c = vec3_cross(a, b);
+    long double cx = sat(((long double)a.y * b.z - (long double)a.z * b.y) / 65536.0L);
+    e = fabsl((long double)c.x - cx);
+    track(&max_err_cross, e);
+    CHECK_SWEEP(e <= 0.5L, "vec3_cross.x error %.3Lf", e);
+}
+
+static void check_fixed_cases(void)
+{
+    /* Named constants and the literal macro. */
+    CHECK(F16(1.5) == 0x18000);
+    CHECK(F16(-1.5) == -0x18000);
+    CHECK(F16(0.0000076) == 0); /* below half an LSB rounds to zero */
+    CHECK(FX_PI == (fx_t)lround(3.14159265358979323846 * 65536));
+    /* Saturation, never wrap-around. */
+    CHECK(fx_add(FX_MAX, 1) == FX_MAX);
+    CHECK(fx_add(FX_MIN, -1) == FX_MIN);
+    CHECK(fx_sub(FX_MIN, 1) == FX_MIN);
+    CHECK(fx_sub(FX_MAX, -1) == FX_MAX);
+    CHECK(fx_neg(FX_MIN) == FX_MAX);
+    CHECK(fx_mul(F16(200), F16(200)) == FX_MAX);
+    CHECK(fx_mul(F16(-200), F16(200)) == FX_MIN);
+    CHECK(fx_div(FX_ONE, 0) == FX_MAX);
+    CHECK(fx_div(-FX_ONE, 0) == FX_MIN);
+    CHECK(fx_div(0, 0) == 0);
+    CHECK(fx_div(F16(30000), F16(0.5)) == FX_MAX);
+    CHECK(fx_sqrt(-FX_ONE) == 0);
+    CHECK(fx_from_int(40000) == FX_MAX);
+    CHECK(fx_from_int(-40000) == FX_MIN);
+    CHECK(fx_from_int(-3) == F16(-3.0));
+    CHECK(fx_mul_int(F16(1000), 100) == FX_MAX);
+    CHECK(fxw_round(INT64_MAX) == FX_MAX);
+    CHECK(fxw_round(INT64_MIN) == FX_MIN);
+    CHECK(fxw_add(INT64_MAX, 1) == INT64_MAX);
+    CHECK(fxw_add(INT64_MIN, -1) == INT64_MIN);
+    /* Exact values. */
+    CHECK(fx_sqrt(F16(4)) == F16(2));
+    CHECK(fx_sqrt(F16(2)) == 92682);
+    CHECK(fx_div(FX_ONE, F16(3)) == 21845);
+    CHECK(fx_mul(F16(-0.5), 1) == 0); /* -0.5 LSB ties toward +inf */
+    CHECK(fx_cot_deg(F16(45)) == FX_ONE);
+    CHECK(fx_cot_deg(0) == FX_MAX);
+    CHECK(fx_cot_deg(F16(90)) == 0);
+    CHECK(fx_isqrt64(UINT64_MAX) == 0xffffffffu);
+    CHECK(fx_isqrt64(0) == 0);
+    fx_t unit[3] = {0, F16(-3), 0};
+    CHECK(fx_normalize3(unit) && unit[0] == 0 && unit[1] == -FX_ONE && unit[2] == 0);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1)
+        n_random = atol(argv[1]);
+    else if (getenv("FX_TEST_RANDOM"))
+        n_random = atol(getenv("FX_TEST_RANDOM"));
+
+    check_fixed_cases();
+    for (int i = 0; i < N_HARD; i++) {
+        check_sqrt(hard[i]);
+        check_wsqrt((fxw_t)hard[i] << 24);
+        for (int j = 0; j < N_HARD; j++) {
+            check_mul(hard[i], hard[j]);
+            check_div(hard[i], hard[j]);
+            check_wdiv((fxw_t)hard[i] << 20, (fxw_t)hard[j] << 12);
+            check_norm(hard[i], hard[j], hard[(i + j) % N_HARD]);
+        }
+    }
+    /* Every cot in steps of 1/16 degree, plus the smallest angles. */
+    for (fx_t d = 1; d < F16(90); d += 4096)
+        check_cot(d);
+    for (fx_t d = 1; d < 64; d++)
+        check_cot(d);
+
+    for (long i = 0; i < n_random; i++) {
+        fx_t a = rand_fx(), b = rand_fx();
+        check_mul(a, b);
+        check_div(a, b);
+        check_sqrt(a);
+        check_wsqrt((fxw_t)(rng() >> 1) >> (rng() % 63));
+        check_wdiv((fxw_t)(rng() >> 1) >> (rng() % 63) * ((rng() & 1) ? 1 : -1),
+                   (fxw_t)(rng() >> 1) >> (rng() % 63));
+        check_norm(rand_fx(), rand_fx(), rand_fx());
+        check_vec();
+        if (i % 16 == 0)
+            check_cot((fx_t)(rng() % (uint64_t)F16(90)));
+    }
+    printf("worst error in LSB over %ld random inputs each:\n", n_random);
+    printf("  fx_mul %.3f  fx_div %.3f  fx_sqrt %.3f  fxw_sqrt %.3f  fxw_div %.3f\n", max_err_mul,
+           max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv);
+    printf("  fx_normalize3 %.3f  vec3_dot %.3f  vec3_cross %.3f  fx_cot_deg %.3f of its bound\n",
+           max_err_norm, max_err_dot, max_err_cross, max_err_cot);
+    /* One check per function on the sweep's worst case (the sweep itself
+     * has already counted every single failure). */
+    CHECK(max_err_mul <= 0.5);
+    CHECK(max_err_div <= 0.5);
+    CHECK(max_err_sqrt <= 0.5);
+    CHECK(max_err_wsqrt <= 0.5);
+    CHECK(max_err_wdiv <= 1.0);
+    CHECK(max_err_norm <= 1.0);
+    CHECK(max_err_dot <= 0.5);
+    CHECK(max_err_cross <= 0.5);
+    CHECK(max_err_cot <= 1.0);
+    return check_report("test_fx");
+}

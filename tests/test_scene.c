@@ -1,0 +1,638 @@
+/* Tests for the scene parser (host/scene.c): good scenes parse into the
+ * expected values, every kind of bad input fails with "NAME:LINE: message",
+ * and the files in tests/bad-scenes fail as their "# expect:" line says.
+ * Run from the repository root (the bad-scene files are found from cwd). */
+#include <dirent.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "scene.h"
+
+#define BAD_SCENES_DIR "tests/bad-scenes"
+
+/* Turn a numeric config macro into a string for expected messages, so the
+ * tests still match when limits are overridden with -D. */
+#define STR_(x) #x
+#define STR(x) STR_(x)
+
+#define CAM "camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45\n"
+
+/* Shared by all tests: scene_t is tens of KiB, too big to want on the stack
+ * of every helper. */
+static scene_t g_scene;
+static char g_err[512];
+
+/* Parse through an exactly-sized heap copy without a terminating NUL, so
+ * ASan flags any read past len. */
+static int parse_len(const char *text, size_t len)
+{
+    char *buf = malloc(len ? len : 1);
+    int rc;
+
+    if (buf == NULL) {
+        fprintf(stderr, "out of memory\n");
+        exit(2);
+    }
+    memcpy(buf, text, len);
+    memset(g_err, 'x', sizeof g_err);
+    g_err[sizeof g_err - 1] = '\0';
+    rc = scene_parse("t", buf, len, &g_scene, g_err, sizeof g_err);
+    free(buf);
+    return rc;
+}
+
+static int parse_str(const char *text)
+{
+    return parse_len(text, strlen(text));
+}
+
+/* Check that text fails on `line` with a message containing frag. */
+static void expect_error_len(const char *text, size_t len, int line, const char *frag,
+                             const char *where)
+{
+    char prefix[32];
+    int rc = parse_len(text, len);
+
+    snprintf(prefix, sizeof prefix, "t:%d: ", line);
+    CHECK_MSG(rc == -1, "%s: rc %d, expected -1", where, rc);
+    CHECK_MSG(strncmp(g_err, prefix, strlen(prefix)) == 0,
+              "%s: err \"%s\" does not start with \"%s\"", where, g_err, prefix);
+    CHECK_MSG(strstr(g_err, frag) != NULL, "%s: err \"%s\" lacks \"%s\"", where,
+              g_err, frag);
+}
+
+#define HERE "line " STR(__LINE__)
+#define EXPECT_ERROR(text, line, frag) expect_error_len(text, strlen(text), line, frag, HERE)
+
+static int near(double a, double b)
+{
+    return fabs(a - b) <= 1e-12;
+}
+
+static int vec_is(scene_vec_t v, double x, double y, double z)
+{
+    return near(v.x, x) && near(v.y, y) && near(v.z, z);
+}
+
+static int color_is(const double *c, double r, double g, double b)
+{
+    return near(c[0], r) && near(c[1], g) && near(c[2], b);
+}
+
+static const char *good_scene =
+    "# comment\n"
+    "image 640 430                     # default size\n"
+    "background 0 0 0                  # default black\n"
+    "camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45\n"
+    "plane point 0 -1 0 normal 0 1 0 color 0 1 0\n"
+    "sphere center 0 0 -3 radius 0.5 color 1 0 0\n"
+    "triangle a -0.5 0.5 -3 b 0.5 0.5 -3 c 0.5 -0.5 -3 color 1 0 1\n"
+    "box min -0.5 0 -0.5 max 0.5 1 0.5 color 0 0 1\n";
+
+/* The values of good_scene, whatever line endings or layout it came in. */
+static void check_good_values(const scene_t *s, const char *where)
+{
+    CHECK_MSG(s->width == 640 && s->height == 430, "from %s", where);
+    CHECK_MSG(color_is(s->background, 0, 0, 0), "from %s", where);
+    CHECK_MSG(s->camera.kind == SCENE_CAM_PERSPECTIVE, "from %s", where);
+    CHECK_MSG(vec_is(s->camera.eye, 0, 0, 0), "from %s", where);
+    CHECK_MSG(vec_is(s->camera.gaze, 0, 0, -1), "from %s", where);
+    CHECK_MSG(vec_is(s->camera.up, 0, 1, 0), "from %s", where);
+    CHECK_MSG(near(s->camera.fov_deg, 45), "from %s", where);
+    CHECK_MSG(s->count == 4, "from %s: count %d", where, s->count);
+    if (s->count != 4)
+        return;
+    CHECK_MSG(s->obj[0].kind == SCENE_PLANE && s->obj[0].line == 5, "from %s", where);
+    CHECK_MSG(vec_is(s->obj[0].p[0], 0, -1, 0), "from %s", where);
+    CHECK_MSG(vec_is(s->obj[0].p[1], 0, 1, 0), "from %s", where);
+    CHECK_MSG(color_is(s->obj[0].color, 0, 1, 0), "from %s", where);
+
+    CHECK_MSG(s->obj[1].kind == SCENE_SPHERE && s->obj[1].line == 6, "from %s", where);
+    CHECK_MSG(vec_is(s->obj[1].p[0], 0, 0, -3), "from %s", where);
+    CHECK_MSG(near(s->obj[1].radius, 0.5), "from %s", where);
+    CHECK_MSG(color_is(s->obj[1].color, 1, 0, 0), "from %s", where);
+
+    CHECK_MSG(s->obj[2].kind == SCENE_TRIANGLE && s->obj[2].line == 7, "from %s", where);
+    CHECK_MSG(vec_is(s->obj[2].p[0], -0.5, 0.5, -3), "from %s", where);
+    CHECK_MSG(vec_is(s->obj[2].p[1], 0.5, 0.5, -3), "from %s", where);
+    CHECK_MSG(vec_is(s->obj[2].p[2], 0.5, -0.5, -3), "from %s", where);
+    CHECK_MSG(color_is(s->obj[2].color, 1, 0, 1), "from %s", where);
+
+    CHECK_MSG(s->obj[3].kind == SCENE_BOX && s->obj[3].line == 8, "from %s", where);
+    CHECK_MSG(vec_is(s->obj[3].p[0], -0.5, 0, -0.5), "from %s", where);
+    CHECK_MSG(vec_is(s->obj[3].p[1], 0.5, 1, 0.5), "from %s", where);
+    CHECK_MSG(color_is(s->obj[3].color, 0, 0, 1), "from %s", where);
+}
+
+static void test_good_scene(void)
+{
+    CHECK_MSG(parse_str(good_scene) == 0, "%s", g_err);
+    check_good_values(&g_scene, HERE);
+}
+
+static void test_crlf(void)
+{
+    char buf[2048];
+    size_t i, n = 0;
+
+    for (i = 0; good_scene[i] != '\0' && n + 2 < sizeof buf; i++) {
+        if (good_scene[i] == '\n')
+            buf[n++] = '\r';
+        buf[n++] = good_scene[i];
+    }
+    CHECK_MSG(parse_len(buf, n) == 0, "%s", g_err);
+    check_good_values(&g_scene, HERE);
+    /* An error in a CRLF file still reports the right line. */
+    EXPECT_ERROR("# x\r\n" CAM "sphere center 0 0 -3 radius -1 color 0 0 0\r\n", 3,
+                 "radius must be > 0, got -1");
+    /* A CR just before the end of text (no final LF) is a line ending too. */
+    CHECK_MSG(parse_str("camera orthographic eye 0 0 0 gaze 0 0 -1 up 0 1 0 scale 4\r") == 0,
+              "%s", g_err);
+}
+
+static void test_orthographic_and_defaults(void)
+{
+    CHECK_MSG(parse_str("camera orthographic eye 1 2 3 gaze 0 0 -1 up 0 1 0 scale 4\n") == 0,
+              "%s", g_err);
+    CHECK(g_scene.camera.kind == SCENE_CAM_ORTHOGRAPHIC);
+    CHECK(near(g_scene.camera.scale, 4));
+    CHECK(vec_is(g_scene.camera.eye, 1, 2, 3));
+    CHECK(g_scene.width == SCENE_DEFAULT_WIDTH && g_scene.height == SCENE_DEFAULT_HEIGHT);
+    CHECK(color_is(g_scene.background, 0, 0, 0));
+    CHECK(g_scene.count == 0);
+}
+
+static void test_comments_order_layout(void)
+{
+    /* Comments: whole-line, trailing, glued to a token, with UTF-8;
+     * blank and whitespace-only lines; tabs; fields in any order. */
+    const char *text = "\n"
+                       "   \t \n"
+                       "# caf\xc3\xa9 \xff comment\n"
+                       "background 0.25 0.5 1# glued\n"
+                       "camera\tperspective fov 60 up 0 1 0\t\tgaze 0 0 -1 eye 1 2 3 # trailing\n"
+                       "sphere color 1 0 0 radius 0.5 center 0 0 -3\n"
+                       "box max 1 1 1 color 0 0 1 min 0 0 0\n"
+                       "triangle color 1 1 1 c 0 1 0 b 1 0 0 a 0 0 0\n"
+                       "plane color 0 1 0 normal 0 2 0 point 0 -1 0\n"
+                       "# the end";
+    CHECK_MSG(parse_str(text) == 0, "%s", g_err);
+    CHECK(color_is(g_scene.background, 0.25, 0.5, 1));
+    CHECK(near(g_scene.camera.fov_deg, 60) && vec_is(g_scene.camera.eye, 1, 2, 3));
+    CHECK(g_scene.count == 4);
+    CHECK(g_scene.obj[0].kind == SCENE_SPHERE && vec_is(g_scene.obj[0].p[0], 0, 0, -3));
+    CHECK(near(g_scene.obj[0].radius, 0.5) && g_scene.obj[0].line == 6);
+    CHECK(vec_is(g_scene.obj[1].p[0], 0, 0, 0) && vec_is(g_scene.obj[1].p[1], 1, 1, 1));
+    CHECK(vec_is(g_scene.obj[2].p[0], 0, 0, 0) && vec_is(g_scene.obj[2].p[1], 1, 0, 0));
+    CHECK(vec_is(g_scene.obj[2].p[2], 0, 1, 0));
+    /* The normal is stored as given, not normalised. */
+    CHECK(vec_is(g_scene.obj[3].p[1], 0, 2, 0));
+
+    /* No trailing newline on the last (statement) line. */
+    CHECK_MSG(parse_str(CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0") == 0, "%s", g_err);
+    CHECK(g_scene.count == 1 && g_scene.obj[0].line == 2 && near(g_scene.obj[0].radius, 0.5));
+    /* An error on a last line without newline. */
+    EXPECT_ERROR(CAM "sphere center 0 0 -3 radius 0.5 color 1 0 2", 2,
+                 "color component 2 outside 0..1");
+}
+
+static void test_limits_accepted(void)
+{
+    /* Values exactly at the documented limits are inside the domain. */
+    CHECK_MSG(parse_str("image 4096 1\n"
+                        "camera orthographic eye -8192 8192 0 gaze 8192 0 -8192 up 0 1 0 "
+                        "scale " STR(FXRT_RADIUS_LIMIT) "\n"
+                        "sphere center 8192 -8192 8192 radius 4096 color 1 1 1\n"
+                        "sphere center 0.0000152587890625 0 -0 radius 0.0000152587890625 "
+                        "color 0 0.0000152587890625 1\n"
+                        "box min 1 1 1 max 1 1 1 color 0 0 0\n") == 0,
+              "%s", g_err);
+    CHECK(g_scene.width == 4096 && g_scene.height == 1);
+    CHECK(g_scene.count == 3);
+    CHECK(near(g_scene.obj[1].p[0].x, 1.0 / 65536));
+    /* -0 is stored as +0. */
+    CHECK(g_scene.obj[1].p[0].z == 0.0 && !signbit(g_scene.obj[1].p[0].z));
+    /* Spellings strtod and the grammar both accept. */
+    CHECK_MSG(parse_str("camera perspective eye +1. .5 1e2 gaze 0 0 -1E+0 up 0 1 0 fov 179.9\n") ==
+                  0,
+              "%s", g_err);
+    CHECK(vec_is(g_scene.camera.eye, 1, 0.5, 100));
+    /* Nearly but not quite parallel (ratio 1e-5 > 1e-6). */
+    CHECK_MSG(parse_str("camera perspective eye 0 0 0 gaze 0 0 -1 up 0.01 0 -1000 fov 45\n") == 0,
+              "%s", g_err);
+    /* Leading zeros in image size. */
+    CHECK_MSG(parse_str("image 0640 0480\n" CAM) == 0, "%s", g_err);
+    CHECK(g_scene.width == 640 && g_scene.height == 480);
+}
+
+struct error_case {
+    const char *text;
+    int line;
+    const char *frag;
+};
+
+#define SPHERE_OK "sphere center 0 0 -3 radius 0.5 color 1 0 0\n"
+
+static const struct error_case error_cases[] = {
+    /* keywords and structure */
+    {CAM "sphre center 0 0 -3 radius 0.5 color 1 0 0\n", 2, "unknown keyword 'sphre'"},
+    {"center 0 0 0\n", 1, "unknown keyword 'center'"},
+    {CAM "sphere center 0 0 radius 0.5 color 1 0 0\n", 2, "'center' needs 3 numbers, got 2"},
+    {CAM "sphere center 0 0\n", 2, "'center' needs 3 numbers, got 2"},
+    {CAM "sphere center 0 0 -3 4 radius 0.5 color 1 0 0\n", 2, "'center' needs 3 numbers, got 4"},
+    {CAM "sphere center 0 0 -3 radius color 1 0 0\n", 2, "'radius' needs 1 number, got 0"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 foo\n", 2, "unexpected 'foo' after sphere"},
+    {CAM "sphere foo center 0 0 -3 radius 0.5 color 1 0 0\n", 2, "unexpected 'foo' after sphere"},
+    {CAM "sphere center 0 0 -3 normal 0 1 0 radius 0.5 color 1 0 0\n", 2,
+     "sphere has no field 'normal'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 radius 1 color 1 0 0\n", 2, "duplicate field 'radius'"},
+    {CAM "sphere center 0 0 -3 color 1 0 0\n", 2, "missing field 'radius' for sphere"},
+    {CAM "sphere\n", 2, "missing field 'center' for sphere"},
+    {CAM "triangle a 0 0 0 b 1 0 0 color 1 1 1\n", 2, "missing field 'c' for triangle"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0\n", 1,
+     "missing field 'fov' for perspective camera"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 scale 4\n", 1,
+     "perspective camera has no field 'scale'"},
+    {"camera fisheye eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45\n", 1, "unknown camera type 'fisheye'"},
+    {"camera\n", 1, "camera needs a type"},
+    /* numbers */
+    {CAM "sphere center 0 abc -3 radius 0.5 color 1 0 0\n", 2, "'abc' is not a number"},
+    {CAM "sphere center 0 1.2.3 -3 radius 0.5 color 1 0 0\n", 2, "'1.2.3' is not a number"},
+    {CAM "sphere center 0 1e -3 radius 0.5 color 1 0 0\n", 2, "'1e' is not a number"},
+    {CAM "sphere center 0 . -3 radius 0.5 color 1 0 0\n", 2, "'.' is not a number"},
+    {CAM "sphere center 0 --1 -3 radius 0.5 color 1 0 0\n", 2, "'--1' is not a number"},
+    {CAM "sphere center 0 1,5 -3 radius 0.5 color 1 0 0\n", 2, "'1,5' is not a number"},
+    {CAM "sphere center 0 nan -3 radius 0.5 color 1 0 0\n", 2, "NaN or infinity not allowed: 'nan'"},
+    {CAM "sphere center 0 -Infinity -3 radius 0.5 color 1 0 0\n", 2,
+     "NaN or infinity not allowed: '-Infinity'"},
+    {CAM "sphere center 0 0 -3 radius INF color 1 0 0\n", 2, "NaN or infinity not allowed: 'INF'"},
+    {CAM "sphere center 0 0x1p3 -3 radius 0.5 color 1 0 0\n", 2,
+     "hexadecimal numbers not allowed: '0x1p3'"},
+    {CAM "sphere center 0 1e99999 -3 radius 0.5 color 1 0 0\n", 2,
+     "value 1e99999 out of range (|coordinate| <= " STR(FXRT_COORD_LIMIT) ")"},
+    {CAM "sphere center 0 0 -3 radius 1e99999 color 1 0 0\n", 2, "radius 1e99999 exceeds limit"},
+    {CAM "sphere center 0 1e-9 -3 radius 0.5 color 1 0 0\n", 2, "too small for Q16.16: 1e-9"},
+    {CAM "sphere center 0 -1e-400 -3 radius 0.5 color 1 0 0\n", 2,
+     "too small for Q16.16: -1e-400"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 0.00001 0 0\n", 2,
+     "too small for Q16.16: 0.00001"},
+    /* ranges */
+    {CAM "sphere center 0 40000 -3 radius 0.5 color 1 0 0\n", 2,
+     "value 40000 out of range (|coordinate| <= " STR(FXRT_COORD_LIMIT) ")"},
+    {CAM "sphere center 0 -8192.5 -3 radius 0.5 color 1 0 0\n", 2,
+     "value -8192.5 out of range"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -40000 up 0 1 0 fov 45\n", 1,
+     "value -40000 out of range (|component| <= " STR(FXRT_COORD_LIMIT) ")"},
+    {CAM "sphere center 0 0 -3 radius -1 color 1 0 0\n", 2, "radius must be > 0, got -1"},
+    {CAM "sphere center 0 0 -3 radius 0 color 1 0 0\n", 2, "radius must be > 0, got 0"},
+    {CAM "sphere center 0 0 -3 radius 5000 color 1 0 0\n", 2,
+     "radius 5000 exceeds limit " STR(FXRT_RADIUS_LIMIT)},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 1.5 0\n", 2, "color component 1.5 outside 0..1"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 -0.5 0\n", 2,
+     "color component -0.5 outside 0..1"},
+    {"background 0 2 0\n" CAM, 1, "background color component 2 outside 0..1"},
+    {"background 0 0\n" CAM, 1, "'background' needs 3 numbers, got 2"},
+    {"background 0 0 0\nbackground 1 1 1\n" CAM, 2, "duplicate 'background' line (first on line 1)"},
+    /* camera geometry */
+    {"camera perspective eye 0 0 0 gaze 0 0 0 up 0 1 0 fov 45\n", 1, "gaze has zero length"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 0 0 fov 45\n", 1, "up has zero length"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 0 -2 fov 45\n", 1, "up is parallel to gaze"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 0 3 fov 45\n", 1, "up is parallel to gaze"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0.001 0 -1000 fov 45\n", 1,
+     "up is parallel to gaze"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 180\n", 1,
+     "fov must be inside (0, 180), got 180"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 0\n", 1,
+     "fov must be inside (0, 180), got 0"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov -10\n", 1,
+     "fov must be inside (0, 180), got -10"},
+    {"camera orthographic eye 0 0 0 gaze 0 0 -1 up 0 1 0 scale 0\n", 1, "scale must be > 0"},
+    {"camera orthographic eye 0 0 0 gaze 0 0 -1 up 0 1 0 scale 5000\n", 1,
+     "scale 5000 exceeds limit " STR(FXRT_RADIUS_LIMIT)},
+    /* objects */
+    {CAM "plane point 0 -1 0 normal 0 0 0 color 0 1 0\n", 2, "normal has zero length"},
+    {CAM "box min 2 0 0 max 1 1 1 color 0 0 1\n", 2, "box min exceeds max on x (2 > 1)"},
+    {CAM "box min 0 0 5.5 max 1 1 -1 color 0 0 1\n", 2, "box min exceeds max on z (5.5 > -1)"},
+    /* image */
+    {"image 0 5\n" CAM, 1, "image size must be 1..4096 x 1..4096, got 0x5"},
+    {"image 4097 5\n" CAM, 1, "got 4097x5"},
+    {"image 5 99999999999999999999999\n" CAM, 1, "got 5x99999999999999999999999"},
+    {"image 640.5 480\n" CAM, 1, "'image' needs 2 integers"},
+    {"image +640 480\n" CAM, 1, "'image' needs 2 integers, got '+640'"},
+    {"image 640 -480\n" CAM, 1, "'image' needs 2 integers, got '-480'"},
+    {"image 640\n" CAM, 1, "'image' needs 2 integers, got 1 value"},
+    {"image 640 480 3\n" CAM, 1, "'image' needs 2 integers, got 3 values"},
+    {"image 640 480\n" CAM "image 640 480\n", 3, "duplicate 'image' line (first on line 1)"},
+    /* whole statements */
+    {"# a\n# b\n" CAM SPHERE_OK CAM, 5, "second camera (first on line 3)"},
+    {"# only\n" SPHERE_OK, 2, "no camera in scene"},
+    {"# only\n" SPHERE_OK "# last, no newline", 3, "no camera in scene"},
+    {"", 1, "no camera in scene"},
+    {"\n\n\n", 3, "no camera in scene"},
+    /* bytes */
+    {CAM "sphere center 0 0 -3 \x01 radius 0.5 color 1 0 0\n", 2, "binary data (byte 0x01)"},
+    {CAM "# comment with \x7f\n", 2, "binary data (byte 0x7f)"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 \xff\n", 2, "non-ASCII byte 0xff"},
+    {CAM "sphere center 0 0 \xc3\xa9 radius 0.5 color 1 0 0\n", 2, "non-ASCII byte 0xc3"},
+    {"image 640 480\r" CAM, 1, "carriage return inside a line"},
+};
+
+static void test_error_table(void)
+{
+    size_t i;
+
+    for (i = 0; i < sizeof error_cases / sizeof error_cases[0]; i++) {
+        char where[64];
+        snprintf(where, sizeof where, "error_cases[%zu]", i);
+        expect_error_len(error_cases[i].text, strlen(error_cases[i].text), error_cases[i].line,
+                         error_cases[i].frag, where);
+    }
+}
+
+static void test_embedded_nul(void)
+{
+    static const char text[] = CAM "sphere center 0 0 -3\0 radius 0.5 color 1 0 0\n";
+
+    expect_error_len(text, sizeof text - 1, 2, "binary data (byte 0x00)", HERE);
+    /* A NUL as the very last byte, with no newline after it. */
+    expect_error_len(CAM "\0", strlen(CAM) + 1, 2, "binary data (byte 0x00)", HERE);
+}
+
+static void test_long_lines(void)
+{
+    static char buf[4096];
+    size_t n;
+
+    /* A 2000-byte line. */
+    n = (size_t)snprintf(buf, sizeof buf, "%s# ", CAM);
+    memset(buf + n, 'x', 2000 - 2);
+    n += 2000 - 2;
+    buf[n++] = '\n';
+    expect_error_len(buf, n, 2, "line longer than " STR(SCENE_MAX_LINE) " bytes", HERE);
+
+    /* Exactly SCENE_MAX_LINE bytes is fine, also with a CR before the LF;
+     * one more is not. */
+    n = (size_t)snprintf(buf, sizeof buf, "%s# ", CAM);
+    memset(buf + n, 'x', SCENE_MAX_LINE - 2);
+    n += SCENE_MAX_LINE - 2;
+    buf[n] = '\n';
+    CHECK_MSG(parse_len(buf, n + 1) == 0, "%s", g_err);
+    buf[n] = '\r';
+    buf[n + 1] = '\n';
+    CHECK_MSG(parse_len(buf, n + 2) == 0, "%s", g_err);
+    buf[n] = 'x';
+    buf[n + 1] = '\n';
+    expect_error_len(buf, n + 2, 2, "line longer than", HERE);
+
+    /* A long token is shortened when quoted in a message. */
+    n = (size_t)snprintf(buf, sizeof buf, "%s", CAM);
+    memset(buf + n, 'q', 900);
+    n += 900;
+    expect_error_len(buf, n, 2, "unknown keyword 'qqqq", HERE);
+    CHECK(strstr(g_err, "...'") != NULL && strlen(g_err) < 200);
+}
+
+static void test_capacity(void)
+{
+    static char buf[64 * 1024];
+    size_t n = 0;
+    int i;
+
+    n += (size_t)snprintf(buf + n, sizeof buf - n, "%s", CAM);
+    for (i = 0; i < FXRT_MAX_SPHERES; i++)
+        n += (size_t)snprintf(buf + n, sizeof buf - n, "%s", SPHERE_OK);
+    CHECK_MSG(parse_len(buf, n) == 0, "%s", g_err);
+    CHECK(g_scene.count == FXRT_MAX_SPHERES);
+    /* One more sphere than the capacity. */
+    n += (size_t)snprintf(buf + n, sizeof buf - n, "%s", SPHERE_OK);
+    if (FXRT_MAX_SPHERES > 0)
+        expect_error_len(buf, n, FXRT_MAX_SPHERES + 2,
+                         "too many spheres (capacity " STR(FXRT_MAX_SPHERES) ")", HERE);
+    else
+        expect_error_len(buf, n, 2, "spheres are not in this build", HERE);
+}
+
+/* The err contract must hold for tiny or missing buffers too. */
+static void test_err_buffers(void)
+{
+    char small[8];
+
+    CHECK(scene_parse("t", "bogus", 5, &g_scene, NULL, 0) == -1);
+    CHECK(scene_parse("t", "bogus", 5, &g_scene, small, 0) == -1);
+    memset(small, 'x', sizeof small);
+    CHECK(scene_parse("a-long-scene-name", "bogus", 5, &g_scene, small, sizeof small) == -1);
+    CHECK(memchr(small, '\0', sizeof small) != NULL && strncmp(small, "a-long-", 7) == 0);
+    CHECK(scene_parse("t", NULL, 0, &g_scene, g_err, sizeof g_err) == -1);
+    CHECK(strstr(g_err, "no camera") != NULL);
+}
+
+/* Cheap in-process mutation run: the real fuzzing is libFuzzer's job, but
+ * under ASan/UBSan this catches the obvious crashes on every test run. */
+static void test_mutations(void)
+{
+    static char buf[2048];
+    size_t base = strlen(good_scene);
+    uint32_t state = 12345;
+    int iter, bad_rc = 0, bad_err = 0;
+
+    for (iter = 0; iter < 20000; iter++) {
+        size_t n = base;
+        int k, edits;
+        memcpy(buf, good_scene, base);
+        state = state * 1664525u + 1013904223u;
+        edits = 1 + (int)((state >> 24) % 4);
+        for (k = 0; k < edits; k++) {
+            size_t at;
+            state = state * 1664525u + 1013904223u;
+            at = (state >> 8) % n;
+            switch ((state >> 28) % 4) {
+            case 0: /* random byte */
+                buf[at] = (char)(state >> 16);
+                break;
+            case 1: /* a byte from the scene's alphabet */
+                buf[at] = "0123456789.-+e #\n\r\tnax"[(state >> 16) % 23];
+                break;
+            case 2: /* truncate */
+                n = at + 1;
+                break;
+            default: /* delete one byte */
+                memmove(buf + at, buf + at + 1, n - at - 1);
+                n = n > 1 ? n - 1 : n;
+                break;
+            }
+        }
+        {
+            int rc = parse_len(buf, n);
+            if (rc != 0 && rc != -1)
+                bad_rc++;
+            if (rc == -1 && strncmp(g_err, "t:", 2) != 0)
+                bad_err++;
+            if (rc == 0 && (g_scene.count < 0 || g_scene.count > SCENE_MAX_OBJECTS))
+                bad_rc++;
+        }
+    }
+    CHECK_MSG(bad_rc == 0, "%d bad results", bad_rc);
+    CHECK_MSG(bad_err == 0, "%d bad messages, last \"%s\"", bad_err, g_err);
+}
+
+static int write_file(const char *path, const char *data, size_t len)
+{
+    FILE *f = fopen(path, "wb");
+    size_t w;
+
+    if (f == NULL)
+        return -1;
+    w = fwrite(data, 1, len, f);
+    if (fclose(f) != 0 || w != len)
+        return -1;
+    return 0;
+}
+
+static void test_load(void)
+{
+    char dir[] = "/tmp/test_scene.XXXXXX";
+    char path[256];
+    char *big;
+    size_t i;
+
+    CHECK(scene_load("tests/bad-scenes/no-such-file.scene", &g_scene, g_err, sizeof g_err) == -1);
+    CHECK_MSG(strcmp(g_err, "tests/bad-scenes/no-such-file.scene: cannot open: "
+                            "No such file or directory") == 0,
+              "%s", g_err);
+
+    if (mkdtemp(dir) == NULL) {
+        CHECK_MSG(0, "mkdtemp failed");
+        return;
+    }
+    snprintf(path, sizeof path, "%s/good.scene", dir);
+    CHECK(write_file(path, good_scene, strlen(good_scene)) == 0);
+    CHECK_MSG(scene_load(path, &g_scene, g_err, sizeof g_err) == 0, "%s", g_err);
+    check_good_values(&g_scene, HERE);
+    remove(path);
+
+    /* Exactly 1 MiB of comment lines loads; one byte more is refused. */
+    big = malloc(1024 * 1024 + 1);
+    if (big != NULL) {
+        char want[300];
+        for (i = 0; i < 1024 * 1024; i++)
+            big[i] = (i % 64 == 63) ? '\n' : '#';
+        memcpy(big, CAM, strlen(CAM));
+        snprintf(path, sizeof path, "%s/big.scene", dir);
+        CHECK(write_file(path, big, 1024 * 1024) == 0);
+        CHECK_MSG(scene_load(path, &g_scene, g_err, sizeof g_err) == 0, "%s", g_err);
+        big[1024 * 1024] = '\n';
+        CHECK(write_file(path, big, 1024 * 1024 + 1) == 0);
+        CHECK(scene_load(path, &g_scene, g_err, sizeof g_err) == -1);
+        snprintf(want, sizeof want, "%s: file too large", path);
+        CHECK_MSG(strncmp(g_err, want, strlen(want)) == 0, "%s", g_err);
+        remove(path);
+        free(big);
+    }
+
+    /* A directory opens but cannot be read. */
+    CHECK(scene_load(dir, &g_scene, g_err, sizeof g_err) == -1);
+    CHECK_MSG(strstr(g_err, "cannot") != NULL, "%s", g_err);
+    rmdir(dir);
+}
+
+/* Read "LINE: fragment" from the first line of the file (after "# expect: ")
+ * or from the sidecar NAME.expect. Returns 0 on success. */
+static int read_expectation(const char *path, int *line, char *frag, size_t fragsize)
+{
+    char sidecar[512];
+    char first[1200];
+    const char *p;
+    char *end;
+    size_t n;
+    FILE *f;
+    long v;
+
+    n = strlen(path);
+    if (n < 6 || n + 1 > sizeof sidecar)
+        return -1;
+    snprintf(sidecar, sizeof sidecar, "%.*s.expect", (int)(n - 6), path);
+    f = fopen(sidecar, "rb");
+    if (f != NULL) {
+        n = fread(first, 1, sizeof first - 1, f);
+        fclose(f);
+        first[n] = '\0';
+        p = first;
+    } else {
+        static const char tag[] = "# expect: ";
+        f = fopen(path, "rb");
+        if (f == NULL)
+            return -1;
+        n = fread(first, 1, sizeof first - 1, f);
+        fclose(f);
+        first[n] = '\0';
+        if (strncmp(first, tag, sizeof tag - 1) != 0)
+            return -1;
+        p = first + sizeof tag - 1;
+    }
+    v = strtol(p, &end, 10);
+    if (end == p || strncmp(end, ": ", 2) != 0 || v < 0)
+        return -1;
+    *line = (int)v;
+    p = end + 2;
+    n = strcspn(p, "\r\n");
+    if (n == 0 || n >= fragsize)
+        return -1;
+    memcpy(frag, p, n);
+    frag[n] = '\0';
+    return 0;
+}
+
+static void test_bad_scene_files(void)
+{
+    DIR *d = opendir(BAD_SCENES_DIR);
+    struct dirent *e;
+    int files = 0;
+
+    CHECK_MSG(d != NULL, "cannot open %s (run from the repository root)", BAD_SCENES_DIR);
+    if (d == NULL)
+        return;
+    while ((e = readdir(d)) != NULL) {
+        char path[512], prefix[600], frag[1024];
+        size_t n = strlen(e->d_name);
+        int line, rc;
+
+        if (n < 7 || strcmp(e->d_name + n - 6, ".scene") != 0)
+            continue;
+        files++;
+        snprintf(path, sizeof path, "%s/%s", BAD_SCENES_DIR, e->d_name);
+        if (read_expectation(path, &line, frag, sizeof frag) != 0) {
+            CHECK_MSG(0, "%s: no '# expect: LINE: message' line and no .expect file", path);
+            continue;
+        }
+        rc = scene_load(path, &g_scene, g_err, sizeof g_err);
+        snprintf(prefix, sizeof prefix, "%s:%d: ", path, line);
+        CHECK_MSG(rc == -1, "%s: loaded, expected an error", path);
+        CHECK_MSG(strncmp(g_err, prefix, strlen(prefix)) == 0 && strstr(g_err, frag) != NULL,
+                  "%s: got \"%s\", expected \"%s...%s\"", path, g_err, prefix, frag);
+    }
+    closedir(d);
+    CHECK_MSG(files >= 12, "only %d .scene files in %s", files, BAD_SCENES_DIR);
+}
+
+int main(void)
+{
+    test_good_scene();
+    test_crlf();
+    test_orthographic_and_defaults();
+    test_comments_order_layout();
+    test_limits_accepted();
+    test_error_table();
+    test_embedded_nul();
+    test_long_lines();
+    test_capacity();
+    test_err_buffers();
+    test_mutations();
+    test_load();
+    test_bad_scene_files();
+    return check_report("test_scene");
+}
