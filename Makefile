@@ -21,13 +21,21 @@ NUMBERS := q16 float double
 num_id   = $(if $(filter q16,$1),1,$(if $(filter float,$1),2,3))
 
 CORE_NUM := num color cam geom world render
-HOST_SRC := main scene image compare engine_select
+HOST_SRC := main scene image compare engine_select args
 
 # --- host tool -----------------------------------------------------------
 HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o \
             $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
 
-all: $(BUILD)/fxrt
+SCENEC_OBJ := $(BUILD)/host/scenec.o $(BUILD)/host/scene.o $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
+              $(BUILD)/host/fx.o $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(BUILD)/host/scenec_emit-$(n).o \
+              $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
+
+all: $(BUILD)/fxrt $(BUILD)/fxrt-scenec
+
+$(BUILD)/fxrt-scenec: $(SCENEC_OBJ)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(CFLAGS_H) -o $@ $^ $(LDLIBS_H)
 
 $(BUILD)/fxrt: $(HOST_OBJ)
 	@echo "  LD      $@"
@@ -49,6 +57,10 @@ $(BUILD)/host/$(1)/%.o: core/%.c
 	@echo "  CC $(1)  $$<"
 	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
 $(BUILD)/host/engine-$(1).o: host/engine.c
+	@mkdir -p $$(@D)
+	@echo "  CC $(1)  $$<"
+	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
+$(BUILD)/host/scenec_emit-$(1).o: host/scenec_emit.c
 	@mkdir -p $$(@D)
 	@echo "  CC $(1)  $$<"
 	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
@@ -74,14 +86,32 @@ $(BUILD)/tests/%: $(BUILD)/tests/%.o $$($$*_DEPS)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(CFLAGS_H) -o $@ $^ $(LDLIBS_H)
 
-SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/freestanding.sh
+# Tests of the number-generic core, one binary per number type.
+NUM_TESTS   := $(patsubst tests/%.c,%,$(wildcard tests/test_geom.c))
+NUM_TEST_BIN := $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(BUILD)/tests/$(t)_$(n)))
+define num_test_rules
+$(BUILD)/tests/$(1)_$(2): tests/$(1).c $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(2)/%.o)
+	@mkdir -p $$(@D)
+	@echo "  CC/LD $(2) $$@"
+	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(2)) -Icore -Ihost -o $$@ $$^ $$(LDLIBS_H)
+endef
+$(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(eval $(call num_test_rules,$(t),$(n)))))
+TEST_BIN += $(NUM_TEST_BIN)
 
-test: deps $(BUILD)/fxrt $(TEST_BIN)
+SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/freestanding.sh tests/qemu.sh
+
+test: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN)
 	$(Q)BUILD=$(BUILD) tests/run.sh $(SUITES)
 
+# --- firmware (firmware/firmware.mk) ----------------------------------------
+include firmware/firmware.mk
+
 # --- demo ----------------------------------------------------------------
-demo: deps $(BUILD)/fxrt
+demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) tests/demo.sh
+
+size: deps $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) firmware/size.sh
 
 deps:
 	$(Q)host/deps.sh
@@ -89,5 +119,5 @@ deps:
 clean:
 	rm -rf $(BUILD)
 
-.PHONY: all test demo deps clean
+.PHONY: all test demo size deps clean
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

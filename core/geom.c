@@ -15,6 +15,7 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
     c->id = id;
 }
 
+#if FXRT_MAX_TRIANGLES > 0
 /* Unit normal of the plane spanned by a and b, or false when they are
  * parallel. In Q16.16 the cross product is formed exactly in Q32.32 and
  * shifted down before rounding, so long edges (whose cross product exceeds
@@ -40,6 +41,7 @@ static bool geom_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
 #endif
     return vec3_normalize(n);
 }
+#endif
 
 #if FXRT_MAX_PLANES > 0
 bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id)

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "args.h"
 #include "compare.h"
 #include "engine.h"
 #include "image.h"
@@ -23,6 +24,8 @@ static const char usage_main[] =
     "                 render a scene file\n"
     "  compare A B [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
     "                 compare two images and print metrics\n"
+    "  sheet OUT IMAGE...\n"
+    "                 place images of equal height side by side (8 px gaps)\n"
     "\n"
     "Run 'fxrt COMMAND --help' for a command's options.\n"
     "Exit status: 0 success, 1 a compare threshold was exceeded, 2 bad input or usage.\n";
@@ -65,39 +68,6 @@ static int fail_usage(const char *usage, const char *fmt, const char *arg)
     return 2;
 }
 
-/* Strict decimal integer in [lo, hi]. */
-static int parse_int(const char *s, long lo, long hi, long *out)
-{
-    if (*s < '0' || *s > '9')
-        return -1;
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (errno || *end || v < lo || v > hi)
-        return -1;
-    *out = v;
-    return 0;
-}
-
-static int parse_size(const char *s, int *w, int *h)
-{
-    const char *x = strchr(s, 'x');
-    if (!x || x == s)
-        return -1;
-    char wbuf[16];
-    size_t n = (size_t)(x - s);
-    if (n >= sizeof wbuf)
-        return -1;
-    memcpy(wbuf, s, n);
-    wbuf[n] = 0;
-    long lw, lh;
-    if (parse_int(wbuf, 1, FXRT_MAX_DIM, &lw) || parse_int(x + 1, 1, FXRT_MAX_DIM, &lh))
-        return -1;
-    *w = (int)lw;
-    *h = (int)lh;
-    return 0;
-}
-
 static int parse_double(const char *s, double *out)
 {
     char *end;
@@ -137,7 +107,7 @@ static int cmd_render(int argc, char **argv)
         if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
             out = argv[++i];
         } else if (!strcmp(a, "--size")) {
-            if (parse_size(argv[++i], &w, &h))
+            if (args_size(argv[++i], &w, &h))
                 return fail_usage(usage_render, "render: bad --size '%s' (want WxH, each 1..4096)", argv[i]);
         } else if (!strcmp(a, "--number")) {
             if (engine_number_parse(argv[++i], &num))
@@ -205,7 +175,7 @@ static int cmd_compare(int argc, char **argv)
             if (parse_double(argv[++i], &max_pct))
                 return fail_usage(usage_compare, "compare: bad --max-pct '%s' (want a number >= 0)", argv[i]);
         } else if (!strcmp(a, "--max-interior")) {
-            if (parse_int(argv[++i], 0, 1000000000L, &max_interior))
+            if (args_int(argv[++i], 0, 1000000000L, &max_interior))
                 return fail_usage(usage_compare, "compare: bad --max-interior '%s' (want an integer >= 0)", argv[i]);
         } else if (a[0] == '-' && a[1]) {
             return fail_usage(usage_compare, "compare: unknown option '%s'", a);
@@ -247,6 +217,65 @@ done:
     return rc;
 }
 
+static const char usage_sheet[] =
+    "usage: fxrt sheet OUT.png|OUT.ppm IMAGE...\n"
+    "\n"
+    "Place the images (PNG or PPM, all of the same height) left to right with\n"
+    "8-pixel grey gaps, e.g. a Q16.16 render, its reference and their diff.\n";
+
+#define SHEET_GAP 8
+#define SHEET_MAX 16
+
+static int cmd_sheet(int argc, char **argv)
+{
+    if (argc >= 1 && (!strcmp(argv[0], "-h") || !strcmp(argv[0], "--help"))) {
+        fputs(usage_sheet, stdout);
+        return 0;
+    }
+    if (argc < 2)
+        return fail_usage(usage_sheet, "sheet: %s", "needs OUT and at least one IMAGE");
+    if (argc - 1 > SHEET_MAX)
+        return fail_usage(usage_sheet, "sheet: %s", "at most 16 images");
+    char err[ERR_LEN];
+    image_t in[SHEET_MAX] = {{0}}, out = {0};
+    int n = argc - 1, width = 0, rc = 2;
+    for (int i = 0; i < n; i++) {
+        if (image_read(argv[1 + i], &in[i], err, sizeof err)) {
+            fprintf(stderr, "fxrt: sheet: %s\n", err);
+            goto done;
+        }
+        if (in[i].height != in[0].height) {
+            fprintf(stderr, "fxrt: sheet: %s: height %d differs from %d\n", argv[1 + i], in[i].height,
+                    in[0].height);
+            goto done;
+        }
+        width += in[i].width + (i ? SHEET_GAP : 0);
+    }
+    if (width > IMAGE_MAX_DIM) {
+        fprintf(stderr, "fxrt: sheet: combined width %d too large\n", width);
+        goto done;
+    }
+    if (image_alloc(&out, width, in[0].height, err, sizeof err)) {
+        fprintf(stderr, "fxrt: sheet: %s\n", err);
+        goto done;
+    }
+    memset(out.rgb, 96, (size_t)3 * out.width * out.height);
+    for (int i = 0, x0 = 0; i < n; x0 += in[i].width + SHEET_GAP, i++)
+        for (int y = 0; y < in[i].height; y++)
+            memcpy(out.rgb + 3 * ((size_t)y * out.width + x0), in[i].rgb + (size_t)3 * y * in[i].width,
+                   (size_t)3 * in[i].width);
+    if (image_write(argv[0], &out, err, sizeof err)) {
+        fprintf(stderr, "fxrt: sheet: %s\n", err);
+        goto done;
+    }
+    rc = 0;
+done:
+    for (int i = 0; i < n; i++)
+        image_free(&in[i]);
+    image_free(&out);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
@@ -260,5 +289,7 @@ int main(int argc, char **argv)
         return cmd_render(argc - 2, argv + 2);
     if (!strcmp(cmd, "compare"))
         return cmd_compare(argc - 2, argv + 2);
+    if (!strcmp(cmd, "sheet"))
+        return cmd_sheet(argc - 2, argv + 2);
     return fail_usage(usage_main, "unknown command '%s'", cmd);
 }

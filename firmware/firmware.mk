@@ -1,0 +1,91 @@
+# Firmware build, included by the top Makefile. One ELF per
+# (BOARD, SCENE, NUMBER, SIZE, FB); test scripts call make once per ELF.
+#   make fw   SCENE=scenes/abb6-sphere.scene BOARD=mps2-an385 NUMBER=q16 SIZE=160x120 [FB=full|stream]
+#   make qemu (same variables): build, run in QEMU, write build/qemu/BOARD/NAME-NUMBER.ppm
+
+BOARD  ?= mps2-an385
+NUMBER ?= q16
+SIZE   ?= 160x120
+SCENE  ?= scenes/abb6-sphere.scene
+
+# Per board: CPU flags, SysTick clock period in ns (QEMU's model), and the
+# default frame mode (the micro:bit's 16 KB cannot hold a 160x120 frame).
+BOARDS := mps2-an385 mps2-an386 microbit
+CPU_mps2-an385   := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+CPU_mps2-an386   := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
+CPU_microbit     := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft
+QEMU_M_mps2-an385 := mps2-an385
+QEMU_M_mps2-an386 := mps2-an386
+QEMU_M_microbit   := microbit
+TICK_NS_mps2-an385 := 40
+TICK_NS_mps2-an386 := 40
+TICK_NS_microbit   := 62.5
+FB_mps2-an385 := full
+FB_mps2-an386 := full
+FB_microbit   := stream
+FB ?= $(FB_$(BOARD))
+
+ifeq ($(CPU_$(BOARD)),)
+$(error unknown BOARD '$(BOARD)' (one of: $(BOARDS)))
+endif
+ifeq ($(filter $(NUMBER),$(NUMBERS)),)
+$(error unknown NUMBER '$(NUMBER)' (one of: $(NUMBERS)))
+endif
+
+ARM_CC   := arm-none-eabi-gcc
+FW_NAME  := $(basename $(notdir $(SCENE)))
+# FW_EXTRA adds compiler flags (e.g. -DFXRT_PIXEL=2); name them with FW_TAG.
+FW_DIR   := $(BUILD)/fw/$(BOARD)/$(FW_NAME)-$(NUMBER)-$(SIZE)-$(FB)$(if $(FW_TAG),-$(FW_TAG))
+FW_ELF   := $(FW_DIR)/fxrt.elf
+FW_OUT   := $(FW_NAME)-$(NUMBER).ppm
+FB_FLAG  := $(if $(filter stream,$(FB)),-DFXRT_FB_MODE=2,-DFXRT_FB_MODE=1)
+FW_CFLAGS := $(WARN) -O2 -g $(CPU_$(BOARD)) -ffreestanding -ffunction-sections -fdata-sections \
+             -fno-math-errno -fstack-usage -DFXRT_NUMBER=$(call num_id,$(NUMBER)) $(FB_FLAG) $(FW_EXTRA) \
+             -include $(FW_DIR)/scene_config.h -I$(FW_DIR) -Icore -Ifirmware \
+             '-DFXRT_OUT_PATH="$(FW_OUT).part"'
+FW_LDFLAGS := -nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections \
+              -Wl,-Map=$(FW_DIR)/fxrt.map -Llinker -Tlinker/$(BOARD).ld -lm
+FW_SRC   := $(CORE_NUM:%=core/%.c) core/fx.c firmware/main.c firmware/startup.c \
+            firmware/semihost.c firmware/counter.c
+FW_OBJ   := $(patsubst %.c,$(FW_DIR)/%.o,$(FW_SRC))
+
+$(FW_DIR)/scene_data.h: $(SCENE) $(BUILD)/fxrt-scenec
+	@mkdir -p $(@D)
+	@echo "  SCENEC  $(SCENE) -> $(@D)"
+	$(Q)$(BUILD)/fxrt-scenec $(SCENE) --number $(NUMBER) --size $(SIZE) --out $(@D)
+$(FW_DIR)/scene_config.h: $(FW_DIR)/scene_data.h
+
+# Rebuild when the flags change (the directory name does not encode them all).
+$(FW_DIR)/cflags: FORCE
+	@mkdir -p $(@D)
+	@echo '$(FW_CFLAGS)' | cmp -s - $@ || echo '$(FW_CFLAGS)' > $@
+
+$(FW_DIR)/%.o: %.c $(FW_DIR)/scene_data.h $(FW_DIR)/cflags
+	@mkdir -p $(@D)
+	@echo "  ARMCC   $<"
+	$(Q)$(ARM_CC) $(FW_CFLAGS) -MMD -MP -c $< -o $@
+
+$(FW_ELF): $(FW_OBJ) $(wildcard linker/*.ld)
+	@echo "  ARMLD   $@"
+	$(Q)$(ARM_CC) $(CPU_$(BOARD)) -o $@ $(FW_OBJ) $(FW_LDFLAGS)
+
+fw: $(FW_ELF)
+
+# Run in QEMU: deterministic (-icount), with a timeout; prints instructions=N.
+qemu: $(FW_ELF)
+	$(Q)BOARD=$(BOARD) QEMU_M=$(QEMU_M_$(BOARD)) TICK_NS=$(TICK_NS_$(BOARD)) \
+	  firmware/qemu-run.sh $(FW_ELF) $(BUILD)/qemu/$(BOARD) $(FW_OUT)
+
+# The calibration image: a loop of exactly 2*10^6 instructions.
+CAL_ELF := $(BUILD)/fw/$(BOARD)/calibrate.elf
+$(CAL_ELF): firmware/calibrate.c firmware/startup.c firmware/semihost.c firmware/counter.c
+	@mkdir -p $(@D)
+	@echo "  ARMCC   $@"
+	$(Q)$(ARM_CC) $(WARN) -Os $(CPU_$(BOARD)) -ffreestanding -Ifirmware $^ -nostartfiles \
+	  --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Llinker -Tlinker/$(BOARD).ld -o $@
+calibrate: $(CAL_ELF)
+	$(Q)BOARD=$(BOARD) QEMU_M=$(QEMU_M_$(BOARD)) TICK_NS=$(TICK_NS_$(BOARD)) \
+	  firmware/qemu-run.sh $(CAL_ELF) $(BUILD)/qemu/$(BOARD) -
+
+.PHONY: fw qemu calibrate FORCE
+FORCE:

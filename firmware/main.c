@@ -1,0 +1,176 @@
+/* Board main: render the compiled-in scene and send it to the host as a
+ * binary PPM over semihosting, then report instructions, RAM and stack.
+ *
+ * Frame modes (FXRT_FB_MODE):
+ *   FXRT_FB_FULL    the whole frame in a static framebuffer, then one dump
+ *   FXRT_FB_STREAM  FXRT_BAND_ROWS rows at a time, each band sent as soon
+ *                   as it is rendered: RAM does not grow with image height
+ * Pixel format of the framebuffer (FXRT_PIXEL, full-frame mode):
+ *   FXRT_RGB888     3 bytes per pixel, exactly the renderer's output
+ *   FXRT_RGB565     2 bytes per pixel; expanded back to 8 bits for the PPM
+ *                   (lossy: low bits replicated)
+ */
+#include "render.h"
+#include "scene_data.h"
+
+#include "board.h"
+#include "semihost.h"
+
+#define FXRT_FB_FULL 1
+#define FXRT_FB_STREAM 2
+#ifndef FXRT_FB_MODE
+#define FXRT_FB_MODE FXRT_FB_FULL
+#endif
+#define FXRT_RGB888 1
+#define FXRT_RGB565 2
+#ifndef FXRT_PIXEL
+#define FXRT_PIXEL FXRT_RGB888
+#endif
+#ifndef FXRT_BAND_ROWS
+#define FXRT_BAND_ROWS 1
+#endif
+#ifndef FXRT_OUT_PATH
+#error "FXRT_OUT_PATH (the host file for the frame) must be defined"
+#endif
+#if FXRT_FB_MODE == FXRT_FB_STREAM && FXRT_PIXEL != FXRT_RGB888
+#error "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer"
+#endif
+
+#define ROW_BYTES (3 * SCENE_WIDTH)
+
+#if FXRT_FB_MODE == FXRT_FB_FULL
+#if FXRT_PIXEL == FXRT_RGB888
+static uint8_t framebuffer[SCENE_HEIGHT][ROW_BYTES];
+#else
+static uint16_t framebuffer[SCENE_HEIGHT][SCENE_WIDTH];
+static uint8_t row_rgb[ROW_BYTES];
+#endif
+#else
+static uint8_t band[FXRT_BAND_ROWS][ROW_BYTES];
+#endif
+
+static void fail(const char *msg)
+{
+    semihost_puts("fxrt firmware: ");
+    semihost_puts(msg);
+    semihost_puts("\n");
+    semihost_exit(2);
+}
+
+static void send(int32_t fd, const void *buf, uint32_t len)
+{
+    if (semihost_write(fd, buf, len) != 0)
+        fail("semihosting write failed");
+}
+
+/* "P6\n<w> <h>\n255\n" */
+static void send_header(int32_t fd)
+{
+    char hdr[32];
+    uint32_t n = 0;
+    uint32_t vals[2] = {SCENE_WIDTH, SCENE_HEIGHT};
+    hdr[n++] = 'P';
+    hdr[n++] = '6';
+    hdr[n++] = '\n';
+    for (int i = 0; i < 2; i++) {
+        char digits[8];
+        int d = 0;
+        uint32_t v = vals[i];
+        do {
+            digits[d++] = (char)('0' + v % 10);
+            v /= 10;
+        } while (v);
+        while (d)
+            hdr[n++] = digits[--d];
+        hdr[n++] = i == 0 ? ' ' : '\n';
+    }
+    hdr[n++] = '2';
+    hdr[n++] = '5';
+    hdr[n++] = '5';
+    hdr[n++] = '\n';
+    send(fd, hdr, n);
+}
+
+#if FXRT_PIXEL == FXRT_RGB565
+static uint16_t pack565(const uint8_t *p)
+{
+    return (uint16_t)(((p[0] >> 3) << 11) | ((p[1] >> 2) << 5) | (p[2] >> 3));
+}
+static void unpack565(uint16_t c, uint8_t *p)
+{
+    uint8_t r = (uint8_t)(c >> 11), g = (uint8_t)((c >> 5) & 63), b = (uint8_t)(c & 31);
+    p[0] = (uint8_t)((r << 3) | (r >> 2));
+    p[1] = (uint8_t)((g << 2) | (g >> 4));
+    p[2] = (uint8_t)((b << 3) | (b >> 2));
+}
+#endif
+
+static void report(const char *key, uint64_t v)
+{
+    semihost_puts(key);
+    semihost_put_u64(v);
+    semihost_puts(" ");
+}
+
+int main(void)
+{
+#if defined(FXRT_TEST_FAULT)
+    /* Test hook: an undefined instruction must end in the fault handler's
+     * report and a non-zero exit. */
+    __asm__ volatile("udf #0");
+#elif defined(FXRT_TEST_HANG)
+    /* Test hook: the QEMU runner's timeout must catch a hang. */
+    for (volatile int spin = 1; spin;)
+        ;
+#endif
+    int32_t fd = semihost_open_write(FXRT_OUT_PATH);
+    if (fd < 0)
+        fail("cannot open " FXRT_OUT_PATH " on the host");
+    send_header(fd);
+
+    counter_start();
+    uint64_t t0 = counter_ticks();
+#if FXRT_FB_MODE == FXRT_FB_FULL
+#if FXRT_PIXEL == FXRT_RGB888
+    for (int32_t row = 0; row < SCENE_HEIGHT; row++)
+        render_row(&scene_world, &scene_cam, row, framebuffer[row]);
+#else
+    for (int32_t row = 0; row < SCENE_HEIGHT; row++) {
+        render_row(&scene_world, &scene_cam, row, row_rgb);
+        for (int32_t x = 0; x < SCENE_WIDTH; x++)
+            framebuffer[row][x] = pack565(&row_rgb[3 * x]);
+    }
+#endif
+    uint64_t ticks = counter_ticks() - t0;
+#if FXRT_PIXEL == FXRT_RGB888
+    send(fd, framebuffer, sizeof framebuffer);
+#else
+    for (int32_t row = 0; row < SCENE_HEIGHT; row++) {
+        for (int32_t x = 0; x < SCENE_WIDTH; x++)
+            unpack565(framebuffer[row][x], &row_rgb[3 * x]);
+        send(fd, row_rgb, ROW_BYTES);
+    }
+#endif
+#else
+    /* One span over the whole loop keeps the counter's resolution for the
+     * frame; it includes the few guest instructions of each semihosting
+     * call (the host side of the call costs the guest nothing). */
+    for (int32_t row = 0; row < SCENE_HEIGHT; row += FXRT_BAND_ROWS) {
+        int32_t n = SCENE_HEIGHT - row < FXRT_BAND_ROWS ? SCENE_HEIGHT - row : FXRT_BAND_ROWS;
+        for (int32_t i = 0; i < n; i++)
+            render_row(&scene_world, &scene_cam, row + i, band[i]);
+        send(fd, band, (uint32_t)(n * ROW_BYTES));
+    }
+    uint64_t ticks = counter_ticks() - t0;
+#endif
+    if (semihost_close(fd) != 0)
+        fail("semihosting close failed");
+
+    report("ticks=", ticks);
+    report("pixels=", (uint64_t)SCENE_WIDTH * SCENE_HEIGHT);
+    report("ram_static=", board_ram_static());
+    report("stack_used=", board_stack_used());
+    report("stack_size=", board_stack_size());
+    semihost_puts("\n");
+    return 0;
+}

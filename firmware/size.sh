@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# make size: flash and RAM of the Q16.16 firmware for each seed scene on
+# each board, plus the measured stack high-water mark (painted stack, read
+# back after a QEMU run). Prints a markdown table.
+set -eu
+BUILD=${BUILD:-build}
+SIZE=${SIZE:-160x120}
+M="make -s --no-print-directory BUILD=$BUILD"
+echo "Q16.16 firmware at $SIZE (full frame on the MPS2 boards, one-row streaming on the micro:bit)"
+echo
+echo "| board | scene | frame | text | data | bss | stack reserved | stack used | RAM total |"
+echo "|---|---|---|---:|---:|---:|---:|---:|---:|"
+for b in mps2-an385 mps2-an386 microbit; do
+    for scene in scenes/abb*.scene; do
+        name=$(basename "$scene" .scene)
+        run=$($M qemu SCENE="$scene" BOARD=$b NUMBER=q16 SIZE="$SIZE" | grep instructions=)
+        elf=$(ls -d "$BUILD"/fw/$b/"$name"-q16-"$SIZE"-*/fxrt.elf | grep -E -- '-(full|stream)/fxrt.elf$' | head -n 1)
+        mode=$(sed -E 's/.*-(full|stream)\/fxrt.elf$/\1/' <<<"$elf")
+        read -r text data bss _ < <(arm-none-eabi-size "$elf" | tail -n 1)
+        stack=$(sed -nE 's/.*stack_size=([0-9]+).*/\1/p' <<<"$run")
+        used=$(sed -nE 's/.*stack_used=([0-9]+).*/\1/p' <<<"$run")
+        # bss as printed by size includes the reserved stack section
+        echo "| $b | $name | $mode | $text | $data | $((bss - stack)) | $stack | $used | $((data + bss)) |"
+    done
+done

@@ -1,0 +1,100 @@
+/* fxrt-scenec: compile a .scene file into C for the firmware: a header of
+ * capacity macros (FXRT_MAX_<KIND> = the scene's own counts, so unused
+ * kinds compile out) and a header with the const world and camera in the
+ * chosen number type. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "args.h"
+#include "engine.h"
+#include "scenec.h"
+
+static const char usage[] =
+    "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR\n"
+    "\n"
+    "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT) and\n"
+    "DIR/scene_data.h (static const world_t scene_world, cam_t scene_cam).\n";
+
+static int fail(const char *msg, const char *arg)
+{
+    fprintf(stderr, "fxrt-scenec: %s%s\n%s", msg, arg, usage);
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    const char *path = NULL, *out = NULL;
+    engine_number_t num = ENGINE_Q16;
+    int w = 0, h = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            fputs(usage, stdout);
+            return 0;
+        }
+        if ((!strcmp(a, "--number") || !strcmp(a, "--size") || !strcmp(a, "--out")) && i + 1 >= argc)
+            return fail("missing value for ", a);
+        if (!strcmp(a, "--number")) {
+            if (engine_number_parse(argv[++i], &num))
+                return fail("bad --number ", argv[i]);
+        } else if (!strcmp(a, "--size")) {
+            if (args_size(argv[++i], &w, &h))
+                return fail("bad --size ", argv[i]);
+        } else if (!strcmp(a, "--out")) {
+            out = argv[++i];
+        } else if (a[0] == '-') {
+            return fail("unknown option ", a);
+        } else if (!path) {
+            path = a;
+        } else {
+            return fail("unexpected argument ", a);
+        }
+    }
+    if (!path || !out)
+        return fail("needs SCENE and --out", "");
+
+    static scene_t sc;
+    char err[512];
+    if (scene_load(path, &sc, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    if (!w) {
+        w = sc.width;
+        h = sc.height;
+    }
+    char cfg_path[1024], data_path[1024], cfg_tmp[1100], data_tmp[1100];
+    snprintf(cfg_path, sizeof cfg_path, "%s/scene_config.h", out);
+    snprintf(data_path, sizeof data_path, "%s/scene_data.h", out);
+    snprintf(cfg_tmp, sizeof cfg_tmp, "%s.tmp.%ld", cfg_path, (long)getpid());
+    snprintf(data_tmp, sizeof data_tmp, "%s.tmp.%ld", data_path, (long)getpid());
+    FILE *cfg = fopen(cfg_tmp, "w"), *data = fopen(data_tmp, "w");
+    int rc = 0;
+    if (!cfg || !data) {
+        fprintf(stderr, "fxrt-scenec: cannot write into %s\n", out);
+        rc = 2;
+    } else {
+        int e = num == ENGINE_Q16     ? scenec_emit_q16(cfg, data, path, &sc, w, h, err, sizeof err)
+                : num == ENGINE_FLOAT ? scenec_emit_float(cfg, data, path, &sc, w, h, err, sizeof err)
+                                      : scenec_emit_double(cfg, data, path, &sc, w, h, err, sizeof err);
+        if (e) {
+            fprintf(stderr, "%s\n", err);
+            rc = 2;
+        }
+    }
+    if (cfg && fclose(cfg))
+        rc = 2;
+    if (data && fclose(data))
+        rc = 2;
+    if (rc == 0 && (rename(cfg_tmp, cfg_path) || rename(data_tmp, data_path))) {
+        fprintf(stderr, "fxrt-scenec: cannot write into %s\n", out);
+        rc = 2;
+    }
+    if (rc) {
+        remove(cfg_tmp);
+        remove(data_tmp);
+    }
+    return rc;
+}

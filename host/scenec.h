@@ -1,0 +1,17 @@
+/* scenec: the scene compiler's per-number-type emitters. */
+#ifndef FXRT_HOST_SCENEC_H
+#define FXRT_HOST_SCENEC_H
+
+#include <stdio.h>
+#include "scene.h"
+
+/* Write the capacity/size macros to cfg and the const world and camera to
+ * data. Returns 0, or -1 with "PATH:LINE: ..." in err. */
+int scenec_emit_q16(FILE *cfg, FILE *data, const char *path, const scene_t *sc, int width, int height,
+                    char *err, size_t errlen);
+int scenec_emit_float(FILE *cfg, FILE *data, const char *path, const scene_t *sc, int width, int height,
+                      char *err, size_t errlen);
+int scenec_emit_double(FILE *cfg, FILE *data, const char *path, const scene_t *sc, int width, int height,
+                       char *err, size_t errlen);
+
+#endif
