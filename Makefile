@@ -98,9 +98,15 @@ endef
 $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(eval $(call num_test_rules,$(t),$(n)))))
 TEST_BIN += $(NUM_TEST_BIN)
 
-SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/freestanding.sh tests/qemu.sh
+# Fragments add suites to SUITES_EXTRA and what they need to TEST_PREREQ.
+SUITES_EXTRA :=
+TEST_PREREQ  :=
+-include tests/sanitize.mk
+-include tests/diff.mk
 
-test: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN)
+SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/freestanding.sh tests/qemu.sh $(SUITES_EXTRA)
+
+test: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN) $(TEST_PREREQ)
 	$(Q)BUILD=$(BUILD) tests/run.sh $(SUITES)
 
 # --- firmware (firmware/firmware.mk) ----------------------------------------
@@ -113,11 +119,15 @@ demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 size: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) firmware/size.sh
 
+# Fuzzing (libFuzzer): each harness for FUZZ_SECONDS (default 60).
+FUZZ_SECONDS ?= 60
+fuzz: deps fuzz-scene fuzz-kernels
+
 deps:
 	$(Q)host/deps.sh
 
 clean:
 	rm -rf $(BUILD)
 
-.PHONY: all test demo size deps clean
+.PHONY: all test demo size deps clean fuzz
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -11,6 +11,7 @@ const char *cam_strerror(cam_err_t err)
     case CAM_ERR_FOV: return "fov must be inside (0, 180) degrees";
     case CAM_ERR_NARROW: return "fov too narrow for the image height in Q16.16 (height * cot(fov/2) > 32767)";
     case CAM_ERR_SCALE: return "scale must be > 0";
+    case CAM_ERR_EXTENT: return "orthographic view reaches beyond the coordinate limit (|eye| + view half-size must be <= 8192 on every axis)";
     }
     return "unknown camera error";
 }
@@ -55,6 +56,17 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     } else {
         if (!(scale > NUM_ZERO))
             return CAM_ERR_SCALE;
+        /* Ray origins lie within e +- (A s / 2) u +- (s / 2) v; keep every
+         * axis inside the coordinate domain so that no later difference
+         * overflows (docs/ACCURACY.md). Bounded per axis by |e| + half
+         * width + half height, since u and v are unit vectors. */
+        num_t half_h = num_half(scale);
+        num_t half_w = num_div(num_mul_int(half_h, width), num_from_int(height));
+        num_t reach = num_add(half_w, half_h);
+        num_t limit = num_from_int(FXRT_COORD_LIMIT);
+        if (num_abs(eye.x) > num_sub(limit, reach) || num_abs(eye.y) > num_sub(limit, reach) ||
+            num_abs(eye.z) > num_sub(limit, reach))
+            return CAM_ERR_EXTENT;
         /* Offset per half pixel: A s / (2 (W-1)) = s W / (2 H (W-1)) along u,
          * s / (2 (H-1)) along v. A one-pixel axis has only its centre, at
          * offset 0. */

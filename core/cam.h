@@ -28,6 +28,7 @@ typedef enum {
     CAM_ERR_FOV = -4,      /* fov outside (0, 180) degrees */
     CAM_ERR_NARROW = -5,   /* H cot(fov/2) > 32767: rays unrepresentable in Q16.16 */
     CAM_ERR_SCALE = -6,    /* orthographic scale <= 0 */
+    CAM_ERR_EXTENT = -7,   /* orthographic ray origins would leave +-FXRT_COORD_LIMIT */
 } cam_err_t;
 
 /* Everything a frame's rays need, computed once per frame by cam_setup. */
