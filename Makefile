@@ -35,11 +35,11 @@ all: $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 
 $(BUILD)/fxrt-scenec: $(SCENEC_OBJ)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(CFLAGS_H) -o $@ $^ $(LDLIBS_H)
+	$(Q)$(CC) $(CFLAGS_H) -o $@ $(filter %.o,$^) $(LDLIBS_H)
 
 $(BUILD)/fxrt: $(HOST_OBJ)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(CFLAGS_H) -o $@ $^ $(LDLIBS_H)
+	$(Q)$(CC) $(CFLAGS_H) -o $@ $(filter %.o,$^) $(LDLIBS_H)
 
 $(BUILD)/host/%.o: host/%.c
 	@mkdir -p $(@D)
@@ -84,16 +84,16 @@ $(BUILD)/tests/%.o: tests/%.c
 .SECONDEXPANSION:
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $$($$*_DEPS)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(CFLAGS_H) -o $@ $^ $(LDLIBS_H)
+	$(Q)$(CC) $(CFLAGS_H) -o $@ $(filter %.o,$^) $(LDLIBS_H)
 
 # Tests of the number-generic core, one binary per number type.
-NUM_TESTS   := $(patsubst tests/%.c,%,$(wildcard tests/test_geom.c))
+NUM_TESTS   := test_geom
 NUM_TEST_BIN := $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(BUILD)/tests/$(t)_$(n)))
 define num_test_rules
 $(BUILD)/tests/$(1)_$(2): tests/$(1).c $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(2)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(2) $$@"
-	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(2)) -Icore -Ihost -o $$@ $$^ $$(LDLIBS_H)
+	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(2)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
 endef
 $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(eval $(call num_test_rules,$(t),$(n)))))
 TEST_BIN += $(NUM_TEST_BIN)

@@ -48,6 +48,10 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
         if (!(fov_deg > NUM_ZERO && fov_deg < NUM(180)))
             return CAM_ERR_FOV;
         num_t cot = num_cot_deg(num_half(fov_deg));
+        /* Just below 180 degrees the Q16.16 cotangent rounds to 0 and the
+         * forward vector would vanish: no usable rays. */
+        if (!(cot > NUM_ZERO))
+            return CAM_ERR_FOV;
         /* |fwd| = H cot(fov/2) must fit Q16.16 in every build, so that all
          * three builds accept the same scenes. */
         if (cot > num_div(NUM(32767), num_from_int(height)))

@@ -1,0 +1,1274 @@
+/* The number-generic core (camera, ray, geometry, world, render row)
+ * against analytic values. Built once per number type (q16, float, double)
+ * from this one file, so every check runs in all three arithmetics.
+ *
+ * Expected values are computed in double from the inputs as the build
+ * represents them (D(N(x))), so input rounding is not counted as error.
+ * Tolerances are in units of the build's precision (UNIT): 2^-16 for
+ * Q16.16, 2.5e-6 for float, 2.5e-13 for double; "k units" below means
+ * k * UNIT, relative to max(1, |expected|) unless a check says absolute.
+ * Random sweeps use a fixed-seed xorshift, so a failure reproduces. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "../core/render.h"
+#include "check.h"
+
+#if FXRT_NUMBER == FXRT_Q16
+#define UNIT (1.0 / 65536.0)
+#elif FXRT_NUMBER == FXRT_FLOAT
+#define UNIT 2.5e-6
+#else
+#define UNIT 2.5e-13
+#endif
+
+#define PI 3.14159265358979323846
+
+/* ---- numbers ------------------------------------------------------------ */
+
+/* A run-time double as num_t (NUM() is for constants only). */
+static num_t N(double x)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    double r = round(x * 65536.0);
+    if (r >= 2147483647.0)
+        return FX_MAX;
+    if (r <= -2147483648.0)
+        return FX_MIN;
+    return (num_t)r;
+#else
+    return (num_t)x;
+#endif
+}
+
+static double D(num_t a)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return (double)a / 65536.0;
+#else
+    return (double)a;
+#endif
+}
+
+/* Within k units, relative to max(1, |want|). */
+static bool near_rel(double got, double want, double k)
+{
+    return fabs(got - want) <= k * UNIT * fmax(1.0, fabs(want));
+}
+
+/* Within k LSB absolute in Q16.16 (for results whose computation involves
+ * no rounded direction); as near_rel in float and double. */
+static bool near_abs(double got, double want, double k)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return fabs(got - want) <= k * UNIT;
+#else
+    return near_rel(got, want, k);
+#endif
+}
+
+#define CHECK_REL(got, want, k)                                                         \
+    do {                                                                                \
+        double g_ = D(got), w_ = (want);                                                \
+        CHECK_MSG(near_rel(g_, w_, (k)), "%s = %.10g, want %.10g", #got, g_, w_);       \
+    } while (0)
+#define CHECK_ABS(got, want, k)                                                         \
+    do {                                                                                \
+        double g_ = D(got), w_ = (want);                                                \
+        CHECK_MSG(near_abs(g_, w_, (k)), "%s = %.10g, want %.10g", #got, g_, w_);       \
+    } while (0)
+
+/* ---- double vectors ----------------------------------------------------- */
+
+typedef struct {
+    double x, y, z;
+} dv_t;
+
+static dv_t dv(double x, double y, double z)
+{
+    dv_t v = {x, y, z};
+    return v;
+}
+static dv_t dadd(dv_t a, dv_t b) { return dv(a.x + b.x, a.y + b.y, a.z + b.z); }
+static dv_t dsub(dv_t a, dv_t b) { return dv(a.x - b.x, a.y - b.y, a.z - b.z); }
+static dv_t dscale(dv_t a, double s) { return dv(a.x * s, a.y * s, a.z * s); }
+static double ddot(dv_t a, dv_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static dv_t dcross(dv_t a, dv_t b)
+{
+    return dv(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static double dlen(dv_t a) { return sqrt(ddot(a, a)); }
+static dv_t dnorm(dv_t a) { return dscale(a, 1.0 / dlen(a)); }
+
+static vec3_t V(dv_t a) { return vec3_make(N(a.x), N(a.y), N(a.z)); }
+static vec3_t V3(double x, double y, double z) { return vec3_make(N(x), N(y), N(z)); }
+static dv_t DV(vec3_t a) { return dv(D(a.x), D(a.y), D(a.z)); }
+/* The value the build actually holds for a double vector. */
+static dv_t RV(dv_t a) { return DV(V(a)); }
+
+static bool dv_near_abs(dv_t got, dv_t want, double k)
+{
+    return near_abs(got.x, want.x, k) && near_abs(got.y, want.y, k) && near_abs(got.z, want.z, k);
+}
+
+#define CHECK_VEC_ABS(got, want, k)                                                      \
+    do {                                                                                 \
+        dv_t g_ = DV(got), w_ = (want);                                                  \
+        CHECK_MSG(dv_near_abs(g_, w_, (k)), "%s = (%.9g %.9g %.9g), want (%.9g %.9g %.9g)", \
+                  #got, g_.x, g_.y, g_.z, w_.x, w_.y, w_.z);                             \
+    } while (0)
+
+static bool vec3_eq(vec3_t a, vec3_t b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/* A ray from o towards direction d (normalised in double, then rounded). */
+static ray_t mkray(dv_t o, dv_t d)
+{
+    ray_t r;
+    r.o = V(o);
+    r.d = V(dnorm(d));
+    return r;
+}
+
+static color_t col(double r, double g, double b) { return color_make(N(r), N(g), N(b)); }
+
+/* xorshift64*: deterministic. */
+static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
+static uint64_t rng(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return rng_state * 2685821657736338717ull;
+}
+/* Uniform in [lo, hi). */
+static double urand(double lo, double hi)
+{
+    return lo + (hi - lo) * (double)(rng() >> 11) * (1.0 / 9007199254740992.0);
+}
+static dv_t urand_v(double lo, double hi) { return dv(urand(lo, hi), urand(lo, hi), urand(lo, hi)); }
+
+/* ---- 1. camera ---------------------------------------------------------- */
+
+typedef struct {
+    cam_kind_t kind;
+    dv_t e, g, up;
+    double fov, scale;
+    int32_t w, h;
+} cam_case_t;
+
+/* The exact basis of a camera. */
+static void ideal_basis(dv_t g, dv_t up, dv_t *u, dv_t *v, dv_t *w)
+{
+    *w = dnorm(dscale(g, -1.0));
+    *u = dnorm(dcross(up, *w));
+    *v = dcross(*w, *u);
+}
+
+static void test_cam_basis_seed(void)
+{
+    cam_t c;
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0), NUM(90), NUM_ZERO,
+                    5, 3) == CAM_OK);
+    CHECK_VEC_ABS(c.u, dv(1, 0, 0), 1);
+    CHECK_VEC_ABS(c.v, dv(0, 1, 0), 1);
+    CHECK_VEC_ABS(c.w, dv(0, 0, 1), 1);
+    CHECK(c.width == 5 && c.height == 3 && c.kind == CAM_PERSPECTIVE);
+
+    /* Centre ray of an odd-sized image: straight along -z from e. */
+    ray_t r;
+    cam_ray(&c, 2, 1, &r);
+    CHECK_VEC_ABS(r.o, dv(0, 0, 0), 0);
+    CHECK_VEC_ABS(r.d, dv(0, 0, -1), 1);
+
+    /* A longer gaze and up give the same basis. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(1, 2, 3), V3(0, 0, -7), V3(0, 5, 0), NUM(45), NUM_ZERO,
+                    7, 5) == CAM_OK);
+    CHECK_VEC_ABS(c.u, dv(1, 0, 0), 1);
+    CHECK_VEC_ABS(c.v, dv(0, 1, 0), 1);
+    CHECK_VEC_ABS(c.w, dv(0, 0, 1), 1);
+    cam_ray(&c, 3, 2, &r);
+    CHECK_VEC_ABS(r.o, dv(1, 2, 3), 0);
+    CHECK_VEC_ABS(r.d, dv(0, 0, -1), 1);
+
+    /* An up that is not perpendicular to the gaze is made so. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 1), NUM(90), NUM_ZERO,
+                    5, 3) == CAM_OK);
+    CHECK_VEC_ABS(c.u, dv(1, 0, 0), 1);
+    CHECK_VEC_ABS(c.v, dv(0, 1, 0), 1);
+}
+
+/* Figure 7 of the seed report: e = (3,3,3), g = (-3,-3,-3), up = y. */
+static void test_cam_basis_fig7(void)
+{
+    cam_t c;
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(3, 3, 3), V3(-3, -3, -3), V3(0, 1, 0), NUM(45), NUM_ZERO,
+                    640, 430) == CAM_OK);
+    double s3 = 1 / sqrt(3.0), s2 = 1 / sqrt(2.0), s6 = 1 / sqrt(6.0);
+    CHECK_VEC_ABS(c.w, dv(s3, s3, s3), 1);
+    CHECK_VEC_ABS(c.u, dv(s2, 0, -s2), 2);
+    CHECK_VEC_ABS(c.v, dv(-s6, 2 * s6, -s6), 2);
+    dv_t u = DV(c.u), v = DV(c.v), w = DV(c.w);
+    CHECK(c.u.y == NUM_ZERO); /* u = up x w has no y component, exactly */
+    CHECK(v.y > 0);           /* v points up-ish */
+    CHECK_MSG(near_abs(ddot(u, u), 1, 4) && near_abs(ddot(v, v), 1, 4) && near_abs(ddot(w, w), 1, 4),
+              "|u|^2 %.9g |v|^2 %.9g |w|^2 %.9g", ddot(u, u), ddot(v, v), ddot(w, w));
+    CHECK_MSG(near_abs(ddot(u, v), 0, 4) && near_abs(ddot(u, w), 0, 4) && near_abs(ddot(v, w), 0, 4),
+              "u.v %.3g u.w %.3g v.w %.3g", ddot(u, v), ddot(u, w), ddot(v, w));
+    /* Right-handed: u x v = w. */
+    CHECK_MSG(dv_near_abs(dcross(u, v), w, 6), "u x v != w");
+}
+
+/* 0, s, 2s, ... and always n - 1, then n. */
+static int32_t next_idx(int32_t i, int32_t n, int32_t s)
+{
+    if (i >= n - 1)
+        return n;
+    return i + s < n ? i + s : n - 1;
+}
+
+/* Every pixel's ray (or a stride of them for big images) against the
+ * formulas of the conventions. */
+static void check_cam_case(const cam_case_t *cc)
+{
+    cam_t c;
+    cam_err_t err = cam_setup(&c, cc->kind, V(cc->e), V(cc->g), V(cc->up), N(cc->fov), N(cc->scale),
+                              cc->w, cc->h);
+    CHECK_MSG(err == CAM_OK, "%dx%d kind %d: %s", (int)cc->w, (int)cc->h, (int)cc->kind,
+              cam_strerror(err));
+    if (err != CAM_OK)
+        return;
+    dv_t u, v, w;
+    ideal_basis(RV(cc->g), RV(cc->up), &u, &v, &w);
+    CHECK_VEC_ABS(c.u, u, 2);
+    CHECK_VEC_ABS(c.v, v, 2);
+    CHECK_VEC_ABS(c.w, w, 2);
+    dv_t e = RV(cc->e);
+    double fov = D(N(cc->fov)), s = D(N(cc->scale));
+    double A = (double)cc->w / cc->h;
+    /* Origin tolerance: rounding of the offsets and of u, v times their size. */
+    double ktol = 4 + 2 * (A + 1) * s;
+    int32_t sx = cc->w > 64 ? cc->w / 16 : 1, sy = cc->h > 64 ? cc->h / 16 : 1;
+    long bad = 0, n = 0;
+    for (int32_t y = 0; y < cc->h; y = next_idx(y, cc->h, sy)) {
+        for (int32_t x = 0; x < cc->w; x = next_idx(x, cc->w, sx)) {
+            ray_t r;
+            cam_ray(&c, x, y, &r);
+            double ox = x - (cc->w - 1) / 2.0, oy = y - (cc->h - 1) / 2.0;
+            dv_t wo, wd;
+            bool ok;
+            if (cc->kind == CAM_PERSPECTIVE) {
+                double f = (cc->h / 2.0) / tan(fov / 2 * PI / 180);
+                wo = e;
+                wd = dnorm(dadd(dscale(w, -f), dadd(dscale(u, ox), dscale(v, oy))));
+                ok = vec3_eq(r.o, V(e)) && dv_near_abs(DV(r.d), wd, 4);
+            } else {
+                double fu = cc->w > 1 ? A * s * ox / (cc->w - 1) : 0;
+                double fv = cc->h > 1 ? s * oy / (cc->h - 1) : 0;
+                wo = dadd(e, dadd(dscale(u, fu), dscale(v, fv)));
+                wd = dscale(w, -1);
+                ok = dv_near_abs(DV(r.o), wo, ktol) && vec3_eq(r.d, vec3_neg(c.w));
+            }
+            n++;
+            if (!ok) {
+                bad++;
+                dv_t go = DV(r.o), gd = DV(r.d);
+                CHECK_SWEEP(ok, "%dx%d pixel (%d,%d): o (%.7g %.7g %.7g) want (%.7g %.7g %.7g), "
+                            "d (%.7g %.7g %.7g) want (%.7g %.7g %.7g)",
+                            (int)cc->w, (int)cc->h, (int)x, (int)y, go.x, go.y, go.z, wo.x, wo.y, wo.z,
+                            gd.x, gd.y, gd.z, wd.x, wd.y, wd.z);
+            }
+        }
+    }
+    CHECK_MSG(bad == 0 && n > 0, "%ld of %ld pixels wrong", bad, n);
+}
+
+static void test_cam_pixels(void)
+{
+    static const cam_case_t cases[] = {
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 0, 8, 6},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0, 5, 3},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1, 0, 64, 48},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 170, 0, 9, 7},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0, 640, 430},
+        {CAM_PERSPECTIVE, {3, 3, 3}, {-3, -3, -3}, {0, 1, 0}, 45, 0, 640, 430},
+        {CAM_PERSPECTIVE, {-2, 1, 5}, {1, -0.5, -2}, {0.1, 1, 0.2}, 60, 0, 33, 17},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 0, 4096, 4096},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 15, 0, 4096, 4096},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, 0, 1, 1},
+        {CAM_ORTHOGRAPHIC, {1, 2, 3}, {0, 0, -1}, {0, 1, 0}, 0, 3, 8, 6},
+        {CAM_ORTHOGRAPHIC, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 0, 4, 640, 430},
+        {CAM_ORTHOGRAPHIC, {3, 3, 3}, {-3, -3, -3}, {0, 1, 0}, 0, 2.5, 31, 17},
+        {CAM_ORTHOGRAPHIC, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 0, 4, 1, 5},
+        {CAM_ORTHOGRAPHIC, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 0, 4, 5, 1},
+        {CAM_ORTHOGRAPHIC, {-1, 0.5, 7}, {0.3, -0.2, -1}, {0, 1, 0}, 0, 4096, 4096, 4096},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        check_cam_case(&cases[i]);
+}
+
+/* Angles of the perspective rays, row order, mirror symmetry. */
+static void test_cam_perspective_angles(void)
+{
+    static const double fovs[] = {10, 30, 45, 60, 90, 120, 150};
+    static const int32_t hs[] = {3, 6, 7, 430};
+    for (size_t i = 0; i < sizeof fovs / sizeof fovs[0]; i++) {
+        for (size_t j = 0; j < sizeof hs / sizeof hs[0]; j++) {
+            int32_t W = 5, H = hs[j];
+            double a = D(N(fovs[i]));
+            cam_t c;
+            CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0), N(fovs[i]),
+                            NUM_ZERO, W, H) == CAM_OK);
+            /* Middle of the top row: angle atan(((H-1)/2) / ((H/2) / tan(a/2))) with -w. */
+            ray_t top, bottom;
+            cam_ray(&c, 2, H - 1, &top);
+            cam_ray(&c, 2, 0, &bottom);
+            double want = atan(((H - 1) / 2.0) / ((H / 2.0) / tan(a / 2 * PI / 180)));
+            dv_t d = DV(top.d);
+            double got = atan2(sqrt(d.x * d.x + d.y * d.y), -d.z);
+            CHECK_MSG(near_abs(got, want, 4), "fov %g H %d: top angle %.9g want %.9g", a, (int)H, got,
+                      want);
+            CHECK_MSG(top.d.y > NUM_ZERO && top.d.x == NUM_ZERO, "fov %g H %d: top row d.y %.9g", a,
+                      (int)H, D(top.d.y));
+            /* y = 0 is the bottom row: it looks down. */
+            CHECK_MSG(bottom.d.y < NUM_ZERO, "fov %g H %d: bottom row d.y %.9g", a, (int)H,
+                      D(bottom.d.y));
+            /* Exact mirror images: up/down and left/right. */
+            CHECK(bottom.d.y == num_neg(top.d.y) && bottom.d.z == top.d.z);
+            ray_t l, rr;
+            cam_ray(&c, 0, 0, &l);
+            cam_ray(&c, W - 1, 0, &rr);
+            CHECK(l.d.x < NUM_ZERO && rr.d.x > NUM_ZERO && l.d.x == num_neg(rr.d.x) && l.d.y == rr.d.y
+                  && l.d.z == rr.d.z);
+            /* Corner ray: half-diagonal angle. */
+            cam_ray(&c, W - 1, H - 1, &rr);
+            double f = (H / 2.0) / tan(a / 2 * PI / 180);
+            want = atan(sqrt(2.0 * 2.0 + ((H - 1) / 2.0) * ((H - 1) / 2.0)) / f);
+            d = DV(rr.d);
+            got = atan2(sqrt(d.x * d.x + d.y * d.y), -d.z);
+            CHECK_MSG(near_abs(got, want, 4), "fov %g H %d: corner angle %.9g want %.9g", a, (int)H,
+                      got, want);
+        }
+    }
+}
+
+static void test_cam_orthographic(void)
+{
+    cam_t c;
+    /* 8x6, scale 3: a = 4/3, corners at e + (+-2) u + (+-1.5) v. */
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, V3(1, 2, 3), V3(0, 0, -1), V3(0, 1, 0), NUM_ZERO, NUM(3),
+                    8, 6) == CAM_OK);
+    ray_t r;
+    cam_ray(&c, 0, 0, &r);
+    CHECK_VEC_ABS(r.o, dv(-1, 0.5, 3), 1);
+    CHECK_VEC_ABS(r.d, dv(0, 0, -1), 0);
+    cam_ray(&c, 7, 0, &r);
+    CHECK_VEC_ABS(r.o, dv(3, 0.5, 3), 1);
+    cam_ray(&c, 0, 5, &r);
+    CHECK_VEC_ABS(r.o, dv(-1, 3.5, 3), 1);
+    cam_ray(&c, 7, 5, &r);
+    CHECK_VEC_ABS(r.o, dv(3, 3.5, 3), 1);
+    CHECK_VEC_ABS(r.d, dv(0, 0, -1), 0);
+
+    /* 1x1: its single ray starts at e. */
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, V3(1.25, -2, 3.5), V3(1, 2, 3), V3(0, 1, 0), NUM_ZERO,
+                    NUM(10), 1, 1) == CAM_OK);
+    cam_ray(&c, 0, 0, &r);
+    CHECK(vec3_eq(r.o, V3(1.25, -2, 3.5)));
+    CHECK(vec3_eq(r.d, vec3_neg(c.w)));
+
+    /* 1x1 perspective: along the gaze. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -2), V3(0, 1, 0), NUM(60), NUM_ZERO,
+                    1, 1) == CAM_OK);
+    cam_ray(&c, 0, 0, &r);
+    CHECK_VEC_ABS(r.d, dv(0, 0, -1), 1);
+}
+
+static void test_cam_errors(void)
+{
+    cam_t c;
+    vec3_t o = V3(0, 0, 0), g = V3(0, 0, -1), up = V3(0, 1, 0);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, V3(0, 0, 0), up, NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_GAZE);
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, o, V3(0, 0, 0), up, NUM_ZERO, NUM(1), 8, 6) == CAM_ERR_GAZE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, V3(0, 0, 3), NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_UP);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, V3(0, 0, -0.5), NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_UP);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, V3(0, 0, 0), NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_UP);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, V3(-3, -3, -3), V3(2, 2, 2), NUM(45), NUM_ZERO, 8, 6)
+          == CAM_ERR_UP);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(0), NUM_ZERO, 8, 6) == CAM_ERR_FOV);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(180), NUM_ZERO, 8, 6) == CAM_ERR_FOV);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(-10), NUM_ZERO, 8, 6) == CAM_ERR_FOV);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(200), NUM_ZERO, 8, 6) == CAM_ERR_FOV);
+    /* H cot(fov/2) > 32767. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(0.3), NUM_ZERO, 100, 100) == CAM_ERR_NARROW);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(0.4), NUM_ZERO, 100, 100) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(14), NUM_ZERO, 64, 4096) == CAM_ERR_NARROW);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(15), NUM_ZERO, 64, 4096) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(1), NUM_ZERO, 64, 48) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(1), NUM_ZERO, 4096, 4096) == CAM_ERR_NARROW);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(0.0001), NUM_ZERO, 1, 1) == CAM_ERR_NARROW);
+    /* Orthographic scale. */
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, o, g, up, NUM_ZERO, NUM(0), 8, 6) == CAM_ERR_SCALE);
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, o, g, up, NUM_ZERO, NUM(-2), 8, 6) == CAM_ERR_SCALE);
+    /* Each kind ignores the other's parameter. */
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, o, g, up, NUM(0), NUM(2), 8, 6) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM(0), 8, 6) == CAM_OK);
+    /* Size. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM_ZERO, 0, 6) == CAM_ERR_SIZE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM_ZERO, 8, 0) == CAM_ERR_SIZE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM_ZERO, -8, 6) == CAM_ERR_SIZE);
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, o, g, up, NUM_ZERO, NUM(1), 0, 6) == CAM_ERR_SIZE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM_ZERO, FXRT_MAX_DIM + 1, 6)
+          == CAM_ERR_SIZE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM_ZERO, 8, FXRT_MAX_DIM + 1)
+          == CAM_ERR_SIZE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM_ZERO, FXRT_MAX_DIM, FXRT_MAX_DIM)
+          == CAM_OK);
+    /* Every code has its own text. */
+    CHECK(cam_strerror(CAM_ERR_NARROW) != cam_strerror(CAM_ERR_FOV));
+}
+
+/* A fov the camera accepts must give rays that look forward: in particular
+ * a fov just below 180 degrees, where cot(fov/2) is tiny (in Q16.16 it
+ * rounds to 0 from 179.99913 degrees on, and cam_setup must then reject the
+ * fov rather than build a zero forward vector). */
+static void test_cam_wide_fov(void)
+{
+    static const double fovs[] = {175, 179, 179.9, 179.99, 179.999, 179.9991, 179.9999, 180 - 1.0 / 65536};
+    for (size_t i = 0; i < sizeof fovs / sizeof fovs[0]; i++) {
+        cam_t c;
+        cam_err_t err = cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0),
+                                  N(fovs[i]), NUM_ZERO, 5, 3);
+        if (err != CAM_OK) {
+            CHECK(err == CAM_ERR_FOV);
+            continue;
+        }
+        ray_t r;
+        cam_ray(&c, 2, 1, &r);
+        CHECK_MSG(dv_near_abs(DV(r.d), dv(0, 0, -1), 1), "fov %.9g accepted, centre ray d = (%g %g %g)",
+                  D(N(fovs[i])), D(r.d.x), D(r.d.y), D(r.d.z));
+        cam_ray(&c, 4, 2, &r);
+        dv_t d = DV(r.d);
+        CHECK_MSG(near_abs(dlen(d), 1, 4) && d.z < 0,
+                  "fov %.9g accepted, corner ray d = (%g %g %g) does not look forward",
+                  D(N(fovs[i])), d.x, d.y, d.z);
+    }
+}
+
+/* ---- 2. primitives hit from outside ------------------------------------- */
+
+static color_t red(void) { return col(1, 0, 0); }
+
+static void test_plane_outside(void)
+{
+    geom_plane_t p;
+    num_t t = NUM(-1);
+    CHECK(geom_plane_make(&p, V3(0, -1, 0), V3(0, 5, 0), red(), 0));
+    CHECK_VEC_ABS(p.n, dv(0, 1, 0), 0);
+    /* Straight down from 3 above: t = 3. */
+    ray_t r = mkray(dv(0.25, 2, -7), dv(0, -1, 0));
+    CHECK(geom_plane_hit(&p, &r, &t));
+    CHECK_ABS(t, 3, 1);
+    /* At an angle: cos = 0.8, t = 3 / 0.8. */
+    r = mkray(dv(0, 2, 0), dv(3, -4, 0));
+    t = NUM(-1);
+    CHECK(geom_plane_hit(&p, &r, &t));
+    CHECK_REL(t, 3.75, 4);
+    /* From below (planes are two-sided). */
+    r = mkray(dv(0, -3, 0), dv(0, 1, 0));
+    CHECK(geom_plane_hit(&p, &r, &t));
+    CHECK_ABS(t, 2, 1);
+    /* Tilted plane x + y = 0: from (0,5,0) straight down the distance is
+     * 5/sqrt2 and cos = 1/sqrt2, so t = 5. */
+    CHECK(geom_plane_make(&p, V3(0, 0, 0), V3(1, 1, 0), red(), 0));
+    r = mkray(dv(0, 5, 0), dv(0, -1, 0));
+    CHECK(geom_plane_hit(&p, &r, &t));
+    CHECK_REL(t, 5, 4);
+    /* Pointing away: miss. */
+    r = mkray(dv(0, 5, 0), dv(0, 1, 0));
+    CHECK(!geom_plane_hit(&p, &r, &t));
+}
+
+static void test_sphere_outside(void)
+{
+    geom_sphere_t s;
+    num_t t = NUM(-1);
+    CHECK(geom_sphere_make(&s, V3(0, 0, -3), NUM(0.5), red(), 0));
+    ray_t r = mkray(dv(0, 0, 0), dv(0, 0, -1));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_ABS(t, 2.5, 1);
+    /* Along each axis, from both sides: t = distance - r. */
+    static const double dirs[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    CHECK(geom_sphere_make(&s, V3(1, -2, 0.5), NUM(1.5), red(), 0));
+    for (int i = 0; i < 6; i++) {
+        dv_t d = dv(dirs[i][0], dirs[i][1], dirs[i][2]);
+        r = mkray(dsub(dv(1, -2, 0.5), dscale(d, 7)), d);
+        CHECK(geom_sphere_hit(&s, &r, &t));
+        CHECK_ABS(t, 5.5, 1);
+    }
+    /* Off-axis ray parallel to z: t = dz - sqrt(r^2 - offset^2). */
+    CHECK(geom_sphere_make(&s, V3(0, 0, -3), NUM(0.5), red(), 0));
+    r = mkray(dv(0.25, 0.125, 5), dv(0, 0, -1));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_ABS(t, 8 - sqrt(0.25 - 0.25 * 0.25 - 0.125 * 0.125), 2);
+    /* Oblique ray through the centre: t = |c - o| - r. */
+    r = mkray(dv(2, 3, 1), dv(-2, -3, -4));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_REL(t, sqrt(29.0) - 0.5, 4);
+    /* Just missing the silhouette. */
+    r = mkray(dv(0.501, 0, 5), dv(0, 0, -1));
+    CHECK(!geom_sphere_hit(&s, &r, &t));
+    r = mkray(dv(0.499, 0, 5), dv(0, 0, -1));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_ABS(t, 8 - sqrt(0.25 - D(N(0.499)) * D(N(0.499))), 64); /* steep: sqrt of a small difference */
+    /* Large sphere far away, near the domain limits. */
+    CHECK(geom_sphere_make(&s, V3(0, 0, -8000), NUM(4096), red(), 0));
+    r = mkray(dv(0, 0, 8000), dv(0, 0, -1));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_ABS(t, 11904, 1);
+    CHECK(geom_sphere_make(&s, V3(-8000, -8000, -8000), NUM(4096), red(), 0));
+    r = mkray(dv(8000, 8000, 8000), dv(-1, -1, -1));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_REL(t, 16000 * sqrt(3.0) - 4096, 4);
+}
+
+/* The test triangle (-1,-1,-3), (1,-1,-3), (0,1,-3) and rays along -z. */
+static void test_triangle_outside(void)
+{
+    geom_triangle_t tr, tw;
+    num_t t = NUM(-1);
+    dv_t a = dv(-1, -1, -3), b = dv(1, -1, -3), c = dv(0, 1, -3);
+    CHECK(geom_triangle_make(&tr, V(a), V(b), V(c), red(), 0));
+    CHECK(geom_triangle_make(&tw, V(a), V(c), V(b), red(), 0)); /* other winding */
+    CHECK(!tr.degenerate && !tw.degenerate);
+    CHECK_VEC_ABS(tr.n, dv(0, 0, 1), 1);
+    CHECK_VEC_ABS(tw.n, dv(0, 0, -1), 1);
+    const geom_triangle_t *both[2] = {&tr, &tw};
+    for (int k = 0; k < 2; k++) {
+        const geom_triangle_t *T = both[k];
+        ray_t r = mkray(dv(0, 0, 0), dv(0, 0, -1));
+        t = NUM(-1);
+        CHECK(geom_triangle_hit(T, &r, &t));
+        CHECK_ABS(t, 3, 1);
+        r = mkray(dv(0.2, 0.1, 2), dv(0, 0, -1));
+        CHECK(geom_triangle_hit(T, &r, &t));
+        CHECK_ABS(t, 5, 1);
+        /* From behind (triangles are two-sided). */
+        r = mkray(dv(0.2, -0.5, -7), dv(0, 0, 1));
+        CHECK(geom_triangle_hit(T, &r, &t));
+        CHECK_ABS(t, 4, 1);
+        /* Just outside / inside each edge, at its midpoint, by 1e-3. */
+        static const double mid[3][2] = {{0, -1}, {0.5, 0}, {-0.5, 0}};
+        double out[3][2] = {{0, -1}, {2 / sqrt(5.0), 1 / sqrt(5.0)}, {-2 / sqrt(5.0), 1 / sqrt(5.0)}};
+        for (int e = 0; e < 3; e++) {
+            double px = mid[e][0] + 1e-3 * out[e][0], py = mid[e][1] + 1e-3 * out[e][1];
+            r = mkray(dv(px, py, 0), dv(0, 0, -1));
+            CHECK_MSG(!geom_triangle_hit(T, &r, &t), "winding %d edge %d: hit outside", k, e);
+            px = mid[e][0] - 1e-3 * out[e][0], py = mid[e][1] - 1e-3 * out[e][1];
+            r = mkray(dv(px, py, 0), dv(0, 0, -1));
+            CHECK_MSG(geom_triangle_hit(T, &r, &t), "winding %d edge %d: missed inside", k, e);
+            /* And obliquely from a point off to the side. */
+            dv_t o = dv(4, 3, 2);
+            r = mkray(o, dsub(dv(mid[e][0] + 1e-3 * out[e][0], mid[e][1] + 1e-3 * out[e][1], -3), o));
+            CHECK_MSG(!geom_triangle_hit(T, &r, &t), "winding %d edge %d: oblique hit outside", k, e);
+            dv_t p = dv(mid[e][0] - 1e-3 * out[e][0], mid[e][1] - 1e-3 * out[e][1], -3);
+            r = mkray(o, dsub(p, o));
+            CHECK_MSG(geom_triangle_hit(T, &r, &t), "winding %d edge %d: oblique miss inside", k, e);
+            CHECK_REL(t, dlen(dsub(p, o)), 4);
+        }
+        /* Beyond each vertex. */
+        r = mkray(dv(0, 1.01, 0), dv(0, 0, -1));
+        CHECK(!geom_triangle_hit(T, &r, &t));
+        r = mkray(dv(-1.01, -1, 0), dv(0, 0, -1));
+        CHECK(!geom_triangle_hit(T, &r, &t));
+    }
+    /* Tilted: x + y + z = 1, from (-2,-2,-2) along (1,1,1): centroid at
+     * t = 7/sqrt3. */
+    CHECK(geom_triangle_make(&tr, V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1), red(), 0));
+    ray_t r = mkray(dv(-2, -2, -2), dv(1, 1, 1));
+    CHECK(geom_triangle_hit(&tr, &r, &t));
+    CHECK_REL(t, 7 / sqrt(3.0), 4);
+    /* A triangle near the domain limits. */
+    CHECK(geom_triangle_make(&tr, V3(-8000, -8000, -100), V3(8000, -8000, -100), V3(0, 8000, -100),
+                             red(), 0));
+    CHECK(!tr.degenerate);
+    CHECK_VEC_ABS(tr.n, dv(0, 0, 1), 1);
+    r = mkray(dv(0, 0, 0), dv(0, 0, -1));
+    CHECK(geom_triangle_hit(&tr, &r, &t));
+    CHECK_ABS(t, 100, 1);
+    r = mkray(dv(3000, 0, 0), dv(0, 0, -1));
+    CHECK(geom_triangle_hit(&tr, &r, &t));
+    r = mkray(dv(5000, 1, 0), dv(0, 0, -1));
+    CHECK(!geom_triangle_hit(&tr, &r, &t));
+}
+
+static void test_box_outside(void)
+{
+    geom_box_t b;
+    num_t t = NUM(-1);
+    dv_t lo = dv(-1, -2, -3), hi = dv(2, 3, 4), mid = dv(0.5, 0.5, 0.5);
+    CHECK(geom_box_make(&b, V(lo), V(hi), red(), 0));
+    /* Each face head-on from 4 units outside it. */
+    for (int axis = 0; axis < 3; axis++) {
+        for (int side = 0; side < 2; side++) {
+            double l = axis == 0 ? lo.x : axis == 1 ? lo.y : lo.z;
+            double h = axis == 0 ? hi.x : axis == 1 ? hi.y : hi.z;
+            double face = side ? h : l, sgn = side ? 1 : -1;
+            dv_t o = mid, d = dv(0, 0, 0);
+            double *oc = axis == 0 ? &o.x : axis == 1 ? &o.y : &o.z;
+            double *dc = axis == 0 ? &d.x : axis == 1 ? &d.y : &d.z;
+            *oc = face + 4 * sgn;
+            *dc = -sgn;
+            ray_t r = mkray(o, d);
+            t = NUM(-1);
+            CHECK_MSG(geom_box_hit(&b, &r, &t), "axis %d side %d", axis, side);
+            CHECK_ABS(t, 4, 0);
+            /* Obliquely, entering through the same face at (face, 0.25 off). */
+            dv_t p = mid;
+            double *pc = axis == 0 ? &p.x : axis == 1 ? &p.y : &p.z;
+            *pc = face;
+            p = dadd(p, axis == 0 ? dv(0, 0.25, -0.5) : axis == 1 ? dv(0.25, 0, -0.5) : dv(0.25, -0.5, 0));
+            dv_t o2 = dadd(p, dscale(dv(axis == 0 ? sgn : 0.5, axis == 1 ? sgn : 0.5, axis == 2 ? sgn : 0.5), 3));
+            r = mkray(o2, dsub(p, o2));
+            CHECK_MSG(geom_box_hit(&b, &r, &t), "oblique axis %d side %d", axis, side);
+            CHECK_REL(t, dlen(dsub(p, o2)), 4);
+        }
+    }
+    /* Misses beside the box, and pointing away. */
+    ray_t r = mkray(dv(2.01, 0, 10), dv(0, 0, -1));
+    CHECK(!geom_box_hit(&b, &r, &t));
+    r = mkray(dv(0, 0, 10), dv(0, 0, 1));
+    CHECK(!geom_box_hit(&b, &r, &t));
+    r = mkray(dv(-5, 0, 0), dv(1, 2, 0)); /* passes above the +y face */
+    CHECK(!geom_box_hit(&b, &r, &t));
+    /* Box of figure 7, seen from (3,3,3), entering the top at (0.1,1,-0.2). */
+    CHECK(geom_box_make(&b, V3(-0.5, 0, -0.5), V3(0.5, 1, 0.5), red(), 0));
+    r = mkray(dv(3, 3, 3), dv(-2.9, -2, -3.2));
+    CHECK(geom_box_hit(&b, &r, &t));
+    CHECK_REL(t, sqrt(2.9 * 2.9 + 2 * 2 + 3.2 * 3.2), 4);
+}
+
+/* ---- 3. from inside ----------------------------------------------------- */
+
+static void test_inside(void)
+{
+    num_t t = NUM(-1);
+    geom_sphere_t s;
+    CHECK(geom_sphere_make(&s, V3(0, 0, -3), NUM(2), red(), 0));
+    ray_t r = mkray(dv(0, 0, -3.5), dv(0, 0, -1));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_ABS(t, 1.5, 1);
+    r = mkray(dv(0, 0, -3.5), dv(0, 0, 1));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_ABS(t, 2.5, 1);
+    CHECK(geom_sphere_make(&s, V3(0, 0, 0), NUM(5), red(), 0));
+    r = mkray(dv(1, 0, 0), dv(0, 1, 0));
+    CHECK(geom_sphere_hit(&s, &r, &t));
+    CHECK_ABS(t, sqrt(24.0), 2);
+    /* A camera at the centre sees the sphere at t = 5 in every pixel. */
+    cam_t c;
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(1, -1, -2), V3(0, 1, 0), NUM(100), NUM_ZERO,
+                    8, 6) == CAM_OK);
+    long bad = 0;
+    for (int32_t y = 0; y < 6; y++)
+        for (int32_t x = 0; x < 8; x++) {
+            cam_ray(&c, x, y, &r);
+            bool h = geom_sphere_hit(&s, &r, &t);
+            if (!h || !near_rel(D(t), 5, 4)) {
+                bad++;
+                CHECK_SWEEP(0, "pixel (%d,%d): hit %d t %.9g, want 5", (int)x, (int)y, (int)h, D(t));
+            }
+        }
+    CHECK(bad == 0);
+
+    geom_box_t b;
+    CHECK(geom_box_make(&b, V3(-1, -2, -3), V3(2, 3, 4), red(), 0));
+    static const double dirs[6][4] = {{1, 0, 0, 2}, {-1, 0, 0, 1}, {0, 1, 0, 3},
+                                      {0, -1, 0, 2}, {0, 0, 1, 4}, {0, 0, -1, 3}};
+    for (int i = 0; i < 6; i++) {
+        r = mkray(dv(0, 0, 0), dv(dirs[i][0], dirs[i][1], dirs[i][2]));
+        t = NUM(-1);
+        CHECK_MSG(geom_box_hit(&b, &r, &t), "dir %d", i);
+        CHECK_ABS(t, dirs[i][3], 0);
+    }
+    r = mkray(dv(0, 0, 0), dv(1, 1, 0));
+    CHECK(geom_box_hit(&b, &r, &t));
+    CHECK_REL(t, 2 * sqrt(2.0), 4);
+    r = mkray(dv(0.5, 0.5, 0.5), dv(-1, -2, -2));
+    CHECK(geom_box_hit(&b, &r, &t)); /* exits through y = -2 at (-0.75, -2, -2) */
+    CHECK_REL(t, 1.25 * 3, 4);
+}
+
+/* ---- 4. behind the origin, parallel, in the plane of a face ------------- */
+
+static void test_behind(void)
+{
+    num_t t = NUM(-1);
+    ray_t r = mkray(dv(0, 0, 0), dv(0, 0, -1));
+    geom_sphere_t s;
+    geom_box_t b;
+    geom_triangle_t tr;
+    geom_plane_t p;
+    CHECK(geom_sphere_make(&s, V3(0, 0, 3), NUM(1), red(), 0));
+    CHECK(!geom_sphere_hit(&s, &r, &t));
+    CHECK(geom_sphere_make(&s, V3(0, 0, 1.5), NUM(1.5), red(), 0)); /* touches the origin */
+    CHECK(!geom_sphere_hit(&s, &r, &t));
+    CHECK(geom_box_make(&b, V3(-1, -1, 1), V3(1, 1, 2), red(), 0));
+    CHECK(!geom_box_hit(&b, &r, &t));
+    CHECK(geom_box_make(&b, V3(-1, -1, 0), V3(1, 1, 2), red(), 0)); /* origin on its face */
+    CHECK(!geom_box_hit(&b, &r, &t));
+    CHECK(geom_triangle_make(&tr, V3(-1, -1, 3), V3(1, -1, 3), V3(0, 1, 3), red(), 0));
+    CHECK(!geom_triangle_hit(&tr, &r, &t));
+    CHECK(geom_plane_make(&p, V3(0, 0, 3), V3(0, 0, 1), red(), 0));
+    CHECK(!geom_plane_hit(&p, &r, &t));
+    CHECK(geom_plane_make(&p, V3(0, 0, 3), V3(0, 0, -1), red(), 0));
+    CHECK(!geom_plane_hit(&p, &r, &t));
+    /* Origin on the plane: t = 0 is not a hit. */
+    CHECK(geom_plane_make(&p, V3(0, 0, 0), V3(0, 0, 1), red(), 0));
+    CHECK(!geom_plane_hit(&p, &r, &t));
+    /* Parallel to a plane: above it, and lying in it. */
+    CHECK(geom_plane_make(&p, V3(0, -1, 0), V3(0, 1, 0), red(), 0));
+    CHECK(!geom_plane_hit(&p, &r, &t));
+    r = mkray(dv(0, -1, 0), dv(1, 0, 1));
+    CHECK(!geom_plane_hit(&p, &r, &t));
+    /* Parallel to a triangle's plane, through its interior: miss. */
+    CHECK(geom_triangle_make(&tr, V3(-1, -1, -3), V3(1, -1, -3), V3(0, 1, -3), red(), 0));
+    r = mkray(dv(-5, 0, -3), dv(1, 0, 0));
+    CHECK(!geom_triangle_hit(&tr, &r, &t));
+
+    /* In the plane of a box face (y = max.y, and an edge): no crash, the
+     * same answer twice, and if a hit then at the face x = -1 (t = 4). */
+    CHECK(geom_box_make(&b, V3(-1, -2, -3), V3(2, 3, 4), red(), 0));
+    static const double os[3][3] = {{-5, 3, 0}, {-5, -2, 0}, {-5, 3, 4}};
+    for (int i = 0; i < 3; i++) {
+        r = mkray(dv(os[i][0], os[i][1], os[i][2]), dv(1, 0, 0));
+        num_t t1 = NUM(-1), t2 = NUM(-2);
+        bool h1 = geom_box_hit(&b, &r, &t1), h2 = geom_box_hit(&b, &r, &t2);
+        CHECK(h1 == h2);
+        CHECK(!h1 || (t1 == t2 && near_abs(D(t1), 4, 0)));
+    }
+}
+
+/* ---- 5. degenerate inputs ----------------------------------------------- */
+
+static void test_degenerate(void)
+{
+    geom_sphere_t s;
+    geom_plane_t p;
+    geom_box_t b;
+    geom_triangle_t tr;
+    num_t t = NUM(-1);
+    CHECK(!geom_sphere_make(&s, V3(0, 0, -3), NUM(0), red(), 0));
+    CHECK(!geom_sphere_make(&s, V3(0, 0, -3), NUM(-1), red(), 0));
+    CHECK(geom_sphere_make(&s, V3(0, 0, -3), N(1e-3), red(), 0));
+    CHECK(!geom_plane_make(&p, V3(0, 0, 0), V3(0, 0, 0), red(), 0));
+    CHECK(geom_plane_make(&p, V3(0, 0, 0), V3(0, 0, 1e-3), red(), 0));
+    CHECK_VEC_ABS(p.n, dv(0, 0, 1), 1);
+    CHECK(!geom_box_make(&b, V3(1, 0, 0), V3(0, 1, 1), red(), 0));
+    CHECK(!geom_box_make(&b, V3(0, 1, 0), V3(1, 0, 1), red(), 0));
+    CHECK(!geom_box_make(&b, V3(0, 0, 1), V3(1, 1, 0), red(), 0));
+    CHECK(geom_box_make(&b, V3(0, 0, 0), V3(0, 0, 0), red(), 0));
+
+    /* Zero-thickness box (min.y == max.y == 0), from above and below. */
+    CHECK(geom_box_make(&b, V3(-1, 0, -1), V3(1, 0, 1), red(), 0));
+    ray_t r = mkray(dv(0.25, 5, 0.5), dv(0, -1, 0));
+    CHECK(geom_box_hit(&b, &r, &t));
+    CHECK_ABS(t, 5, 0);
+    r = mkray(dv(0, 5, 0), dv(0.1, -1, 0.05));
+    CHECK(geom_box_hit(&b, &r, &t));
+    CHECK_REL(t, 5 * sqrt(1 + 0.01 + 0.0025), 4);
+    r = mkray(dv(0.5, -2, 0), dv(0, 1, 0));
+    CHECK(geom_box_hit(&b, &r, &t));
+    CHECK_ABS(t, 2, 0);
+    r = mkray(dv(1.5, 5, 0), dv(0, -1, 0));
+    CHECK(!geom_box_hit(&b, &r, &t));
+
+    /* Collinear triangles are accepted and never hit. */
+    static const double tris[3][3][3] = {
+        {{0, 0, -3}, {1, 1, -3}, {2, 2, -3}},
+        {{0, 0, -3}, {1, 1, -3}, {0, 0, -3}},
+        {{0.5, 0.5, -3}, {0.5, 0.5, -3}, {0.5, 0.5, -3}},
+    };
+    for (int i = 0; i < 3; i++) {
+        CHECK(geom_triangle_make(&tr, V3(tris[i][0][0], tris[i][0][1], tris[i][0][2]),
+                                 V3(tris[i][1][0], tris[i][1][1], tris[i][1][2]),
+                                 V3(tris[i][2][0], tris[i][2][1], tris[i][2][2]), red(), 0));
+        CHECK(tr.degenerate);
+        int hits = 0;
+        static const double dirs[4][3] = {{0, 0, -1}, {0.3, 0.2, -1}, {-1, 1, -0.5}, {1, -1, 0.1}};
+        for (int k = 0; k < 4; k++)
+            for (double sp = -0.5; sp <= 2.5; sp += 0.25) {
+                dv_t p0 = dv(sp, sp, -3);
+                dv_t d = dv(dirs[k][0], dirs[k][1], dirs[k][2]);
+                r = mkray(dsub(p0, dscale(dnorm(d), 4)), d);
+                hits += geom_triangle_hit(&tr, &r, &t);
+            }
+        CHECK_MSG(hits == 0, "collinear triangle %d hit %d times", i, hits);
+    }
+}
+
+/* ---- 6. far hits -------------------------------------------------------- */
+
+static void test_far(void)
+{
+    geom_plane_t p;
+    num_t t = NUM(-1);
+    CHECK(geom_plane_make(&p, V3(0, -1, 0), V3(0, 1, 0), red(), 0));
+    /* d = (1, -eps, 0): t = 1/eps. eps = 2^-16 is beyond Q16.16 (t = 65536). */
+    ray_t r;
+    r.o = V3(0, 0, 0);
+    r.d = vec3_make(NUM_ONE, N(-1.0 / 65536), NUM_ZERO);
+    double dd = D(r.d.y);
+    CHECK(geom_plane_hit(&p, &r, &t));
+#if FXRT_NUMBER == FXRT_Q16
+    CHECK_MSG(t == NUM_MAX, "t = %.9g, true t %.9g", D(t), -1 / dd);
+#else
+    CHECK_REL(t, -1 / dd, 4);
+#endif
+    /* Also with a normalised d (d.y rounds to -1 LSB in Q16.16), and a
+     * far-away plane. */
+    r = mkray(dv(0, 0, 0), dv(1, -1e-5, 0.5));
+    CHECK(geom_plane_hit(&p, &r, &t));
+#if FXRT_NUMBER == FXRT_Q16
+    CHECK_MSG(t == NUM_MAX, "t = %.9g", D(t));
+#else
+    CHECK_REL(t, -1 / D(r.d.y), 4);
+#endif
+    CHECK(geom_plane_make(&p, V3(0, -8000, 0), V3(0, 1, 0), red(), 0));
+    r = mkray(dv(0, 8000, 0), dv(1, -0.1, 0));
+    CHECK(geom_plane_hit(&p, &r, &t));
+#if FXRT_NUMBER == FXRT_Q16
+    CHECK_MSG(t == NUM_MAX, "t = %.9g", D(t));
+#else
+    CHECK_REL(t, 16000 * sqrt(1.01) / 0.1, 4);
+#endif
+    /* Just inside the range: eps = 3 LSB, t = 21845.33. */
+    r.o = V3(0, 0, 0);
+    r.d = vec3_make(NUM_ONE, N(-3.0 / 65536), NUM_ZERO);
+    CHECK(geom_plane_make(&p, V3(0, -1, 0), V3(0, 1, 0), red(), 0));
+    CHECK(geom_plane_hit(&p, &r, &t));
+    CHECK_REL(t, -1 / D(r.d.y), 2);
+}
+
+/* ---- 7. watertight shared edge ------------------------------------------ */
+
+static long watertight(dv_t a, dv_t b, dv_t c, dv_t d, const dv_t *origins, int n_origins, long n_rays)
+{
+    geom_triangle_t t1, t2;
+    CHECK(geom_triangle_make(&t1, V(a), V(b), V(c), red(), 1));
+    CHECK(geom_triangle_make(&t2, V(c), V(b), V(d), red(), 2));
+    dv_t B = RV(b), C = RV(c);
+    long miss = 0;
+    for (long i = 0; i < n_rays; i++) {
+        dv_t o = origins[i % n_origins];
+        double s = urand(0.01, 0.99);
+        dv_t p = dadd(B, dscale(dsub(C, B), s));
+        if (i % 4) /* three in four off the edge by up to 1e-6 */
+            p = dadd(p, urand_v(-1e-6, 1e-6));
+        ray_t r = mkray(o, dsub(p, o));
+        num_t t;
+        if (!geom_triangle_hit(&t1, &r, &t) && !geom_triangle_hit(&t2, &r, &t)) {
+            miss++;
+            CHECK_SWEEP(0, "ray %ld from (%g %g %g) to (%.12g %.12g %.12g) slips through", i, o.x, o.y,
+                        o.z, p.x, p.y, p.z);
+        }
+    }
+    return miss;
+}
+
+static void test_watertight(void)
+{
+    static const dv_t origins[] = {{0, 0, 0}, {0.7, -0.3, 1}, {-2, 1.5, -0.5}, {3, 3, 3},
+                                   {0.2, 0.1, -8}, {-0.4, 0.3, 2000}};
+    int no = (int)(sizeof origins / sizeof origins[0]);
+    /* Square quad with the diagonal from (1,-1) to (-1,1). */
+    long m = watertight(dv(-1, -1, -3), dv(1, -1, -3), dv(-1, 1, -3), dv(1, 1, -3), origins, no, 40000);
+    CHECK_MSG(m == 0, "square quad: %ld rays slipped through", m);
+    /* Irregular, non-planar quad. */
+    m = watertight(dv(-1.3, -0.7, -3.1), dv(1.1, -0.9, -2.7), dv(-0.8, 1.2, -3.4), dv(1.4, 1.05, -2.9),
+                   origins, no, 40000);
+    CHECK_MSG(m == 0, "irregular quad: %ld rays slipped through", m);
+    /* Long thin triangles with a long shared edge far from the origin. */
+    m = watertight(dv(-3000, -7, -500), dv(2500, -6.5, -480), dv(-2800, 5.25, -510), dv(2900, 6, -490),
+                   origins, no, 20000);
+    CHECK_MSG(m == 0, "large quad: %ld rays slipped through", m);
+}
+
+/* ---- random cross-checks against double references ---------------------- */
+
+/* Sphere and box reference t of the ray (o, d) with d as the build holds
+ * it, renormalised. Returns false for a miss; *marginal when the answer
+ * could go either way within the build's rounding. */
+static bool ref_sphere(dv_t c, double rad, dv_t o, dv_t d, double *t, bool *marginal)
+{
+    dv_t oc = dsub(c, o);
+    double b = ddot(oc, d);
+    dv_t q = dsub(oc, dscale(d, b));
+    double disc = rad * rad - ddot(q, q);
+    double m = 100 * UNIT * (1 + dlen(oc)) * (1 + rad);
+    *marginal = fabs(disc) < m;
+    if (disc < 0)
+        return false;
+    double h = sqrt(disc);
+    *marginal = *marginal || fabs(b - h) < m || fabs(b + h) < m;
+    if (b - h > 0) {
+        *t = b - h;
+        return true;
+    }
+    if (b + h > 0) {
+        *t = b + h;
+        return true;
+    }
+    return false;
+}
+
+static bool ref_box(dv_t lo, dv_t hi, dv_t o, dv_t d, double *t, bool *marginal)
+{
+    double tn = -1e300, tf = 1e300;
+    double ov[3] = {o.x, o.y, o.z}, dvv[3] = {d.x, d.y, d.z};
+    double lv[3] = {lo.x, lo.y, lo.z}, hv[3] = {hi.x, hi.y, hi.z};
+    for (int i = 0; i < 3; i++) {
+        if (dvv[i] == 0) {
+            if (ov[i] < lv[i] || ov[i] > hv[i])
+                return *marginal = false, false;
+            continue;
+        }
+        double t1 = (lv[i] - ov[i]) / dvv[i], t2 = (hv[i] - ov[i]) / dvv[i];
+        if (t1 > t2) {
+            double x = t1;
+            t1 = t2;
+            t2 = x;
+        }
+        tn = fmax(tn, t1);
+        tf = fmin(tf, t2);
+    }
+    double m = 100 * UNIT * (1 + fabs(tn) + fabs(tf));
+    *marginal = fabs(tn - tf) < m || fabs(tf) < m || fabs(tn) < m;
+    if (tn > tf || !(tf > 0))
+        return false;
+    *t = tn > 0 ? tn : tf;
+    return true;
+}
+
+/* Moller-Trumbore, two-sided. */
+static bool ref_triangle(dv_t a, dv_t b, dv_t c, dv_t o, dv_t d, double *t, bool *marginal,
+                         double *cosine)
+{
+    dv_t e1 = dsub(b, a), e2 = dsub(c, a);
+    dv_t pv = dcross(d, e2);
+    double det = ddot(e1, pv);
+    *cosine = fabs(ddot(d, dnorm(dcross(e1, e2))));
+    *marginal = *cosine < 1e-2;
+    if (det == 0)
+        return false;
+    dv_t tv = dsub(o, a);
+    double u = ddot(tv, pv) / det;
+    dv_t qv = dcross(tv, e1);
+    double v = ddot(d, qv) / det;
+    double tt = ddot(e2, qv) / det;
+    double m = 100 * UNIT * (1 + dlen(tv));
+    *marginal = *marginal || fabs(u) < m || fabs(v) < m || fabs(1 - u - v) < m || fabs(tt) < m;
+    if (u < 0 || v < 0 || u + v > 1 || !(tt > 0))
+        return false;
+    *t = tt;
+    return true;
+}
+
+static void test_random(void)
+{
+    long bad = 0, hits = 0, n = 0;
+    double worst[3] = {0, 0, 0};
+    for (int i = 0; i < 20000; i++) {
+        int kind = i % 3;
+        dv_t o = urand_v(-10, 10);
+        ray_t r;
+        num_t t = NUM(-1);
+        bool got, want, marginal;
+        double tw = 0, cosine = 1, lever = 0;
+        if (kind == 0) {
+            geom_sphere_t s;
+            dv_t c = RV(urand_v(-5, 5));
+            double rad = D(N(urand(0.1, 3)));
+            CHECK_SWEEP(geom_sphere_make(&s, V(c), N(rad), red(), 0), "random %d: make", i);
+            dv_t aim = dadd(c, urand_v(-1.5 * rad, 1.5 * rad));
+            r = mkray(o, dsub(aim, o));
+            got = geom_sphere_hit(&s, &r, &t);
+            want = ref_sphere(c, rad, DV(r.o), dnorm(DV(r.d)), &tw, &marginal);
+        } else if (kind == 1) {
+            geom_box_t b;
+            dv_t p = RV(urand_v(-5, 5)), q = RV(urand_v(-5, 5));
+            dv_t lo = dv(fmin(p.x, q.x), fmin(p.y, q.y), fmin(p.z, q.z));
+            dv_t hi = dv(fmax(p.x, q.x), fmax(p.y, q.y), fmax(p.z, q.z));
+            CHECK_SWEEP(geom_box_make(&b, V(lo), V(hi), red(), 0), "random %d: make", i);
+            dv_t aim = dadd(dscale(dadd(lo, hi), 0.5), dscale(dsub(hi, lo), urand(-0.8, 0.8)));
+            aim = dadd(aim, urand_v(-1, 1));
+            r = mkray(o, dsub(aim, o));
+            got = geom_box_hit(&b, &r, &t);
+            /* The slab test divides by the components of d as held. */
+            dv_t d = DV(r.d);
+            want = ref_box(lo, hi, DV(r.o), d, &tw, &marginal);
+        } else {
+            geom_triangle_t tr;
+            dv_t a = RV(urand_v(-5, 5)), b = RV(urand_v(-5, 5)), c = RV(urand_v(-5, 5));
+            CHECK_SWEEP(geom_triangle_make(&tr, V(a), V(b), V(c), red(), 0), "random %d: make", i);
+            double wa = urand(-0.3, 1), wb = urand(-0.3, 1), wc = urand(-0.3, 1);
+            double ws = wa + wb + wc;
+            if (fabs(ws) < 0.1)
+                ws = 1, wa = 1, wb = wc = 0;
+            dv_t aim = dscale(dadd(dadd(dscale(a, wa), dscale(b, wb)), dscale(c, wc)), 1 / ws);
+            r = mkray(o, dsub(aim, o));
+            got = geom_triangle_hit(&tr, &r, &t);
+            want = ref_triangle(a, b, c, DV(r.o), dnorm(DV(r.d)), &tw, &marginal, &cosine);
+            lever = dlen(dsub(a, DV(r.o)));
+        }
+        if (marginal)
+            continue;
+        n++;
+        hits += want;
+        bool ok = got == want;
+        if (ok && got) {
+            /* A triangle's t is ((a - o) . n) / (d . n) with n rounded: its
+             * error grows with |a - o| and as 1 / cos of the angle of
+             * incidence. */
+            double err = fabs(D(t) - tw) * cosine / (UNIT * (fmax(1, tw) + lever));
+            worst[kind] = fmax(worst[kind], err);
+            ok = err <= 4;
+        }
+        if (!ok) {
+            bad++;
+            CHECK_SWEEP(ok, "random %d kind %d: got %d t %.10g, want %d t %.10g", i, kind, (int)got,
+                        D(t), (int)want, tw);
+        }
+    }
+    CHECK_MSG(bad == 0 && n > 15000 && hits > n / 4, "%ld bad of %ld (%ld hits)", bad, n, hits);
+    if (getenv("TEST_GEOM_VERBOSE"))
+        printf("random: %ld non-marginal rays, %ld hits, worst t error (units) sphere %.2f box %.2f "
+               "triangle %.2f (x cos / (t + |a - o|))\n", n, hits, worst[0], worst[1], worst[2]);
+}
+
+/* ---- 8. world_hit ------------------------------------------------------- */
+
+static world_t world; /* large: keep off the stack */
+
+static void test_world(void)
+{
+    hit_t h;
+    ray_t r = mkray(dv(0, 0, 0), dv(0, 0, -1));
+    world_init(&world, col(0.2, 0.4, 0.6));
+    CHECK(!world_hit(&world, &r, &h));
+    CHECK(world.background_rgb.r == 51 && world.background_rgb.g == 102 && world.background_rgb.b == 153);
+    rgb8_t px = render_pixel(&world, &r);
+    CHECK(px.r == 51 && px.g == 102 && px.b == 153);
+
+    /* Nearest wins, wherever it is in the arrays. */
+    CHECK(geom_sphere_make(&world.spheres[0], V3(0, 0, -6), NUM(0.5), col(1, 0, 0), 0));
+    CHECK(geom_sphere_make(&world.spheres[1], V3(0, 0, -3), NUM(0.5), col(0, 1, 0), 1));
+    world.n_spheres = 2;
+    CHECK(geom_box_make(&world.boxes[0], V3(-1, -1, -12), V3(1, 1, -10), col(0, 0, 1), 2));
+    world.n_boxes = 1;
+    CHECK(geom_plane_make(&world.planes[0], V3(0, -1, 0), V3(0, 1, 0), col(1, 1, 0), 3));
+    world.n_planes = 1; /* parallel to the ray: never hit by it */
+    CHECK(geom_triangle_make(&world.triangles[0], V3(-1, -1, -20), V3(1, -1, -20), V3(0, 1, -20),
+                             col(1, 0, 1), 4));
+    world.n_triangles = 1;
+    CHECK(world_hit(&world, &r, &h));
+    CHECK_ABS(h.t, 2.5, 1);
+    CHECK(h.kind == GEOM_SPHERE && h.index == 1 && h.obj == &world.spheres[1].obj && h.obj->id == 1);
+    CHECK(vec3_eq(h.point, ray_at(&r, h.t)));
+    CHECK_VEC_ABS(h.point, dv(0, 0, -2.5), 1);
+    px = render_pixel(&world, &r);
+    CHECK(px.r == 0 && px.g == 255 && px.b == 0);
+
+    /* Move each kind in front in turn. */
+    CHECK(geom_box_make(&world.boxes[0], V3(-1, -1, -2), V3(1, 1, -1.5), col(0, 0, 1), 2));
+    CHECK(world_hit(&world, &r, &h));
+    CHECK(h.kind == GEOM_BOX && h.index == 0 && h.obj == &world.boxes[0].obj);
+    CHECK_ABS(h.t, 1.5, 0);
+    CHECK(geom_triangle_make(&world.triangles[0], V3(-1, -1, -1), V3(1, -1, -1), V3(0, 1, -1),
+                             col(1, 0, 1), 4));
+    CHECK(world_hit(&world, &r, &h));
+    CHECK(h.kind == GEOM_TRIANGLE && h.index == 0 && h.obj == &world.triangles[0].obj);
+    CHECK_ABS(h.t, 1, 1);
+    CHECK(geom_plane_make(&world.planes[0], V3(0, 0, -0.75), V3(0, 0, 1), col(1, 1, 0), 3));
+    CHECK(world_hit(&world, &r, &h));
+    CHECK(h.kind == GEOM_PLANE && h.index == 0 && h.obj == &world.planes[0].obj);
+    CHECK_ABS(h.t, 0.75, 1);
+    /* An oblique ray: the point is o + t d and lies on the sphere. */
+    world.n_planes = world.n_triangles = world.n_boxes = 0;
+    r = mkray(dv(1, 2, 0.5), dv(-1, -2, -3.3));
+    CHECK(world_hit(&world, &r, &h));
+    CHECK(h.obj == &world.spheres[1].obj);
+    CHECK(vec3_eq(h.point, ray_at(&r, h.t)));
+    CHECK_REL(num_sub(vec3_len(vec3_sub(h.point, world.spheres[1].center)), NUM(0.5)), 0, 8);
+    /* Everything behind: miss. */
+    r = mkray(dv(0, 0, 0), dv(0, 0, 1));
+    CHECK(!world_hit(&world, &r, &h));
+
+    /* Exact ties go to the lower id, whatever the array order. */
+    r = mkray(dv(0, 0, 0), dv(0, 0, -1));
+    for (int order = 0; order < 2; order++) {
+        world_init(&world, col(0, 0, 0));
+        CHECK(geom_sphere_make(&world.spheres[order], V3(0, 0, -3), NUM(0.5), col(1, 0, 0), 3));
+        CHECK(geom_sphere_make(&world.spheres[1 - order], V3(0, 0, -3), NUM(0.5), col(0, 0, 1), 7));
+        world.n_spheres = 2;
+        CHECK(world_hit(&world, &r, &h));
+        CHECK_MSG(h.obj == &world.spheres[order].obj && h.obj->id == 3 && h.index == order,
+                  "order %d: id %d", order, (int)h.obj->id);
+        px = render_pixel(&world, &r);
+        CHECK(px.r == 255 && px.b == 0);
+    }
+    /* Ties across kinds: box face, triangle and plane all at t = 3. */
+    for (int lowest = 0; lowest < 3; lowest++) {
+        world_init(&world, col(0, 0, 0));
+        uint16_t ids[3] = {5, 6, 7};
+        ids[lowest] = 1;
+        CHECK(geom_box_make(&world.boxes[0], V3(-1, -1, -4), V3(1, 1, -3), col(0, 0, 1), ids[0]));
+        CHECK(geom_triangle_make(&world.triangles[0], V3(-1, -1, -3), V3(1, -1, -3), V3(0, 1, -3),
+                                 col(1, 0, 1), ids[1]));
+        CHECK(geom_plane_make(&world.planes[0], V3(0, 0, -3), V3(0, 0, 1), col(1, 1, 0), ids[2]));
+        world.n_boxes = world.n_triangles = world.n_planes = 1;
+        CHECK(world_hit(&world, &r, &h));
+        CHECK_ABS(h.t, 3, 0);
+        static const geom_kind_t kinds[3] = {GEOM_BOX, GEOM_TRIANGLE, GEOM_PLANE};
+        CHECK_MSG(h.kind == kinds[lowest] && h.obj->id == 1, "lowest %d: kind %d id %d", lowest,
+                  (int)h.kind, (int)h.obj->id);
+    }
+}
+
+/* ---- 9. render_row ------------------------------------------------------ */
+
+#define RW 8
+#define RH 6
+#define CANARY 16
+
+typedef struct {
+    dv_t c;
+    double r;
+    rgb8_t rgb;
+} ref_obj_t;
+
+/* Render every row of the seed camera (fov 90, RW x RH) and compare each
+ * pixel with the double reference of the spheres; returns the number of
+ * object pixels per output row in rows[]. */
+static void render_check(const ref_obj_t *objs, int n_objs, int rows[RH], int cols[RW])
+{
+    cam_t c;
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0), NUM(90), NUM_ZERO, RW,
+                    RH) == CAM_OK);
+    uint8_t buf[CANARY + 3 * RW + CANARY];
+    long bad_px = 0, bad_canary = 0;
+    for (int x = 0; x < RW; x++)
+        cols[x] = 0;
+    for (int32_t row = 0; row < RH; row++) {
+        for (size_t i = 0; i < sizeof buf; i++)
+            buf[i] = 0xA5;
+        render_row(&world, &c, row, buf + CANARY);
+        for (size_t i = 0; i < sizeof buf; i++)
+            if ((i < CANARY || i >= CANARY + 3 * RW) && buf[i] != 0xA5)
+                bad_canary++;
+        rows[row] = 0;
+        for (int32_t x = 0; x < RW; x++) {
+            /* Reference: the ideal ray through pixel (x, y), y from the bottom. */
+            int32_t y = RH - 1 - row;
+            dv_t d = dnorm(dv(x - (RW - 1) / 2.0, y - (RH - 1) / 2.0, -(RH / 2.0)));
+            rgb8_t want = world.background_rgb;
+            double best = 1e300;
+            bool marginal = false, object = false;
+            for (int k = 0; k < n_objs; k++) {
+                double t;
+                bool m;
+                if (ref_sphere(objs[k].c, objs[k].r, dv(0, 0, 0), d, &t, &m) && t < best) {
+                    best = t;
+                    want = objs[k].rgb;
+                    object = true;
+                }
+                /* A pixel ray within 1% of a silhouette could go either way. */
+                dv_t q = dsub(objs[k].c, dscale(d, ddot(objs[k].c, d)));
+                marginal = marginal || fabs(dlen(q) - objs[k].r) < 0.01 * objs[k].r;
+            }
+            const uint8_t *p = buf + CANARY + 3 * x;
+            bool is_obj = !(p[0] == world.background_rgb.r && p[1] == world.background_rgb.g
+                            && p[2] == world.background_rgb.b);
+            rows[row] += is_obj;
+            cols[x] += is_obj;
+            /* Same as render_pixel through cam_ray (y counted from the bottom). */
+            ray_t r;
+            cam_ray(&c, x, y, &r);
+            rgb8_t rp = render_pixel(&world, &r);
+            bool ok = p[0] == rp.r && p[1] == rp.g && p[2] == rp.b;
+            if (!marginal)
+                ok = ok && p[0] == want.r && p[1] == want.g && p[2] == want.b;
+            if (!ok) {
+                bad_px++;
+                CHECK_SWEEP(ok, "row %d x %d: got %d %d %d, want %d %d %d (object %d)", (int)row, (int)x,
+                            p[0], p[1], p[2], want.r, want.g, want.b, (int)object);
+            }
+        }
+    }
+    CHECK_MSG(bad_canary == 0, "%ld canary bytes overwritten", bad_canary);
+    CHECK_MSG(bad_px == 0, "%ld pixels wrong", bad_px);
+}
+
+static void test_render(void)
+{
+    int rows[RH], cols[RW];
+    ref_obj_t obj;
+
+    /* A sphere in the middle: the four central pixels only. */
+    world_init(&world, col(0.2, 0.4, 0.6));
+    CHECK(geom_sphere_make(&world.spheres[0], V3(0, 0, -3), NUM(1), col(1, 0, 0), 0));
+    world.n_spheres = 1;
+    obj.c = dv(0, 0, -3);
+    obj.r = 1;
+    obj.rgb = world.spheres[0].obj.rgb;
+    CHECK(obj.rgb.r == 255 && obj.rgb.g == 0 && obj.rgb.b == 0);
+    render_check(&obj, 1, rows, cols);
+    CHECK(rows[0] == 0 && rows[1] == 0 && rows[2] == 2 && rows[3] == 2 && rows[4] == 0 && rows[5] == 0);
+    CHECK(cols[3] == 2 && cols[4] == 2 && cols[0] == 0 && cols[7] == 0);
+
+    /* A sphere in the upper half shows in the first rows only (row 0 is the
+     * top of the image). */
+    CHECK(geom_sphere_make(&world.spheres[0], V3(0, 2, -3), NUM(0.8), col(0, 1, 0), 0));
+    obj.c = dv(0, 2, -3);
+    obj.r = D(NUM(0.8));
+    obj.rgb = world.spheres[0].obj.rgb;
+    render_check(&obj, 1, rows, cols);
+    CHECK_MSG(rows[0] > 0 && rows[RH / 2] == 0 && rows[RH / 2 + 1] == 0 && rows[RH - 1] == 0,
+              "rows %d %d %d %d %d %d", rows[0], rows[1], rows[2], rows[3], rows[4], rows[5]);
+    /* ... and one to the right in the right-hand columns. */
+    CHECK(geom_sphere_make(&world.spheres[0], V3(2.5, -0.5, -3), NUM(0.8), col(0, 0, 1), 0));
+    obj.c = dv(2.5, -0.5, -3);
+    obj.rgb = world.spheres[0].obj.rgb;
+    render_check(&obj, 1, rows, cols);
+    CHECK_MSG(cols[RW - 1] > 0 && cols[0] == 0 && cols[RW / 2 - 1] == 0 && rows[0] == 0,
+              "cols %d %d %d %d %d %d %d %d", cols[0], cols[1], cols[2], cols[3], cols[4], cols[5],
+              cols[6], cols[7]);
+    /* An empty world is all background. */
+    world.n_spheres = 0;
+    render_check(&obj, 0, rows, cols);
+    CHECK(rows[0] + rows[1] + rows[2] + rows[3] + rows[4] + rows[5] == 0);
+}
+
+int main(void)
+{
+    test_cam_basis_seed();
+    test_cam_basis_fig7();
+    test_cam_pixels();
+    test_cam_perspective_angles();
+    test_cam_orthographic();
+    test_cam_errors();
+    test_cam_wide_fov();
+    test_plane_outside();
+    test_sphere_outside();
+    test_triangle_outside();
+    test_box_outside();
+    test_inside();
+    test_behind();
+    test_degenerate();
+    test_far();
+    test_watertight();
+    test_random();
+    test_world();
+    test_render();
+    return check_report("test_geom_" NUM_NAME);
+}
