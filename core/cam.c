@@ -41,6 +41,7 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     cam->v = v;
     cam->w = w;
     cam->fwd = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    cam->focal = NUM_ONE;
     cam->step_u = numw_from(NUM_ZERO);
     cam->step_v = numw_from(NUM_ZERO);
 
@@ -56,7 +57,8 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
          * three builds accept the same scenes. */
         if (cot > num_div(NUM(32767), num_from_int(height)))
             return CAM_ERR_NARROW;
-        cam->fwd = vec3_scale(w, num_neg(num_mul_int(cot, height)));
+        cam->focal = num_mul_int(cot, height);
+        cam->fwd = vec3_scale(w, num_neg(cam->focal));
     } else {
         if (!(scale > NUM_ZERO))
             return CAM_ERR_SCALE;

@@ -41,6 +41,7 @@ typedef struct {
      * the seed's r, exact in Q16.16 except for fwd = -w H cot(a/2) (the
      * integer multiples of u and v add no rounding). */
     vec3_t fwd;
+    num_t focal; /* |fwd| = H cot(fov/2): the distance of the pixel grid in half pixels */
     /* Orthographic: per-pixel offsets along u and v are (2x - W + 1) *
      * step_u and (2y - H + 1) * step_v, kept wide so that no rounding
      * builds up across the image. */

@@ -190,3 +190,64 @@ bool fx_normalize3(fx_t v[3])
     }
     return true;
 }
+
+fx128_t fx128_mul(int64_t a, int64_t b)
+{
+    bool neg = (a < 0) != (b < 0);
+    uint64_t x = fx_uabs64(a), y = fx_uabs64(b);
+    uint64_t x0 = (uint32_t)x, x1 = x >> 32, y0 = (uint32_t)y, y1 = y >> 32;
+    uint64_t p00 = x0 * y0, p01 = x0 * y1, p10 = x1 * y0, p11 = x1 * y1;
+    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
+    fx128_t r;
+    r.lo = (mid << 32) | (uint32_t)p00;
+    r.hi = (int64_t)(p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32));
+    return neg ? fx128_neg(r) : r;
+}
+
+fx128_t fx128_shl(fx128_t a, int s)
+{
+    fx128_t r;
+    if (s == 0)
+        return a;
+    if (s >= 64) {
+        r.hi = (int64_t)(a.lo << (s - 64));
+        r.lo = 0;
+        return r;
+    }
+    r.hi = (int64_t)(((uint64_t)a.hi << s) | (a.lo >> (64 - s)));
+    r.lo = a.lo << s;
+    return r;
+}
+
+int fx128_bits(fx128_t a)
+{
+    if (a.hi < 0)
+        a = fx128_neg(a);
+    if (a.hi)
+        return 128 - __builtin_clzll((uint64_t)a.hi);
+    return a.lo ? 64 - __builtin_clzll(a.lo) : 0;
+}
+
+int64_t fx128_shr_round(fx128_t a, int s)
+{
+    bool neg = a.hi < 0;
+    if (neg)
+        a = fx128_neg(a);
+    if (s > 0)
+        a = fx128_add(a, fx128_shl(fx128_from64(1), s - 1));
+    uint64_t hi = (uint64_t)a.hi, lo = a.lo, q;
+    if (s == 0) {
+        q = lo;
+        if (hi)
+            q = UINT64_MAX;
+    } else if (s < 64) {
+        q = (lo >> s) | (hi << (64 - s));
+        if (hi >> s)
+            q = UINT64_MAX;
+    } else {
+        q = hi >> (s - 64);
+    }
+    if (neg)
+        return q > (uint64_t)INT64_MAX ? INT64_MIN : -(int64_t)q;
+    return q > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)q;
+}

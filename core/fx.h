@@ -145,6 +145,45 @@ fx_t fx_recip(fx_t a);
  * Computed from sine and cosine series in Q2.30, so it needs no tables. */
 fx_t fx_cot_deg(fx_t deg);
 
+/* A signed 128-bit integer for exact set-up arithmetic on 32-bit targets
+ * (which have no __int128): two's complement, hi:lo. */
+typedef struct {
+    uint64_t lo;
+    int64_t hi;
+} fx128_t;
+
+static inline fx128_t fx128_from64(int64_t v)
+{
+    fx128_t r = {(uint64_t)v, v < 0 ? -1 : 0};
+    return r;
+}
+static inline fx128_t fx128_add(fx128_t a, fx128_t b)
+{
+    fx128_t r;
+    r.lo = a.lo + b.lo;
+    r.hi = (int64_t)((uint64_t)a.hi + (uint64_t)b.hi + (r.lo < a.lo ? 1u : 0u));
+    return r;
+}
+static inline fx128_t fx128_neg(fx128_t a)
+{
+    fx128_t r;
+    r.lo = ~a.lo + 1u;
+    r.hi = (int64_t)(~(uint64_t)a.hi + (r.lo == 0 ? 1u : 0u));
+    return r;
+}
+static inline fx128_t fx128_sub(fx128_t a, fx128_t b)
+{
+    return fx128_add(a, fx128_neg(b));
+}
+/* a * b, exact. */
+fx128_t fx128_mul(int64_t a, int64_t b);
+/* a * 2^s for 0 <= s < 128, exact when the result fits. */
+fx128_t fx128_shl(fx128_t a, int s);
+/* round(a / 2^s) for 0 <= s < 127, saturated to the int64 range. */
+int64_t fx128_shr_round(fx128_t a, int s);
+/* Number of significant bits of |a| (0 for 0). */
+int fx128_bits(fx128_t a);
+
 /* Scale (x, y, z) to unit length in place, each component within 1 LSB of
  * the exact result for any non-zero input (the vector is first shifted up
  * to use the full 32 bits, so short vectors normalise as well as long ones).

@@ -31,6 +31,8 @@
 #define world_hit FXRT_SYM(world_hit)
 #define render_pixel FXRT_SYM(render_pixel)
 #define render_row FXRT_SYM(render_row)
+#define render_row_reference FXRT_SYM(render_row_reference)
+#define render_setup FXRT_SYM(render_setup)
 #endif
 
 #endif

@@ -1,5 +1,917 @@
-/* render: scanlines of primary rays. */
+/* render: per-frame set-up of camera-space coverage forms, and the two
+ * scanline loops (fast and reference). See render.h for the method. */
 #include "render.h"
+
+#define RO_NONE 0xFFFFu
+
+/* Set-up helpers that a build without some primitive kind does not call. */
+#define RENDER_MAYBE_UNUSED __attribute__((unused))
+
+/* ---- set-up arithmetic ----------------------------------------------------
+ * Coefficients are first formed exactly (Q16.16: as 128-bit integers in
+ * Q80.48, so products of a Q16.16 and a Q32.32 value lose nothing), then
+ * each form is scaled by a power of two so that its value over the whole
+ * screen stays below 2^target, and rounded once to int64. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef fx128_t rc_t;
+RENDER_MAYBE_UNUSED static rc_t rc_n(num_t a) { return fx128_shl(fx128_from64(a), 32); }
+RENDER_MAYBE_UNUSED static rc_t rc_w(numw_t w) { return fx128_shl(fx128_from64(w), 16); }
+RENDER_MAYBE_UNUSED static rc_t rc_nn(num_t a, num_t b) { return fx128_shl(fx128_mul(a, b), 16); }
+RENDER_MAYBE_UNUSED static rc_t rc_nw(num_t a, numw_t w) { return fx128_mul(a, w); }
+RENDER_MAYBE_UNUSED static rc_t rc_add(rc_t a, rc_t b) { return fx128_add(a, b); }
+RENDER_MAYBE_UNUSED static rc_t rc_neg(rc_t a) { return fx128_neg(a); }
+RENDER_MAYBE_UNUSED static rc_t rc_zero(void) { return fx128_from64(0); }
+RENDER_MAYBE_UNUSED static bool rc_is_neg(rc_t a) { return a.hi < 0; }
+#else
+typedef num_t rc_t;
+RENDER_MAYBE_UNUSED static rc_t rc_n(num_t a) { return a; }
+RENDER_MAYBE_UNUSED static rc_t rc_w(numw_t w) { return w; }
+RENDER_MAYBE_UNUSED static rc_t rc_nn(num_t a, num_t b) { return a * b; }
+RENDER_MAYBE_UNUSED static rc_t rc_nw(num_t a, numw_t w) { return a * w; }
+RENDER_MAYBE_UNUSED static rc_t rc_add(rc_t a, rc_t b) { return a + b; }
+RENDER_MAYBE_UNUSED static rc_t rc_neg(rc_t a) { return -a; }
+RENDER_MAYBE_UNUSED static rc_t rc_zero(void) { return NUM_ZERO; }
+RENDER_MAYBE_UNUSED static bool rc_is_neg(rc_t a) { return a < 0; }
+#endif
+RENDER_MAYBE_UNUSED static rc_t rc_sub(rc_t a, rc_t b) { return rc_add(a, rc_neg(b)); }
+
+/* Forms under construction: exact coefficients. */
+typedef struct {
+    rc_t c, x, y;
+} rclin_t;
+typedef struct {
+    rc_t c, x, y, xx, xy, yy;
+} rcquad_t;
+
+#if FXRT_NUMBER == FXRT_Q16
+static int render_bits32(uint32_t v) { return v ? 32 - __builtin_clz(v) : 0; }
+
+/* Smallest right shift that keeps sum |coef[i]| * mult[i] below 2^target. */
+static int rk_shift(const rc_t *coef, const uint32_t *mult, int n, int target)
+{
+    int need = 0;
+    for (int i = 0; i < n; i++) {
+        int b = fx128_bits(coef[i]);
+        if (b)
+            b += render_bits32(mult[i]);
+        if (b > need)
+            need = b;
+    }
+    need += 3; /* at most 6 terms */
+    return need > target ? need - target : 0;
+}
+static rk_t rk_of(rc_t c, int k) { return fx128_shr_round(c, k); }
+#define RK_SHIFT(coefs, mults, n, target) rk_shift(coefs, mults, n, target)
+#else
+static rk_t rk_of(rc_t c, int k) { (void)k; return c; }
+#define RK_SHIFT(coefs, mults, n, target) 0
+#endif
+
+static rlin_t rlin_scaled(rclin_t f, int k)
+{
+    rlin_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k)};
+    return r;
+}
+
+RENDER_MAYBE_UNUSED static rquad_t rquad_scaled(rcquad_t f, int k)
+{
+    rquad_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k), rk_of(f.xx, k), rk_of(f.xy, k), rk_of(f.yy, k)};
+    return r;
+}
+
+/* Screen extents of ix and iy, for the scale bounds. */
+typedef struct {
+    uint32_t xm, ym;
+} rext_t;
+
+static int rlin_need(const rclin_t *f, rext_t ext, int target)
+{
+    rc_t c[3] = {f->c, f->x, f->y};
+    uint32_t m[3] = {1, ext.xm, ext.ym};
+    (void)c;
+    (void)m;
+    (void)target;
+    return RK_SHIFT(c, m, 3, target);
+}
+
+#if FXRT_NUMBER == FXRT_Q16
+RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int target)
+{
+    rc_t c[6] = {f->c, f->x, f->y, f->xx, f->xy, f->yy};
+    uint32_t m[6] = {1, ext.xm, ext.ym, ext.xm * ext.xm, ext.xm * ext.ym, ext.ym * ext.ym};
+    (void)c;
+    (void)m;
+    (void)target;
+    return RK_SHIFT(c, m, 6, target);
+}
+#endif
+
+/* Linear forms get 61 bits: values, steps and sums stay inside int64. */
+#define RENDER_LIN_BITS 61
+/* The sphere's pieces get 30 bits, so b^2 - a c is exact in int64. */
+#define RENDER_SPHERE_BITS 30
+
+RENDER_MAYBE_UNUSED static rlin_t rlin_make(rclin_t f, rext_t ext)
+{
+    return rlin_scaled(f, rlin_need(&f, ext, RENDER_LIN_BITS));
+}
+
+/* ---- evaluation ----------------------------------------------------------
+ * Q16.16: in uint64, so that no intermediate can be signed overflow; every
+ * final value is known to fit int64 (the scales above guarantee it). */
+#if FXRT_NUMBER == FXRT_Q16
+static inline rk_t rlin_at(const rlin_t *f, int32_t ix, int32_t iy)
+{
+    return (rk_t)((uint64_t)f->c + (uint64_t)f->x * (uint64_t)(int64_t)ix + (uint64_t)f->y * (uint64_t)(int64_t)iy);
+}
+static inline rk_t rquad_at(const rquad_t *f, int32_t ix, int32_t iy)
+{
+    uint64_t x = (uint64_t)(int64_t)ix, y = (uint64_t)(int64_t)iy;
+    return (rk_t)((uint64_t)f->c + (uint64_t)f->x * x + (uint64_t)f->y * y + (uint64_t)f->xx * x * x +
+                  (uint64_t)f->xy * x * y + (uint64_t)f->yy * y * y);
+}
+static inline rk_t rk_mul(rk_t a, rk_t b) { return (rk_t)((uint64_t)a * (uint64_t)b); }
+static inline rk_t rk_sub(rk_t a, rk_t b) { return (rk_t)((uint64_t)a - (uint64_t)b); }
+static inline rk_t rk_add(rk_t a, rk_t b) { return (rk_t)((uint64_t)a + (uint64_t)b); }
+#else
+static inline rk_t rlin_at(const rlin_t *f, int32_t ix, int32_t iy)
+{
+    return f->c + f->x * (num_t)ix + f->y * (num_t)iy;
+}
+static inline rk_t rquad_at(const rquad_t *f, int32_t ix, int32_t iy)
+{
+    num_t x = (num_t)ix, y = (num_t)iy;
+    return f->c + f->x * x + f->y * y + f->xx * x * x + f->xy * x * y + f->yy * y * y;
+}
+static inline rk_t rk_mul(rk_t a, rk_t b) { return a * b; }
+static inline rk_t rk_sub(rk_t a, rk_t b) { return a - b; }
+static inline rk_t rk_add(rk_t a, rk_t b) { return a + b; }
+#endif
+
+static inline bool render_sphere_vals(rk_t b, rk_t c, rk_t disc)
+{
+    return c < 0 || (b > 0 && disc >= 0);
+}
+
+static inline bool render_flat_vals(rk_t n, rk_t d, const rk_t *e, int edges)
+{
+    if (!((n > 0 && d > 0) || (n < 0 && d < 0)))
+        return false;
+    bool pos = false, neg = false;
+    for (int i = 0; i < edges; i++) {
+        pos |= e[i] > 0;
+        neg |= e[i] < 0;
+    }
+    return !(pos && neg);
+}
+
+static bool render_flat_at(const rflat_t *f, int32_t ix, int32_t iy)
+{
+    rk_t e[4];
+    for (int i = 0; i < f->edges; i++)
+        e[i] = rlin_at(&f->e[i], ix, iy);
+    return render_flat_vals(rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy), e, f->edges);
+}
+
+/* Does object o cover the pixel? Every form evaluated from scratch. */
+static bool render_covers(const ro_t *o, int32_t ix, int32_t iy)
+{
+    switch (o->kind) {
+    case RO_ALL:
+        return true;
+    case RO_SPHERE: {
+        rk_t b = rlin_at(&o->u.sphere.b, ix, iy);
+        rk_t a = rquad_at(&o->u.sphere.a, ix, iy);
+        rk_t px = rlin_at(&o->u.sphere.px, ix, iy), py = rlin_at(&o->u.sphere.py, ix, iy);
+        rk_t c = rk_add(o->u.sphere.k, rk_add(rk_mul(px, px), rk_mul(py, py)));
+        return render_sphere_vals(b, c, rk_sub(rk_mul(b, b), rk_mul(a, c)));
+    }
+    case RO_FLAT:
+    case RO_BOX:
+        for (int i = 0; i < o->nflat; i++)
+            if (render_flat_at(&o->u.flat[i], ix, iy))
+                return true;
+        return false;
+    }
+    return false;
+}
+
+/* ---- set-up of each object ------------------------------------------- */
+
+RENDER_MAYBE_UNUSED static vec3_t render_to_cam(const cam_t *cam, vec3_t p)
+{
+    vec3_t q = vec3_sub(p, cam->e);
+    return vec3_make(vec3_dot(q, cam->u), vec3_dot(q, cam->v), vec3_dot(q, cam->w));
+}
+
+RENDER_MAYBE_UNUSED static vec3_t render_dir_to_cam(const cam_t *cam, vec3_t d)
+{
+    return vec3_make(vec3_dot(d, cam->u), vec3_dot(d, cam->v), vec3_dot(d, cam->w));
+}
+
+RENDER_MAYBE_UNUSED static bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTHOGRAPHIC; }
+
+/* N = n.(A - o) and D = n.r for camera-space normal n and point a. */
+RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec3_t n, vec3_t a, rflat_t *f)
+{
+    bool ortho = render_ortho(cam);
+    num_t focal = ortho ? NUM_ONE : cam->focal;
+    rclin_t nf = {rc_add(rc_add(rc_nn(n.x, a.x), rc_nn(n.y, a.y)), rc_nn(n.z, a.z)),
+                  ortho ? rc_nw(num_neg(n.x), cam->step_u) : rc_zero(),
+                  ortho ? rc_nw(num_neg(n.y), cam->step_v) : rc_zero()};
+    rclin_t df = {rc_nn(n.z, num_neg(focal)), ortho ? rc_zero() : rc_n(n.x), ortho ? rc_zero() : rc_n(n.y)};
+    f->n = rlin_make(nf, ext);
+    f->d = rlin_make(df, ext);
+    f->edges = 0;
+    f->x0 = 0;
+    f->x1 = (int16_t)(cam->width - 1);
+    f->r0 = 0;
+    f->r1 = (int16_t)(cam->height - 1);
+}
+
+/* Copy an object's bounds to (or from) a flat piece. */
+RENDER_MAYBE_UNUSED static void render_flat_bounds_from(rflat_t *f, const ro_t *o)
+{
+    f->x0 = o->x0;
+    f->x1 = o->x1;
+    f->r0 = o->r0;
+    f->r1 = o->r1;
+}
+
+RENDER_MAYBE_UNUSED static bool render_point_less(vec3_t p, vec3_t q)
+{
+    if (p.x != q.x)
+        return p.x < q.x;
+    if (p.y != q.y)
+        return p.y < q.y;
+    return p.z < q.z;
+}
+
+/* Edge form r.((P - o) x (Q - o)): which side of the plane through the ray
+ * origin and the edge the ray passes. Formed with the edge in canonical
+ * order and negated for the other, so that two faces sharing an edge get
+ * exactly opposite forms: no ray slips between them (watertight). */
+RENDER_MAYBE_UNUSED static rlin_t render_edge(const cam_t *cam, rext_t ext, vec3_t p, vec3_t q)
+{
+    bool swap = render_point_less(q, p);
+    if (swap) {
+        vec3_t t = p;
+        p = q;
+        q = t;
+    }
+    bool ortho = render_ortho(cam);
+    num_t focal = ortho ? NUM_ONE : cam->focal;
+    numw_t gx = numw_sub(numw_mul(p.y, q.z), numw_mul(p.z, q.y));
+    numw_t gy = numw_sub(numw_mul(p.z, q.x), numw_mul(p.x, q.z));
+    numw_t gz = numw_sub(numw_mul(p.x, q.y), numw_mul(p.y, q.x));
+    rclin_t f;
+    f.c = rc_nw(num_neg(focal), gz);
+    if (ortho) {
+        f.x = rc_nw(num_sub(q.y, p.y), cam->step_u);
+        f.y = rc_nw(num_sub(p.x, q.x), cam->step_v);
+    } else {
+        f.x = rc_w(gx);
+        f.y = rc_w(gy);
+    }
+    if (swap) {
+        f.c = rc_neg(f.c);
+        f.x = rc_neg(f.x);
+        f.y = rc_neg(f.y);
+    }
+    return rlin_make(f, ext);
+}
+
+RENDER_MAYBE_UNUSED static int32_t render_floor(num_t v)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return v >> FX_FRAC_BITS; /* arithmetic shift: floor */
+#else
+    if (v > NUM(1e6))
+        return 1000000;
+    if (v < NUM(-1e6))
+        return -1000000;
+    int32_t i = (int32_t)v;
+    return (num_t)i > v ? i - 1 : i;
+#endif
+}
+
+/* Pixel bounds from a camera-space point set, projected. */
+typedef struct {
+    num_t ix0, ix1, iy0, iy1;
+    bool any;
+} rbox_t;
+
+RENDER_MAYBE_UNUSED static void render_bound_add(const cam_t *cam, rbox_t *b, vec3_t p)
+{
+    num_t ix, iy;
+    if (render_ortho(cam)) {
+        ix = numw_div(numw_from(p.x), cam->step_u);
+        iy = numw_div(numw_from(p.y), cam->step_v);
+    } else {
+        numw_t z = numw_from(num_neg(p.z));
+        ix = numw_div(numw_mul(p.x, cam->focal), z);
+        iy = numw_div(numw_mul(p.y, cam->focal), z);
+    }
+    if (!b->any) {
+        b->ix0 = b->ix1 = ix;
+        b->iy0 = b->iy1 = iy;
+        b->any = true;
+        return;
+    }
+    b->ix0 = num_min(b->ix0, ix);
+    b->ix1 = num_max(b->ix1, ix);
+    b->iy0 = num_min(b->iy0, iy);
+    b->iy1 = num_max(b->iy1, iy);
+}
+
+RENDER_MAYBE_UNUSED static int32_t render_clamp(int32_t v, int32_t lo, int32_t hi) { return v < lo ? lo : v > hi ? hi : v; }
+
+/* floor(v / 2) for any sign. */
+RENDER_MAYBE_UNUSED static int32_t render_half_floor(int32_t v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
+
+RENDER_MAYBE_UNUSED static void render_set_full(const cam_t *cam, ro_t *o)
+{
+    o->x0 = 0;
+    o->x1 = (int16_t)(cam->width - 1);
+    o->r0 = 0;
+    o->r1 = (int16_t)(cam->height - 1);
+}
+
+RENDER_MAYBE_UNUSED static void render_set_empty(ro_t *o)
+{
+    o->x0 = 1;
+    o->x1 = 0;
+    o->r0 = 1;
+    o->r1 = 0;
+}
+
+/* Pixel rectangle of a projected bound, with a 2-pixel margin for the
+ * rounding of the projection. A degenerate step (1-pixel axis) or a
+ * saturated projection simply widens it to the screen. */
+RENDER_MAYBE_UNUSED static void render_set_bounds(const cam_t *cam, const rbox_t *b, ro_t *o)
+{
+    int32_t w = cam->width, h = cam->height;
+    int32_t x0 = render_half_floor(render_clamp(render_floor(b->ix0), -2 * w, 2 * w) + w - 1) - 2;
+    int32_t x1 = render_half_floor(render_clamp(render_floor(b->ix1), -2 * w, 2 * w) + w - 1) + 3;
+    int32_t y0 = render_half_floor(render_clamp(render_floor(b->iy0), -2 * h, 2 * h) + h - 1) - 2;
+    int32_t y1 = render_half_floor(render_clamp(render_floor(b->iy1), -2 * h, 2 * h) + h - 1) + 3;
+    if (render_ortho(cam) && w == 1) {
+        x0 = 0;
+        x1 = 0;
+    }
+    if (render_ortho(cam) && h == 1) {
+        y0 = 0;
+        y1 = 0;
+    }
+    if (x1 < 0 || x0 > w - 1 || y1 < 0 || y0 > h - 1) {
+        render_set_empty(o);
+        return;
+    }
+    o->x0 = (int16_t)render_clamp(x0, 0, w - 1);
+    o->x1 = (int16_t)render_clamp(x1, 0, w - 1);
+    o->r0 = (int16_t)(h - 1 - render_clamp(y1, 0, h - 1));
+    o->r1 = (int16_t)(h - 1 - render_clamp(y0, 0, h - 1));
+}
+
+/* Bounds of camera-space points that are all in front in perspective;
+ * straddling sets get the whole screen, sets wholly behind are empty. */
+RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, ro_t *o)
+{
+    int front = 0, behind = 0;
+    for (int i = 0; i < n; i++) {
+        if (p[i].z < NUM_ZERO)
+            front++;
+        else
+            behind++;
+    }
+    if (front == 0) { /* no point with z < 0 can be on a ray (t > 0) */
+        render_set_empty(o);
+        return;
+    }
+    if (behind && !render_ortho(cam)) {
+        render_set_full(cam, o);
+        return;
+    }
+    rbox_t b = {NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO, false};
+    for (int i = 0; i < n; i++)
+        render_bound_add(cam, &b, p[i]);
+    render_set_bounds(cam, &b, o);
+}
+
+#if FXRT_MAX_SPHERES > 0
+#if FXRT_NUMBER == FXRT_Q16
+/* p^2 as an exact quadratic form (p linear, coefficients below 2^31). */
+static rquad_t render_square(rlin_t p)
+{
+    rquad_t q = {rk_mul(p.c, p.c), rk_mul(2 * p.c, p.x), rk_mul(2 * p.c, p.y),
+                 rk_mul(p.x, p.x), rk_mul(2 * p.x, p.y), rk_mul(p.y, p.y)};
+    return q;
+}
+
+static rquad_t render_quad_add(rquad_t a, rquad_t b, rk_t sign)
+{
+    rquad_t q = {(rk_t)((uint64_t)a.c + (uint64_t)(sign * b.c)), (rk_t)((uint64_t)a.x + (uint64_t)(sign * b.x)),
+                 (rk_t)((uint64_t)a.y + (uint64_t)(sign * b.y)), (rk_t)((uint64_t)a.xx + (uint64_t)(sign * b.xx)),
+                 (rk_t)((uint64_t)a.xy + (uint64_t)(sign * b.xy)), (rk_t)((uint64_t)a.yy + (uint64_t)(sign * b.yy))};
+    return q;
+}
+
+/* round(v * 2^-s) for a shift of either sign (set-up only). */
+static rk_t render_shift(rc_t v, int s)
+{
+    return s >= 0 ? fx128_shr_round(v, s) : fx128_shr_round(fx128_shl(v, -s), 0);
+}
+#endif
+
+static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, ro_t *o)
+{
+    const cam_t *cam = r->cam;
+    vec3_t c = render_to_cam(cam, s->center);
+    num_t rad = s->radius;
+    rc_t cc = rc_sub(rc_add(rc_add(rc_nn(c.x, c.x), rc_nn(c.y, c.y)), rc_nn(c.z, c.z)), rc_w(s->radius2));
+    rclin_t zero = {rc_zero(), rc_zero(), rc_zero()};
+    rclin_t b = zero, px = zero, py = zero;
+    rcquad_t a = {rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero()};
+    rc_t k;
+    (void)ext;
+    o->kind = RO_SPHERE;
+    if (render_ortho(cam)) {
+        /* o = (su ix, sv iy, 0), r = (0, 0, -1): b = -cz, a = 1,
+         * c = (cx - su ix)^2 + (cy - sv iy)^2 + cz^2 - R^2. Squaring the
+         * linear offsets (rather than scaling the expanded quadratic) keeps
+         * their full precision. */
+        b.c = rc_n(num_neg(c.z));
+        a.c = rc_n(NUM_ONE);
+        px.c = rc_n(c.x);
+        px.x = rc_neg(rc_w(cam->step_u));
+        py.c = rc_n(c.y);
+        py.y = rc_neg(rc_w(cam->step_v));
+        k = rc_sub(rc_nn(c.z, c.z), rc_w(s->radius2));
+    } else {
+        /* o = 0, r = (ix, iy, -F): b = cx ix + cy iy - cz F,
+         * a = ix^2 + iy^2 + F^2, c = |C|^2 - R^2 */
+        b.c = rc_nn(c.z, num_neg(cam->focal));
+        b.x = rc_n(c.x);
+        b.y = rc_n(c.y);
+        a.c = rc_nn(cam->focal, cam->focal);
+        a.xx = rc_n(NUM_ONE);
+        a.yy = rc_n(NUM_ONE);
+        k = cc;
+    }
+#if FXRT_NUMBER == FXRT_Q16
+    /* Scales: disc = b^2 - a c keeps its sign when 2 kb = ka + kc, and
+     * c = k + px^2 + py^2 is exact in units of 2^(2 kp - 96). Every piece
+     * stays below 2^30, so products are exact in int64. */
+    int kb, ka, kc;
+    if (render_ortho(cam)) {
+        rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
+        int kp = rlin_need(&px, ext, RENDER_SPHERE_BITS);
+        int n2 = rlin_need(&py, ext, RENDER_SPHERE_BITS), n3 = rlin_need(&b, ext, RENDER_SPHERE_BITS),
+            n4 = rlin_need(&radl, ext, RENDER_SPHERE_BITS);
+        kp = kp > n2 ? kp : n2;
+        kp = kp > n3 ? kp : n3;
+        kp = kp > n4 ? kp : n4;
+        kb = kp;
+        ka = 48; /* a = 1 exactly */
+        kc = 2 * kp - 48;
+        o->u.sphere.px = rlin_scaled(px, kp);
+        o->u.sphere.py = rlin_scaled(py, kp);
+    } else {
+        kb = rlin_need(&b, ext, RENDER_SPHERE_BITS);
+        ka = rquad_need(&a, ext, RENDER_SPHERE_BITS);
+        rcquad_t kq = {k, rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero()};
+        kc = rquad_need(&kq, ext, RENDER_SPHERE_BITS);
+        if (2 * kb < ka + kc)
+            kb = (ka + kc + 1) / 2;
+        kc = 2 * kb - ka;
+        o->u.sphere.px = rlin_scaled(zero, 0);
+        o->u.sphere.py = rlin_scaled(zero, 0);
+    }
+    o->u.sphere.b = rlin_scaled(b, kb);
+    o->u.sphere.a = rquad_scaled(a, ka);
+    o->u.sphere.k = render_shift(k, kc);
+    {
+        const rlin_t *bl = &o->u.sphere.b;
+        rquad_t cq = {o->u.sphere.k, 0, 0, 0, 0, 0};
+        cq = render_quad_add(cq, render_square(o->u.sphere.px), 1);
+        cq = render_quad_add(cq, render_square(o->u.sphere.py), 1);
+        o->u.sphere.c = cq;
+        /* disc = b^2 - a c; one of a, c is a constant. */
+        const rquad_t *aq = &o->u.sphere.a;
+        bool a_const = aq->x == 0 && aq->y == 0 && aq->xx == 0 && aq->xy == 0 && aq->yy == 0;
+        rquad_t ac;
+        if (a_const) {
+            ac = (rquad_t){rk_mul(aq->c, cq.c), rk_mul(aq->c, cq.x), rk_mul(aq->c, cq.y),
+                           rk_mul(aq->c, cq.xx), rk_mul(aq->c, cq.xy), rk_mul(aq->c, cq.yy)};
+        } else {
+            rk_t kk = cq.c;
+            ac = (rquad_t){rk_mul(kk, aq->c), rk_mul(kk, aq->x), rk_mul(kk, aq->y),
+                           rk_mul(kk, aq->xx), rk_mul(kk, aq->xy), rk_mul(kk, aq->yy)};
+        }
+        o->u.sphere.disc = render_quad_add(render_square(*bl), ac, -1);
+    }
+#else
+    o->u.sphere.b = rlin_scaled(b, 0);
+    o->u.sphere.a = rquad_scaled(a, 0);
+    o->u.sphere.px = rlin_scaled(px, 0);
+    o->u.sphere.py = rlin_scaled(py, 0);
+    o->u.sphere.k = k;
+#endif
+    /* Bounds. */
+    if (!rc_is_neg(cc) && c.z >= rad) {
+        render_set_empty(o); /* wholly at z >= 0: behind the eye */
+        return;
+    }
+    if (rc_is_neg(cc)) {
+        render_set_full(r->cam, o); /* eye inside */
+        return;
+    }
+    vec3_t corner[8];
+    for (int i = 0; i < 8; i++)
+        corner[i] = vec3_make((i & 1) ? num_add(c.x, rad) : num_sub(c.x, rad),
+                              (i & 2) ? num_add(c.y, rad) : num_sub(c.y, rad),
+                              (i & 4) ? num_add(c.z, rad) : num_sub(c.z, rad));
+    render_points_bounds(cam, corner, 8, o);
+}
+#endif
+
+#if FXRT_MAX_PLANES > 0
+static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, ro_t *o)
+{
+    o->kind = RO_FLAT;
+    o->nflat = 1;
+    render_flat_nd(r->cam, ext, render_dir_to_cam(r->cam, p->n), render_to_cam(r->cam, p->a), &o->u.flat[0]);
+    render_set_full(r->cam, o); /* rows beyond the horizon are skipped per row */
+}
+#endif
+
+#if FXRT_MAX_TRIANGLES > 0
+static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, ro_t *o)
+{
+    const cam_t *cam = r->cam;
+    vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
+    o->kind = RO_FLAT;
+    o->nflat = 1;
+    if (t->degenerate) {
+        o->nflat = 0;
+        render_set_empty(o);
+        return;
+    }
+    rflat_t *f = &o->u.flat[0];
+    render_flat_nd(cam, ext, render_dir_to_cam(cam, t->n), v[0], f);
+    for (int i = 0; i < 3; i++)
+        f->e[i] = render_edge(cam, ext, v[i], v[(i + 1) % 3]);
+    f->edges = 3;
+    render_points_bounds(cam, v, 3, o);
+    render_flat_bounds_from(f, o);
+}
+#endif
+
+#if FXRT_MAX_BOXES > 0
+static num_t render_axis(vec3_t v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
+
+static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t *o)
+{
+    const cam_t *cam = r->cam;
+    vec3_t corner[8]; /* bit i of the index: max on axis i */
+    for (int i = 0; i < 8; i++)
+        corner[i] = render_to_cam(cam, vec3_make((i & 1) ? b->max.x : b->min.x, (i & 2) ? b->max.y : b->min.y,
+                                                 (i & 4) ? b->max.z : b->min.z));
+    o->kind = RO_BOX;
+    o->nflat = 0;
+    bool inside = true;
+    for (int axis = 0; axis < 3; axis++) {
+        num_t e = render_axis(cam->e, axis);
+        num_t lo = render_axis(b->min, axis), hi = render_axis(b->max, axis);
+        if (!(e > lo && e < hi))
+            inside = false;
+        int side = e < lo ? 0 : (e > hi ? 1 : -1);
+        if (side < 0)
+            continue; /* neither face of this axis faces the eye */
+        /* The face's four corners, in order around it. */
+        int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+        int base = side << axis;
+        int idx[4] = {base, base | (1 << a1), base | (1 << a1) | (1 << a2), base | (1 << a2)};
+        vec3_t q[4];
+        for (int k = 0; k < 4; k++)
+            q[k] = corner[idx[k]];
+        vec3_t nw = vec3_make(axis == 0 ? NUM_ONE : NUM_ZERO, axis == 1 ? NUM_ONE : NUM_ZERO,
+                              axis == 2 ? NUM_ONE : NUM_ZERO);
+        if (side == 0)
+            nw = vec3_neg(nw);
+        rflat_t *f = &o->u.flat[o->nflat++];
+        render_flat_nd(cam, ext, render_dir_to_cam(cam, nw), q[0], f);
+        for (int k = 0; k < 4; k++)
+            f->e[k] = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
+        f->edges = 4;
+        /* Each face gets its own bounds, so a pixel is mostly stepped for
+         * one face rather than all three. */
+        ro_t tmp;
+        render_points_bounds(cam, q, 4, &tmp);
+        render_flat_bounds_from(f, &tmp);
+    }
+    if (inside) {
+        o->kind = RO_ALL;
+        render_set_full(cam, o);
+        return;
+    }
+    render_points_bounds(cam, corner, 8, o);
+}
+#endif
+
+bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
+{
+    if (cam->width > FXRT_RENDER_MAX_WIDTH)
+        return false;
+    r->world = w;
+    r->cam = cam;
+    r->count = 0;
+    rext_t ext = {(uint32_t)(cam->width - 1), (uint32_t)(cam->height - 1)};
+    (void)ext;
+    for (int32_t x = 0; x < cam->width; x++)
+        r->owner[x] = 0;
+    r->stamp = 0;
+#if FXRT_MAX_PLANES > 0
+    for (uint16_t i = 0; i < w->n_planes; i++) {
+        ro_t *o = &r->obj[r->count++];
+        o->geom = GEOM_PLANE;
+        o->index = i;
+        o->id = w->planes[i].obj.id;
+        o->rgb = w->planes[i].obj.rgb;
+        render_setup_plane(r, ext, &w->planes[i], o);
+    }
+#endif
+#if FXRT_MAX_SPHERES > 0
+    for (uint16_t i = 0; i < w->n_spheres; i++) {
+        ro_t *o = &r->obj[r->count++];
+        o->geom = GEOM_SPHERE;
+        o->index = i;
+        o->id = w->spheres[i].obj.id;
+        o->rgb = w->spheres[i].obj.rgb;
+        render_setup_sphere(r, ext, &w->spheres[i], o);
+    }
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    for (uint16_t i = 0; i < w->n_triangles; i++) {
+        ro_t *o = &r->obj[r->count++];
+        o->geom = GEOM_TRIANGLE;
+        o->index = i;
+        o->id = w->triangles[i].obj.id;
+        o->rgb = w->triangles[i].obj.rgb;
+        render_setup_triangle(r, ext, &w->triangles[i], o);
+    }
+#endif
+#if FXRT_MAX_BOXES > 0
+    for (uint16_t i = 0; i < w->n_boxes; i++) {
+        ro_t *o = &r->obj[r->count++];
+        o->geom = GEOM_BOX;
+        o->index = i;
+        o->id = w->boxes[i].obj.id;
+        o->rgb = w->boxes[i].obj.rgb;
+        render_setup_box(r, ext, &w->boxes[i], o);
+    }
+#endif
+    return true;
+}
+
+/* ---- depth at pixels that several objects cover ------------------------ */
+
+/* t of object o along the pixel's ray by the world-space kernel; a kernel
+ * miss (the two tests may disagree by a rounding at a silhouette) counts
+ * as infinitely far. */
+static num_t render_depth(const render_t *r, const ro_t *o, const ray_t *ray)
+{
+    const world_t *w = r->world;
+    num_t t = NUM_MAX;
+    bool hit = false;
+    switch (o->geom) {
+    case GEOM_PLANE:
+#if FXRT_MAX_PLANES > 0
+        hit = geom_plane_hit(&w->planes[o->index], ray, &t);
+#endif
+        break;
+    case GEOM_SPHERE:
+#if FXRT_MAX_SPHERES > 0
+        hit = geom_sphere_hit(&w->spheres[o->index], ray, &t);
+#endif
+        break;
+    case GEOM_TRIANGLE:
+#if FXRT_MAX_TRIANGLES > 0
+        hit = geom_triangle_hit(&w->triangles[o->index], ray, &t);
+#endif
+        break;
+    case GEOM_BOX:
+#if FXRT_MAX_BOXES > 0
+        hit = geom_box_hit(&w->boxes[o->index], ray, &t);
+#endif
+        break;
+    }
+    (void)w;
+    return hit ? t : NUM_MAX;
+}
+
+/* Two objects cover column x: the nearer keeps it (ties: lower scene id).
+ * Depth needs the pixel's world-space ray, so this is the slow path. */
+static __attribute__((noinline)) uint16_t render_nearer(const render_t *r, uint16_t cur, uint16_t oi, int32_t x,
+                                                        int32_t y)
+{
+    ray_t ray;
+    cam_ray(r->cam, x, y, &ray);
+    const ro_t *a = &r->obj[cur], *b = &r->obj[oi];
+    num_t ta = render_depth(r, a, &ray), tb = render_depth(r, b, &ray);
+    return (tb < ta || (tb == ta && b->id < a->id)) ? oi : cur;
+}
+
+/* Record that object oi covers column x and paint it if it is the nearest
+ * so far. The result does not depend on the order of calls, so both loops
+ * agree. */
+static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t y, uint8_t *rgb)
+{
+    uint32_t tag = (uint32_t)r->stamp << 16;
+    uint32_t cur = r->owner[x];
+    uint16_t win = oi;
+    if ((cur & 0xFFFF0000u) == tag) {
+        if ((uint16_t)cur == oi)
+            return;
+        win = render_nearer(r, (uint16_t)cur, oi, x, y);
+        if (win == (uint16_t)cur)
+            return;
+    }
+    r->owner[x] = tag | win;
+    rgb8_t c = r->obj[win].rgb;
+    rgb[3 * x + 0] = c.r;
+    rgb[3 * x + 1] = c.g;
+    rgb[3 * x + 2] = c.b;
+}
+
+/* Start a row: a new stamp (so every column is uncovered) and the
+ * background in every pixel, four pixels (12 bytes) per copy. */
+static void render_begin_row(render_t *r, uint8_t *rgb)
+{
+    if (++r->stamp == 0) {
+        for (int32_t x = 0; x < r->cam->width; x++)
+            r->owner[x] = 0;
+        r->stamp = 1;
+    }
+    rgb8_t bg = r->world->background_rgb;
+    uint8_t pat[12];
+    for (int i = 0; i < 4; i++) {
+        pat[3 * i + 0] = bg.r;
+        pat[3 * i + 1] = bg.g;
+        pat[3 * i + 2] = bg.b;
+    }
+    int32_t n = 3 * r->cam->width, i = 0;
+    for (; i + 12 <= n; i += 12)
+        __builtin_memcpy(rgb + i, pat, 12);
+    for (; i < n; i++)
+        rgb[i] = pat[i % 3];
+}
+
+void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
+{
+    int32_t w = r->cam->width, y = r->cam->height - 1 - row;
+    int32_t iy = 2 * y - r->cam->height + 1;
+    render_begin_row(r, rgb);
+    for (int32_t x = 0; x < w; x++) {
+        int32_t ix = 2 * x - w + 1;
+        for (uint16_t i = 0; i < r->count; i++)
+            if (render_covers(&r->obj[i], ix, iy))
+                render_cover(r, i, x, y, rgb);
+    }
+}
+
+/* ---- the fast loop ------------------------------------------------------ */
+
+#if FXRT_NUMBER == FXRT_Q16
+/* Step a flat piece across columns x0..x1: each form is linear, so one
+ * exact 64-bit addition per form and pixel. */
+static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t x0, int32_t x1, int32_t iy,
+                             int32_t y, uint8_t *rgb)
+{
+    int32_t ix0 = 2 * x0 - r->cam->width + 1;
+    uint64_t n = (uint64_t)rlin_at(&f->n, ix0, iy), d = (uint64_t)rlin_at(&f->d, ix0, iy);
+    uint64_t sn = 2 * (uint64_t)f->n.x, sd = 2 * (uint64_t)f->d.x;
+    int edges = f->edges;
+    if (edges == 0) { /* a plane */
+        for (int32_t x = x0; x <= x1; x++) {
+            if (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0))
+                render_cover(r, oi, x, y, rgb);
+            n += sn;
+            d += sd;
+        }
+        return;
+    }
+    uint64_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
+    for (int k = 0; k < edges; k++) {
+        e[k] = (uint64_t)rlin_at(&f->e[k], ix0, iy);
+        se[k] = 2 * (uint64_t)f->e[k].x;
+    }
+    for (int32_t x = x0; x <= x1; x++) {
+        rk_t ev[4] = {(rk_t)e[0], (rk_t)e[1], (rk_t)e[2], (rk_t)e[3]};
+        if (render_flat_vals((rk_t)n, (rk_t)d, ev, edges))
+            render_cover(r, oi, x, y, rgb);
+        n += sn;
+        d += sd;
+        for (int k = 0; k < edges; k++)
+            e[k] += se[k];
+    }
+}
+
+/* Forward differences of a quadratic along the row: value, first and
+ * (constant) second difference for steps of 2 in ix. */
+static void render_quad_start(const rquad_t *q, int32_t ix0, int32_t iy, uint64_t *v, uint64_t *d1, uint64_t *d2)
+{
+    uint64_t q0 = (uint64_t)rquad_at(q, ix0, iy), q1 = (uint64_t)rquad_at(q, ix0 + 2, iy),
+             q2 = (uint64_t)rquad_at(q, ix0 + 4, iy);
+    *v = q0;
+    *d1 = q1 - q0;
+    *d2 = q2 - 2 * q1 + q0;
+}
+
+/* Step a sphere, exactly. The test c < 0 || (b > 0 && disc >= 0) splits
+ * by what is constant along the row: in perspective c is constant, in
+ * orthographic b is, and c < 0 implies disc > 0. */
+static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t x0, int32_t x1, int32_t iy,
+                               int32_t y, uint8_t *rgb)
+{
+    int32_t ix0 = 2 * x0 - r->cam->width + 1;
+    uint64_t v, d1, d2;
+    if (render_ortho(r->cam)) {
+        if (o->u.sphere.b.c > 0) {
+            render_quad_start(&o->u.sphere.disc, ix0, iy, &v, &d1, &d2);
+            for (int32_t x = x0; x <= x1; x++, v += d1, d1 += d2)
+                if ((rk_t)v >= 0)
+                    render_cover(r, oi, x, y, rgb);
+        } else {
+            render_quad_start(&o->u.sphere.c, ix0, iy, &v, &d1, &d2);
+            for (int32_t x = x0; x <= x1; x++, v += d1, d1 += d2)
+                if ((rk_t)v < 0)
+                    render_cover(r, oi, x, y, rgb);
+        }
+        return;
+    }
+    if (o->u.sphere.k < 0) { /* eye inside */
+        for (int32_t x = x0; x <= x1; x++)
+            render_cover(r, oi, x, y, rgb);
+        return;
+    }
+    uint64_t b = (uint64_t)rlin_at(&o->u.sphere.b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere.b.x;
+    render_quad_start(&o->u.sphere.disc, ix0, iy, &v, &d1, &d2);
+    for (int32_t x = x0; x <= x1; x++, b += sb, v += d1, d1 += d2)
+        if ((rk_t)b > 0 && (rk_t)v >= 0)
+            render_cover(r, oi, x, y, rgb);
+}
+#endif
+
+void render_row(render_t *r, int32_t row, uint8_t *rgb)
+{
+    const cam_t *cam = r->cam;
+    int32_t w = cam->width, y = cam->height - 1 - row;
+    int32_t iy = 2 * y - cam->height + 1;
+    render_begin_row(r, rgb);
+    for (uint16_t i = 0; i < r->count; i++) {
+        const ro_t *o = &r->obj[i];
+        if (row < o->r0 || row > o->r1)
+            continue;
+        int32_t x0 = o->x0, x1 = o->x1;
+        if (o->kind == RO_FLAT && o->u.flat[0].edges == 0) {
+            /* A plane: along a row its front test is one interval, so if
+             * it fails at both ends the row is beyond the horizon. */
+            if (!render_flat_at(&o->u.flat[0], 2 * x0 - w + 1, iy) &&
+                !render_flat_at(&o->u.flat[0], 2 * x1 - w + 1, iy))
+                continue;
+        }
+        switch (o->kind) {
+        case RO_ALL:
+            for (int32_t x = x0; x <= x1; x++)
+                render_cover(r, i, x, y, rgb);
+            break;
+#if FXRT_NUMBER == FXRT_Q16
+        case RO_SPHERE:
+            render_scan_sphere(r, i, o, x0, x1, iy, y, rgb);
+            break;
+        case RO_FLAT:
+        case RO_BOX:
+            for (int k = 0; k < o->nflat; k++) {
+                const rflat_t *f = &o->u.flat[k];
+                if (row >= f->r0 && row <= f->r1)
+                    render_scan_flat(r, i, f, f->x0, f->x1, iy, y, rgb);
+            }
+            break;
+#else
+        default:
+            /* Float and double evaluate every form directly: stepping by
+             * additions would accumulate rounding error across the row. */
+            for (int32_t x = x0, ix = 2 * x0 - w + 1; x <= x1; x++, ix += 2)
+                if (render_covers(o, ix, iy))
+                    render_cover(r, i, x, y, rgb);
+            break;
+#endif
+        }
+    }
+}
+
+/* ---- arbitrary rays ------------------------------------------------------ */
 
 rgb8_t render_pixel(const world_t *w, const ray_t *ray)
 {
@@ -7,17 +919,4 @@ rgb8_t render_pixel(const world_t *w, const ray_t *ray)
     if (world_hit(w, ray, &hit))
         return hit.obj->rgb;
     return w->background_rgb;
-}
-
-void render_row(const world_t *w, const cam_t *cam, int32_t row, uint8_t *rgb)
-{
-    int32_t y = cam->height - 1 - row; /* the seed counts rows from the bottom */
-    for (int32_t x = 0; x < cam->width; x++) {
-        ray_t ray;
-        cam_ray(cam, x, y, &ray);
-        rgb8_t c = render_pixel(w, &ray);
-        rgb[3 * x + 0] = c.r;
-        rgb[3 * x + 1] = c.g;
-        rgb[3 * x + 2] = c.b;
-    }
 }

@@ -1,18 +1,128 @@
-/* render: the scanline renderer. The caller owns every buffer: it asks for
- * one row at a time and gets width RGB888 pixels (3 bytes each), so a whole
- * frame buffer is optional. */
+/* render: the scanline renderer for primary rays.
+ *
+ * Primary rays are coherent: in camera space the ray through pixel offsets
+ * (ix, iy) = (2x - W + 1, 2y - H + 1) is
+ *   perspective   o = 0,                r = (ix, iy, -F)   (F = H cot(fov/2))
+ *   orthographic  o = (su ix, sv iy, 0), r = (0, 0, -1)
+ * so whether a ray hits an object is the sign of a few polynomials of
+ * degree <= 2 in (ix, iy), whose coefficients render_setup computes once
+ * per frame (the ray-invariant work, hoisted):
+ *   sphere     b = oc.r (linear), c = |oc|^2 - R^2, disc = b^2 - a c
+ *              hit = c < 0 || (b > 0 && disc >= 0)
+ *   flat       N = n.(A - o), D = n.r; in front when N, D have one strict
+ *              sign; a triangle or box face adds one linear edge form per
+ *              side, inside when no two edges have opposite strict signs
+ *   box        up to three front faces; every pixel when the eye is inside
+ * In the Q16.16 build the coefficients are integers (rounded once, with a
+ * per-form power-of-two scale), so every value along a scanline is exact:
+ * forward differencing (one or two 64-bit additions per pixel) gives
+ * exactly what evaluating the polynomial from scratch gives. That is what
+ * lets the fast renderer skip and step while staying byte-identical to
+ * the reference loop (render_row_reference), which evaluates every
+ * object's polynomials at every pixel. The float and double builds use the
+ * same set-up but evaluate each polynomial directly (float forward
+ * differencing would drift).
+ *
+ * Screen bounds: each object also gets a conservative pixel rectangle (its
+ * projected bounding box plus a margin, or the whole screen when it
+ * straddles the eye plane); planes are unbounded but whole rows on the far
+ * side of the horizon are skipped. Pixels no object can cover are never
+ * tested. When two objects cover one pixel, the nearer wins: t comes from
+ * the world-space kernels (geom_*_hit) along that pixel's ray, ties go to
+ * the object that comes first in the scene.
+ */
 #ifndef FXRT_RENDER_H
 #define FXRT_RENDER_H
 
 #include "cam.h"
 #include "world.h"
 
-/* The colour seen along one ray: the nearest object's, else the
- * background. */
-rgb8_t render_pixel(const world_t *w, const ray_t *ray);
+/* Widest image a render_t can hold (one owner entry per column). */
+#ifndef FXRT_RENDER_MAX_WIDTH
+#define FXRT_RENDER_MAX_WIDTH FXRT_MAX_DIM
+#endif
+#define FXRT_RENDER_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
+#if FXRT_RENDER_MAX_OBJECTS < 1
+#error "the world must be able to hold at least one object"
+#endif
 
-/* Render output row `row` (0 = top of the image) into rgb, which holds
- * 3 * cam->width bytes. */
-void render_row(const world_t *w, const cam_t *cam, int32_t row, uint8_t *rgb);
+#if FXRT_NUMBER == FXRT_Q16
+typedef int64_t rk_t; /* coefficient: a scaled integer */
+#else
+typedef num_t rk_t;
+#endif
+
+/* c + x ix + y iy */
+typedef struct {
+    rk_t c, x, y;
+} rlin_t;
+
+/* c + x ix + y iy + xx ix^2 + xy ix iy + yy iy^2 */
+typedef struct {
+    rk_t c, x, y, xx, xy, yy;
+} rquad_t;
+
+/* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
+typedef struct {
+    rlin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
+    rlin_t e[4];  /* edge forms */
+    uint8_t edges;
+    int16_t x0, x1, r0, r1; /* this piece's own pixel bounds (a box face's) */
+} rflat_t;
+
+typedef enum { RO_SPHERE, RO_FLAT, RO_BOX, RO_ALL } ro_kind_t;
+
+typedef struct {
+    ro_kind_t kind;
+    geom_kind_t geom;  /* which world array, for depth */
+    uint16_t index;    /* index there */
+    uint16_t id;       /* scene order, for ties */
+    rgb8_t rgb;
+    int16_t x0, x1;    /* columns that may be covered, inclusive */
+    int16_t r0, r1;    /* output rows (0 = top) that may be covered */
+    uint8_t nflat;     /* RO_FLAT: 1, RO_BOX: visible faces */
+    union {
+        struct {
+            /* c = k + px^2 + py^2 (orthographic: the offsets of the ray
+             * from the centre across the view; perspective: px = py = 0),
+             * and disc = b^2 - a c. */
+            rlin_t b, px, py;
+            rquad_t a;
+            rk_t k;
+#if FXRT_NUMBER == FXRT_Q16
+            rquad_t c, disc; /* expanded, for stepping */
+#endif
+        } sphere;
+        rflat_t flat[3];
+    } u;
+} ro_t;
+
+typedef struct {
+    const world_t *world;
+    const cam_t *cam;
+    uint16_t count;
+    ro_t obj[FXRT_RENDER_MAX_OBJECTS];
+    /* Per column: (stamp << 16) | object of the nearest cover so far. A
+     * column whose stamp is not the current row's is uncovered, so rows
+     * need no clearing pass. */
+    uint32_t owner[FXRT_RENDER_MAX_WIDTH];
+    uint16_t stamp;
+} render_t;
+
+/* Per-frame set-up: camera-space forms and screen bounds of every object.
+ * The world and camera must outlive r. Returns false when the camera is
+ * wider than FXRT_RENDER_MAX_WIDTH. */
+bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
+
+/* Render output row `row` (0 = top) into rgb (3 * width bytes, RGB888). */
+void render_row(render_t *r, int32_t row, uint8_t *rgb);
+
+/* The same image from the straightforward loop: every object's forms
+ * evaluated from scratch at every pixel, no bounds, no stepping. The Q16.16
+ * build's output is byte-identical to render_row (tests enforce it). */
+void render_row_reference(render_t *r, int32_t row, uint8_t *rgb);
+
+/* The colour seen along one arbitrary ray (world-space kernels). */
+rgb8_t render_pixel(const world_t *w, const ray_t *ray);
 
 #endif

@@ -38,6 +38,16 @@
 
 #define ROW_BYTES (3 * SCENE_WIDTH)
 
+/* FXRT_RENDER_REFERENCE=1 renders with the straightforward loop (every
+ * object at every pixel), for before/after measurements. */
+#if defined(FXRT_RENDER_REFERENCE) && FXRT_RENDER_REFERENCE
+#define RENDER_ROW render_row_reference
+#else
+#define RENDER_ROW render_row
+#endif
+
+static render_t render_state;
+
 #if FXRT_FB_MODE == FXRT_FB_FULL
 #if FXRT_PIXEL == FXRT_RGB888
 static uint8_t framebuffer[SCENE_HEIGHT][ROW_BYTES];
@@ -130,13 +140,15 @@ int main(void)
 
     counter_start();
     uint64_t t0 = counter_ticks();
+    if (!render_setup(&render_state, &scene_world, &scene_cam))
+        fail("image wider than FXRT_RENDER_MAX_WIDTH");
 #if FXRT_FB_MODE == FXRT_FB_FULL
 #if FXRT_PIXEL == FXRT_RGB888
     for (int32_t row = 0; row < SCENE_HEIGHT; row++)
-        render_row(&scene_world, &scene_cam, row, framebuffer[row]);
+        RENDER_ROW(&render_state, row, framebuffer[row]);
 #else
     for (int32_t row = 0; row < SCENE_HEIGHT; row++) {
-        render_row(&scene_world, &scene_cam, row, row_rgb);
+        RENDER_ROW(&render_state, row, row_rgb);
         for (int32_t x = 0; x < SCENE_WIDTH; x++)
             framebuffer[row][x] = pack565(&row_rgb[3 * x]);
     }
@@ -158,7 +170,7 @@ int main(void)
     for (int32_t row = 0; row < SCENE_HEIGHT; row += FXRT_BAND_ROWS) {
         int32_t n = SCENE_HEIGHT - row < FXRT_BAND_ROWS ? SCENE_HEIGHT - row : FXRT_BAND_ROWS;
         for (int32_t i = 0; i < n; i++)
-            render_row(&scene_world, &scene_cam, row + i, band[i]);
+            RENDER_ROW(&render_state, row + i, band[i]);
         send(fd, band, (uint32_t)(n * ROW_BYTES));
     }
     uint64_t ticks = counter_ticks() - t0;

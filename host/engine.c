@@ -90,16 +90,26 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
     return 0;
 }
 
-int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
-                              char *err, size_t errlen)
+int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, int height, bool reference,
+                              uint8_t *rgb, char *err, size_t errlen)
 {
-    /* Static: the host world holds up to 64 objects of each kind, too big
-     * for a comfortable stack frame. The CLI renders one frame at a time. */
+    /* Static: the host world and render state hold up to 64 objects of each
+     * kind, too big for a stack frame. The CLI renders one frame at a time. */
     static world_t world;
+    static render_t state;
     cam_t cam;
     if (ENGINE_SYM(engine_build)(path, sc, width, height, &world, &cam, err, errlen) != 0)
         return -1;
-    for (int row = 0; row < height; row++)
-        render_row(&world, &cam, row, rgb + (size_t)3 * width * row);
+    if (!render_setup(&state, &world, &cam)) {
+        snprintf(err, errlen, "%s: image wider than %d pixels", path, FXRT_RENDER_MAX_WIDTH);
+        return -1;
+    }
+    for (int row = 0; row < height; row++) {
+        uint8_t *out = rgb + (size_t)3 * width * row;
+        if (reference)
+            render_row_reference(&state, row, out);
+        else
+            render_row(&state, row, out);
+    }
     return 0;
 }

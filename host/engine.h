@@ -3,6 +3,7 @@
 #ifndef FXRT_HOST_ENGINE_H
 #define FXRT_HOST_ENGINE_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "scene.h"
@@ -14,17 +15,19 @@ int engine_number_parse(const char *s, engine_number_t *out);
 const char *engine_number_name(engine_number_t n);
 
 /* Render the scene at width x height into rgb (3 * width * height bytes,
- * top row first). Returns 0, or -1 with "PATH: ..." in err (for example a
- * camera that the number type cannot represent at this size). */
-int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height,
+ * top row first), with the fast scanline renderer or, with reference, the
+ * straightforward every-object-every-pixel loop. Returns 0, or -1 with
+ * "PATH: ..." in err (for example a camera that the number type cannot
+ * represent at this size). */
+int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height, bool reference,
                   uint8_t *rgb, char *err, size_t errlen);
 
 /* The same, one build each (engine.c compiled three times). */
-int engine_render_q16(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
+int engine_render_q16(const char *path, const scene_t *sc, int width, int height, bool reference, uint8_t *rgb,
                       char *err, size_t errlen);
-int engine_render_float(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
+int engine_render_float(const char *path, const scene_t *sc, int width, int height, bool reference, uint8_t *rgb,
                         char *err, size_t errlen);
-int engine_render_double(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
+int engine_render_double(const char *path, const scene_t *sc, int width, int height, bool reference, uint8_t *rgb,
                          char *err, size_t errlen);
 
 #endif

@@ -20,13 +20,13 @@ const char *engine_number_name(engine_number_t n)
     return n == ENGINE_Q16 ? "q16" : n == ENGINE_FLOAT ? "float" : "double";
 }
 
-int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height,
+int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height, bool reference,
                   uint8_t *rgb, char *err, size_t errlen)
 {
     switch (n) {
-    case ENGINE_Q16: return engine_render_q16(path, sc, width, height, rgb, err, errlen);
-    case ENGINE_FLOAT: return engine_render_float(path, sc, width, height, rgb, err, errlen);
-    case ENGINE_DOUBLE: return engine_render_double(path, sc, width, height, rgb, err, errlen);
+    case ENGINE_Q16: return engine_render_q16(path, sc, width, height, reference, rgb, err, errlen);
+    case ENGINE_FLOAT: return engine_render_float(path, sc, width, height, reference, rgb, err, errlen);
+    case ENGINE_DOUBLE: return engine_render_double(path, sc, width, height, reference, rgb, err, errlen);
     }
     return -1;
 }

@@ -21,6 +21,7 @@ static const char usage_main[] =
     "\n"
     "commands:\n"
     "  render SCENE [-o OUT.png|OUT.ppm] [--size WxH] [--number q16|float|double]\n"
+    "         [--renderer fast|reference]\n"
     "                 render a scene file\n"
     "  compare A B [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
     "                 compare two images and print metrics\n"
@@ -32,6 +33,7 @@ static const char usage_main[] =
 
 static const char usage_render[] =
     "usage: fxrt render SCENE [-o OUT] [--size WxH] [--number q16|float|double]\n"
+    "                         [--renderer fast|reference]\n"
     "\n"
     "Render SCENE (see README: scene format) and write the image.\n"
     "\n"
@@ -43,6 +45,9 @@ static const char usage_render[] =
     "                     scene's 'image' line (default 160x120 without one)\n"
     "  --number TYPE      q16 (Q16.16 fixed point, the default), float, or\n"
     "                     double (the reference)\n"
+    "  --renderer R       fast (the scanline renderer, the default) or reference\n"
+    "                     (every object tested at every pixel; Q16.16 output is\n"
+    "                     byte-identical, it only takes longer)\n"
     "  -h, --help         this text\n";
 
 static const char usage_compare[] =
@@ -95,13 +100,15 @@ static int cmd_render(int argc, char **argv)
     const char *scene_path = NULL, *out = NULL;
     int w = 0, h = 0;
     engine_number_t num = ENGINE_Q16;
+    bool reference = false;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             fputs(usage_render, stdout);
             return 0;
         }
-        bool takes = !strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "--size") || !strcmp(a, "--number");
+        bool takes = !strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "--size") || !strcmp(a, "--number") ||
+                     !strcmp(a, "--renderer");
         if (takes && i + 1 >= argc)
             return fail_usage(usage_render, "render: %s needs a value", a);
         if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
@@ -112,6 +119,11 @@ static int cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--number")) {
             if (engine_number_parse(argv[++i], &num))
                 return fail_usage(usage_render, "render: bad --number '%s' (want q16, float or double)", argv[i]);
+        } else if (!strcmp(a, "--renderer")) {
+            const char *v = argv[++i];
+            if (strcmp(v, "fast") && strcmp(v, "reference"))
+                return fail_usage(usage_render, "render: bad --renderer '%s' (want fast or reference)", v);
+            reference = !strcmp(v, "reference");
         } else if (a[0] == '-' && a[1]) {
             return fail_usage(usage_render, "render: unknown option '%s'", a);
         } else if (!scene_path) {
@@ -146,7 +158,7 @@ static int cmd_render(int argc, char **argv)
         return 2;
     }
     int rc = 0;
-    if (engine_render(num, scene_path, &scene, w, h, img.rgb, err, sizeof err) ||
+    if (engine_render(num, scene_path, &scene, w, h, reference, img.rgb, err, sizeof err) ||
         image_write(out, &img, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         rc = 2;
