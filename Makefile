@@ -104,7 +104,8 @@ TEST_PREREQ  :=
 -include tests/sanitize.mk
 -include tests/diff.mk
 
-SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/freestanding.sh tests/qemu.sh $(SUITES_EXTRA)
+SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/freestanding.sh tests/qemu.sh \
+          $(SUITES_EXTRA)
 
 test: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN) $(TEST_PREREQ)
 	$(Q)BUILD=$(BUILD) tests/run.sh $(SUITES)

@@ -251,3 +251,22 @@ int64_t fx128_shr_round(fx128_t a, int s)
         return q > (uint64_t)INT64_MAX ? INT64_MIN : -(int64_t)q;
     return q > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)q;
 }
+
+fx128_t fx128_shr128(fx128_t a, int s)
+{
+    if (s == 0)
+        return a;
+    bool neg = a.hi < 0;
+    if (neg)
+        a = fx128_neg(a);
+    a = fx128_add(a, fx128_shl(fx128_from64(1), s - 1));
+    fx128_t r;
+    if (s < 64) {
+        r.lo = (a.lo >> s) | ((uint64_t)a.hi << (64 - s));
+        r.hi = (int64_t)((uint64_t)a.hi >> s);
+    } else {
+        r.lo = (uint64_t)a.hi >> (s - 64);
+        r.hi = 0;
+    }
+    return neg ? fx128_neg(r) : r;
+}

@@ -181,6 +181,8 @@ fx128_t fx128_mul(int64_t a, int64_t b);
 fx128_t fx128_shl(fx128_t a, int s);
 /* round(a / 2^s) for 0 <= s < 127, saturated to the int64 range. */
 int64_t fx128_shr_round(fx128_t a, int s);
+/* round(a / 2^s) as a 128-bit value, 0 <= s < 127. */
+fx128_t fx128_shr128(fx128_t a, int s);
 /* Number of significant bits of |a| (0 for 0). */
 int fx128_bits(fx128_t a);
 

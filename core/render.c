@@ -108,8 +108,8 @@ RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int tar
 
 /* Linear forms get 61 bits: values, steps and sums stay inside int64. */
 #define RENDER_LIN_BITS 61
-/* The sphere's pieces get 30 bits, so b^2 - a c is exact in int64. */
-#define RENDER_SPHERE_BITS 30
+/* The sphere's pieces get 62 bits; b^2 - a c is formed in 128 bits. */
+#define RENDER_SPHERE_BITS 62
 
 RENDER_MAYBE_UNUSED static rlin_t rlin_make(rclin_t f, rext_t ext)
 {
@@ -148,10 +148,24 @@ static inline rk_t rk_sub(rk_t a, rk_t b) { return a - b; }
 static inline rk_t rk_add(rk_t a, rk_t b) { return a + b; }
 #endif
 
-static inline bool render_sphere_vals(rk_t b, rk_t c, rk_t disc)
+/* The sphere's c and disc: 128-bit in Q16.16, num otherwise. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef fx128_t rsw_t;
+static inline bool rsw_neg(rsw_t v) { return v.hi < 0; }
+#else
+typedef rk_t rsw_t;
+static inline bool rsw_neg(rsw_t v) { return v < 0; }
+#endif
+
+static inline bool render_sphere_vals(rk_t b, rsw_t c, rsw_t disc)
 {
-    return c < 0 || (b > 0 && disc >= 0);
+    return rsw_neg(c) || (b > 0 && !rsw_neg(disc));
 }
+
+/* c = k + px^2 + py^2 and disc = b^2 - a c at one pixel, exactly (Q16.16:
+ * a is 1 in orthographic views and c is the constant k in perspective, so
+ * a c is a single 64 x 64 product or none). */
+static void render_sphere_cd(const ro_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out);
 
 static inline bool render_flat_vals(rk_t n, rk_t d, const rk_t *e, int edges)
 {
@@ -173,6 +187,24 @@ static bool render_flat_at(const rflat_t *f, int32_t ix, int32_t iy)
     return render_flat_vals(rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy), e, f->edges);
 }
 
+static void render_sphere_cd(const ro_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
+{
+    rk_t a = rquad_at(&o->u.sphere.a, ix, iy);
+    rk_t px = rlin_at(&o->u.sphere.px, ix, iy), py = rlin_at(&o->u.sphere.py, ix, iy),
+         pz = rlin_at(&o->u.sphere.pz, ix, iy);
+    bool ortho = o->u.sphere.ortho;
+#if FXRT_NUMBER == FXRT_Q16
+    fx128_t sq = fx128_add(fx128_add(fx128_mul(px, px), fx128_mul(py, py)), fx128_mul(pz, pz));
+    fx128_t r2a = a == 1 ? o->u.sphere.r2 : fx128_mul(a, fx128_shr_round(o->u.sphere.r2, 0));
+    *disc_out = fx128_sub(r2a, sq);
+    *c_out = ortho ? fx128_add(o->u.sphere.k, sq) : o->u.sphere.k;
+#else
+    rk_t sq = px * px + py * py + pz * pz;
+    *disc_out = o->u.sphere.r2 * a - sq;
+    *c_out = ortho ? o->u.sphere.k + sq : o->u.sphere.k;
+#endif
+}
+
 /* Does object o cover the pixel? Every form evaluated from scratch. */
 static bool render_covers(const ro_t *o, int32_t ix, int32_t iy)
 {
@@ -181,10 +213,9 @@ static bool render_covers(const ro_t *o, int32_t ix, int32_t iy)
         return true;
     case RO_SPHERE: {
         rk_t b = rlin_at(&o->u.sphere.b, ix, iy);
-        rk_t a = rquad_at(&o->u.sphere.a, ix, iy);
-        rk_t px = rlin_at(&o->u.sphere.px, ix, iy), py = rlin_at(&o->u.sphere.py, ix, iy);
-        rk_t c = rk_add(o->u.sphere.k, rk_add(rk_mul(px, px), rk_mul(py, py)));
-        return render_sphere_vals(b, c, rk_sub(rk_mul(b, b), rk_mul(a, c)));
+        rsw_t c, disc;
+        render_sphere_cd(o, ix, iy, &c, &disc);
+        return render_sphere_vals(b, c, disc);
     }
     case RO_FLAT:
     case RO_BOX:
@@ -399,123 +430,84 @@ RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec
 }
 
 #if FXRT_MAX_SPHERES > 0
-#if FXRT_NUMBER == FXRT_Q16
-/* p^2 as an exact quadratic form (p linear, coefficients below 2^31). */
-static rquad_t render_square(rlin_t p)
-{
-    rquad_t q = {rk_mul(p.c, p.c), rk_mul(2 * p.c, p.x), rk_mul(2 * p.c, p.y),
-                 rk_mul(p.x, p.x), rk_mul(2 * p.x, p.y), rk_mul(p.y, p.y)};
-    return q;
-}
-
-static rquad_t render_quad_add(rquad_t a, rquad_t b, rk_t sign)
-{
-    rquad_t q = {(rk_t)((uint64_t)a.c + (uint64_t)(sign * b.c)), (rk_t)((uint64_t)a.x + (uint64_t)(sign * b.x)),
-                 (rk_t)((uint64_t)a.y + (uint64_t)(sign * b.y)), (rk_t)((uint64_t)a.xx + (uint64_t)(sign * b.xx)),
-                 (rk_t)((uint64_t)a.xy + (uint64_t)(sign * b.xy)), (rk_t)((uint64_t)a.yy + (uint64_t)(sign * b.yy))};
-    return q;
-}
-
-/* round(v * 2^-s) for a shift of either sign (set-up only). */
-static rk_t render_shift(rc_t v, int s)
-{
-    return s >= 0 ? fx128_shr_round(v, s) : fx128_shr_round(fx128_shl(v, -s), 0);
-}
-#endif
-
 static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, ro_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t c = render_to_cam(cam, s->center);
     num_t rad = s->radius;
-    rc_t cc = rc_sub(rc_add(rc_add(rc_nn(c.x, c.x), rc_nn(c.y, c.y)), rc_nn(c.z, c.z)), rc_w(s->radius2));
+    rc_t r2 = rc_w(s->radius2);
+    rc_t cc = rc_sub(rc_add(rc_add(rc_nn(c.x, c.x), rc_nn(c.y, c.y)), rc_nn(c.z, c.z)), r2);
     rclin_t zero = {rc_zero(), rc_zero(), rc_zero()};
-    rclin_t b = zero, px = zero, py = zero;
+    rclin_t b = zero, px = zero, py = zero, pz = zero;
     rcquad_t a = {rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero()};
     rc_t k;
+    bool ortho = render_ortho(cam);
     (void)ext;
     o->kind = RO_SPHERE;
-    if (render_ortho(cam)) {
-        /* o = (su ix, sv iy, 0), r = (0, 0, -1): b = -cz, a = 1,
-         * c = (cx - su ix)^2 + (cy - sv iy)^2 + cz^2 - R^2. Squaring the
-         * linear offsets (rather than scaling the expanded quadratic) keeps
-         * their full precision. */
+    o->u.sphere.ortho = ortho;
+    if (ortho) {
+        /* o = (su ix, sv iy, 0), r = (0, 0, -1): b = -cz, a = 1, the ray's
+         * offset from the centre is (cx - su ix, cy - sv iy), so
+         * disc = R^2 - px^2 - py^2 and c = cz^2 - R^2 + px^2 + py^2. */
         b.c = rc_n(num_neg(c.z));
         a.c = rc_n(NUM_ONE);
         px.c = rc_n(c.x);
         px.x = rc_neg(rc_w(cam->step_u));
         py.c = rc_n(c.y);
         py.y = rc_neg(rc_w(cam->step_v));
-        k = rc_sub(rc_nn(c.z, c.z), rc_w(s->radius2));
+        k = rc_sub(rc_nn(c.z, c.z), r2);
     } else {
-        /* o = 0, r = (ix, iy, -F): b = cx ix + cy iy - cz F,
-         * a = ix^2 + iy^2 + F^2, c = |C|^2 - R^2 */
-        b.c = rc_nn(c.z, num_neg(cam->focal));
+        /* o = 0, r = (ix, iy, -F): b = C.r, a = |r|^2, p = C x r =
+         * (-cy F - cz iy, cz ix + cx F, cx iy - cy ix), c = |C|^2 - R^2. */
+        num_t f = cam->focal;
+        b.c = rc_nn(c.z, num_neg(f));
         b.x = rc_n(c.x);
         b.y = rc_n(c.y);
-        a.c = rc_nn(cam->focal, cam->focal);
+        px.c = rc_nn(c.y, num_neg(f));
+        px.y = rc_n(num_neg(c.z));
+        py.c = rc_nn(c.x, f);
+        py.x = rc_n(c.z);
+        pz.x = rc_n(num_neg(c.y));
+        pz.y = rc_n(c.x);
+        a.c = rc_nn(f, f);
         a.xx = rc_n(NUM_ONE);
         a.yy = rc_n(NUM_ONE);
         k = cc;
     }
 #if FXRT_NUMBER == FXRT_Q16
-    /* Scales: disc = b^2 - a c keeps its sign when 2 kb = ka + kc, and
-     * c = k + px^2 + py^2 is exact in units of 2^(2 kp - 96). Every piece
-     * stays below 2^30, so products are exact in int64. */
-    int kb, ka, kc;
-    if (render_ortho(cam)) {
-        rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
-        int kp = rlin_need(&px, ext, RENDER_SPHERE_BITS);
-        int n2 = rlin_need(&py, ext, RENDER_SPHERE_BITS), n3 = rlin_need(&b, ext, RENDER_SPHERE_BITS),
-            n4 = rlin_need(&radl, ext, RENDER_SPHERE_BITS);
-        kp = kp > n2 ? kp : n2;
-        kp = kp > n3 ? kp : n3;
-        kp = kp > n4 ? kp : n4;
-        kb = kp;
-        ka = 48; /* a = 1 exactly */
-        kc = 2 * kp - 48;
-        o->u.sphere.px = rlin_scaled(px, kp);
-        o->u.sphere.py = rlin_scaled(py, kp);
+    /* Scales: the p pieces share kp, so disc is in units of 2^(2 kp - 96)
+     * and r2 is R^2 a brought to those units; b only matters by its sign. */
+    rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
+    int kp = rlin_need(&px, ext, RENDER_SPHERE_BITS), n;
+    n = rlin_need(&py, ext, RENDER_SPHERE_BITS);
+    kp = kp > n ? kp : n;
+    n = rlin_need(&pz, ext, RENDER_SPHERE_BITS);
+    kp = kp > n ? kp : n;
+    int ka = 48; /* orthographic: a = 1 exactly */
+    if (ortho) {
+        n = rlin_need(&radl, ext, RENDER_SPHERE_BITS);
+        kp = kp > n ? kp : n;
     } else {
-        kb = rlin_need(&b, ext, RENDER_SPHERE_BITS);
         ka = rquad_need(&a, ext, RENDER_SPHERE_BITS);
-        rcquad_t kq = {k, rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero()};
-        kc = rquad_need(&kq, ext, RENDER_SPHERE_BITS);
-        if (2 * kb < ka + kc)
-            kb = (ka + kc + 1) / 2;
-        kc = 2 * kb - ka;
-        o->u.sphere.px = rlin_scaled(zero, 0);
-        o->u.sphere.py = rlin_scaled(zero, 0);
     }
-    o->u.sphere.b = rlin_scaled(b, kb);
+    /* R^2 a in units of 2^(2 kp - 96): r2 = R2_48 * 2^(ka - 2 kp). */
+    int sr = 2 * kp - ka;
+    o->u.sphere.r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    int sk = 2 * kp - 48;
+    o->u.sphere.k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
+    o->u.sphere.b = rlin_make(b, ext);
     o->u.sphere.a = rquad_scaled(a, ka);
-    o->u.sphere.k = render_shift(k, kc);
-    {
-        const rlin_t *bl = &o->u.sphere.b;
-        rquad_t cq = {o->u.sphere.k, 0, 0, 0, 0, 0};
-        cq = render_quad_add(cq, render_square(o->u.sphere.px), 1);
-        cq = render_quad_add(cq, render_square(o->u.sphere.py), 1);
-        o->u.sphere.c = cq;
-        /* disc = b^2 - a c; one of a, c is a constant. */
-        const rquad_t *aq = &o->u.sphere.a;
-        bool a_const = aq->x == 0 && aq->y == 0 && aq->xx == 0 && aq->xy == 0 && aq->yy == 0;
-        rquad_t ac;
-        if (a_const) {
-            ac = (rquad_t){rk_mul(aq->c, cq.c), rk_mul(aq->c, cq.x), rk_mul(aq->c, cq.y),
-                           rk_mul(aq->c, cq.xx), rk_mul(aq->c, cq.xy), rk_mul(aq->c, cq.yy)};
-        } else {
-            rk_t kk = cq.c;
-            ac = (rquad_t){rk_mul(kk, aq->c), rk_mul(kk, aq->x), rk_mul(kk, aq->y),
-                           rk_mul(kk, aq->xx), rk_mul(kk, aq->xy), rk_mul(kk, aq->yy)};
-        }
-        o->u.sphere.disc = render_quad_add(render_square(*bl), ac, -1);
-    }
+    o->u.sphere.px = rlin_scaled(px, kp);
+    o->u.sphere.py = rlin_scaled(py, kp);
+    o->u.sphere.pz = rlin_scaled(pz, kp);
 #else
     o->u.sphere.b = rlin_scaled(b, 0);
     o->u.sphere.a = rquad_scaled(a, 0);
     o->u.sphere.px = rlin_scaled(px, 0);
     o->u.sphere.py = rlin_scaled(py, 0);
+    o->u.sphere.pz = rlin_scaled(pz, 0);
     o->u.sphere.k = k;
+    o->u.sphere.r2 = r2;
 #endif
     /* Bounds. */
     if (!rc_is_neg(cc) && c.z >= rad) {
@@ -817,48 +809,36 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
     }
 }
 
-/* Forward differences of a quadratic along the row: value, first and
- * (constant) second difference for steps of 2 in ix. */
-static void render_quad_start(const rquad_t *q, int32_t ix0, int32_t iy, uint64_t *v, uint64_t *d1, uint64_t *d2)
-{
-    uint64_t q0 = (uint64_t)rquad_at(q, ix0, iy), q1 = (uint64_t)rquad_at(q, ix0 + 2, iy),
-             q2 = (uint64_t)rquad_at(q, ix0 + 4, iy);
-    *v = q0;
-    *d1 = q1 - q0;
-    *d2 = q2 - 2 * q1 + q0;
-}
-
-/* Step a sphere, exactly. The test c < 0 || (b > 0 && disc >= 0) splits
- * by what is constant along the row: in perspective c is constant, in
- * orthographic b is, and c < 0 implies disc > 0. */
+/* Step a sphere, exactly: c and disc are quadratic along the row, so
+ * their 128-bit forward differences (second difference constant) give
+ * exactly the values render_sphere_cd computes from scratch. The test
+ * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the row:
+ * in perspective c is, in orthographic b is, and c < 0 implies disc > 0. */
 static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t x0, int32_t x1, int32_t iy,
                                int32_t y, uint8_t *rgb)
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
-    uint64_t v, d1, d2;
-    if (render_ortho(r->cam)) {
-        if (o->u.sphere.b.c > 0) {
-            render_quad_start(&o->u.sphere.disc, ix0, iy, &v, &d1, &d2);
-            for (int32_t x = x0; x <= x1; x++, v += d1, d1 += d2)
-                if ((rk_t)v >= 0)
-                    render_cover(r, oi, x, y, rgb);
-        } else {
-            render_quad_start(&o->u.sphere.c, ix0, iy, &v, &d1, &d2);
-            for (int32_t x = x0; x <= x1; x++, v += d1, d1 += d2)
-                if ((rk_t)v < 0)
-                    render_cover(r, oi, x, y, rgb);
-        }
-        return;
-    }
-    if (o->u.sphere.k < 0) { /* eye inside */
+    fx128_t c[3], q[3];
+    for (int k = 0; k < 3; k++)
+        render_sphere_cd(o, ix0 + 2 * k, iy, &c[k], &q[k]);
+    bool ortho = render_ortho(r->cam);
+    if (!ortho && rsw_neg(c[0])) { /* eye inside: every pixel */
         for (int32_t x = x0; x <= x1; x++)
             render_cover(r, oi, x, y, rgb);
         return;
     }
+    bool use_c = ortho && !(o->u.sphere.b.c > 0);
+    fx128_t *f = use_c ? c : q;
+    fx128_t v = f[0], d1 = fx128_sub(f[1], f[0]), d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
+    if (ortho) {
+        for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2))
+            if (use_c ? v.hi < 0 : v.hi >= 0)
+                render_cover(r, oi, x, y, rgb);
+        return;
+    }
     uint64_t b = (uint64_t)rlin_at(&o->u.sphere.b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere.b.x;
-    render_quad_start(&o->u.sphere.disc, ix0, iy, &v, &d1, &d2);
-    for (int32_t x = x0; x <= x1; x++, b += sb, v += d1, d1 += d2)
-        if ((rk_t)b > 0 && (rk_t)v >= 0)
+    for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2))
+        if ((rk_t)b > 0 && v.hi >= 0)
             render_cover(r, oi, x, y, rgb);
 }
 #endif

@@ -83,14 +83,20 @@ typedef struct {
     uint8_t nflat;     /* RO_FLAT: 1, RO_BOX: visible faces */
     union {
         struct {
-            /* c = k + px^2 + py^2 (orthographic: the offsets of the ray
-             * from the centre across the view; perspective: px = py = 0),
-             * and disc = b^2 - a c. */
-            rlin_t b, px, py;
+            /* disc = r2 a - (px^2 + py^2 + pz^2) and c: with the eye at o,
+             * centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
+             * (the same as b^2 - a c, without its cancellation).
+             * Perspective: p = C x r, a = |r|^2, c = k = |C|^2 - R^2.
+             * Orthographic: p = the offsets of the ray from the centre
+             * across the view, pz = 0, a = 1, c = k + px^2 + py^2.
+             * Q16.16: pieces below 2^62, squares and sums exact in 128 bits. */
+            rlin_t b, px, py, pz;
             rquad_t a;
-            rk_t k;
+            bool ortho;
 #if FXRT_NUMBER == FXRT_Q16
-            rquad_t c, disc; /* expanded, for stepping */
+            fx128_t k, r2;
+#else
+            rk_t k, r2;
 #endif
         } sphere;
         rflat_t flat[3];

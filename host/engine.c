@@ -25,6 +25,27 @@ static vec3_t engine_vec(scene_vec_t v)
     return vec3_make(ENGINE_SYM(engine_num)(v.x), ENGINE_SYM(engine_num)(v.y), ENGINE_SYM(engine_num)(v.z));
 }
 
+/* Directions are normalised in double before conversion, so that a short
+ * or nearly parallel vector that the file states exactly does not lose its
+ * direction to Q16.16 rounding: only the unit vector is rounded. */
+static scene_vec_t engine_unit(scene_vec_t v)
+{
+    double len = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    scene_vec_t u = {v.x / len, v.y / len, v.z / len};
+    return u;
+}
+
+/* The part of up perpendicular to the gaze, as a unit vector: the camera
+ * basis depends only on it, and it survives rounding even when up is
+ * within a hair of the gaze (the parser rejects exactly parallel ones). */
+static scene_vec_t engine_up(scene_vec_t gaze, scene_vec_t up)
+{
+    scene_vec_t g = engine_unit(gaze);
+    double k = up.x * g.x + up.y * g.y + up.z * g.z;
+    scene_vec_t p = {up.x - k * g.x, up.y - k * g.y, up.z - k * g.z};
+    return engine_unit(p);
+}
+
 static color_t engine_color(const double c[3])
 {
     return color_make(ENGINE_SYM(engine_num)(c[0]), ENGINE_SYM(engine_num)(c[1]), ENGINE_SYM(engine_num)(c[2]));
@@ -35,7 +56,8 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
 {
     const scene_camera_t *c = &sc->camera;
     cam_err_t ce = cam_setup(cam, c->kind == SCENE_CAM_PERSPECTIVE ? CAM_PERSPECTIVE : CAM_ORTHOGRAPHIC,
-                             engine_vec(c->eye), engine_vec(c->gaze), engine_vec(c->up),
+                             engine_vec(c->eye), engine_vec(engine_unit(c->gaze)),
+                             engine_vec(engine_up(c->gaze, c->up)),
                              ENGINE_SYM(engine_num)(c->fov_deg), ENGINE_SYM(engine_num)(c->scale), width,
                              height);
     if (ce != CAM_OK) {
@@ -54,7 +76,8 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
             kind = "plane";
 #if FXRT_MAX_PLANES > 0
             if (w->n_planes < FXRT_MAX_PLANES)
-                ok = geom_plane_make(&w->planes[w->n_planes++], engine_vec(o->p[0]), engine_vec(o->p[1]), col, id);
+                ok = geom_plane_make(&w->planes[w->n_planes++], engine_vec(o->p[0]),
+                                     engine_vec(engine_unit(o->p[1])), col, id);
 #endif
             break;
         case SCENE_SPHERE:
