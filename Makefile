@@ -104,7 +104,7 @@ TEST_PREREQ  :=
 -include tests/sanitize.mk
 -include tests/diff.mk
 
-SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/freestanding.sh tests/qemu.sh \
+SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)
 
 test: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN) $(TEST_PREREQ)

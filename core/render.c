@@ -130,9 +130,6 @@ static inline rk_t rquad_at(const rquad_t *f, int32_t ix, int32_t iy)
     return (rk_t)((uint64_t)f->c + (uint64_t)f->x * x + (uint64_t)f->y * y + (uint64_t)f->xx * x * x +
                   (uint64_t)f->xy * x * y + (uint64_t)f->yy * y * y);
 }
-static inline rk_t rk_mul(rk_t a, rk_t b) { return (rk_t)((uint64_t)a * (uint64_t)b); }
-static inline rk_t rk_sub(rk_t a, rk_t b) { return (rk_t)((uint64_t)a - (uint64_t)b); }
-static inline rk_t rk_add(rk_t a, rk_t b) { return (rk_t)((uint64_t)a + (uint64_t)b); }
 #else
 static inline rk_t rlin_at(const rlin_t *f, int32_t ix, int32_t iy)
 {
@@ -143,9 +140,6 @@ static inline rk_t rquad_at(const rquad_t *f, int32_t ix, int32_t iy)
     num_t x = (num_t)ix, y = (num_t)iy;
     return f->c + f->x * x + f->y * y + f->xx * x * x + f->xy * x * y + f->yy * y * y;
 }
-static inline rk_t rk_mul(rk_t a, rk_t b) { return a * b; }
-static inline rk_t rk_sub(rk_t a, rk_t b) { return a - b; }
-static inline rk_t rk_add(rk_t a, rk_t b) { return a + b; }
 #endif
 
 /* The sphere's c and disc: 128-bit in Q16.16, num otherwise. */

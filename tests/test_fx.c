@@ -217,11 +217,11 @@ int main(int argc, char **argv)
     check_fixed_cases();
     for (int i = 0; i < N_HARD; i++) {
         check_sqrt(hard[i]);
-        check_wsqrt((fxw_t)hard[i] << 24);
+        check_wsqrt((fxw_t)hard[i] * ((fxw_t)1 << 24));
         for (int j = 0; j < N_HARD; j++) {
             check_mul(hard[i], hard[j]);
             check_div(hard[i], hard[j]);
-            check_wdiv((fxw_t)hard[i] << 20, (fxw_t)hard[j] << 12);
+            check_wdiv((fxw_t)hard[i] * ((fxw_t)1 << 20), (fxw_t)hard[j] * ((fxw_t)1 << 12));
             check_norm(hard[i], hard[j], hard[(i + j) % N_HARD]);
         }
     }
@@ -237,7 +237,7 @@ int main(int argc, char **argv)
         check_div(a, b);
         check_sqrt(a);
         check_wsqrt((fxw_t)(rng() >> 1) >> (rng() % 63));
-        check_wdiv((fxw_t)(rng() >> 1) >> (rng() % 63) * ((rng() & 1) ? 1 : -1),
+        check_wdiv(((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
                    (fxw_t)(rng() >> 1) >> (rng() % 63));
         check_norm(rand_fx(), rand_fx(), rand_fx());
         check_vec();

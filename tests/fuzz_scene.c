@@ -1,0 +1,275 @@
+/* libFuzzer harness for scene_parse (host/scene.c), built by `make
+ * fuzz-scene` with -fsanitize=fuzzer,address,undefined (tests/sanitize.mk).
+ *
+ * Any input must either parse or be rejected with one line
+ * "NAME:LINE: message". A parse that succeeds must satisfy what the README
+ * and host/scene.h promise: exactly one camera, on the line of a 'camera'
+ * statement; objects in file order on lines starting with their keyword,
+ * per-kind counts within the capacities; every value inside the documented
+ * domain (core/fxrt_config.h) and either 0 or at least 2^-16 in magnitude;
+ * no -0. Rejections must not depend on the size of the error buffer: a
+ * short buffer gets a prefix of the same message. Any violation aborts,
+ * which libFuzzer reports as a crash with the input saved as an artifact. */
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+#define FUZZ_NAME "fuzz.scene"
+#define FUZZ_ERR_LEN 512
+
+static scene_t fuzz_scene_a, fuzz_scene_b; /* large: static */
+
+static _Noreturn void fuzz_fail(const char *what, const char *err)
+{
+    fprintf(stderr, "fuzz_scene: invariant violated: %s\n", what);
+    if (err != NULL)
+        fprintf(stderr, "fuzz_scene: message: \"%s\"\n", err);
+    abort();
+}
+
+#define FUZZ_CHECK(cond, err)                                                                      \
+    do {                                                                                           \
+        if (!(cond))                                                                               \
+            fuzz_fail(#cond, err);                                                                 \
+    } while (0)
+
+/* Lines as scene_parse counts them: pieces separated by '\n', a final
+ * piece only when the text does not end in '\n'; at least 1 (the message
+ * for an empty file is on line 1). */
+static long fuzz_line_count(const uint8_t *d, size_t n)
+{
+    long lines = 0;
+    size_t i;
+
+    for (i = 0; i < n; i++)
+        if (d[i] == '\n')
+            lines++;
+    if (n > 0 && d[n - 1] != '\n')
+        lines++;
+    return lines > 0 ? lines : 1;
+}
+
+/* What statement each line holds, by its first word, with the parser's
+ * separators: space and tab split words, '#' starts a comment, a CR before
+ * LF is dropped. kinds[l] for line l = 1..lines: a scene_kind_t, or
+ * FUZZ_LINE_CAMERA, or FUZZ_LINE_OTHER. One pass, so that checking a
+ * 4 KiB input of empty lines stays linear. */
+#define FUZZ_LINE_CAMERA 4
+#define FUZZ_LINE_OTHER 5
+
+static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, long lines)
+{
+    static const char *const kw[] = {"plane", "sphere", "triangle", "box", "camera"};
+    size_t i = 0;
+    long l;
+
+    for (l = 1; l <= lines; l++) {
+        size_t start, len;
+        int k;
+
+        while (i < n && (d[i] == ' ' || d[i] == '\t'))
+            i++;
+        start = i;
+        while (i < n && d[i] != ' ' && d[i] != '\t' && d[i] != '#' && d[i] != '\n' && d[i] != '\r')
+            i++;
+        len = i - start;
+        kinds[l] = FUZZ_LINE_OTHER;
+        for (k = 0; k < 5; k++)
+            if (len == strlen(kw[k]) && memcmp(d + start, kw[k], len) == 0)
+                kinds[l] = (unsigned char)k;
+        while (i < n && d[i] != '\n')
+            i++;
+        if (i < n)
+            i++; /* past the '\n' */
+    }
+}
+
+/* "NAME:LINE: message", one line of printable ASCII, LINE in 1..lines. */
+static void fuzz_check_error(const char *err, long lines)
+{
+    size_t nl = strlen(FUZZ_NAME), i;
+    const char *s;
+    long line = 0;
+
+    FUZZ_CHECK(memchr(err, '\0', FUZZ_ERR_LEN) != NULL, NULL);
+    FUZZ_CHECK(strncmp(err, FUZZ_NAME ":", nl + 1) == 0, err);
+    s = err + nl + 1;
+    FUZZ_CHECK(*s >= '1' && *s <= '9', err);
+    while (*s >= '0' && *s <= '9') {
+        FUZZ_CHECK(line < 100000000L, err);
+        line = line * 10 + (*s - '0');
+        s++;
+    }
+    FUZZ_CHECK(line >= 1 && line <= lines, err);
+    FUZZ_CHECK(s[0] == ':' && s[1] == ' ', err);
+    s += 2;
+    FUZZ_CHECK(*s != '\0' && *s != ' ', err);
+    for (i = 0; err[i] != '\0'; i++)
+        FUZZ_CHECK(err[i] >= 0x20 && err[i] < 0x7f, err);
+}
+
+/* 0, or a finite value of magnitude in [2^-16, limit]; never -0. */
+static void fuzz_check_num(double v, double limit)
+{
+    FUZZ_CHECK(isfinite(v), NULL);
+    FUZZ_CHECK(!(v == 0.0 && signbit(v)), NULL);
+    FUZZ_CHECK(v == 0.0 || fabs(v) >= 1.0 / 65536.0, NULL);
+    FUZZ_CHECK(fabs(v) <= limit, NULL);
+}
+
+static void fuzz_check_vec(scene_vec_t v)
+{
+    fuzz_check_num(v.x, FXRT_COORD_LIMIT);
+    fuzz_check_num(v.y, FXRT_COORD_LIMIT);
+    fuzz_check_num(v.z, FXRT_COORD_LIMIT);
+}
+
+static void fuzz_check_color(const double *c)
+{
+    int k;
+
+    for (k = 0; k < 3; k++) {
+        fuzz_check_num(c[k], 1.0);
+        FUZZ_CHECK(c[k] >= 0.0, NULL);
+    }
+}
+
+static int fuzz_is_zero(scene_vec_t v)
+{
+    return v.x == 0.0 && v.y == 0.0 && v.z == 0.0;
+}
+
+static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long lines)
+{
+    static const int cap[] = {FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES, FXRT_MAX_BOXES};
+    const scene_camera_t *cam = &s->camera;
+    unsigned char *kinds = malloc((size_t)lines + 1);
+    long l, cameras = 0;
+    int kind_count[4] = {0, 0, 0, 0};
+    int file_count[4] = {0, 0, 0, 0};
+    int i, k, prev_line = 0;
+
+    FUZZ_CHECK(kinds != NULL, NULL);
+    fuzz_line_kinds(d, n, kinds, lines);
+    FUZZ_CHECK(s->width >= 1 && s->width <= FXRT_MAX_DIM, NULL);
+    FUZZ_CHECK(s->height >= 1 && s->height <= FXRT_MAX_DIM, NULL);
+    fuzz_check_color(s->background);
+
+    /* Exactly one camera, and it is the statement on its line. */
+    for (l = 1; l <= lines; l++) {
+        if (kinds[l] == FUZZ_LINE_CAMERA)
+            cameras++;
+        else if (kinds[l] < 4)
+            file_count[kinds[l]]++;
+    }
+    FUZZ_CHECK(cameras == 1, NULL);
+    FUZZ_CHECK(cam->line >= 1 && cam->line <= lines, NULL);
+    FUZZ_CHECK(kinds[cam->line] == FUZZ_LINE_CAMERA, NULL);
+    FUZZ_CHECK(cam->kind == SCENE_CAM_PERSPECTIVE || cam->kind == SCENE_CAM_ORTHOGRAPHIC, NULL);
+    fuzz_check_vec(cam->eye);
+    fuzz_check_vec(cam->gaze);
+    fuzz_check_vec(cam->up);
+    FUZZ_CHECK(!fuzz_is_zero(cam->gaze) && !fuzz_is_zero(cam->up), NULL);
+    {
+        /* Not parallel: the parser's relative test, with slack for rounding. */
+        scene_vec_t g = cam->gaze, u = cam->up;
+        double x = g.y * u.z - g.z * u.y, y = g.z * u.x - g.x * u.z, z = g.x * u.y - g.y * u.x;
+        double gl = sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+        double ul = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+        FUZZ_CHECK(sqrt(x * x + y * y + z * z) > 0.5e-6 * gl * ul, NULL);
+    }
+    if (cam->kind == SCENE_CAM_PERSPECTIVE) {
+        FUZZ_CHECK(cam->fov_deg > 0.0 && cam->fov_deg < 180.0, NULL);
+        fuzz_check_num(cam->fov_deg, 180.0);
+        FUZZ_CHECK(cam->scale == 0.0, NULL);
+    } else {
+        FUZZ_CHECK(cam->scale > 0.0, NULL);
+        fuzz_check_num(cam->scale, FXRT_RADIUS_LIMIT);
+        FUZZ_CHECK(cam->fov_deg == 0.0, NULL);
+    }
+
+    /* Objects: within capacity, in file order, one per statement line. */
+    FUZZ_CHECK(s->count >= 0 && s->count <= SCENE_MAX_OBJECTS, NULL);
+    for (i = 0; i < s->count; i++) {
+        const scene_obj_t *o = &s->obj[i];
+        FUZZ_CHECK(o->kind >= SCENE_PLANE && o->kind <= SCENE_BOX, NULL);
+        FUZZ_CHECK(o->line > prev_line && o->line <= lines, NULL);
+        prev_line = o->line;
+        FUZZ_CHECK(kinds[o->line] == (unsigned char)o->kind, NULL);
+        kind_count[o->kind]++;
+        fuzz_check_color(o->color);
+        for (k = 0; k < 3; k++)
+            fuzz_check_vec(o->p[k]);
+        switch (o->kind) {
+        case SCENE_PLANE:
+            FUZZ_CHECK(!fuzz_is_zero(o->p[1]), NULL);
+            FUZZ_CHECK(fuzz_is_zero(o->p[2]) && o->radius == 0.0, NULL);
+            break;
+        case SCENE_SPHERE:
+            FUZZ_CHECK(o->radius > 0.0, NULL);
+            fuzz_check_num(o->radius, FXRT_RADIUS_LIMIT);
+            FUZZ_CHECK(fuzz_is_zero(o->p[1]) && fuzz_is_zero(o->p[2]), NULL);
+            break;
+        case SCENE_TRIANGLE:
+            FUZZ_CHECK(o->radius == 0.0, NULL);
+            break;
+        case SCENE_BOX:
+            FUZZ_CHECK(o->p[0].x <= o->p[1].x && o->p[0].y <= o->p[1].y && o->p[0].z <= o->p[1].z,
+                       NULL);
+            FUZZ_CHECK(fuzz_is_zero(o->p[2]) && o->radius == 0.0, NULL);
+            break;
+        }
+    }
+    for (k = 0; k < 4; k++) {
+        FUZZ_CHECK(kind_count[k] <= cap[k], NULL);
+        FUZZ_CHECK(kind_count[k] == file_count[k], NULL);
+    }
+    free(kinds);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static char err[FUZZ_ERR_LEN], err_short[FUZZ_ERR_LEN];
+    long lines = fuzz_line_count(data, size);
+    size_t short_len;
+    int rc, rc2;
+
+    /* libFuzzer's buffer is exactly `size` bytes on the heap, so ASan
+     * catches any read past the end; it is not NUL-terminated. */
+    memset(err, 'x', sizeof err);
+    rc = scene_parse(FUZZ_NAME, (const char *)data, size, &fuzz_scene_a, err, sizeof err);
+    FUZZ_CHECK(rc == 0 || rc == -1, NULL);
+    if (rc == 0) {
+        FUZZ_CHECK(err[0] == '\0', err);
+        fuzz_check_scene(&fuzz_scene_a, data, size, lines);
+    } else {
+        fuzz_check_error(err, lines);
+    }
+
+    /* Same input, small error buffer (1..64 bytes, from the input's
+     * length): same outcome, the message truncated to a prefix. */
+    short_len = 1 + size % 64;
+    memset(err_short, 'x', sizeof err_short);
+    rc2 = scene_parse(FUZZ_NAME, (const char *)data, size, &fuzz_scene_b, err_short, short_len);
+    FUZZ_CHECK(rc2 == rc, err);
+    FUZZ_CHECK(memchr(err_short, '\0', short_len) != NULL, err);
+    FUZZ_CHECK(err_short[short_len] == 'x', err); /* nothing written past errlen */
+    FUZZ_CHECK(strncmp(err_short, err, strlen(err_short)) == 0, err);
+    FUZZ_CHECK(strlen(err_short) == (strlen(err) < short_len - 1 ? strlen(err) : short_len - 1), err);
+
+    /* And without an error buffer at all. */
+    rc2 = scene_parse(FUZZ_NAME, (const char *)data, size, &fuzz_scene_b, NULL, 0);
+    FUZZ_CHECK(rc2 == rc, err);
+    if (rc == 0) {
+        FUZZ_CHECK(fuzz_scene_b.count == fuzz_scene_a.count, NULL);
+        FUZZ_CHECK(fuzz_scene_b.camera.line == fuzz_scene_a.camera.line, NULL);
+    }
+    return 0;
+}

@@ -1,0 +1,151 @@
+# Sanitizers and fuzzing; -included by the top Makefile (docs/TESTING.md).
+#
+#   make sanitize            host tool + every unit test built with clang
+#                            ASan+UBSan into $(BUILD)/san/, then
+#                            tests/sanitize.sh runs them, cli.sh, golden.sh
+#                            and the no-partial-output check
+#   make fuzz-scene          libFuzzer over scene_parse for $(FUZZ_SECONDS) s;
+#                            corpus and crash artifacts in $(BUILD)/fuzz/
+#   make test                also runs tests/fuzz-short.sh (FUZZ_CI_SECONDS)
+#                            and tests/sanitize.sh
+#
+# The sanitized build mirrors the normal one: its object and binary lists
+# are the Makefile's (HOST_OBJ, UNIT_TESTS, NUM_TESTS, *_DEPS) with
+# $(BUILD)/ replaced by $(BUILD)/san/, so a source added there is picked
+# up here without editing this file.
+
+SAN_CC     ?= clang
+SAN_DIR    := $(BUILD)/san
+SAN_FLAGS  := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1
+SAN_CFLAGS := $(WARN) $(SAN_FLAGS) -D_POSIX_C_SOURCE=200809L -MMD -MP
+
+# $(call san_path,FILES): the sanitized twin of files under $(BUILD)/.
+san_path = $(patsubst $(BUILD)/%,$(SAN_DIR)/%,$1)
+
+# Recursive (=) so that tests added to UNIT_TESTS/NUM_TESTS after this file
+# is read (e.g. by another fragment) are included too.
+SAN_FXRT     = $(SAN_DIR)/fxrt
+SAN_HOST_OBJ = $(call san_path,$(HOST_OBJ))
+SAN_UNIT_BIN = $(UNIT_TESTS:%=$(SAN_DIR)/tests/%)
+SAN_NUM_BIN  = $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(SAN_DIR)/tests/$(t)_$(n)))
+SAN_BIN      = $(SAN_FXRT) $(SAN_UNIT_BIN) $(SAN_NUM_BIN)
+
+$(SAN_FXRT): $$(SAN_HOST_OBJ)
+	@echo "  LD san  $@"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) $(LDLIBS_H)
+
+$(SAN_DIR)/host/%.o: host/%.c
+	@mkdir -p $(@D)
+	@echo "  CC san  $<"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -c $< -o $@
+
+$(SAN_DIR)/host/fx.o: core/fx.c
+	@mkdir -p $(@D)
+	@echo "  CC san  $<"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -c $< -o $@
+
+# core/*.c and host/engine.c once per number type, as number_rules does.
+define san_number_rules
+$(SAN_DIR)/host/$(1)/%.o: core/%.c
+	@mkdir -p $$(@D)
+	@echo "  CC san $(1)  $$<"
+	$$(Q)$$(SAN_CC) $$(SAN_CFLAGS) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
+$(SAN_DIR)/host/engine-$(1).o: host/engine.c
+	@mkdir -p $$(@D)
+	@echo "  CC san $(1)  $$<"
+	$$(Q)$$(SAN_CC) $$(SAN_CFLAGS) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
+
+# Number-generic tests (NUM_TESTS): one binary per number type. The
+# shorter stem makes this rule win over the unit-test rule below.
+$(SAN_DIR)/tests/%_$(1): tests/%.c $(SAN_DIR)/host/fx.o $(CORE_NUM:%=$(SAN_DIR)/host/$(1)/%.o)
+	@mkdir -p $$(@D)
+	@echo "  CC/LD san $(1) $$@"
+	$$(Q)$$(SAN_CC) $$(SAN_CFLAGS) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
+endef
+$(foreach n,$(NUMBERS),$(eval $(call san_number_rules,$(n))))
+
+$(SAN_DIR)/tests/%.o: tests/%.c
+	@mkdir -p $(@D)
+	@echo "  CC san  $<"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -Ihost -Icore -c $< -o $@
+
+# Unit tests: test_X links test_X.o and the sanitized twins of test_X_DEPS
+# (the Makefile enables .SECONDEXPANSION).
+$(SAN_DIR)/tests/%: $(SAN_DIR)/tests/%.o $$(call san_path,$$($$*_DEPS))
+	@echo "  LD san  $@"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) $(LDLIBS_H)
+
+# san-build: everything tests/sanitize.sh runs, and the list of test
+# binaries it runs (so the script need not know the Makefile's names).
+san-build: $$(SAN_BIN)
+	$(Q)printf '%s\n' $(SAN_UNIT_BIN) $(SAN_NUM_BIN) >$(SAN_DIR)/tests.list
+
+sanitize: deps san-build
+	$(Q)BUILD=$(BUILD) tests/sanitize.sh
+
+# --- libFuzzer ------------------------------------------------------------
+FUZZ_DIR      := $(BUILD)/fuzz
+FUZZ_CC       ?= clang
+FUZZ_SAN      := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1
+FUZZ_CFLAGS   := $(WARN) -D_POSIX_C_SOURCE=200809L -MMD -MP
+FUZZ_TIMEOUT  ?= 5
+FUZZ_MAX_LEN  ?= 4096
+FUZZ_SCENE_BIN := $(FUZZ_DIR)/fuzz_scene
+FUZZ_SCENE_CORPUS := $(FUZZ_DIR)/scene-corpus
+FUZZ_SCENE_SEEDS = $(wildcard scenes/*.scene scenes/stress/*.scene tests/bad-scenes/*.scene tests/scenes/*.scene)
+
+$(FUZZ_DIR)/obj/%.o: host/%.c
+	@mkdir -p $(@D)
+	@echo "  CC fuzz $<"
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -c $< -o $@
+
+$(FUZZ_DIR)/obj/fuzz_scene.o: tests/fuzz_scene.c
+	@mkdir -p $(@D)
+	@echo "  CC fuzz $<"
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -Ihost -Icore -c $< -o $@
+
+$(FUZZ_SCENE_BIN): $(FUZZ_DIR)/obj/fuzz_scene.o $(FUZZ_DIR)/obj/scene.o
+	@echo "  LD fuzz $@"
+	$(Q)$(FUZZ_CC) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $(filter %.o,$^) -lm
+
+# Keywords and edge values for libFuzzer's mutator (-dict).
+FUZZ_SCENE_DICT_WORDS := image background camera perspective orthographic plane sphere \
+    triangle box point normal center radius a b c min max color eye gaze up fov scale \
+    8192 -8192 8192.0001 4096 4096.0001 180 179.99999 0.0000152587890625 0.00001 \
+    1e-5 1e99999 1e-400 -0 0.5 1 nan inf 0x1 32767 65536
+
+$(FUZZ_DIR)/scene.dict: tests/sanitize.mk
+	@mkdir -p $(@D)
+	$(Q){ for w in $(FUZZ_SCENE_DICT_WORDS); do printf '"%s"\n' "$$w"; done; \
+	      printf '%s\n' '"#"' '"\x09"' '"\x0d\x0a"' '"\x0a"' '"\x0d"'; } >$@
+
+# Seeds are copied as seed-DIR_NAME; libFuzzer adds its finds (named by
+# SHA-1) next to them. Crashes/timeouts/leaks go to $(FUZZ_DIR)/scene-*.
+# The log is $(FUZZ_DIR)/fuzz-scene.log; the last lines summarise the run.
+fuzz-scene: $(FUZZ_SCENE_BIN) $(FUZZ_DIR)/scene.dict
+	$(Q)mkdir -p $(FUZZ_SCENE_CORPUS)
+	$(Q)for f in $(FUZZ_SCENE_SEEDS); do cp "$$f" "$(FUZZ_SCENE_CORPUS)/seed-$$(printf '%s' "$$f" | tr / _)"; done
+	@echo "  FUZZ    scene_parse for $(FUZZ_SECONDS) s (log $(FUZZ_DIR)/fuzz-scene.log)"
+	$(Q)start=$$(date +%s); \
+	$(FUZZ_SCENE_BIN) -max_total_time=$(FUZZ_SECONDS) -max_len=$(FUZZ_MAX_LEN) \
+	    -timeout=$(FUZZ_TIMEOUT) -rss_limit_mb=2048 -dict=$(FUZZ_DIR)/scene.dict \
+	    -artifact_prefix=$(FUZZ_DIR)/scene- -print_final_stats=1 \
+	    $(FUZZ_SCENE_CORPUS) >$(FUZZ_DIR)/fuzz-scene.log 2>&1; \
+	rc=$$?; secs=$$(($$(date +%s) - start)); \
+	execs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $(FUZZ_DIR)/fuzz-scene.log | tail -n 1); \
+	rate=$$(sed -n 's/^stat::average_exec_per_sec: *//p' $(FUZZ_DIR)/fuzz-scene.log | tail -n 1); \
+	files=$$(ls $(FUZZ_SCENE_CORPUS) | wc -l); \
+	if [ $$rc -ne 0 ] || grep -qE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|==ERROR' $(FUZZ_DIR)/fuzz-scene.log; then \
+	    grep -vE '^#[0-9]+[[:space:]]+(NEW|REDUCE|pulse|INITED|RELOAD)' $(FUZZ_DIR)/fuzz-scene.log | tail -n 60; \
+	    echo "fuzz-scene: FAILED (exit $$rc) after $${execs:-?} executions; artifacts:"; \
+	    find $(FUZZ_DIR) -maxdepth 1 -type f -name 'scene-*' -newer $(FUZZ_DIR)/scene.dict | sed 's/^/    /'; \
+	    exit 1; \
+	fi; \
+	echo "fuzz-scene: $${execs:-0} executions in $${secs} s ($${rate:-0} exec/s), corpus $$files files, no crash"
+
+# Everything make test needs for these suites. fuzz-short.sh runs before
+# sanitize.sh so the latter can draw inputs from a fresh corpus.
+SUITES_EXTRA += tests/fuzz-short.sh tests/sanitize.sh
+TEST_PREREQ  += san-build $(FUZZ_SCENE_BIN)
+
+.PHONY: sanitize san-build fuzz-scene

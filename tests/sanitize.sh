@@ -1,0 +1,243 @@
+#!/usr/bin/env bash
+# Sanitizer suite (make sanitize; make test). Runs what `make san-build`
+# built with clang -fsanitize=address,undefined -fno-sanitize-recover=all
+# into $BUILD/san/:
+#   - every unit test binary (list in $BUILD/san/tests.list);
+#   - tests/cli.sh and tests/golden.sh against $BUILD/san/fxrt, with their
+#     outputs under $BUILD/san/tests/ (the normal ones are not touched);
+#   - "no partial output": 200 scenes (a sample of the fuzzer's corpus
+#     $BUILD/fuzz/scene-corpus when there is one, the rest deterministic
+#     mutations of the seed scenes) through `fxrt render FILE -o OUT.png`:
+#     exit 0 and an image, or exit 2, one "FILE:LINE: message" line on
+#     stderr, no image and no *.tmp.* file.
+# Sanitizer reports are written to files (log_path), so a report counts
+# even when a suite swallows the program's stderr, and abort_on_error makes
+# the exit status 134, which no suite accepts as an expected failure. Any
+# report (UB such as signed overflow, memory error, leak) fails the check.
+# Reports and logs: $BUILD/san/logs/.
+set -u
+. "$(dirname "$0")/lib.sh"
+san=$BUILD/san
+sfxrt=$san/fxrt
+logs=$san/logs
+partial=$san/partial
+PARTIAL_FILES=${PARTIAL_FILES:-200}
+PARTIAL_SIZE=${PARTIAL_SIZE:-24x16}
+
+# san_env DIR: sanitizer options for a run whose reports go to DIR/.
+san_env() {
+    mkdir -p "$1"
+    export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:strict_string_checks=1:disable_coredump=1:log_path=$1/asan"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:abort_on_error=1:log_path=$1/ubsan"
+}
+
+# no_reports DIR: true when DIR holds no sanitizer report; prints them if so.
+no_reports() {
+    local f found=0
+    for f in "$1"/asan.* "$1"/ubsan.*; do
+        [ -e "$f" ] || continue
+        found=1
+        echo "--- sanitizer report $f"
+        head -n 40 "$f"
+    done
+    [ $found -eq 0 ]
+}
+
+# --- one input of the partial-output check (run in parallel, see below) ---
+# sanitize.sh --one FILE DIR: prints "ok FILE" or "FAIL FILE: why".
+if [ "${1:-}" = --one ]; then
+    f=$2 dir=$3
+    rm -rf "$dir"
+    mkdir -p "$dir/out"
+    san_env "$dir/rep"
+    why=
+    "$sfxrt" render "$f" -o "$dir/out/out.png" --size "$PARTIAL_SIZE" 2>"$dir/err.txt"
+    rc=$?
+    msg=$(head -n 1 "$dir/err.txt")
+    rest=${msg#"$f:"}
+    if [ $rc -eq 0 ]; then
+        [ -s "$dir/out/out.png" ] || why="exit 0 but no image"
+        [ -s "$dir/err.txt" ] && why="exit 0 with stderr: $msg"
+        # Accepted scenes also go through the float and double builds.
+        for n in float double; do
+            "$sfxrt" render "$f" -o "$dir/out/out-$n.ppm" --size "$PARTIAL_SIZE" --number $n \
+                2>>"$dir/err.txt" || why="exit $? with --number $n: $(tail -n 1 "$dir/err.txt")"
+        done
+    elif [ $rc -eq 2 ]; then
+        [ "$rest" != "$msg" ] && [[ $rest =~ ^[0-9]+:\ .+ ]] ||
+            why="message is not '$f:LINE: ...': $msg"
+        [ "$(wc -l <"$dir/err.txt")" -eq 1 ] || why="more than one line on stderr"
+        [ -e "$dir/out/out.png" ] && why="rejected but $dir/out/out.png exists"
+    else
+        why="exit status $rc: $msg"
+    fi
+    leftover=$(ls -A "$dir/out" | grep -F '.tmp.')
+    [ -n "$leftover" ] && why="temporary file left: $leftover"
+    no_reports "$dir/rep" >"$dir/reports.txt" || why="sanitizer report: $(grep -m1 -E 'ERROR|runtime error' "$dir/reports.txt")"
+    if [ -z "$why" ]; then
+        echo "ok $f $([ $rc -eq 0 ] && echo accepted || echo rejected)"
+        rm -rf "$dir"
+    else
+        cp "$f" "$dir/input.scene"
+        echo "FAIL $f: $why (kept in $dir)"
+    fi
+    exit 0
+fi
+
+# Deterministic mutations of a scene (mawk/gawk): SEED selects 1..2 edits.
+# Half of them put an edge value into a field, mostly one the field accepts
+# (coordinates of +-8192, 2^-16, fov 179.999, radius 4096, ...) so that
+# many mutants parse and reach the renderers; the others drop or insert a
+# word, duplicate, drop or truncate lines, add a stray byte, swap the
+# camera type, set an odd image size, or overflow a kind's capacity.
+mutate() { # mutate SEED FILE
+    awk -v seed="$1" '
+    { line[NR] = $0 }
+    END {
+        srand(seed); n = NR; if (n == 0) { n = 1; line[1] = "" }
+        nwild = split("8192.0001 -8192.00001 4096.0001 -0 1e-5 0.0000152 1e99999 -1e99999 " \
+                      "1e-400 180 32767 2 -1 1. .5 +1 1e 0x10 nan inf 100000 65536 3.4e38", wild, " ")
+        ncoord = split("8192 -8192 8191.99999 0 -0.0000152587890625 0.0000152587890625 1e3 " \
+                       "-4096.5 0.1 1e-4 3", coord, " ")
+        ncolor = split("0 1 0.5 0.0000152587890625 1.0 0.99999", color, " ")
+        nfov = split("0.001 0.01 1 90 179.999 179.9999999 0.0000152587890625", fov, " ")
+        nrad = split("4096 0.0000152587890625 0.001 1000 4095.99999", rad, " ")
+        nword = split("image background camera perspective orthographic plane sphere triangle " \
+                      "box point normal center radius a b c min max color eye gaze up fov scale #",
+                      word, " ")
+        byte[1] = "\001"; byte[2] = "\177"; byte[3] = "\200"; byte[4] = "\r"
+        byte[5] = "\t"; byte[6] = "\033"; byte[7] = "\303\251"
+        edits = 1 + int(rand() * 2)
+        for (e = 0; e < edits; e++) {
+            op = int(rand() * 18); i = 1 + int(rand() * n)
+            nt = split(line[i], t, /[ \t]+/)
+            if (op < 9 && nt > 1) {           # a value becomes an edge case
+                k = 2 + int(rand() * (nt - 1))
+                for (f = k; f > 1 && t[f] !~ /^[a-z]+$/; f--) ;
+                if (rand() < 0.2) v = wild[1 + int(rand() * nwild)]
+                else if (t[f] == "color" || t[1] == "background") v = color[1 + int(rand() * ncolor)]
+                else if (t[f] == "fov") v = fov[1 + int(rand() * nfov)]
+                else if (t[f] == "radius" || t[f] == "scale") v = rad[1 + int(rand() * nrad)]
+                else v = coord[1 + int(rand() * ncoord)]
+                t[k] = v
+                line[i] = join(t, nt)
+            } else if (op == 9 && nt > 0) {   # drop a word
+                k = 1 + int(rand() * nt); s = ""
+                for (j = 1; j <= nt; j++) if (j != k) s = s (s == "" ? "" : " ") t[j]
+                line[i] = s
+            } else if (op == 10 && nt > 0) {  # insert a word
+                k = 1 + int(rand() * nt); t[k] = t[k] " " word[1 + int(rand() * nword)]
+                line[i] = join(t, nt)
+            } else if (op == 11) {            # duplicate a line
+                for (j = n; j >= i; j--) line[j + 1] = line[j]; n++
+            } else if (op == 12 && n > 1) {   # drop a line
+                for (j = i; j < n; j++) line[j] = line[j + 1]; n--
+            } else if (op == 13) {            # a stray byte
+                p = int(rand() * (length(line[i]) + 1))
+                line[i] = substr(line[i], 1, p) byte[1 + int(rand() * 7)] substr(line[i], p + 1)
+            } else if (op == 14) {            # swap the camera type
+                for (j = 1; j <= n; j++) {
+                    if (line[j] ~ /perspective/) { sub(/perspective/, "orthographic", line[j]) }
+                    else if (line[j] ~ /orthographic/) { sub(/orthographic/, "perspective", line[j]) }
+                    if (rand() < 0.5) { sub(/ fov /, " scale ", line[j]) } else { sub(/ scale /, " fov ", line[j]) }
+                }
+            } else if (op == 15) {            # an odd image size
+                if (rand() < 0.7) line[i] = "image " (1 + int(rand() * 4096)) " " (1 + int(rand() * 4096))
+                else line[i] = "image " int(rand() * 5000) " " (rand() < 0.5 ? "0" : int(rand() * 5000))
+            } else if (op == 16 && line[i] ~ /^(plane|sphere|triangle|box) /) {  # capacity
+                m = 63 + int(rand() * 3)
+                for (j = 1; j <= m; j++) line[n + j] = line[i]
+                n += m
+            } else if (op == 17) {            # truncate
+                n = i
+            }
+        }
+        for (j = 1; j <= n; j++) print line[j]
+    }
+    function join(t, nt,   s, j) { s = t[1]; for (j = 2; j <= nt; j++) s = s " " t[j]; return s }
+    ' "$2"
+}
+
+rm -rf "$logs"
+mkdir -p "$logs"
+
+# The tool and tests must really be instrumented (an unsanitized build
+# would pass everything below without proving anything).
+if [ ! -x "$sfxrt" ] || [ ! -f "$san/tests.list" ]; then
+    bad "sanitized build missing: run 'make san-build' (or make sanitize)"
+    report sanitize
+    exit 1
+fi
+check "fxrt has ASan" bash -c "nm '$sfxrt' | grep -q __asan_init"
+check "fxrt has UBSan" bash -c "nm '$sfxrt' | grep -q __ubsan_handle"
+
+# run_suite NAME CMD...: passes when CMD exits 0, its last result line says
+# "0 failed" (if it prints one) and no sanitizer report was written.
+run_suite() {
+    local name=$1 rc line start
+    shift
+    start=$(date +%s)
+    (san_env "$logs/$name" && exec "$@") >"$logs/$name.log" 2>&1
+    rc=$?
+    line=$(grep -E '[0-9]+ passed, [0-9]+ failed' "$logs/$name.log" | tail -n 1)
+    echo "$name: exit $rc, $(($(date +%s) - start)) s${line:+, $line}"
+    if no_reports "$logs/$name" >"$logs/$name.reports" && [ $rc -eq 0 ] &&
+        { [ -z "$line" ] || [[ $line =~ \ 0\ failed ]]; }; then
+        ok
+    else
+        bad "$name (exit $rc; log $logs/$name.log)"
+        tail -n 15 "$logs/$name.log" | sed 's/^/    | /'
+        sed 's/^/    | /' "$logs/$name.reports"
+    fi
+}
+
+while read -r t; do
+    [ -n "$t" ] || continue
+    run_suite "$(basename "$t")" "$t"
+done <"$san/tests.list"
+run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
+run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
+
+# --- no partial output ------------------------------------------------------
+rm -rf "$partial"
+mkdir -p "$partial/in" "$partial/run"
+corpus=$BUILD/fuzz/scene-corpus
+n_corpus=0
+if [ -d "$corpus" ]; then
+    # An even sample of at most half the inputs, by name (SHA-1 for
+    # libFuzzer's finds, so effectively random but stable for a corpus).
+    total=$(find "$corpus" -maxdepth 1 -type f | wc -l)
+    half=$((PARTIAL_FILES / 2))
+    while read -r f; do
+        n_corpus=$((n_corpus + 1))
+        cp "$f" "$partial/in/corpus-$(printf %03d $n_corpus).scene"
+    done < <(find "$corpus" -maxdepth 1 -type f | LC_ALL=C sort | awk -v t="$total" -v m=$half 'c < m && NR >= int(c * t / m) + 1 { print; c++ }')
+fi
+# Three in four mutants start from a good scene, the rest from a bad one.
+good=()
+for f in scenes/*.scene scenes/stress/*.scene tests/scenes/*.scene; do [ -f "$f" ] && good+=("$f"); done
+bads=(tests/bad-scenes/*.scene)
+for ((i = n_corpus + 1; i <= PARTIAL_FILES; i++)); do
+    if [ $((i % 4)) -ne 0 ]; then
+        seed=${good[$((i % ${#good[@]}))]}
+    else
+        seed=${bads[$((i / 4 % ${#bads[@]}))]}
+    fi
+    mutate "$i" "$seed" >"$partial/in/mut-$(printf %03d $i).scene"
+done
+start=$(date +%s)
+jobs=$(nproc 2>/dev/null || echo 2)
+export BUILD PARTIAL_SIZE
+ls "$partial/in" | LC_ALL=C sort |
+    xargs -P "$jobs" -I{} bash "$0" --one "$partial/in/{}" "$partial/run/{}" >"$logs/partial.log" 2>&1
+n_in=$(ls "$partial/in" | wc -l)
+n_ok=$(grep -c '^ok ' "$logs/partial.log")
+n_acc=$(grep -c '^ok .* accepted$' "$logs/partial.log")
+PASSED=$((PASSED + n_ok))
+while read -r l; do bad "partial output: ${l#FAIL }"; done < <(grep -v '^ok ' "$logs/partial.log")
+[ "$(wc -l <"$logs/partial.log")" -eq "$n_in" ] ||
+    bad "partial output: $n_in inputs but $(wc -l <"$logs/partial.log") result lines"
+echo "partial output: $n_in inputs ($n_corpus from the fuzz corpus), $n_acc rendered," \
+    "$((n_ok - n_acc)) rejected cleanly, $((n_in - n_ok)) failed, $(($(date +%s) - start)) s"
+
+report sanitize
