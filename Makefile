@@ -112,6 +112,7 @@ test: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN) $(TEST_PREREQ)
 
 # --- firmware (firmware/firmware.mk) ----------------------------------------
 include firmware/firmware.mk
+include firmware/bench.mk
 
 # --- demo ----------------------------------------------------------------
 demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec

@@ -730,6 +730,25 @@ static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t y, 
     rgb[3 * x + 2] = c.b;
 }
 
+/* Paint column x for an object that no other object can reach on this
+ * row: no owner bookkeeping needed. */
+static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
+{
+    rgb8_t c = r->obj[oi].rgb;
+    rgb[3 * x + 0] = c.r;
+    rgb[3 * x + 1] = c.g;
+    rgb[3 * x + 2] = c.b;
+}
+
+/* A hit at column x: paint directly when the object is alone on the row. */
+#define RENDER_HIT(r, oi, x, y, rgb, lone)                                     \
+    do {                                                                       \
+        if (lone)                                                              \
+            render_paint(r, oi, x, rgb);                                       \
+        else                                                                   \
+            render_cover(r, oi, x, y, rgb);                                    \
+    } while (0)
+
 /* Start a row: a new stamp (so every column is uncovered) and the
  * background in every pixel, four pixels (12 bytes) per copy. */
 static void render_begin_row(render_t *r, uint8_t *rgb)
@@ -747,8 +766,22 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
         pat[3 * i + 2] = bg.b;
     }
     int32_t n = 3 * r->cam->width, i = 0;
-    for (; i + 12 <= n; i += 12)
-        __builtin_memcpy(rgb + i, pat, 12);
+    if (((uintptr_t)rgb & 3u) == 0) {
+        /* Aligned rows (the firmware's framebuffer and bands): three word
+         * stores per four pixels. may_alias: the buffer is bytes. */
+        typedef uint32_t __attribute__((may_alias)) word_t;
+        word_t w[3];
+        __builtin_memcpy(w, pat, 12);
+        word_t *p = (word_t *)(void *)rgb;
+        for (; i + 12 <= n; i += 12, p += 3) {
+            p[0] = w[0];
+            p[1] = w[1];
+            p[2] = w[2];
+        }
+    } else {
+        for (; i + 12 <= n; i += 12)
+            __builtin_memcpy(rgb + i, pat, 12);
+    }
     for (; i < n; i++)
         rgb[i] = pat[i % 3];
 }
@@ -772,7 +805,7 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
 /* Step a flat piece across columns x0..x1: each form is linear, so one
  * exact 64-bit addition per form and pixel. */
 static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t x0, int32_t x1, int32_t iy,
-                             int32_t y, uint8_t *rgb)
+                             int32_t y, uint8_t *rgb, bool lone)
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     uint64_t n = (uint64_t)rlin_at(&f->n, ix0, iy), d = (uint64_t)rlin_at(&f->d, ix0, iy);
@@ -781,25 +814,32 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
     if (edges == 0) { /* a plane */
         for (int32_t x = x0; x <= x1; x++) {
             if (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0))
-                render_cover(r, oi, x, y, rgb);
+                RENDER_HIT(r, oi, x, y, rgb, lone);
             n += sn;
             d += sd;
         }
         return;
     }
+    /* Three or four edges; a triangle's missing fourth edge is a zero form
+     * (it never has a strict sign, so it changes nothing). Inside means no
+     * two edges of opposite strict sign: all >= 0 (the sign bits of their
+     * OR are clear) or all <= 0. */
     uint64_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
     for (int k = 0; k < edges; k++) {
         e[k] = (uint64_t)rlin_at(&f->e[k], ix0, iy);
         se[k] = 2 * (uint64_t)f->e[k].x;
     }
     for (int32_t x = x0; x <= x1; x++) {
-        rk_t ev[4] = {(rk_t)e[0], (rk_t)e[1], (rk_t)e[2], (rk_t)e[3]};
-        if (render_flat_vals((rk_t)n, (rk_t)d, ev, edges))
-            render_cover(r, oi, x, y, rgb);
+        bool in = (rk_t)(e[0] | e[1] | e[2] | e[3]) >= 0 ||
+                  ((rk_t)e[0] <= 0 && (rk_t)e[1] <= 0 && (rk_t)e[2] <= 0 && (rk_t)e[3] <= 0);
+        if (in && (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0)))
+            RENDER_HIT(r, oi, x, y, rgb, lone);
         n += sn;
         d += sd;
-        for (int k = 0; k < edges; k++)
-            e[k] += se[k];
+        e[0] += se[0];
+        e[1] += se[1];
+        e[2] += se[2];
+        e[3] += se[3];
     }
 }
 
@@ -809,7 +849,7 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
  * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the row:
  * in perspective c is, in orthographic b is, and c < 0 implies disc > 0. */
 static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t x0, int32_t x1, int32_t iy,
-                               int32_t y, uint8_t *rgb)
+                               int32_t y, uint8_t *rgb, bool lone)
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     fx128_t c[3], q[3];
@@ -818,7 +858,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
     bool ortho = render_ortho(r->cam);
     if (!ortho && rsw_neg(c[0])) { /* eye inside: every pixel */
         for (int32_t x = x0; x <= x1; x++)
-            render_cover(r, oi, x, y, rgb);
+            RENDER_HIT(r, oi, x, y, rgb, lone);
         return;
     }
     bool use_c = ortho && !(o->u.sphere.b.c > 0);
@@ -827,15 +867,31 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
     if (ortho) {
         for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2))
             if (use_c ? v.hi < 0 : v.hi >= 0)
-                render_cover(r, oi, x, y, rgb);
+                RENDER_HIT(r, oi, x, y, rgb, lone);
         return;
     }
     uint64_t b = (uint64_t)rlin_at(&o->u.sphere.b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere.b.x;
     for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2))
         if ((rk_t)b > 0 && v.hi >= 0)
-            render_cover(r, oi, x, y, rgb);
+            RENDER_HIT(r, oi, x, y, rgb, lone);
 }
 #endif
+
+/* Is object i the only one whose bounds reach columns x0..x1 on this row?
+ * Then nothing can compete for its pixels. (Only checked for small worlds;
+ * a large one simply takes the owner path.) */
+static bool render_alone(const render_t *r, uint16_t i, int32_t row)
+{
+    if (r->count > 16)
+        return false;
+    const ro_t *o = &r->obj[i];
+    for (uint16_t j = 0; j < r->count; j++) {
+        const ro_t *p = &r->obj[j];
+        if (j != i && row >= p->r0 && row <= p->r1 && p->x0 <= o->x1 && p->x1 >= o->x0)
+            return false;
+    }
+    return true;
+}
 
 void render_row(render_t *r, int32_t row, uint8_t *rgb)
 {
@@ -855,21 +911,22 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
                 !render_flat_at(&o->u.flat[0], 2 * x1 - w + 1, iy))
                 continue;
         }
+        bool lone = render_alone(r, i, row);
         switch (o->kind) {
         case RO_ALL:
             for (int32_t x = x0; x <= x1; x++)
-                render_cover(r, i, x, y, rgb);
+                RENDER_HIT(r, i, x, y, rgb, lone);
             break;
 #if FXRT_NUMBER == FXRT_Q16
         case RO_SPHERE:
-            render_scan_sphere(r, i, o, x0, x1, iy, y, rgb);
+            render_scan_sphere(r, i, o, x0, x1, iy, y, rgb, lone);
             break;
         case RO_FLAT:
         case RO_BOX:
             for (int k = 0; k < o->nflat; k++) {
                 const rflat_t *f = &o->u.flat[k];
                 if (row >= f->r0 && row <= f->r1)
-                    render_scan_flat(r, i, f, f->x0, f->x1, iy, y, rgb);
+                    render_scan_flat(r, i, f, f->x0, f->x1, iy, y, rgb, lone);
             }
             break;
 #else
@@ -878,7 +935,7 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
              * additions would accumulate rounding error across the row. */
             for (int32_t x = x0, ix = 2 * x0 - w + 1; x <= x1; x++, ix += 2)
                 if (render_covers(o, ix, iy))
-                    render_cover(r, i, x, y, rgb);
+                    RENDER_HIT(r, i, x, y, rgb, lone);
             break;
 #endif
         }

@@ -37,7 +37,7 @@ FW_NAME  := $(basename $(notdir $(SCENE)))
 # FW_EXTRA adds compiler flags (e.g. -DFXRT_PIXEL=2); name them with FW_TAG.
 FW_DIR   := $(BUILD)/fw/$(BOARD)/$(FW_NAME)-$(NUMBER)-$(SIZE)-$(FB)$(if $(FW_TAG),-$(FW_TAG))
 FW_ELF   := $(FW_DIR)/fxrt.elf
-FW_OUT   := $(FW_NAME)-$(NUMBER).ppm
+FW_OUT   := $(FW_NAME)-$(NUMBER)$(if $(FW_TAG),-$(FW_TAG)).ppm
 FB_FLAG  := $(if $(filter stream,$(FB)),-DFXRT_FB_MODE=2,-DFXRT_FB_MODE=1)
 FW_CFLAGS := $(WARN) -O2 -g $(CPU_$(BOARD)) -ffreestanding -ffunction-sections -fdata-sections \
              -fno-math-errno -fstack-usage -DFXRT_NUMBER=$(call num_id,$(NUMBER)) $(FB_FLAG) $(FW_EXTRA) \

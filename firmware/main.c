@@ -50,13 +50,13 @@ static render_t render_state;
 
 #if FXRT_FB_MODE == FXRT_FB_FULL
 #if FXRT_PIXEL == FXRT_RGB888
-static uint8_t framebuffer[SCENE_HEIGHT][ROW_BYTES];
+static uint8_t framebuffer[SCENE_HEIGHT][ROW_BYTES] __attribute__((aligned(4)));
 #else
 static uint16_t framebuffer[SCENE_HEIGHT][SCENE_WIDTH];
-static uint8_t row_rgb[ROW_BYTES];
+static uint8_t row_rgb[ROW_BYTES] __attribute__((aligned(4)));
 #endif
 #else
-static uint8_t band[FXRT_BAND_ROWS][ROW_BYTES];
+static uint8_t band[FXRT_BAND_ROWS][ROW_BYTES] __attribute__((aligned(4)));
 #endif
 
 static void fail(const char *msg)

@@ -1,0 +1,26 @@
+# Benchmarks, included by the top Makefile (after firmware/firmware.mk).
+#   make bench [BENCH_UPDATE_DOCS=1]   run time against error: every seed scene at
+#       BENCH_SIZE, every board, q16/float/double, fast and reference renderer, in
+#       QEMU; error against the host double render. Writes build/bench/bench.csv,
+#       bench.md (summary, TARGETS with PASS/FAIL, per scene) and pareto-BOARD.png;
+#       BENCH_UPDATE_DOCS=1 also regenerates docs/BENCHMARKS.md and docs/bench/.
+#       Subsets: BENCH_BOARDS, BENCH_NUMBERS, BENCH_RENDERERS, BENCH_SCENES;
+#       BENCH_JOBS runs in parallel (default: nproc).
+#   make bench-host   the host tool under callgrind (both renderers), a quick
+#       iteration aid only; needs valgrind.
+# See docs/BENCHMARKS.md. Counts are QEMU -icount instructions, not cycles.
+
+BENCH_SIZE ?= 160x120
+# board:cpu:frame-mode for every board, from firmware.mk's CPU_ and FB_ lines
+# (cortex-m4 with -mfloat-abi=hard is "M4F").
+bench_cpu = $(patsubst cortex-m%,M%,$(patsubst -mcpu=%,%,$(filter -mcpu=%,$(CPU_$(1)))))$(if $(filter -mfloat-abi=hard,$(CPU_$(1))),F)
+BENCH_BOARD_INFO = $(foreach b,$(BOARDS),$(b):$(call bench_cpu,$(b)):$(FB_$(b)))
+
+bench: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' \
+	  BENCH_UPDATE_DOCS=$(BENCH_UPDATE_DOCS) firmware/bench.sh
+
+bench-host: deps $(BUILD)/fxrt
+	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) firmware/bench.sh --host
+
+.PHONY: bench bench-host
