@@ -4,6 +4,26 @@
 
 #define RO_NONE 0xFFFFu
 
+/* Ablation switches, for measuring what each optimisation saves (make
+ * bench-ablation); each leaves the Q16.16 output unchanged:
+ *   FXRT_NO_BOUNDS  step every object over the whole screen
+ *   FXRT_NO_STEP    evaluate every form from scratch at each pixel
+ *   FXRT_NO_LONE    always go through the owner bookkeeping
+ *   FXRT_NO_HOIST   (reference loop) recompute each object's forms at
+ *                   every pixel instead of once per frame */
+#ifndef FXRT_NO_BOUNDS
+#define FXRT_NO_BOUNDS 0
+#endif
+#ifndef FXRT_NO_STEP
+#define FXRT_NO_STEP 0
+#endif
+#ifndef FXRT_NO_LONE
+#define FXRT_NO_LONE 0
+#endif
+#ifndef FXRT_NO_HOIST
+#define FXRT_NO_HOIST 0
+#endif
+
 /* Set-up helpers that a build without some primitive kind does not call. */
 #define RENDER_MAYBE_UNUSED __attribute__((unused))
 
@@ -605,6 +625,51 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
 }
 #endif
 
+/* (Re)compute object i's forms and bounds from its world object. */
+static void render_setup_object(render_t *r, uint16_t i)
+{
+    const world_t *w = r->world;
+    const cam_t *cam = r->cam;
+    rext_t ext = {(uint32_t)(cam->width - 1), (uint32_t)(cam->height - 1)};
+    ro_t *o = &r->obj[i];
+    (void)ext;
+    (void)w;
+    switch (o->geom) {
+    case GEOM_PLANE:
+#if FXRT_MAX_PLANES > 0
+        render_setup_plane(r, ext, &w->planes[o->index], o);
+#endif
+        break;
+    case GEOM_SPHERE:
+#if FXRT_MAX_SPHERES > 0
+        render_setup_sphere(r, ext, &w->spheres[o->index], o);
+#endif
+        break;
+    case GEOM_TRIANGLE:
+#if FXRT_MAX_TRIANGLES > 0
+        render_setup_triangle(r, ext, &w->triangles[o->index], o);
+#endif
+        break;
+    case GEOM_BOX:
+#if FXRT_MAX_BOXES > 0
+        render_setup_box(r, ext, &w->boxes[o->index], o);
+#endif
+        break;
+    }
+}
+
+/* Register an object of the world in scene-array order. */
+static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom_common_t *c)
+{
+    uint16_t i = r->count++;
+    ro_t *o = &r->obj[i];
+    o->geom = kind;
+    o->index = index;
+    o->id = c->id;
+    o->rgb = c->rgb;
+    render_setup_object(r, i);
+}
+
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 {
     if (cam->width > FXRT_RENDER_MAX_WIDTH)
@@ -612,50 +677,24 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     r->world = w;
     r->cam = cam;
     r->count = 0;
-    rext_t ext = {(uint32_t)(cam->width - 1), (uint32_t)(cam->height - 1)};
-    (void)ext;
     for (int32_t x = 0; x < cam->width; x++)
         r->owner[x] = 0;
     r->stamp = 0;
 #if FXRT_MAX_PLANES > 0
-    for (uint16_t i = 0; i < w->n_planes; i++) {
-        ro_t *o = &r->obj[r->count++];
-        o->geom = GEOM_PLANE;
-        o->index = i;
-        o->id = w->planes[i].obj.id;
-        o->rgb = w->planes[i].obj.rgb;
-        render_setup_plane(r, ext, &w->planes[i], o);
-    }
+    for (uint16_t i = 0; i < w->n_planes; i++)
+        render_add(r, GEOM_PLANE, i, &w->planes[i].obj);
 #endif
 #if FXRT_MAX_SPHERES > 0
-    for (uint16_t i = 0; i < w->n_spheres; i++) {
-        ro_t *o = &r->obj[r->count++];
-        o->geom = GEOM_SPHERE;
-        o->index = i;
-        o->id = w->spheres[i].obj.id;
-        o->rgb = w->spheres[i].obj.rgb;
-        render_setup_sphere(r, ext, &w->spheres[i], o);
-    }
+    for (uint16_t i = 0; i < w->n_spheres; i++)
+        render_add(r, GEOM_SPHERE, i, &w->spheres[i].obj);
 #endif
 #if FXRT_MAX_TRIANGLES > 0
-    for (uint16_t i = 0; i < w->n_triangles; i++) {
-        ro_t *o = &r->obj[r->count++];
-        o->geom = GEOM_TRIANGLE;
-        o->index = i;
-        o->id = w->triangles[i].obj.id;
-        o->rgb = w->triangles[i].obj.rgb;
-        render_setup_triangle(r, ext, &w->triangles[i], o);
-    }
+    for (uint16_t i = 0; i < w->n_triangles; i++)
+        render_add(r, GEOM_TRIANGLE, i, &w->triangles[i].obj);
 #endif
 #if FXRT_MAX_BOXES > 0
-    for (uint16_t i = 0; i < w->n_boxes; i++) {
-        ro_t *o = &r->obj[r->count++];
-        o->geom = GEOM_BOX;
-        o->index = i;
-        o->id = w->boxes[i].obj.id;
-        o->rgb = w->boxes[i].obj.rgb;
-        render_setup_box(r, ext, &w->boxes[i], o);
-    }
+    for (uint16_t i = 0; i < w->n_boxes; i++)
+        render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
 #endif
     return true;
 }
@@ -793,15 +832,18 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
     render_begin_row(r, rgb);
     for (int32_t x = 0; x < w; x++) {
         int32_t ix = 2 * x - w + 1;
-        for (uint16_t i = 0; i < r->count; i++)
+        for (uint16_t i = 0; i < r->count; i++) {
+            if (FXRT_NO_HOIST)
+                render_setup_object(r, i);
             if (render_covers(&r->obj[i], ix, iy))
                 render_cover(r, i, x, y, rgb);
+        }
     }
 }
 
 /* ---- the fast loop ------------------------------------------------------ */
 
-#if FXRT_NUMBER == FXRT_Q16
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* Step a flat piece across columns x0..x1: each form is linear, so one
  * exact 64-bit addition per form and pixel. */
 static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t x0, int32_t x1, int32_t iy,
@@ -901,23 +943,25 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
     render_begin_row(r, rgb);
     for (uint16_t i = 0; i < r->count; i++) {
         const ro_t *o = &r->obj[i];
-        if (row < o->r0 || row > o->r1)
+        if (!FXRT_NO_BOUNDS && (row < o->r0 || row > o->r1))
             continue;
-        int32_t x0 = o->x0, x1 = o->x1;
-        if (o->kind == RO_FLAT && o->u.flat[0].edges == 0) {
+        int32_t x0 = FXRT_NO_BOUNDS ? 0 : o->x0, x1 = FXRT_NO_BOUNDS ? w - 1 : o->x1;
+        if (x0 > x1)
+            continue;
+        if (!FXRT_NO_BOUNDS && o->kind == RO_FLAT && o->u.flat[0].edges == 0) {
             /* A plane: along a row its front test is one interval, so if
              * it fails at both ends the row is beyond the horizon. */
             if (!render_flat_at(&o->u.flat[0], 2 * x0 - w + 1, iy) &&
                 !render_flat_at(&o->u.flat[0], 2 * x1 - w + 1, iy))
                 continue;
         }
-        bool lone = render_alone(r, i, row);
+        bool lone = !FXRT_NO_LONE && render_alone(r, i, row);
         switch (o->kind) {
         case RO_ALL:
             for (int32_t x = x0; x <= x1; x++)
                 RENDER_HIT(r, i, x, y, rgb, lone);
             break;
-#if FXRT_NUMBER == FXRT_Q16
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
         case RO_SPHERE:
             render_scan_sphere(r, i, o, x0, x1, iy, y, rgb, lone);
             break;
@@ -925,13 +969,15 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         case RO_BOX:
             for (int k = 0; k < o->nflat; k++) {
                 const rflat_t *f = &o->u.flat[k];
-                if (row >= f->r0 && row <= f->r1)
+                if (FXRT_NO_BOUNDS)
+                    render_scan_flat(r, i, f, 0, w - 1, iy, y, rgb, lone);
+                else if (row >= f->r0 && row <= f->r1)
                     render_scan_flat(r, i, f, f->x0, f->x1, iy, y, rgb, lone);
             }
             break;
 #else
         default:
-            /* Float and double evaluate every form directly: stepping by
+            /* Float and double (and FXRT_NO_STEP) evaluate every form directly: stepping by
              * additions would accumulate rounding error across the row. */
             for (int32_t x = x0, ix = 2 * x0 - w + 1; x <= x1; x++, ix += 2)
                 if (render_covers(o, ix, iy))

@@ -24,3 +24,9 @@ bench-host: deps $(BUILD)/fxrt
 	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) firmware/bench.sh --host
 
 .PHONY: bench bench-host
+
+# What each renderer optimisation saves (Q16.16, one board), with the
+# frames checked byte-identical: make bench-ablation [BOARD=...]
+bench-ablation: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) BOARD=$(BOARD) firmware/ablate.sh
+.PHONY: bench-ablation

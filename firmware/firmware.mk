@@ -52,7 +52,7 @@ FW_OBJ   := $(patsubst %.c,$(FW_DIR)/%.o,$(FW_SRC))
 $(FW_DIR)/scene_data.h: $(SCENE) $(BUILD)/fxrt-scenec
 	@mkdir -p $(@D)
 	@echo "  SCENEC  $(SCENE) -> $(@D)"
-	$(Q)$(BUILD)/fxrt-scenec $(SCENE) --number $(NUMBER) --size $(SIZE) --out $(@D)
+	$(Q)$(BUILD)/fxrt-scenec $(SCENE) --number $(NUMBER) --size $(SIZE) --out $(@D) $(if $(FW_ALL_KINDS),--all-kinds)
 $(FW_DIR)/scene_config.h: $(FW_DIR)/scene_data.h
 
 # Rebuild when the flags change (the directory name does not encode them all).

@@ -8,8 +8,8 @@ SIZE=${SIZE:-160x120}
 M="make -s --no-print-directory BUILD=$BUILD"
 echo "Q16.16 firmware at $SIZE (full frame on the MPS2 boards, one-row streaming on the micro:bit)"
 echo
-echo "| board | scene | frame | text | data | bss | stack reserved | stack used | RAM total |"
-echo "|---|---|---|---:|---:|---:|---:|---:|---:|"
+echo "| board | scene | frame | text | text, all kinds linked | data | bss | stack reserved | stack used | RAM total |"
+echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"
 for b in mps2-an385 mps2-an386 microbit; do
     for scene in scenes/abb*.scene; do
         name=$(basename "$scene" .scene)
@@ -19,7 +19,11 @@ for b in mps2-an385 mps2-an386 microbit; do
         read -r text data bss _ < <(arm-none-eabi-size "$elf" | tail -n 1)
         stack=$(sed -nE 's/.*stack_size=([0-9]+).*/\1/p' <<<"$run")
         used=$(sed -nE 's/.*stack_used=([0-9]+).*/\1/p' <<<"$run")
+        # The same scene with every primitive kind compiled in: what
+        # stripping the unused kinds saves.
+        $M fw SCENE="$scene" BOARD=$b NUMBER=q16 SIZE="$SIZE" FW_ALL_KINDS=1 FW_TAG=allkinds >/dev/null
+        all=$(arm-none-eabi-size "$BUILD/fw/$b/$name-q16-$SIZE-$mode-allkinds/fxrt.elf" | tail -n 1 | awk '{print $1}')
         # bss as printed by size includes the reserved stack section
-        echo "| $b | $name | $mode | $text | $data | $((bss - stack)) | $stack | $used | $((data + bss)) |"
+        echo "| $b | $name | $mode | $text | $all | $data | $((bss - stack)) | $stack | $used | $((data + bss)) |"
     done
 done

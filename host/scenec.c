@@ -2,6 +2,7 @@
  * capacity macros (FXRT_MAX_<KIND> = the scene's own counts, so unused
  * kinds compile out) and a header with the const world and camera in the
  * chosen number type. */
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,10 +13,12 @@
 #include "scenec.h"
 
 static const char usage[] =
-    "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR\n"
+    "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR [--all-kinds]\n"
     "\n"
     "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT) and\n"
-    "DIR/scene_data.h (static const world_t scene_world, cam_t scene_cam).\n";
+    "DIR/scene_data.h (static const world_t scene_world, cam_t scene_cam).\n"
+    "--all-kinds keeps every primitive kind compiled in (capacity >= 1), to\n"
+    "measure what stripping the unused ones saves.\n";
 
 static int fail(const char *msg, const char *arg)
 {
@@ -28,6 +31,7 @@ int main(int argc, char **argv)
     const char *path = NULL, *out = NULL;
     engine_number_t num = ENGINE_Q16;
     int w = 0, h = 0;
+    bool all_kinds = false;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -44,6 +48,8 @@ int main(int argc, char **argv)
                 return fail("bad --size ", argv[i]);
         } else if (!strcmp(a, "--out")) {
             out = argv[++i];
+        } else if (!strcmp(a, "--all-kinds")) {
+            all_kinds = true;
         } else if (a[0] == '-') {
             return fail("unknown option ", a);
         } else if (!path) {
@@ -76,9 +82,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "fxrt-scenec: cannot write into %s\n", out);
         rc = 2;
     } else {
-        int e = num == ENGINE_Q16     ? scenec_emit_q16(cfg, data, path, &sc, w, h, err, sizeof err)
-                : num == ENGINE_FLOAT ? scenec_emit_float(cfg, data, path, &sc, w, h, err, sizeof err)
-                                      : scenec_emit_double(cfg, data, path, &sc, w, h, err, sizeof err);
+        int e = num == ENGINE_Q16     ? scenec_emit_q16(cfg, data, path, &sc, w, h, all_kinds, err, sizeof err)
+                : num == ENGINE_FLOAT ? scenec_emit_float(cfg, data, path, &sc, w, h, all_kinds, err, sizeof err)
+                                      : scenec_emit_double(cfg, data, path, &sc, w, h, all_kinds, err, sizeof err);
         if (e) {
             fprintf(stderr, "%s\n", err);
             rc = 2;

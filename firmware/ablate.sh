@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# make bench-ablation: what each optimisation of the scanline renderer
+# saves, in Q16.16 instructions per frame on one board (default
+# mps2-an385, Cortex-M3) at 160x120, with every variant's frame required
+# to be byte-identical to the fast renderer's. Rows:
+#   reference, no hoisting  every object's forms recomputed at every pixel
+#   reference               forms once per frame, every object every pixel
+#   fast, no bounds         stepping, but over the whole screen
+#   fast, no stepping       bounds, but every form evaluated from scratch
+#   fast, no lone painting  every hit through the owner bookkeeping
+#   fast                    the default build
+# Prints a markdown table; exits non-zero if a frame differs.
+set -eu
+BUILD=${BUILD:-build}
+BOARD=${BOARD:-mps2-an385}
+SIZE=${ABLATE_SIZE:-160x120}
+M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
+variants=(
+    "reference, no hoisting|ablnohoist|-DFXRT_RENDER_REFERENCE=1 -DFXRT_NO_HOIST=1"
+    "reference|ablref|-DFXRT_RENDER_REFERENCE=1"
+    "fast, no bounds|ablnobounds|-DFXRT_NO_BOUNDS=1"
+    "fast, no stepping|ablnostep|-DFXRT_NO_STEP=1"
+    "fast, no lone painting|ablnolone|-DFXRT_NO_LONE=1"
+    "fast||"
+)
+scenes=(scenes/abb*.scene)
+header="| variant |"
+rule="|---|"
+for s in "${scenes[@]}"; do
+    header+=" $(basename "$s" .scene | sed -E 's/-.*//') |"
+    rule+="---:|"
+done
+declare -A ipp
+fail=0
+for v in "${variants[@]}"; do
+    IFS='|' read -r label tag flags <<<"$v"
+    for s in "${scenes[@]}"; do
+        name=$(basename "$s" .scene)
+        echo "[ablation] $label: $name" >&2
+        args=(SCENE="$s" BOARD="$BOARD" NUMBER=q16 SIZE="$SIZE")
+        [ -n "$tag" ] && args+=(FW_TAG="$tag" FW_EXTRA="$flags")
+        line=$($M qemu "${args[@]}" | grep instructions=)
+        ipp["$label|$name"]=$(sed -nE 's/.*instructions_per_pixel=([0-9.]+).*/\1/p' <<<"$line")
+    done
+done
+# The fast frames come last; every other variant must match them.
+for v in "${variants[@]}"; do
+    IFS='|' read -r label tag flags <<<"$v"
+    [ -z "$tag" ] && continue
+    for s in "${scenes[@]}"; do
+        name=$(basename "$s" .scene)
+        if ! cmp -s "$BUILD/qemu/$BOARD/$name-q16-$tag.ppm" "$BUILD/qemu/$BOARD/$name-q16.ppm"; then
+            echo "ablation: $label changes the frame of $name" >&2
+            fail=1
+        fi
+    done
+done
+echo "Q16.16 instructions per pixel on $BOARD at $SIZE (QEMU -icount); every variant's frame is byte-identical to the fast one."
+echo
+echo "$header geo. mean |"
+echo "$rule---:|"
+for v in "${variants[@]}"; do
+    IFS='|' read -r label tag flags <<<"$v"
+    row="| $label |"
+    vals=()
+    for s in "${scenes[@]}"; do
+        x=${ipp["$label|$(basename "$s" .scene)"]}
+        row+=" $x |"
+        vals+=("$x")
+    done
+    gm=$(printf '%s\n' "${vals[@]}" | awk '{ s += log($1); n++ } END { printf "%.1f", exp(s / n) }')
+    echo "$row $gm |"
+done
+exit $fail
