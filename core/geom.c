@@ -15,6 +15,22 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
     c->id = id;
 }
 
+/* Where the ray meets the plane through a with normal n: t = (a - o) . n /
+ * (d . n). Both dot products stay wide, so the sign tests are exact and the
+ * quotient is rounded once. Planes and triangles share it. */
+__attribute__((unused)) static bool geom_flat_t(vec3_t a, vec3_t n, const ray_t *ray, num_t *t)
+{
+    numw_t den = vec3_dotw(ray->d, n);
+    numw_t num = vec3_dotw(vec3_sub(a, ray->o), n);
+    if (den == 0 || num == 0 || (num < 0) != (den < 0))
+        return false;
+    num_t tt = numw_div(num, den);
+    if (!(tt > NUM_ZERO))
+        return false;
+    *t = tt;
+    return true;
+}
+
 #if FXRT_MAX_TRIANGLES > 0
 /* Unit normal of the plane spanned by a and b, or false when they are
  * parallel. In Q16.16 the cross product is formed exactly in Q32.32 and
@@ -54,17 +70,7 @@ bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color
 
 bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t)
 {
-    /* t = (a - o) . n / (d . n). Both dot products stay wide, so the sign
-     * tests are exact and the quotient is rounded once. */
-    numw_t den = vec3_dotw(ray->d, p->n);
-    numw_t num = vec3_dotw(vec3_sub(p->a, ray->o), p->n);
-    if (den == 0 || num == 0 || (num < 0) != (den < 0))
-        return false;
-    num_t tt = numw_div(num, den);
-    if (!(tt > NUM_ZERO))
-        return false;
-    *t = tt;
-    return true;
+    return geom_flat_t(p->a, p->n, ray, t);
 }
 #endif
 
@@ -152,15 +158,7 @@ bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
     bool pos = e0 > 0 || e1 > 0 || e2 > 0;
     if (neg && pos)
         return false;
-    numw_t den = vec3_dotw(ray->d, tr->n);
-    numw_t num = vec3_dotw(vec3_sub(tr->a, ray->o), tr->n);
-    if (den == 0 || num == 0 || (num < 0) != (den < 0))
-        return false;
-    num_t tt = numw_div(num, den);
-    if (!(tt > NUM_ZERO))
-        return false;
-    *t = tt;
-    return true;
+    return geom_flat_t(tr->a, tr->n, ray, t);
 }
 #endif
 
