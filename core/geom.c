@@ -34,8 +34,9 @@ __attribute__((unused)) static bool geom_flat_t(vec3_t a, vec3_t n, const ray_t 
 #if FXRT_MAX_TRIANGLES > 0
 /* Unit normal of the plane spanned by a and b, or false when they are
  * parallel. In Q16.16 the cross product is formed exactly in Q32.32 and
- * shifted down before rounding, so long edges (whose cross product exceeds
- * the Q16.16 range) keep their direction. */
+ * scaled to 30 significant bits before normalising, so long edges (whose
+ * cross product exceeds the Q16.16 range) and short ones (whose cross
+ * product is a few LSB) both keep their direction. */
 static bool geom_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
 {
 #if FXRT_NUMBER == FXRT_Q16
@@ -45,7 +46,11 @@ static bool geom_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
     uint64_t m = 0;
     for (int i = 0; i < 3; i++)
         m |= c[i] < 0 ? (uint64_t)0 - (uint64_t)c[i] : (uint64_t)c[i];
-    int shift = 16; /* Q32.32 -> Q16.16 */
+    /* Only the direction matters: shift the exact product so its largest
+     * component has 30 significant bits, whatever the triangle's size (a
+     * fixed Q32.32 -> Q16.16 shift would leave a small triangle's normal
+     * with a few bits only). */
+    int shift = 0;
     while ((m >> shift) >= ((uint64_t)1 << 30))
         shift++;
     fx_t v[3];
