@@ -24,13 +24,12 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     vec3_t w = vec3_neg(gaze);
     if (!vec3_normalize(&w))
         return CAM_ERR_GAZE;
-    vec3_t u = vec3_cross(up, w);
-    if (!vec3_normalize(&u))
+    /* From the exact cross products: a short or nearly parallel up keeps
+     * its direction; normalising v removes the rounding of |w| and |u|. */
+    vec3_t u, v;
+    if (!vec3_unit_cross(up, w, &u))
         return CAM_ERR_UP;
-    vec3_t v = vec3_cross(w, u);
-    /* w and u are unit and orthogonal up to rounding; normalising v removes
-     * the rounding of their lengths from it. */
-    if (!vec3_normalize(&v))
+    if (!vec3_unit_cross(w, u, &v))
         return CAM_ERR_UP;
 
     cam->kind = kind;
@@ -67,7 +66,7 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
          * overflows (docs/ACCURACY.md). Bounded per axis by |e| + half
          * width + half height, since u and v are unit vectors. */
         num_t half_h = num_half(scale);
-        num_t half_w = num_div(num_mul_int(half_h, width), num_from_int(height));
+        num_t half_w = numw_round(numw_muldiv_int(half_h, width, height)); /* wide: no saturation */
         num_t reach = num_add(half_w, half_h);
         num_t limit = num_from_int(FXRT_COORD_LIMIT);
         if (num_abs(eye.x) > num_sub(limit, reach) || num_abs(eye.y) > num_sub(limit, reach) ||
@@ -89,7 +88,21 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
     int32_t ix = 2 * x - cam->width + 1;
     int32_t iy = 2 * y - cam->height + 1;
     if (cam->kind == CAM_PERSPECTIVE) {
+#if FXRT_NUMBER == FXRT_Q16
+        /* |r| may exceed the Q16.16 range (up to sqrt(32767^2 + 2 * 4095^2)):
+         * form it in 64 bits and halve it when needed (only the direction
+         * matters). */
+        int64_t c[3] = {(int64_t)cam->fwd.x + (int64_t)cam->u.x * ix + (int64_t)cam->v.x * iy,
+                        (int64_t)cam->fwd.y + (int64_t)cam->u.y * ix + (int64_t)cam->v.y * iy,
+                        (int64_t)cam->fwd.z + (int64_t)cam->u.z * ix + (int64_t)cam->v.z * iy};
+        bool big = false;
+        for (int i = 0; i < 3; i++)
+            big |= c[i] > INT32_MAX || c[i] < -INT32_MAX;
+        vec3_t r = big ? vec3_make((fx_t)(c[0] / 2), (fx_t)(c[1] / 2), (fx_t)(c[2] / 2))
+                       : vec3_make((fx_t)c[0], (fx_t)c[1], (fx_t)c[2]);
+#else
         vec3_t r = vec3_add(cam->fwd, vec3_add(vec3_scale_int(cam->u, ix), vec3_scale_int(cam->v, iy)));
+#endif
         ray->o = cam->e;
         ray->d = r;
         vec3_normalize(&ray->d); /* r is never zero: |fwd| > 0 and u, v, w are orthogonal */

@@ -31,38 +31,6 @@ __attribute__((unused)) static bool geom_flat_t(vec3_t a, vec3_t n, const ray_t 
     return true;
 }
 
-#if FXRT_MAX_TRIANGLES > 0
-/* Unit normal of the plane spanned by a and b, or false when they are
- * parallel. In Q16.16 the cross product is formed exactly in Q32.32 and
- * scaled to 30 significant bits before normalising, so long edges (whose
- * cross product exceeds the Q16.16 range) and short ones (whose cross
- * product is a few LSB) both keep their direction. */
-static bool geom_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    numw_t c[3] = {numw_sub(numw_mul(a.y, b.z), numw_mul(a.z, b.y)),
-                   numw_sub(numw_mul(a.z, b.x), numw_mul(a.x, b.z)),
-                   numw_sub(numw_mul(a.x, b.y), numw_mul(a.y, b.x))};
-    uint64_t m = 0;
-    for (int i = 0; i < 3; i++)
-        m |= c[i] < 0 ? (uint64_t)0 - (uint64_t)c[i] : (uint64_t)c[i];
-    /* Only the direction matters: shift the exact product so its largest
-     * component has 30 significant bits, whatever the triangle's size (a
-     * fixed Q32.32 -> Q16.16 shift would leave a small triangle's normal
-     * with a few bits only). */
-    int shift = 0;
-    while ((m >> shift) >= ((uint64_t)1 << 30))
-        shift++;
-    fx_t v[3];
-    for (int i = 0; i < 3; i++)
-        v[i] = (fx_t)(c[i] / ((int64_t)1 << shift));
-    *n = vec3_make(v[0], v[1], v[2]);
-#else
-    *n = vec3_cross(a, b);
-#endif
-    return vec3_normalize(n);
-}
-#endif
 
 #if FXRT_MAX_PLANES > 0
 bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id)
@@ -123,7 +91,7 @@ bool geom_triangle_make(geom_triangle_t *tr, vec3_t a, vec3_t b, vec3_t c, color
     tr->b = b;
     tr->c = c;
     geom_common_init(&tr->obj, color, id);
-    tr->degenerate = !geom_unit_cross(vec3_sub(b, a), vec3_sub(c, a), &tr->n);
+    tr->degenerate = !vec3_unit_cross(vec3_sub(b, a), vec3_sub(c, a), &tr->n);
     return true;
 }
 

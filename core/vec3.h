@@ -79,4 +79,29 @@ static inline bool vec3_normalize(vec3_t *a)
 #endif
 }
 
+/* a x b / |a x b|, or false when a and b are parallel. In Q16.16 the cross
+ * product is formed exactly in Q32.32 and scaled to 30 significant bits
+ * before normalising: only the direction matters, so long inputs (whose
+ * cross product exceeds the Q16.16 range) and short or nearly parallel
+ * ones (whose cross product is a few LSB) all keep their direction. */
+static inline bool vec3_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    numw_t c[3] = {numw_sub(numw_mul(a.y, b.z), numw_mul(a.z, b.y)),
+                   numw_sub(numw_mul(a.z, b.x), numw_mul(a.x, b.z)),
+                   numw_sub(numw_mul(a.x, b.y), numw_mul(a.y, b.x))};
+    uint64_t m = 0;
+    for (int i = 0; i < 3; i++)
+        m |= c[i] < 0 ? (uint64_t)0 - (uint64_t)c[i] : (uint64_t)c[i];
+    int shift = 0;
+    while ((m >> shift) >= ((uint64_t)1 << 30))
+        shift++;
+    *n = vec3_make((fx_t)(c[0] / ((int64_t)1 << shift)), (fx_t)(c[1] / ((int64_t)1 << shift)),
+                   (fx_t)(c[2] / ((int64_t)1 << shift)));
+#else
+    *n = vec3_cross(a, b);
+#endif
+    return vec3_normalize(n);
+}
+
 #endif
