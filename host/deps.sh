@@ -10,6 +10,7 @@ packages=(
     qemu-system-arm               # runs the firmware
     gnuplot-nox                   # benchmark plots
     clang libclang-rt-14-dev      # sanitizers and libFuzzer
+    valgrind                      # make bench-host (callgrind)
 )
 
 missing=()
