@@ -7,7 +7,9 @@
  * so whether a ray hits an object is the sign of a few polynomials of
  * degree <= 2 in (ix, iy), whose coefficients render_setup computes once
  * per frame (the ray-invariant work, hoisted):
- *   sphere     b = oc.r (linear), c = |oc|^2 - R^2, disc = b^2 - a c
+ *   sphere     b = oc.r (linear, oc = C - o), c = |oc|^2 - R^2 (inside
+ *              when < 0), disc = R^2 |r|^2 - |oc x r|^2 (= b^2 - a c
+ *              without its cancellation; oc x r is linear)
  *              hit = c < 0 || (b > 0 && disc >= 0)
  *   flat       N = n.(A - o), D = n.r; in front when N, D have one strict
  *              sign; a triangle or box face adds one linear edge form per
@@ -15,7 +17,8 @@
  *   box        up to three front faces; every pixel when the eye is inside
  * In the Q16.16 build the coefficients are integers (rounded once, with a
  * per-form power-of-two scale), so every value along a scanline is exact:
- * forward differencing (one or two 64-bit additions per pixel) gives
+ * forward differencing (one 64-bit addition per linear form and pixel,
+ * two 128-bit additions for a sphere's quadratic) gives
  * exactly what evaluating the polynomial from scratch gives. That is what
  * lets the fast renderer skip and step while staying byte-identical to
  * the reference loop (render_row_reference), which evaluates every
@@ -27,7 +30,8 @@
  * projected bounding box plus a margin, or the whole screen when it
  * straddles the eye plane); planes are unbounded but whole rows on the far
  * side of the horizon are skipped. Pixels no object can cover are never
- * tested. When two objects cover one pixel, the nearer wins: t comes from
+ * tested, and an object whose rectangle meets no other's on a row paints
+ * its hits without any bookkeeping. When two objects cover one pixel, the nearer wins: t comes from
  * the world-space kernels (geom_*_hit) along that pixel's ray, ties go to
  * the object that comes first in the scene.
  */
