@@ -209,7 +209,8 @@ static void render_sphere_cd(const ro_t *o, int32_t ix, int32_t iy, rsw_t *c_out
     bool ortho = o->u.sphere.ortho;
 #if FXRT_NUMBER == FXRT_Q16
     fx128_t sq = fx128_add(fx128_add(fx128_mul(px, px), fx128_mul(py, py)), fx128_mul(pz, pz));
-    fx128_t r2a = a == 1 ? o->u.sphere.r2 : fx128_mul(a, fx128_shr_round(o->u.sphere.r2, 0));
+    /* Orthographic: a = 1 exactly and r2 may use all 128 bits. */
+    fx128_t r2a = ortho ? o->u.sphere.r2 : fx128_mul(a, fx128_shr_round(o->u.sphere.r2, 0));
     *disc_out = fx128_sub(r2a, sq);
     *c_out = ortho ? fx128_add(o->u.sphere.k, sq) : o->u.sphere.k;
 #else
@@ -504,9 +505,17 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
     } else {
         ka = rquad_need(&a, ext, RENDER_SPHERE_BITS);
     }
-    /* R^2 a in units of 2^(2 kp - 96): r2 = R2_48 * 2^(ka - 2 kp). */
+    /* R^2 a in units of 2^(2 kp - 96): r2 = R2_48 * 2^(ka - 2 kp). In
+     * perspective r2 multiplies a 64-bit a, so it must fit 62 bits too:
+     * on tiny images the pieces' scales alone can leave it larger, and a
+     * coarser kp (four times smaller r2 per step) fixes that. */
     int sr = 2 * kp - ka;
     o->u.sphere.r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    while (!ortho && fx128_bits(o->u.sphere.r2) > RENDER_SPHERE_BITS) {
+        kp++;
+        sr += 2;
+        o->u.sphere.r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    }
     int sk = 2 * kp - 48;
     o->u.sphere.k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
     o->u.sphere.b = rlin_make(b, ext);
@@ -579,46 +588,73 @@ static num_t render_axis(vec3_t v, int i) { return i == 0 ? v.x : (i == 1 ? v.y 
 static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t *o)
 {
     const cam_t *cam = r->cam;
+    bool ortho = render_ortho(cam);
     vec3_t corner[8]; /* bit i of the index: max on axis i */
     for (int i = 0; i < 8; i++)
         corner[i] = render_to_cam(cam, vec3_make((i & 1) ? b->max.x : b->min.x, (i & 2) ? b->max.y : b->min.y,
                                                  (i & 4) ? b->max.z : b->min.z));
-    o->kind = RO_BOX;
-    o->nflat = 0;
-    bool inside = true;
+    /* A ray covers the box when it crosses one of its faces at t > 0 (the
+     * entry face from outside, the exit face from inside), so the box's
+     * coverage is the union of its faces' coverage, each with its own
+     * front test. A perspective eye strictly outside can only reach the
+     * faces turned towards it; strictly inside, every ray hits. */
+    bool inside = !ortho, outside = false;
+    int side_of[3];
     for (int axis = 0; axis < 3; axis++) {
         num_t e = render_axis(cam->e, axis);
         num_t lo = render_axis(b->min, axis), hi = render_axis(b->max, axis);
         if (!(e > lo && e < hi))
             inside = false;
-        int side = e < lo ? 0 : (e > hi ? 1 : -1);
-        if (side < 0)
-            continue; /* neither face of this axis faces the eye */
-        /* The face's four corners, in order around it. */
-        int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-        int base = side << axis;
-        int idx[4] = {base, base | (1 << a1), base | (1 << a1) | (1 << a2), base | (1 << a2)};
-        vec3_t q[4];
-        for (int k = 0; k < 4; k++)
-            q[k] = corner[idx[k]];
-        vec3_t nw = vec3_make(axis == 0 ? NUM_ONE : NUM_ZERO, axis == 1 ? NUM_ONE : NUM_ZERO,
-                              axis == 2 ? NUM_ONE : NUM_ZERO);
-        if (side == 0)
-            nw = vec3_neg(nw);
-        rflat_t *f = &o->u.flat[o->nflat++];
-        render_flat_nd(cam, ext, render_dir_to_cam(cam, nw), q[0], f);
-        for (int k = 0; k < 4; k++)
-            f->e[k] = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
-        f->edges = 4;
-        /* Each face gets its own bounds, so a pixel is mostly stepped for
-         * one face rather than all three. */
-        ro_t tmp;
-        render_points_bounds(cam, q, 4, &tmp);
-        render_flat_bounds_from(f, &tmp);
+        side_of[axis] = e < lo ? 0 : (e > hi ? 1 : -1);
+        if (side_of[axis] >= 0)
+            outside = true;
     }
+    o->kind = RO_BOX;
+    o->nflat = 0;
     if (inside) {
         o->kind = RO_ALL;
         render_set_full(cam, o);
+        return;
+    }
+    for (int axis = 0; axis < 3; axis++) {
+        int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+        /* A face of zero area (a flat box seen from its side) covers
+         * nothing: its edge forms would describe a line or the whole
+         * screen instead. */
+        if (render_axis(b->min, a1) == render_axis(b->max, a1) || render_axis(b->min, a2) == render_axis(b->max, a2))
+            continue;
+        for (int side = 0; side < 2; side++) {
+            if (!ortho && outside && side != side_of[axis])
+                continue; /* turned away from an eye outside */
+            if ((ortho || !outside) && side == 1 && render_axis(b->min, axis) == render_axis(b->max, axis))
+                continue; /* a flat box: both faces are one rectangle, keep one */
+            vec3_t nw = vec3_make(axis == 0 ? NUM_ONE : NUM_ZERO, axis == 1 ? NUM_ONE : NUM_ZERO,
+                                  axis == 2 ? NUM_ONE : NUM_ZERO);
+            if (side == 0)
+                nw = vec3_neg(nw);
+            vec3_t nc = render_dir_to_cam(cam, nw);
+            if (ortho && nc.z == NUM_ZERO)
+                continue; /* parallel to every ray */
+            /* The face's four corners, in order around it. */
+            int base = side << axis;
+            int idx[4] = {base, base | (1 << a1), base | (1 << a1) | (1 << a2), base | (1 << a2)};
+            vec3_t q[4];
+            for (int k = 0; k < 4; k++)
+                q[k] = corner[idx[k]];
+            rflat_t *f = &o->u.flat[o->nflat++];
+            render_flat_nd(cam, ext, nc, q[0], f);
+            for (int k = 0; k < 4; k++)
+                f->e[k] = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
+            f->edges = 4;
+            /* Each face gets its own bounds, so a pixel is mostly stepped
+             * for one face rather than all of them. */
+            ro_t tmp;
+            render_points_bounds(cam, q, 4, &tmp);
+            render_flat_bounds_from(f, &tmp);
+        }
+    }
+    if (o->nflat == 0) {
+        render_set_empty(o);
         return;
     }
     render_points_bounds(cam, corner, 8, o);

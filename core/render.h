@@ -14,7 +14,11 @@
  *   flat       N = n.(A - o), D = n.r; in front when N, D have one strict
  *              sign; a triangle or box face adds one linear edge form per
  *              side, inside when no two edges have opposite strict signs
- *   box        up to three front faces; every pixel when the eye is inside
+ *   box        the union of its faces that a ray can cross at t > 0:
+ *              the front faces seen from outside in perspective, every
+ *              non-degenerate face when the eye is on its surface or the
+ *              camera is orthographic (ray origins spread over a plane
+ *              that may cut the box); every pixel when the eye is inside
  * In the Q16.16 build the coefficients are integers (rounded once, with a
  * per-form power-of-two scale), so every value along a scanline is exact:
  * forward differencing (one 64-bit addition per linear form and pixel,
@@ -103,7 +107,7 @@ typedef struct {
             rk_t k, r2;
 #endif
         } sphere;
-        rflat_t flat[3];
+        rflat_t flat[6]; /* RO_BOX: its faces that can be hit (see render_setup_box) */
     } u;
 } ro_t;
 
