@@ -3,6 +3,7 @@
 #ifndef FXRT_TESTS_CHECK_H
 #define FXRT_TESTS_CHECK_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 static long check_passed_count;
@@ -37,6 +38,16 @@ static long check_failed_count;
             fputc('\n', stderr);                                               \
         }                                                                      \
     } while (0)
+
+/* xorshift64*: a deterministic generator for random sweeps, so that a
+ * failure reproduces. Each test keeps its own state (and seed). */
+static inline uint64_t check_rng_next(uint64_t *state)
+{
+    *state ^= *state >> 12;
+    *state ^= *state << 25;
+    *state ^= *state >> 27;
+    return *state * 2685821657736338717ull;
+}
 
 static inline int check_report(const char *name)
 {

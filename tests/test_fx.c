@@ -10,15 +10,8 @@
 
 static long n_random = 1000000;
 
-/* xorshift64*: deterministic, so a failure reproduces. */
 static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static uint64_t rng(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 2685821657736338717ull;
-}
+static uint64_t rng(void) { return check_rng_next(&rng_state); }
 
 /* A random fx_t: half uniform bit patterns, half log-uniform magnitudes
  * (2^-16 .. 2^15) with random sign, so small values get tested too. */

@@ -133,15 +133,8 @@ static ray_t mkray(dv_t o, dv_t d)
 
 static color_t col(double r, double g, double b) { return color_make(N(r), N(g), N(b)); }
 
-/* xorshift64*: deterministic. */
 static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
-static uint64_t rng(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 2685821657736338717ull;
-}
+static uint64_t rng(void) { return check_rng_next(&rng_state); }
 /* Uniform in [lo, hi). */
 static double urand(double lo, double hi)
 {
