@@ -44,6 +44,23 @@
 #define FXRT_RADIUS_LIMIT 4096
 #endif
 
+/* Which loop renders primary rays where a program picks one at compile
+ * time (the firmware; the host tool picks at run time with --renderer):
+ *   1 = FXRT_RENDERER_FAST       the scanline renderer (render_row)
+ *   2 = FXRT_RENDERER_REFERENCE  every object's forms at every pixel
+ *                                (render_row_reference), for before/after
+ *   3 = FXRT_RENDERER_RAYCAST    a camera ray and a nearest-hit search per
+ *                                pixel (raycast_row): the naive baseline */
+#define FXRT_RENDERER_FAST 1
+#define FXRT_RENDERER_REFERENCE 2
+#define FXRT_RENDERER_RAYCAST 3
+#ifndef FXRT_RENDERER
+#define FXRT_RENDERER FXRT_RENDERER_FAST
+#endif
+#if FXRT_RENDERER < 1 || FXRT_RENDERER > 3
+#error "FXRT_RENDERER must be 1 (fast), 2 (reference) or 3 (raycast)"
+#endif
+
 /* Largest image width or height in pixels. */
 #ifndef FXRT_MAX_DIM
 #define FXRT_MAX_DIM 4096

@@ -33,6 +33,7 @@
 #define render_row FXRT_SYM(render_row)
 #define render_row_reference FXRT_SYM(render_row_reference)
 #define render_setup FXRT_SYM(render_setup)
+#define raycast_row FXRT_SYM(raycast_row)
 #endif
 
 #endif

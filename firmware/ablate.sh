@@ -16,8 +16,8 @@ BOARD=${BOARD:-mps2-an385}
 SIZE=${ABLATE_SIZE:-160x120}
 M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
 variants=(
-    "reference, no hoisting|ablnohoist|-DFXRT_RENDER_REFERENCE=1 -DFXRT_NO_HOIST=1"
-    "reference|ablref|-DFXRT_RENDER_REFERENCE=1"
+    "reference, no hoisting|ablnohoist|-DFXRT_RENDERER=2 -DFXRT_NO_HOIST=1"
+    "reference|ablref|-DFXRT_RENDERER=2"
     "fast, no bounds|ablnobounds|-DFXRT_NO_BOUNDS=1"
     "fast, no stepping|ablnostep|-DFXRT_NO_STEP=1"
     "fast, no lone painting|ablnolone|-DFXRT_NO_LONE=1"

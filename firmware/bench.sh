@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make bench: run time against error. For every seed scene at BENCH_SIZE on
 # every board, every number build and both renderers ("fast", the default
-# build, and "reference", -DFXRT_RENDER_REFERENCE=1), run the firmware in
+# build, and "reference", -DFXRT_RENDERER=2), run the firmware in
 # QEMU (make qemu: instructions per frame and per pixel) and compare its
 # frame with the host's double render (fxrt compare: mismatched %, PSNR,
 # max error). Writes build/bench/bench.csv, bench.md (per-board summary,
@@ -35,7 +35,7 @@ RENDERERS=${BENCH_RENDERERS:-fast reference}
 SCENES=${BENCH_SCENES:-$(printf '%s\n' scenes/abb*.scene | sort -V)}
 JOBS=${BENCH_JOBS:-$(nproc 2>/dev/null || echo 2)}
 OUT=$BUILD/bench
-REF_FLAGS="-DFXRT_RENDER_REFERENCE=1"
+REF_FLAGS="-DFXRT_RENDERER=2"
 # The sub-makes are ours: no jobserver or command-line variables from a parent make.
 unset MAKEFLAGS MFLAGS MAKELEVEL
 # -o: the scene compiler was built before the runs; parallel sub-makes must

@@ -10,6 +10,7 @@
  *   FXRT_RGB565     2 bytes per pixel; expanded back to 8 bits for the PPM
  *                   (lossy: low bits replicated)
  */
+#include "raycast.h"
 #include "render.h"
 #include "scene_data.h"
 
@@ -38,12 +39,15 @@
 
 #define ROW_BYTES (3 * SCENE_WIDTH)
 
-/* FXRT_RENDER_REFERENCE=1 renders with the straightforward loop (every
- * object at every pixel), for before/after measurements. */
-#if defined(FXRT_RENDER_REFERENCE) && FXRT_RENDER_REFERENCE
-#define RENDER_ROW render_row_reference
+/* FXRT_RENDERER (fxrt_config.h) picks the loop: the fast renderer, the
+ * reference loop or the per-pixel ray caster, for before/after and
+ * baseline measurements. */
+#if FXRT_RENDERER == FXRT_RENDERER_REFERENCE
+#define RENDER_ROW(st, row, out) render_row_reference(st, row, out)
+#elif FXRT_RENDERER == FXRT_RENDERER_RAYCAST
+#define RENDER_ROW(st, row, out) raycast_row(&scene_world, &scene_cam, row, out, NULL)
 #else
-#define RENDER_ROW render_row
+#define RENDER_ROW(st, row, out) render_row(st, row, out)
 #endif
 
 static render_t render_state;

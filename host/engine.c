@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "../core/raycast.h"
 #include "../core/render.h"
 #include "engine.h"
 #include "engine_build.h"
@@ -113,8 +114,8 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
     return 0;
 }
 
-int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, int height, bool reference,
-                              uint8_t *rgb, char *err, size_t errlen)
+int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, int height,
+                              engine_renderer_t renderer, uint8_t *rgb, char *err, size_t errlen)
 {
     /* Static: the host world and render state hold up to 64 objects of each
      * kind, too big for a stack frame. The CLI renders one frame at a time. */
@@ -129,10 +130,11 @@ int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, in
     }
     for (int row = 0; row < height; row++) {
         uint8_t *out = rgb + (size_t)3 * width * row;
-        if (reference)
-            render_row_reference(&state, row, out);
-        else
-            render_row(&state, row, out);
+        switch (renderer) {
+        case ENGINE_FAST: render_row(&state, row, out); break;
+        case ENGINE_REFERENCE: render_row_reference(&state, row, out); break;
+        case ENGINE_RAYCAST: raycast_row(&world, &cam, row, out, NULL); break;
+        }
     }
     return 0;
 }

@@ -10,24 +10,33 @@
 
 typedef enum { ENGINE_Q16, ENGINE_FLOAT, ENGINE_DOUBLE } engine_number_t;
 
+/* Which loop renders the frame:
+ *   ENGINE_FAST       the scanline renderer (render_row), the product
+ *   ENGINE_REFERENCE  every object's forms at every pixel (render_row_reference)
+ *   ENGINE_RAYCAST    a camera ray and a nearest-hit search per pixel
+ *                     (raycast_row): the oracle and the naive baseline */
+typedef enum { ENGINE_FAST, ENGINE_REFERENCE, ENGINE_RAYCAST } engine_renderer_t;
+
+/* "fast", "reference", "raycast" -> renderer; returns -1 for anything else. */
+int engine_renderer_parse(const char *s, engine_renderer_t *out);
+
 /* "q16", "float", "double" -> number type; returns -1 for anything else. */
 int engine_number_parse(const char *s, engine_number_t *out);
 const char *engine_number_name(engine_number_t n);
 
 /* Render the scene at width x height into rgb (3 * width * height bytes,
- * top row first), with the fast scanline renderer or, with reference, the
- * straightforward every-object-every-pixel loop. Returns 0, or -1 with
+ * top row first) with the chosen renderer. Returns 0, or -1 with
  * "PATH: ..." in err (for example a camera that the number type cannot
  * represent at this size). */
-int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height, bool reference,
+int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height, engine_renderer_t renderer,
                   uint8_t *rgb, char *err, size_t errlen);
 
 /* The same, one build each (engine.c compiled three times). */
-int engine_render_q16(const char *path, const scene_t *sc, int width, int height, bool reference, uint8_t *rgb,
+int engine_render_q16(const char *path, const scene_t *sc, int width, int height, engine_renderer_t renderer, uint8_t *rgb,
                       char *err, size_t errlen);
-int engine_render_float(const char *path, const scene_t *sc, int width, int height, bool reference, uint8_t *rgb,
+int engine_render_float(const char *path, const scene_t *sc, int width, int height, engine_renderer_t renderer, uint8_t *rgb,
                         char *err, size_t errlen);
-int engine_render_double(const char *path, const scene_t *sc, int width, int height, bool reference, uint8_t *rgb,
+int engine_render_double(const char *path, const scene_t *sc, int width, int height, engine_renderer_t renderer, uint8_t *rgb,
                          char *err, size_t errlen);
 
 #endif

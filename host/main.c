@@ -21,7 +21,7 @@ static const char usage_main[] =
     "\n"
     "commands:\n"
     "  render SCENE [-o OUT.png|OUT.ppm] [--size WxH] [--number q16|float|double]\n"
-    "         [--renderer fast|reference]\n"
+    "         [--renderer fast|reference|raycast]\n"
     "                 render a scene file\n"
     "  compare A B [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
     "                 compare two images and print metrics\n"
@@ -33,7 +33,7 @@ static const char usage_main[] =
 
 static const char usage_render[] =
     "usage: fxrt render SCENE [-o OUT] [--size WxH] [--number q16|float|double]\n"
-    "                         [--renderer fast|reference]\n"
+    "                         [--renderer fast|reference|raycast]\n"
     "\n"
     "Render SCENE (see README: scene format) and write the image.\n"
     "\n"
@@ -45,9 +45,11 @@ static const char usage_render[] =
     "                     scene's 'image' line (default 160x120 without one)\n"
     "  --number TYPE      q16 (Q16.16 fixed point, the default), float, or\n"
     "                     double (the reference)\n"
-    "  --renderer R       fast (the scanline renderer, the default) or reference\n"
-    "                     (every object tested at every pixel; Q16.16 output is\n"
-    "                     byte-identical, it only takes longer)\n"
+    "  --renderer R       fast (the scanline renderer, the default), reference\n"
+    "                     (every object's forms tested at every pixel; Q16.16\n"
+    "                     output is byte-identical, it only takes longer) or\n"
+    "                     raycast (a camera ray and a nearest-hit search per\n"
+    "                     pixel: the independent oracle and naive baseline)\n"
     "  -h, --help         this text\n";
 
 static const char usage_compare[] =
@@ -100,7 +102,7 @@ static int cmd_render(int argc, char **argv)
     const char *scene_path = NULL, *out = NULL;
     int w = 0, h = 0;
     engine_number_t num = ENGINE_Q16;
-    bool reference = false;
+    engine_renderer_t renderer = ENGINE_FAST;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -121,9 +123,8 @@ static int cmd_render(int argc, char **argv)
                 return fail_usage(usage_render, "render: bad --number '%s' (want q16, float or double)", argv[i]);
         } else if (!strcmp(a, "--renderer")) {
             const char *v = argv[++i];
-            if (strcmp(v, "fast") && strcmp(v, "reference"))
-                return fail_usage(usage_render, "render: bad --renderer '%s' (want fast or reference)", v);
-            reference = !strcmp(v, "reference");
+            if (engine_renderer_parse(v, &renderer))
+                return fail_usage(usage_render, "render: bad --renderer '%s' (want fast, reference or raycast)", v);
         } else if (a[0] == '-' && a[1]) {
             return fail_usage(usage_render, "render: unknown option '%s'", a);
         } else if (!scene_path) {
@@ -158,7 +159,7 @@ static int cmd_render(int argc, char **argv)
         return 2;
     }
     int rc = 0;
-    if (engine_render(num, scene_path, &scene, w, h, reference, img.rgb, err, sizeof err) ||
+    if (engine_render(num, scene_path, &scene, w, h, renderer, img.rgb, err, sizeof err) ||
         image_write(out, &img, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         rc = 2;

@@ -41,7 +41,7 @@ done
 for scene in scenes/abb*.scene; do
     name=$(basename "$scene" .scene)
     check "mps2-an385 $name reference run" run_fw SCENE=$scene BOARD=mps2-an385 NUMBER=q16 SIZE=$SIZE \
-        FW_TAG=ref FW_EXTRA=-DFXRT_RENDER_REFERENCE=1
+        FW_TAG=ref FW_EXTRA=-DFXRT_RENDERER=2
     check "mps2-an385 $name: reference frame == fast frame" \
         cmp -s "$BUILD/qemu/mps2-an385/$name-q16.ppm" "$BUILD/qemu/mps2-an385/$name-q16-ref.ppm"
 done
