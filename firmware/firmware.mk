@@ -39,6 +39,11 @@ endif
 ifneq ($(words $(FB))$(filter $(FB),$(FB_MODES)),1$(strip $(FB)))
 $(error unknown FB '$(FB)' (one of: $(FB_MODES); default for $(BOARD): $(FB_$(BOARD))))
 endif
+ifneq ($(origin SIZE),undefined)
+ifneq ($(words $(SIZE)):$(findstring x,$(SIZE)),1:x)
+$(error bad SIZE '$(SIZE)' (want WxH, e.g. 160x120; without SIZE= the scene's own size is used))
+endif
+endif
 ifneq ($(findstring ',$(SCENE))$(findstring ",$(SCENE))$(findstring $$,$(SCENE)),)
 $(error SCENE '$(SCENE)': quotes and '$$' in the scene path are not supported (spaces are))
 endif

@@ -258,8 +258,10 @@ check "two BOMs: the second is an error at 1:1 (got: $(cat "$out/stderr.txt"))" 
 { printf '# comment\n%s' "$bom"; cat $good; } >"$out/bom-late.scene"
 check "BOM after a first line is an error" fails "$FXRT" render "$out/bom-late.scene" -o "$out/bl.png"
 
-# --- make qemu/fw variables are checked before anything is built
-MK="make -s --no-print-directory BUILD=$BUILD"
+# --- make qemu/fw variables are checked before anything is built. -o: make
+# must not rebuild the host tool here (under sanitize.sh, BUILD is the
+# sanitized build, which the normal rules would overwrite).
+MK="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt"
 $MK fw FB=bad >"$out/stdout.txt" 2>"$out/stderr.txt"
 check "make fw FB=bad fails" test $? -ne 0
 check "FB=bad: clear message (got: $(head -c 200 "$out/stderr.txt"))" grep -q "unknown FB 'bad' (one of: full stream" "$out/stderr.txt"
@@ -267,6 +269,10 @@ $MK fw FB= >/dev/null 2>"$out/stderr.txt"
 check "make fw FB= (empty) fails clearly" grep -q "unknown FB ''" "$out/stderr.txt"
 $MK fw FB="full stream" >/dev/null 2>"$out/stderr.txt"
 check "make fw FB='full stream' fails clearly" grep -q "unknown FB 'full stream'" "$out/stderr.txt"
+$MK fw SIZE= >/dev/null 2>"$out/stderr.txt"
+check "make fw SIZE= (empty) fails clearly" grep -q "bad SIZE '' (want WxH" "$out/stderr.txt"
+$MK fw SIZE=160 >/dev/null 2>"$out/stderr.txt"
+check "make fw SIZE=160 fails clearly" grep -q "bad SIZE '160' (want WxH" "$out/stderr.txt"
 $MK fw BOARD=nrf99 >/dev/null 2>"$out/stderr.txt"
 check "make fw BOARD=nrf99 fails clearly" grep -q "unknown BOARD 'nrf99'" "$out/stderr.txt"
 $MK fw SCENE="it's.scene" >/dev/null 2>"$out/stderr.txt"
