@@ -620,8 +620,11 @@ static void gen_camera(rng_t *r, dcase_t *c)
         /* fov: anywhere in (0, 180), or near the narrow limit
          * H cot(fov/2) <= 32767 where the rays are longest. */
         double F = 32767.0 * (1.0 - logu(r, 1e-7, 1.0));
-        if (irand(r, 3) == 0)
+        int pick = irand(r, 6);
+        if (pick <= 1)
             cam->fov_deg = uniform(r, 0.5, 179.5);
+        else if (pick == 2) /* near the wide limit H cot(fov/2) >= 1 */
+            cam->fov_deg = 2.0 * atan(cam->height / logu(r, 0.5, 4.0)) * 180.0 / PI;
         else
             cam->fov_deg = 2.0 * atan(cam->height / fmax(F, 0.01)) * 180.0 / PI;
         if (c->mode == 7) {

@@ -1298,8 +1298,44 @@ static void test_render(void)
     CHECK(rows[0] + rows[1] + rows[2] + rows[3] + rows[4] + rows[5] == 0);
 }
 
+/* ---- colour: representation and the 8-bit rule (docs/ACCURACY.md) ----- */
+
+static void test_color_rule(void)
+{
+    /* The literal quantises as the loader does: 0.7 -> 178.5 exactly. */
+    static const color_t lit = {COLOR_FRAC(0.7), COLOR_FRAC(0.9), COLOR_FRAC(0.3)};
+    CHECK(lit.r == N(178.5) && lit.g == N(229.5) && D(lit.b) == floor(0.3 * 255 * 65536 + 0.5) / 65536);
+    rgb8_t p = color_to_rgb8(lit);
+    CHECK_MSG(p.r == 179 && p.g == 230 && p.b == 77, "0.7 0.9 0.3 -> %d %d %d", p.r, p.g, p.b);
+    /* Round half up, exactly at the tie and one LSB below it, every k. */
+    long bad = 0;
+    for (int k = 0; k < 256; k++) {
+        num_t at = N(k + 0.5), below = N(k + 0.5 - 1.0 / 65536);
+        rgb8_t a = color_to_rgb8(color_make(at, below, N(k)));
+        int want_a = k + 1 > 255 ? 255 : k + 1;
+        if (a.r != want_a || a.g != k || a.b != k)
+            bad++;
+        CHECK_SWEEP(a.r == want_a && a.g == k && a.b == k, "k %d: tie -> %d, below -> %d, exact -> %d", k, a.r, a.g,
+                    a.b);
+    }
+    CHECK_MSG(bad == 0, "%ld of 256 levels wrong", bad);
+    /* Clamping, and exact 8-bit colours. */
+    p = color_to_rgb8(color_make(N(-3), N(300), COLOR_MAX));
+    CHECK(p.r == 0 && p.g == 255 && p.b == 255);
+    for (int k = 0; k < 256; k++) {
+        p = color_to_rgb8(color_from_rgb8((uint8_t)k, (uint8_t)(255 - k), (uint8_t)(k ^ 0x55)));
+        CHECK_SWEEP(p.r == k && p.g == 255 - k && p.b == (k ^ 0x55), "rgb8 %d round trip", k);
+    }
+    /* A fraction keeps a colour in 1/255 units: 200 x 0.5 = 100. */
+    p = color_to_rgb8(color_scale(color_from_rgb8(200, 100, 51), N(0.5)));
+    CHECK(p.r == 100 && p.g == 50 && p.b == 26);
+    p = color_to_rgb8(color_filter(color_from_rgb8(200, 100, 50), N(0.25), N(1), NUM_ZERO));
+    CHECK(p.r == 50 && p.g == 100 && p.b == 0);
+}
+
 int main(void)
 {
+    test_color_rule();
     test_cam_basis_seed();
     test_cam_basis_fig7();
     test_cam_pixels();
