@@ -26,9 +26,9 @@ const char *cam_strerror(cam_err_t err)
  * the last being (-g) x (t x -g) expanded, so no rounded vector is ever
  * crossed again. In Q16.16 the products are exact (t x -g in 64 bits, v's
  * direction in 128 bits) and each unit vector is within 0.5 LSB (plus
- * 2^-12 LSB from keeping 31 bits before normalising) per component of the
+ * 2^-13 LSB from keeping 30 bits before normalising) per component of the
  * exact one, whatever the angle between up and gaze or their lengths.
- * Rejects up within CAM_UP_MIN_SIN of +-gaze. */
+ * Rejects (CAM_ERR_UP) up with sin(up, gaze) < 2^-CAM_UP_MIN_SIN_SHIFT. */
 #if FXRT_NUMBER == FXRT_Q16
 /* Round a 128-bit direction to 30 significant bits (the direction turns
  * by at most 2^-29 rad, 2^-13 LSB) and normalise it. */

@@ -3,7 +3,11 @@
  * Conventions (all of fxrt):
  *  - Right-handed scene coordinates in scene units; the camera looks along
  *    its gaze g, with up vector t. Basis: w = -g/|g|, u = t x w / |t x w|,
- *    v = w x u, so u points right, v up, and -w into the picture.
+ *    v = w x u, so u points right, v up, and -w into the picture. cam_setup
+ *    forms u's and v's directions as exact wide products of the raw g and
+ *    t and normalises each once, so the basis is within 1 LSB per
+ *    component for any accepted g and t (docs/ACCURACY.md, section 9).
+ *    To look straight down use e.g. gaze (0, -1, 0) with up (0, 0, -1).
  *  - Pixel (x, y) is column x (0 = left) and row y counted from the BOTTOM
  *    (0 = bottom row); its centre sits at offsets x - (W-1)/2 and
  *    y - (H-1)/2 from the image centre. Images are stored top row first, so
