@@ -7,7 +7,11 @@ const char *cam_strerror(cam_err_t err)
     case CAM_OK: return "ok";
     case CAM_ERR_SIZE: return "image size out of range";
     case CAM_ERR_GAZE: return "gaze has zero length";
-    case CAM_ERR_UP: return "up is parallel to gaze";
+    case CAM_ERR_UP:
+        return "up is parallel to gaze or within 0.9 degrees of it (sin < 1/64); to look straight down use e.g. "
+               "'gaze 0 -1 0 up 0 0 -1'";
+    case CAM_ERR_WIDE: return "fov too wide for the image height (height * cot(fov/2) < 1; at 1 pixel high fov <= 90)";
+    case CAM_ERR_RANGE: return "eye, gaze or up component beyond +-8192 (FXRT_COORD_LIMIT)";
     case CAM_ERR_FOV: return "fov must be inside (0, 180) degrees";
     case CAM_ERR_NARROW: return "fov too narrow for the image height in Q16.16 (height * cot(fov/2) > 32767)";
     case CAM_ERR_SCALE: return "scale must be > 0";
@@ -16,21 +20,108 @@ const char *cam_strerror(cam_err_t err)
     return "unknown camera error";
 }
 
+/* The camera basis from the raw gaze g and up t, each vector formed from
+ * exact products and normalised once (docs/ACCURACY.md, "Camera"):
+ *   w = unit(-g),  u = unit(t x -g),  v = unit(t (g.g) - g (g.t)),
+ * the last being (-g) x (t x -g) expanded, so no rounded vector is ever
+ * crossed again. In Q16.16 the products are exact (t x -g in 64 bits, v's
+ * direction in 128 bits) and each unit vector is within 0.5 LSB (plus
+ * 2^-13 LSB from keeping 30 bits before normalising) per component of the
+ * exact one, whatever the angle between up and gaze or their lengths.
+ * Rejects (CAM_ERR_UP) up with sin(up, gaze) < 2^-CAM_UP_MIN_SIN_SHIFT. */
+#if FXRT_NUMBER == FXRT_Q16
+/* Round a 128-bit direction to 30 significant bits (the direction turns
+ * by at most 2^-29 rad, 2^-13 LSB) and normalise it. */
+static bool cam_unit128(const fx128_t c[3], vec3_t *out)
+{
+    int bits = 0;
+    for (int i = 0; i < 3; i++) {
+        int b = fx128_bits(c[i]);
+        bits = b > bits ? b : bits;
+    }
+    int shift = bits > 30 ? bits - 30 : 0;
+    fx_t v[3];
+    for (int i = 0; i < 3; i++)
+        v[i] = (fx_t)fx128_shr_round(c[i], shift); /* |v| <= 2^30 */
+    if (!fx_normalize3(v))
+        return false;
+    *out = vec3_make(v[0], v[1], v[2]);
+    return true;
+}
+
+static cam_err_t cam_basis(vec3_t g, vec3_t t, vec3_t *u, vec3_t *v, vec3_t *w)
+{
+    /* |components| <= 2^29 (checked by the caller): every product below
+     * fits its integer. */
+    int64_t gx = g.x, gy = g.y, gz = g.z, tx = t.x, ty = t.y, tz = t.z;
+    *w = vec3_neg(g);
+    if (!vec3_normalize(w))
+        return CAM_ERR_GAZE;
+    /* c = t x (-g) = g x t, exact: each product < 2^58. */
+    int64_t c[3] = {gy * tz - gz * ty, gz * tx - gx * tz, gx * ty - gy * tx};
+    /* The angle test |c|^2 >= sin^2 |t|^2 |g|^2, all in 128 bits (|c|^2 and
+     * |t|^2 |g|^2 are below 2^122). */
+    int64_t gg = gx * gx + gy * gy + gz * gz, tt = tx * tx + ty * ty + tz * tz, gt = gx * tx + gy * ty + gz * tz;
+    fx128_t cc = fx128_add(fx128_add(fx128_mul(c[0], c[0]), fx128_mul(c[1], c[1])), fx128_mul(c[2], c[2]));
+    fx128_t lim = fx128_shr128(fx128_mul(gg, tt), 2 * CAM_UP_MIN_SIN_SHIFT);
+    if (tt == 0 || fx128_sub(cc, lim).hi < 0 || (cc.hi == 0 && cc.lo == 0))
+        return CAM_ERR_UP;
+    fx128_t cu[3] = {fx128_from64(c[0]), fx128_from64(c[1]), fx128_from64(c[2])};
+    /* (-g) x c = t (g.g) - g (g.t): < 2^91 per term. */
+    fx128_t cv[3] = {fx128_sub(fx128_mul(tx, gg), fx128_mul(gx, gt)), fx128_sub(fx128_mul(ty, gg), fx128_mul(gy, gt)),
+                     fx128_sub(fx128_mul(tz, gg), fx128_mul(gz, gt))};
+    if (!cam_unit128(cu, u) || !cam_unit128(cv, v))
+        return CAM_ERR_UP;
+    return CAM_OK;
+}
+#else
+static cam_err_t cam_basis(vec3_t g, vec3_t t, vec3_t *u, vec3_t *v, vec3_t *w)
+{
+    *w = vec3_neg(g);
+    if (!vec3_normalize(w))
+        return CAM_ERR_GAZE;
+    vec3_t c = vec3_cross(g, t);
+    num_t gg = vec3_dot(g, g), tt = vec3_dot(t, t), gt = vec3_dot(g, t), cc = vec3_dot(c, c);
+    num_t k = NUM(1.0 / (double)(1L << (2 * CAM_UP_MIN_SIN_SHIFT)));
+    if (!(tt > NUM_ZERO) || !(cc > NUM_ZERO) || cc < gg * tt * k)
+        return CAM_ERR_UP;
+    *u = c;
+    *v = vec3_sub(vec3_scale(t, gg), vec3_scale(g, gt));
+    if (!vec3_normalize(u) || !vec3_normalize(v))
+        return CAM_ERR_UP;
+    return CAM_OK;
+}
+#endif
+
+/* cot(a/2) for a in (0, 90] degrees, as cot(a) + sqrt(1 + cot(a)^2), so
+ * that a/2 (half an LSB in Q16.16 when a is odd) is never rounded: the
+ * result is within 2^-15 + 2e-7 relative (cot(a) within 1 LSB + 1e-7
+ * relative, the square root rounded once from its exact wide argument). */
+static num_t cam_cot_half(num_t a)
+{
+    num_t c = num_cot_deg(a);
+    num_t s = numw_sqrt(numw_add(numw_mul(c, c), numw_from(NUM_ONE)));
+    return num_add(c, s);
+}
+
+/* True when every component of a lies within +-FXRT_COORD_LIMIT. */
+static bool cam_in_domain(vec3_t a)
+{
+    num_t lim = num_from_int(FXRT_COORD_LIMIT);
+    return num_abs(a.x) <= lim && num_abs(a.y) <= lim && num_abs(a.z) <= lim;
+}
+
 cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t up,
                     num_t fov_deg, num_t scale, int32_t width, int32_t height)
 {
     if (width < 1 || height < 1 || width > FXRT_MAX_DIM || height > FXRT_MAX_DIM)
         return CAM_ERR_SIZE;
-    vec3_t w = vec3_neg(gaze);
-    if (!vec3_normalize(&w))
-        return CAM_ERR_GAZE;
-    /* From the exact cross products: a short or nearly parallel up keeps
-     * its direction; normalising v removes the rounding of |w| and |u|. */
-    vec3_t u, v;
-    if (!vec3_unit_cross(up, w, &u))
-        return CAM_ERR_UP;
-    if (!vec3_unit_cross(w, u, &v))
-        return CAM_ERR_UP;
+    if (!cam_in_domain(eye) || !cam_in_domain(gaze) || !cam_in_domain(up))
+        return CAM_ERR_RANGE;
+    vec3_t u, v, w;
+    cam_err_t be = cam_basis(gaze, up, &u, &v, &w);
+    if (be != CAM_OK)
+        return be;
 
     cam->kind = kind;
     cam->width = width;
@@ -47,16 +138,26 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     if (kind == CAM_PERSPECTIVE) {
         if (!(fov_deg > NUM_ZERO && fov_deg < NUM(180)))
             return CAM_ERR_FOV;
-        num_t cot = num_cot_deg(num_half(fov_deg));
-        /* Just below 180 degrees the Q16.16 cotangent rounds to 0 and the
-         * forward vector would vanish: no usable rays. */
-        if (!(cot > NUM_ZERO))
-            return CAM_ERR_FOV;
-        /* |fwd| = H cot(fov/2) must fit Q16.16 in every build, so that all
-         * three builds accept the same scenes. */
-        if (cot > num_div(NUM(32767), num_from_int(height)))
-            return CAM_ERR_NARROW;
-        cam->focal = num_mul_int(cot, height);
+        num_t focal;
+        if (fov_deg <= NUM(90)) {
+            num_t cot = cam_cot_half(fov_deg); /* >= 1 */
+            /* |fwd| = H cot(fov/2) must fit Q16.16 in every build, so that
+             * all three builds accept the same scenes. */
+            if (cot > num_div(NUM(32767), num_from_int(height)))
+                return CAM_ERR_NARROW;
+            focal = num_mul_int(cot, height);
+        } else {
+            /* cot(fov/2) = 1 / tan(fov/2) = 1 / cot((180 - fov)/2), the
+             * latter >= 1: the same relative precision for wide angles,
+             * where cot(fov/2) itself would keep only a few significant
+             * bits in Q16.16. */
+            focal = num_div(num_from_int(height), cam_cot_half(num_sub(NUM(180), fov_deg)));
+        }
+        /* The pixel grid at least one half pixel from the eye: below, the
+         * rounding of fwd would turn the rays by more than the cap. */
+        if (!(focal >= NUM_ONE))
+            return CAM_ERR_WIDE;
+        cam->focal = focal;
         cam->fwd = vec3_scale(w, num_neg(cam->focal));
     } else {
         if (!(scale > NUM_ZERO))

@@ -3,7 +3,11 @@
  * Conventions (all of fxrt):
  *  - Right-handed scene coordinates in scene units; the camera looks along
  *    its gaze g, with up vector t. Basis: w = -g/|g|, u = t x w / |t x w|,
- *    v = w x u, so u points right, v up, and -w into the picture.
+ *    v = w x u, so u points right, v up, and -w into the picture. cam_setup
+ *    forms u's and v's directions as exact wide products of the raw g and
+ *    t and normalises each once, so the basis is within 1 LSB per
+ *    component for any accepted g and t (docs/ACCURACY.md, section 9).
+ *    To look straight down use e.g. gaze (0, -1, 0) with up (0, 0, -1).
  *  - Pixel (x, y) is column x (0 = left) and row y counted from the BOTTOM
  *    (0 = bottom row); its centre sits at offsets x - (W-1)/2 and
  *    y - (H-1)/2 from the image centre. Images are stored top row first, so
@@ -18,17 +22,25 @@
 
 #include "ray.h"
 
+/* Up must make an angle of at least asin(2^-6) = 0.895 degrees with the
+ * gaze (and with its opposite): sin(up, gaze) >= 1/64. Closer, the roll of
+ * the camera rests on the last bits of up and gaze as the user rounded
+ * them, so no error cap can hold (docs/ACCURACY.md, "Camera"). */
+#define CAM_UP_MIN_SIN_SHIFT 6
+
 typedef enum { CAM_PERSPECTIVE, CAM_ORTHOGRAPHIC } cam_kind_t;
 
 typedef enum {
     CAM_OK = 0,
     CAM_ERR_SIZE = -1,     /* width or height outside 1..FXRT_MAX_DIM */
     CAM_ERR_GAZE = -2,     /* gaze is the zero vector */
-    CAM_ERR_UP = -3,       /* up is zero or parallel to gaze */
+    CAM_ERR_UP = -3,       /* up is zero, or within asin(2^-CAM_UP_MIN_SIN_SHIFT) of +-gaze */
     CAM_ERR_FOV = -4,      /* fov outside (0, 180) degrees */
     CAM_ERR_NARROW = -5,   /* H cot(fov/2) > 32767: rays unrepresentable in Q16.16 */
     CAM_ERR_SCALE = -6,    /* orthographic scale <= 0 */
     CAM_ERR_EXTENT = -7,   /* orthographic ray origins would leave +-FXRT_COORD_LIMIT */
+    CAM_ERR_WIDE = -8,     /* H cot(fov/2) < 1: the pixel grid nearer than half a pixel */
+    CAM_ERR_RANGE = -9,    /* an eye, gaze or up component beyond +-FXRT_COORD_LIMIT */
 } cam_err_t;
 
 /* Everything a frame's rays need, computed once per frame by cam_setup. */

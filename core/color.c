@@ -1,16 +1,20 @@
 /* color: conversion to output pixels. */
 #include "color.h"
 
+/* floor(c + 1/2) clamped to 0..255. Exact in every build: in Q16.16 it is
+ * an integer shift; in float and double, c + 0.5 is exact for any value
+ * the loader stores (a multiple of 2^-16 below 256 has at most 24
+ * significant bits), and the conversion truncates a non-negative value. */
 static uint8_t color_channel(num_t c)
 {
     if (!(c > NUM_ZERO))
         return 0;
-    if (c >= NUM_ONE)
+    if (c >= COLOR_MAX)
         return 255;
 #if FXRT_NUMBER == FXRT_Q16
-    return (uint8_t)(((uint32_t)c * 255u + FX_HALF) >> FX_FRAC_BITS);
+    return (uint8_t)(((uint32_t)c + FX_HALF) >> FX_FRAC_BITS);
 #else
-    return (uint8_t)(c * NUM(255) + NUM(0.5));
+    return (uint8_t)(c + NUM(0.5));
 #endif
 }
 

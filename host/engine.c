@@ -26,30 +26,19 @@ static vec3_t engine_vec(scene_vec_t v)
     return vec3_make(ENGINE_SYM(engine_num)(v.x), ENGINE_SYM(engine_num)(v.y), ENGINE_SYM(engine_num)(v.z));
 }
 
-/* Directions are normalised in double before conversion, so that a short
- * or nearly parallel vector that the file states exactly does not lose its
- * direction to Q16.16 rounding: only the unit vector is rounded. */
-static scene_vec_t engine_unit(scene_vec_t v)
+/* A colour channel written as a fraction x in 0..1, stored in units of
+ * 1/255 quantised to 2^-16 of that unit: round(x * 255 * 65536) / 65536,
+ * the same value in every build (it has at most 24 significant bits, so
+ * float holds it exactly). The 8-bit output is then its round-half-up
+ * (core/color.h, docs/ACCURACY.md "Colour"). */
+static num_t engine_channel(double x)
 {
-    double len = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-    scene_vec_t u = {v.x / len, v.y / len, v.z / len};
-    return u;
-}
-
-/* The part of up perpendicular to the gaze, as a unit vector: the camera
- * basis depends only on it, and it survives rounding even when up is
- * within a hair of the gaze (the parser rejects exactly parallel ones). */
-static scene_vec_t engine_up(scene_vec_t gaze, scene_vec_t up)
-{
-    scene_vec_t g = engine_unit(gaze);
-    double k = up.x * g.x + up.y * g.y + up.z * g.z;
-    scene_vec_t p = {up.x - k * g.x, up.y - k * g.y, up.z - k * g.z};
-    return engine_unit(p);
+    return ENGINE_SYM(engine_num)(floor(x * (255.0 * 65536.0) + 0.5) / 65536.0);
 }
 
 static color_t engine_color(const double c[3])
 {
-    return color_make(ENGINE_SYM(engine_num)(c[0]), ENGINE_SYM(engine_num)(c[1]), ENGINE_SYM(engine_num)(c[2]));
+    return color_make(engine_channel(c[0]), engine_channel(c[1]), engine_channel(c[2]));
 }
 
 int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int height, world_t *w,
@@ -57,8 +46,7 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
 {
     const scene_camera_t *c = &sc->camera;
     cam_err_t ce = cam_setup(cam, c->kind == SCENE_CAM_PERSPECTIVE ? CAM_PERSPECTIVE : CAM_ORTHOGRAPHIC,
-                             engine_vec(c->eye), engine_vec(engine_unit(c->gaze)),
-                             engine_vec(engine_up(c->gaze, c->up)),
+                             engine_vec(c->eye), engine_vec(c->gaze), engine_vec(c->up),
                              ENGINE_SYM(engine_num)(c->fov_deg), ENGINE_SYM(engine_num)(c->scale), width,
                              height);
     if (ce != CAM_OK) {
@@ -78,7 +66,7 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
 #if FXRT_MAX_PLANES > 0
             if (w->n_planes < FXRT_MAX_PLANES)
                 ok = geom_plane_make(&w->planes[w->n_planes++], engine_vec(o->p[0]),
-                                     engine_vec(engine_unit(o->p[1])), col, id);
+                                     engine_vec(o->p[1]), col, id);
 #endif
             break;
         case SCENE_SPHERE:

@@ -40,8 +40,17 @@
  * become 0 in the fixed-point build, so they are rejected for all builds. */
 #define SCENE_Q16_EPS (1.0 / 65536.0)
 
-/* Parallel test for up vs gaze: |g x u| <= eps * |g| * |u|. */
-#define SCENE_PARALLEL_EPS 1e-6
+/* Up must make an angle of at least asin(1/64) = 0.895 degrees with +-gaze:
+ * |g x u| >= |g| |u| / 64, the same limit as cam_setup's
+ * (CAM_UP_MIN_SIN_SHIFT in core/cam.h). */
+#define SCENE_UP_MIN_SIN (1.0 / 64.0)
+#define SCENE_UP_HINT "to look straight down use e.g. 'gaze 0 -1 0 up 0 0 -1'"
+
+/* A direction (gaze, normal) or the camera's right vector u = gaze x up
+ * must not turn by more than this many LSB (2^-16 rad) when the scene's
+ * values are rounded to Q16.16: the Q16.16 build sets up the camera and
+ * planes from the rounded values themselves (docs/ACCURACY.md, "Camera"). */
+#define SCENE_TURN_CAP 4.0
 
 #if defined(__GNUC__) || defined(__clang__)
 #define SCENE_PRINTF(f, a) __attribute__((format(printf, f, a)))
@@ -466,6 +475,39 @@ static int scene_is_zero(scene_vec_t v)
     return v.x == 0.0 && v.y == 0.0 && v.z == 0.0;
 }
 
+/* x rounded to Q16.16 as the fixed-point build stores it (host/engine.c:
+ * to nearest, ties away from zero), as a double. */
+static double scene_q16(double x)
+{
+    double sx = x * 65536.0;
+    return (sx >= 0 ? floor(sx + 0.5) : -floor(-sx + 0.5)) / 65536.0;
+}
+
+static scene_vec_t scene_vq16(scene_vec_t v)
+{
+    scene_vec_t r = {scene_q16(v.x), scene_q16(v.y), scene_q16(v.z)};
+    return r;
+}
+
+static scene_vec_t scene_cross(scene_vec_t a, scene_vec_t b)
+{
+    scene_vec_t r = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    return r;
+}
+
+static double scene_len(scene_vec_t v)
+{
+    return sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+}
+
+/* The angle between a and b (both nonzero), in LSB of 2^-16 rad. */
+static double scene_turn(scene_vec_t a, scene_vec_t b)
+{
+    double la = scene_len(a), lb = scene_len(b);
+    scene_vec_t d = {a.x / la - b.x / lb, a.y / la - b.y / lb, a.z / la - b.z / lb};
+    return scene_len(d) * 65536.0;
+}
+
 static int scene_parse_camera(scene_parser_t *p)
 {
     const scene_shape_t *sh;
@@ -503,8 +545,25 @@ static int scene_parse_camera(scene_parser_t *p)
     gl = sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
     ul = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
     xl = sqrt(x.x * x.x + x.y * x.y + x.z * x.z);
-    if (xl <= SCENE_PARALLEL_EPS * gl * ul)
-        return scene_fail(p, "up is parallel to gaze");
+    if (!(xl >= SCENE_UP_MIN_SIN * gl * ul))
+        return scene_fail(p, "up is parallel to gaze (or within 0.9 degrees of it); " SCENE_UP_HINT);
+    {
+        /* Rounding to Q16.16 must not turn the view (w = -gaze) or its
+         * roll (u = up x w) by more than the cap. */
+        scene_vec_t gq = scene_vq16(g), uq = scene_vq16(u), xq;
+        double tw, tu;
+        xq = scene_cross(gq, uq);
+        tw = scene_len(gq) > 0 ? scene_turn(g, gq) : INFINITY;
+        tu = scene_len(xq) > 0 ? scene_turn(x, xq) : INFINITY;
+        if (!(tw <= SCENE_TURN_CAP))
+            return scene_fail(p, "gaze is too short for Q16.16: rounding it to 1/65536 turns the view by %.3g LSB "
+                                 "(more than %g); directions are scale-free, so multiply it by e.g. 1000",
+                              tw, SCENE_TURN_CAP);
+        if (!(tu <= SCENE_TURN_CAP))
+            return scene_fail(p, "up is too short or too close to gaze for Q16.16: rounding turns the camera's roll "
+                                 "by %.3g LSB (more than %g); make up longer or further from the gaze",
+                              tu, SCENE_TURN_CAP);
+    }
     cam->eye = scene_vec(&vals[0]);
     cam->gaze = g;
     cam->up = u;
@@ -531,6 +590,14 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
         return -1;
     if (kind == SCENE_PLANE && scene_is_zero(scene_vec(&vals[1])))
         return scene_fail(p, "normal has zero length");
+    if (kind == SCENE_PLANE) {
+        scene_vec_t n = scene_vec(&vals[1]), nq = scene_vq16(n);
+        double tn = scene_len(nq) > 0 ? scene_turn(n, nq) : INFINITY;
+        if (!(tn <= SCENE_TURN_CAP))
+            return scene_fail(p, "normal is too short for Q16.16: rounding it to 1/65536 turns it by %.3g LSB "
+                                 "(more than %g); directions are scale-free, so multiply it by e.g. 1000",
+                              tn, SCENE_TURN_CAP);
+    }
     if (kind == SCENE_BOX) {
         static const char axis[3] = {'x', 'y', 'z'};
         int k;

@@ -59,7 +59,7 @@ static ray_t diffk_ray(const diffk_ray_t *r)
 
 static color_t diffk_color(void)
 {
-    return color_make(NUM_ONE, NUM_ZERO, NUM_ZERO);
+    return color_make(COLOR_MAX, NUM_ZERO, NUM_ZERO);
 }
 
 static int diffk_result(bool hit, num_t tt, double *t)
@@ -138,12 +138,30 @@ int DIFFK_SYM(diffk_normal)(int kind, const double p0[3], const double p1[3], co
     return tr.degenerate ? DIFFK_DEGENERATE : DIFFK_HIT;
 }
 
+static cam_err_t diffk_cam_setup(const diffk_cam_t *c, cam_t *cam)
+{
+    return cam_setup(cam, c->kind == DIFFK_ORTHOGRAPHIC ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, diffk_vec(c->eye),
+                     diffk_vec(c->gaze), diffk_vec(c->up), diffk_num(c->fov_deg), diffk_num(c->scale), c->width,
+                     c->height);
+}
+
+int DIFFK_SYM(diffk_cam_basis)(const diffk_cam_t *c, double basis[3][3], double *focal)
+{
+    cam_t cam;
+    cam_err_t err = diffk_cam_setup(c, &cam);
+    if (err != CAM_OK)
+        return (int)err;
+    diffk_out(cam.u, basis[0]);
+    diffk_out(cam.v, basis[1]);
+    diffk_out(cam.w, basis[2]);
+    *focal = diffk_dbl(cam.focal);
+    return 0;
+}
+
 int DIFFK_SYM(diffk_cam)(const diffk_cam_t *c, int n, const int *xs, const int *ys, diffk_ray_t *rays)
 {
     cam_t cam;
-    cam_err_t err = cam_setup(&cam, c->kind == DIFFK_ORTHOGRAPHIC ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE,
-                              diffk_vec(c->eye), diffk_vec(c->gaze), diffk_vec(c->up), diffk_num(c->fov_deg),
-                              diffk_num(c->scale), c->width, c->height);
+    cam_err_t err = diffk_cam_setup(c, &cam);
     if (err != CAM_OK)
         return (int)err;
     for (int i = 0; i < n; i++) {

@@ -61,7 +61,10 @@ typedef struct {
                          double n[3]);                                                            \
     /* cam_setup once, then cam_ray for n pixels (xs[i], ys[i]) into rays[i]. Returns the         \
      * cam_err_t of cam_setup (0 = CAM_OK); rays are written only on success. */                  \
-    int diffk_cam_##S(const diffk_cam_t *cam, int n, const int *xs, const int *ys, diffk_ray_t *rays);
+    int diffk_cam_##S(const diffk_cam_t *cam, int n, const int *xs, const int *ys, diffk_ray_t *rays); \
+    /* cam_setup's basis (basis[0..2] = u, v, w) and focal (H cot(fov/2), 1 for orthographic);   \
+     * returns the cam_err_t, and writes only on success. */                                      \
+    int diffk_cam_basis_##S(const diffk_cam_t *cam, double basis[3][3], double *focal);
 
 DIFFK_DECLARE(q16)
 DIFFK_DECLARE(double)

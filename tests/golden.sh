@@ -41,4 +41,37 @@ for scene in scenes/abb*.scene; do
         echo "note: $fig not found, seed figure comparison skipped"
     fi
 done
+# Arbitrary colours (issue 10): copies of the seed scenes with every colour
+# replaced by values that are not 0 or 1 (including exact ties of 255 x,
+# such as 0.7 -> 178.5, and 4-decimal values), generated into build/,
+# checked like the seed: q16 and float against double within 0.01 % and
+# no interior mismatch. Colour is stored identically in every build
+# (docs/ACCURACY.md, "Colour"), so flat areas must match exactly.
+cdir=$out/colour
+mkdir -p "$cdir"
+palette=("0.7 0.2 0.45" "0.1 0.9 0.3" "0.5 0.0039 0.998" "0.0706 0.6 0.8549")
+for scene in scenes/abb*.scene; do
+    name=$(basename "$scene" .scene)-colour
+    gen=$cdir/$name.scene
+    awk -v p="${palette[*]}" '
+        BEGIN { n = split(p, v, " "); k = 0 }
+        $1 == "background" { print "background 0.15 0.2502 0.3499"; next }
+        {
+            for (i = 1; i <= NF; i++)
+                if ($i == "color" && i + 3 <= NF) {
+                    j = (k % (n / 3)) * 3; k++
+                    $(i + 1) = v[j + 1]; $(i + 2) = v[j + 2]; $(i + 3) = v[j + 3]
+                }
+            print
+        }' "$scene" >"$gen"
+    check "$name: generated with arbitrary colours" grep -q "background 0.15 0.2502 0.3499" "$gen"
+    for n in double q16 float; do
+        "$FXRT" render "$gen" --number $n -o "$cdir/$name-$n.png" || bad "$name: render $n"
+    done
+    for n in q16 float; do
+        line=$("$FXRT" compare "$cdir/$name-double.png" "$cdir/$name-$n.png" --diff "$cdir/$name-$n-diff.png")
+        echo "$name $n vs double: $line"
+        check "$name $n vs double within 0.01% and 0 interior" within "$line" 0.01 0
+    done
+done
 report golden

@@ -65,13 +65,32 @@
 #define TRI_EDGE 0.5
 /* Box: each slab t is one fx_div of exact operands, 0.5 LSB. */
 #define BOX_T0 0.5
-/* Camera basis, per component: CAM_BASIS0 + CAM_BASIS1 / sin(up, gaze)
- * LSB (w = unit(-gaze) within NORM_ERR; u = unit(up x w) turns with w's
- * error divided by sin(up, gaze); v = unit(w x u) inherits both). A
- * perspective direction adds its own normalisation (CAM_DIR0). */
-#define CAM_BASIS0 1.0
-#define CAM_BASIS1 1.0
-#define CAM_DIR0 NORM_ERR
+/* Camera CAPS: constant numbers of LSB that hold for every accepted camera,
+ * however close up is to the gaze (down to the rejected 0.895 degrees),
+ * however short or long gaze and up are, for any image size and fov
+ * (docs/ACCURACY.md, "Camera", derives each):
+ *  - basis u, v, w, per component: each is normalised once from an exact
+ *    wide vector (0.5 LSB, plus 2^-13 from keeping 30 bits): cap 1 LSB;
+ *  - perspective ray direction, per component: basis error through
+ *    r = -F w + ix u + iy v (sqrt(3) x 0.87), fwd's rounding (0.87 / |r|,
+ *    |r| >= F >= 1), focal (half its relative error, <= 1 LSB), the final
+ *    normalisation (0.5): cap 4 LSB;
+ *  - orthographic direction -w: cap 1 LSB (the basis cap);
+ *  - orthographic origin e + ou u + ov v, per component: 4 roundings
+ *    (2 LSB) and the step's wide rounding (0.1) plus the basis error times
+ *    the offsets, 0.501 (|ou| + |ov|) LSB (0.5 + 2^-13 per basis component),
+ *    |ou| + |ov| <= 8192
+ *    in the domain: at most CAM_ORIGIN_CAP = 4110 LSB (0.063 units; the
+ *    proportional form is asserted too);
+ *  - focal F = H cot(fov/2): within 1 LSB + (2^-15 + 2e-7) F, so at most
+ *    CAM_FOCAL_CAP = 66000 LSB (1.0 unit) at the narrow limit F = 32767. */
+#define CAM_BASIS_CAP 1.0
+#define CAM_DIR_CAP 4.0
+#define CAM_ORIGIN_BASE 2.1
+#define CAM_ORIGIN_PER_UNIT 0.501
+#define CAM_ORIGIN_CAP 4110.0
+#define CAM_FOCAL_REL (1.0 / 32768 + 2e-7)
+#define CAM_FOCAL_CAP 66000.0
 
 /* ---- random numbers ---------------------------------------------------- */
 
@@ -601,8 +620,11 @@ static void gen_camera(rng_t *r, dcase_t *c)
         /* fov: anywhere in (0, 180), or near the narrow limit
          * H cot(fov/2) <= 32767 where the rays are longest. */
         double F = 32767.0 * (1.0 - logu(r, 1e-7, 1.0));
-        if (irand(r, 3) == 0)
+        int pick = irand(r, 6);
+        if (pick <= 1)
             cam->fov_deg = uniform(r, 0.5, 179.5);
+        else if (pick == 2) /* near the wide limit H cot(fov/2) >= 1 */
+            cam->fov_deg = 2.0 * atan(cam->height / logu(r, 0.5, 4.0)) * 180.0 / PI;
         else
             cam->fov_deg = 2.0 * atan(cam->height / fmax(F, 0.01)) * 180.0 / PI;
         if (c->mode == 7) {
@@ -718,6 +740,7 @@ typedef struct {
     double base, cond;
     double err, bound;               /* |t_q - t_d| (camera: worst direction component), LSB */
     double err2, base2, cond2, bound2; /* camera: worst origin component, LSB */
+    double err_basis, err_focal;     /* camera: worst basis component, focal error (LSB) */
     double rel;                      /* |t_q - t_d| / max(t_d, 1) */
     const char *fail;                /* NULL, or what was violated */
 } dres_t;
@@ -963,54 +986,38 @@ static void eval_box(const dcase_t *c, dres_t *res)
     }
 }
 
-/* Camera. The Q16.16 basis is within `basis` LSB per component: w within
- * NORM_ERR, u = unit(up x w) inherits w's error divided by sin(up, gaze),
- * v both, plus one rounding each (CAM_BASIS0 + CAM_BASIS1 / sin).
- * Perspective: r = fwd + ix u + iy v, d = r / |r|, so d moves by the
- * basis error weighted by (H cot + |ix| + |iy|) / |r|, the rounding of
- * fwd (0.5 LSB per component / |r|), the cot's relative error times
- * H cot |(ix, iy)| / |r|^2, and the final normalisation (CAM_DIR0). The
- * cot's relative error is fx_cot_deg's (1 LSB + 1e-7 relative) plus the
- * rounding of fov/2 to Q16.16 degrees (0.5 LSB), which moves cot by
- * 0.5 LSB (pi/180) / (sin cos). Orthographic: d = -w (NORM_ERR); the
- * origin moves by the basis error times the offsets |ou| + |ov| plus 2 LSB
- * of roundings (the offsets and their products with u and v). */
+/* Camera: every quantity against its cap (see CAM_*_CAP above). Inputs
+ * are the same rounded values in both builds. */
 static void eval_camera(const dcase_t *c, dres_t *res)
 {
     const diffk_cam_t *cam = &c->cam;
     diffk_ray_t rq16[CAM_PIXELS], rdbl[CAM_PIXELS];
     res->sq = diffk_cam_q16(cam, CAM_PIXELS, c->px, c->py, rq16);
     res->sd = diffk_cam_double(cam, CAM_PIXELS, c->px, c->py, rdbl);
-    /* The exact basis from the rounded inputs. */
-    double w[3], u[3], v[3];
-    copy3(w, cam->gaze);
-    scale3(w, -1.0);
-    normalize3(w);
-    cross3(cam->up, w, u);
-    double upl = norm3(cam->up), sinug = norm3(u) / upl;
-    normalize3(u);
-    cross3(w, u, v);
     int H = cam->height, W = cam->width;
     double theta = cam->fov_deg / 2 * PI / 180, cot = 1 / tan(theta);
-    double rel_cot = (LSB + 1e-7 * cot) / cot + 0.5 * LSB * PI / 180 / (sin(theta) * cos(theta));
     if (res->sq != 0 || res->sd != 0) {
         if (res->sq == res->sd) {
             res->rejected = true;
             return;
         }
         res->disagree = true;
-        /* Borderline: H cot(fov/2) within the q16 cot's error of 32767, or
-         * cot within it of rounding to 0;
-         * up x w within the rounding of w of zero; the orthographic extent
-         * within the rounding of its reach, round(round(s/2) W / H) +
-         * round(s/2), i.e. 0.5 W/H + 1 LSB. */
+        /* Borderline, in units of the q16 test's rounding: H cot(fov/2)
+         * near 32767 (narrow) or near 1 (wide), with cot within
+         * CAM_FOCAL_REL; sin(up, gaze)^2 near 2^-12 (q16 decides exactly
+         * on the same inputs, so only double's own rounding); the
+         * orthographic extent within the rounding of its reach,
+         * round(round(s/2) W / H) + round(s/2), i.e. 0.5 W/H + 1 LSB. */
         double br = INFINITY;
         if (cam->kind == DIFFK_PERSPECTIVE) {
-            br = ratio(H * cot - 32767, H * cot * rel_cot);
-            /* Just below 180 degrees the q16 cot rounds to 0 (rejected). */
-            br = fmin(br, ratio(cot, 0.5 * LSB + cot * rel_cot));
+            double F = H * cot;
+            br = ratio(F - 32767, F * CAM_FOCAL_REL + LSB);
+            br = fmin(br, ratio(F - 1, F * CAM_FOCAL_REL + LSB));
         }
-        br = fmin(br, ratio(sinug * upl, (sqrt(3.0) * NORM_ERR * upl + 1) * LSB));
+        double cr[3];
+        cross3(cam->gaze, cam->up, cr);
+        double s2 = dot3(cr, cr) / (dot3(cam->gaze, cam->gaze) * dot3(cam->up, cam->up));
+        br = fmin(br, ratio(s2 - 1.0 / 4096, 1e-12 / 4096));
         if (cam->kind == DIFFK_ORTHOGRAPHIC) {
             double hh = cam->scale / 2, reach = hh * W / H + hh;
             for (int i = 0; i < 3; i++)
@@ -1024,51 +1031,54 @@ static void eval_camera(const dcase_t *c, dres_t *res)
     }
     res->band_ratio = INFINITY;
     res->compared = true;
-    double basis = CAM_BASIS0 + CAM_BASIS1 / sinug; /* LSB per component */
-    double worst_d = -1, worst_o = -1;
+    /* Basis and focal. */
+    double bq[3][3], bd[3][3], fq = 0, fd = 0;
+    if (diffk_cam_basis_q16(cam, bq, &fq) != 0 || diffk_cam_basis_double(cam, bd, &fd) != 0) {
+        res->fail = "cam_setup differs between calls";
+        return;
+    }
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < 3; i++)
+            res->err_basis = fmax(res->err_basis, fabs(bq[k][i] - bd[k][i]) / LSB);
+    res->err_focal = fabs(fq - fd) / LSB;
+    double focal_bound = cam->kind == DIFFK_PERSPECTIVE ? 1.0 + CAM_FOCAL_REL * fd / LSB : 0.0;
+    /* Rays. */
+    double worst_o = -1;
+    res->err = 0;
+    res->base = cam->kind == DIFFK_PERSPECTIVE ? CAM_DIR_CAP : CAM_BASIS_CAP;
+    res->cond = 0;
     for (int k = 0; k < CAM_PIXELS; k++) {
         double ix = 2.0 * c->px[k] - W + 1, iy = 2.0 * c->py[k] - H + 1;
-        double bd, cd, bo, co;
-        if (cam->kind == DIFFK_PERSPECTIVE) {
-            double F = H * cot, r[3];
-            for (int i = 0; i < 3; i++)
-                r[i] = -F * w[i] + ix * u[i] + iy * v[i];
-            double rl = norm3(r), side = sqrt(ix * ix + iy * iy);
-            bd = CAM_DIR0 + 0.5 * sqrt(3.0) / rl;
-            cd = basis * (F + fabs(ix) + fabs(iy)) / rl + rel_cot / LSB * F * side / (rl * rl);
-            bo = co = 0;
-        } else {
+        double co = 0;
+        if (cam->kind == DIFFK_ORTHOGRAPHIC) {
             double ou = cam->scale * W / (2.0 * H * (W > 1 ? W - 1 : 1)) * ix;
             double ov = cam->scale / (2.0 * (H > 1 ? H - 1 : 1)) * iy;
-            bd = NORM_ERR;
-            cd = 0;
-            bo = 2.0;
-            co = basis * (fabs(ou) + fabs(ov));
+            co = CAM_ORIGIN_PER_UNIT * (fabs(ou) + fabs(ov));
         }
         for (int i = 0; i < 3; i++) {
-            double ed = fabs(rq16[k].d[i] - rdbl[k].d[i]) / LSB;
+            res->err = fmax(res->err, fabs(rq16[k].d[i] - rdbl[k].d[i]) / LSB);
             double eo = fabs(rq16[k].o[i] - rdbl[k].o[i]) / LSB;
-            double rd = ed / (bd + cd), ro = bo + co > 0 ? eo / (bo + co) : (eo > 0 ? INFINITY : 0);
-            if (rd > worst_d) {
-                worst_d = rd;
-                res->err = ed;
-                res->base = bd;
-                res->cond = cd;
-            }
+            double ro = eo / (CAM_ORIGIN_BASE + co);
             if (ro > worst_o) {
                 worst_o = ro;
                 res->err2 = eo;
-                res->base2 = bo;
+                res->base2 = CAM_ORIGIN_BASE;
                 res->cond2 = co;
             }
         }
     }
-    res->bound = MARGIN * (res->base + res->cond);
-    res->bound2 = MARGIN * (res->base2 + res->cond2);
-    if (!(res->err <= res->bound))
-        res->fail = "ray direction outside the bound";
-    else if (!(res->err2 <= res->bound2))
-        res->fail = "ray origin outside the bound";
+    res->bound = res->base;
+    res->bound2 = res->base2 + res->cond2;
+    if (!(res->err_basis <= CAM_BASIS_CAP))
+        res->fail = "camera basis beyond its cap";
+    else if (!(res->err_focal <= focal_bound && res->err_focal <= CAM_FOCAL_CAP))
+        res->fail = "focal beyond its cap";
+    else if (!(res->err <= res->bound))
+        res->fail = "ray direction beyond its cap";
+    else if (!(res->err2 <= res->bound2 && res->err2 <= CAM_ORIGIN_CAP))
+        res->fail = "ray origin beyond its cap";
+    else if (!(res->bound2 <= CAM_ORIGIN_CAP))
+        res->fail = "orthographic offsets beyond the domain (cap would not hold)";
 }
 
 static void diff_eval(const dcase_t *c, dres_t *res)
@@ -1114,9 +1124,10 @@ static void result_print(FILE *f, const dcase_t *c, const dres_t *r)
     if (c->kind == K_CAMERA) {
         fprintf(f, "  cam_setup q16 %d, double %d", r->sq, r->sd);
         if (r->compared)
-            fprintf(f, "; direction err %.3f LSB (bound %.3f = %.2f x (%.3f + %.3f)), origin err %.3f LSB "
-                       "(bound %.3f = %.2f x (%.3f + %.3f))",
-                    r->err, r->bound, MARGIN, r->base, r->cond, r->err2, r->bound2, MARGIN, r->base2, r->cond2);
+            fprintf(f, "; basis err %.3f LSB (cap %.1f), focal err %.3f LSB (cap %.0f), direction err %.3f LSB "
+                       "(cap %.1f), origin err %.3f LSB (bound %.3f = %.1f + %.3f, cap %.0f)",
+                    r->err_basis, CAM_BASIS_CAP, r->err_focal, CAM_FOCAL_CAP, r->err, r->bound, r->err2, r->bound2,
+                    r->base2, r->cond2, CAM_ORIGIN_CAP);
         else if (r->disagree)
             fprintf(f, "; band ratio %.3g (in band iff <= %.2f)", r->band_ratio, MARGIN);
         fprintf(f, "\n");
@@ -1156,6 +1167,7 @@ typedef struct {
     dmax_t cond_use;   /* (err - base) / cond where cond > 10 base */
     dmax_t band_use;   /* band_ratio of cases where the builds differ */
     dmax_t err2, err2_wc, ratio2; /* camera origins */
+    dmax_t basis, focal;          /* camera basis component, focal (LSB) */
     dcase_t worst_c;   /* the case of the worst ratio */
     dres_t worst_r;
     dcase_t worst_err_c; /* the case of the worst err */
@@ -1209,6 +1221,8 @@ static void stat_add(dstat_t *s, long i, const dcase_t *c, const dres_t *r)
     if (r->cond > 10 * r->base)
         dmax(&s->cond_use, (r->err - r->base) / r->cond, i);
     if (c->kind == K_CAMERA) {
+        dmax(&s->basis, r->err_basis, i);
+        dmax(&s->focal, r->err_focal, i);
         dmax(&s->err2, r->err2, i);
         if (r->cond2 <= r->base2)
             dmax(&s->err2_wc, r->err2, i);
@@ -1258,6 +1272,8 @@ static void stat_merge(dstat_t *a, const dstat_t *b)
     dmax_merge(&a->err2, &b->err2);
     dmax_merge(&a->err2_wc, &b->err2_wc);
     dmax_merge(&a->ratio2, &b->ratio2);
+    dmax_merge(&a->basis, &b->basis);
+    dmax_merge(&a->focal, &b->focal);
 }
 
 static double now_s(void)
@@ -1329,6 +1345,7 @@ static int replay(const char *spec)
 
 static void print_table(dstat_t st[K_COUNT], double secs)
 {
+    const dstat_t *camera_caps = NULL;
     printf("\ndifferential test, Q16.16 against double: %ld cases per kind, seed %#llx, %d job%s, %.1f s\n", n_cases,
            (unsigned long long)diff_seed, n_jobs, n_jobs == 1 ? "" : "s", secs);
     printf("errors in LSB (2^-16); \"cond <= base\": cases whose conditioning term is at most the base term\n\n");
@@ -1345,11 +1362,23 @@ static void print_table(dstat_t st[K_COUNT], double secs)
                    CAM_PIXELS, s->cases, s->hits_q, s->band, s->disagree, s->disagree_out, s->err_wc.worst,
                    s->err.worst, s->ratio.worst);
             printf("| | | | | | | | origin %.3f | origin %.3f | | |\n", s->err2_wc.worst, s->err2.worst);
+            camera_caps = s;
         } else {
             printf("| %s | %ld | %ld | %ld | %ld | %ld | %ld | %.3f | %.4g | %.3g | %.3f |\n", kind_name[k], s->cases,
                    s->hits_q, s->band, s->disagree, s->disagree_out, s->far, s->err_wc.worst, s->err.worst,
                    s->rel.worst, s->ratio.worst);
         }
+    }
+    if (camera_caps) {
+        const dstat_t *s = camera_caps;
+        printf("\ncamera caps (LSB, per component; both builds from the same rounded inputs):\n\n");
+        printf("| quantity | cap | worst measured |\n|---|---:|---:|\n");
+        printf("| basis u, v, w | %.1f | %.3f |\n", CAM_BASIS_CAP, s->basis.worst);
+        printf("| ray direction (perspective; orthographic: basis cap) | %.1f | %.3f |\n", CAM_DIR_CAP, s->err.worst);
+        printf("| orthographic origin | %.0f (%.1f + %.4f per unit of offset) | %.3f |\n", CAM_ORIGIN_CAP,
+               CAM_ORIGIN_BASE, CAM_ORIGIN_PER_UNIT, s->err2.worst);
+        printf("| focal H cot(fov/2) | %.0f (1 + %.3g F) | %.3f |\n", CAM_FOCAL_CAP, CAM_FOCAL_REL * 65536,
+               s->focal.worst);
     }
     printf("\ntightness of the analysis (bound = %.2f x (base + cond); band = %.2f x the rounding's reach):\n\n", MARGIN,
            MARGIN);

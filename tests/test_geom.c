@@ -131,7 +131,8 @@ static ray_t mkray(dv_t o, dv_t d)
     return r;
 }
 
-static color_t col(double r, double g, double b) { return color_make(N(r), N(g), N(b)); }
+/* A colour from intensity fractions, stored as the scene loader does (1/255 units). */
+static color_t col(double r, double g, double b) { return color_make(N(255 * r), N(255 * g), N(255 * b)); }
 
 static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
 static uint64_t rng(void) { return check_rng_next(&rng_state); }
@@ -283,7 +284,9 @@ static void test_cam_pixels(void)
         {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 0, 8, 6},
         {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0, 5, 3},
         {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1, 0, 64, 48},
-        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 170, 0, 9, 7},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 170, 0, 9, 70},
+        {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 179, 0, 5, 120},
+        {CAM_PERSPECTIVE, {0.5, -1, 2}, {0.3, -1, 0.2}, {0.2, -0.99, 0.2}, 50, 0, 40, 30},
         {CAM_PERSPECTIVE, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0, 640, 430},
         {CAM_PERSPECTIVE, {3, 3, 3}, {-3, -3, -3}, {0, 1, 0}, 45, 0, 640, 430},
         {CAM_PERSPECTIVE, {-2, 1, 5}, {1, -0.5, -2}, {0.1, 1, 0.2}, 60, 0, 33, 17},
@@ -311,8 +314,13 @@ static void test_cam_perspective_angles(void)
             int32_t W = 5, H = hs[j];
             double a = D(N(fovs[i]));
             cam_t c;
-            CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0), N(fovs[i]),
-                            NUM_ZERO, W, H) == CAM_OK);
+            cam_err_t err = cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0), N(fovs[i]),
+                                      NUM_ZERO, W, H);
+            if (H / tan(a / 2 * PI / 180) < 1) { /* the grid nearer than half a pixel */
+                CHECK_MSG(err == CAM_ERR_WIDE, "fov %g H %d: %s", a, (int)H, cam_strerror(err));
+                continue;
+            }
+            CHECK(err == CAM_OK);
             /* Middle of the top row: angle atan(((H-1)/2) / ((H/2) / tan(a/2))) with -w. */
             ray_t top, bottom;
             cam_ray(&c, 2, H - 1, &top);
@@ -418,8 +426,48 @@ static void test_cam_errors(void)
           == CAM_ERR_SIZE);
     CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(45), NUM_ZERO, FXRT_MAX_DIM, FXRT_MAX_DIM)
           == CAM_OK);
-    /* Every code has its own text. */
+    /* H cot(fov/2) >= 1: at one pixel high fov <= 90 degrees, at 120
+     * pixels fov <= 179.045 degrees. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(89.99), NUM_ZERO, 1, 1) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(90.01), NUM_ZERO, 1, 1) == CAM_ERR_WIDE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(179.04), NUM_ZERO, 160, 120) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(179.05), NUM_ZERO, 160, 120) == CAM_ERR_WIDE);
+    /* Up at least asin(1/64) = 0.8952 degrees from +-gaze: up = (0, s, -1)
+     * with s = tan(angle). */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, V3(0, 0.0157, -1), NUM(45), NUM_ZERO, 8, 6) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, V3(0, 0.0155, -1), NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_UP);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, V3(0, -0.0157, 1), NUM(45), NUM_ZERO, 8, 6) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, V3(0, -0.0155, 1), NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_UP);
+    /* The same at any length of up and gaze (the test is scale-free). */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, V3(0, 0, -8000), V3(0, 0.0157 * 0.25, -0.25), NUM(45), NUM_ZERO,
+                    8, 6) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, V3(0, 0, -0.001), V3(0, 0.0155 * 8000, -8000), NUM(45), NUM_ZERO,
+                    8, 6) == CAM_ERR_UP);
+    /* Components beyond the coordinate domain. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(8192.5, 0, 0), g, up, NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_RANGE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, V3(0, 0, -9000), up, NUM(45), NUM_ZERO, 8, 6) == CAM_ERR_RANGE);
+    CHECK(cam_setup(&c, CAM_ORTHOGRAPHIC, o, g, V3(0, 9000, 0), NUM_ZERO, NUM(1), 8, 6) == CAM_ERR_RANGE);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(8192, -8192, 8192), V3(-8192, 8192, -8192), V3(8192, 8192, 0),
+                    NUM(45), NUM_ZERO, 8, 6) == CAM_OK);
+    /* Every code has its own text; the up message says how to look down. */
     CHECK(cam_strerror(CAM_ERR_NARROW) != cam_strerror(CAM_ERR_FOV));
+    CHECK(cam_strerror(CAM_ERR_WIDE) != cam_strerror(CAM_ERR_FOV));
+    {
+        const char *m = cam_strerror(CAM_ERR_UP), *want = "'gaze 0 -1 0 up 0 0 -1'";
+        bool found = false;
+        for (const char *q = m; *q && !found; q++) {
+            size_t k = 0;
+            while (want[k] && q[k] == want[k])
+                k++;
+            found = want[k] == '\0';
+        }
+        CHECK_MSG(found, "CAM_ERR_UP text lacks the straight-down hint: %s", m);
+    }
+    /* Looking straight down with that hint works: u = +x, v = -z. */
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, V3(0, -1, 0), V3(0, 0, -1), NUM(45), NUM_ZERO, 8, 6) == CAM_OK);
+    CHECK_VEC_ABS(c.u, dv(1, 0, 0), 0);
+    CHECK_VEC_ABS(c.v, dv(0, 0, -1), 0);
+    CHECK_VEC_ABS(c.w, dv(0, 1, 0), 0);
 }
 
 /* A fov the camera accepts must give rays that look forward: in particular
@@ -434,7 +482,8 @@ static void test_cam_wide_fov(void)
         cam_err_t err = cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0),
                                   N(fovs[i]), NUM_ZERO, 5, 3);
         if (err != CAM_OK) {
-            CHECK(err == CAM_ERR_FOV);
+            /* 3 rows: H cot(fov/2) < 1 from 143.1 degrees on. */
+            CHECK(err == CAM_ERR_FOV || err == CAM_ERR_WIDE);
             continue;
         }
         ray_t r;
@@ -1249,8 +1298,44 @@ static void test_render(void)
     CHECK(rows[0] + rows[1] + rows[2] + rows[3] + rows[4] + rows[5] == 0);
 }
 
+/* ---- colour: representation and the 8-bit rule (docs/ACCURACY.md) ----- */
+
+static void test_color_rule(void)
+{
+    /* The literal quantises as the loader does: 0.7 -> 178.5 exactly. */
+    static const color_t lit = {COLOR_FRAC(0.7), COLOR_FRAC(0.9), COLOR_FRAC(0.3)};
+    CHECK(lit.r == N(178.5) && lit.g == N(229.5) && D(lit.b) == floor(0.3 * 255 * 65536 + 0.5) / 65536);
+    rgb8_t p = color_to_rgb8(lit);
+    CHECK_MSG(p.r == 179 && p.g == 230 && p.b == 77, "0.7 0.9 0.3 -> %d %d %d", p.r, p.g, p.b);
+    /* Round half up, exactly at the tie and one LSB below it, every k. */
+    long bad = 0;
+    for (int k = 0; k < 256; k++) {
+        num_t at = N(k + 0.5), below = N(k + 0.5 - 1.0 / 65536);
+        rgb8_t a = color_to_rgb8(color_make(at, below, N(k)));
+        int want_a = k + 1 > 255 ? 255 : k + 1;
+        if (a.r != want_a || a.g != k || a.b != k)
+            bad++;
+        CHECK_SWEEP(a.r == want_a && a.g == k && a.b == k, "k %d: tie -> %d, below -> %d, exact -> %d", k, a.r, a.g,
+                    a.b);
+    }
+    CHECK_MSG(bad == 0, "%ld of 256 levels wrong", bad);
+    /* Clamping, and exact 8-bit colours. */
+    p = color_to_rgb8(color_make(N(-3), N(300), COLOR_MAX));
+    CHECK(p.r == 0 && p.g == 255 && p.b == 255);
+    for (int k = 0; k < 256; k++) {
+        p = color_to_rgb8(color_from_rgb8((uint8_t)k, (uint8_t)(255 - k), (uint8_t)(k ^ 0x55)));
+        CHECK_SWEEP(p.r == k && p.g == 255 - k && p.b == (k ^ 0x55), "rgb8 %d round trip", k);
+    }
+    /* A fraction keeps a colour in 1/255 units: 200 x 0.5 = 100. */
+    p = color_to_rgb8(color_scale(color_from_rgb8(200, 100, 51), N(0.5)));
+    CHECK(p.r == 100 && p.g == 50 && p.b == 26);
+    p = color_to_rgb8(color_filter(color_from_rgb8(200, 100, 50), N(0.25), N(1), NUM_ZERO));
+    CHECK(p.r == 50 && p.g == 100 && p.b == 0);
+}
+
 int main(void)
 {
+    test_color_rule();
     test_cam_basis_seed();
     test_cam_basis_fig7();
     test_cam_pixels();

@@ -222,8 +222,14 @@ static void test_limits_accepted(void)
                   0,
               "%s", g_err);
     CHECK(vec_is(g_scene.camera.eye, 1, 0.5, 100));
-    /* Nearly but not quite parallel (ratio 1e-5 > 1e-6). */
-    CHECK_MSG(parse_str("camera perspective eye 0 0 0 gaze 0 0 -1 up 0.01 0 -1000 fov 45\n") == 0,
+    /* Up 0.91 degrees from the gaze (sin 0.0159 >= 1/64), and the
+     * straight-down camera the rejection message suggests. */
+    CHECK_MSG(parse_str("camera perspective eye 0 0 0 gaze 0 0 -1 up 0 0.0159 1 fov 45\n") == 0,
+              "%s", g_err);
+    CHECK_MSG(parse_str("camera perspective eye 0 5 0 gaze 0 -1 0 up 0 0 -1 fov 45\n") == 0, "%s", g_err);
+    /* Short directions whose components Q16.16 holds exactly are fine. */
+    CHECK_MSG(parse_str("camera perspective eye 0 0 0 gaze 0 0 -0.0001 up 0.0000152587890625 0.0001220703125 0 fov 45\n"
+                        "plane point 0 0 0 normal 0 0.00002 0 color 0 1 0\n") == 0,
               "%s", g_err);
     /* Leading zeros in image size. */
     CHECK_MSG(parse_str("image 0640 0480\n" CAM) == 0, "%s", g_err);
@@ -305,6 +311,21 @@ static const struct error_case error_cases[] = {
     {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 0 3 fov 45\n", 1, "up is parallel to gaze"},
     {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0.001 0 -1000 fov 45\n", 1,
      "up is parallel to gaze"},
+    /* Looking straight down with up along y: the message says what to write. */
+    {"camera perspective eye 0 5 0 gaze 0 -1 0 up 0 1 0 fov 45\n", 1,
+     "up is parallel to gaze (or within 0.9 degrees of it); to look straight down use e.g. "
+     "'gaze 0 -1 0 up 0 0 -1'"},
+    /* 0.88 degrees (sin 0.01536 < 1/64) is rejected, 0.91 degrees accepted (below). */
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 0.01536 1 fov 45\n", 1, "up is parallel to gaze"},
+    /* Directions whose Q16.16 rounding would turn them by more than 4 LSB. */
+    {"camera perspective eye 0 1 4 gaze 0.00002 -0.00003 -0.00011 up 0 1 0 fov 40\n", 1,
+     "gaze is too short for Q16.16: rounding it to 1/65536 turns the view by"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0.00003 0.0002 0 fov 40\n", 1,
+     "up is too short or too close to gaze for Q16.16: rounding turns the camera's roll by"},
+    {"camera perspective eye 0 0 0 gaze 1 2 3 up 0.1 0.2 0.33 fov 40\n", 1,
+     "up is too short or too close to gaze for Q16.16"},
+    {CAM "plane point 0 0 0 normal 0.00002 0.00011 0.00003 color 0 1 0\n", 2,
+     "normal is too short for Q16.16: rounding it to 1/65536 turns it by"},
     {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 180\n", 1,
      "fov must be inside (0, 180), got 180"},
     {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 0\n", 1,
