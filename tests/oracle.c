@@ -538,25 +538,31 @@ int main(int argc, char **argv)
         if (strcmp(a, "--random") == 0 && i + 1 < argc) {
             if (parse_u64(argv[++i], &nrandom) != 0) {
                 usage();
+                free(files);
                 return 2;
             }
         } else if (strcmp(a, "--seed") == 0 && i + 1 < argc) {
             if (parse_u64(argv[++i], &seed) != 0) {
                 usage();
+                free(files);
                 return 2;
             }
         } else if (strcmp(a, "--print-scene") == 0 && i + 1 < argc) {
             char text[RANDSCENE_MAX_TEXT];
             if (parse_u64(argv[++i], &seed) != 0) {
                 usage();
+                free(files);
                 return 2;
             }
             randscene_text(seed, text, sizeof text);
             fputs(text, stdout);
+            free(files);
             return 0;
         } else if (strcmp(a, "--known") == 0 && i + 1 < argc) {
-            if (load_known(argv[++i]) != 0)
+            if (load_known(argv[++i]) != 0) {
+                free(files);
                 return 2;
+            }
         } else if (strcmp(a, "--stress-expect") == 0) {
             stress = 1;
         } else if (strcmp(a, "--write") == 0) {
@@ -565,6 +571,7 @@ int main(int argc, char **argv)
             verbose = 1;
         } else if (a[0] == '-') {
             usage();
+            free(files);
             return 2;
         } else {
             files[nfiles++] = a;

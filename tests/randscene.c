@@ -139,6 +139,26 @@ static double rs_len(rs_vec_t a)
     return sqrt(rs_dot(a, a));
 }
 
+/* Three draws, in order (C leaves the order of the arguments of one call
+ * open, so no expression here makes two draws). */
+static rs_vec_t rs_box3(rs_t *r, double lo, double hi)
+{
+    rs_vec_t o;
+    o.x = rs_uniform(r, lo, hi);
+    o.y = rs_uniform(r, lo, hi);
+    o.z = rs_uniform(r, lo, hi);
+    return o;
+}
+
+static rs_vec_t rs_log3(rs_t *r, double lo, double hi)
+{
+    rs_vec_t o;
+    o.x = rs_log(r, lo, hi);
+    o.y = rs_log(r, lo, hi);
+    o.z = rs_log(r, lo, hi);
+    return o;
+}
+
 /* A random unit vector (uniform on the sphere). */
 static rs_vec_t rs_sphere(rs_t *r)
 {
@@ -197,11 +217,11 @@ static void rs_color(rs_t *r, const char *key)
 static rs_vec_t rs_anchor(rs_t *r, rs_vec_t eye, rs_vec_t fwd, double spread, double dist)
 {
     if (rs_chance(r, 0.08)) {
-        rs_vec_t p = {rs_uniform(r, -RS_LIM, RS_LIM), rs_uniform(r, -RS_LIM, RS_LIM), rs_uniform(r, -RS_LIM, RS_LIM)};
-        return p;
+        return rs_box3(r, -RS_LIM, RS_LIM);
     }
     double along = rs_chance(r, 0.15) ? -rs_uniform(r, 0, 1.5) : rs_uniform(r, 0, 1.5);
-    rs_vec_t side = rs_scale(rs_sphere(r), rs_uniform(r, 0, spread));
+    rs_vec_t side = rs_sphere(r);
+    side = rs_scale(side, rs_uniform(r, 0, spread));
     return rs_add(eye, rs_scale(rs_add(rs_scale(fwd, along), side), dist));
 }
 
@@ -210,7 +230,8 @@ static void rs_sphere_obj(rs_t *r, rs_vec_t eye, rs_vec_t fwd, double spread, do
     rs_vec_t c;
     double rad;
     if (rs_chance(r, 0.1)) { /* around the eye */
-        rs_vec_t off = rs_scale(rs_sphere(r), rs_log(r, 1e-3, 100));
+        rs_vec_t off = rs_sphere(r);
+        off = rs_scale(off, rs_log(r, 1e-3, 100));
         c = rs_vnum(rs_add(eye, off), RS_LIM);
         rad = rs_num(rs_len(rs_add(c, rs_scale(eye, -1))) * rs_uniform(r, 1.01, 3) + 1e-3, FXRT_RADIUS_LIMIT);
     } else {
@@ -231,7 +252,12 @@ static void rs_box_obj(rs_t *r, rs_vec_t eye, rs_vec_t fwd, double spread, doubl
 {
     rs_vec_t c, h;
     int around = rs_chance(r, 0.1);
-    c = around ? rs_add(eye, rs_scale(rs_sphere(r), rs_log(r, 1e-3, 10))) : rs_anchor(r, eye, fwd, spread, dist);
+    if (around) {
+        c = rs_sphere(r);
+        c = rs_add(eye, rs_scale(c, rs_log(r, 1e-3, 10)));
+    } else {
+        c = rs_anchor(r, eye, fwd, spread, dist);
+    }
     double size = around ? rs_log(r, 1e-2, 200) : dist * rs_log(r, 1e-3, 0.5);
     if (rs_chance(r, 0.1))
         size = rs_log(r, 1e-3, 2 * RS_LIM);
@@ -246,8 +272,8 @@ static void rs_box_obj(rs_t *r, rs_vec_t eye, rs_vec_t fwd, double spread, doubl
     if (around) {
         /* The eye inside: each face 1e-3..1 box sizes away from it, and
          * now and then one face exactly through the eye (on the boundary). */
-        rs_vec_t a = {size * rs_log(r, 1e-3, 1), size * rs_log(r, 1e-3, 1), size * rs_log(r, 1e-3, 1)};
-        rs_vec_t b = {size * rs_log(r, 1e-3, 1), size * rs_log(r, 1e-3, 1), size * rs_log(r, 1e-3, 1)};
+        rs_vec_t a = rs_scale(rs_log3(r, 1e-3, 1), size);
+        rs_vec_t b = rs_scale(rs_log3(r, 1e-3, 1), size);
         if (rs_chance(r, 0.2))
             a.x = 0;
         lo = rs_vnum(rs_add(eye, rs_scale(a, -1)), RS_LIM);
@@ -322,12 +348,13 @@ size_t randscene_text(uint64_t seed, char *buf, size_t len)
     rs_vec_t eye;
     int mode = rs_int(&r, 0, 2);
     if (mode == 0)
-        eye = (rs_vec_t){rs_uniform(&r, -2, 2), rs_uniform(&r, -2, 2), rs_uniform(&r, -2, 2)};
-    else if (mode == 1)
-        eye = rs_scale(rs_sphere(&r), rs_log(&r, 1e-3, RS_LIM * 1.7));
+        eye = rs_box3(&r, -2, 2);
+    else if (mode == 1) {
+        eye = rs_sphere(&r);
+        eye = rs_scale(eye, rs_log(&r, 1e-3, RS_LIM * 1.7));
+    }
     else
-        eye = (rs_vec_t){rs_uniform(&r, -RS_LIM, RS_LIM), rs_uniform(&r, -RS_LIM, RS_LIM),
-                         rs_uniform(&r, -RS_LIM, RS_LIM)};
+        eye = rs_box3(&r, -RS_LIM, RS_LIM);
     if (ortho) {
         /* View height s; the view must stay inside the domain:
          * |eye_i| + s W / (2 H) + s / 2 <= 8192 (with a margin for rounding). */
@@ -354,8 +381,11 @@ size_t randscene_text(uint64_t seed, char *buf, size_t len)
     rs_vec_t gaze = rs_direction(&r), up;
     for (;;) {
         up = rs_direction(&r);
-        if (rs_chance(&r, 0.05)) /* nearly parallel to the gaze (the parser accepts > 1e-6) */
-            up = rs_vnum(rs_add(rs_scale(gaze, 1 / rs_len(gaze)), rs_scale(rs_sphere(&r), rs_log(&r, 1e-4, 1e-2))), RS_LIM);
+        if (rs_chance(&r, 0.05)) { /* nearly parallel to the gaze (the parser accepts > 1e-6) */
+            rs_vec_t off = rs_sphere(&r);
+            off = rs_scale(off, rs_log(&r, 1e-4, 1e-2));
+            up = rs_vnum(rs_add(rs_scale(gaze, 1 / rs_len(gaze)), off), RS_LIM);
+        }
         double s = rs_len(rs_cross(gaze, up)), g = rs_len(gaze), u = rs_len(up);
         if (u > 0 && s > 1e-5 * g * u)
             break;
