@@ -185,13 +185,29 @@ check "fxrt has UBSan" bash -c "nm '$sfxrt' | grep -q __ubsan_handle"
 # run_suite NAME CMD...: passes when CMD exits 0, its last result line says
 # "0 failed" (if it prints one) and no sanitizer report was written.
 run_suite() {
-    local name=$1 rc line start
+    local name=$1
+    shift
+    run_quiet "$name" "$@"
+    judge_suite "$name"
+}
+
+# run_quiet NAME CMD...: runs CMD with the sanitizer options, its output in
+# $logs/NAME.log, its exit status and time in $logs/NAME.rc and .secs.
+run_quiet() {
+    local name=$1 start
     shift
     start=$(date +%s)
     (san_env "$logs/$name" && exec "$@") >"$logs/$name.log" 2>&1
-    rc=$?
+    echo $? >"$logs/$name.rc"
+    echo $(($(date +%s) - start)) >"$logs/$name.secs"
+}
+
+# judge_suite NAME: the result of a run_quiet.
+judge_suite() {
+    local name=$1 rc line
+    rc=$(cat "$logs/$name.rc")
     line=$(grep -E '[0-9]+ passed, [0-9]+ failed' "$logs/$name.log" | tail -n 1)
-    echo "$name: exit $rc, $(($(date +%s) - start)) s${line:+, $line}"
+    echo "$name: exit $rc, $(cat "$logs/$name.secs") s${line:+, $line}"
     if no_reports "$logs/$name" >"$logs/$name.reports" && [ $rc -eq 0 ] &&
         { [ -z "$line" ] || [[ $line =~ \ 0\ failed ]]; }; then
         ok
@@ -202,6 +218,13 @@ run_suite() {
     fi
 }
 
+# The two longest suites (mostly shell work around the sanitized fxrt) run
+# in the background on the second core; they are judged after the rest.
+{
+    run_quiet stress_scenes.sh env BUILD="$san" FXRT="$sfxrt" tests/stress_scenes.sh
+    run_quiet renderers.sh env BUILD="$san" FXRT="$sfxrt" tests/renderers.sh
+} &
+lane=$!
 while read -r t; do
     [ -n "$t" ] || continue
     run_suite "$(basename "$t")" "$t"
@@ -209,8 +232,6 @@ done <"$san/tests.list"
 run_suite test_diff "$san/tests/test_diff" "$SAN_DIFF_CASES"
 run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
 run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
-run_suite stress_scenes.sh env BUILD="$san" FXRT="$sfxrt" tests/stress_scenes.sh
-run_suite renderers.sh env BUILD="$san" FXRT="$sfxrt" tests/renderers.sh
 run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
 
 # --- fuzz corpora -------------------------------------------------------------
@@ -233,6 +254,10 @@ run_suite fuzz_scene-corpus "$BUILD/fuzz/fuzz_scene" -runs=0 -max_len=4096 -arti
     "$san/fuzz/scene-new" "${scene_dirs[@]}"
 run_suite fuzz_kernels-corpus "$BUILD/fuzz/fuzz_kernels" -runs="$SAN_KERNEL_RUNS" -seed=1 \
     -artifact_prefix="$san/fuzz/kernels-" "$san/fuzz/kernels-new" "${kernel_dirs[@]}"
+
+wait "$lane"
+judge_suite stress_scenes.sh
+judge_suite renderers.sh
 
 # --- no partial output ------------------------------------------------------
 rm -rf "$partial"
