@@ -9,7 +9,7 @@
  * map of the same build holds more than one id (a miss counts as an id).
  * Outside the band the two renderers must agree exactly (asserted); inside
  * it a mismatch only moves a silhouette (counted and reported, with one
- * stated cap, see ORACLE_BAND_CAP).
+ * stated cap per build, see ORACLE_BAND_CAP_Q16).
  *
  *   oracle [--random N] [--seed S] [--known FILE] [-v] [SCENE...]
  *       SCENE files at their own size (a file whose header says
@@ -37,13 +37,16 @@
  * smaller; FXRT_MAX_DIM squared would not fit memory comfortably). */
 #define ORACLE_MAX_PIXELS (4096 * 1024)
 
-/* Stated cap on silhouette-band mismatches: at most this fraction of a
- * build's band pixels, summed over all scenes of a run. The band holds
- * the pixels whose centre lies within about a pixel of an outline; the
- * two renderers decide them by different roundings (forms vs rays), so a
- * few percent may flip. A fast renderer that drew a wrong outline would
- * flip far more. Measured figures are in docs/TESTING.md. */
-#define ORACLE_BAND_CAP 0.05
+/* Stated caps on silhouette-band mismatches: at most this fraction of a
+ * build's band pixels, summed over all scenes of a run (frames listed as
+ * known findings excluded). The band holds the pixels whose centre lies
+ * within about a pixel of an outline; the two renderers decide them by
+ * different roundings (forms against rays), so a few may flip. Measured
+ * over seeds 1..20000 outside the known-finding frames: Q16.16 0.45 %,
+ * double 0.0002 % (docs/ACCURACY.md, section 8). A fast renderer that drew
+ * an outline a pixel off would flip about half the band. */
+#define ORACLE_BAND_CAP_Q16 0.02
+#define ORACLE_BAND_CAP_DOUBLE 0.005
 
 static long passed, failed;
 
@@ -605,11 +608,12 @@ int main(int argc, char **argv)
                    "neighbour's colour)\n",
                    num_name[n], t->frames, t->pixels, t->interior, t->known_interior, t->known_frames, t->band,
                    t->band_mis, t->band ? 100.0 * t->band_mis / t->band : 0.0, t->foreign);
-            if (t->band_mis <= ORACLE_BAND_CAP * t->band)
+            double cap = n == NQ16 ? ORACLE_BAND_CAP_Q16 : ORACLE_BAND_CAP_DOUBLE;
+            if (t->band_mis <= cap * t->band)
                 ok();
             else
-                bad("%s: band mismatches %ld exceed %.0f %% of %ld band pixels", num_name[n], t->band_mis,
-                    100 * ORACLE_BAND_CAP, t->band);
+                bad("%s: band mismatches %ld exceed %.1f %% of %ld band pixels", num_name[n], t->band_mis,
+                    100 * cap, t->band);
         }
         if (nknown)
             printf("oracle: %ld frames are known findings (--known), %ld known findings no longer reproduce\n",
