@@ -24,6 +24,7 @@
  *
  * Ends with "oracle: N passed, N failed" (or "stress-expect: ..."). */
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -294,6 +295,43 @@ static void oracle_file(const char *path)
     oracle_scene(path, path, &scene, scene.width, scene.height, path, 0, 0);
 }
 
+/* What the random scenes covered (printed at the end of a run). */
+static struct {
+    long scenes, ortho, objects, kind[4], eye_in_sphere, eye_in_box, behind, far, tiny;
+} cover;
+
+static void cover_scene(const scene_t *sc)
+{
+    const scene_vec_t e = sc->camera.eye, g = sc->camera.gaze;
+    int in_sphere = 0, in_box = 0, behind = 0, far = 0, tiny = 0;
+    cover.scenes++;
+    cover.ortho += sc->camera.kind == SCENE_CAM_ORTHOGRAPHIC;
+    for (int i = 0; i < sc->count; i++) {
+        const scene_obj_t *o = &sc->obj[i];
+        const scene_vec_t p = o->p[0];
+        cover.objects++;
+        cover.kind[o->kind]++;
+        if ((p.x - e.x) * g.x + (p.y - e.y) * g.y + (p.z - e.z) * g.z < 0)
+            behind = 1;
+        for (int k = 0; k < (o->kind == SCENE_TRIANGLE ? 3 : o->kind == SCENE_BOX ? 2 : 1); k++)
+            if (fabs(o->p[k].x) > 4096 || fabs(o->p[k].y) > 4096 || fabs(o->p[k].z) > 4096)
+                far = 1;
+        if (o->kind == SCENE_SPHERE) {
+            double dx = p.x - e.x, dy = p.y - e.y, dz = p.z - e.z;
+            in_sphere |= dx * dx + dy * dy + dz * dz < o->radius * o->radius;
+            tiny |= o->radius < 0.01;
+        }
+        if (o->kind == SCENE_BOX)
+            in_box |= o->p[0].x <= e.x && e.x <= o->p[1].x && o->p[0].y <= e.y && e.y <= o->p[1].y &&
+                      o->p[0].z <= e.z && e.z <= o->p[1].z;
+    }
+    cover.eye_in_sphere += in_sphere;
+    cover.eye_in_box += in_box;
+    cover.behind += behind;
+    cover.far += far;
+    cover.tiny += tiny;
+}
+
 static void oracle_random(uint64_t seed)
 {
     char text[RANDSCENE_MAX_TEXT], err[512], name[64], rerun[128];
@@ -305,6 +343,7 @@ static void oracle_random(uint64_t seed)
         bad("random scene %llu is not valid input: %s (%s)", (unsigned long long)seed, err, rerun);
         return;
     }
+    cover_scene(&scene);
     oracle_scene(name, name, &scene, scene.width, scene.height, rerun, 1, seed);
 }
 
@@ -601,6 +640,13 @@ int main(int argc, char **argv)
             oracle_random(seed + k);
         printf("oracle: %d scene files, %llu random scenes (seeds %llu..%llu)\n", nfiles,
                (unsigned long long)nrandom, (unsigned long long)seed, (unsigned long long)(seed + nrandom - 1));
+        if (cover.scenes)
+            printf("oracle: random scenes: %ld orthographic, %ld perspective; %ld objects (%ld planes, %ld spheres, "
+                   "%ld triangles, %ld boxes); scenes with the eye inside a sphere %ld, inside a box (or on it) %ld, "
+                   "an object behind the camera %ld, a coordinate beyond 4096 %ld, a radius below 0.01 %ld\n",
+                   cover.ortho, cover.scenes - cover.ortho, cover.objects, cover.kind[SCENE_PLANE],
+                   cover.kind[SCENE_SPHERE], cover.kind[SCENE_TRIANGLE], cover.kind[SCENE_BOX], cover.eye_in_sphere,
+                   cover.eye_in_box, cover.behind, cover.far, cover.tiny);
         for (int n = 0; n < NNUM; n++) {
             const tally_t *t = &tally[n];
             printf("oracle %s: %ld frames, %ld pixels compared, %ld interior mismatches (not counting %ld in %ld "
