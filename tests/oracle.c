@@ -239,8 +239,16 @@ static char *read_text(const char *path, size_t *len)
     size_t cap = 4096, n = 0;
     char *s = malloc(cap);
     for (;;) {
-        if (n + 1 >= cap)
-            s = realloc(s, cap *= 2);
+        if (s && n + 1 >= cap) {
+            char *t = realloc(s, cap *= 2);
+            if (!t)
+                free(s);
+            s = t;
+        }
+        if (!s) {
+            fclose(f);
+            return NULL;
+        }
         size_t k = fread(s + n, 1, cap - n - 1, f);
         if (k == 0)
             break;
@@ -475,6 +483,10 @@ static char *stress_rewrite(const char *text, const char *block)
     size_t tl = strlen(text), bl = strlen(block);
     char *out = malloc(tl + bl + 1);
     size_t n = 0;
+    if (!out) {
+        fprintf(stderr, "oracle: out of memory\n");
+        exit(2);
+    }
     int placed = 0, skipping = 0;
     const char *p = text;
     while (*p) {
