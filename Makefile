@@ -105,6 +105,7 @@ TEST_PREREQ  :=
 -include tests/diff.mk
 -include host/version.mk
 -include tests/color.mk
+-include tests/oracle.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)

@@ -2,14 +2,21 @@
 # The fast scanline renderer must give byte-identical Q16.16 frames to the
 # straightforward reference loop (every object at every pixel): skipping,
 # stepping and bounds may change the cost, never a pixel. Checked on every
-# scene in scenes/ and scenes/stress/ that renders, at its own size or
-# capped to 320 pixels wide to keep the reference loop quick.
+# scene in scenes/ and its subfolders, at its own size or capped to 320
+# pixels wide to keep the reference loop quick.
+#
+# A scene whose header says "# expect: rejected:" must be refused by both
+# loops (exit 2, no output file); every other scene must render. Nothing
+# is skipped: a render that fails is a failed check.
 set -u
 . "$(dirname "$0")/lib.sh"
 out=$BUILD/tests/renderers
 mkdir -p "$out"
-for scene in scenes/*.scene scenes/stress/*.scene; do
-    name=$(basename "$scene" .scene)
+n=0
+for scene in scenes/*.scene scenes/*/*.scene; do
+    [ -f "$scene" ] || continue
+    n=$((n + 1))
+    name=$(basename "$(dirname "$scene")")-$(basename "$scene" .scene)
     size=$(sed -nE 's/^image +([0-9]+) +([0-9]+).*/\1x\2/p' "$scene" | head -n 1)
     size=${size:-160x120}
     w=${size%x*} h=${size#*x}
@@ -17,10 +24,26 @@ for scene in scenes/*.scene scenes/stress/*.scene; do
         h=$(((h * 320 + w - 1) / w))
         w=320
     fi
-    if ! "$FXRT" render "$scene" --size "${w}x$h" -o "$out/$name-fast.ppm" 2>/dev/null; then
-        continue # scenes that are rejected on purpose
+    rm -f "$out/$name-fast.ppm" "$out/$name-ref.ppm"
+    if grep -q '^# expect: rejected:' "$scene"; then
+        for r in fast reference; do
+            "$FXRT" render "$scene" --size "${w}x$h" --renderer $r -o "$out/$name-$r.ppm" 2>"$out/$name-$r.err"
+            rc=$?
+            check "$scene: $r refuses it as its header says (exit $rc, want 2)" test $rc -eq 2
+            check "$scene: $r writes nothing" test ! -e "$out/$name-$r.ppm"
+        done
+        continue
     fi
-    "$FXRT" render "$scene" --size "${w}x$h" --renderer reference -o "$out/$name-ref.ppm"
-    check "$name (${w}x$h): q16 fast == reference" cmp -s "$out/$name-fast.ppm" "$out/$name-ref.ppm"
+    if ! "$FXRT" render "$scene" --size "${w}x$h" -o "$out/$name-fast.ppm" 2>"$out/$name-fast.err"; then
+        bad "$scene (${w}x$h): fast render failed: $(head -c 300 "$out/$name-fast.err")"
+        continue
+    fi
+    if ! "$FXRT" render "$scene" --size "${w}x$h" --renderer reference -o "$out/$name-ref.ppm" 2>"$out/$name-ref.err"; then
+        bad "$scene (${w}x$h): reference render failed: $(head -c 300 "$out/$name-ref.err")"
+        continue
+    fi
+    check "$scene (${w}x$h): q16 fast == reference" cmp -s "$out/$name-fast.ppm" "$out/$name-ref.ppm"
 done
+echo "renderers: $n scenes"
+check "scenes found" test "$n" -gt 0
 report renderers

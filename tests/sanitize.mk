@@ -75,9 +75,36 @@ $(SAN_DIR)/tests/%: $(SAN_DIR)/tests/%.o $$(call san_path,$$($$*_DEPS))
 	@echo "  LD san  $@"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) $(LDLIBS_H)
 
+# The oracle (tests/oracle.mk) and the differential kernel test
+# (tests/diff.mk): their object lists with $(BUILD)/ replaced by
+# $(SAN_DIR)/; the per-number test sources get their own rules here.
+SAN_ORACLE = $(SAN_DIR)/tests/oracle
+SAN_DIFF   = $(SAN_DIR)/tests/test_diff
+define san_number_test_rules
+$(SAN_DIR)/tests/oracle_num-$(1).o: tests/oracle_num.c
+	@mkdir -p $$(@D)
+	@echo "  CC san $(1)  $$<"
+	$$(Q)$$(SAN_CC) $$(SAN_CFLAGS) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -c $$< -o $$@
+$(SAN_DIR)/tests/diffk-$(1).o: tests/diffk.c
+	@mkdir -p $$(@D)
+	@echo "  CC san $(1)  $$<"
+	$$(Q)$$(SAN_CC) $$(SAN_CFLAGS) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -c $$< -o $$@
+endef
+$(foreach n,$(NUMBERS),$(eval $(call san_number_test_rules,$(n))))
+
+$(SAN_ORACLE): $$(call san_path,$$(ORACLE_OBJ))
+	@echo "  LD san  $@"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) -lm
+
+$(SAN_DIFF): $$(call san_path,$$(DIFF_OBJ))
+	@echo "  LD san  $@"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) -lm
+
 # san-build: everything tests/sanitize.sh runs, and the list of test
 # binaries it runs (so the script need not know the Makefile's names).
-san-build: $$(SAN_BIN)
+# The fuzz harnesses are sanitized already; sanitize.sh replays their
+# corpora.
+san-build: $$(SAN_BIN) $$(SAN_ORACLE) $$(SAN_DIFF) $$(FUZZ_SCENE_BIN) $$(DIFF_FUZZ_BIN)
 	$(Q)printf '%s\n' $(SAN_UNIT_BIN) $(SAN_NUM_BIN) >$(SAN_DIR)/tests.list
 
 sanitize: deps san-build

@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
-# Sanitizer suite (make sanitize; make test). Runs what `make san-build`
-# built with clang -fsanitize=address,undefined -fno-sanitize-recover=all
-# into $BUILD/san/:
-#   - every unit test binary (list in $BUILD/san/tests.list);
-#   - tests/cli.sh and tests/golden.sh against $BUILD/san/fxrt, with their
-#     outputs under $BUILD/san/tests/ (the normal ones are not touched);
+# Sanitizer suite (make sanitize; make test). Runs every suite that runs C
+# code, with what `make san-build` built with clang
+# -fsanitize=address,undefined -fno-sanitize-recover=all into $BUILD/san/:
+#   - every unit test binary (list in $BUILD/san/tests.list: test_fx,
+#     test_image, test_compare, test_scene, test_geom_q16/float/double);
+#   - test_diff with SAN_DIFF_CASES cases per kind (default 50000);
+#   - tests/cli.sh, golden.sh, stress_scenes.sh and renderers.sh against
+#     $BUILD/san/fxrt, with their outputs under $BUILD/san/tests/ (the
+#     normal ones are not touched);
+#   - tests/oracle.sh with $BUILD/san/tests/oracle: every scene file and
+#     SAN_ORACLE_SCENES random scenes (default 300), and the stress
+#     expectations check;
+#   - the fuzz harnesses (already sanitized) over their corpora and the
+#     scene seeds, and SAN_KERNEL_RUNS fixed-seed kernel inputs;
 #   - "no partial output": 200 scenes (a sample of the fuzzer's corpus
 #     $BUILD/fuzz/scene-corpus when there is one, the rest deterministic
 #     mutations of the seed scenes) through `fxrt render FILE -o OUT.png`:
@@ -23,6 +31,9 @@ logs=$san/logs
 partial=$san/partial
 PARTIAL_FILES=${PARTIAL_FILES:-200}
 PARTIAL_SIZE=${PARTIAL_SIZE:-24x16}
+SAN_DIFF_CASES=${SAN_DIFF_CASES:-50000}
+SAN_ORACLE_SCENES=${SAN_ORACLE_SCENES:-300}
+SAN_KERNEL_RUNS=${SAN_KERNEL_RUNS:-20000}
 
 # san_env DIR: sanitizer options for a run whose reports go to DIR/.
 san_env() {
@@ -174,14 +185,30 @@ check "fxrt has UBSan" bash -c "nm '$sfxrt' | grep -q __ubsan_handle"
 # run_suite NAME CMD...: passes when CMD exits 0, its last result line says
 # "0 failed" (if it prints one) and no sanitizer report was written.
 run_suite() {
-    local name=$1 rc line start
+    local name=$1
+    shift
+    run_quiet "$name" "$@"
+    judge_suite "$name"
+}
+
+# run_quiet NAME CMD...: runs CMD with the sanitizer options, its output in
+# $logs/NAME.log, its exit status and time in $logs/NAME.rc and .secs.
+run_quiet() {
+    local name=$1 start
     shift
     progress "sanitize.sh: $name"
     start=$(date +%s)
     (san_env "$logs/$name" && exec "$@") >"$logs/$name.log" 2>&1
-    rc=$?
+    echo $? >"$logs/$name.rc"
+    echo $(($(date +%s) - start)) >"$logs/$name.secs"
+}
+
+# judge_suite NAME: the result of a run_quiet.
+judge_suite() {
+    local name=$1 rc line
+    rc=$(cat "$logs/$name.rc")
     line=$(grep -E '[0-9]+ passed, [0-9]+ failed' "$logs/$name.log" | tail -n 1)
-    echo "$name: exit $rc, $(($(date +%s) - start)) s${line:+, $line}"
+    echo "$name: exit $rc, $(cat "$logs/$name.secs") s${line:+, $line}"
     if no_reports "$logs/$name" >"$logs/$name.reports" && [ $rc -eq 0 ] &&
         { [ -z "$line" ] || [[ $line =~ \ 0\ failed ]]; }; then
         ok
@@ -192,12 +219,46 @@ run_suite() {
     fi
 }
 
+# The two longest suites (mostly shell work around the sanitized fxrt) run
+# in the background on the second core; they are judged after the rest.
+{
+    run_quiet stress_scenes.sh env BUILD="$san" FXRT="$sfxrt" tests/stress_scenes.sh
+    run_quiet renderers.sh env BUILD="$san" FXRT="$sfxrt" tests/renderers.sh
+} &
+lane=$!
 while read -r t; do
     [ -n "$t" ] || continue
     run_suite "$(basename "$t")" "$t"
 done <"$san/tests.list"
+run_suite test_diff "$san/tests/test_diff" "$SAN_DIFF_CASES"
 run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
 run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
+run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
+
+# --- fuzz corpora -------------------------------------------------------------
+# Every input of the fuzzers' corpora (and the scene seeds) once more through
+# the sanitized harnesses, which check their own invariants: -runs=0 runs the
+# initial corpus and stops. New inputs would go to the first directory, a
+# scratch one, so the corpora are not touched. The kernel harness also runs
+# SAN_KERNEL_RUNS fixed-seed mutations, so it runs even before any corpus.
+rm -rf "$san/fuzz"
+mkdir -p "$san/fuzz/scene-seeds" "$san/fuzz/scene-new" "$san/fuzz/kernels-new"
+for f in scenes/*.scene scenes/*/*.scene tests/bad-scenes/*.scene tests/scenes/*.scene; do
+    [ -f "$f" ] && cp "$f" "$san/fuzz/scene-seeds/$(printf '%s' "$f" | tr / _)"
+done
+scene_dirs=("$san/fuzz/scene-seeds")
+[ -d "$BUILD/fuzz/scene-corpus" ] && scene_dirs+=("$BUILD/fuzz/scene-corpus")
+kernel_dirs=()
+[ -d "$BUILD/fuzz/kernels-corpus" ] && kernel_dirs+=("$BUILD/fuzz/kernels-corpus")
+echo "fuzz corpora: scene inputs from ${scene_dirs[*]}; kernel inputs from ${kernel_dirs[*]:-no corpus yet (make fuzz-kernels)} and $SAN_KERNEL_RUNS mutations"
+run_suite fuzz_scene-corpus "$BUILD/fuzz/fuzz_scene" -runs=0 -max_len=4096 -artifact_prefix="$san/fuzz/scene-" \
+    "$san/fuzz/scene-new" "${scene_dirs[@]}"
+run_suite fuzz_kernels-corpus "$BUILD/fuzz/fuzz_kernels" -runs="$SAN_KERNEL_RUNS" -seed=1 \
+    -artifact_prefix="$san/fuzz/kernels-" "$san/fuzz/kernels-new" "${kernel_dirs[@]}"
+
+wait "$lane"
+judge_suite stress_scenes.sh
+judge_suite renderers.sh
 
 # --- no partial output ------------------------------------------------------
 rm -rf "$partial"
