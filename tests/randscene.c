@@ -168,8 +168,10 @@ static rs_vec_t rs_sphere(rs_t *r)
 }
 
 /* A direction as a file would state it: often axis-aligned or with some
- * zero components, any length from 2^-16-sized components to 8192, and
- * sometimes with tiny components next to large ones. */
+ * zero components, any length the parser accepts (from 0.25, below which
+ * rounding the components to Q16.16 may turn it by more than the 4 LSB
+ * cam_setup and the parser allow, to 8192), and sometimes with tiny
+ * components next to large ones. */
 static rs_vec_t rs_direction(rs_t *r)
 {
     rs_vec_t d;
@@ -188,7 +190,7 @@ static rs_vec_t rs_direction(rs_t *r)
             else if (mode == 2)
                 d.y *= rs_log(r, 1e-5, 1e-2);
         }
-        d = rs_vnum(rs_scale(d, rs_log(r, 1e-3, RS_LIM)), RS_LIM);
+        d = rs_vnum(rs_scale(d, rs_log(r, 0.25, RS_LIM)), RS_LIM);
         if (rs_len(d) > 0)
             return d;
     }
@@ -374,20 +376,29 @@ size_t randscene_text(uint64_t seed, char *buf, size_t len)
         double fmin_deg = 2 * atan(height / 32000.0) * 180 / RS_PI;
         int fm = rs_int(&r, 0, 4);
         fov = fm == 0 ? rs_log(&r, fmin_deg, 10) : fm == 1 ? rs_uniform(&r, 150, 179.99) : rs_uniform(&r, 10, 150);
-        fov = rs_num(fmax(fov, fmin_deg * 1.001), 179.99);
+        /* cam_setup needs H cot(fov/2) >= 1 (CAM_ERR_WIDE): the widest
+         * fov a height-H image accepts is 2 atan(H). */
+        double fmax_deg = fmin(179.99, 2 * atan((double)height) * 180 / RS_PI * 0.9999);
+        fov = rs_num(fmin(fmax(fov, fmin_deg * 1.001), fmax_deg), 179.99);
         spread = tan(fov * RS_PI / 360) * 1.5;
         eye = rs_vnum(eye, RS_LIM);
     }
     rs_vec_t gaze = rs_direction(&r), up;
     for (;;) {
         up = rs_direction(&r);
-        if (rs_chance(&r, 0.05)) { /* nearly parallel to the gaze (the parser accepts > 1e-6) */
-            rs_vec_t off = rs_sphere(&r);
-            off = rs_scale(off, rs_log(&r, 1e-4, 1e-2));
-            up = rs_vnum(rs_add(rs_scale(gaze, 1 / rs_len(gaze)), off), RS_LIM);
+        if (rs_chance(&r, 0.05)) {
+            /* Nearly parallel to the gaze: just over the 0.9 degrees that
+             * cam_setup requires, and long enough that its part across
+             * the gaze survives rounding (the parser's 4-LSB roll rule). */
+            double a = rs_log(&r, 0.02, 0.1);
+            rs_vec_t off = rs_scale(rs_sphere(&r), a);
+            double ul = rs_log(&r, fmax(1.0, 1.0 / a), RS_LIM / 2);
+            up = rs_vnum(rs_scale(rs_add(rs_scale(gaze, 1 / rs_len(gaze)), off), ul), RS_LIM);
         }
+        /* Accepted when up is over 1 degree from the gaze and its part
+         * across the gaze is at least 0.25 long (see rs_direction). */
         double s = rs_len(rs_cross(gaze, up)), g = rs_len(gaze), u = rs_len(up);
-        if (u > 0 && s > 1e-5 * g * u)
+        if (u > 0 && s > 0.0175 * g * u && s > 0.25 * g)
             break;
     }
     rs_out(&r, "camera %s", ortho ? "orthographic" : "perspective");
