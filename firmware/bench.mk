@@ -30,3 +30,11 @@ bench-host: deps $(BUILD)/fxrt
 bench-ablation: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) BOARD=$(BOARD) firmware/ablate.sh
 .PHONY: bench-ablation
+
+# RAM per object of each kind and the most objects that fit each board at
+# FIT_SIZE (default 160x120), measured from the compiled firmware
+# (firmware/fit.sh; the same figures the fw link step prints when a scene
+# does not fit): make ram-table
+ram-table: deps $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' FIT_SIZE=$(or $(FIT_SIZE),160x120) firmware/fit.sh table
+.PHONY: ram-table
