@@ -22,7 +22,8 @@
 # link mode reads what make wrote into DIR: fit-cflags (FW_CFLAGS), fit-src
 # (the firmware sources), fit-ldflags (FW_LDFLAGS without -T and -Map), and
 # the environment: BOARD, SCENE, ARM_CC, CPU (the board's -mcpu flags),
-# FIT_REPORT=1 prints the analysis even when the scene fits.
+# FIT_REPORT=1 prints the analysis even when the scene fits; FIT_QUICK=1
+# (make bench) only says whether it fits.
 set -euo pipefail
 BUILD=${BUILD:-build}
 ARM_CC=${ARM_CC:-arm-none-eabi-gcc}
@@ -145,6 +146,12 @@ if [[ ${1:-} == link ]]; then
     elf=$3
     rm -f "$elf"
     read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
+    if [[ ${FIT_QUICK:-0} == 1 && ( $NEED_RAM -gt $RAM_LEN || $NEED_FLASH -gt $FLASH_LEN ) ]]; then
+        # make bench: only the verdict, without the per-kind probes
+        echo "${SCENE:-$DIR}: does not fit $BOARD ($RAM_LEN B RAM, $FLASH_LEN B flash): needs $NEED_RAM B RAM, $NEED_FLASH B flash (FIT_QUICK=1: no per-kind figures)" >&2
+        rm -rf "$WORK"
+        exit 1
+    fi
     if [[ ${FIT_REPORT:-0} == 1 || $NEED_RAM -gt $RAM_LEN || $NEED_FLASH -gt $FLASH_LEN ]]; then
         analyse
         {
