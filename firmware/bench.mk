@@ -21,7 +21,7 @@ BENCH_BOARD_INFO = $(foreach b,$(BOARDS),$(b):$(call bench_cpu,$(b)):$(FB_$(b)))
 
 bench: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' \
-	  BENCH_UPDATE_DOCS=$(BENCH_UPDATE_DOCS) firmware/bench.sh
+	  BENCH_UPDATE_DOCS=$(BENCH_UPDATE_DOCS) BENCH_TABLES_ONLY=$(BENCH_TABLES_ONLY) firmware/bench.sh
 
 bench-host: deps $(BUILD)/fxrt
 	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) BENCH_PROFILE=$(BENCH_PROFILE) firmware/bench.sh --host
@@ -39,5 +39,5 @@ bench-ablation: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 # (firmware/fit.sh; the same figures the fw link step prints when a scene
 # does not fit): make ram-table
 ram-table: deps $(BUILD)/fxrt-scenec
-	$(Q)BUILD=$(BUILD) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' FIT_SIZE=$(or $(FIT_SIZE),160x120) firmware/fit.sh table
+	$(Q)BUILD=$(BUILD) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' FIT_SIZE=$(or $(FIT_SIZE),160x120) RAM_UPDATE_DOCS=$(RAM_UPDATE_DOCS) firmware/fit.sh table
 .PHONY: ram-table

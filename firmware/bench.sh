@@ -36,6 +36,8 @@
 #   BENCH_JOBS         parallel runs (nproc); QEMU -icount counts do not
 #                      depend on it
 #   BENCH_UPDATE_DOCS  1: regenerate docs/BENCHMARKS.md and docs/bench/
+#   BENCH_TABLES_ONLY  1: no runs; tables, plots (and docs) again from the
+#                      last complete run's build/bench/bench.csv
 #   BENCH_BOARD_INFO   "board:cpu:fb ..." (bench.mk passes it from firmware.mk)
 #   BENCH_REV          the revision named in the header (git rev-parse HEAD)
 # Counts are QEMU -icount instruction counts (deterministic), not cycles.
@@ -184,16 +186,18 @@ if [[ ${1:-} == --host ]]; then
             { sed 's/^/  | /' "$tmp/log" >&2; die "valgrind $FXRT render failed"; }
         echo "Profile: $BENCH_PROFILE, $pn $pr at $SIZE, host $(uname -m), callgrind Ir inside $fn (exclusive per function; per pixel = Ir / $px)."
         echo
-        echo "| function | Ir | Ir per pixel | share |"
+        echo "| file:function (inlined code under its header) | Ir | Ir per pixel | share |"
         echo "|---|---:|---:|---:|"
         callgrind_annotate --inclusive=no "$tmp/cg.out" 2>/dev/null |
             awk -v px="$px" '
-                /^-+$/ { dash++; next }
-                dash == 2 && /PROGRAM TOTALS/ { gsub(",", "", $1); tot = $1 + 0; next }
-                dash >= 3 && NF >= 2 && $1 ~ /^[0-9,]+$/ { gsub(",", "", $1); v = $1 + 0; if (v == 0 || tot == 0) next
-                    name = $0; sub(/^[[:space:]]*[0-9,]+[[:space:]]+(\([^)]*\)[[:space:]]+)?/, "", name); sub(/ \[.*\]$/, "", name)
-                    if (++k <= 15) printf "| `%s` | %d | %.1f | %.1f %% |\n", name, v, v / px, 100 * v / tot }
-                END { if (tot) printf "| total | %d | %.1f | 100 %% |\n", tot, tot / px }'
+                /PROGRAM TOTALS/ { v = $1; gsub(",", "", v); tot = v + 0; next }
+                /file:function/ { body = 1; next }
+                body && /^-+$/ { body = body == 1 ? 2 : 0; next }
+                body == 2 && $1 ~ /^[0-9,]+$/ { v = $1; gsub(",", "", v); v += 0; if (v == 0 || tot == 0) next
+                    name = $0; sub(/^[[:space:]]*[0-9,]+[[:space:]]+\([^)]*\)[[:space:]]+/, "", name)
+                    sub(/ \[.*\]$/, "", name); sub(/^.*\//, "", name)
+                    if (++k <= 12) printf "| `%s` | %d | %.1f | %.1f %% |\n", name, v, v / px, 100 * v / tot }
+                END { if (tot) printf "| all functions | %d | %.1f | 100 %% |\n", tot, tot / px }'
         exit 0
     fi
     HR=${BENCH_HOST_RENDERERS:-fast reference}
@@ -235,6 +239,11 @@ start=$SECONDS
 [[ -x $FXRT ]] || die "$FXRT not built (make)"
 command -v gnuplot >/dev/null || die "gnuplot is not installed (make deps)"
 for b in $BUILDS; do loop_extra "$(cut -d: -f2 <<<"${b%%@*}")" >/dev/null; done
+if [[ ${BENCH_TABLES_ONLY:-0} == 1 ]]; then
+    # Tables, plots and docs again from the last run's bench.csv (no runs).
+    [[ -f $OUT/bench.csv && -f $OUT/elapsed ]] || die "BENCH_TABLES_ONLY=1: no $OUT/bench.csv or $OUT/elapsed from a complete run"
+    total=$(($(wc -l <"$OUT/bench.csv") - 1)) elapsed=$(cat "$OUT/elapsed")
+else
 rm -rf "$OUT/runs" "$OUT/frames"
 mkdir -p "$OUT/runs" "$OUT/ref"
 step_ok || echo "bench: core/fxrt_config.h has no FXRT_FLOAT_STEP: the float-step build is reported as not available" >&2
@@ -289,6 +298,8 @@ n_csv=$(find "$OUT/runs" -name '*.csv' | wc -l)
     cat "$OUT"/runs/*.csv
 } >"$OUT/bench.csv"
 elapsed=$((SECONDS - start))
+echo "$elapsed" >"$OUT/elapsed"
+fi
 
 # --- tables (markdown) and Pareto data -------------------------------------------
 # Error "0 mismatched" is plotted at ZERO on the log axis.

@@ -6,7 +6,9 @@
 #
 #   firmware/fit.sh link DIR ELF     check, then link ELF (make fw / make qemu)
 #   firmware/fit.sh table            RAM per object of each kind and the most
-#                                    objects that fit each board (make ram-table)
+#                                    objects that fit each board (make ram-table;
+#                                    RAM_UPDATE_DOCS=1 also rewrites the table
+#                                    in docs/BENCHMARKS.md)
 #
 # Nothing here knows a struct size. Every figure comes from the compiled
 # firmware itself:
@@ -211,7 +213,9 @@ if [[ ${1:-} == table ]]; then
         echo "triangle a 0 0 -4 b 1 0 -4 c 0.5 1 -4 color 0.2 0.2 0.9"
         echo "box min 0.5 -1 -5 max 1.5 0 -4 color 0.9 0.9 0.2"
     } >"$scene"
-    echo "RAM per object and the most objects that fit, Q16.16 firmware at $size (\`make ram-table\`, measured by firmware/fit.sh from the compiled firmware)."
+    tab=$BUILD/fit/ram-table.md
+    {
+    echo "RAM per object and the most objects that fit, Q16.16 firmware at $size (\`make ram-table\`, measured by firmware/fit.sh from the compiled firmware; $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u '+%Y-%m-%d'))."
     echo
     echo "| board | frame | RAM | RAM without objects | plane | sphere | triangle | box | most planes | most spheres | most triangles | most boxes | most mixed |"
     echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
@@ -230,6 +234,16 @@ if [[ ${1:-} == table ]]; then
     echo "\"Most\" counts are of one kind alone (with the frame, stack and renderer state of a scene that uses every kind);"
     echo "\"mixed\" is one plane and equal numbers of spheres, triangles and boxes. A scene file also has the host's"
     echo "per-kind capacity (FXRT_MAX_* in core/fxrt_config.h), which fxrt-scenec applies when it reads the scene."
+    } >"$tab"
+    cat "$tab"
+    if [[ ${RAM_UPDATE_DOCS:-0} == 1 ]]; then
+        doc=docs/BENCHMARKS.md
+        grep -q '^<!-- ram:table -->' "$doc" && grep -q '^<!-- /ram:table -->' "$doc" ||
+            die "$doc lacks the <!-- ram:table --> ... <!-- /ram:table --> markers"
+        awk -v t="$tab" '/^<!-- ram:table -->/ { print; print ""; while ((getline l < t) > 0) print l; print ""; skip = 1; next }
+            /^<!-- \/ram:table -->/ { skip = 0 } !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+        echo "fit: updated the RAM table in $doc" >&2
+    fi
     exit 0
 fi
 
