@@ -388,7 +388,7 @@ END {
     line = line " " cell(b, "q16", "fast", set) " |"
     best(b, set)
     if (B_r == "") line = line " none" (B_note ? " (" B_note ")" : "") " | n/a |"
-    else line = line " float " B_r (B_note ? " (" B_note ")" : "") " | " sprintf("%.2fx", B_ratio) " |"
+    else line = line " float " B_r (B_note ? " (" B_note ")" : "") " | " sprintf("%.2fx (%d of %d scenes)", B_ratio, B_n, cnt["set" set]) " |"
     print line > md }
   print "" > md
 
@@ -440,13 +440,17 @@ END {
     else printf "| %s | %s | %s (%s) | %s %s | %s | | | | | |\n", f[1], f[2], f[3], f[4], f[5], f[6], (f[7] == "nofit" ? "does not fit" : "not available") > md }
   close(md)
 }
-function cell(b, n, r, set) { summ(b, n, r, set); return G == "" ? "-" : sprintf("%.1f, %.4f %%", G, M) }
+function cell(b, n, r, set,   q, s, na, nf) { summ(b, n, r, set); if (G != "") return sprintf("%.1f, %.4f %%", G, M)
+  na = 0; nf = 0
+  for (q = 1; q <= cnt["set" set]; q++) { s = order["set" set, q]; if (!((b, n, r, s) in st)) continue
+    if (st[b, n, r, s] == "n/a") na++; else if (st[b, n, r, s] == "nofit") nf++ }
+  return na ? "not available" : nf ? "does not fit" : "not run" }
 function mcell(b, n, r, s) { if (!((b, n, r, s) in st)) return "-"; if (st[b, n, r, s] == "nofit") return "does not fit"
   if (st[b, n, r, s] == "n/a") return "not available"; return sprintf("%.4f", mm[b, n, r, s]) }
 function tgt(label, b, goal, ge,   k, line, set) { line = "| " label " |"
   for (k = 1; k <= nsets; k++) { set = SET[k]; best(b, set); v = ""
     if (B_r != "") v = ge ? B_ratio : 1 / B_ratio
-    line = line " " (ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " (B_r == "" ? "n/a" : sprintf("%.2fx (float %s)", v, B_r)) " | " verdict(v, goal, ge) " |" }
+    line = line " " (ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " (B_r == "" ? "n/a" : sprintf("%.2fx (float %s%s)", v, B_r, B_n < cnt["set" set] ? sprintf(", %d of %d scenes", B_n, cnt["set" set]) : "")) " | " verdict(v, goal, ge) " |" }
   print line > md }
 function extra(label, b, nn, rn, nd, rd, goal, ge,   k, line) { line = "| " label " |"
   for (k = 1; k <= nsets; k++) { ratio(b, nn, rn, b, nd, rd, SET[k])
