@@ -106,6 +106,7 @@ TEST_PREREQ  :=
 -include host/version.mk
 -include tests/color.mk
 -include tests/oracle.mk
+-include tests/fit.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)

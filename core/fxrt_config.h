@@ -19,7 +19,10 @@
 #endif
 
 /* World capacity per primitive kind (a static array each). 0 removes the
- * kind from the build: its intersection code is not compiled. */
+ * kind from the build: its intersection code is not compiled. Triangles
+ * get more room by default: meshes are made of them (an icosphere
+ * subdivided once has 80 faces). The firmware sets each to the scene's
+ * own count (fxrt-scenec). */
 #ifndef FXRT_MAX_PLANES
 #define FXRT_MAX_PLANES 64
 #endif
@@ -27,7 +30,7 @@
 #define FXRT_MAX_SPHERES 64
 #endif
 #ifndef FXRT_MAX_TRIANGLES
-#define FXRT_MAX_TRIANGLES 64
+#define FXRT_MAX_TRIANGLES 128
 #endif
 #ifndef FXRT_MAX_BOXES
 #define FXRT_MAX_BOXES 64

@@ -1,13 +1,16 @@
 # Benchmarks, included by the top Makefile (after firmware/firmware.mk).
-#   make bench [BENCH_UPDATE_DOCS=1]   run time against error: every seed scene at
-#       BENCH_SIZE, every board, q16/float/double, fast and reference renderer, in
-#       QEMU; error against the host double render. Writes build/bench/bench.csv,
-#       bench.md (summary, TARGETS with PASS/FAIL, per scene) and pareto-BOARD.png;
+#   make bench [BENCH_UPDATE_DOCS=1]   run time against error: the seed and
+#       the bench scene sets at BENCH_SIZE, every board, every build (q16, float,
+#       float-step, double; fast, reference loop, per-pixel ray caster), in QEMU;
+#       error against the host double render. Summaries per set. Writes
+#       build/bench/bench.csv, bench.md (TARGETS with PASS/MISS, best float
+#       builds, per board, drift, per scene) and pareto-SET-BOARD.png;
 #       BENCH_UPDATE_DOCS=1 also regenerates docs/BENCHMARKS.md and docs/bench/.
-#       Subsets: BENCH_BOARDS, BENCH_NUMBERS, BENCH_RENDERERS, BENCH_SCENES;
-#       BENCH_JOBS runs in parallel (default: nproc).
+#       Subsets: BENCH_BOARDS, BENCH_BUILDS, BENCH_SETS, BENCH_SCENES;
+#       BENCH_JOBS runs in parallel (default: nproc). See firmware/bench.sh.
 #   make bench-host   the host tool under callgrind (both renderers), a quick
-#       iteration aid only; needs valgrind.
+#       iteration aid only; needs valgrind. BENCH_PROFILE=SCENE prints a
+#       per-function profile of that scene instead.
 # See docs/BENCHMARKS.md. Counts are QEMU -icount instructions, not cycles.
 
 BENCH_SIZE ?= 160x120
@@ -18,10 +21,10 @@ BENCH_BOARD_INFO = $(foreach b,$(BOARDS),$(b):$(call bench_cpu,$(b)):$(FB_$(b)))
 
 bench: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' \
-	  BENCH_UPDATE_DOCS=$(BENCH_UPDATE_DOCS) firmware/bench.sh
+	  BENCH_UPDATE_DOCS=$(BENCH_UPDATE_DOCS) BENCH_TABLES_ONLY=$(BENCH_TABLES_ONLY) firmware/bench.sh
 
 bench-host: deps $(BUILD)/fxrt
-	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) firmware/bench.sh --host
+	$(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) BENCH_PROFILE=$(BENCH_PROFILE) firmware/bench.sh --host
 
 .PHONY: bench bench-host
 
@@ -30,3 +33,11 @@ bench-host: deps $(BUILD)/fxrt
 bench-ablation: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) BOARD=$(BOARD) firmware/ablate.sh
 .PHONY: bench-ablation
+
+# RAM per object of each kind and the most objects that fit each board at
+# FIT_SIZE (default 160x120), measured from the compiled firmware
+# (firmware/fit.sh; the same figures the fw link step prints when a scene
+# does not fit): make ram-table
+ram-table: deps $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' FIT_SIZE=$(or $(FIT_SIZE),160x120) RAM_UPDATE_DOCS=$(RAM_UPDATE_DOCS) firmware/fit.sh table
+.PHONY: ram-table

@@ -85,9 +85,16 @@ $(FW_DIR)/%.o: %.c $(FW_DIR)/scene_data.h $(FW_DIR)/cflags
 	@echo "  ARMCC   $<"
 	$(Q)$(ARM_CC) $(FW_CFLAGS) -MMD -MP -c $< -o $@
 
-$(FW_ELF): $(FW_OBJ) $(wildcard linker/*.ld)
+# The link goes through firmware/fit.sh: a scene too big for the board fails
+# with what fits (kinds and counts), not a linker overflow, and leaves no ELF.
+# FIT_REPORT=1 prints the RAM figures even when it fits (make ram-table).
+$(FW_ELF): $(FW_OBJ) $(wildcard linker/*.ld) firmware/fit.sh
 	@echo "  ARMLD   $@"
-	$(Q)$(ARM_CC) $(CPU_$(BOARD)) -o $@ $(FW_OBJ) $(FW_LDFLAGS)
+	$(file >$(FW_DIR)/fit-cflags,$(FW_CFLAGS))
+	$(file >$(FW_DIR)/fit-src,$(FW_SRC))
+	$(file >$(FW_DIR)/fit-ldflags,$(foreach f,$(FW_LDFLAGS),$(if $(findstring -Map=,$(f))$(filter -T%,$(f)),,$(f))))
+	$(Q)BUILD=$(BUILD) BOARD=$(BOARD) SCENE=$(SCENE) ARM_CC=$(ARM_CC) CPU='$(CPU_$(BOARD))' FIT_REPORT=$(FIT_REPORT) \
+	  firmware/fit.sh link $(FW_DIR) $@
 
 ifeq ($(origin SIZE),undefined)
 # No SIZE=: check the scene and take its size from the host tool, then
