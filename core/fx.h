@@ -126,6 +126,12 @@ fx_t fx_div(fx_t a, fx_t b);
 /* sqrt(a), |error| <= 0.5 LSB; sqrt of a negative value is 0. */
 fx_t fx_sqrt(fx_t a);
 
+/* 1 / sqrt(a) for a > 0, |error| <= 0.5 LSB + 2^-24 relative (below
+ * 0.51 LSB for every input, checked exhaustively; near-ties may round
+ * either way); a <= 0 gives FX_MAX. Results lie in [363, 2^24]. 32-bit
+ * multiplies and three 32x32->64 products, no division. */
+fx_t fx_rsqrt(fx_t a);
+
 /* floor(sqrt(n)) for any 64-bit unsigned n (exact). */
 uint32_t fx_isqrt64(uint64_t n);
 

@@ -63,6 +63,19 @@ static void check_mul(fx_t a, fx_t b)
     CHECK_SWEEP(e <= 0.5L, "fx_mul(%d, %d) = %d, exact %.3Lf", a, b, fx_mul(a, b), exact);
 }
 
+/* The exact fx_div result by the hardware's 64-bit division (not the code
+ * under test): round half away from zero, then saturate. */
+static fx_t div_exact(fx_t a, fx_t b)
+{
+    if (b == 0)
+        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    int64_t n = (int64_t)a * 65536, q = n / b, r = n % b;
+    int64_t ar = r < 0 ? -r : r, ab = b < 0 ? -(int64_t)b : b;
+    if (2 * ar >= ab)
+        q += (n < 0) != (b < 0) ? -1 : 1;
+    return q > INT32_MAX ? FX_MAX : (q < INT32_MIN ? FX_MIN : (fx_t)q);
+}
+
 static void check_div(fx_t a, fx_t b)
 {
     fx_t q = fx_div(a, b);
@@ -74,6 +87,22 @@ static void check_div(fx_t a, fx_t b)
     long double e = fabsl((long double)q - exact);
     track(&max_err_div, e);
     CHECK_SWEEP(e <= 0.5L, "fx_div(%d, %d) = %d, exact %.3Lf", a, b, q, exact);
+    CHECK_SWEEP(q == div_exact(a, b), "fx_div(%d, %d) = %d, correctly rounded %d", a, b, q, div_exact(a, b));
+}
+
+/* Exact ties: a 2^16 / b = k + 1/2 must round away from zero, to k + 1. */
+static void check_div_ties(long n)
+{
+    for (long i = 0; i < n; i++) {
+        /* b = 2^17 t, a = (2k + 1) t: a 2^16 / b = k + 1/2. */
+        int32_t t = (int32_t)(1 + rng() % 16383);  /* b = t * 2^17 < 2^31 */
+        int32_t kmax = (int32_t)((INT32_MAX / t - 1) / 2);
+        int32_t k = (int32_t)(rng() % (uint64_t)(kmax + 1));
+        fx_t a = (2 * k + 1) * t, b = t * (1 << 17);
+        int sa = (rng() & 1) ? -1 : 1, sb = (rng() & 1) ? -1 : 1;
+        fx_t q = fx_div(sa * a, sb * b);
+        CHECK_SWEEP(q == sa * sb * (k + 1), "fx_div tie (%d, %d) = %d, want %d", sa * a, sb * b, q, sa * sb * (k + 1));
+    }
 }
 
 static void check_sqrt(fx_t a)
@@ -221,6 +250,19 @@ static void check_fixed_cases(void)
     CHECK(fx_sqrt(F16(4)) == F16(2));
     CHECK(fx_sqrt(F16(2)) == 92682);
     CHECK(fx_div(FX_ONE, F16(3)) == 21845);
+    /* fx_div ties go away from zero: 1 LSB / 2 = 0.5 LSB -> 1, -0.5 -> -1. */
+    CHECK(fx_div(1, F16(2)) == 1);
+    CHECK(fx_div(-1, F16(2)) == -1);
+    CHECK(fx_div(3, F16(-2)) == -2);
+    CHECK(fx_recip(F16(-2)) == -FX_HALF);
+    CHECK(fx_div(FX_MIN, FX_ONE) == FX_MIN);
+    CHECK(fx_div(FX_MIN, -FX_ONE) == FX_MAX);
+    CHECK(fx_div(FX_MAX, FX_MAX) == FX_ONE);
+    CHECK(fx_div(FX_MIN, FX_MIN) == FX_ONE);
+    CHECK(fx_div(1, FX_MIN) == 0);
+    CHECK(fx_div(-FX_HALF, FX_MIN) == 1);
+    CHECK(fx_div(16384, FX_MIN) == -1); /* -0.5 LSB, away from zero */
+    CHECK(fx_div(16383, FX_MIN) == 0);
     CHECK(fx_mul(F16(-0.5), 1) == 0); /* -0.5 LSB ties toward +inf */
     CHECK(fx_cot_deg(F16(45)) == FX_ONE);
     CHECK(fx_cot_deg(0) == FX_MAX);
@@ -282,6 +324,7 @@ int main(int argc, char **argv)
     for (fx_t d = 0; d <= F16(360); d += 256)
         check_sincos(d);
 
+    check_div_ties(n_random / 10 + 1000);
     for (long i = 0; i < n_random; i++) {
         fx_t a = rand_fx(), b = rand_fx();
         check_mul(a, b);
