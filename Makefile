@@ -103,7 +103,7 @@ SUITES_EXTRA :=
 TEST_PREREQ  :=
 -include tests/sanitize.mk
 -include tests/diff.mk
--include firmware/benchfx.mk
+-include tests/fx.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)

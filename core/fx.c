@@ -235,22 +235,7 @@ uint32_t fx_isqrt64(uint64_t n)
     return (uint32_t)root;
 }
 
-/* Round-to-nearest integer square root: floor root r rounds up when
- * n > r^2 + r, because (r + 1/2)^2 = r^2 + r + 1/4 and n is an integer. */
-static uint64_t fx_isqrt64_round(uint64_t n)
-{
-    uint64_t r = fx_isqrt64(n);
-    return n > r * r + r ? r + 1 : r;
-}
 
-fx_t fxw_sqrt(fxw_t w)
-{
-    /* sqrt(w * 2^-32) * 2^16 = sqrt(w): the Q32.32 integer's integer root is
-     * the Q16.16 result directly. */
-    if (w <= 0)
-        return 0;
-    return fx_signed_sat(fx_isqrt64_round((uint64_t)w), false);
-}
 
 /* round(2^30 / sqrt((i + 0.5) * 2^25)) for i = 32 .. 127: 1/sqrt(m) for
  * m in [2^30, 2^32) indexed by m's top 7 bits, within 2^-7.4 relative. */
@@ -343,6 +328,52 @@ static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
 #endif
 }
 
+/* Leading zero count of a non-zero uint64. */
+static int fx_clz64(uint64_t v)
+{
+    return __builtin_clzll(v);
+}
+
+fx_t fxw_sqrt(fxw_t w)
+{
+    /* sqrt(w * 2^-32) * 2^16 = sqrt(w): the Q32.32 integer's rounded root
+     * is the Q16.16 result. As in fx_sqrt: the top 32 bits m of w (taken
+     * with an even shift, so sqrt(w) ~ sqrt(m) 2^k) give a 24-bit root
+     * R ~ 256 sqrt(m); for w >= 2^48 one more Newton step on the exact
+     * 64-bit residual; then the exact test on d = w - q^2 (exact mod 2^64
+     * because it is small), stepping q until -q < d <= q. */
+    if (w <= 0)
+        return 0;
+    uint64_t n = (uint64_t)w;
+    int e = fx_clz64(n) & ~1;
+    uint32_t m = e >= 32 ? (uint32_t)(n << (e - 32)) : (uint32_t)(n >> (32 - e));
+    int k = 16 - (e >> 1); /* sqrt(n) ~ sqrt(m) 2^k, k in [-15, 16] */
+    int32_t s, y;
+    fx_sqrt_est(m, &s, &y);
+    int32_t r = (int32_t)(m - (uint32_t)s * (uint32_t)s);
+    uint32_t R = (uint32_t)(((int32_t)((uint32_t)s << 8)) + (((r >> 5) * y) >> 18));
+    uint64_t q;
+    if (k <= 8) {
+        int sh = 8 - k;
+        q = sh ? (R + (1u << (sh - 1))) >> sh : R;
+    } else {
+        q = (uint64_t)R << (k - 8); /* within 2^(k-7) + 2 */
+        int64_t d = (int64_t)(n - q * q);
+        /* d / (2q) with 1 / (2 sqrt(n)) ~ y 2^-31 2^-k. */
+        q = (uint64_t)((int64_t)q + ((d * y) >> (31 + k)));
+    }
+    int64_t d = (int64_t)(n - q * q);
+    while (d > (int64_t)q) {
+        d -= (int64_t)(2 * q + 1);
+        q++;
+    }
+    while (d <= -(int64_t)q) {
+        q--;
+        d += (int64_t)(2 * q + 1);
+    }
+    return q > (uint64_t)INT32_MAX ? FX_MAX : (fx_t)q;
+}
+
 /* Y ~ 2^46 / sqrt(m) for m in [2^30, 2^32), Y in (2^30, 2^31], within
  * 2^-25 relative: fx_sqrt_est's 14-bit y1, then one Newton step for the
  * inverse square root, Y' = Y (3 - m Y^2 / 2^92) / 2, in 64-bit products. */
@@ -368,11 +399,6 @@ fx_t fx_rsqrt(fx_t a)
     return (fx_t)((Y + (1u << (k - 1))) >> k);
 }
 
-/* Leading zero count of a non-zero uint64. */
-static int fx_clz64(uint64_t v)
-{
-    return __builtin_clzll(v);
-}
 
 fx_t fxw_div(fxw_t a, fxw_t b)
 {

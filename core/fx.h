@@ -5,9 +5,14 @@
  * fxw_t is a signed 64-bit integer in Q32.32: the exact product of two fx_t,
  * used to accumulate dot products before rounding once.
  *
- * Rounding: every operation that drops bits rounds to nearest, ties toward
- * +infinity (add half an LSB, then floor). Error bounds are per function
- * below and in docs/ACCURACY.md; tests/test_fx.c checks each against double.
+ * Rounding: every operation that drops bits rounds to nearest. Each
+ * function below states its error bound and its tie rule: products and
+ * Q32.32 -> Q16.16 roundings take ties toward +infinity (add half an LSB,
+ * then floor); divisions take ties away from zero; square roots cannot
+ * meet a tie. Bounds are also listed in docs/ACCURACY.md; tests/test_fx.c
+ * checks each against long double (and the tie rules exactly), and
+ * tests/fx_exhaustive.c checks the one-argument roots and sin/cos over every
+ * input.
  *
  * Overflow policy: SATURATE. A result outside the range becomes FX_MAX or
  * FX_MIN; nothing wraps and no signed overflow happens in C. Division by
@@ -81,7 +86,8 @@ static inline fx_t fx_abs(fx_t a)
     return a < 0 ? fx_neg(a) : a;
 }
 
-/* a * b, |error| <= 0.5 LSB, saturating. The 64-bit product is exact. */
+/* a * b, |error| <= 0.5 LSB, ties toward +infinity (-0.5 LSB -> 0),
+ * saturating. The 64-bit product is exact. */
 static inline fx_t fx_mul(fx_t a, fx_t b)
 {
     int64_t p = (int64_t)a * b;
@@ -97,7 +103,7 @@ static inline fx_t fx_mul_int(fx_t a, int32_t i)
     return fx_sat64((int64_t)a * i);
 }
 
-/* Q32.32 -> Q16.16, |error| <= 0.5 LSB, saturating. */
+/* Q32.32 -> Q16.16, |error| <= 0.5 LSB, ties toward +infinity, saturating. */
 static inline fx_t fxw_round(fxw_t w)
 {
     if (w > INT64_MAX - FX_HALF)
@@ -120,30 +126,45 @@ static inline fxw_t fxw_add(fxw_t a, fxw_t b)
     return s;
 }
 
-/* a / b, |error| <= 0.5 LSB, saturating; x/0 saturates by sign, 0/0 = 0. */
+/* a / b correctly rounded: |error| <= 0.5 LSB, ties away from zero
+ * (1 LSB / 2.0 = 1 LSB, -1 LSB / 2.0 = -1 LSB), saturating; x/0 saturates
+ * by sign, 0/0 = 0. 32-bit operations only (Knuth's long division in two
+ * 16-bit digits; on the Cortex-M0 each digit is estimated by a reciprocal
+ * from a 256-byte table, so no libgcc division is called). */
 fx_t fx_div(fx_t a, fx_t b);
 
-/* sqrt(a), |error| <= 0.5 LSB; sqrt of a negative value is 0. */
+/* sqrt(a) correctly rounded, |error| <= 0.5 LSB (no ties are possible:
+ * a 2^16 is an integer, (r + 1/2)^2 is not); sqrt of a negative value is 0.
+ * Checked for all 2^31 non-negative inputs (make fx-exhaustive). 32-bit
+ * multiplies only: a 192-byte table, two Newton steps, an exact residual
+ * test. */
 fx_t fx_sqrt(fx_t a);
 
-/* 1 / sqrt(a) for a > 0, |error| <= 0.5 LSB + 2^-24 relative (below
- * 0.51 LSB for every input, checked exhaustively; near-ties may round
- * either way); a <= 0 gives FX_MAX. Results lie in [363, 2^24]. 32-bit
- * multiplies and three 32x32->64 products, no division. */
+/* 1 / sqrt(a) for a > 0, |error| <= 0.5005 LSB (0.50001 LSB worst over
+ * every input, make fx-exhaustive). Not always correctly rounded: the
+ * result is the rounding (ties toward +infinity) of a value within 2^-25
+ * relative, so a near-tie may round either way; exact ties cannot occur.
+ * a <= 0 gives FX_MAX. Results lie in [363, 2^24]. The same table and
+ * Newton steps as fx_sqrt plus one Newton step in three 32x32->64-bit
+ * products; no division. */
 fx_t fx_rsqrt(fx_t a);
 
 /* floor(sqrt(n)) for any 64-bit unsigned n (exact). */
 uint32_t fx_isqrt64(uint64_t n);
 
-/* sqrt of a non-negative Q32.32 value as Q16.16, |error| <= 0.5 LSB,
- * saturating at FX_MAX; negative input gives 0. */
+/* sqrt of a non-negative Q32.32 value as Q16.16, correctly rounded
+ * (|error| <= 0.5 LSB, no ties possible), saturating at FX_MAX; negative
+ * input gives 0. */
 fx_t fxw_sqrt(fxw_t w);
 
-/* Q32.32 / Q32.32 as Q16.16, |error| <= 1 LSB, saturating; x/0 saturates
- * by sign, 0/0 = 0. */
+/* Q32.32 / Q32.32 as Q16.16, |error| <= 1 LSB (operands with more than 47
+ * significant bits lose their low bits first; the final division rounds
+ * ties away from zero), saturating; x/0 saturates by sign, 0/0 = 0. */
 fx_t fxw_div(fxw_t a, fxw_t b);
 
-/* 1 / a, |error| <= 0.5 LSB, saturating (1/0 = FX_MAX). */
+/* 1 / a = fx_div(FX_ONE, a): correctly rounded (|error| <= 0.5 LSB; a tie
+ * would need a to divide 2^33 oddly, which no fx_t does), saturating
+ * (1/0 = FX_MAX). */
 fx_t fx_recip(fx_t a);
 
 /* cot(deg degrees) for deg in (0, 90]: |error| <= 1 LSB + 1e-7 relative.
@@ -153,8 +174,9 @@ fx_t fx_cot_deg(fx_t deg);
 
 /* sin and cos of an angle in degrees (Q16.16, any value: it is reduced
  * exactly modulo 360 in integers), as Q16.16. |error| <= 0.5 LSB + 0.001 LSB
- * of the exact value (round to nearest of a value accurate to 1e-8; a
- * near-tie may round either way). Exact at multiples of 90 degrees (0, 1,
+ * of the exact value (the rounding, ties toward +infinity, of a value
+ * accurate to 1e-8, so a near-tie may round either way). Checked for every
+ * input of a full turn (make fx-exhaustive): worst 0.49997 LSB. Exact at multiples of 90 degrees (0, 1,
  * -1), never above 1.0 in magnitude, and odd/even exactly:
  * fx_sin_deg(-d) = -fx_sin_deg(d), fx_cos_deg(-d) = fx_cos_deg(d).
  * Integer-only, no tables (Taylor polynomials in Q2.30 on [0, 45] deg). */
@@ -202,9 +224,12 @@ fx128_t fx128_shr128(fx128_t a, int s);
 /* Number of significant bits of |a| (0 for 0). */
 int fx128_bits(fx128_t a);
 
-/* Scale (x, y, z) to unit length in place, each component within 1 LSB of
- * the exact result for any non-zero input (the vector is first shifted up
- * to use the full 32 bits, so short vectors normalise as well as long ones).
+/* Scale (x, y, z) to unit length in place, each component within
+ * 0.504 LSB of the exact result for any non-zero input (0.5 for the final
+ * rounding, ties away from zero, plus 2^-9 for the inverse square root).
+ * The vector is first shifted to use 30 bits, so short vectors normalise
+ * as well as long ones. No division and no 64-bit root: fx_rsqrt's
+ * Newton steps on the top 32 bits of the squared length.
  * Returns false and leaves the vector unchanged when it is zero. */
 bool fx_normalize3(fx_t v[3]);
 
