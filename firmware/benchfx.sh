@@ -21,35 +21,58 @@ for spec in $BENCHFX_TICKS; do
         exit 1
     fi
     grep -q 'done' "$log" || { echo "bench-fx: $board: no report" >&2; exit 1; }
-    # Text bytes per function: the symbol's size in the ELF (wrappers for the
-    # inline ones; fx_sqrt/fx_rsqrt add their 192-byte table).
-    syms=$(arm-none-eabi-nm -S --size-sort "$elf")
+    # Text bytes per function: the sizes of the symbols that implement it
+    # (the function, its out-of-line static helpers including .part/.constprop
+    # clones, its tables), from nm; the out-of-line wrapper for the inline
+    # ones. Shared tables count for every function that uses them. libgcc
+    # helpers reached from the group are listed by name, not counted.
+    nm_out=$out/$board/nm.txt
+    dis=$out/$board/calls.txt
+    arm-none-eabi-nm -S "$elf" | awk 'NF == 4 { print $4, $2 }' >"$nm_out"
+    # "caller callee" for every bl in the program.
+    arm-none-eabi-objdump -d --no-show-raw-insn "$elf" |
+        awk '/^[0-9a-f]+ <.*>:$/ { f = $2; gsub(/[<>:]/, "", f) } /\tbl\t/ { c = $NF; gsub(/[<>]/, "", c); print f, c }' |
+        sort -u >"$dis"
     sed -nE 's/^bench fn=([a-z0-9_]+) calls=([0-9]+) ticks=([0-9]+) empty_ticks=([0-9]+).*/\1 \2 \3 \4/p' "$log" |
         while read -r fn calls ticks empty; do
-            sym=$fn
             case $fn in
-            fx_mul) sym=w_fx_mul ;;
-            old_fx_div) sym=w_old_fx_div ;;
-            old_fx_sqrt) sym=w_old_fx_sqrt ;;
-            vec3_dot) sym=v_dot ;;
-            vec3_cross) sym=v_cross ;;
-            vec3_len) sym=v_len ;;
-            vec3_normalize) sym=v_normalize ;;
+            fx_mul) group="w_fx_mul" ;;
+            fx_div) group="fx_div fx_recip_tab" ;;
+            fx_recip) group="fx_recip fx_div fx_recip_tab" ;;
+            fx_sqrt) group="fx_sqrt fx_rsqrt_tab" ;;
+            fxw_sqrt) group="fxw_sqrt fx_rsqrt_tab" ;;
+            fxw_div) group="fxw_div fx_udiv_round" ;;
+            fx_rsqrt) group="fx_rsqrt fx_rsqrt_q46 fx_rsqrt_tab" ;;
+            fx_sin_deg) group="fx_sin_deg fx_sin_quarter fx_sincos45 fx_mul_q30" ;;
+            fx_cos_deg) group="fx_cos_deg fx_sin_quarter fx_sincos45 fx_mul_q30" ;;
+            fx_cot_deg) group="fx_cot_deg fx_cos_sinc_q30 fx_udiv_round" ;;
+            vec3_dot) group="v_dot" ;;
+            vec3_cross) group="v_cross" ;;
+            vec3_len) group="v_len fxw_sqrt fx_rsqrt_tab" ;;
+            vec3_normalize) group="v_normalize fx_normalize3 fx_rsqrt_q46 fx_rsqrt_tab" ;;
+            old_fx_div) group="w_old_fx_div" ;;
+            old_fx_sqrt) group="w_old_fx_sqrt" ;;
+            *) group=$fn ;;
             esac
-            hex=$(awk -v s="$sym" '$4 == s { print $2; exit }' <<<"$syms")
-            size=?
-            [ -n "$hex" ] && size=$((16#$hex))
+            size=$(awk -v g="$group" 'BEGIN { n = split(g, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
+                { base = $1; sub(/\..*/, "", base) } (base in want) && !seen[$1]++ { s += strtonum_hex($2) }
+                function strtonum_hex(h,   i, v, c) { v = 0; h = tolower(h)
+                    for (i = 1; i <= length(h); i++) { c = index("0123456789abcdef", substr(h, i, 1)) - 1; v = v * 16 + c }
+                    return v }
+                END { print s + 0 }' "$nm_out")
+            libgcc=$(awk -v g="$group" 'BEGIN { n = split(g, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
+                { base = $1; sub(/\..*/, "", base) } (base in want) && $2 ~ /^__/ { print $2 }' "$dis" | sort -u | paste -sd, -)
             instr=$(awk -v t="$ticks" -v e="$empty" -v ns="$tick_ns" -v s=$shift_ -v c="$calls" \
                 'BEGIN { printf "%.1f", (t - e) * ns / 2^s / c }')
-            echo "$fn $board $instr $size" >>"$raw"
+            echo "$fn $board $instr $size ${libgcc:--}" >>"$raw"
         done
 done
 # Worst errors from the host test (FX_TEST_RANDOM random inputs per function).
 errs=$("$BUILD/tests/test_fx" 2>&1 | sed -nE 's/^ERR ([a-z0-9_]+) ([0-9.]+).*/\1 \2/p')
 {
-    echo "| function | board | instructions per call | text bytes | worst error (LSB, host test) |"
-    echo "|---|---|---:|---:|---:|"
+    echo "| function | board | instructions per call | text bytes | libgcc calls | worst error (LSB, host test) |"
+    echo "|---|---|---:|---:|---|---:|"
     awk -v errs="$errs" 'BEGIN { n = split(errs, e, "\n"); for (i = 1; i <= n; i++) { split(e[i], f, " "); err[f[1]] = f[2] } }
-        { printf "| %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, ($1 in err) ? err[$1] : "-" }' "$raw"
+        { printf "| %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, ($1 in err) ? err[$1] : (($1 ~ /^old_/) ? "0.5 (before)" : "-") }' "$raw"
 } >"$out/benchfx.md"
 cat "$out/benchfx.md"
