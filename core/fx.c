@@ -29,15 +29,7 @@ static uint64_t fx_udiv_round(uint64_t num, uint64_t den)
 /* Count leading zeros of a non-zero uint32, rounded down to an even number,
  * as a shift that brings the top set bit to bit 30 or 31. Hardware CLZ
  * where the target has it; a four-step binary search on the Cortex-M0
- * (whose libgcc __clzsi2 costs more). FX_HAVE_CLZ = 0 forces the search
- * on any target (the tests build both). */
-#ifndef FX_HAVE_CLZ
-#if defined(__ARM_ARCH_6M__)
-#define FX_HAVE_CLZ 0
-#else
-#define FX_HAVE_CLZ 1
-#endif
-#endif
+ * (whose libgcc __clzsi2 costs more). FX_HAVE_CLZ in core/fxrt_config.h. */
 static inline __attribute__((always_inline)) int fx_clz_even(uint32_t v)
 {
 #if FX_HAVE_CLZ
@@ -61,17 +53,6 @@ static inline __attribute__((always_inline)) int fx_clz_even(uint32_t v)
     return e;
 #endif
 }
-
-/* Hardware 32-bit divide: the Cortex-M3/M4 have UDIV, the M0 has none
- * (its `/` is a libgcc call). FX_HAVE_UDIV = 0 forces the multiply-only
- * path on any target (the tests build both). */
-#ifndef FX_HAVE_UDIV
-#if defined(__ARM_ARCH_6M__)
-#define FX_HAVE_UDIV 0
-#else
-#define FX_HAVE_UDIV 1
-#endif
-#endif
 
 /* Leading zero count of a non-zero uint32. */
 static inline __attribute__((always_inline)) int fx_clz32(uint32_t v)
@@ -301,31 +282,6 @@ fx_t fx_sqrt(fx_t a)
         d += (int32_t)(2 * q + 1);
     }
     return (fx_t)q;
-}
-
-/* 32 x 32 -> 64-bit unsigned product. The Cortex-M0 has no UMULL and
- * libgcc's __aeabi_lmul multiplies 64 x 64; four 16-bit products are
- * cheaper there. FX_HAVE_UMULL = 0 forces that path on any target. */
-#ifndef FX_HAVE_UMULL
-#if defined(__ARM_ARCH_6M__)
-#define FX_HAVE_UMULL 0
-#else
-#define FX_HAVE_UMULL 1
-#endif
-#endif
-static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
-{
-#if FX_HAVE_UMULL
-    return (uint64_t)a * b;
-#else
-    uint32_t al = a & 0xffffu, ah = a >> 16, bl = b & 0xffffu, bh = b >> 16;
-    uint32_t ll = al * bl, hh = ah * bh, lh = al * bh, hl = ah * bl;
-    uint32_t mid = lh + hl;
-    uint32_t hi = hh + (mid >> 16) + (mid < lh ? 0x10000u : 0u);
-    uint32_t lo = ll + (mid << 16);
-    hi += lo < ll ? 1u : 0u;
-    return ((uint64_t)hi << 32) | lo;
-#endif
 }
 
 /* Leading zero count of a non-zero uint64. */

@@ -28,6 +28,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "fxrt_config.h"
+
 typedef int32_t fx_t;  /* Q16.16 */
 typedef int64_t fxw_t; /* Q32.32 */
 
@@ -84,6 +86,42 @@ static inline fx_t fx_neg(fx_t a)
 static inline fx_t fx_abs(fx_t a)
 {
     return a < 0 ? fx_neg(a) : a;
+}
+
+/* 32 x 32 -> 64-bit products. The Cortex-M0 has no UMULL/SMULL, and
+ * libgcc's __aeabi_lmul (what `(int64_t)a * b` becomes there) multiplies
+ * 64 x 64 bits behind a call; four 16-bit products inline are cheaper.
+ * FX_HAVE_UMULL (core/fxrt_config.h) selects the path.
+ * Both are exact. */
+static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
+{
+#if FX_HAVE_UMULL
+    return (uint64_t)a * b;
+#else
+    uint32_t al = a & 0xffffu, ah = a >> 16, bl = b & 0xffffu, bh = b >> 16;
+    uint32_t ll = al * bl, hh = ah * bh, lh = al * bh, hl = ah * bl;
+    uint32_t mid = lh + hl;
+    uint32_t hi = hh + (mid >> 16) + (mid < lh ? 0x10000u : 0u);
+    uint32_t lo = ll + (mid << 16);
+    hi += lo < ll ? 1u : 0u;
+    return ((uint64_t)hi << 32) | lo;
+#endif
+}
+/* Signed: the unsigned product of the two's-complement patterns, minus
+ * b 2^32 when a < 0 and a 2^32 when b < 0 (modulo 2^64). */
+static inline int64_t fx_smul32(int32_t a, int32_t b)
+{
+#if FX_HAVE_UMULL
+    return (int64_t)a * b;
+#else
+    uint64_t p = fx_umul32((uint32_t)a, (uint32_t)b);
+    uint32_t hi = (uint32_t)(p >> 32);
+    if (a < 0)
+        hi -= (uint32_t)b;
+    if (b < 0)
+        hi -= (uint32_t)a;
+    return (int64_t)(((uint64_t)hi << 32) | (uint32_t)p);
+#endif
 }
 
 /* a * b, |error| <= 0.5 LSB, ties toward +infinity (-0.5 LSB -> 0),

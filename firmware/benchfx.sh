@@ -74,5 +74,24 @@ errs=$("$BUILD/tests/test_fx" 2>&1 | sed -nE 's/^ERR ([a-z0-9_]+) ([0-9.]+).*/\1
     echo "|---|---|---:|---:|---|---:|"
     awk -v errs="$errs" 'BEGIN { n = split(errs, e, "\n"); for (i = 1; i <= n; i++) { split(e[i], f, " "); err[f[1]] = f[2] } }
         { printf "| %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, ($1 in err) ? err[$1] : (($1 ~ /^old_/) ? "0.5 (before)" : "-") }' "$raw"
+} >"$out/benchfx-long.md"
+# The same numbers with one row per function (instructions per call on each
+# board, text bytes on the M3 and the M0).
+boards=$(for spec in $BENCHFX_TICKS; do echo "${spec%%:*}"; done | paste -sd' ' -)
+{
+    awk -v boards="$boards" -v errs="$errs" '
+        BEGIN { nb = split(boards, b, " "); n = split(errs, e, "\n")
+                for (i = 1; i <= n; i++) { split(e[i], f, " "); err[f[1]] = f[2] }
+                printf "| function |"; for (i = 1; i <= nb; i++) printf " %s instr. |", b[i]
+                printf " text bytes (%s) | libgcc calls (%s) | worst error, LSB |\n", b[1], b[nb]
+                printf "|---|"; for (i = 1; i <= nb; i++) printf "---:|"; printf "---|---|---:|\n" }
+        { if (!($1 in seen)) { seen[$1] = 1; order[++no] = $1 } ins[$1, $2] = $3; sz[$1, $2] = $4; lg[$1, $2] = $5 }
+        END { for (k = 1; k <= no; k++) { fn = order[k]; printf "| %s |", fn
+                for (i = 1; i <= nb; i++) printf " %s |", ins[fn, b[i]]
+                printf " %s / %s | %s | %s |\n", sz[fn, b[1]], sz[fn, b[nb]], lg[fn, b[nb]],
+                    (fn in err) ? err[fn] : ((fn ~ /^old_/) ? "0.5 (before)" : "-") } }' "$raw"
 } >"$out/benchfx.md"
 cat "$out/benchfx.md"
+echo
+echo "(per-board rows: $out/benchfx-long.md; text bytes are the function's own symbols,"
+echo " static helpers and tables; libgcc helpers are listed, not counted)"
