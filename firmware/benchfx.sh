@@ -83,7 +83,7 @@ boards=$(for spec in $BENCHFX_TICKS; do echo "${spec%%:*}"; done | paste -sd' ' 
         BEGIN { nb = split(boards, b, " "); n = split(errs, e, "\n")
                 for (i = 1; i <= n; i++) { split(e[i], f, " "); err[f[1]] = f[2] }
                 printf "| function |"; for (i = 1; i <= nb; i++) printf " %s instr. |", b[i]
-                printf " text bytes (%s) | libgcc calls (%s) | worst error, LSB |\n", b[1], b[nb]
+                printf " text bytes (%s / %s) | libgcc calls (%s) | worst error, LSB |\n", b[1], b[nb], b[nb]
                 printf "|---|"; for (i = 1; i <= nb; i++) printf "---:|"; printf "---|---|---:|\n" }
         { if (!($1 in seen)) { seen[$1] = 1; order[++no] = $1 } ins[$1, $2] = $3; sz[$1, $2] = $4; lg[$1, $2] = $5 }
         END { for (k = 1; k <= no; k++) { fn = order[k]; printf "| %s |", fn
@@ -92,6 +92,21 @@ boards=$(for spec in $BENCHFX_TICKS; do echo "${spec%%:*}"; done | paste -sd' ' 
                     (fn in err) ? err[fn] : ((fn ~ /^old_/) ? "0.5 (before)" : "-") } }' "$raw"
 } >"$out/benchfx.md"
 cat "$out/benchfx.md"
+# BENCHFX_UPDATE_DOCS=1: replace the table between the benchfx markers in
+# docs/BENCHMARKS.md (the rest of the file is left as it is).
+if [ "${BENCHFX_UPDATE_DOCS:-0}" = 1 ]; then
+    doc=docs/BENCHMARKS.md
+    if grep -q '<!-- benchfx:table -->' "$doc"; then
+        awk -v tab="$out/benchfx.md" '
+            /<!-- benchfx:table -->/ { print; while ((getline l < tab) > 0) print l; skip = 1; next }
+            /<!-- \/benchfx:table -->/ { skip = 0 }
+            !skip { print }' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+        echo "bench-fx: updated $doc"
+    else
+        echo "bench-fx: no <!-- benchfx:table --> marker in $doc" >&2
+        exit 1
+    fi
+fi
 echo
 echo "(per-board rows: $out/benchfx-long.md; text bytes are the function's own symbols,"
 echo " static helpers and tables; libgcc helpers are listed, not counted)"
