@@ -313,7 +313,7 @@ static void check_fixed_cases(void)
     CHECK(fx_isqrt64(0) == 0);
     /* sin/cos exact at multiples of 90 degrees, over the whole range. */
     for (int32_t k = -364; k <= 364; k++) {
-        fx_t d = (fx_t)(k * 90) << 16;
+        fx_t d = (fx_t)(k * 90 * 65536);
         int32_t q = ((k % 4) + 4) % 4;
         CHECK_MSG(fx_sin_deg(d) == (q == 1 ? FX_ONE : q == 3 ? -FX_ONE : 0), "sin(%d*90)", k);
         CHECK_MSG(fx_cos_deg(d) == (q == 0 ? FX_ONE : q == 2 ? -FX_ONE : 0), "cos(%d*90)", k);
@@ -364,7 +364,7 @@ int main(int argc, char **argv)
         check_sincos(sc_hard[i]);
     for (int32_t k = -8; k <= 8; k++)
         for (int32_t e = -3; e <= 3; e++)
-            check_sincos((fx_t)((k * 90) << 16) + e);
+            check_sincos((fx_t)(k * 90 * 65536) + e);
     for (fx_t d = 0; d <= F16(360); d += 256)
         check_sincos(d);
 
