@@ -178,7 +178,7 @@ fx_t fx_div(fx_t a, fx_t b);
  * test. */
 fx_t fx_sqrt(fx_t a);
 
-/* 1 / sqrt(a) for a > 0, |error| <= 0.5005 LSB (0.50001 LSB worst over
+/* 1 / sqrt(a) for a > 0, |error| <= 0.502 LSB (0.50094 LSB worst over
  * every input, make fx-exhaustive). Not always correctly rounded: the
  * result is the rounding (ties toward +infinity) of a value within 2^-25
  * relative, so a near-tie may round either way; exact ties cannot occur.
@@ -211,13 +211,14 @@ fx_t fx_recip(fx_t a);
 fx_t fx_cot_deg(fx_t deg);
 
 /* sin and cos of an angle in degrees (Q16.16, any value: it is reduced
- * exactly modulo 360 in integers), as Q16.16. |error| <= 0.5 LSB + 0.001 LSB
- * of the exact value (the rounding, ties toward +infinity, of a value
- * accurate to 1e-8, so a near-tie may round either way). Checked for every
- * input of a full turn (make fx-exhaustive): worst 0.49997 LSB. Exact at multiples of 90 degrees (0, 1,
- * -1), never above 1.0 in magnitude, and odd/even exactly:
+ * exactly modulo 360 in integers), as Q16.16. |error| <= 0.502 LSB: the
+ * rounding (ties toward +infinity) of a value accurate to 1e-8, so a
+ * near-tie may round either way; the worst over every input of a full turn
+ * is 0.50011 LSB (make fx-exhaustive). Exact at multiples of 90 degrees
+ * (0, 1, -1), never above 1.0 in magnitude, and odd/even exactly:
  * fx_sin_deg(-d) = -fx_sin_deg(d), fx_cos_deg(-d) = fx_cos_deg(d).
- * Integer-only, no tables (Taylor polynomials in Q2.30 on [0, 45] deg). */
+ * Integer-only, no tables, no division (unsigned Q1.31 Taylor polynomials
+ * on [0, 45] degrees, 32x32->64-bit products). */
 fx_t fx_sin_deg(fx_t deg);
 fx_t fx_cos_deg(fx_t deg);
 
