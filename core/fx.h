@@ -40,7 +40,8 @@ typedef int64_t fxw_t; /* Q32.32 */
 #define FX_MIN ((fx_t)INT32_MIN)
 #define FX_PI ((fx_t)205887) /* round(pi * 65536) */
 
-/* Literal for constant initialisers only: F16(1.5). Rounds to nearest.
+/* Literal for constant initialisers only: F16(1.5). Rounds to nearest,
+ * ties away from zero.
  * Never use it on run-time values (it is floating-point arithmetic). */
 #define F16(x) ((fx_t)((x) >= 0 ? (x) * 65536.0 + 0.5 : (x) * 65536.0 - 0.5))
 
@@ -205,7 +206,8 @@ fx_t fxw_div(fxw_t a, fxw_t b);
  * (1/0 = FX_MAX). */
 fx_t fx_recip(fx_t a);
 
-/* cot(deg degrees) for deg in (0, 90]: |error| <= 1 LSB + 1e-7 relative.
+/* cot(deg degrees) for deg in (0, 90]: |error| <= 1 LSB + 1e-7 relative
+ * (the rounding of an approximate quotient: no tie rule applies).
  * Outside (0, 90] it saturates: deg <= 0 gives FX_MAX, deg > 90 gives 0.
  * Computed from sine and cosine series in Q2.30, so it needs no tables. */
 fx_t fx_cot_deg(fx_t deg);
@@ -256,9 +258,10 @@ static inline fx128_t fx128_sub(fx128_t a, fx128_t b)
 fx128_t fx128_mul(int64_t a, int64_t b);
 /* a * 2^s for 0 <= s < 128, exact when the result fits. */
 fx128_t fx128_shl(fx128_t a, int s);
-/* round(a / 2^s) for 0 <= s < 127, saturated to the int64 range. */
+/* round(a / 2^s) for 0 <= s < 127, ties away from zero, saturated to the
+ * int64 range. */
 int64_t fx128_shr_round(fx128_t a, int s);
-/* round(a / 2^s) as a 128-bit value, 0 <= s < 127. */
+/* round(a / 2^s) as a 128-bit value, ties away from zero, 0 <= s < 127. */
 fx128_t fx128_shr128(fx128_t a, int s);
 /* Number of significant bits of |a| (0 for 0). */
 int fx128_bits(fx128_t a);

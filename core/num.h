@@ -43,7 +43,7 @@ static inline num_t num_rsqrt(num_t a) { return fx_rsqrt(a); }
 static inline num_t num_from_int(int32_t i) { return fx_from_int(i); }
 /* a * i, exact for Q16.16 (the integer factor adds no rounding). */
 static inline num_t num_mul_int(num_t a, int32_t i) { return fx_mul_int(a, i); }
-/* a / 2^k, rounded to nearest. */
+/* a / 2, rounded to nearest, ties toward +infinity. */
 static inline num_t num_half(num_t a) { return (fx_t)(((int64_t)a + 1) >> 1); }
 static inline num_t num_cot_deg(num_t deg) { return fx_cot_deg(deg); }
 
