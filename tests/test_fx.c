@@ -306,6 +306,16 @@ static void check_fixed_cases(void)
     CHECK(fx_div(16384, FX_MIN) == -1); /* -0.5 LSB, away from zero */
     CHECK(fx_div(16383, FX_MIN) == 0);
     CHECK(fx_mul(F16(-0.5), 1) == 0); /* -0.5 LSB ties toward +inf */
+    /* The other stated tie rules (fx.h): toward +infinity for products and
+     * Q32.32 roundings, away from zero for F16 and the 128-bit shifts. */
+    CHECK(fx_mul(F16(0.5), 1) == 1);
+    CHECK(fxw_round(FX_HALF) == 1 && fxw_round(-FX_HALF) == 0);
+    CHECK(fxw_round(3 * FX_HALF) == 2 && fxw_round(-3 * FX_HALF) == -1);
+    CHECK(vec3_dot(vec3_make(1, 0, 0), vec3_make(FX_HALF, 0, 0)) == 1);
+    CHECK(vec3_dot(vec3_make(-1, 0, 0), vec3_make(FX_HALF, 0, 0)) == 0);
+    CHECK(vec3_cross(vec3_make(0, 1, 0), vec3_make(0, 0, -FX_HALF)).x == 0);
+    CHECK(F16(1.5 / 65536.0) == 2 && F16(-1.5 / 65536.0) == -2);
+    CHECK(fx128_shr_round(fx128_from64(3), 1) == 2 && fx128_shr_round(fx128_from64(-3), 1) == -2);
     CHECK(fx_cot_deg(F16(45)) == FX_ONE);
     CHECK(fx_cot_deg(0) == FX_MAX);
     CHECK(fx_cot_deg(F16(90)) == 0);
