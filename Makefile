@@ -107,6 +107,7 @@ TEST_PREREQ  :=
 -include tests/color.mk
 -include tests/oracle.mk
 -include tests/fit.mk
+-include tests/fx.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)
