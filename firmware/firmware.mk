@@ -93,7 +93,7 @@ $(FW_ELF): $(FW_OBJ) $(wildcard linker/*.ld) firmware/fit.sh
 	$(file >$(FW_DIR)/fit-cflags,$(FW_CFLAGS))
 	$(file >$(FW_DIR)/fit-src,$(FW_SRC))
 	$(file >$(FW_DIR)/fit-ldflags,$(foreach f,$(FW_LDFLAGS),$(if $(findstring -Map=,$(f))$(filter -T%,$(f)),,$(f))))
-	$(Q)BUILD=$(BUILD) BOARD=$(BOARD) SCENE=$(SCENE) ARM_CC=$(ARM_CC) CPU='$(CPU_$(BOARD))' FIT_REPORT=$(FIT_REPORT) \
+	$(Q)BUILD=$(BUILD) BOARD=$(BOARD) SCENE='$(SCENE)' ARM_CC=$(ARM_CC) CPU='$(CPU_$(BOARD))' FIT_REPORT=$(FIT_REPORT) \
 	  firmware/fit.sh link $(FW_DIR) $@
 
 ifeq ($(origin SIZE),undefined)
