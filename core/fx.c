@@ -164,6 +164,88 @@ fx_t fx_cot_deg(fx_t deg)
     return fx_signed_sat(fx_udiv_round(q << 14, (uint64_t)deg), false);
 }
 
+/* Sine and cosine of degrees. The angle is reduced exactly in integers:
+ * modulo 360 degrees, then to a quadrant q and a remainder r in [0, 90),
+ * then to [0, 45] by sin(90 - r) = cos(r). Only the final [0, 45] angle is
+ * converted to radians (Q2.30, error <= 0.5 LSB of Q30 = 4.7e-10) and fed
+ * to Taylor polynomials in Q2.30 (sin to x^9, cos to x^10: the first
+ * dropped terms are below 1.2e-9 at pi/4). All Q30 roundings together stay
+ * below 1e-8, i.e. below 0.001 LSB of Q16.16, so after the final rounding
+ * the result is within 0.5 + 0.001 LSB of the exact value. */
+#define FX_DEG90 ((int32_t)90 << FX_FRAC_BITS)
+#define FX_DEG45 ((int32_t)45 << FX_FRAC_BITS)
+#define FX_Q30_ONE ((int64_t)1 << 30)
+
+/* (a * b) / 2^30 rounded (ties toward +infinity), a, b in Q2.30. */
+static int64_t fx_mul_q30(int64_t a, int64_t b)
+{
+    return (a * b + (FX_Q30_ONE >> 1)) >> 30;
+}
+
+/* sin (want_cos false) or cos (want_cos true) of r degrees in Q16.16,
+ * 0 <= r <= 45 degrees, as Q16.16 in [0, 1]. */
+static fx_t fx_sincos45(int32_t r, bool want_cos)
+{
+    /* pi/180 * 2^46: r (< 2^22) times it stays below 2^63. */
+    const int64_t k = 1228166276394;
+    int64_t x = ((int64_t)r * k + ((int64_t)1 << 31)) >> 32; /* radians, Q2.30 */
+    int64_t x2 = fx_mul_q30(x, x);
+    int64_t v;
+    if (want_cos) {
+        /* 1 - x^2/2! + x^4/4! - ... - x^10/10!, coefficients in Q30. */
+        int64_t p = -296;
+        p = 26631 + fx_mul_q30(p, x2);
+        p = -1491308 + fx_mul_q30(p, x2);
+        p = 44739243 + fx_mul_q30(p, x2);
+        p = -536870912 + fx_mul_q30(p, x2);
+        v = FX_Q30_ONE + fx_mul_q30(p, x2);
+    } else {
+        /* x (1 - x^2/3! + x^4/5! - x^6/7! + x^8/9!). */
+        int64_t p = 2959;
+        p = -213044 + fx_mul_q30(p, x2);
+        p = 8947849 + fx_mul_q30(p, x2);
+        p = -178956971 + fx_mul_q30(p, x2);
+        v = fx_mul_q30(FX_Q30_ONE + fx_mul_q30(p, x2), x);
+    }
+    v = (v + ((int64_t)1 << 13)) >> 14; /* Q30 -> Q16, ties toward +inf */
+    if (v > FX_ONE)
+        v = FX_ONE; /* never above 1 (cannot happen by the bound, kept as a guard) */
+    if (v < 0)
+        v = 0;
+    return (fx_t)v;
+}
+
+/* Shared body: quarter turns to add (1 for cosine), then the angle. */
+static fx_t fx_sin_quarter(fx_t deg, int32_t quarter)
+{
+    /* deg mod 360 degrees, exact: 360 << 16 = 23592960 fits an int32. */
+    const int32_t full = (int32_t)360 << FX_FRAC_BITS;
+    int32_t a = deg % full;
+    if (a < 0)
+        a += full;
+    int32_t q = a / FX_DEG90;
+    int32_t r = a - q * FX_DEG90; /* [0, 90) degrees */
+    q = (q + quarter) & 3;
+    /* sin(q * 90 + r): q = 0 sin r, 1 cos r, 2 -sin r, 3 -cos r. */
+    bool use_cos = (q & 1) != 0;
+    if (r > FX_DEG45) {
+        r = FX_DEG90 - r; /* sin(r) = cos(90 - r) and vice versa */
+        use_cos = !use_cos;
+    }
+    fx_t v = fx_sincos45(r, use_cos);
+    return q >= 2 ? -v : v;
+}
+
+fx_t fx_sin_deg(fx_t deg)
+{
+    return fx_sin_quarter(deg, 0);
+}
+
+fx_t fx_cos_deg(fx_t deg)
+{
+    return fx_sin_quarter(deg, 1);
+}
+
 bool fx_normalize3(fx_t v[3])
 {
     uint64_t m = fx_uabs64(v[0]) | fx_uabs64(v[1]) | fx_uabs64(v[2]);

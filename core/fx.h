@@ -145,6 +145,16 @@ fx_t fx_recip(fx_t a);
  * Computed from sine and cosine series in Q2.30, so it needs no tables. */
 fx_t fx_cot_deg(fx_t deg);
 
+/* sin and cos of an angle in degrees (Q16.16, any value: it is reduced
+ * exactly modulo 360 in integers), as Q16.16. |error| <= 0.5 LSB + 0.001 LSB
+ * of the exact value (round to nearest of a value accurate to 1e-8; a
+ * near-tie may round either way). Exact at multiples of 90 degrees (0, 1,
+ * -1), never above 1.0 in magnitude, and odd/even exactly:
+ * fx_sin_deg(-d) = -fx_sin_deg(d), fx_cos_deg(-d) = fx_cos_deg(d).
+ * Integer-only, no tables (Taylor polynomials in Q2.30 on [0, 45] deg). */
+fx_t fx_sin_deg(fx_t deg);
+fx_t fx_cos_deg(fx_t deg);
+
 /* A signed 128-bit integer for exact set-up arithmetic on 32-bit targets
  * (which have no __int128): two's complement, hi:lo. */
 typedef struct {

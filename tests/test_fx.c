@@ -35,7 +35,8 @@ static const fx_t hard[] = {
 #define N_HARD ((int)(sizeof hard / sizeof hard[0]))
 
 static double max_err_mul, max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv, max_err_cot,
-    max_err_norm, max_err_dot, max_err_cross;
+    max_err_norm, max_err_dot, max_err_cross,
+    max_err_sin, max_err_cos;
 
 /* Saturate an exact value (in LSB) to the fx_t range. */
 static long double sat(long double v)
@@ -117,6 +118,36 @@ static void check_cot(fx_t deg)
     CHECK_SWEEP(e <= bound, "fx_cot_deg(%d) = %d, exact %.3Lf", deg, c, exact);
 }
 
+/* sin/cos of Q16.16 degrees against long double: the angle is reduced
+ * modulo 360 exactly (in integers, as the oracle must not lose the low
+ * bits of large angles) and then converted to radians in long double. */
+#define SIN_BOUND 0.502L
+static long double deg_to_rad_exact(fx_t deg)
+{
+    int64_t full = (int64_t)360 << 16;
+    int64_t a = (int64_t)deg % full;
+    if (a < 0)
+        a += full;
+    return (long double)a / 65536.0L * 3.14159265358979323846264338327950288L / 180.0L;
+}
+
+static void check_sincos(fx_t deg)
+{
+    long double x = deg_to_rad_exact(deg);
+    fx_t s = fx_sin_deg(deg), c = fx_cos_deg(deg);
+    long double es = fabsl((long double)s - sinl(x) * 65536.0L);
+    long double ec = fabsl((long double)c - cosl(x) * 65536.0L);
+    track(&max_err_sin, es);
+    track(&max_err_cos, ec);
+    CHECK_SWEEP(es <= SIN_BOUND, "fx_sin_deg(%d) = %d, exact %.4Lf", deg, s, sinl(x) * 65536.0L);
+    CHECK_SWEEP(ec <= SIN_BOUND, "fx_cos_deg(%d) = %d, exact %.4Lf", deg, c, cosl(x) * 65536.0L);
+    CHECK_SWEEP(s <= FX_ONE && s >= -FX_ONE && c <= FX_ONE && c >= -FX_ONE, "|sin|,|cos| <= 1 at %d", deg);
+    if (deg != FX_MIN) {
+        CHECK_SWEEP(fx_sin_deg(-deg) == -s, "sin odd at %d", deg);
+        CHECK_SWEEP(fx_cos_deg(-deg) == c, "cos even at %d", deg);
+    }
+}
+
 static void check_norm(fx_t x, fx_t y, fx_t z)
 {
     fx_t v[3] = {x, y, z};
@@ -196,6 +227,19 @@ static void check_fixed_cases(void)
     CHECK(fx_cot_deg(F16(90)) == 0);
     CHECK(fx_isqrt64(UINT64_MAX) == 0xffffffffu);
     CHECK(fx_isqrt64(0) == 0);
+    /* sin/cos exact at multiples of 90 degrees, over the whole range. */
+    for (int32_t k = -364; k <= 364; k++) {
+        fx_t d = (fx_t)(k * 90) << 16;
+        int32_t q = ((k % 4) + 4) % 4;
+        CHECK_MSG(fx_sin_deg(d) == (q == 1 ? FX_ONE : q == 3 ? -FX_ONE : 0), "sin(%d*90)", k);
+        CHECK_MSG(fx_cos_deg(d) == (q == 0 ? FX_ONE : q == 2 ? -FX_ONE : 0), "cos(%d*90)", k);
+    }
+    CHECK(fx_sin_deg(F16(30)) == FX_HALF);
+    CHECK(fx_cos_deg(F16(60)) == FX_HALF);
+    CHECK(fx_sin_deg(F16(-30)) == -FX_HALF);
+    CHECK(fx_sin_deg(F16(45)) == fx_cos_deg(F16(45)));
+    CHECK(fx_sin_deg(1) == 0); /* 2^-16 degree = 2.7e-7 rad = 0.017 LSB */
+    CHECK(fx_sin_deg(F16(0.0286)) == 33); /* 0.0286 deg = 32.72 LSB of sine */
     fx_t unit[3] = {0, F16(-3), 0};
     CHECK(fx_normalize3(unit) && unit[0] == 0 && unit[1] == -FX_ONE && unit[2] == 0);
 }
@@ -223,6 +267,20 @@ int main(int argc, char **argv)
         check_cot(d);
     for (fx_t d = 1; d < 64; d++)
         check_cot(d);
+    /* sin/cos: the hard table, the extremes, near each quarter turn, and
+     * every 1/256 degree of a full turn. */
+    for (int i = 0; i < N_HARD; i++)
+        check_sincos(hard[i]);
+    static const fx_t sc_hard[] = {FX_MAX, FX_MIN, FX_MIN + 1, FX_MAX - 1, 1, -1, 2, -2, F16(45), F16(-45),
+                                   F16(135), F16(225), F16(315), F16(360) - 1, F16(360) + 1, F16(32767),
+                                   F16(-32768) + 1, F16(30), F16(60), F16(0.5)};
+    for (int i = 0; i < (int)(sizeof sc_hard / sizeof sc_hard[0]); i++)
+        check_sincos(sc_hard[i]);
+    for (int32_t k = -8; k <= 8; k++)
+        for (int32_t e = -3; e <= 3; e++)
+            check_sincos((fx_t)((k * 90) << 16) + e);
+    for (fx_t d = 0; d <= F16(360); d += 256)
+        check_sincos(d);
 
     for (long i = 0; i < n_random; i++) {
         fx_t a = rand_fx(), b = rand_fx();
@@ -234,6 +292,7 @@ int main(int argc, char **argv)
                    (fxw_t)(rng() >> 1) >> (rng() % 63));
         check_norm(rand_fx(), rand_fx(), rand_fx());
         check_vec();
+        check_sincos(rand_fx());
         if (i % 16 == 0)
             check_cot((fx_t)(rng() % (uint64_t)F16(90)));
     }
@@ -242,6 +301,7 @@ int main(int argc, char **argv)
            max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv);
     printf("  fx_normalize3 %.3f  vec3_dot %.3f  vec3_cross %.3f  fx_cot_deg %.3f of its bound\n",
            max_err_norm, max_err_dot, max_err_cross, max_err_cot);
+    printf("  fx_sin_deg %.4f  fx_cos_deg %.4f\n", max_err_sin, max_err_cos);
     /* One check per function on the sweep's worst case (the sweep itself
      * has already counted every single failure). */
     CHECK(max_err_mul <= 0.5);
@@ -253,5 +313,7 @@ int main(int argc, char **argv)
     CHECK(max_err_dot <= 0.5);
     CHECK(max_err_cross <= 0.5);
     CHECK(max_err_cot <= 1.0);
+    CHECK(max_err_sin <= SIN_BOUND);
+    CHECK(max_err_cos <= SIN_BOUND);
     return check_report("test_fx");
 }
