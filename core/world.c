@@ -39,13 +39,14 @@ uint16_t world_count(const world_t *w)
 }
 
 /* A kind with capacity 0 is compiled out: adding one reports FXRT_ERR_FULL
- * without referencing its constructor, so its code stays out of the link. */
+ * without referencing its checks or constructor, so none of its code is
+ * linked. */
 int32_t world_add_plane(world_t *w, vec3_t point, vec3_t normal, color_t color)
 {
+#if FXRT_MAX_PLANES > 0
     fxrt_err_t e = geom_plane_check(point, normal, color);
     if (e != FXRT_OK)
         return e;
-#if FXRT_MAX_PLANES > 0
     if (w->n_planes >= FXRT_MAX_PLANES)
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
@@ -55,16 +56,17 @@ int32_t world_add_plane(world_t *w, vec3_t point, vec3_t normal, color_t color)
     return id;
 #else
     (void)w;
+    (void)point, (void)normal, (void)color;
     return FXRT_ERR_FULL;
 #endif
 }
 
 int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color)
 {
+#if FXRT_MAX_SPHERES > 0
     fxrt_err_t e = geom_sphere_check(center, radius, color);
     if (e != FXRT_OK)
         return e;
-#if FXRT_MAX_SPHERES > 0
     if (w->n_spheres >= FXRT_MAX_SPHERES)
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
@@ -72,16 +74,17 @@ int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color)
     return id;
 #else
     (void)w;
+    (void)center, (void)radius, (void)color;
     return FXRT_ERR_FULL;
 #endif
 }
 
 int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t color)
 {
+#if FXRT_MAX_TRIANGLES > 0
     fxrt_err_t e = geom_triangle_check(a, b, c, color);
     if (e != FXRT_OK)
         return e;
-#if FXRT_MAX_TRIANGLES > 0
     if (w->n_triangles >= FXRT_MAX_TRIANGLES)
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
@@ -89,16 +92,17 @@ int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t col
     return id;
 #else
     (void)w;
+    (void)a, (void)b, (void)c, (void)color;
     return FXRT_ERR_FULL;
 #endif
 }
 
 int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color)
 {
+#if FXRT_MAX_BOXES > 0
     fxrt_err_t e = geom_box_check(min, max, color);
     if (e != FXRT_OK)
         return e;
-#if FXRT_MAX_BOXES > 0
     if (w->n_boxes >= FXRT_MAX_BOXES)
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
@@ -106,6 +110,7 @@ int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color)
     return id;
 #else
     (void)w;
+    (void)min, (void)max, (void)color;
     return FXRT_ERR_FULL;
 #endif
 }

@@ -60,3 +60,15 @@ $(foreach n,$(NUMBERS),$(eval $(call test_fxrt_rule,$(n))))
 SUITES_EXTRA += $(TEST_FXRT_BIN) tests/examples.sh
 TEST_PREREQ  += $(TEST_FXRT_BIN) $(EX_HOST)/orbit $(EX_MB)/orbit.elf
 .PHONY: examples
+
+# On-board set-up of many scenes in one ELF (tests/qemu.sh):
+#   make onboard BOARD=b ONB_DIR=dir   (dir from tests/onboard_gen.sh)
+ONB_DIR ?= $(BUILD)/onboard
+ONB_SRC = $(CORE_NUM:%=core/%.c) core/fx.c tests/onboard_main.c firmware/startup.c firmware/semihost.c \
+          firmware/counter.c
+onboard:
+	@echo "  ARMCC   $(ONB_DIR)/onboard.elf"
+	$(Q)$(ARM_CC) $(WARN) -O2 $(CPU_$(BOARD)) -ffreestanding -ffunction-sections -fdata-sections -DFXRT_NUMBER=1 \
+	  -include $(ONB_DIR)/scene_config.h -I$(ONB_DIR) -Icore -Ifirmware $(ONB_SRC) -nostartfiles \
+	  --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Llinker -Tlinker/$(BOARD).ld -o $(ONB_DIR)/onboard.elf
+.PHONY: onboard
