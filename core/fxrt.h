@@ -46,6 +46,8 @@
 #ifndef FXRT_H
 #define FXRT_H
 
+#include <stddef.h>
+
 #include "cam.h"
 #include "fxrt_err.h"
 #include "render.h"

@@ -77,4 +77,23 @@ check "the core defines its own (fxrt_config_n1_p1_s2_t1_b1_w64_px1)" \
 # And the matching build links (the check above is not a link that always fails).
 $CC -std=c11 -O2 $(sed 's/SPHERES=8/SPHERES=2/' <<<"$CFG_APP") -Icore -c examples/orbit.c -o "$mm/orbit-ok.o"
 check "the same files with matching macros link" $CC -o "$mm/orbit-ok" "$mm/orbit-ok.o" "$mm/io_host.o" $core
+
+# docs/EMBEDDING.md's dozen-line example compiles, links against the
+# example's core and renders its 16 frames (48 rows of 192 bytes each).
+awk '/^```c$/ { on = 1; next } /^```$/ { if (on) exit } on' docs/EMBEDDING.md >"$mm/snippet.c"
+cat >"$mm/snippet_main.c" <<'C'
+#include <stdio.h>
+#include "fxrt.h"
+void orbit(void);
+void send(const uint8_t *row, size_t len);
+static size_t rows;
+void send(const uint8_t *row, size_t len) { rows += len == 192 && row; }
+int main(void) { orbit(); printf("rows=%zu\n", rows); return rows == 16 * 48 ? 0 : 1; }
+C
+check "docs/EMBEDDING.md snippet extracted ($(wc -l <"$mm/snippet.c") lines)" grep -q fxrt_render_row "$mm/snippet.c"
+ecfg="-DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=2 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64"
+check "docs/EMBEDDING.md snippet builds with -Wall -Wextra -Wpedantic -Werror" \
+    $CC -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $ecfg -Icore -o "$mm/snippet" \
+    "$mm/snippet.c" "$mm/snippet_main.c" $core
+check "docs/EMBEDDING.md snippet renders 16 frames of 48 rows" "$mm/snippet"
 report examples
