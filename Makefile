@@ -103,6 +103,7 @@ SUITES_EXTRA :=
 TEST_PREREQ  :=
 -include tests/sanitize.mk
 -include tests/diff.mk
+-include host/version.mk
 -include tests/examples.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \

@@ -49,7 +49,7 @@ for v in "${variants[@]}"; do
     [ -z "$tag" ] && continue
     for s in "${scenes[@]}"; do
         name=$(basename "$s" .scene)
-        if ! cmp -s "$BUILD/qemu/$BOARD/$name-q16-$tag.ppm" "$BUILD/qemu/$BOARD/$name-q16.ppm"; then
+        if ! cmp -s "$BUILD/qemu/$BOARD/$name-q16-$SIZE-$tag.ppm" "$BUILD/qemu/$BOARD/$name-q16-$SIZE.ppm"; then
             echo "ablation: $label changes the frame of $name" >&2
             fail=1
         fi

@@ -54,7 +54,7 @@ short() { local n; n=$(basename "$1" .scene); echo "${n%%-*}"; }
 get() { sed -nE "s/.*(^| )$1=([^ ]+).*/\2/p" <<<"$2"; }
 
 # --- one unit: one (board, scene, number), both renderers in turn ----------
-# (make qemu writes NAME-NUMBER[-FW_TAG].ppm; the frame is copied away.)
+# (make qemu writes NAME-NUMBER-SIZE[-FW_TAG].ppm; the frame is copied away.)
 if [[ ${1:-} == --unit ]]; then
     idx=$2 total=$3 board=$4 scene=$5 number=$6
     cpu=$(board_field "$board" 2) fb=$(board_field "$board" 3)
@@ -81,7 +81,7 @@ if [[ ${1:-} == --unit ]]; then
         fi
         frame=$OUT/frames/$board/$name-$number-$r.ppm
         mkdir -p "$(dirname "$frame")"
-        cp "$BUILD/qemu/$board/$name-$number$tag.ppm" "$frame"
+        cp "$BUILD/qemu/$board/$name-$number-$SIZE$tag.ppm" "$frame"
         if ! cmp=$("$FXRT" compare "$OUT/ref/$name-double.ppm" "$frame" 2>&1); then
             echo "$label: fxrt compare $OUT/ref/$name-double.ppm $frame failed: $cmp" >"$OUT/runs/$id.err"
             exit 1

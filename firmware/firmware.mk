@@ -1,11 +1,14 @@
 # Firmware build, included by the top Makefile. One ELF per
 # (BOARD, SCENE, NUMBER, SIZE, FB); test scripts call make once per ELF.
-#   make fw   SCENE=scenes/abb6-sphere.scene BOARD=mps2-an385 NUMBER=q16 SIZE=160x120 [FB=full|stream]
-#   make qemu (same variables): build, run in QEMU, write build/qemu/BOARD/NAME-NUMBER.ppm
+#   make fw   SCENE=scenes/abb6-sphere.scene BOARD=mps2-an385 NUMBER=q16 [SIZE=WxH] [FB=full|stream]
+#   make qemu (same variables): build, run in QEMU, write
+#             build/qemu/BOARD/NAME-NUMBER-WxH[-FW_TAG].ppm
+# Without SIZE= the frame has the scene's own size (its `image` line, as
+# `fxrt render` does), read by `fxrt size SCENE`. A space in SCENE's path
+# works; it becomes '_' in NAME.
 
 BOARD  ?= mps2-an385
 NUMBER ?= q16
-SIZE   ?= 160x120
 SCENE  ?= scenes/abb6-sphere.scene
 
 # Per board: CPU flags, SysTick clock period in ns (QEMU's model), and the
@@ -25,19 +28,36 @@ FB_mps2-an386 := full
 FB_microbit   := stream
 FB ?= $(FB_$(BOARD))
 
+FB_MODES := full stream
+
 ifeq ($(CPU_$(BOARD)),)
 $(error unknown BOARD '$(BOARD)' (one of: $(BOARDS)))
 endif
 ifeq ($(filter $(NUMBER),$(NUMBERS)),)
 $(error unknown NUMBER '$(NUMBER)' (one of: $(NUMBERS)))
 endif
+ifneq ($(words $(FB))$(filter $(FB),$(FB_MODES)),1$(strip $(FB)))
+$(error unknown FB '$(FB)' (one of: $(FB_MODES); default for $(BOARD): $(FB_$(BOARD))))
+endif
+ifneq ($(origin SIZE),undefined)
+ifneq ($(words $(SIZE)):$(findstring x,$(SIZE)),1:x)
+$(error bad SIZE '$(SIZE)' (want WxH, e.g. 160x120; without SIZE= the scene's own size is used))
+endif
+endif
+ifneq ($(findstring ',$(SCENE))$(findstring ",$(SCENE))$(findstring $$,$(SCENE)),)
+$(error SCENE '$(SCENE)': quotes and '$$' in the scene path are not supported (spaces are))
+endif
+
+# A space in SCENE: escaped in prerequisite lists, '_' in file names.
+fw_space := $(subst ,, )
+SCENE_DEP := $(subst $(fw_space),\$(fw_space),$(SCENE))
 
 ARM_CC   := arm-none-eabi-gcc
-FW_NAME  := $(basename $(notdir $(SCENE)))
+FW_NAME  := $(subst ?,_,$(basename $(notdir $(subst $(fw_space),?,$(SCENE)))))
 # FW_EXTRA adds compiler flags (e.g. -DFXRT_PIXEL=2); name them with FW_TAG.
 FW_DIR   := $(BUILD)/fw/$(BOARD)/$(FW_NAME)-$(NUMBER)-$(SIZE)-$(FB)$(if $(FW_TAG),-$(FW_TAG))
 FW_ELF   := $(FW_DIR)/fxrt.elf
-FW_OUT   := $(FW_NAME)-$(NUMBER)$(if $(FW_TAG),-$(FW_TAG)).ppm
+FW_OUT   := $(FW_NAME)-$(NUMBER)-$(SIZE)$(if $(FW_TAG),-$(FW_TAG)).ppm
 FB_FLAG  := $(if $(filter stream,$(FB)),-DFXRT_FB_MODE=2,-DFXRT_FB_MODE=1)
 FW_CFLAGS := $(WARN) -O2 -g $(CPU_$(BOARD)) -ffreestanding -ffunction-sections -fdata-sections \
              -fno-math-errno -fstack-usage -DFXRT_NUMBER=$(call num_id,$(NUMBER)) $(FB_FLAG) $(FW_EXTRA) \
@@ -49,10 +69,10 @@ FW_SRC   := $(CORE_NUM:%=core/%.c) core/fx.c firmware/main.c firmware/startup.c 
             firmware/semihost.c firmware/counter.c
 FW_OBJ   := $(patsubst %.c,$(FW_DIR)/%.o,$(FW_SRC))
 
-$(FW_DIR)/scene_data.h: $(SCENE) $(BUILD)/fxrt-scenec
+$(FW_DIR)/scene_data.h: $(SCENE_DEP) $(BUILD)/fxrt-scenec
 	@mkdir -p $(@D)
 	@echo "  SCENEC  $(SCENE) -> $(@D)"
-	$(Q)$(BUILD)/fxrt-scenec $(SCENE) --number $(NUMBER) --size $(SIZE) --out $(@D) $(if $(FW_ALL_KINDS),--all-kinds)
+	$(Q)$(BUILD)/fxrt-scenec '$(SCENE)' --number $(NUMBER) --size $(SIZE) --out $(@D) $(if $(FW_ALL_KINDS),--all-kinds)
 $(FW_DIR)/scene_config.h: $(FW_DIR)/scene_data.h
 
 # Rebuild when the flags change (the directory name does not encode them all).
@@ -69,12 +89,20 @@ $(FW_ELF): $(FW_OBJ) $(wildcard linker/*.ld)
 	@echo "  ARMLD   $@"
 	$(Q)$(ARM_CC) $(CPU_$(BOARD)) -o $@ $(FW_OBJ) $(FW_LDFLAGS)
 
+ifeq ($(origin SIZE),undefined)
+# No SIZE=: check the scene and take its size from the host tool, then
+# build and run with SIZE set (the other variables pass on by MAKEFLAGS).
+fw qemu: $(BUILD)/fxrt
+	$(Q)size=$$($(BUILD)/fxrt size -- '$(SCENE)') && \
+	  $(MAKE) --no-print-directory $@ SIZE=$$size
+else
 fw: $(FW_ELF)
 
 # Run in QEMU: deterministic (-icount), with a timeout; prints instructions=N.
 qemu: $(FW_ELF)
 	$(Q)BOARD=$(BOARD) QEMU_M=$(QEMU_M_$(BOARD)) TICK_NS=$(TICK_NS_$(BOARD)) \
 	  firmware/qemu-run.sh $(FW_ELF) $(BUILD)/qemu/$(BOARD) $(FW_OUT)
+endif
 
 # The calibration image: a loop of exactly 2*10^6 instructions.
 CAL_ELF := $(BUILD)/fw/$(BOARD)/calibrate.elf

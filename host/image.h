@@ -31,4 +31,20 @@ int image_write(const char *path, const image_t *img, char *err, size_t errlen);
 
 void image_free(image_t *img);
 
+/* Text in a built-in 5x8 bitmap font (printable ASCII; any other byte is
+ * drawn as '?'). A character takes IMAGE_GLYPH_ADVANCE columns (5 of ink, 1
+ * of space) and IMAGE_GLYPH_H rows (7 above the baseline, 1 descender),
+ * each font pixel a scale x scale square. */
+#define IMAGE_GLYPH_W 5
+#define IMAGE_GLYPH_H 8
+#define IMAGE_GLYPH_ADVANCE 6
+
+/* 1 when column col, row row (0 = top) of c's glyph is ink, else 0. */
+int image_glyph_ink(char c, int col, int row);
+/* Width in pixels of text drawn at scale (no trailing space); 0 for "". */
+int image_text_width(const char *text, int scale);
+/* Draw text with its top-left corner at (x, y) in colour rgb, clipped to
+ * the image; only ink pixels are written. */
+void image_draw_text(image_t *img, int x, int y, int scale, const char *text, const uint8_t rgb[3]);
+
 #endif

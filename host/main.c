@@ -1,18 +1,27 @@
 /* fxrt: the host command-line tool. Renders scene files with any of the
  * three number builds and compares images. */
 #include <errno.h>
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "args.h"
 #include "compare.h"
 #include "engine.h"
 #include "image.h"
 #include "scene.h"
+#include "version.h"
 
 #define ERR_LEN 512
+
+#if defined(__GNUC__)
+#define MAIN_PRINTF(fmt, args) __attribute__((format(printf, fmt, args)))
+#else
+#define MAIN_PRINTF(fmt, args)
+#endif
 
 static const char usage_main[] =
     "usage: fxrt COMMAND [ARGS]\n"
@@ -25,11 +34,15 @@ static const char usage_main[] =
     "                 render a scene file\n"
     "  compare A B [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
     "                 compare two images and print metrics\n"
-    "  sheet OUT IMAGE...\n"
-    "                 place images of equal height side by side (8 px gaps)\n"
+    "  sheet -o OUT IMAGE[=LABEL]... [--no-labels]\n"
+    "                 place labelled images of equal height side by side\n"
+    "  size SCENE     print the scene's image size as WxH (its 'image' line)\n"
     "\n"
-    "Run 'fxrt COMMAND --help' for a command's options.\n"
-    "Exit status: 0 success, 1 a compare threshold was exceeded, 2 bad input or usage.\n";
+    "  -h, --help     this text; 'fxrt COMMAND --help' for a command's options\n"
+    "  --version      print the version\n"
+    "\n"
+    "Exit status: 0 success, 1 a compare threshold was exceeded, 2 bad input or\n"
+    "usage (one line on stderr saying what is wrong; FILE:LINE: for scenes).\n";
 
 static const char usage_render[] =
     "usage: fxrt render SCENE [-o OUT] [--size WxH] [--number q16|float|double]\n"
@@ -50,7 +63,10 @@ static const char usage_render[] =
     "                     output is byte-identical, it only takes longer) or\n"
     "                     raycast (a camera ray and a nearest-hit search per\n"
     "                     pixel: the independent oracle and naive baseline)\n"
-    "  -h, --help         this text\n";
+    "  -h, --help         this text\n"
+    "Each option may be given once; '--' ends the options.\n"
+    "Exit status: 0 written, 2 bad scene (FILE:LINE: message), unwritable output\n"
+    "or bad arguments; nothing is written on failure.\n";
 
 static const char usage_compare[] =
     "usage: fxrt compare A B [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
@@ -60,19 +76,102 @@ static const char usage_compare[] =
     "A mismatch is a pixel whose RGB differs. It is interior when no pixel within\n"
     "1 px of it in A lies on an edge (a pixel of A whose 4-neighbour differs).\n"
     "\n"
-    "  --diff DIFF        write a heat map of the differences (.png or .ppm)\n"
+    "  --diff DIFF        write a heat map of the differences (.png or .ppm):\n"
+    "                     black = equal, dark red to white = small to large error;\n"
+    "                     for identical images it says 'identical'. DIFF must\n"
+    "                     not be A or B (same path or same file)\n"
     "  --max-pct P        exit 1 if mismatched_pct > P\n"
     "  --max-interior N   exit 1 if interior_mismatched > N\n"
     "  -h, --help         this text\n"
+    "Each option may be given once; '--' ends the options.\n"
     "Exit status: 0 within thresholds, 1 threshold exceeded, 2 unreadable input,\n"
     "size mismatch or bad arguments.\n";
 
-static int fail_usage(const char *usage, const char *fmt, const char *arg)
+static const char usage_sheet[] =
+    "usage: fxrt sheet -o OUT.png|OUT.ppm IMAGE[=LABEL]... [--no-labels]\n"
+    "\n"
+    "Place the images (PNG or PPM, all of the same height, at most 16) left to\n"
+    "right with 8-pixel grey gaps, each under a label, e.g. a Q16.16 render,\n"
+    "its reference and their diff:\n"
+    "  fxrt sheet -o s.png q.ppm='Q16.16 (QEMU)' d.png=double diff.png=diff\n"
+    "\n"
+    "  -o, --output OUT   the sheet (.png or .ppm); required, and it must not be\n"
+    "                     one of the IMAGEs (same path or same file)\n"
+    "  IMAGE=LABEL        the text above that image (printable ASCII; the text\n"
+    "                     after the last '='); without one, the file's base name.\n"
+    "                     A file whose name holds '=' is written 'NAME=' or\n"
+    "                     'NAME=LABEL'\n"
+    "  --no-labels        no label strip (one IMAGE converts PPM <-> PNG)\n"
+    "  -h, --help         this text\n"
+    "Each option may be given once; '--' ends the options.\n"
+    "Exit status: 0 written, 2 unreadable input, heights differ or bad arguments.\n";
+
+static const char usage_size[] =
+    "usage: fxrt size SCENE\n"
+    "\n"
+    "Check SCENE and print its image size as WxH: the 'image' line, or 160x120\n"
+    "without one (make qemu uses it when SIZE= is not given).\n"
+    "Exit status: 0, or 2 for a bad scene (FILE:LINE: message).\n";
+
+/* A usage error: one line "fxrt: [CMD: ]message" and a pointer to the help
+ * on stderr; returns the exit status 2. cmd is NULL for the top level. */
+static int usage_error(const char *cmd, const char *fmt, ...) MAIN_PRINTF(2, 3);
+static int usage_error(const char *cmd, const char *fmt, ...)
 {
-    fprintf(stderr, "fxrt: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n%s", usage);
+    va_list ap;
+
+    fputs("fxrt: ", stderr);
+    if (cmd)
+        fprintf(stderr, "%s: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    if (cmd)
+        fprintf(stderr, "\nTry 'fxrt %s --help'.\n", cmd);
+    else
+        fputs("\nTry 'fxrt --help'.\n", stderr);
     return 2;
+}
+
+/* True when the arguments before any "--" ask for help. */
+static bool wants_help(int argc, char **argv)
+{
+    for (int i = 0; i < argc && strcmp(argv[i], "--"); i++)
+        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help"))
+            return true;
+    return false;
+}
+
+/* The value of the option at argv[*i] (advancing *i past it), or NULL after
+ * a usage error: the option was already given (*seen holds its first
+ * spelling) or has no value. */
+static const char *opt_value(const char *cmd, int argc, char **argv, int *i, const char **seen)
+{
+    const char *name = argv[*i];
+    if (*seen) {
+        if (strcmp(*seen, name))
+            usage_error(cmd, "%s given twice (also as %s)", name, *seen);
+        else
+            usage_error(cmd, "%s given twice", name);
+        return NULL;
+    }
+    if (*i + 1 >= argc) {
+        usage_error(cmd, "%s needs a value", name);
+        return NULL;
+    }
+    *seen = name;
+    return argv[++*i];
+}
+
+/* True when writing out would replace the input in: the same path, or the
+ * same existing file (device and inode: ./a.png, a hard or symbolic link). */
+static bool same_file(const char *out, const char *in)
+{
+    struct stat so, si;
+
+    if (!strcmp(out, in))
+        return true;
+    return stat(out, &so) == 0 && stat(in, &si) == 0 && so.st_dev == si.st_dev && so.st_ino == si.st_ino;
 }
 
 static int parse_double(const char *s, double *out)
@@ -99,42 +198,49 @@ static void base_name(const char *path, char *out, size_t len)
 
 static int cmd_render(int argc, char **argv)
 {
+    static const char cmd[] = "render";
     const char *scene_path = NULL, *out = NULL;
+    const char *seen_out = NULL, *seen_size = NULL, *seen_number = NULL, *seen_renderer = NULL;
     int w = 0, h = 0;
     engine_number_t num = ENGINE_Q16;
     engine_renderer_t renderer = ENGINE_FAST;
+    bool opts = true;
+    if (wants_help(argc, argv)) {
+        fputs(usage_render, stdout);
+        return 0;
+    }
     for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            fputs(usage_render, stdout);
-            return 0;
-        }
-        bool takes = !strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "--size") || !strcmp(a, "--number") ||
-                     !strcmp(a, "--renderer");
-        if (takes && i + 1 >= argc)
-            return fail_usage(usage_render, "render: %s needs a value", a);
-        if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            out = argv[++i];
-        } else if (!strcmp(a, "--size")) {
-            if (args_size(argv[++i], &w, &h))
-                return fail_usage(usage_render, "render: bad --size '%s' (want WxH, each 1..4096)", argv[i]);
-        } else if (!strcmp(a, "--number")) {
-            if (engine_number_parse(argv[++i], &num))
-                return fail_usage(usage_render, "render: bad --number '%s' (want q16, float or double)", argv[i]);
-        } else if (!strcmp(a, "--renderer")) {
-            const char *v = argv[++i];
+        const char *a = argv[i], *v;
+        if (opts && !strcmp(a, "--")) {
+            opts = false;
+        } else if (opts && (!strcmp(a, "-o") || !strcmp(a, "--output"))) {
+            if (!(out = opt_value(cmd, argc, argv, &i, &seen_out)))
+                return 2;
+        } else if (opts && !strcmp(a, "--size")) {
+            if (!(v = opt_value(cmd, argc, argv, &i, &seen_size)))
+                return 2;
+            if (args_size(v, &w, &h))
+                return usage_error(cmd, "bad --size '%s' (want WxH, each 1..%d)", v, FXRT_MAX_DIM);
+        } else if (opts && !strcmp(a, "--number")) {
+            if (!(v = opt_value(cmd, argc, argv, &i, &seen_number)))
+                return 2;
+            if (engine_number_parse(v, &num))
+                return usage_error(cmd, "bad --number '%s' (want q16, float or double)", v);
+        } else if (opts && !strcmp(a, "--renderer")) {
+            if (!(v = opt_value(cmd, argc, argv, &i, &seen_renderer)))
+                return 2;
             if (engine_renderer_parse(v, &renderer))
-                return fail_usage(usage_render, "render: bad --renderer '%s' (want fast, reference or raycast)", v);
-        } else if (a[0] == '-' && a[1]) {
-            return fail_usage(usage_render, "render: unknown option '%s'", a);
+                return usage_error(cmd, "bad --renderer '%s' (want fast, reference or raycast)", v);
+        } else if (opts && a[0] == '-' && a[1]) {
+            return usage_error(cmd, "unknown option '%s'", a);
         } else if (!scene_path) {
             scene_path = a;
         } else {
-            return fail_usage(usage_render, "render: unexpected argument '%s'", a);
+            return usage_error(cmd, "unexpected argument '%s' (one SCENE only)", a);
         }
     }
     if (!scene_path)
-        return fail_usage(usage_render, "render: %s", "no SCENE given");
+        return usage_error(cmd, "no SCENE given");
 
     char err[ERR_LEN];
     static scene_t scene; /* large: static, not on the stack */
@@ -153,6 +259,8 @@ static int cmd_render(int argc, char **argv)
         snprintf(def_out, sizeof def_out, "%s-%s.png", base, engine_number_name(num));
         out = def_out;
     }
+    if (same_file(out, scene_path))
+        return usage_error(cmd, "output '%s' is the scene file itself", out);
     image_t img;
     if (image_alloc(&img, w, h, err, sizeof err)) {
         fprintf(stderr, "fxrt: %s\n", err);
@@ -168,48 +276,78 @@ static int cmd_render(int argc, char **argv)
     return rc;
 }
 
+/* Write "identical" across the middle of a diff map (which is all black
+ * when the images are equal), as large as fits in 3/4 of its width. */
+static void mark_identical(image_t *diff)
+{
+    static const char text[] = "identical";
+    static const uint8_t grey[3] = {200, 200, 200};
+    int scale = 1;
+    while (image_text_width(text, scale + 1) <= diff->width * 3 / 4 &&
+           (scale + 1) * IMAGE_GLYPH_H <= diff->height / 2)
+        scale++;
+    int x = (diff->width - image_text_width(text, scale)) / 2;
+    int y = (diff->height - (IMAGE_GLYPH_H - 1) * scale) / 2;
+    image_draw_text(diff, x < 0 ? 0 : x, y < 0 ? 0 : y, scale, text, grey);
+}
+
 static int cmd_compare(int argc, char **argv)
 {
+    static const char cmd[] = "compare";
     const char *pa = NULL, *pb = NULL, *diff_path = NULL;
+    const char *seen_diff = NULL, *seen_pct = NULL, *seen_interior = NULL;
     double max_pct = -1;
     long max_interior = -1;
+    bool opts = true;
+    if (wants_help(argc, argv)) {
+        fputs(usage_compare, stdout);
+        return 0;
+    }
     for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            fputs(usage_compare, stdout);
-            return 0;
-        }
-        bool takes = !strcmp(a, "--diff") || !strcmp(a, "--max-pct") || !strcmp(a, "--max-interior");
-        if (takes && i + 1 >= argc)
-            return fail_usage(usage_compare, "compare: %s needs a value", a);
-        if (!strcmp(a, "--diff")) {
-            diff_path = argv[++i];
-        } else if (!strcmp(a, "--max-pct")) {
-            if (parse_double(argv[++i], &max_pct))
-                return fail_usage(usage_compare, "compare: bad --max-pct '%s' (want a number >= 0)", argv[i]);
-        } else if (!strcmp(a, "--max-interior")) {
-            if (args_int(argv[++i], 0, 1000000000L, &max_interior))
-                return fail_usage(usage_compare, "compare: bad --max-interior '%s' (want an integer >= 0)", argv[i]);
-        } else if (a[0] == '-' && a[1]) {
-            return fail_usage(usage_compare, "compare: unknown option '%s'", a);
+        const char *a = argv[i], *v;
+        if (opts && !strcmp(a, "--")) {
+            opts = false;
+        } else if (opts && !strcmp(a, "--diff")) {
+            if (!(diff_path = opt_value(cmd, argc, argv, &i, &seen_diff)))
+                return 2;
+        } else if (opts && !strcmp(a, "--max-pct")) {
+            if (!(v = opt_value(cmd, argc, argv, &i, &seen_pct)))
+                return 2;
+            if (parse_double(v, &max_pct))
+                return usage_error(cmd, "bad --max-pct '%s' (want a number >= 0)", v);
+        } else if (opts && !strcmp(a, "--max-interior")) {
+            if (!(v = opt_value(cmd, argc, argv, &i, &seen_interior)))
+                return 2;
+            if (args_int(v, 0, 1000000000L, &max_interior))
+                return usage_error(cmd, "bad --max-interior '%s' (want an integer >= 0)", v);
+        } else if (opts && a[0] == '-' && a[1]) {
+            return usage_error(cmd, "unknown option '%s'", a);
         } else if (!pa) {
             pa = a;
         } else if (!pb) {
             pb = a;
         } else {
-            return fail_usage(usage_compare, "compare: unexpected argument '%s'", a);
+            return usage_error(cmd, "unexpected argument '%s' (two images A and B only)", a);
         }
     }
     if (!pb)
-        return fail_usage(usage_compare, "compare: %s", "needs two images A and B");
+        return usage_error(cmd, "needs two images A and B");
+    if (diff_path && (same_file(diff_path, pa) || same_file(diff_path, pb)))
+        return usage_error(cmd, "--diff '%s' would overwrite the input '%s'", diff_path,
+                           same_file(diff_path, pa) ? pa : pb);
 
     char err[ERR_LEN];
     image_t a = {0}, b = {0}, diff = {0};
     int rc = 2;
     compare_result_t res;
     if (image_read(pa, &a, err, sizeof err) || image_read(pb, &b, err, sizeof err) ||
-        compare_images(&a, &b, &res, diff_path ? &diff : NULL, err, sizeof err) ||
-        (diff_path && image_write(diff_path, &diff, err, sizeof err))) {
+        compare_images(&a, &b, &res, diff_path ? &diff : NULL, err, sizeof err)) {
+        fprintf(stderr, "fxrt: compare: %s\n", err);
+        goto done;
+    }
+    if (diff_path && res.mismatched == 0)
+        mark_identical(&diff);
+    if (diff_path && image_write(diff_path, &diff, err, sizeof err)) {
         fprintf(stderr, "fxrt: compare: %s\n", err);
         goto done;
     }
@@ -230,54 +368,118 @@ done:
     return rc;
 }
 
-static const char usage_sheet[] =
-    "usage: fxrt sheet OUT.png|OUT.ppm IMAGE...\n"
-    "\n"
-    "Place the images (PNG or PPM, all of the same height) left to right with\n"
-    "8-pixel grey gaps, e.g. a Q16.16 render, its reference and their diff.\n";
-
 #define SHEET_GAP 8
 #define SHEET_MAX 16
+#define SHEET_LABEL_MAX 200
+
+/* The label strip: text at SHEET_SCALE(h) font pixels per glyph pixel
+ * (2 for panels 300 px high or more, else 1), with a margin of 3 font
+ * pixels above and below. */
+#define SHEET_SCALE(h) ((h) >= 300 ? 2 : 1)
+#define SHEET_STRIP(scale) ((IMAGE_GLYPH_H + 6) * (scale))
 
 static int cmd_sheet(int argc, char **argv)
 {
-    if (argc >= 1 && (!strcmp(argv[0], "-h") || !strcmp(argv[0], "--help"))) {
+    static const char cmd[] = "sheet";
+    static const uint8_t ink[3] = {255, 255, 255};
+    const char *out_path = NULL, *seen_out = NULL, *seen_nolabels = NULL;
+    char paths[SHEET_MAX][ERR_LEN], labels[SHEET_MAX][SHEET_LABEL_MAX + 1];
+    int n = 0;
+    bool opts = true, with_labels = true;
+    if (wants_help(argc, argv)) {
         fputs(usage_sheet, stdout);
         return 0;
     }
-    if (argc < 2)
-        return fail_usage(usage_sheet, "sheet: %s", "needs OUT and at least one IMAGE");
-    if (argc - 1 > SHEET_MAX)
-        return fail_usage(usage_sheet, "sheet: %s", "at most 16 images");
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (opts && !strcmp(a, "--")) {
+            opts = false;
+        } else if (opts && (!strcmp(a, "-o") || !strcmp(a, "--output"))) {
+            if (!(out_path = opt_value(cmd, argc, argv, &i, &seen_out)))
+                return 2;
+        } else if (opts && !strcmp(a, "--no-labels")) {
+            if (seen_nolabels)
+                return usage_error(cmd, "%s given twice", a);
+            seen_nolabels = a;
+            with_labels = false;
+        } else if (opts && a[0] == '-' && a[1]) {
+            return usage_error(cmd, "unknown option '%s'", a);
+        } else if (n == SHEET_MAX) {
+            return usage_error(cmd, "at most %d images", SHEET_MAX);
+        } else {
+            /* IMAGE[=LABEL]: the label is what follows the last '='. */
+            const char *eq = strrchr(a, '=');
+            size_t plen = eq ? (size_t)(eq - a) : strlen(a);
+            if (plen == 0)
+                return usage_error(cmd, "'%s' has no image before the '='", a);
+            if (plen >= sizeof paths[n])
+                return usage_error(cmd, "image path too long");
+            memcpy(paths[n], a, plen);
+            paths[n][plen] = 0;
+            if (eq && eq[1]) {
+                if (strlen(eq + 1) > SHEET_LABEL_MAX)
+                    return usage_error(cmd, "label '%.20s...' longer than %d characters", eq + 1, SHEET_LABEL_MAX);
+                for (const char *c = eq + 1; *c; c++)
+                    if ((unsigned char)*c < 0x20 || (unsigned char)*c > 0x7e)
+                        return usage_error(cmd, "label '%s' is not printable ASCII", eq + 1);
+                snprintf(labels[n], sizeof labels[n], "%s", eq + 1);
+            } else {
+                const char *b = strrchr(paths[n], '/');
+                snprintf(labels[n], sizeof labels[n], "%s", b ? b + 1 : paths[n]);
+            }
+            n++;
+        }
+    }
+    if (!out_path)
+        return usage_error(cmd, "no output given (-o OUT; the images follow)");
+    if (n == 0)
+        return usage_error(cmd, "no IMAGE given");
+    for (int i = 0; i < n; i++)
+        if (same_file(out_path, paths[i]))
+            return usage_error(cmd, "output '%s' would overwrite the input '%s'", out_path, paths[i]);
+
     char err[ERR_LEN];
     image_t in[SHEET_MAX] = {{0}}, out = {0};
-    int n = argc - 1, width = 0, rc = 2;
+    int width = 0, rc = 2;
     for (int i = 0; i < n; i++) {
-        if (image_read(argv[1 + i], &in[i], err, sizeof err)) {
+        if (image_read(paths[i], &in[i], err, sizeof err)) {
             fprintf(stderr, "fxrt: sheet: %s\n", err);
             goto done;
         }
         if (in[i].height != in[0].height) {
-            fprintf(stderr, "fxrt: sheet: %s: height %d differs from %d\n", argv[1 + i], in[i].height,
+            fprintf(stderr, "fxrt: sheet: %s: height %d differs from %d\n", paths[i], in[i].height,
                     in[0].height);
             goto done;
         }
         width += in[i].width + (i ? SHEET_GAP : 0);
     }
-    if (width > IMAGE_MAX_DIM) {
-        fprintf(stderr, "fxrt: sheet: combined width %d too large\n", width);
+    int scale = SHEET_SCALE(in[0].height);
+    int strip = with_labels ? SHEET_STRIP(scale) : 0;
+    if (width > IMAGE_MAX_DIM || in[0].height + strip > IMAGE_MAX_DIM) {
+        fprintf(stderr, "fxrt: sheet: combined size %dx%d too large\n", width, in[0].height + strip);
         goto done;
     }
-    if (image_alloc(&out, width, in[0].height, err, sizeof err)) {
+    if (image_alloc(&out, width, in[0].height + strip, err, sizeof err)) {
         fprintf(stderr, "fxrt: sheet: %s\n", err);
         goto done;
     }
     memset(out.rgb, 96, (size_t)3 * out.width * out.height);
-    for (int i = 0, x0 = 0; i < n; x0 += in[i].width + SHEET_GAP, i++)
+    for (int i = 0, x0 = 0; i < n; x0 += in[i].width + SHEET_GAP, i++) {
         for (int y = 0; y < in[i].height; y++)
-            memcpy(out.rgb + 3 * ((size_t)y * out.width + x0), in[i].rgb + (size_t)3 * y * in[i].width,
+            memcpy(out.rgb + 3 * ((size_t)(y + strip) * out.width + x0), in[i].rgb + (size_t)3 * y * in[i].width,
                    (size_t)3 * in[i].width);
-    if (image_write(argv[0], &out, err, sizeof err)) {
+        if (!with_labels)
+            continue;
+        /* Centred over its panel; a label wider than the panel loses the
+         * characters that do not fit whole. */
+        size_t fit = (size_t)((in[i].width + (IMAGE_GLYPH_ADVANCE - IMAGE_GLYPH_W) * scale) /
+                              (IMAGE_GLYPH_ADVANCE * scale));
+        if (strlen(labels[i]) > fit)
+            labels[i][fit] = 0;
+        int tx = x0 + (in[i].width - image_text_width(labels[i], scale)) / 2;
+        image_draw_text(&out, tx, 3 * scale, scale, labels[i], ink);
+    }
+    if (image_write(out_path, &out, err, sizeof err)) {
         fprintf(stderr, "fxrt: sheet: %s\n", err);
         goto done;
     }
@@ -289,13 +491,53 @@ done:
     return rc;
 }
 
+static int cmd_size(int argc, char **argv)
+{
+    static const char cmd[] = "size";
+    const char *scene_path = NULL;
+    bool opts = true;
+    if (wants_help(argc, argv)) {
+        fputs(usage_size, stdout);
+        return 0;
+    }
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (opts && !strcmp(a, "--"))
+            opts = false;
+        else if (opts && a[0] == '-' && a[1])
+            return usage_error(cmd, "unknown option '%s'", a);
+        else if (!scene_path)
+            scene_path = a;
+        else
+            return usage_error(cmd, "unexpected argument '%s' (one SCENE only)", a);
+    }
+    if (!scene_path)
+        return usage_error(cmd, "no SCENE given");
+    char err[ERR_LEN];
+    static scene_t scene;
+    if (scene_load(scene_path, &scene, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    printf("%dx%d\n", scene.width, scene.height);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
-        return fail_usage(usage_main, "%s", "missing command");
+        return usage_error(NULL, "missing command (render, compare, sheet or size)");
     const char *cmd = argv[1];
     if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help") || !strcmp(cmd, "help")) {
         fputs(usage_main, stdout);
+        return 0;
+    }
+    if (!strcmp(cmd, "--version")) {
+#ifdef FXRT_GIT_DESCRIBE
+        printf("fxrt %s (git %s)\n", FXRT_VERSION, FXRT_GIT_DESCRIBE);
+#else
+        printf("fxrt %s\n", FXRT_VERSION);
+#endif
         return 0;
     }
     if (!strcmp(cmd, "render"))
@@ -304,5 +546,9 @@ int main(int argc, char **argv)
         return cmd_compare(argc - 2, argv + 2);
     if (!strcmp(cmd, "sheet"))
         return cmd_sheet(argc - 2, argv + 2);
-    return fail_usage(usage_main, "unknown command '%s'", cmd);
+    if (!strcmp(cmd, "size"))
+        return cmd_size(argc - 2, argv + 2);
+    if (cmd[0] == '-')
+        return usage_error(NULL, "unknown option '%s'", cmd);
+    return usage_error(NULL, "unknown command '%s'", cmd);
 }

@@ -752,6 +752,12 @@ int scene_parse(const char *name, const char *text, size_t len, scene_t *out, ch
     out->width = SCENE_DEFAULT_WIDTH;
     out->height = SCENE_DEFAULT_HEIGHT;
 
+    /* A UTF-8 byte-order mark (EF BB BF), which some editors put at the
+     * start of a file, is skipped there only; anywhere else its bytes are
+     * non-ASCII like any other. Columns on line 1 count from after it. */
+    if (text != NULL && len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0)
+        pos = 3;
+
     while (pos < len) {
         const char *s = text + pos;
         const char *nl = memchr(s, '\n', len - pos);

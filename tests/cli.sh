@@ -84,4 +84,218 @@ check "compare within threshold" "$FXRT" compare "$out/d.png" "$out/q.png" --max
 "$FXRT" compare "$out/d.png" "$out/s.png" --max-pct 0.01 --diff "$out/diff.png" >/dev/null 2>&1
 check "compare over threshold exits 1" test $? -eq 1
 check "diff image written" test -s "$out/diff.png"
+
+# --- usage errors: one line saying what is wrong, a pointer to --help, exit 2
+# usage_err DESC EXPECTED-FIRST-LINE CMD...: exit 2, nothing on stdout,
+# stderr exactly that line and "Try 'fxrt [CMD ]--help'." (no usage text).
+usage_err() {
+    local desc=$1 want=$2 rc
+    shift 2
+    "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"
+    rc=$?
+    local try="Try 'fxrt --help'."
+    case ${2:-} in render | compare | sheet | size) try="Try 'fxrt $2 --help'." ;; esac
+    check "$desc: exit 2 (got $rc)" test $rc -eq 2
+    check "$desc: nothing on stdout" test ! -s "$out/stdout.txt"
+    check "$desc: stderr is '$want' + '$try' (got: $(head -c 300 "$out/stderr.txt"))" \
+        test "$(cat "$out/stderr.txt")" = "$want"$'\n'"$try"
+}
+usage_err "no command" "fxrt: missing command (render, compare, sheet or size)" "$FXRT"
+usage_err "unknown command" "fxrt: unknown command 'paint'" "$FXRT" paint
+usage_err "unknown top option" "fxrt: unknown option '--fast'" "$FXRT" --fast
+usage_err "render bad --size" "fxrt: render: bad --size 'x' (want WxH, each 1..4096)" "$FXRT" render $good --size x
+usage_err "render bad --number" "fxrt: render: bad --number 'int8' (want q16, float or double)" \
+    "$FXRT" render $good --number int8
+usage_err "render --number without value" "fxrt: render: --number needs a value" "$FXRT" render $good --number
+usage_err "render no scene" "fxrt: render: no SCENE given" "$FXRT" render
+usage_err "render unknown option" "fxrt: render: unknown option '--fast'" "$FXRT" render $good --fast
+usage_err "compare bad --max-pct" "fxrt: compare: bad --max-pct 'lots' (want a number >= 0)" \
+    "$FXRT" compare "$out/a.png" "$out/a.ppm" --max-pct lots
+usage_err "compare one image" "fxrt: compare: needs two images A and B" "$FXRT" compare "$out/a.png"
+usage_err "sheet no image" "fxrt: sheet: no IMAGE given" "$FXRT" sheet -o "$out/s.png"
+usage_err "size no scene" "fxrt: size: no SCENE given" "$FXRT" size
+
+# --- a repeated option is an error (also under its other spelling)
+usage_err "render --size twice" "fxrt: render: --size given twice" \
+    "$FXRT" render $good --size 8x8 --size 8x8 -o "$out/rep.png"
+usage_err "render -o twice" "fxrt: render: -o given twice" "$FXRT" render $good -o "$out/rep.png" -o "$out/rep.png"
+usage_err "render -o and --output" "fxrt: render: --output given twice (also as -o)" \
+    "$FXRT" render $good -o "$out/rep.png" --output "$out/rep2.png"
+usage_err "render --number twice" "fxrt: render: --number given twice" \
+    "$FXRT" render $good --number q16 --number double -o "$out/rep.png"
+usage_err "render --renderer twice" "fxrt: render: --renderer given twice" \
+    "$FXRT" render $good --renderer fast --renderer fast -o "$out/rep.png"
+usage_err "compare --diff twice" "fxrt: compare: --diff given twice" \
+    "$FXRT" compare "$out/a.png" "$out/a.ppm" --diff "$out/rd.png" --diff "$out/rd.png"
+usage_err "compare --max-pct twice" "fxrt: compare: --max-pct given twice" \
+    "$FXRT" compare "$out/a.png" "$out/a.ppm" --max-pct 1 --max-pct 2
+usage_err "compare --max-interior twice" "fxrt: compare: --max-interior given twice" \
+    "$FXRT" compare "$out/a.png" "$out/a.ppm" --max-interior 1 --max-interior 1
+usage_err "sheet -o twice" "fxrt: sheet: -o given twice" "$FXRT" sheet -o "$out/rs.png" -o "$out/rs.png" "$out/a.png"
+usage_err "sheet --no-labels twice" "fxrt: sheet: --no-labels given twice" \
+    "$FXRT" sheet --no-labels --no-labels -o "$out/rs.png" "$out/a.png"
+check "no output from rejected repeats" bash -c "! ls '$out' | grep -qE '^(rep|rep2|rd|rs)\\.png'"
+check "'--' ends the options" "$FXRT" render -o "$out/dd.png" --size 8x8 -- $good
+check "'--' output written" test -s "$out/dd.png"
+
+# --- --version: one line, the version from host/version.h
+ver=$(sed -nE 's/^#define FXRT_VERSION "(.*)"$/\1/p' host/version.h)
+check "FXRT_VERSION found in host/version.h ($ver)" test -n "$ver"
+"$FXRT" --version >"$out/version.txt" 2>&1
+check "--version exits 0" test $? -eq 0
+check "--version prints 'fxrt $ver' (got: $(cat "$out/version.txt"))" \
+    grep -qxE "fxrt $ver( \\(git [A-Za-z0-9._+-]+\\))?" "$out/version.txt"
+check "--version is one line" test "$(wc -l <"$out/version.txt")" -eq 1
+check "--help mentions --version" bash -c "'$FXRT' --help | grep -q -- '--version'"
+
+# --- compare --diff and sheet -o never write over an input
+cp "$out/q.png" "$out/q-orig.png"
+cp "$out/d.png" "$out/d-orig.png"
+ln -f "$out/q.png" "$out/q-link.png"
+# refuses DESC CMD...: exit 2, one "would overwrite" line, q.png and d.png untouched, no temporary file
+refuses() {
+    local desc=$1 rc
+    shift
+    "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"
+    rc=$?
+    check "$desc: exit 2 (got $rc)" test $rc -eq 2
+    check "$desc: says why (got: $(head -n 1 "$out/stderr.txt"))" grep -q "would overwrite the input" "$out/stderr.txt"
+    check "$desc: q.png untouched" cmp -s "$out/q.png" "$out/q-orig.png"
+    check "$desc: d.png untouched" cmp -s "$out/d.png" "$out/d-orig.png"
+    check "$desc: no temporary file" bash -c "! ls '$out' | grep -q tmp"
+}
+refuses "compare --diff A" "$FXRT" compare "$out/q.png" "$out/d.png" --diff "$out/q.png"
+refuses "compare --diff B" "$FXRT" compare "$out/q.png" "$out/d.png" --diff "$out/d.png"
+(cd "$out" && "$OLDPWD/$FXRT" compare q.png d.png --diff ./d.png) >"$out/stdout.txt" 2>"$out/stderr.txt"
+check "compare --diff ./B (same file, other path): exit 2" test $? -eq 2
+check "compare --diff ./B: d.png untouched" cmp -s "$out/d.png" "$out/d-orig.png"
+refuses "compare --diff a hard link to A" "$FXRT" compare "$out/q.png" "$out/d.png" --diff "$out/q-link.png"
+refuses "sheet -o an input" "$FXRT" sheet -o "$out/d.png" "$out/q.png" "$out/d.png"
+refuses "sheet -o an input with a label" "$FXRT" sheet -o "$out/q.png" "$out/q.png=Q16.16" "$out/d.png=double"
+refuses "sheet -o ./input" "$FXRT" sheet -o "$out/./q.png" "$out/d.png" "$out/q.png"
+# The mistake of issue 10: OUT typed last. Without -o nothing is written.
+"$FXRT" sheet "$out/q.png" "$out/d.png" "$out/new-sheet.png" >"$out/stdout.txt" 2>"$out/stderr.txt"
+check "sheet without -o: exit 2" test $? -eq 2
+check "sheet without -o: says so" grep -q "no output given (-o OUT" "$out/stderr.txt"
+check "sheet without -o: q.png untouched" cmp -s "$out/q.png" "$out/q-orig.png"
+check "sheet without -o: nothing written" test ! -e "$out/new-sheet.png"
+check "render -o SCENE refused" fails "$FXRT" render "$out/q.png" -o "$out/q.png"
+
+# --- sheet labels (5x8 font, a strip above each panel) and the identical diff map
+# ppm_dims FILE: "W H" from a P6 header written by fxrt (no comments)
+ppm_dims() { head -c 40 "$1" | sed -n 2p; }
+"$FXRT" render $good --size 40x30 -o "$out/p1.ppm"
+"$FXRT" render scenes/abb7-box.scene --size 30x30 -o "$out/p2.ppm"
+check "sheet with labels" "$FXRT" sheet -o "$out/sheet.ppm" "$out/p1.ppm=Q16.16 (QEMU)" "$out/p2.ppm=double"
+check "labelled sheet: width 40+8+30, height 30 + a 14 px strip (got $(ppm_dims "$out/sheet.ppm"))" \
+    test "$(ppm_dims "$out/sheet.ppm")" = "78 44"
+check "sheet --no-labels" "$FXRT" sheet --no-labels -o "$out/sheet-nl.ppm" "$out/p1.ppm" "$out/p2.ppm"
+check "sheet --no-labels: no strip (got $(ppm_dims "$out/sheet-nl.ppm"))" test "$(ppm_dims "$out/sheet-nl.ppm")" = "78 30"
+"$FXRT" sheet --no-labels -o "$out/one.ppm" "$out/p1.ppm"
+check "one-image sheet without labels is the image itself" cmp -s "$out/one.ppm" "$out/p1.ppm"
+"$FXRT" sheet -o "$out/one-l.ppm" "$out/p1.ppm=abc"
+hdr=$(head -c 40 "$out/p1.ppm" | head -n 3 | wc -c)
+check "labelled panel: the image's pixels under the strip" \
+    cmp -s <(tail -c $((40 * 30 * 3)) "$out/one-l.ppm") <(tail -c $((40 * 30 * 3)) "$out/p1.ppm")
+strip=$(head -c $((hdr + 40 * 14 * 3)) "$out/one-l.ppm" | tail -c $((40 * 14 * 3)) | od -An -v -tu1 | tr -s ' ' '\n' | grep -v '^$' | sort -u | tr '\n' ' ')
+check "label strip holds only background 96 and ink 255 (got: $strip)" test "$strip" = "255 96 "
+ink=$(head -c $((hdr + 40 * 14 * 3)) "$out/one-l.ppm" | tail -c $((40 * 14 * 3)) | od -An -v -tu1 | tr -s ' ' '\n' | grep -c '^255$')
+check "label 'abc' inks 40 font pixels (14 + 16 + 10, counted by hand; got $((ink / 3)))" test $((ink / 3)) -eq 40
+"$FXRT" sheet -o "$out/one-d.ppm" "$out/p1.ppm"
+"$FXRT" sheet -o "$out/one-e.ppm" "$out/p1.ppm=p1.ppm"
+check "default label is the file's base name" cmp -s "$out/one-d.ppm" "$out/one-e.ppm"
+check "different labels draw differently" bash -c "! cmp -s '$out/one-d.ppm' '$out/one-l.ppm'"
+usage_err "sheet label with a control byte" "fxrt: sheet: label 'a"$'\t'"b' is not printable ASCII" \
+    "$FXRT" sheet -o "$out/lab.ppm" "$out/p1.ppm=a"$'\t'"b"
+cp "$out/p1.ppm" "$out/x=y.ppm"
+check "an image name with '=' given as 'NAME='" "$FXRT" sheet -o "$out/eq.ppm" "$out/x=y.ppm="
+check "large panels get a 2x label strip (height 300 + 28)" \
+    bash -c "'$FXRT' render $good --size 20x300 -o '$out/tall.ppm' && '$FXRT' sheet -o '$out/tall-s.ppm' '$out/tall.ppm' && test \"\$(head -c 40 '$out/tall-s.ppm' | sed -n 2p)\" = '20 328'"
+
+# A diff map of identical images says so; of images that differ in one pixel, shows that pixel only.
+"$FXRT" compare "$out/p1.ppm" "$out/one.ppm" --diff "$out/same-diff.ppm" >"$out/same.txt"
+check "identical images: mismatched=0" grep -q ' mismatched=0 ' "$out/same.txt"
+lit=$(tail -c $((40 * 30 * 3)) "$out/same-diff.ppm" | od -An -v -tu1 | tr -s ' ' '\n' | grep -cvE '^(0|)$')
+check "identical images: the diff map has 'identical' written on it ($lit lit bytes)" test "$lit" -gt 30
+{ head -c "$hdr" "$out/p1.ppm"; tail -c $((40 * 30 * 3)) "$out/p1.ppm" | head -c $((40 * 30 * 3 - 3)); printf '\001\002\003'; } >"$out/p1x.ppm"
+"$FXRT" compare "$out/p1.ppm" "$out/p1x.ppm" --diff "$out/one-diff.ppm" >"$out/one.txt"
+check "one changed pixel: mismatched=1" grep -q ' mismatched=1 ' "$out/one.txt"
+lit=$(tail -c $((40 * 30 * 3)) "$out/one-diff.ppm" | od -An -v -tu1 | tr -s ' ' '\n' | grep -cvE '^(0|)$')
+check "one changed pixel: the diff map lights 1..3 bytes, no text (got $lit)" test "$lit" -ge 1 -a "$lit" -le 3
+
+# --- paths with spaces, and fxrt size
+mkdir -p "$out/dir with space"
+cp $good "$out/dir with space/a scene.scene"
+check "render a scene path with spaces" "$FXRT" render "$out/dir with space/a scene.scene" --size 16x12 -o "$out/dir with space/out put.png"
+check "spaced output written" test -s "$out/dir with space/out put.png"
+(cd "$out/dir with space" && "$OLDPWD/$FXRT" render "a scene.scene" --size 16x12) && ok || bad "default output from a spaced name"
+check "default output name keeps the space" test -s "$out/dir with space/a scene-q16.png"
+check "compare and sheet with spaced paths" bash -c "'$FXRT' compare '$out/dir with space/out put.png' '$out/dir with space/a scene-q16.png' --diff '$out/dir with space/d i.png' >/dev/null && '$FXRT' sheet -o '$out/dir with space/s s.png' '$out/dir with space/out put.png=a b'"
+check "fxrt size prints the image line" test "$("$FXRT" size "$out/dir with space/a scene.scene")" = 640x430
+printf 'camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45\n' >"$out/noimage.scene"
+check "fxrt size without an image line: 160x120" test "$("$FXRT" size "$out/noimage.scene")" = 160x120
+check "fxrt size of a bad scene fails with FILE:LINE" bash -c "! '$FXRT' size tests/bad-scenes/$(ls tests/bad-scenes | grep -m1 '\.scene$') 2>&1 | grep -q '^[0-9]*x[0-9]*\$'"
+
+# --- a UTF-8 byte-order mark is skipped at the very start of a scene only
+bom=$'\xef\xbb\xbf'
+{ printf '%s' "$bom"; cat $good; } >"$out/bom.scene"
+check "scene starting with a BOM renders" "$FXRT" render "$out/bom.scene" --size 32x24 -o "$out/bom.ppm"
+"$FXRT" render $good --size 32x24 -o "$out/nobom.ppm"
+check "BOM scene renders as without it" cmp -s "$out/bom.ppm" "$out/nobom.ppm"
+check "BOM scene: fxrt size reads its image line" test "$("$FXRT" size "$out/bom.scene")" = 640x430
+{ printf '%s\r\n' "${bom}image 20 10"; printf 'camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45\r\n'; } >"$out/bomcrlf.scene"
+check "BOM + CRLF scene: image line read" test "$("$FXRT" size "$out/bomcrlf.scene")" = 20x10
+{ head -n 2 $good; printf '%s' "$bom"; tail -n +3 $good; } >"$out/bom3.scene"
+"$FXRT" render "$out/bom3.scene" -o "$out/bom3.png" 2>"$out/stderr.txt"
+check "BOM on line 3: exit 2" test $? -eq 2
+check "BOM on line 3: FILE:3: non-ASCII (got: $(cat "$out/stderr.txt"))" \
+    grep -qF "$out/bom3.scene:3: non-ASCII byte 0xef at column 1" "$out/stderr.txt"
+check "BOM on line 3: no image" test ! -e "$out/bom3.png"
+{ printf '%s%s' "$bom" "$bom"; cat $good; } >"$out/bom2.scene"
+"$FXRT" render "$out/bom2.scene" -o "$out/bom2.png" 2>"$out/stderr.txt"
+check "two BOMs: the second is an error at 1:1 (got: $(cat "$out/stderr.txt"))" \
+    grep -qF "$out/bom2.scene:1: non-ASCII byte 0xef at column 1" "$out/stderr.txt"
+{ printf '# comment\n%s' "$bom"; cat $good; } >"$out/bom-late.scene"
+check "BOM after a first line is an error" fails "$FXRT" render "$out/bom-late.scene" -o "$out/bl.png"
+
+# --- make qemu/fw variables are checked before anything is built. -o: make
+# must not rebuild the host tool here (under sanitize.sh, BUILD is the
+# sanitized build, which the normal rules would overwrite).
+MK="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt"
+$MK fw FB=bad >"$out/stdout.txt" 2>"$out/stderr.txt"
+check "make fw FB=bad fails" test $? -ne 0
+check "FB=bad: clear message (got: $(head -c 200 "$out/stderr.txt"))" grep -q "unknown FB 'bad' (one of: full stream" "$out/stderr.txt"
+$MK fw FB= >/dev/null 2>"$out/stderr.txt"
+check "make fw FB= (empty) fails clearly" grep -q "unknown FB ''" "$out/stderr.txt"
+$MK fw FB="full stream" >/dev/null 2>"$out/stderr.txt"
+check "make fw FB='full stream' fails clearly" grep -q "unknown FB 'full stream'" "$out/stderr.txt"
+$MK fw SIZE= >/dev/null 2>"$out/stderr.txt"
+check "make fw SIZE= (empty) fails clearly" grep -q "bad SIZE '' (want WxH" "$out/stderr.txt"
+$MK fw SIZE=160 >/dev/null 2>"$out/stderr.txt"
+check "make fw SIZE=160 fails clearly" grep -q "bad SIZE '160' (want WxH" "$out/stderr.txt"
+$MK fw BOARD=nrf99 >/dev/null 2>"$out/stderr.txt"
+check "make fw BOARD=nrf99 fails clearly" grep -q "unknown BOARD 'nrf99'" "$out/stderr.txt"
+$MK fw SCENE="it's.scene" >/dev/null 2>"$out/stderr.txt"
+check "make fw with a quote in SCENE fails clearly" grep -q "quotes and '\\$' in the scene path are not supported" "$out/stderr.txt"
+check "make fw with a bad scene and no SIZE fails with FILE:LINE" \
+    bash -c "! $MK fw SCENE='$out/bom3.scene' >/dev/null 2>'$out/stderr.txt' && grep -qF '$out/bom3.scene:3: ' '$out/stderr.txt'"
+
+# --- tests/run.sh passes progress lines through while a suite's output goes to its log
+mkdir -p "$out/runner"
+cat >"$out/runner/slow.sh" <<'EOS'
+#!/usr/bin/env bash
+. tests/lib.sh
+echo "to the log only"
+progress "slow.sh: step 1/2"
+progress "slow.sh: step 2/2"
+ok
+report slow
+EOS
+chmod +x "$out/runner/slow.sh"
+BUILD="$out/runner" RUN_NOTICE_SECONDS=100 tests/run.sh "$out/runner/slow.sh" >"$out/runner/out.txt" 2>&1
+check "run.sh with a progress suite: exit 0" test $? -eq 0
+check "run.sh shows the suite's progress lines" grep -qx "  slow.sh: step 2/2" "$out/runner/out.txt"
+check "run.sh keeps the suite's output in its log" bash -c "! grep -q 'to the log only' '$out/runner/out.txt' && grep -q 'to the log only' '$out/runner/tests/logs/slow.sh.log'"
+check "run.sh still ends 'total: N passed, N failed'" test "$(tail -n 1 "$out/runner/out.txt")" = "total: 1 passed, 0 failed"
+check "progress is silent outside run.sh" bash -c "cd '$PWD' && unset PROGRESS_FD && '$out/runner/slow.sh' 2>&1 | grep -qv step"
 report cli

@@ -16,10 +16,10 @@ for scene in scenes/abb*.scene; do
     echo "[$name] QEMU $BOARD q16 $SIZE"
     run=$(make -s --no-print-directory BUILD="$BUILD" qemu SCENE="$scene" BOARD="$BOARD" NUMBER=q16 SIZE="$SIZE" | grep instructions=)
     # A one-image sheet converts the firmware's PPM to PNG.
-    "$FXRT" sheet "$out/$name-q16.png" "$BUILD/qemu/$BOARD/$name-q16.ppm"
+    "$FXRT" sheet --no-labels -o "$out/$name-q16.png" "$BUILD/qemu/$BOARD/$name-q16-$SIZE.ppm"
     "$FXRT" render "$scene" --number double --size "$SIZE" -o "$out/$name-double.png"
     line=$("$FXRT" compare "$out/$name-double.png" "$out/$name-q16.png" --diff "$out/$name-diff.png")
-    "$FXRT" sheet "$out/$name-sheet.png" "$out/$name-q16.png" "$out/$name-double.png" "$out/$name-diff.png"
+    "$FXRT" sheet -o "$out/$name-sheet.png" "$out/$name-q16.png=Q16.16 (QEMU)" "$out/$name-double.png=double" "$out/$name-diff.png=diff"
     get() { sed -E "s/.*(^| )$1=([^ ]+).*/\2/" <<<"$2"; }
     rows+=("$(printf '%-24s %-11s %12s %8s %9s %7s %8s %8s' "$name" "$BOARD" "$(get instructions "$run")" \
         "$(get instructions_per_pixel "$run")" "$(get mismatched "$line")" "$(get mismatched_pct "$line")" \

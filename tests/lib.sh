@@ -16,6 +16,12 @@ check() {
     shift
     if "$@"; then ok; else bad "$desc"; fi
 }
+# progress MESSAGE: one line on the terminal while the suite runs, when
+# tests/run.sh passes a progress fd (PROGRESS_FD); silent otherwise.
+progress() {
+    [ -n "${PROGRESS_FD:-}" ] && { echo "  $*" >&"$PROGRESS_FD"; } 2>/dev/null
+    return 0
+}
 report() {
     echo "$1: $PASSED passed, $FAILED failed"
     [ "$FAILED" -eq 0 ]

@@ -12,8 +12,14 @@ SIZE=160x120
 M="make -s --no-print-directory BUILD=$BUILD"
 
 # run_fw VARS...: make qemu with those variables; output in $out/run.log
-run_fw() { $M qemu "$@" >"$out/run.log" 2>&1; }
+runs=0
+run_fw() {
+    runs=$((runs + 1))
+    progress "qemu.sh: run $runs: $*"
+    $M qemu "$@" >"$out/run.log" 2>&1
+}
 
+progress "qemu.sh: counter calibration on $BOARDS"
 for b in $BOARDS; do
     line=$($M calibrate BOARD=$b 2>&1 | grep instructions=)
     n=$(sed -nE 's/.*instructions=([0-9]+) .*/\1/p' <<<"$line")
@@ -29,7 +35,7 @@ for b in $BOARDS; do
             ok
             echo "$b $name: $(grep instructions= "$out/run.log")"
             check "$b $name: frame set up on the board byte-identical to the host q16 render" \
-                cmp -s "$out/$name-host.ppm" "$BUILD/qemu/$b/$name-q16.ppm"
+                cmp -s "$out/$name-host.ppm" "$BUILD/qemu/$b/$name-q16-$SIZE.ppm"
         else
             bad "$b $name: firmware run failed: $(tail -n 5 "$out/run.log")"
         fi
@@ -68,6 +74,7 @@ onb_batch() {
     local b=$1 tag=$2 dir rc n t
     shift 2
     dir=$onb/$b-$tag
+    progress "qemu.sh: on-board set-up of stress scenes: $b $tag ($# scenes)"
     tests/onboard_gen.sh "$dir" "${@/#/$onb/scenes/}"
     if ! $M onboard BOARD=$b ONB_DIR="$dir" >"$dir/build.log" 2>&1; then
         grep -q "region .RAM' overflowed" "$dir/build.log" && return 3
@@ -160,13 +167,29 @@ for scene in scenes/abb*.scene; do
     check "mps2-an385 $name reference run" run_fw SCENE=$scene BOARD=mps2-an385 NUMBER=q16 SIZE=$SIZE \
         FW_TAG=ref FW_EXTRA=-DFXRT_RENDERER=2
     check "mps2-an385 $name: reference frame == fast frame" \
-        cmp -s "$BUILD/qemu/mps2-an385/$name-q16.ppm" "$BUILD/qemu/mps2-an385/$name-q16-ref.ppm"
+        cmp -s "$BUILD/qemu/mps2-an385/$name-q16-$SIZE.ppm" "$BUILD/qemu/mps2-an385/$name-q16-$SIZE-ref.ppm"
 done
 
-# One full-size frame on the default board.
+# One full-size frame on the default board. Without SIZE= make qemu takes
+# the scene's own size (its image line, 640 430), as fxrt render does.
 "$FXRT" render scenes/abb9-two-spheres.scene --number q16 -o "$out/big-host.ppm"
-check "mps2-an385 640x430 run" run_fw SCENE=scenes/abb9-two-spheres.scene BOARD=mps2-an385 NUMBER=q16 SIZE=640x430
-check "mps2-an385 640x430 byte-identical" cmp -s "$out/big-host.ppm" "$BUILD/qemu/mps2-an385/abb9-two-spheres-q16.ppm"
+rm -f "$BUILD/qemu/mps2-an385/abb9-two-spheres-q16-640x430.ppm"
+check "mps2-an385 640x430 run (size from the scene)" run_fw SCENE=scenes/abb9-two-spheres.scene BOARD=mps2-an385 NUMBER=q16
+check "mps2-an385 640x430 byte-identical" cmp -s "$out/big-host.ppm" "$BUILD/qemu/mps2-an385/abb9-two-spheres-q16-640x430.ppm"
+
+# A scene path with spaces and its own small size: the frame is
+# NAME-q16-48x32.ppm, spaces in NAME as '_'; SIZE= still wins over the scene.
+mkdir -p "$out/with space"
+sed 's/^image .*/image 48 32/' scenes/abb8-triangle.scene >"$out/with space/tri angle.scene"
+"$FXRT" render "$out/with space/tri angle.scene" -o "$out/space-host.ppm"
+rm -f "$BUILD/qemu/mps2-an385/tri_angle-q16-48x32.ppm"
+check "scene path with spaces: make qemu runs" run_fw SCENE="$out/with space/tri angle.scene"
+check "scene path with spaces: frame named by the scene's size, identical to fxrt render" \
+    cmp -s "$out/space-host.ppm" "$BUILD/qemu/mps2-an385/tri_angle-q16-48x32.ppm"
+"$FXRT" render "$out/with space/tri angle.scene" --size 20x10 -o "$out/space-host-20.ppm"
+check "SIZE= overrides the scene's size" run_fw SCENE="$out/with space/tri angle.scene" SIZE=20x10
+check "SIZE= frame identical to fxrt render --size" \
+    cmp -s "$out/space-host-20.ppm" "$BUILD/qemu/mps2-an385/tri_angle-q16-20x10.ppm"
 
 # Float and double builds on target (the float frame is IEEE-exact too).
 for bn in mps2-an385:float mps2-an385:double mps2-an386:float microbit:float; do
@@ -174,17 +197,17 @@ for bn in mps2-an385:float mps2-an385:double mps2-an386:float microbit:float; do
     "$FXRT" render scenes/abb9-two-spheres.scene --number $n --size $SIZE -o "$out/host-$n.ppm"
     check "$b $n run" run_fw SCENE=scenes/abb9-two-spheres.scene BOARD=$b NUMBER=$n SIZE=$SIZE
     echo "$b $n: $(grep instructions= "$out/run.log")"
-    check "$b $n frame identical to the host $n render" cmp -s "$out/host-$n.ppm" "$BUILD/qemu/$b/abb9-two-spheres-$n.ppm"
+    check "$b $n frame identical to the host $n render" cmp -s "$out/host-$n.ppm" "$BUILD/qemu/$b/abb9-two-spheres-$n-$SIZE.ppm"
 done
 check "M4F float build uses FPU instructions" \
     bash -c "arm-none-eabi-objdump -d $BUILD/fw/mps2-an386/abb9-two-spheres-float-$SIZE-full/fxrt.elf | grep -q vsqrt.f32"
 
 # Streaming on the big boards and RGB565 full frames.
-check "mps2-an385 streaming run" run_fw SCENE=scenes/abb7-box.scene BOARD=mps2-an385 FB=stream
+check "mps2-an385 streaming run" run_fw SCENE=scenes/abb7-box.scene BOARD=mps2-an385 SIZE=$SIZE FB=stream
 "$FXRT" render scenes/abb7-box.scene --size $SIZE -o "$out/box-host.ppm"
-check "streaming frame identical" cmp -s "$out/box-host.ppm" "$BUILD/qemu/mps2-an385/abb7-box-q16.ppm"
-check "rgb565 run" run_fw SCENE=scenes/abb7-box.scene BOARD=mps2-an385 FW_TAG=rgb565 FW_EXTRA=-DFXRT_PIXEL=2
-line=$("$FXRT" compare "$out/box-host.ppm" "$BUILD/qemu/mps2-an385/abb7-box-q16-rgb565.ppm")
+check "streaming frame identical" cmp -s "$out/box-host.ppm" "$BUILD/qemu/mps2-an385/abb7-box-q16-$SIZE.ppm"
+check "rgb565 run" run_fw SCENE=scenes/abb7-box.scene BOARD=mps2-an385 SIZE=$SIZE FW_TAG=rgb565 FW_EXTRA=-DFXRT_PIXEL=2
+line=$("$FXRT" compare "$out/box-host.ppm" "$BUILD/qemu/mps2-an385/abb7-box-q16-$SIZE-rgb565.ppm")
 echo "rgb565 vs rgb888: $line"
 check "rgb565 frame: same pixels up to 565 quantisation" grep -qE 'max_err=[0-7] ' <<<"$line"
 
@@ -206,16 +229,16 @@ check "box firmware has box code" bash -c "arm-none-eabi-nm '$BUILD/fw/mps2-an38
 
 # Faults and hangs fail the make target with a clear message, and no image.
 for b in $BOARDS; do
-    rm -f "$BUILD/qemu/$b/abb6-sphere-q16-fault.ppm"
-    if run_fw SCENE=scenes/abb6-sphere.scene BOARD=$b FW_TAG=fault FW_EXTRA=-DFXRT_TEST_FAULT; then
+    rm -f "$BUILD/qemu/$b/abb6-sphere-q16-$SIZE-fault.ppm"
+    if run_fw SCENE=scenes/abb6-sphere.scene BOARD=$b SIZE=$SIZE FW_TAG=fault FW_EXTRA=-DFXRT_TEST_FAULT; then
         bad "$b: a faulting firmware must fail"
     else
         ok
     fi
     check "$b: fault reported ($(grep -m1 FAULT "$out/run.log"))" grep -q "FAULT: HardFault\|FAULT: UsageFault" "$out/run.log"
-    check "$b: no image from a faulting run" test ! -e "$BUILD/qemu/$b/abb6-sphere-q16-fault.ppm"
+    check "$b: no image from a faulting run" test ! -e "$BUILD/qemu/$b/abb6-sphere-q16-$SIZE-fault.ppm"
 done
-if FXRT_QEMU_TIMEOUT=3 run_fw SCENE=scenes/abb6-sphere.scene FW_TAG=hang FW_EXTRA=-DFXRT_TEST_HANG; then
+if FXRT_QEMU_TIMEOUT=3 run_fw SCENE=scenes/abb6-sphere.scene SIZE=$SIZE FW_TAG=hang FW_EXTRA=-DFXRT_TEST_HANG; then
     bad "a hanging firmware must fail"
 else
     ok

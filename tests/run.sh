@@ -2,18 +2,31 @@
 # Run test suites (programs or scripts), each of which ends its output with
 # "NAME: N passed, N failed". Sum them and end with the total line; exit
 # non-zero if any check failed or any suite crashed.
+#
+# Progress: a suite's output goes to its log, but a long suite may print
+# progress lines to the terminal with `progress` (tests/lib.sh), which
+# writes to fd $PROGRESS_FD: run.sh's own stdout, opened as fd 3. A suite
+# still running after RUN_NOTICE_SECONDS (default 10) is announced.
 set -u
 BUILD=${BUILD:-build}
 logdir=$BUILD/tests/logs
 mkdir -p "$logdir"
+notice_secs=${RUN_NOTICE_SECONDS:-10}
+exec 3>&1
+export PROGRESS_FD=3
 total_pass=0
 total_fail=0
 for suite in "$@"; do
     name=$(basename "$suite")
     log=$logdir/$name.log
     start=$(date +%s)
+    # The notice's sleep does not hold stdout, so killing the subshell ends it.
+    (sleep "$notice_secs" >/dev/null 2>&1 && echo "$name: running (over ${notice_secs}s; log $log)") &
+    notice=$!
     "$suite" >"$log" 2>&1
     rc=$?
+    kill "$notice" 2>/dev/null
+    wait "$notice" 2>/dev/null
     secs=$(($(date +%s) - start))
     line=$(grep -E '[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1)
     p=$(sed -E 's/.* ([0-9]+) passed, ([0-9]+) failed.*/\1/' <<<"$line")

@@ -176,6 +176,7 @@ check "fxrt has UBSan" bash -c "nm '$sfxrt' | grep -q __ubsan_handle"
 run_suite() {
     local name=$1 rc line start
     shift
+    progress "sanitize.sh: $name"
     start=$(date +%s)
     (san_env "$logs/$name" && exec "$@") >"$logs/$name.log" 2>&1
     rc=$?
@@ -226,6 +227,7 @@ for ((i = n_corpus + 1; i <= PARTIAL_FILES; i++)); do
     mutate "$i" "$seed" >"$partial/in/mut-$(printf %03d $i).scene"
 done
 start=$(date +%s)
+progress "sanitize.sh: partial output, $PARTIAL_FILES scenes"
 jobs=$(nproc 2>/dev/null || echo 2)
 export BUILD PARTIAL_SIZE
 ls "$partial/in" | LC_ALL=C sort |

@@ -762,6 +762,106 @@ static void test_write_errors(void)
     image_free(&img);
 }
 
+/* Lit pixels (any channel non-zero) of img. */
+static long count_lit(const image_t *img)
+{
+    long n = 0;
+    for (size_t i = 0; i < (size_t)img->width * (size_t)img->height; i++)
+        n += img->rgb[3 * i] || img->rgb[3 * i + 1] || img->rgb[3 * i + 2];
+    return n;
+}
+
+/* The label font: every printable glyph distinct and inked within its
+ * cell, descenders only where letters have them, widths, drawing and
+ * clipping against hand-counted pixels. */
+static void test_font(void)
+{
+    static const uint8_t white[3] = {255, 255, 255};
+    char err[256];
+    int distinct = 1, space_blank = 1, all_inked = 1, desc_ok = 1;
+
+    for (int c = 0x20; c <= 0x7e; c++) {
+        int ink = 0, low = 0;
+        for (int r = 0; r < IMAGE_GLYPH_H; r++)
+            for (int x = 0; x < IMAGE_GLYPH_W; x++) {
+                ink += image_glyph_ink((char)c, x, r);
+                low += r == IMAGE_GLYPH_H - 1 && image_glyph_ink((char)c, x, r);
+            }
+        if (c == ' ')
+            space_blank = ink == 0;
+        else if (ink == 0)
+            all_inked = 0;
+        /* Row 7 is for descenders only. */
+        if ((low != 0) != (strchr("gjpqy,;", c) != NULL)) {
+            desc_ok = 0;
+            fprintf(stderr, "glyph '%c': descender row %s\n", c, low ? "inked" : "empty");
+        }
+        for (int d = 0x20; d < c; d++) {
+            int same = 1;
+            for (int r = 0; r < IMAGE_GLYPH_H && same; r++)
+                for (int x = 0; x < IMAGE_GLYPH_W; x++)
+                    if (image_glyph_ink((char)c, x, r) != image_glyph_ink((char)d, x, r))
+                        same = 0;
+            if (same) {
+                distinct = 0;
+                fprintf(stderr, "glyphs '%c' and '%c' are the same\n", d, c);
+            }
+        }
+    }
+    CHECK(space_blank);
+    CHECK(all_inked);
+    CHECK(distinct);
+    CHECK(desc_ok);
+
+    /* Bytes outside printable ASCII draw as '?'; outside the cell is blank. */
+    int q_same = 1;
+    for (int r = 0; r < IMAGE_GLYPH_H; r++)
+        for (int x = 0; x < IMAGE_GLYPH_W; x++)
+            q_same &= image_glyph_ink('\t', x, r) == image_glyph_ink('?', x, r) &&
+                      image_glyph_ink((char)0xc3, x, r) == image_glyph_ink('?', x, r);
+    CHECK(q_same);
+    CHECK(image_glyph_ink('A', -1, 3) == 0 && image_glyph_ink('A', IMAGE_GLYPH_W, 3) == 0);
+    CHECK(image_glyph_ink('A', 4, -1) == 0 && image_glyph_ink('A', 4, IMAGE_GLYPH_H) == 0);
+    CHECK(image_glyph_ink('A', 0, 1) == 1 && image_glyph_ink('A', 0, 0) == 0);
+
+    CHECK(image_text_width("", 1) == 0);
+    CHECK(image_text_width("a", 1) == 5);
+    CHECK(image_text_width("ab", 1) == 11);
+    CHECK(image_text_width("ab", 2) == 22);
+    CHECK(image_text_width("identical", 3) == (9 * 6 - 1) * 3);
+
+    /* 'A' has 18 ink pixels (3+2+2+5+2+2+2, counted by hand); at scale 2
+     * each is a 2x2 square, all inside the 10x16 box at (1, 1). */
+    image_t img;
+    CHECK(image_alloc(&img, 20, 20, err, sizeof err) == 0);
+    image_draw_text(&img, 1, 1, 2, "A", white);
+    CHECK_MSG(count_lit(&img) == 72, "lit %ld", count_lit(&img));
+    int outside = 0;
+    for (int y = 0; y < 20; y++)
+        for (int x = 0; x < 20; x++)
+            if ((x < 1 || x >= 11 || y < 1 || y >= 17) && img.rgb[3 * (y * 20 + x)])
+                outside++;
+    CHECK(outside == 0);
+    CHECK(img.rgb[3 * (3 * 20 + 1)] == 255 && img.rgb[3 * (3 * 20 + 1) + 1] == 255); /* row 1 col 0 at (1,3) */
+    image_free(&img);
+
+    /* Clipping: 'A' at x = -3 on a 5x8 image shows its columns 3 and 4:
+     * 2 + 6 ink pixels. Far outside, nothing is drawn (and nothing breaks). */
+    CHECK(image_alloc(&img, 5, 8, err, sizeof err) == 0);
+    image_draw_text(&img, -3, 0, 1, "A", white);
+    CHECK_MSG(count_lit(&img) == 8, "lit %ld", count_lit(&img));
+    memset(img.rgb, 0, 5 * 8 * 3);
+    image_draw_text(&img, 100, 0, 1, "AAAA", white);
+    image_draw_text(&img, -1000, -1000, 3, "AAAA", white);
+    image_draw_text(&img, 0, 8, 1, "A", white);
+    CHECK(count_lit(&img) == 0);
+    /* A second character starts IMAGE_GLYPH_ADVANCE columns on: "AA" at
+     * x = -6 shows exactly the second 'A' (its 5 columns, 18 pixels). */
+    image_draw_text(&img, -6, 0, 1, "AA", white);
+    CHECK_MSG(count_lit(&img) == 18, "lit %ld", count_lit(&img));
+    image_free(&img);
+}
+
 int main(void)
 {
     snprintf(g_dir, sizeof g_dir, "/tmp/fxrt_test_image.XXXXXX");
@@ -777,6 +877,7 @@ int main(void)
     test_read_rejects();
     test_png_rejects();
     test_write_errors();
+    test_font();
 
     remove_test_dir();
     return check_report("test_image");
