@@ -45,11 +45,12 @@ fxrt_err_t geom_check_dir(vec3_t d)
 fxrt_err_t geom_check_color(color_t c)
 {
     /* Written so that NaN fails. */
-    if (!(c.r >= NUM_ZERO && c.r <= NUM_ONE && c.g >= NUM_ZERO && c.g <= NUM_ONE && c.b >= NUM_ZERO &&
-          c.b <= NUM_ONE))
+    if (!(c.r >= NUM_ZERO && c.r <= COLOR_MAX && c.g >= NUM_ZERO && c.g <= COLOR_MAX && c.b >= NUM_ZERO &&
+          c.b <= COLOR_MAX))
         return FXRT_ERR_COLOR;
 #if FXRT_NUMBER != FXRT_Q16
-    if (geom_check_num(c.r, 1) != FXRT_OK || geom_check_num(c.g, 1) != FXRT_OK || geom_check_num(c.b, 1) != FXRT_OK)
+    if (geom_check_num(c.r, FXRT_COORD_LIMIT) != FXRT_OK || geom_check_num(c.g, FXRT_COORD_LIMIT) != FXRT_OK ||
+        geom_check_num(c.b, FXRT_COORD_LIMIT) != FXRT_OK)
         return FXRT_ERR_TINY;
 #endif
     return FXRT_OK;

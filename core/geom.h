@@ -48,13 +48,24 @@ typedef struct {
     geom_common_t obj;
 } geom_box_t;
 
+/* Colour channels: COLOR_MAX is full intensity and COLOR_FRAC(x) the
+ * channel for an intensity fraction x in 0..1 (a constant initialiser).
+ * Here a channel is the fraction itself; color.h may define both for
+ * another representation, which then wins. */
+#ifndef COLOR_MAX
+#define COLOR_MAX NUM_ONE
+#endif
+#ifndef COLOR_FRAC
+#define COLOR_FRAC(x) NUM(x)
+#endif
+
 /* Domain checks: FXRT_OK, or the fxrt_err_t (fxrt_err.h) that says why the
  * renderer cannot take the value. They are what the scene parser checks,
  * in the build's number type, so that objects built in code meet the
  * same domain (docs/ACCURACY.md):
  *   point   every |coordinate| <= FXRT_COORD_LIMIT (NaN fails)
  *   dir     components within the same limit, not the zero vector
- *   color   every channel in 0..1
+ *   color   every channel in 0..COLOR_MAX (intensity 0..1)
  * and in the float and double builds a nonzero coordinate or colour below
  * 2^-16, which Q16.16 cannot hold, is refused too, so all three builds
  * accept the same input. */

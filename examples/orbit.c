@@ -13,6 +13,9 @@
 #define ORBIT_H 48
 #define ORBIT_FRAMES 16
 
+/* A colour from intensity fractions 0..1 (COLOR_FRAC: core/geom.h). */
+#define RGB(r, g, b) color_make(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
+
 static world_t world;              /* 5 objects: the capacities in examples.mk */
 static render_t rs;                /* per-frame forms of every object */
 static uint8_t row[FXRT_ROW_BYTES(ORBIT_W)];
@@ -31,17 +34,17 @@ static void must(int32_t r, const char *what)
 
 static void build_world(void)
 {
-    must(fxrt_world_init(&world, color_make(F16(0.05), F16(0.1), F16(0.2))), "world");
-    must(world_add_plane(&world, v3(0, F16(-1), 0), v3(0, F16(1), 0), color_make(F16(0.35), F16(0.55), F16(0.3))),
+    must(fxrt_world_init(&world, RGB(0.05, 0.1, 0.2)), "world");
+    must(world_add_plane(&world, v3(0, F16(-1), 0), v3(0, F16(1), 0), RGB(0.35, 0.55, 0.3)),
          "plane");
-    must(world_add_sphere(&world, v3(0, 0, 0), F16(0.9), color_make(F16(0.85), F16(0.3), F16(0.15))), "sphere");
-    must(world_add_sphere(&world, v3(F16(1.6), F16(-0.5), F16(0.8)), F16(0.5), color_make(F16(0.2), F16(0.45), F16(0.9))),
+    must(world_add_sphere(&world, v3(0, 0, 0), F16(0.9), RGB(0.85, 0.3, 0.15)), "sphere");
+    must(world_add_sphere(&world, v3(F16(1.6), F16(-0.5), F16(0.8)), F16(0.5), RGB(0.2, 0.45, 0.9)),
          "sphere");
     must(world_add_box(&world, v3(F16(-2.2), F16(-1), F16(-0.6)), v3(F16(-1.2), F16(0.2), F16(0.4)),
-                       color_make(F16(0.95), F16(0.8), F16(0.25))),
+                       RGB(0.95, 0.8, 0.25)),
          "box");
     must(world_add_triangle(&world, v3(F16(-0.5), F16(-1), F16(-2.2)), v3(F16(1.5), F16(-1), F16(-1.8)),
-                            v3(F16(0.4), F16(1.4), F16(-2)), color_make(F16(0.6), F16(0.25), F16(0.7))),
+                            v3(F16(0.4), F16(1.4), F16(-2)), RGB(0.6, 0.25, 0.7)),
          "triangle");
 }
 

@@ -37,9 +37,14 @@ static vec3_t V(double x, double y, double z)
     return vec3_make(N(x), N(y), N(z));
 }
 
+/* Colours from intensity fractions (1 = full = COLOR_MAX). */
+static double full(void)
+{
+    return D(COLOR_MAX);
+}
 static color_t C(double r, double g, double b)
 {
-    return color_make(N(r), N(g), N(b));
+    return color_make(N(r * full()), N(g * full()), N(b * full()));
 }
 
 static world_t world; /* 64 of each kind on the host: static */
@@ -276,7 +281,7 @@ static int o_color(color_t c)
     double v[3] = {D(c.r), D(c.g), D(c.b)};
     int r = 0;
     for (int i = 0; i < 3; i++) {
-        if (v[i] < 0 || v[i] > 1)
+        if (v[i] < 0 || v[i] > full())
             r |= R_COLOR;
         if (tiny(v[i]))
             r |= R_TINY;
