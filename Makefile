@@ -104,6 +104,7 @@ TEST_PREREQ  :=
 -include tests/sanitize.mk
 -include tests/diff.mk
 -include host/version.mk
+-include tests/fx.mk
 -include tests/examples.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \

@@ -26,13 +26,171 @@ static uint64_t fx_udiv_round(uint64_t num, uint64_t den)
     return q + (r >= den - r ? 1u : 0u);
 }
 
+/* Count leading zeros of a non-zero uint32, rounded down to an even number,
+ * as a shift that brings the top set bit to bit 30 or 31. Hardware CLZ
+ * where the target has it; a four-step binary search on the Cortex-M0
+ * (whose libgcc __clzsi2 costs more). FX_HAVE_CLZ in core/fxrt_config.h. */
+static inline __attribute__((always_inline)) int fx_clz_even(uint32_t v)
+{
+#if FX_HAVE_CLZ
+    return __builtin_clz(v) & ~1;
+#else
+    int e = 0;
+    if (v < (1u << 16)) {
+        v <<= 16;
+        e += 16;
+    }
+    if (v < (1u << 24)) {
+        v <<= 8;
+        e += 8;
+    }
+    if (v < (1u << 28)) {
+        v <<= 4;
+        e += 4;
+    }
+    if (v < (1u << 30))
+        e += 2;
+    return e;
+#endif
+}
+
+/* Leading zero count of a non-zero uint32. */
+static inline __attribute__((always_inline)) int fx_clz32(uint32_t v)
+{
+#if FX_HAVE_CLZ
+    return __builtin_clz(v);
+#else
+    int e = 0;
+    if (v < (1u << 16)) {
+        v <<= 16;
+        e += 16;
+    }
+    if (v < (1u << 24)) {
+        v <<= 8;
+        e += 8;
+    }
+    if (v < (1u << 28)) {
+        v <<= 4;
+        e += 4;
+    }
+    if (v < (1u << 30)) {
+        v <<= 2;
+        e += 2;
+    }
+    if (v < (1u << 31))
+        e += 1;
+    return e;
+#endif
+}
+
+#if !FX_HAVE_UDIV
+/* round(2^23 / (i + 0.5)) for i = 128 .. 255: 2^31 / d1 for a 16-bit d1 in
+ * [2^15, 2^16) indexed by its top 8 bits, within 2^-8 relative. */
+static const uint16_t fx_recip_tab[128] = {
+    65281, 64777, 64281, 63792, 63310, 62836, 62369, 61909, 61455, 61008, 60568, 60133, 59705,
+    59283, 58867, 58457, 58053, 57654, 57260, 56872, 56489, 56111, 55738, 55370, 55007, 54649,
+    54295, 53946, 53601, 53261, 52925, 52593, 52265, 51942, 51622, 51306, 50995, 50686, 50382,
+    50081, 49784, 49490, 49200, 48913, 48630, 48349, 48072, 47798, 47528, 47260, 46995, 46733,
+    46474, 46218, 45965, 45714, 45467, 45222, 44979, 44739, 44502, 44267, 44035, 43805, 43577,
+    43352, 43129, 42908, 42690, 42474, 42260, 42048, 41838, 41631, 41425, 41222, 41020, 40820,
+    40623, 40427, 40233, 40041, 39851, 39662, 39476, 39291, 39108, 38926, 38746, 38568, 38392,
+    38217, 38044, 37872, 37702, 37533, 37366, 37200, 37036, 36873, 36712, 36552, 36393, 36236,
+    36080, 35926, 35772, 35620, 35470, 35320, 35172, 35026, 34880, 34735, 34592, 34450, 34309,
+    34169, 34031, 33893, 33757, 33622, 33487, 33354, 33222, 33091, 32961, 32832,
+};
+
+/* v ~ 2^31 / d1 for d1 in [2^15, 2^16): the table, then one Newton step
+ * v += v (2^31 - d1 v) / 2^31, which leaves v at most 2^-15 below. */
+static inline __attribute__((always_inline)) uint32_t fx_recip16(uint32_t d1)
+{
+    int32_t v = fx_recip_tab[(d1 >> 8) - 128];
+    int32_t e = (int32_t)((1u << 31) - d1 * (uint32_t)v); /* |e| < 2^23 */
+    return (uint32_t)(v + ((v * (e >> 8)) >> 23));
+}
+#endif
+
+/* q = floor(u / d1) and *r = u - q d1, for d1 in [2^15, 2^16). v is
+ * fx_recip16(d1) on targets without a divide instruction (unused else). */
+static inline __attribute__((always_inline)) uint32_t fx_div32_16(uint32_t u, uint32_t d1, uint32_t v, uint32_t *r)
+{
+#if FX_HAVE_UDIV
+    (void)v;
+    uint32_t q = u / d1;
+    *r = u - q * d1;
+    return q;
+#else
+    /* u v / 2^31 in two 16-bit halves (no 64-bit product). It is at most a
+     * few units below u / d1 (v is low by < 2^-15, and two truncations),
+     * never above, so the exact remainder is small and non-negative. */
+    uint32_t q = ((((u >> 16) * v) >> 1) + (((u & 0xffffu) * v) >> 17)) >> 14;
+    uint32_t rem = u - q * d1;
+    while (rem >= d1) {
+        q++;
+        rem -= d1;
+    }
+    *r = rem;
+    return q;
+#endif
+}
+
+/* One 16-bit quotient digit of Knuth's long division (TAOCP 4.3.1,
+ * algorithm D) in base 2^16 with a normalised divisor D = d1 2^16 + d0
+ * (d1 >= 2^15): floor((u 2^16 + un) / D) for u < D, un < 2^16. The
+ * estimate floor(u / d1) is at most 2 too large; the d0 test brings it to
+ * the exact digit. *rem gets u 2^16 + un - digit * D (< D: exact mod 2^32). */
+static inline __attribute__((always_inline)) uint32_t fx_div_digit(uint32_t u, uint32_t un, uint32_t d, uint32_t v, uint32_t *rem)
+{
+    uint32_t d1 = d >> 16, d0 = d & 0xffffu, rhat;
+    uint32_t q = fx_div32_16(u, d1, v, &rhat);
+    while (q >= (1u << 16) || q * d0 > ((rhat << 16) | un)) {
+        q--;
+        rhat += d1;
+        if (rhat >= (1u << 16))
+            break;
+    }
+    *rem = (u << 16) + un - q * d;
+    return q;
+}
+
+/* a / b correctly rounded, ties away from zero, with 32-bit operations only
+ * (no libgcc 64-bit division). The quotient magnitude q = |a| 2^16 / |b|
+ * is tested for saturation first (q >= 2^31 iff |a| / 2^15 >= |b|); then
+ * q < 2^31 and Knuth's division of the 63-bit numerator |a| 2^(16+s) by
+ * the normalised divisor |b| 2^s gives two 16-bit digits and the exact
+ * remainder r. Rounding compares 2r with the divisor (ties go up in
+ * magnitude, i.e. away from zero). */
 fx_t fx_div(fx_t a, fx_t b)
 {
     if (b == 0)
         return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
     bool neg = (a < 0) != (b < 0);
-    uint64_t num = fx_uabs64(a) << FX_FRAC_BITS;
-    return fx_signed_sat(fx_udiv_round(num, fx_uabs64(b)), neg);
+    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t ub = b < 0 ? 0u - (uint32_t)b : (uint32_t)b;
+    if ((ua >> 15) >= ub)
+        return neg ? FX_MIN : FX_MAX;
+    int s = fx_clz32(ub);
+    uint32_t d = ub << s;
+    uint32_t u1, u0; /* numerator ua 2^(16+s) = u1 2^32 + u0, u1 < d / 2 */
+    if (s < 16) {
+        u1 = ua >> (16 - s);
+        u0 = ua << (16 + s);
+    } else {
+        u1 = ua << (s - 16);
+        u0 = 0;
+    }
+#if FX_HAVE_UDIV
+    uint32_t v = 0;
+#else
+    uint32_t v = fx_recip16(d >> 16);
+#endif
+    uint32_t r;
+    uint32_t q1 = fx_div_digit(u1, u0 >> 16, d, v, &r);
+    uint32_t q0 = fx_div_digit(r, u0 & 0xffffu, d, v, &r);
+    uint32_t q = (q1 << 16) + q0;
+    q += r >= d - r ? 1u : 0u; /* 2r >= d without overflow */
+    if (neg)
+        return q >= (1u << 31) ? FX_MIN : -(fx_t)q;
+    return q > (uint32_t)INT32_MAX ? FX_MAX : (fx_t)q;
 }
 
 fx_t fx_recip(fx_t a)
@@ -58,28 +216,72 @@ uint32_t fx_isqrt64(uint64_t n)
     return (uint32_t)root;
 }
 
-/* Round-to-nearest integer square root: floor root r rounds up when
- * n > r^2 + r, because (r + 1/2)^2 = r^2 + r + 1/4 and n is an integer. */
-static uint64_t fx_isqrt64_round(uint64_t n)
+
+
+/* round(2^30 / sqrt((i + 0.5) * 2^25)) for i = 32 .. 127: 1/sqrt(m) for
+ * m in [2^30, 2^32) indexed by m's top 7 bits, within 2^-7.4 relative. */
+static const uint16_t fx_rsqrt_tab[96] = {
+    32515, 32026, 31558, 31111, 30682, 30270, 29874, 29494, 29127, 28774, 28434, 28105,
+    27787, 27480, 27183, 26895, 26617, 26346, 26084, 25830, 25583, 25342, 25109, 24882,
+    24660, 24445, 24235, 24031, 23831, 23637, 23447, 23262, 23080, 22904, 22731, 22562,
+    22396, 22235, 22077, 21922, 21770, 21621, 21476, 21333, 21193, 21056, 20921, 20789,
+    20660, 20533, 20408, 20285, 20165, 20047, 19930, 19816, 19704, 19594, 19485, 19378,
+    19273, 19170, 19068, 18968, 18870, 18773, 18677, 18583, 18490, 18399, 18309, 18220,
+    18133, 18047, 17962, 17878, 17795, 17714, 17634, 17554, 17476, 17399, 17323, 17248,
+    17174, 17100, 17028, 16957, 16886, 16817, 16748, 16680, 16613, 16546, 16481, 16416,
+};
+
+/* sqrt(m) and 1/sqrt(m) for m in [2^30, 2^32) with 32-bit multiplies only
+ * (no divide, no 64-bit product, so also fast on the Cortex-M0):
+ *  1. y0 ~ 2^30 / sqrt(m) from the table, s0 = m y0 / 2^30 ~ sqrt(m) (7 bits);
+ *  2. s1 = s0 + (m - s0^2) y0 / 2^31, a Newton step on the exact residual
+ *     (|m - s0^2| < 2^25 fits an int32): s1 ~ sqrt(m) within +-4;
+ *  3. y1 = y0 (2 - s1 y0 / 2^30), a Newton step for 2^30 / s1 (14 bits).
+ * *s gets s1 and *y gets y1. */
+static inline __attribute__((always_inline)) void fx_sqrt_est(uint32_t m, int32_t *s, int32_t *y)
 {
-    uint64_t r = fx_isqrt64(n);
-    return n > r * r + r ? r + 1 : r;
+    int32_t y0 = fx_rsqrt_tab[(m >> 25) - 32];
+    int32_t s0 = (int32_t)(((m >> 16) * (uint32_t)y0) >> 14);
+    int32_t r = (int32_t)(m - (uint32_t)s0 * (uint32_t)s0);
+    int32_t s1 = s0 + (((r >> 9) * y0) >> 22);
+    int32_t t = (int32_t)(1u << 30) - (int32_t)((uint32_t)s1 * (uint32_t)y0);
+    *y = y0 + ((y0 * (t >> 8)) >> 22);
+    *s = s1;
 }
 
-fx_t fxw_sqrt(fxw_t w)
-{
-    /* sqrt(w * 2^-32) * 2^16 = sqrt(w): the Q32.32 integer's integer root is
-     * the Q16.16 result directly. */
-    if (w <= 0)
-        return 0;
-    return fx_signed_sat(fx_isqrt64_round((uint64_t)w), false);
-}
-
+/* Correctly rounded sqrt. The exact result is round(sqrt(n)) with
+ * n = a 2^16 < 2^47; ties cannot happen (n is an integer, (r + 1/2)^2 is
+ * not). With m = a 4^h in [2^30, 2^32), sqrt(n) = 256 sqrt(m) / 2^h:
+ *  - fx_sqrt_est gives s1 ~ sqrt(m) and y1 ~ 2^30 / s1;
+ *  - R = 256 s1 + (m - s1^2) 128 / s1 ~ 256 sqrt(m), within a unit or two;
+ *  - q = R / 2^h rounded, then the exact test: with d = n - q^2 (exact in
+ *    32-bit modular arithmetic, because |d| < 2^31 near the root), q is
+ *    round(sqrt(n)) iff -q < d <= q; otherwise step q by one and retest
+ *    (q is never more than one step off: tests/fx_exhaustive.c checks
+ *    every input). */
 fx_t fx_sqrt(fx_t a)
 {
     if (a <= 0)
         return 0;
-    return fxw_sqrt(fxw_from_fx(a));
+    int e = fx_clz_even((uint32_t)a);
+    uint32_t m = (uint32_t)a << e;
+    int h = e >> 1;
+    int32_t s, y;
+    fx_sqrt_est(m, &s, &y);
+    int32_t r = (int32_t)(m - (uint32_t)s * (uint32_t)s);
+    int32_t R = (int32_t)((uint32_t)s << 8) + (((r >> 5) * y) >> 18);
+    uint32_t q = h ? ((uint32_t)R + (1u << (h - 1))) >> h : (uint32_t)R;
+    uint32_t n = (uint32_t)a << 16; /* n mod 2^32 */
+    int32_t d = (int32_t)(n - q * q);
+    while (d > (int32_t)q) { /* q too small: n >= q^2 + q + 1 */
+        d -= (int32_t)(2 * q + 1);
+        q++;
+    }
+    while (d <= -(int32_t)q) { /* q too large: n <= q^2 - q */
+        q--;
+        d += (int32_t)(2 * q + 1);
+    }
+    return (fx_t)q;
 }
 
 /* Leading zero count of a non-zero uint64. */
@@ -87,6 +289,72 @@ static int fx_clz64(uint64_t v)
 {
     return __builtin_clzll(v);
 }
+
+fx_t fxw_sqrt(fxw_t w)
+{
+    /* sqrt(w * 2^-32) * 2^16 = sqrt(w): the Q32.32 integer's rounded root
+     * is the Q16.16 result. As in fx_sqrt: the top 32 bits m of w (taken
+     * with an even shift, so sqrt(w) ~ sqrt(m) 2^k) give a 24-bit root
+     * R ~ 256 sqrt(m); for w >= 2^48 one more Newton step on the exact
+     * 64-bit residual; then the exact test on d = w - q^2 (exact mod 2^64
+     * because it is small), stepping q until -q < d <= q. */
+    if (w <= 0)
+        return 0;
+    uint64_t n = (uint64_t)w;
+    int e = fx_clz64(n) & ~1;
+    uint32_t m = e >= 32 ? (uint32_t)(n << (e - 32)) : (uint32_t)(n >> (32 - e));
+    int k = 16 - (e >> 1); /* sqrt(n) ~ sqrt(m) 2^k, k in [-15, 16] */
+    int32_t s, y;
+    fx_sqrt_est(m, &s, &y);
+    int32_t r = (int32_t)(m - (uint32_t)s * (uint32_t)s);
+    uint32_t R = (uint32_t)(((int32_t)((uint32_t)s << 8)) + (((r >> 5) * y) >> 18));
+    uint64_t q;
+    if (k <= 8) {
+        int sh = 8 - k;
+        q = sh ? (R + (1u << (sh - 1))) >> sh : R;
+    } else {
+        q = (uint64_t)R << (k - 8); /* within 2^(k-7) + 2 */
+        int64_t d = (int64_t)(n - q * q);
+        /* d / (2q) with 1 / (2 sqrt(n)) ~ y 2^-31 2^-k. */
+        q = (uint64_t)((int64_t)q + ((d * y) >> (31 + k)));
+    }
+    int64_t d = (int64_t)(n - q * q);
+    while (d > (int64_t)q) {
+        d -= (int64_t)(2 * q + 1);
+        q++;
+    }
+    while (d <= -(int64_t)q) {
+        q--;
+        d += (int64_t)(2 * q + 1);
+    }
+    return q > (uint64_t)INT32_MAX ? FX_MAX : (fx_t)q;
+}
+
+/* Y ~ 2^46 / sqrt(m) for m in [2^30, 2^32), Y in (2^30, 2^31], within
+ * 2^-25 relative: fx_sqrt_est's 14-bit y1, then one Newton step for the
+ * inverse square root, Y' = Y (3 - m Y^2 / 2^92) / 2, in 64-bit products. */
+static uint32_t fx_rsqrt_q46(uint32_t m)
+{
+    int32_t s, y;
+    fx_sqrt_est(m, &s, &y);
+    uint32_t Y = (uint32_t)y << 16;
+    uint32_t t = (uint32_t)(fx_umul32(Y, Y) >> 32);    /* ~ 2^60 / m */
+    uint64_t f = 3 * ((uint64_t)1 << 60) - fx_umul32(m, t); /* ~ 2^61 */
+    return (uint32_t)(fx_umul32(Y, (uint32_t)(f >> 30)) >> 31);
+}
+
+/* 1 / sqrt(a) = 2^24 / sqrt(a_raw) in Q16.16. With m = a 4^h in
+ * [2^30, 2^32): 2^24 / sqrt(a) = Y 2^h / 2^22, rounded once. */
+fx_t fx_rsqrt(fx_t a)
+{
+    if (a <= 0)
+        return FX_MAX;
+    int e = fx_clz_even((uint32_t)a);
+    int k = 22 - (e >> 1); /* 7 .. 22 */
+    uint32_t Y = fx_rsqrt_q46((uint32_t)a << e);
+    return (fx_t)((Y + (1u << (k - 1))) >> k);
+}
+
 
 fx_t fxw_div(fxw_t a, fxw_t b)
 {
@@ -165,75 +433,81 @@ fx_t fx_cot_deg(fx_t deg)
 }
 
 /* Sine and cosine of degrees. The angle is reduced exactly in integers:
- * modulo 360 degrees, then to a quadrant q and a remainder r in [0, 90),
- * then to [0, 45] by sin(90 - r) = cos(r). Only the final [0, 45] angle is
- * converted to radians (Q2.30, error <= 0.5 LSB of Q30 = 4.7e-10) and fed
- * to Taylor polynomials in Q2.30 (sin to x^9, cos to x^10: the first
- * dropped terms are below 1.2e-9 at pi/4). All Q30 roundings together stay
- * below 1e-8, i.e. below 0.001 LSB of Q16.16, so after the final rounding
- * the result is within 0.5 + 0.001 LSB of the exact value. */
-#define FX_DEG90 ((int32_t)90 << FX_FRAC_BITS)
-#define FX_DEG45 ((int32_t)45 << FX_FRAC_BITS)
-#define FX_Q30_ONE ((int64_t)1 << 30)
+ * |deg| modulo 360 degrees (sin is odd, cos even), then to a quadrant and
+ * a remainder r in [0, 90), then to [0, 45] by sin(90 - r) = cos(r). Only
+ * the final [0, 45] angle is converted to radians (Q1.31, error <= 1 unit
+ * of Q31 = 4.7e-10) and fed to Taylor polynomials in unsigned Q1.31 (sin to
+ * x^9, cos to x^10: the first dropped terms are below 1.8e-9 at pi/4).
+ * Written as nested 1 - u (c - u (...)) with u = x^2, every partial value is
+ * positive, so each step is one unsigned 32 x 32 -> 64-bit product (UMULL,
+ * or four 16-bit products on the M0) and no division. All Q31 roundings
+ * together stay below 1e-8, i.e. below 0.001 LSB of Q16.16, so after the
+ * final rounding the result is within 0.5 + 0.001 LSB of the exact value. */
+#define FX_DEG90 ((uint32_t)90 << FX_FRAC_BITS)
+#define FX_DEG45 ((uint32_t)45 << FX_FRAC_BITS)
+#define FX_DEG360 ((uint32_t)360 << FX_FRAC_BITS)
+#define FX_Q31_ONE ((uint32_t)1 << 31)
 
-/* (a * b) / 2^30 rounded (ties toward +infinity), a, b in Q2.30. */
-static int64_t fx_mul_q30(int64_t a, int64_t b)
+/* a * b / 2^31 (truncated) for Q1.31 values a, b <= 1. */
+static inline uint32_t fx_mul_q31(uint32_t a, uint32_t b)
 {
-    return (a * b + (FX_Q30_ONE >> 1)) >> 30;
+    return (uint32_t)(fx_umul32(a, b) >> 31);
 }
 
 /* sin (want_cos false) or cos (want_cos true) of r degrees in Q16.16,
  * 0 <= r <= 45 degrees, as Q16.16 in [0, 1]. */
-static fx_t fx_sincos45(int32_t r, bool want_cos)
+static fx_t fx_sincos45(uint32_t r, bool want_cos)
 {
-    /* pi/180 * 2^46: r (< 2^22) times it stays below 2^63. */
-    const int64_t k = 1228166276394;
-    int64_t x = ((int64_t)r * k + ((int64_t)1 << 31)) >> 32; /* radians, Q2.30 */
-    int64_t x2 = fx_mul_q30(x, x);
-    int64_t v;
+    /* x = r pi/180 in Q31 = r * round(pi/180 2^37) / 2^22, r < 2^22. */
+    uint32_t x = (uint32_t)(fx_umul32(r, 2398762259u) >> 22);
+    uint32_t u = fx_mul_q31(x, x);
+    uint32_t v;
     if (want_cos) {
-        /* 1 - x^2/2! + x^4/4! - ... - x^10/10!, coefficients in Q30. */
-        int64_t p = -296;
-        p = 26631 + fx_mul_q30(p, x2);
-        p = -1491308 + fx_mul_q30(p, x2);
-        p = 44739243 + fx_mul_q30(p, x2);
-        p = -536870912 + fx_mul_q30(p, x2);
-        v = FX_Q30_ONE + fx_mul_q30(p, x2);
+        /* 1 - u (1/2! - u (1/4! - u (1/6! - u (1/8! - u / 10!)))), Q31. */
+        v = 53261u - fx_mul_q31(u, 592u);
+        v = 2982616u - fx_mul_q31(u, v);
+        v = 89478485u - fx_mul_q31(u, v);
+        v = 1073741824u - fx_mul_q31(u, v);
+        v = FX_Q31_ONE - fx_mul_q31(u, v);
     } else {
-        /* x (1 - x^2/3! + x^4/5! - x^6/7! + x^8/9!). */
-        int64_t p = 2959;
-        p = -213044 + fx_mul_q30(p, x2);
-        p = 8947849 + fx_mul_q30(p, x2);
-        p = -178956971 + fx_mul_q30(p, x2);
-        v = fx_mul_q30(FX_Q30_ONE + fx_mul_q30(p, x2), x);
+        /* x (1 - u (1/3! - u (1/5! - u (1/7! - u / 9!)))). */
+        v = 426088u - fx_mul_q31(u, 5918u);
+        v = 17895697u - fx_mul_q31(u, v);
+        v = 357913941u - fx_mul_q31(u, v);
+        v = fx_mul_q31(x, FX_Q31_ONE - fx_mul_q31(u, v));
     }
-    v = (v + ((int64_t)1 << 13)) >> 14; /* Q30 -> Q16, ties toward +inf */
-    if (v > FX_ONE)
-        v = FX_ONE; /* never above 1 (cannot happen by the bound, kept as a guard) */
-    if (v < 0)
-        v = 0;
-    return (fx_t)v;
+    v = (v + (1u << 14)) >> 15; /* Q31 -> Q16, ties toward +infinity */
+    return v > (uint32_t)FX_ONE ? FX_ONE : (fx_t)v; /* a guard: the bound keeps v <= 1 */
 }
 
-/* Shared body: quarter turns to add (1 for cosine), then the angle. */
-static fx_t fx_sin_quarter(fx_t deg, int32_t quarter)
+/* sin(deg + quarter * 90 degrees), quarter 0 or 1. */
+static fx_t fx_sin_quarter(fx_t deg, uint32_t quarter)
 {
-    /* deg mod 360 degrees, exact: 360 << 16 = 23592960 fits an int32. */
-    const int32_t full = (int32_t)360 << FX_FRAC_BITS;
-    int32_t a = deg % full;
-    if (a < 0)
-        a += full;
-    int32_t q = a / FX_DEG90;
-    int32_t r = a - q * FX_DEG90; /* [0, 90) degrees */
-    q = (q + quarter) & 3;
-    /* sin(q * 90 + r): q = 0 sin r, 1 cos r, 2 -sin r, 3 -cos r. */
-    bool use_cos = (q & 1) != 0;
-    if (r > FX_DEG45) {
-        r = FX_DEG90 - r; /* sin(r) = cos(90 - r) and vice versa */
+    bool neg = deg < 0;
+    uint32_t a = neg ? 0u - (uint32_t)deg : (uint32_t)deg; /* |deg| <= 2^31 */
+    /* a mod 360 degrees without a divide: 182 / 2^16 is just below
+     * 1 / 360, so q is floor(a / 360 deg) or one less. */
+    uint32_t q = ((a >> 16) * 182u) >> 16;
+    a -= q * FX_DEG360;
+    while (a >= FX_DEG360)
+        a -= FX_DEG360;
+    /* sin(-x) = sin(x + 180 degrees): negate by adding two quarters, and
+     * cos(-x) = cos(x) = sin(x + 90): a cosine of a negative angle is the
+     * cosine of |deg|. */
+    uint32_t quad = 0;
+    while (a >= FX_DEG90) {
+        a -= FX_DEG90;
+        quad++;
+    }
+    quad = (quad + quarter + (neg && !quarter ? 2u : 0u)) & 3u;
+    /* sin(quad * 90 + r): quad 0 sin r, 1 cos r, 2 -sin r, 3 -cos r. */
+    bool use_cos = (quad & 1u) != 0;
+    if (a > FX_DEG45) {
+        a = FX_DEG90 - a; /* sin(r) = cos(90 - r) and vice versa */
         use_cos = !use_cos;
     }
-    fx_t v = fx_sincos45(r, use_cos);
-    return q >= 2 ? -v : v;
+    fx_t v = fx_sincos45(a, use_cos);
+    return quad >= 2 ? -v : v;
 }
 
 fx_t fx_sin_deg(fx_t deg)
@@ -248,27 +522,35 @@ fx_t fx_cos_deg(fx_t deg)
 
 bool fx_normalize3(fx_t v[3])
 {
-    uint64_t m = fx_uabs64(v[0]) | fx_uabs64(v[1]) | fx_uabs64(v[2]);
+    uint32_t m = 0;
+    for (int i = 0; i < 3; i++)
+        m |= v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
     if (m == 0)
         return false;
     /* Scale by a power of two so the largest magnitude lies in [2^29, 2^30):
-     * the direction is unchanged, the squared length stays below 3 * 2^60,
-     * and the length keeps 30 significant bits. */
-    int shift = fx_clz64(m) - 34;
-    int64_t s[3];
-    for (int i = 0; i < 3; i++)
-        s[i] = shift >= 0 ? v[i] * ((int64_t)1 << shift) : (int64_t)v[i] / ((int64_t)1 << -shift);
+     * the direction is unchanged (a right shift truncates toward zero, a
+     * relative change below 2^-29), the squared length lies in
+     * [2^58, 3 * 2^60), and the length keeps 30 significant bits. */
+    int shift = fx_clz32(m) - 2;
+    uint32_t s[3];
+    bool neg[3];
     uint64_t len2 = 0;
-    for (int i = 0; i < 3; i++)
-        len2 += (uint64_t)(s[i] * s[i]);
-    uint64_t len = fx_isqrt64_round(len2); /* in [2^29, 2^31) */
-    /* inv = 2^61 / len < 2^32 keeps 31+ significant bits, and s * inv stays
-     * below 2^62; the component is then (s * inv) / 2^45 in Q16.16. */
-    uint64_t inv = fx_udiv_round((uint64_t)1 << 61, len);
     for (int i = 0; i < 3; i++) {
-        uint64_t p = fx_uabs64(s[i]) * inv + ((uint64_t)1 << 44);
-        fx_t c = (fx_t)(p >> 45);
-        v[i] = s[i] < 0 ? -c : c;
+        neg[i] = v[i] < 0;
+        uint32_t u = neg[i] ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
+        s[i] = shift >= 0 ? u << shift : u >> -shift;
+        len2 += fx_umul32(s[i], s[i]);
+    }
+    /* Top 32 bits of len2 with an even shift: len2 ~ m2 2^(2k), so
+     * 1 / |s| ~ Y 2^-46 / 2^k, and each component in Q16.16 is
+     * s Y / 2^(30 + k), rounded once. Dropping len2's low bits costs at
+     * most 2^-30 relative. */
+    int e = fx_clz32((uint32_t)(len2 >> 32)) & ~1; /* 2 or 4 */
+    int k = 16 - (e >> 1);
+    uint32_t Y = fx_rsqrt_q46((uint32_t)(len2 >> (32 - e)));
+    for (int i = 0; i < 3; i++) {
+        fx_t c = (fx_t)((fx_umul32(s[i], Y) + ((uint64_t)1 << (29 + k))) >> (30 + k));
+        v[i] = neg[i] ? -c : c;
     }
     return true;
 }

@@ -5,9 +5,14 @@
  * fxw_t is a signed 64-bit integer in Q32.32: the exact product of two fx_t,
  * used to accumulate dot products before rounding once.
  *
- * Rounding: every operation that drops bits rounds to nearest, ties toward
- * +infinity (add half an LSB, then floor). Error bounds are per function
- * below and in docs/ACCURACY.md; tests/test_fx.c checks each against double.
+ * Rounding: every operation that drops bits rounds to nearest. Each
+ * function below states its error bound and its tie rule: products and
+ * Q32.32 -> Q16.16 roundings take ties toward +infinity (add half an LSB,
+ * then floor); divisions take ties away from zero; square roots cannot
+ * meet a tie. Bounds are also listed in docs/ACCURACY.md; tests/test_fx.c
+ * checks each against long double (and the tie rules exactly), and
+ * tests/fx_exhaustive.c checks the one-argument roots and sin/cos over every
+ * input.
  *
  * Overflow policy: SATURATE. A result outside the range becomes FX_MAX or
  * FX_MIN; nothing wraps and no signed overflow happens in C. Division by
@@ -22,6 +27,8 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+
+#include "fxrt_config.h"
 
 typedef int32_t fx_t;  /* Q16.16 */
 typedef int64_t fxw_t; /* Q32.32 */
@@ -81,7 +88,44 @@ static inline fx_t fx_abs(fx_t a)
     return a < 0 ? fx_neg(a) : a;
 }
 
-/* a * b, |error| <= 0.5 LSB, saturating. The 64-bit product is exact. */
+/* 32 x 32 -> 64-bit products. The Cortex-M0 has no UMULL/SMULL, and
+ * libgcc's __aeabi_lmul (what `(int64_t)a * b` becomes there) multiplies
+ * 64 x 64 bits behind a call; four 16-bit products inline are cheaper.
+ * FX_HAVE_UMULL (core/fxrt_config.h) selects the path.
+ * Both are exact. */
+static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
+{
+#if FX_HAVE_UMULL
+    return (uint64_t)a * b;
+#else
+    uint32_t al = a & 0xffffu, ah = a >> 16, bl = b & 0xffffu, bh = b >> 16;
+    uint32_t ll = al * bl, hh = ah * bh, lh = al * bh, hl = ah * bl;
+    uint32_t mid = lh + hl;
+    uint32_t hi = hh + (mid >> 16) + (mid < lh ? 0x10000u : 0u);
+    uint32_t lo = ll + (mid << 16);
+    hi += lo < ll ? 1u : 0u;
+    return ((uint64_t)hi << 32) | lo;
+#endif
+}
+/* Signed: the unsigned product of the two's-complement patterns, minus
+ * b 2^32 when a < 0 and a 2^32 when b < 0 (modulo 2^64). */
+static inline int64_t fx_smul32(int32_t a, int32_t b)
+{
+#if FX_HAVE_UMULL
+    return (int64_t)a * b;
+#else
+    uint64_t p = fx_umul32((uint32_t)a, (uint32_t)b);
+    uint32_t hi = (uint32_t)(p >> 32);
+    if (a < 0)
+        hi -= (uint32_t)b;
+    if (b < 0)
+        hi -= (uint32_t)a;
+    return (int64_t)(((uint64_t)hi << 32) | (uint32_t)p);
+#endif
+}
+
+/* a * b, |error| <= 0.5 LSB, ties toward +infinity (-0.5 LSB -> 0),
+ * saturating. The 64-bit product is exact. */
 static inline fx_t fx_mul(fx_t a, fx_t b)
 {
     int64_t p = (int64_t)a * b;
@@ -97,7 +141,7 @@ static inline fx_t fx_mul_int(fx_t a, int32_t i)
     return fx_sat64((int64_t)a * i);
 }
 
-/* Q32.32 -> Q16.16, |error| <= 0.5 LSB, saturating. */
+/* Q32.32 -> Q16.16, |error| <= 0.5 LSB, ties toward +infinity, saturating. */
 static inline fx_t fxw_round(fxw_t w)
 {
     if (w > INT64_MAX - FX_HALF)
@@ -120,24 +164,45 @@ static inline fxw_t fxw_add(fxw_t a, fxw_t b)
     return s;
 }
 
-/* a / b, |error| <= 0.5 LSB, saturating; x/0 saturates by sign, 0/0 = 0. */
+/* a / b correctly rounded: |error| <= 0.5 LSB, ties away from zero
+ * (1 LSB / 2.0 = 1 LSB, -1 LSB / 2.0 = -1 LSB), saturating; x/0 saturates
+ * by sign, 0/0 = 0. 32-bit operations only (Knuth's long division in two
+ * 16-bit digits; on the Cortex-M0 each digit is estimated by a reciprocal
+ * from a 256-byte table, so no libgcc division is called). */
 fx_t fx_div(fx_t a, fx_t b);
 
-/* sqrt(a), |error| <= 0.5 LSB; sqrt of a negative value is 0. */
+/* sqrt(a) correctly rounded, |error| <= 0.5 LSB (no ties are possible:
+ * a 2^16 is an integer, (r + 1/2)^2 is not); sqrt of a negative value is 0.
+ * Checked for all 2^31 non-negative inputs (make fx-exhaustive). 32-bit
+ * multiplies only: a 192-byte table, two Newton steps, an exact residual
+ * test. */
 fx_t fx_sqrt(fx_t a);
+
+/* 1 / sqrt(a) for a > 0, |error| <= 0.502 LSB (0.50094 LSB worst over
+ * every input, make fx-exhaustive). Not always correctly rounded: the
+ * result is the rounding (ties toward +infinity) of a value within 2^-25
+ * relative, so a near-tie may round either way; exact ties cannot occur.
+ * a <= 0 gives FX_MAX. Results lie in [363, 2^24]. The same table and
+ * Newton steps as fx_sqrt plus one Newton step in three 32x32->64-bit
+ * products; no division. */
+fx_t fx_rsqrt(fx_t a);
 
 /* floor(sqrt(n)) for any 64-bit unsigned n (exact). */
 uint32_t fx_isqrt64(uint64_t n);
 
-/* sqrt of a non-negative Q32.32 value as Q16.16, |error| <= 0.5 LSB,
- * saturating at FX_MAX; negative input gives 0. */
+/* sqrt of a non-negative Q32.32 value as Q16.16, correctly rounded
+ * (|error| <= 0.5 LSB, no ties possible), saturating at FX_MAX; negative
+ * input gives 0. */
 fx_t fxw_sqrt(fxw_t w);
 
-/* Q32.32 / Q32.32 as Q16.16, |error| <= 1 LSB, saturating; x/0 saturates
- * by sign, 0/0 = 0. */
+/* Q32.32 / Q32.32 as Q16.16, |error| <= 1 LSB (operands with more than 47
+ * significant bits lose their low bits first; the final division rounds
+ * ties away from zero), saturating; x/0 saturates by sign, 0/0 = 0. */
 fx_t fxw_div(fxw_t a, fxw_t b);
 
-/* 1 / a, |error| <= 0.5 LSB, saturating (1/0 = FX_MAX). */
+/* 1 / a = fx_div(FX_ONE, a): correctly rounded (|error| <= 0.5 LSB; a tie
+ * would need a to divide 2^33 oddly, which no fx_t does), saturating
+ * (1/0 = FX_MAX). */
 fx_t fx_recip(fx_t a);
 
 /* cot(deg degrees) for deg in (0, 90]: |error| <= 1 LSB + 1e-7 relative.
@@ -146,12 +211,14 @@ fx_t fx_recip(fx_t a);
 fx_t fx_cot_deg(fx_t deg);
 
 /* sin and cos of an angle in degrees (Q16.16, any value: it is reduced
- * exactly modulo 360 in integers), as Q16.16. |error| <= 0.5 LSB + 0.001 LSB
- * of the exact value (round to nearest of a value accurate to 1e-8; a
- * near-tie may round either way). Exact at multiples of 90 degrees (0, 1,
- * -1), never above 1.0 in magnitude, and odd/even exactly:
+ * exactly modulo 360 in integers), as Q16.16. |error| <= 0.502 LSB: the
+ * rounding (ties toward +infinity) of a value accurate to 1e-8, so a
+ * near-tie may round either way; the worst over every input of a full turn
+ * is 0.50011 LSB (make fx-exhaustive). Exact at multiples of 90 degrees
+ * (0, 1, -1), never above 1.0 in magnitude, and odd/even exactly:
  * fx_sin_deg(-d) = -fx_sin_deg(d), fx_cos_deg(-d) = fx_cos_deg(d).
- * Integer-only, no tables (Taylor polynomials in Q2.30 on [0, 45] deg). */
+ * Integer-only, no tables, no division (unsigned Q1.31 Taylor polynomials
+ * on [0, 45] degrees, 32x32->64-bit products). */
 fx_t fx_sin_deg(fx_t deg);
 fx_t fx_cos_deg(fx_t deg);
 
@@ -196,9 +263,12 @@ fx128_t fx128_shr128(fx128_t a, int s);
 /* Number of significant bits of |a| (0 for 0). */
 int fx128_bits(fx128_t a);
 
-/* Scale (x, y, z) to unit length in place, each component within 1 LSB of
- * the exact result for any non-zero input (the vector is first shifted up
- * to use the full 32 bits, so short vectors normalise as well as long ones).
+/* Scale (x, y, z) to unit length in place, each component within
+ * 0.504 LSB of the exact result for any non-zero input (0.5 for the final
+ * rounding, ties away from zero, plus 2^-9 for the inverse square root).
+ * The vector is first shifted to use 30 bits, so short vectors normalise
+ * as well as long ones. No division and no 64-bit root: fx_rsqrt's
+ * Newton steps on the top 32 bits of the squared length.
  * Returns false and leaves the vector unchanged when it is zero. */
 bool fx_normalize3(fx_t v[3]);
 

@@ -82,4 +82,30 @@
 #error "total object capacity (FXRT_MAX_PLANES + _SPHERES + _TRIANGLES + _BOXES) must be <= 65535: ids are uint16_t and 0xFFFF is the no-object sentinel"
 #endif
 
+/* Instruction-set features the fixed-point maths (core/fx.c, core/fx.h)
+ * chooses its code paths by. The defaults follow the target: the
+ * Cortex-M0 (ARMv6-M) has no divide, no CLZ and no 32x32->64 multiply; the
+ * M3/M4 and the host have all three. Results are identical on every path
+ * (the tests build the host with all three set to 0, see tests/fx.mk);
+ * only speed and size change.
+ *   FX_HAVE_UDIV   1: 32-bit `/` is an instruction (fx_div's digit
+ *                  estimates use it); 0: a 256-byte reciprocal table
+ *   FX_HAVE_CLZ    1: __builtin_clz is an instruction; 0: a binary search
+ *   FX_HAVE_UMULL  1: (uint64_t)a * b is one instruction; 0: four 16-bit
+ *                  products inline (instead of libgcc's __aeabi_lmul) */
+#if defined(__ARM_ARCH_6M__)
+#define FXRT_ARCH_SMALL_ISA 1
+#else
+#define FXRT_ARCH_SMALL_ISA 0
+#endif
+#ifndef FX_HAVE_UDIV
+#define FX_HAVE_UDIV (!FXRT_ARCH_SMALL_ISA)
+#endif
+#ifndef FX_HAVE_CLZ
+#define FX_HAVE_CLZ (!FXRT_ARCH_SMALL_ISA)
+#endif
+#ifndef FX_HAVE_UMULL
+#define FX_HAVE_UMULL (!FXRT_ARCH_SMALL_ISA)
+#endif
+
 #endif

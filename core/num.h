@@ -38,6 +38,8 @@ static inline num_t num_neg(num_t a) { return fx_neg(a); }
 static inline num_t num_mul(num_t a, num_t b) { return fx_mul(a, b); }
 static inline num_t num_div(num_t a, num_t b) { return fx_div(a, b); }
 static inline num_t num_sqrt(num_t a) { return fx_sqrt(a); }
+/* 1 / sqrt(a) for a > 0 (fx_rsqrt: within 0.502 LSB; a <= 0 gives NUM_MAX). */
+static inline num_t num_rsqrt(num_t a) { return fx_rsqrt(a); }
 static inline num_t num_from_int(int32_t i) { return fx_from_int(i); }
 /* a * i, exact for Q16.16 (the integer factor adds no rounding). */
 static inline num_t num_mul_int(num_t a, int32_t i) { return fx_mul_int(a, i); }
@@ -87,6 +89,8 @@ static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrt(a) : 0.0; 
 typedef num_t numw_t;
 #define NUM_ZERO NUM(0)
 #define NUM_ONE NUM(1)
+/* 1 / sqrt(a), with the Q16.16 rule for a <= 0 (NUM_MAX). */
+static inline num_t num_rsqrt(num_t a) { return a > NUM_ZERO ? NUM_ONE / num_sqrt(a) : NUM_MAX; }
 
 static inline num_t num_add(num_t a, num_t b) { return a + b; }
 static inline num_t num_sub(num_t a, num_t b) { return a - b; }

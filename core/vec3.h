@@ -59,8 +59,10 @@ static inline num_t vec3_len(vec3_t a)
 {
     return numw_sqrt(vec3_dotw(a, a));
 }
-/* a / |a|: each component within 1 LSB in Q16.16. Returns false (and leaves
- * *a unchanged) for the zero vector. */
+/* a / |a|: each component within 0.504 LSB in Q16.16 (fx_normalize3: no
+ * division, no 64-bit root; about 200 instructions on the Cortex-M3, 590 on
+ * the M0, make bench-fx). Returns false (and leaves *a unchanged) for the
+ * zero vector. */
 static inline bool vec3_normalize(vec3_t *a)
 {
 #if FXRT_NUMBER == FXRT_Q16

@@ -8,6 +8,10 @@
 #include "../core/vec3.h"
 #include "check.h"
 
+#ifndef TEST_FX_NAME
+#define TEST_FX_NAME "test_fx" /* test_fx_nohw: the same test on the M0 code paths */
+#endif
+
 static long n_random = 1000000;
 
 static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
@@ -36,7 +40,7 @@ static const fx_t hard[] = {
 
 static double max_err_mul, max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv, max_err_cot,
     max_err_norm, max_err_dot, max_err_cross,
-    max_err_sin, max_err_cos;
+    max_err_sin, max_err_cos, max_err_rsqrt, max_err_recip;
 
 /* Saturate an exact value (in LSB) to the fx_t range. */
 static long double sat(long double v)
@@ -63,6 +67,19 @@ static void check_mul(fx_t a, fx_t b)
     CHECK_SWEEP(e <= 0.5L, "fx_mul(%d, %d) = %d, exact %.3Lf", a, b, fx_mul(a, b), exact);
 }
 
+/* The exact fx_div result by the hardware's 64-bit division (not the code
+ * under test): round half away from zero, then saturate. */
+static fx_t div_exact(fx_t a, fx_t b)
+{
+    if (b == 0)
+        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    int64_t n = (int64_t)a * 65536, q = n / b, r = n % b;
+    int64_t ar = r < 0 ? -r : r, ab = b < 0 ? -(int64_t)b : b;
+    if (2 * ar >= ab)
+        q += (n < 0) != (b < 0) ? -1 : 1;
+    return q > INT32_MAX ? FX_MAX : (q < INT32_MIN ? FX_MIN : (fx_t)q);
+}
+
 static void check_div(fx_t a, fx_t b)
 {
     fx_t q = fx_div(a, b);
@@ -74,6 +91,22 @@ static void check_div(fx_t a, fx_t b)
     long double e = fabsl((long double)q - exact);
     track(&max_err_div, e);
     CHECK_SWEEP(e <= 0.5L, "fx_div(%d, %d) = %d, exact %.3Lf", a, b, q, exact);
+    CHECK_SWEEP(q == div_exact(a, b), "fx_div(%d, %d) = %d, correctly rounded %d", a, b, q, div_exact(a, b));
+}
+
+/* Exact ties: a 2^16 / b = k + 1/2 must round away from zero, to k + 1. */
+static void check_div_ties(long n)
+{
+    for (long i = 0; i < n; i++) {
+        /* b = 2^17 t, a = (2k + 1) t: a 2^16 / b = k + 1/2. */
+        int32_t t = (int32_t)(1 + rng() % 16383);  /* b = t * 2^17 < 2^31 */
+        int32_t kmax = (int32_t)((INT32_MAX / t - 1) / 2);
+        int32_t k = (int32_t)(rng() % (uint64_t)(kmax + 1));
+        fx_t a = (2 * k + 1) * t, b = t * (1 << 17);
+        int sa = (rng() & 1) ? -1 : 1, sb = (rng() & 1) ? -1 : 1;
+        fx_t q = fx_div(sa * a, sb * b);
+        CHECK_SWEEP(q == sa * sb * (k + 1), "fx_div tie (%d, %d) = %d, want %d", sa * a, sb * b, q, sa * sb * (k + 1));
+    }
 }
 
 static void check_sqrt(fx_t a)
@@ -85,13 +118,50 @@ static void check_sqrt(fx_t a)
     CHECK_SWEEP(e <= 0.5L, "fx_sqrt(%d) = %d, exact %.3Lf", a, s, exact);
 }
 
+#define RSQRT_BOUND 0.502L /* fx.h; tests/fx_exhaustive.c checks every input */
+static void check_rsqrt(fx_t a)
+{
+    fx_t r = fx_rsqrt(a);
+    if (a <= 0) {
+        CHECK_SWEEP(r == FX_MAX, "fx_rsqrt(%d) = %d, want FX_MAX", a, r);
+        return;
+    }
+    long double exact = 16777216.0L / sqrtl((long double)a);
+    long double e = fabsl((long double)r - exact);
+    track(&max_err_rsqrt, e);
+    CHECK_SWEEP(e <= RSQRT_BOUND, "fx_rsqrt(%d) = %d, exact %.4Lf", a, r, exact);
+}
+
+static void check_recip(fx_t a)
+{
+    fx_t r = fx_recip(a);
+    track(&max_err_recip, fabsl((long double)r - (a ? sat(4294967296.0L / (long double)a) : (long double)FX_MAX)));
+    CHECK_SWEEP(r == div_exact(FX_ONE, a), "fx_recip(%d) = %d, want %d", a, r, div_exact(FX_ONE, a));
+}
+
+/* round(sqrt(w)) exactly (no ties for an integer w): long double, then
+ * integer squares in unsigned __int128. */
+__extension__ typedef unsigned __int128 u128_t;
+static uint64_t oracle_wsqrt(uint64_t w)
+{
+    u128_t n = w, r = (u128_t)sqrtl((long double)w);
+    while (r * r > n)
+        r--;
+    while ((r + 1) * (r + 1) <= n)
+        r++;
+    return (uint64_t)(n > r * r + r ? r + 1 : r);
+}
+
 static void check_wsqrt(fxw_t w)
 {
     fx_t s = fxw_sqrt(w);
     long double exact = w <= 0 ? 0 : sat(sqrtl((long double)w));
     long double e = fabsl((long double)s - exact);
     track(&max_err_wsqrt, e);
+    uint64_t want = w <= 0 ? 0 : oracle_wsqrt((uint64_t)w);
     CHECK_SWEEP(e <= 0.5L, "fxw_sqrt(%lld) = %d, exact %.3Lf", (long long)w, s, exact);
+    CHECK_SWEEP(s == (want > INT32_MAX ? FX_MAX : (fx_t)want), "fxw_sqrt(%lld) = %d, want %llu", (long long)w, s,
+                (unsigned long long)want);
 }
 
 static void check_wdiv(fxw_t a, fxw_t b)
@@ -148,6 +218,7 @@ static void check_sincos(fx_t deg)
     }
 }
 
+#define NORM_BOUND 0.504L /* fx.h */
 static void check_norm(fx_t x, fx_t y, fx_t z)
 {
     fx_t v[3] = {x, y, z};
@@ -161,7 +232,7 @@ static void check_norm(fx_t x, fx_t y, fx_t z)
     for (int i = 0; i < 3; i++) {
         long double e = fabsl((long double)v[i] - in[i] / len * 65536.0L);
         track(&max_err_norm, e);
-        CHECK_SWEEP(ok && e <= 1.0L, "fx_normalize3(%d,%d,%d)[%d] = %d, exact %.3Lf", x, y, z, i, v[i],
+        CHECK_SWEEP(ok && e <= NORM_BOUND, "fx_normalize3(%d,%d,%d)[%d] = %d, exact %.3Lf", x, y, z, i, v[i],
                   in[i] / len * 65536.0L);
     }
 }
@@ -221,6 +292,19 @@ static void check_fixed_cases(void)
     CHECK(fx_sqrt(F16(4)) == F16(2));
     CHECK(fx_sqrt(F16(2)) == 92682);
     CHECK(fx_div(FX_ONE, F16(3)) == 21845);
+    /* fx_div ties go away from zero: 1 LSB / 2 = 0.5 LSB -> 1, -0.5 -> -1. */
+    CHECK(fx_div(1, F16(2)) == 1);
+    CHECK(fx_div(-1, F16(2)) == -1);
+    CHECK(fx_div(3, F16(-2)) == -2);
+    CHECK(fx_recip(F16(-2)) == -FX_HALF);
+    CHECK(fx_div(FX_MIN, FX_ONE) == FX_MIN);
+    CHECK(fx_div(FX_MIN, -FX_ONE) == FX_MAX);
+    CHECK(fx_div(FX_MAX, FX_MAX) == FX_ONE);
+    CHECK(fx_div(FX_MIN, FX_MIN) == FX_ONE);
+    CHECK(fx_div(1, FX_MIN) == 0);
+    CHECK(fx_div(-FX_HALF, FX_MIN) == 1);
+    CHECK(fx_div(16384, FX_MIN) == -1); /* -0.5 LSB, away from zero */
+    CHECK(fx_div(16383, FX_MIN) == 0);
     CHECK(fx_mul(F16(-0.5), 1) == 0); /* -0.5 LSB ties toward +inf */
     CHECK(fx_cot_deg(F16(45)) == FX_ONE);
     CHECK(fx_cot_deg(0) == FX_MAX);
@@ -229,7 +313,7 @@ static void check_fixed_cases(void)
     CHECK(fx_isqrt64(0) == 0);
     /* sin/cos exact at multiples of 90 degrees, over the whole range. */
     for (int32_t k = -364; k <= 364; k++) {
-        fx_t d = (fx_t)(k * 90) << 16;
+        fx_t d = (fx_t)(k * 90 * 65536);
         int32_t q = ((k % 4) + 4) % 4;
         CHECK_MSG(fx_sin_deg(d) == (q == 1 ? FX_ONE : q == 3 ? -FX_ONE : 0), "sin(%d*90)", k);
         CHECK_MSG(fx_cos_deg(d) == (q == 0 ? FX_ONE : q == 2 ? -FX_ONE : 0), "cos(%d*90)", k);
@@ -254,6 +338,8 @@ int main(int argc, char **argv)
     check_fixed_cases();
     for (int i = 0; i < N_HARD; i++) {
         check_sqrt(hard[i]);
+        check_rsqrt(hard[i]);
+        check_recip(hard[i]);
         check_wsqrt((fxw_t)hard[i] * ((fxw_t)1 << 24));
         for (int j = 0; j < N_HARD; j++) {
             check_mul(hard[i], hard[j]);
@@ -278,10 +364,23 @@ int main(int argc, char **argv)
         check_sincos(sc_hard[i]);
     for (int32_t k = -8; k <= 8; k++)
         for (int32_t e = -3; e <= 3; e++)
-            check_sincos((fx_t)((k * 90) << 16) + e);
+            check_sincos((fx_t)(k * 90 * 65536) + e);
     for (fx_t d = 0; d <= F16(360); d += 256)
         check_sincos(d);
 
+    check_div_ties(n_random / 10 + 1000);
+    /* fxw_sqrt next to exact squares and rounding boundaries, all sizes. */
+    for (long i = 0; i < n_random / 10 + 1000; i++) {
+        uint64_t r = (rng() >> 32) >> (rng() % 32);
+        uint64_t base[2] = {r * r, r * r + r};
+        for (int t = 0; t < 2; t++)
+            for (int dd = -1; dd <= 1; dd++)
+                if (base[t] + (uint64_t)dd <= (uint64_t)INT64_MAX)
+                    check_wsqrt((fxw_t)(base[t] + (uint64_t)dd));
+    }
+    check_wsqrt(INT64_MAX);
+    check_wsqrt(INT64_MAX - 1);
+    check_wsqrt((fxw_t)1 << 62);
     for (long i = 0; i < n_random; i++) {
         fx_t a = rand_fx(), b = rand_fx();
         check_mul(a, b);
@@ -293,6 +392,8 @@ int main(int argc, char **argv)
         check_norm(rand_fx(), rand_fx(), rand_fx());
         check_vec();
         check_sincos(rand_fx());
+        check_rsqrt(a);
+        check_recip(b);
         if (i % 16 == 0)
             check_cot((fx_t)(rng() % (uint64_t)F16(90)));
     }
@@ -301,7 +402,16 @@ int main(int argc, char **argv)
            max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv);
     printf("  fx_normalize3 %.3f  vec3_dot %.3f  vec3_cross %.3f  fx_cot_deg %.3f of its bound\n",
            max_err_norm, max_err_dot, max_err_cross, max_err_cot);
-    printf("  fx_sin_deg %.4f  fx_cos_deg %.4f\n", max_err_sin, max_err_cos);
+    printf("  fx_sin_deg %.4f  fx_cos_deg %.4f  fx_rsqrt %.4f  fx_recip %.3f\n", max_err_sin, max_err_cos,
+           max_err_rsqrt, max_err_recip);
+    /* Machine-readable worst errors for make bench-fx (firmware/benchfx.sh). */
+    printf("ERR fx_mul %.3f\nERR fx_div %.3f\nERR fx_recip %.3f\nERR fx_sqrt %.3f\nERR fxw_sqrt %.3f\n", max_err_mul,
+           max_err_div, max_err_recip, max_err_sqrt, max_err_wsqrt);
+    printf("ERR fxw_div %.3f\nERR fx_rsqrt %.4f\nERR fx_sin_deg %.4f\nERR fx_cos_deg %.4f\n", max_err_wdiv,
+           max_err_rsqrt, max_err_sin, max_err_cos);
+    printf("ERR fx_cot_deg %.3f_of_(1+1e-7|x|)\nERR vec3_dot %.3f\nERR vec3_cross %.3f\nERR vec3_normalize %.3f\n",
+           max_err_cot, max_err_dot, max_err_cross, max_err_norm);
+    printf("ERR vec3_len %.3f\n", max_err_wsqrt); /* the Q32.32 root of an exact dot product */
     /* One check per function on the sweep's worst case (the sweep itself
      * has already counted every single failure). */
     CHECK(max_err_mul <= 0.5);
@@ -309,11 +419,13 @@ int main(int argc, char **argv)
     CHECK(max_err_sqrt <= 0.5);
     CHECK(max_err_wsqrt <= 0.5);
     CHECK(max_err_wdiv <= 1.0);
-    CHECK(max_err_norm <= 1.0);
+    CHECK(max_err_norm <= NORM_BOUND);
     CHECK(max_err_dot <= 0.5);
     CHECK(max_err_cross <= 0.5);
     CHECK(max_err_cot <= 1.0);
     CHECK(max_err_sin <= SIN_BOUND);
+    CHECK(max_err_rsqrt <= RSQRT_BOUND);
+    CHECK(max_err_recip <= 0.5);
     CHECK(max_err_cos <= SIN_BOUND);
-    return check_report("test_fx");
+    return check_report(TEST_FX_NAME);
 }

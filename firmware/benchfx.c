@@ -1,0 +1,261 @@
+/* benchfx: instructions per call of every Q16.16 scalar and vector function,
+ * on the board, in QEMU with -icount (see counter.c).
+ *
+ * Every function runs over the same BENCH_N pseudo-random inputs on every
+ * board (xorshift32 with a fixed seed, generated before timing). Each is
+ * called through a function pointer of its signature, and the same loop
+ * around an empty function of that signature is timed too: the difference,
+ * divided by BENCH_N, is the cost of one call from the caller's side
+ * (call, body, return). Functions that are inline in the headers (fx_mul,
+ * vec3_dot, ...) get an out-of-line wrapper here, so they count as one
+ * out-of-line call. Output, one line per function:
+ *   bench fn=NAME calls=N ticks=T empty_ticks=E
+ * firmware/benchfx.sh turns ticks into instructions.
+ *
+ * old_fx_div and old_fx_sqrt are the implementations before issue 9
+ * (64-bit division by libgcc; a digit-by-digit 64-bit root), kept here only
+ * for the before/after comparison. */
+#include "vec3.h"
+
+#include "board.h"
+#include "semihost.h"
+
+#define BENCH_N 128 /* inputs fit the micro:bit's 16 KB RAM */
+
+static fx_t in_a[BENCH_N], in_b[BENCH_N], in_pos[BENCH_N], in_deg[BENCH_N], in_cot[BENCH_N];
+static fxw_t in_wa[BENCH_N], in_wb[BENCH_N], in_wpos[BENCH_N];
+static vec3_t in_va[BENCH_N], in_vb[BENCH_N];
+static volatile uint32_t sink;
+
+static uint32_t rng_state = 0x2545F491u;
+static uint32_t rng(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 17;
+    rng_state ^= rng_state << 5;
+    return rng_state;
+}
+
+/* Half uniform bit patterns, half log-uniform magnitudes with random sign. */
+static fx_t rand_fx(void)
+{
+    uint32_t r = rng();
+    if (r & 1)
+        return (fx_t)rng();
+    int bits = (int)((r >> 1) % 32);
+    uint32_t m = bits ? rng() >> (32 - bits) : 0;
+    m &= 0x7fffffffu;
+    return (r & 2) ? -(fx_t)m : (fx_t)m;
+}
+static fxw_t rand_w(void)
+{
+    uint64_t v = ((uint64_t)rng() << 32 | rng()) >> 1;
+    return (fxw_t)(v >> (rng() % 63));
+}
+
+static void make_inputs(void)
+{
+    for (int i = 0; i < BENCH_N; i++) {
+        in_a[i] = rand_fx();
+        in_b[i] = rand_fx();
+        fx_t p = rand_fx();
+        in_pos[i] = p < 0 ? (p == FX_MIN ? FX_MAX : -p) : p;
+        in_deg[i] = rand_fx();
+        in_cot[i] = (fx_t)(rng() % (uint32_t)F16(90)) + 1; /* cot's domain (0, 90] */
+        in_wa[i] = (rng() & 1) ? rand_w() : -rand_w();
+        in_wb[i] = rand_w();
+        in_wpos[i] = rand_w();
+        /* Vector components within the renderer's domain (|c| < 2^30). */
+        in_va[i] = vec3_make(rand_fx() / 2, rand_fx() / 2, rand_fx() / 2);
+        in_vb[i] = vec3_make(rand_fx() / 2, rand_fx() / 2, rand_fx() / 2);
+    }
+}
+
+/* ---- the old implementations (before issue 9), for comparison -------- */
+static uint64_t old_udiv_round(uint64_t num, uint64_t den)
+{
+    uint64_t q = num / den;
+    uint64_t r = num - q * den;
+    return q + (r >= den - r ? 1u : 0u);
+}
+static fx_t old_signed_sat(uint64_t mag, bool negative)
+{
+    if (negative)
+        return mag >= (uint64_t)1 << 31 ? FX_MIN : -(fx_t)mag;
+    return mag > (uint64_t)INT32_MAX ? FX_MAX : (fx_t)mag;
+}
+static uint64_t old_uabs64(int64_t v)
+{
+    return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+}
+static fx_t old_fx_div(fx_t a, fx_t b)
+{
+    if (b == 0)
+        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    bool neg = (a < 0) != (b < 0);
+    uint64_t num = old_uabs64(a) << FX_FRAC_BITS;
+    return old_signed_sat(old_udiv_round(num, old_uabs64(b)), neg);
+}
+static fx_t old_fx_sqrt(fx_t a)
+{
+    if (a <= 0)
+        return 0;
+    uint64_t n = (uint64_t)a << 16, rem = 0, root = 0;
+    for (int i = 0; i < 32; i++) {
+        rem = (rem << 2) | (n >> 62);
+        n <<= 2;
+        root <<= 1;
+        uint64_t trial = (root << 1) | 1u;
+        if (rem >= trial) {
+            rem -= trial;
+            root |= 1u;
+        }
+    }
+    return (fx_t)(n > root * root + root ? root + 1 : root);
+}
+
+/* ---- out-of-line wrappers and empty functions of each signature ------- */
+#define NOINLINE __attribute__((noinline))
+static NOINLINE fx_t w_old_fx_div(fx_t a, fx_t b) { return old_fx_div(a, b); }
+static NOINLINE fx_t w_old_fx_sqrt(fx_t a) { return old_fx_sqrt(a); }
+static NOINLINE fx_t w_fx_mul(fx_t a, fx_t b) { return fx_mul(a, b); }
+static NOINLINE fx_t empty_1(fx_t a)
+{
+    __asm__ volatile("" : "+r"(a));
+    return a;
+}
+static NOINLINE fx_t empty_2(fx_t a, fx_t b)
+{
+    __asm__ volatile("" : "+r"(a), "+r"(b));
+    return a;
+}
+static NOINLINE fx_t empty_w1(fxw_t a)
+{
+    __asm__ volatile("" : "+r"(a));
+    return (fx_t)a;
+}
+static NOINLINE fx_t empty_w2(fxw_t a, fxw_t b)
+{
+    __asm__ volatile("" : "+r"(a), "+r"(b));
+    return (fx_t)a;
+}
+static NOINLINE void empty_v(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    __asm__ volatile("" : : "r"(out), "r"(a), "r"(b) : "memory");
+}
+static NOINLINE void v_dot(vec3_t *out, const vec3_t *a, const vec3_t *b) { out->x = vec3_dot(*a, *b); }
+static NOINLINE void v_cross(vec3_t *out, const vec3_t *a, const vec3_t *b) { *out = vec3_cross(*a, *b); }
+static NOINLINE void v_normalize(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    (void)b;
+    *out = *a;
+    vec3_normalize(out);
+}
+static NOINLINE void v_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    (void)b;
+    out->x = vec3_len(*a);
+}
+
+typedef fx_t (*fn1_t)(fx_t);
+typedef fx_t (*fn2_t)(fx_t, fx_t);
+typedef fx_t (*fnw1_t)(fxw_t);
+typedef fx_t (*fnw2_t)(fxw_t, fxw_t);
+typedef void (*fnv_t)(vec3_t *, const vec3_t *, const vec3_t *);
+
+/* The timed loops; noinline so every loop is the same code for every
+ * function of a signature (only the pointer differs). */
+static NOINLINE uint64_t time_1(fn1_t f, const fx_t *x)
+{
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < BENCH_N; i++)
+        acc += (uint32_t)f(x[i]);
+    uint64_t t = counter_ticks() - t0;
+    sink = acc;
+    return t;
+}
+static NOINLINE uint64_t time_2(fn2_t f, const fx_t *x, const fx_t *y)
+{
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < BENCH_N; i++)
+        acc += (uint32_t)f(x[i], y[i]);
+    uint64_t t = counter_ticks() - t0;
+    sink = acc;
+    return t;
+}
+static NOINLINE uint64_t time_w1(fnw1_t f, const fxw_t *x)
+{
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < BENCH_N; i++)
+        acc += (uint32_t)f(x[i]);
+    uint64_t t = counter_ticks() - t0;
+    sink = acc;
+    return t;
+}
+static NOINLINE uint64_t time_w2(fnw2_t f, const fxw_t *x, const fxw_t *y)
+{
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < BENCH_N; i++)
+        acc += (uint32_t)f(x[i], y[i]);
+    uint64_t t = counter_ticks() - t0;
+    sink = acc;
+    return t;
+}
+static NOINLINE uint64_t time_v(fnv_t f, const vec3_t *x, const vec3_t *y)
+{
+    vec3_t out = vec3_make(0, 0, 0);
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < BENCH_N; i++) {
+        f(&out, &x[i], &y[i]);
+        acc += (uint32_t)out.x;
+    }
+    uint64_t t = counter_ticks() - t0;
+    sink = acc;
+    return t;
+}
+
+static void report(const char *name, uint64_t ticks, uint64_t empty)
+{
+    semihost_puts("bench fn=");
+    semihost_puts(name);
+    semihost_puts(" calls=");
+    semihost_put_u64(BENCH_N);
+    semihost_puts(" ticks=");
+    semihost_put_u64(ticks);
+    semihost_puts(" empty_ticks=");
+    semihost_put_u64(empty);
+    semihost_puts("\n");
+}
+
+int main(void);
+int main(void)
+{
+    make_inputs();
+    counter_start();
+    uint64_t e1 = time_1(empty_1, in_pos), e2 = time_2(empty_2, in_a, in_b);
+    uint64_t ew1 = time_w1(empty_w1, in_wpos), ew2 = time_w2(empty_w2, in_wa, in_wb);
+    uint64_t ev = time_v(empty_v, in_va, in_vb);
+    report("fx_mul", time_2(w_fx_mul, in_a, in_b), e2);
+    report("fx_div", time_2(fx_div, in_a, in_b), e2);
+    report("fx_recip", time_1(fx_recip, in_a), e1);
+    report("fx_sqrt", time_1(fx_sqrt, in_pos), e1);
+    report("fxw_sqrt", time_w1(fxw_sqrt, in_wpos), ew1);
+    report("fxw_div", time_w2(fxw_div, in_wa, in_wb), ew2);
+    report("fx_rsqrt", time_1(fx_rsqrt, in_pos), e1);
+    report("fx_sin_deg", time_1(fx_sin_deg, in_deg), e1);
+    report("fx_cos_deg", time_1(fx_cos_deg, in_deg), e1);
+    report("fx_cot_deg", time_1(fx_cot_deg, in_cot), e1);
+    report("vec3_dot", time_v(v_dot, in_va, in_vb), ev);
+    report("vec3_cross", time_v(v_cross, in_va, in_vb), ev);
+    report("vec3_len", time_v(v_len, in_va, in_vb), ev);
+    report("vec3_normalize", time_v(v_normalize, in_va, in_vb), ev);
+    report("old_fx_div", time_2(w_old_fx_div, in_a, in_b), e2);
+    report("old_fx_sqrt", time_1(w_old_fx_sqrt, in_pos), e1);
+    semihost_puts("ticks=0 done\n");
+    return 0;
+}

@@ -1,0 +1,23 @@
+# Fixed-point maths benchmark, included by the top Makefile.
+#   make bench-fx [BENCHFX_BOARDS="mps2-an385 microbit"] [BENCHFX_UPDATE_DOCS=1]
+# Builds firmware/benchfx.c for every board, runs it in QEMU (-icount) and
+# prints a Markdown table: instructions per call, text bytes, worst error
+# (from build/tests/test_fx). Writes build/benchfx/benchfx.md; with
+# BENCHFX_UPDATE_DOCS=1 also the table in docs/BENCHMARKS.md.
+# (Included before firmware.mk: board variables are only used in recipes.)
+BENCHFX_BOARDS ?= $(BOARDS)
+BENCHFX_SRC := firmware/benchfx.c core/fx.c firmware/startup.c firmware/semihost.c firmware/counter.c
+
+$(BUILD)/benchfx/%/benchfx.elf: $(BENCHFX_SRC) core/fx.h core/vec3.h core/num.h core/fxrt_config.h $(wildcard linker/*.ld)
+	@mkdir -p $(@D)
+	@echo "  ARMCC   $@"
+	$(Q)$(ARM_CC) $(WARN) -O2 -g $(CPU_$*) -ffreestanding -ffunction-sections -fdata-sections \
+	  -DFXRT_NUMBER=1 -Icore -Ifirmware $(BENCHFX_SRC) -nostartfiles --specs=nano.specs --specs=nosys.specs \
+	  -Wl,--gc-sections -Wl,-Map=$(@D)/benchfx.map -Llinker -Tlinker/$*.ld -o $@
+
+bench-fx: $(BUILD)/tests/test_fx
+	$(Q)$(MAKE) --no-print-directory $(foreach b,$(BENCHFX_BOARDS),$(BUILD)/benchfx/$(b)/benchfx.elf)
+	$(Q)BUILD=$(BUILD) BENCHFX_UPDATE_DOCS=$(BENCHFX_UPDATE_DOCS) BENCHFX_TICKS='$(foreach b,$(BENCHFX_BOARDS),$(b):$(QEMU_M_$(b)):$(TICK_NS_$(b)))' \
+	  firmware/benchfx.sh
+
+.PHONY: bench-fx

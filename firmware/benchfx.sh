@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# Run build/benchfx/BOARD/benchfx.elf on every board in QEMU (-icount shift=5)
+# and print the fixed-point maths table (see firmware/benchfx.c).
+# Environment: BUILD, BENCHFX_TICKS ("board:qemu-machine:tick-ns ...").
+# instructions per call = (ticks - empty_ticks) * tick_ns / 32 / calls.
+set -u
+BUILD=${BUILD:-build}
+out=$BUILD/benchfx
+mkdir -p "$out"
+shift_=5
+raw=$out/raw.txt
+: >"$raw"
+for spec in $BENCHFX_TICKS; do
+    IFS=: read -r board machine tick_ns <<<"$spec"
+    elf=$out/$board/benchfx.elf
+    log=$out/$board/run.log
+    if ! timeout 300 qemu-system-arm -M "$machine" -nographic -monitor none -serial none \
+        -semihosting-config enable=on,target=native -icount shift=$shift_ -kernel "$elf" </dev/null >"$log" 2>&1; then
+        echo "bench-fx: $board: QEMU failed" >&2
+        sed 's/^/  | /' "$log" >&2
+        exit 1
+    fi
+    grep -q 'done' "$log" || { echo "bench-fx: $board: no report" >&2; exit 1; }
+    # Text bytes per function: the sizes of the symbols that implement it
+    # (the function, its out-of-line static helpers including .part/.constprop
+    # clones, its tables), from nm; the out-of-line wrapper for the inline
+    # ones. Shared tables count for every function that uses them. libgcc
+    # helpers reached from the group are listed by name, not counted.
+    nm_out=$out/$board/nm.txt
+    dis=$out/$board/calls.txt
+    arm-none-eabi-nm -S "$elf" | awk 'NF == 4 { print $4, $2 }' >"$nm_out"
+    # "caller callee" for every bl in the program.
+    arm-none-eabi-objdump -d --no-show-raw-insn "$elf" |
+        awk '/^[0-9a-f]+ <.*>:$/ { f = $2; gsub(/[<>:]/, "", f) } /\tbl\t/ { c = $NF; gsub(/[<>]/, "", c); print f, c }' |
+        sort -u >"$dis"
+    sed -nE 's/^bench fn=([a-z0-9_]+) calls=([0-9]+) ticks=([0-9]+) empty_ticks=([0-9]+).*/\1 \2 \3 \4/p' "$log" |
+        while read -r fn calls ticks empty; do
+            case $fn in
+            fx_mul) group="w_fx_mul" ;;
+            fx_div) group="fx_div fx_recip_tab" ;;
+            fx_recip) group="fx_recip fx_div fx_recip_tab" ;;
+            fx_sqrt) group="fx_sqrt fx_rsqrt_tab" ;;
+            fxw_sqrt) group="fxw_sqrt fx_rsqrt_tab" ;;
+            fxw_div) group="fxw_div fx_udiv_round" ;;
+            fx_rsqrt) group="fx_rsqrt fx_rsqrt_q46 fx_rsqrt_tab" ;;
+            fx_sin_deg) group="fx_sin_deg fx_sin_quarter fx_sincos45 fx_mul_q30" ;;
+            fx_cos_deg) group="fx_cos_deg fx_sin_quarter fx_sincos45 fx_mul_q30" ;;
+            fx_cot_deg) group="fx_cot_deg fx_cos_sinc_q30 fx_udiv_round" ;;
+            vec3_dot) group="v_dot" ;;
+            vec3_cross) group="v_cross" ;;
+            vec3_len) group="v_len fxw_sqrt fx_rsqrt_tab" ;;
+            vec3_normalize) group="v_normalize fx_normalize3 fx_rsqrt_q46 fx_rsqrt_tab" ;;
+            old_fx_div) group="w_old_fx_div" ;;
+            old_fx_sqrt) group="w_old_fx_sqrt" ;;
+            *) group=$fn ;;
+            esac
+            size=$(awk -v g="$group" 'BEGIN { n = split(g, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
+                { base = $1; sub(/\..*/, "", base) } (base in want) && !seen[$1]++ { s += strtonum_hex($2) }
+                function strtonum_hex(h,   i, v, c) { v = 0; h = tolower(h)
+                    for (i = 1; i <= length(h); i++) { c = index("0123456789abcdef", substr(h, i, 1)) - 1; v = v * 16 + c }
+                    return v }
+                END { print s + 0 }' "$nm_out")
+            libgcc=$(awk -v g="$group" 'BEGIN { n = split(g, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
+                { base = $1; sub(/\..*/, "", base) } (base in want) && $2 ~ /^__/ { print $2 }' "$dis" | sort -u | paste -sd, -)
+            instr=$(awk -v t="$ticks" -v e="$empty" -v ns="$tick_ns" -v s=$shift_ -v c="$calls" \
+                'BEGIN { printf "%.1f", (t - e) * ns / 2^s / c }')
+            echo "$fn $board $instr $size ${libgcc:--}" >>"$raw"
+        done
+done
+# Worst errors from the host test (FX_TEST_RANDOM random inputs per function).
+errs=$("$BUILD/tests/test_fx" 2>&1 | sed -nE 's/^ERR ([a-z0-9_]+) ([0-9.]+).*/\1 \2/p')
+{
+    echo "| function | board | instructions per call | text bytes | libgcc calls | worst error (LSB, host test) |"
+    echo "|---|---|---:|---:|---|---:|"
+    awk -v errs="$errs" 'BEGIN { n = split(errs, e, "\n"); for (i = 1; i <= n; i++) { split(e[i], f, " "); err[f[1]] = f[2] } }
+        { printf "| %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, ($1 in err) ? err[$1] : (($1 ~ /^old_/) ? "0.5 (before)" : "-") }' "$raw"
+} >"$out/benchfx-long.md"
+# The same numbers with one row per function (instructions per call on each
+# board, text bytes on the M3 and the M0).
+boards=$(for spec in $BENCHFX_TICKS; do echo "${spec%%:*}"; done | paste -sd' ' -)
+{
+    awk -v boards="$boards" -v errs="$errs" '
+        BEGIN { nb = split(boards, b, " "); n = split(errs, e, "\n")
+                for (i = 1; i <= n; i++) { split(e[i], f, " "); err[f[1]] = f[2] }
+                printf "| function |"; for (i = 1; i <= nb; i++) printf " %s instr. |", b[i]
+                printf " text bytes (%s / %s) | libgcc calls (%s) | worst error, LSB |\n", b[1], b[nb], b[nb]
+                printf "|---|"; for (i = 1; i <= nb; i++) printf "---:|"; printf "---|---|---:|\n" }
+        { if (!($1 in seen)) { seen[$1] = 1; order[++no] = $1 } ins[$1, $2] = $3; sz[$1, $2] = $4; lg[$1, $2] = $5 }
+        END { for (k = 1; k <= no; k++) { fn = order[k]; printf "| %s |", fn
+                for (i = 1; i <= nb; i++) printf " %s |", ins[fn, b[i]]
+                printf " %s / %s | %s | %s |\n", sz[fn, b[1]], sz[fn, b[nb]], lg[fn, b[nb]],
+                    (fn in err) ? err[fn] : ((fn ~ /^old_/) ? "0.5 (before)" : "-") } }' "$raw"
+} >"$out/benchfx.md"
+cat "$out/benchfx.md"
+# BENCHFX_UPDATE_DOCS=1: replace the table between the benchfx markers in
+# docs/BENCHMARKS.md (the rest of the file is left as it is).
+if [ "${BENCHFX_UPDATE_DOCS:-0}" = 1 ]; then
+    doc=docs/BENCHMARKS.md
+    if grep -q '<!-- benchfx:table -->' "$doc"; then
+        awk -v tab="$out/benchfx.md" '
+            /<!-- benchfx:table -->/ { print; while ((getline l < tab) > 0) print l; skip = 1; next }
+            /<!-- \/benchfx:table -->/ { skip = 0 }
+            !skip { print }' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+        echo "bench-fx: updated $doc"
+    else
+        echo "bench-fx: no <!-- benchfx:table --> marker in $doc" >&2
+        exit 1
+    fi
+fi
+echo
+echo "(per-board rows: $out/benchfx-long.md; text bytes are the function's own symbols,"
+echo " static helpers and tables; libgcc helpers are listed, not counted)"

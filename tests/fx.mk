@@ -1,0 +1,48 @@
+# Fixed-point maths: exhaustive and sampled checks, the multiply-only (M0)
+# code paths on the host, and the maths benchmark. Included by the top
+# Makefile.
+#   make test            also runs build/tests/test_fx_nohw (test_fx against
+#                        the Cortex-M0 code paths) and tests/fx_sampled.sh
+#                        (every 4099th input of the exhaustive sweeps)
+#   make fx-exhaustive   fx_sqrt over all 2^31 non-negative inputs, fx_rsqrt
+#                        and sin/cos likewise, on both code paths, FX_JOBS
+#                        processes (default 2)
+#   make bench-fx        see firmware/benchfx.mk
+
+# The M0's paths (no UDIV, no CLZ, no UMULL) built for the host.
+FX_NOHW_FLAGS := -DFX_HAVE_UDIV=0 -DFX_HAVE_CLZ=0 -DFX_HAVE_UMULL=0
+FX_JOBS ?= 2
+
+$(BUILD)/tests/fx-nohw.o: core/fx.c
+	@mkdir -p $(@D)
+	@echo "  CC nohw $<"
+	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -c $< -o $@
+
+$(BUILD)/tests/test_fx_nohw: tests/test_fx.c tests/check.h $(BUILD)/tests/fx-nohw.o
+	@echo "  CC/LD   $@"
+	$(Q)$(CC) $(CFLAGS_H) -DTEST_FX_NAME='"test_fx_nohw"' -Icore -o $@ tests/test_fx.c $(BUILD)/tests/fx-nohw.o -lm
+
+$(BUILD)/tests/fx_exhaustive: tests/fx_exhaustive.c tests/check.h $(BUILD)/host/fx.o
+	@mkdir -p $(@D)
+	@echo "  CC/LD   $@"
+	$(Q)$(CC) $(CFLAGS_H) -Icore -o $@ tests/fx_exhaustive.c $(BUILD)/host/fx.o -lm
+
+$(BUILD)/tests/fx_exhaustive_nohw: tests/fx_exhaustive.c tests/check.h $(BUILD)/tests/fx-nohw.o
+	@echo "  CC/LD   $@"
+	$(Q)$(CC) $(CFLAGS_H) -Icore -o $@ tests/fx_exhaustive.c $(BUILD)/tests/fx-nohw.o -lm
+
+FX_EXH_BIN := $(BUILD)/tests/fx_exhaustive $(BUILD)/tests/fx_exhaustive_nohw
+
+fx-exhaustive: $(FX_EXH_BIN)
+	$(Q)for b in $(FX_EXH_BIN); do \
+	    echo "  EXHAUST $$b --jobs $(FX_JOBS)"; start=$$(date +%s); \
+	    $$b --jobs $(FX_JOBS) || exit 1; \
+	    echo "  ($$(($$(date +%s) - start)) s)"; \
+	done
+
+SUITES_EXTRA += $(BUILD)/tests/test_fx_nohw tests/fx_sampled.sh
+TEST_PREREQ  += $(BUILD)/tests/test_fx_nohw $(FX_EXH_BIN)
+
+.PHONY: fx-exhaustive
+
+include firmware/benchfx.mk
