@@ -98,7 +98,9 @@ fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t 
 {
     if (render_size != sizeof(render_t))
         return FXRT_ERR_CONFIG;
-    return render_setup(r, w, cam) ? FXRT_OK : FXRT_ERR_WIDTH;
+    if (cam->width > FXRT_RENDER_MAX_WIDTH)
+        return FXRT_ERR_WIDTH;
+    return render_setup(r, w, cam) ? FXRT_OK : FXRT_ERR_RENDER;
 }
 
 const char *fxrt_strerror(int32_t err)
@@ -128,6 +130,7 @@ const char *fxrt_strerror(int32_t err)
     case FXRT_ERR_CONFIG:
         return "core and application built with different configurations (FXRT_NUMBER, FXRT_MAX_*, "
                "FXRT_RENDER_MAX_WIDTH, FXRT_PIXEL must match)";
+    case FXRT_ERR_RENDER: return "the renderer cannot set this frame up (render_t capacity)";
     }
     return "unknown error";
 }

@@ -158,7 +158,8 @@ fxrt_err_t fxrt_camera_setup(cam_t *cam, const fxrt_camera_t *c);
  * object. Call it again after moving the camera or changing the world;
  * world and camera must stay alive and unchanged while rows are rendered.
  * Returns FXRT_OK, FXRT_ERR_WIDTH (camera wider than
- * FXRT_RENDER_MAX_WIDTH) or FXRT_ERR_CONFIG. */
+ * FXRT_RENDER_MAX_WIDTH), FXRT_ERR_RENDER (render_setup refused the frame
+ * otherwise) or FXRT_ERR_CONFIG. */
 static inline fxrt_err_t fxrt_render_setup(render_t *r, const world_t *w, const cam_t *cam)
 {
     return fxrt_render_setup_checked(r, w, cam, (uint32_t)sizeof(render_t));

@@ -28,6 +28,7 @@ typedef enum {
     FXRT_ERR_WIDTH = -15,    /* image wider than FXRT_RENDER_MAX_WIDTH */
     FXRT_ERR_KIND = -16,     /* an fxrt_object_t with an unknown kind */
     FXRT_ERR_CONFIG = -17,   /* core and application built with different configurations */
+    FXRT_ERR_RENDER = -18,   /* render_setup refused the frame for another reason (render_t capacity) */
 } fxrt_err_t;
 
 /* The host links all three number types (FXRT_MULTI, see fxrt_names.h):

@@ -170,6 +170,10 @@ static void test_render_and_config(void)
     CHECK(world_add_sphere(&world, V(0, 0, -3), N(1), C(0.7, 0.9, 0.3)) == 0);
     CHECK(fxrt_camera_perspective(&cam, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(45), 8, 8) == FXRT_OK);
     CHECK(fxrt_render_setup(&rs, &world, &cam) == FXRT_OK);
+    cam_t wide = cam;
+    wide.width = FXRT_RENDER_MAX_WIDTH + 1;
+    CHECK(fxrt_render_setup(&rs, &world, &wide) == FXRT_ERR_WIDTH);
+    CHECK(fxrt_render_setup(&rs, &world, &cam) == FXRT_OK);
     uint8_t row[FXRT_ROW_BYTES(8)];
     CHECK(sizeof row == 3 * 8);
     fxrt_render_row(&rs, 4, row);
@@ -195,10 +199,10 @@ static void test_render_and_config(void)
 static void test_strerror(void)
 {
     /* Every code has its own text; unknown codes say so. */
-    for (int a = -1; a >= FXRT_ERR_CONFIG; a--) {
+    for (int a = -1; a >= FXRT_ERR_RENDER; a--) {
         const char *s = fxrt_strerror(a);
         CHECK_MSG(s && *s && strcmp(s, "unknown error") != 0, "code %d", a);
-        for (int b = a - 1; b >= FXRT_ERR_CONFIG; b--)
+        for (int b = a - 1; b >= FXRT_ERR_RENDER; b--)
             CHECK_MSG(strcmp(s, fxrt_strerror(b)) != 0, "codes %d and %d share a text", a, b);
     }
     CHECK(strcmp(fxrt_strerror(-1000), "unknown error") == 0);
