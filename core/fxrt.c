@@ -41,8 +41,9 @@ static fxrt_err_t fxrt_cam_err(cam_err_t e)
     case CAM_ERR_NARROW: return FXRT_ERR_NARROW;
     case CAM_ERR_SCALE: return FXRT_ERR_SCALE;
     case CAM_ERR_EXTENT: return FXRT_ERR_EXTENT;
+    default: break; /* codes cam.h adds later */
     }
-    return FXRT_ERR_CAMERA;
+    return (fxrt_err_t)(FXRT_ERR_CAM_BASE + (int)e);
 }
 
 /* What both camera kinds check before cam_setup: the image size, and eye,
@@ -107,6 +108,8 @@ const char *fxrt_strerror(int32_t err)
 {
     if (err >= 0)
         return "ok";
+    if (err < FXRT_ERR_CAM_BASE && err > FXRT_ERR_CAM_BASE - 100)
+        return cam_strerror((cam_err_t)(err - FXRT_ERR_CAM_BASE));
     switch ((fxrt_err_t)err) {
     case FXRT_OK: return "ok";
     case FXRT_ERR_FULL: return "no room for another object of this kind (FXRT_MAX_<KIND>; 0 compiles the kind out)";
@@ -124,7 +127,8 @@ const char *fxrt_strerror(int32_t err)
     case FXRT_ERR_NARROW: return cam_strerror(CAM_ERR_NARROW);
     case FXRT_ERR_SCALE: return "orthographic scale must be in (0, FXRT_RADIUS_LIMIT]";
     case FXRT_ERR_EXTENT: return cam_strerror(CAM_ERR_EXTENT);
-    case FXRT_ERR_CAMERA: return "camera cannot be set up";
+    case FXRT_ERR_CAMERA: return "unknown camera kind";
+    case FXRT_ERR_CAM_BASE: break;
     case FXRT_ERR_WIDTH: return "image wider than FXRT_RENDER_MAX_WIDTH";
     case FXRT_ERR_KIND: return "unknown object kind";
     case FXRT_ERR_CONFIG:

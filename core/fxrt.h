@@ -130,7 +130,9 @@ int32_t fxrt_add(world_t *w, const fxrt_object_t *o);
  * vertical opening angle in degrees, in (0, 180). eye within
  * +-FXRT_COORD_LIMIT, gaze and up nonzero, not parallel. Returns FXRT_OK or
  * FXRT_ERR_SIZE, _COORD, _DIRECTION, _UP, _FOV, _NARROW (height *
- * cot(fov/2) > 32767: the rays would not fit Q16.16), _TINY. */
+ * cot(fov/2) > 32767: the rays would not fit Q16.16), _TINY; a camera
+ * error cam.h has no FXRT_ERR_ name for comes back as FXRT_ERR_CAM_BASE +
+ * its cam_err_t (fxrt_strerror gives cam_strerror's text). */
 fxrt_err_t fxrt_camera_perspective(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t up, num_t fov_deg,
                                    int32_t width, int32_t height);
 

@@ -24,11 +24,15 @@ typedef enum {
     FXRT_ERR_NARROW = -11,   /* height * cot(fov/2) > 32767: rays do not fit Q16.16 */
     FXRT_ERR_SCALE = -12,    /* orthographic scale outside (0, FXRT_RADIUS_LIMIT] */
     FXRT_ERR_EXTENT = -13,   /* orthographic ray origins would leave +-FXRT_COORD_LIMIT */
-    FXRT_ERR_CAMERA = -14,   /* another camera error (cam_setup) */
+    FXRT_ERR_CAMERA = -14,   /* a camera description of unknown kind */
     FXRT_ERR_WIDTH = -15,    /* image wider than FXRT_RENDER_MAX_WIDTH */
     FXRT_ERR_KIND = -16,     /* an fxrt_object_t with an unknown kind */
     FXRT_ERR_CONFIG = -17,   /* core and application built with different configurations */
     FXRT_ERR_RENDER = -18,   /* render_setup refused the frame for another reason (render_t capacity) */
+    /* Camera errors without a name above (cam_setup codes added later)
+     * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
+     * fxrt_strerror still tell them apart. */
+    FXRT_ERR_CAM_BASE = -100,
 } fxrt_err_t;
 
 /* The host links all three number types (FXRT_MULTI, see fxrt_names.h):

@@ -9,7 +9,8 @@
 # own object counts; rows are 64 pixels wide.
 EXAMPLE_CFG := -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=2 -DFXRT_MAX_TRIANGLES=1 \
                -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64
-EXAMPLE_CORE := fx num color cam geom world render fxrt
+# The core's sources as the Makefile lists them (without the optional ray caster).
+EXAMPLE_CORE = fx $(filter-out raycast,$(CORE_NUM))
 EX_HOST := $(BUILD)/examples/host
 EX_MB   := $(BUILD)/examples/microbit
 

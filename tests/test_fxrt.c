@@ -206,6 +206,8 @@ static void test_strerror(void)
             CHECK_MSG(strcmp(s, fxrt_strerror(b)) != 0, "codes %d and %d share a text", a, b);
     }
     CHECK(strcmp(fxrt_strerror(-1000), "unknown error") == 0);
+    /* Camera codes beyond the named ones keep cam_setup's text. */
+    CHECK(strcmp(fxrt_strerror(FXRT_ERR_CAM_BASE + CAM_ERR_UP), cam_strerror(CAM_ERR_UP)) == 0);
     CHECK(strcmp(fxrt_strerror(7), "ok") == 0);
 }
 
