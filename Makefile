@@ -20,7 +20,7 @@ LDLIBS_H := -lpng -lm
 NUMBERS := q16 float double
 num_id   = $(if $(filter q16,$1),1,$(if $(filter float,$1),2,3))
 
-CORE_NUM := num color cam geom world render raycast
+CORE_NUM := num color cam geom world render raycast fxrt
 HOST_SRC := main scene image compare engine_select args
 
 # --- host tool -----------------------------------------------------------
@@ -108,6 +108,7 @@ TEST_PREREQ  :=
 -include tests/oracle.mk
 -include tests/fit.mk
 -include tests/fx.mk
+-include tests/examples.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)

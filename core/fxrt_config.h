@@ -69,6 +69,22 @@
 #define FXRT_MAX_DIM 4096
 #endif
 
+/* Limits the types imply. Pixel columns and rows are stored as int16_t
+ * (the renderer's per-object screen bounds), so an image side must fit
+ * int16. Objects are counted and identified with uint16_t (world_t's
+ * n_<kind>, scene ids, render_t's object indices), and 0xFFFF is the
+ * "no object" sentinel (RAYCAST_MISS, the renderer's RO_NONE), so the
+ * total capacity must stay below it. */
+#if FXRT_MAX_DIM < 1 || FXRT_MAX_DIM > 32767
+#error "FXRT_MAX_DIM must be in 1..32767: pixel indices are int16_t"
+#endif
+#if FXRT_MAX_PLANES < 0 || FXRT_MAX_SPHERES < 0 || FXRT_MAX_TRIANGLES < 0 || FXRT_MAX_BOXES < 0
+#error "FXRT_MAX_<KIND> capacities must be >= 0"
+#endif
+#if FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES > 65535
+#error "total object capacity (FXRT_MAX_PLANES + _SPHERES + _TRIANGLES + _BOXES) must be <= 65535: ids are uint16_t and 0xFFFF is the no-object sentinel"
+#endif
+
 /* Instruction-set features the fixed-point maths (core/fx.c, core/fx.h)
  * chooses its code paths by. The defaults follow the target: the
  * Cortex-M0 (ARMv6-M) has no divide, no CLZ and no 32x32->64 multiply; the

@@ -8,6 +8,96 @@ static inline num_t geom_axis(vec3_t v, int i)
     return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }
 
+/* One value against |v| <= limit; NaN fails the comparison. */
+static fxrt_err_t geom_check_num(num_t v, int32_t limit)
+{
+    if (!(num_abs(v) <= num_from_int(limit)))
+        return FXRT_ERR_COORD;
+#if FXRT_NUMBER != FXRT_Q16
+    if (v != NUM_ZERO && num_abs(v) < NUM(1.0 / 65536.0))
+        return FXRT_ERR_TINY;
+#endif
+    return FXRT_OK;
+}
+
+fxrt_err_t geom_check_point(vec3_t p)
+{
+    fxrt_err_t e = geom_check_num(p.x, FXRT_COORD_LIMIT);
+    if (e == FXRT_OK)
+        e = geom_check_num(p.y, FXRT_COORD_LIMIT);
+    if (e == FXRT_OK)
+        e = geom_check_num(p.z, FXRT_COORD_LIMIT);
+    return e;
+}
+
+/* Only the direction of these matters, so a tiny component is harmless
+ * (the host normalises them in double before rounding): no TINY check. */
+fxrt_err_t geom_check_dir(vec3_t d)
+{
+    num_t lim = num_from_int(FXRT_COORD_LIMIT);
+    if (!(num_abs(d.x) <= lim && num_abs(d.y) <= lim && num_abs(d.z) <= lim))
+        return FXRT_ERR_COORD;
+    if (d.x == NUM_ZERO && d.y == NUM_ZERO && d.z == NUM_ZERO)
+        return FXRT_ERR_DIRECTION;
+    return FXRT_OK;
+}
+
+fxrt_err_t geom_check_color(color_t c)
+{
+    /* Written so that NaN fails. */
+    if (!(c.r >= NUM_ZERO && c.r <= COLOR_MAX && c.g >= NUM_ZERO && c.g <= COLOR_MAX && c.b >= NUM_ZERO &&
+          c.b <= COLOR_MAX))
+        return FXRT_ERR_COLOR;
+#if FXRT_NUMBER != FXRT_Q16
+    if (geom_check_num(c.r, FXRT_COORD_LIMIT) != FXRT_OK || geom_check_num(c.g, FXRT_COORD_LIMIT) != FXRT_OK ||
+        geom_check_num(c.b, FXRT_COORD_LIMIT) != FXRT_OK)
+        return FXRT_ERR_TINY;
+#endif
+    return FXRT_OK;
+}
+
+fxrt_err_t geom_plane_check(vec3_t point, vec3_t normal, color_t color)
+{
+    fxrt_err_t e = geom_check_point(point);
+    if (e == FXRT_OK)
+        e = geom_check_dir(normal);
+    return e == FXRT_OK ? geom_check_color(color) : e;
+}
+
+fxrt_err_t geom_sphere_check(vec3_t center, num_t radius, color_t color)
+{
+    fxrt_err_t e = geom_check_point(center);
+    if (e != FXRT_OK)
+        return e;
+    if (!(radius > NUM_ZERO && radius <= num_from_int(FXRT_RADIUS_LIMIT)))
+        return FXRT_ERR_RADIUS;
+    if (geom_check_num(radius, FXRT_RADIUS_LIMIT) != FXRT_OK)
+        return FXRT_ERR_TINY;
+    return geom_check_color(color);
+}
+
+fxrt_err_t geom_triangle_check(vec3_t a, vec3_t b, vec3_t c, color_t color)
+{
+    fxrt_err_t e = geom_check_point(a);
+    if (e == FXRT_OK)
+        e = geom_check_point(b);
+    if (e == FXRT_OK)
+        e = geom_check_point(c);
+    return e == FXRT_OK ? geom_check_color(color) : e;
+}
+
+fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color)
+{
+    fxrt_err_t e = geom_check_point(min);
+    if (e == FXRT_OK)
+        e = geom_check_point(max);
+    if (e != FXRT_OK)
+        return e;
+    if (!(min.x <= max.x && min.y <= max.y && min.z <= max.z))
+        return FXRT_ERR_BOX;
+    return geom_check_color(color);
+}
+
 static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
 {
     c->color = color;
@@ -38,7 +128,7 @@ bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color
     p->a = point;
     p->n = normal;
     geom_common_init(&p->obj, color, id);
-    return vec3_normalize(&p->n);
+    return vec3_normalize(&p->n) && geom_plane_check(point, normal, color) == FXRT_OK;
 }
 
 bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t)
@@ -54,7 +144,7 @@ bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t col
     s->radius = radius;
     s->radius2 = numw_mul(radius, radius);
     geom_common_init(&s->obj, color, id);
-    return radius > NUM_ZERO;
+    return geom_sphere_check(center, radius, color) == FXRT_OK;
 }
 
 bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
@@ -92,7 +182,7 @@ bool geom_triangle_make(geom_triangle_t *tr, vec3_t a, vec3_t b, vec3_t c, color
     tr->c = c;
     geom_common_init(&tr->obj, color, id);
     tr->degenerate = !vec3_unit_cross(vec3_sub(b, a), vec3_sub(c, a), &tr->n);
-    return true;
+    return geom_triangle_check(a, b, c, color) == FXRT_OK;
 }
 
 /* Lexicographic order of points, to give each edge one canonical direction. */
@@ -141,7 +231,7 @@ bool geom_box_make(geom_box_t *b, vec3_t min, vec3_t max, color_t color, uint16_
     b->min = min;
     b->max = max;
     geom_common_init(&b->obj, color, id);
-    return min.x <= max.x && min.y <= max.y && min.z <= max.z;
+    return geom_box_check(min, max, color) == FXRT_OK;
 }
 
 bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t)

@@ -11,6 +11,7 @@
 #define FXRT_GEOM_H
 
 #include "color.h"
+#include "fxrt_err.h"
 #include "ray.h"
 
 typedef enum { GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX } geom_kind_t;
@@ -47,9 +48,42 @@ typedef struct {
     geom_common_t obj;
 } geom_box_t;
 
-/* Constructors fill the precomputed fields. They return false for
- * degenerate input the renderer cannot use (a zero normal, radius <= 0,
- * min > max); a degenerate (collinear) triangle is accepted and never hit. */
+/* Colour channels: COLOR_MAX is full intensity and COLOR_FRAC(x) the
+ * channel for an intensity fraction x in 0..1 (a constant initialiser).
+ * Here a channel is the fraction itself; color.h may define both for
+ * another representation, which then wins. */
+#ifndef COLOR_MAX
+#define COLOR_MAX NUM_ONE
+#endif
+#ifndef COLOR_FRAC
+#define COLOR_FRAC(x) NUM(x)
+#endif
+
+/* Domain checks: FXRT_OK, or the fxrt_err_t (fxrt_err.h) that says why the
+ * renderer cannot take the value. They are what the scene parser checks,
+ * in the build's number type, so that objects built in code meet the
+ * same domain (docs/ACCURACY.md):
+ *   point   every |coordinate| <= FXRT_COORD_LIMIT (NaN fails)
+ *   dir     components within the same limit, not the zero vector
+ *   color   every channel in 0..COLOR_MAX (intensity 0..1)
+ * and in the float and double builds a nonzero coordinate or colour below
+ * 2^-16, which Q16.16 cannot hold, is refused too, so all three builds
+ * accept the same input. */
+fxrt_err_t geom_check_point(vec3_t p);
+fxrt_err_t geom_check_dir(vec3_t d);
+fxrt_err_t geom_check_color(color_t c);
+/* Per kind: the checks above, plus radius in (0, FXRT_RADIUS_LIMIT] and
+ * min <= max per axis. A degenerate (collinear) triangle is in the domain:
+ * it is accepted and never hit. */
+fxrt_err_t geom_plane_check(vec3_t point, vec3_t normal, color_t color);
+fxrt_err_t geom_sphere_check(vec3_t center, num_t radius, color_t color);
+fxrt_err_t geom_triangle_check(vec3_t a, vec3_t b, vec3_t c, color_t color);
+fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color);
+
+/* Constructors fill the precomputed fields. They return false when the
+ * input fails its domain check above (so code that bypasses the world's
+ * add functions cannot build an object the renderer would get wrong); a
+ * degenerate (collinear) triangle is accepted and never hit. */
 bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id);
 bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t color, uint16_t id);
 bool geom_triangle_make(geom_triangle_t *t, vec3_t a, vec3_t b, vec3_t c, color_t color, uint16_t id);

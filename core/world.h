@@ -36,8 +36,23 @@ typedef struct {
     const geom_common_t *obj;   /* its colour and scene id */
 } hit_t;
 
-/* Empty world with a background colour. */
+/* Empty world with a background colour. (Applications use
+ * fxrt_world_init from fxrt.h, which also checks the colour and that the
+ * core was built with the application's configuration.) */
 void world_init(world_t *w, color_t background);
+
+/* How many objects the world holds: the id the next one gets. */
+uint16_t world_count(const world_t *w);
+
+/* Add an object after checking its domain (geom_<kind>_check) and its
+ * kind's capacity. Ids are assigned here, in the order objects are added
+ * (0, 1, 2, ... across all kinds): ties in depth go to the lower id.
+ * Returns the new object's id (>= 0), or a negative fxrt_err_t, in which
+ * case the world is unchanged. */
+int32_t world_add_plane(world_t *w, vec3_t point, vec3_t normal, color_t color);
+int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color);
+int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t color);
+int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color);
 
 /* Nearest object with t > 0 along the ray. Ties in t go to the object that
  * came first in the scene (lower id). Returns false on a miss. */

@@ -4,8 +4,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "../core/fxrt.h"
 #include "../core/raycast.h"
-#include "../core/render.h"
 #include "engine.h"
 #include "engine_build.h"
 
@@ -41,61 +41,88 @@ static color_t engine_color(const double c[3])
     return color_make(engine_channel(c[0]), engine_channel(c[1]), engine_channel(c[2]));
 }
 
+int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine_desc_t *d)
+{
+    const scene_camera_t *c = &sc->camera;
+    d->camera.kind = c->kind == SCENE_CAM_PERSPECTIVE ? CAM_PERSPECTIVE : CAM_ORTHOGRAPHIC;
+    d->camera.eye = engine_vec(c->eye);
+    d->camera.gaze = engine_vec(c->gaze);
+    d->camera.up = engine_vec(c->up);
+    /* The unused one of fov and scale is 0 in the description. */
+    d->camera.fov_deg = c->kind == SCENE_CAM_PERSPECTIVE ? ENGINE_SYM(engine_num)(c->fov_deg) : NUM_ZERO;
+    d->camera.scale = c->kind == SCENE_CAM_PERSPECTIVE ? NUM_ZERO : ENGINE_SYM(engine_num)(c->scale);
+    d->camera.width = width;
+    d->camera.height = height;
+    d->background = engine_color(sc->background);
+    d->count = sc->count;
+    for (int i = 0; i < sc->count; i++) {
+        const scene_obj_t *o = &sc->obj[i];
+        fxrt_object_t *t = &d->obj[i];
+        t->color = engine_color(o->color);
+        t->radius = NUM_ZERO;
+        for (int k = 0; k < 3; k++)
+            t->p[k] = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        switch (o->kind) {
+        case SCENE_PLANE:
+            t->kind = GEOM_PLANE;
+            t->p[0] = engine_vec(o->p[0]);
+            t->p[1] = engine_vec(o->p[1]);
+            break;
+        case SCENE_SPHERE:
+            t->kind = GEOM_SPHERE;
+            t->p[0] = engine_vec(o->p[0]);
+            t->radius = ENGINE_SYM(engine_num)(o->radius);
+            break;
+        case SCENE_TRIANGLE:
+            t->kind = GEOM_TRIANGLE;
+            for (int k = 0; k < 3; k++)
+                t->p[k] = engine_vec(o->p[k]);
+            break;
+        case SCENE_BOX:
+            t->kind = GEOM_BOX;
+            t->p[0] = engine_vec(o->p[0]);
+            t->p[1] = engine_vec(o->p[1]);
+            break;
+        }
+    }
+    return 0;
+}
+
+static const char *engine_kind_name(geom_kind_t k)
+{
+    switch (k) {
+    case GEOM_PLANE: return "plane";
+    case GEOM_SPHERE: return "sphere";
+    case GEOM_TRIANGLE: return "triangle";
+    case GEOM_BOX: return "box";
+    }
+    return "object";
+}
+
 int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int height, world_t *w,
                              cam_t *cam, char *err, size_t errlen)
 {
-    const scene_camera_t *c = &sc->camera;
-    cam_err_t ce = cam_setup(cam, c->kind == SCENE_CAM_PERSPECTIVE ? CAM_PERSPECTIVE : CAM_ORTHOGRAPHIC,
-                             engine_vec(c->eye), engine_vec(c->gaze), engine_vec(c->up),
-                             ENGINE_SYM(engine_num)(c->fov_deg), ENGINE_SYM(engine_num)(c->scale), width,
-                             height);
-    if (ce != CAM_OK) {
-        snprintf(err, errlen, "%s:%d: camera at %dx%d: %s", path, c->line, width, height, cam_strerror(ce));
+    /* Through the public API (core/fxrt.h) with the description the scene
+     * compiler emits for the firmware: the host and the boards set scenes
+     * up from the same values along the same path. */
+    static engine_desc_t d;
+    ENGINE_SYM(engine_describe)(sc, width, height, &d);
+    fxrt_err_t ce = fxrt_camera_setup(cam, &d.camera);
+    if (ce != FXRT_OK) {
+        snprintf(err, errlen, "%s:%d: camera at %dx%d: %s", path, sc->camera.line, width, height,
+                 fxrt_strerror(ce));
         return -1;
     }
-    world_init(w, engine_color(sc->background));
-    for (int i = 0; i < sc->count; i++) {
-        const scene_obj_t *o = &sc->obj[i];
-        color_t col = engine_color(o->color);
-        uint16_t id = (uint16_t)i;
-        bool ok = false;
-        const char *kind = "object";
-        switch (o->kind) {
-        case SCENE_PLANE:
-            kind = "plane";
-#if FXRT_MAX_PLANES > 0
-            if (w->n_planes < FXRT_MAX_PLANES)
-                ok = geom_plane_make(&w->planes[w->n_planes++], engine_vec(o->p[0]),
-                                     engine_vec(o->p[1]), col, id);
-#endif
-            break;
-        case SCENE_SPHERE:
-            kind = "sphere";
-#if FXRT_MAX_SPHERES > 0
-            if (w->n_spheres < FXRT_MAX_SPHERES)
-                ok = geom_sphere_make(&w->spheres[w->n_spheres++], engine_vec(o->p[0]),
-                                      ENGINE_SYM(engine_num)(o->radius), col, id);
-#endif
-            break;
-        case SCENE_TRIANGLE:
-            kind = "triangle";
-#if FXRT_MAX_TRIANGLES > 0
-            if (w->n_triangles < FXRT_MAX_TRIANGLES)
-                ok = geom_triangle_make(&w->triangles[w->n_triangles++], engine_vec(o->p[0]), engine_vec(o->p[1]),
-                                        engine_vec(o->p[2]), col, id);
-#endif
-            break;
-        case SCENE_BOX:
-            kind = "box";
-#if FXRT_MAX_BOXES > 0
-            if (w->n_boxes < FXRT_MAX_BOXES)
-                ok = geom_box_make(&w->boxes[w->n_boxes++], engine_vec(o->p[0]), engine_vec(o->p[1]), col, id);
-#endif
-            break;
-        }
-        if (!ok) {
-            snprintf(err, errlen, "%s:%d: %s cannot be built in %s (degenerate, or over this build's capacity)",
-                     path, o->line, kind, NUM_NAME);
+    fxrt_err_t we = fxrt_world_init(w, d.background);
+    if (we != FXRT_OK) {
+        snprintf(err, errlen, "%s: background: %s", path, fxrt_strerror(we));
+        return -1;
+    }
+    for (int i = 0; i < d.count; i++) {
+        int32_t id = fxrt_add(w, &d.obj[i]);
+        if (id < 0) {
+            snprintf(err, errlen, "%s:%d: %s cannot be built in %s: %s", path, sc->obj[i].line,
+                     engine_kind_name(d.obj[i].kind), NUM_NAME, fxrt_strerror(id));
             return -1;
         }
     }
@@ -112,7 +139,7 @@ int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, in
     cam_t cam;
     if (ENGINE_SYM(engine_build)(path, sc, width, height, &world, &cam, err, errlen) != 0)
         return -1;
-    if (!render_setup(&state, &world, &cam)) {
+    if (fxrt_render_setup(&state, &world, &cam) != FXRT_OK) {
         snprintf(err, errlen, "%s: image wider than %d pixels", path, FXRT_RENDER_MAX_WIDTH);
         return -1;
     }

@@ -4,8 +4,7 @@
 #ifndef FXRT_HOST_ENGINE_BUILD_H
 #define FXRT_HOST_ENGINE_BUILD_H
 
-#include "../core/cam.h"
-#include "../core/world.h"
+#include "../core/fxrt.h"
 #include "scene.h"
 
 #ifdef FXRT_MULTI
@@ -16,6 +15,20 @@
 
 /* A scene value in the build's number type (Q16.16: rounded to nearest). */
 num_t ENGINE_SYM(engine_num)(double x);
+
+/* A scene in the build's number type, as the public API takes it: what
+ * fxrt-scenec emits for the firmware and what engine_build passes to
+ * fxrt_camera_setup, fxrt_world_init and fxrt_add. */
+typedef struct {
+    fxrt_camera_t camera;
+    color_t background;
+    int count;
+    fxrt_object_t obj[SCENE_MAX_OBJECTS]; /* scene order: object i gets id i */
+} engine_desc_t;
+
+/* Convert the parsed scene (doubles) into d, rounding each value once
+ * (engine_num). Returns 0. */
+int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine_desc_t *d);
 
 /* Build the world and camera for a width x height frame. Returns 0, or -1
  * with "PATH:LINE: ..." in err. */

@@ -1,7 +1,8 @@
 /* fxrt-scenec: compile a .scene file into C for the firmware: a header of
  * capacity macros (FXRT_MAX_<KIND> = the scene's own counts, so unused
- * kinds compile out) and a header with the const world and camera in the
- * chosen number type. */
+ * kinds compile out) and a header with the scene's own values (camera,
+ * background, objects) in the chosen number type, which the firmware
+ * passes to the public API (core/fxrt.h) at boot. */
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,8 +16,10 @@
 static const char usage[] =
     "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR [--all-kinds]\n"
     "\n"
-    "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT) and\n"
-    "DIR/scene_data.h (static const world_t scene_world, cam_t scene_cam).\n"
+    "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT/OBJECTS) and\n"
+    "DIR/scene_data.h (the scene's own values: fxrt_camera_t scene_camera, color_t\n"
+    "scene_background, fxrt_object_t scene_objects[]), which the firmware sets up\n"
+    "at boot through core/fxrt.h.\n"
     "--all-kinds keeps every primitive kind compiled in (capacity >= 1), to\n"
     "measure what stripping the unused ones saves.\n";
 

@@ -6,7 +6,8 @@
 #include <stdio.h>
 #include "scene.h"
 
-/* Write the capacity/size macros to cfg and the const world and camera to
+/* Write the capacity/size macros to cfg and the scene's description (the
+ * public API's fxrt_camera_t, background and fxrt_object_t table) to
  * data. Capacities are the scene's counts (an unused kind compiles out),
  * or at least 1 each with all_kinds. Returns 0, or -1 with
  * "PATH:LINE: ..." in err. */

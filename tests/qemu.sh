@@ -34,13 +34,131 @@ for b in $BOARDS; do
         if run_fw SCENE=$scene BOARD=$b NUMBER=q16 SIZE=$SIZE; then
             ok
             echo "$b $name: $(grep instructions= "$out/run.log")"
-            check "$b $name: frame byte-identical to the host q16 render" \
+            check "$b $name: frame set up on the board byte-identical to the host q16 render" \
                 cmp -s "$out/$name-host.ppm" "$BUILD/qemu/$b/$name-q16-$SIZE.ppm"
         else
             bad "$b $name: firmware run failed: $(tail -n 5 "$out/run.log")"
         fi
     done
 done
+
+# Every stress scene that is not meant to be rejected, set up on each board
+# (camera, objects and forms built at run time from the scene's own values,
+# as firmware/main.c does) and compared with the host's Q16.16 render at the
+# scene's own size (64x48 when it has no image line). To keep this to a few
+# builds, tests/onboard_main.c renders a batch of scenes per ELF: all of
+# them on the MPS2 boards, batches that fit 16 KB on the micro:bit. A scene
+# that does not fit the micro:bit's RAM on its own is skipped with the
+# linker's reason, and counted.
+onb=$out/onboard
+rm -rf "$onb"
+mkdir -p "$onb/scenes" "$onb/host"
+stress=()
+for scene in scenes/stress/*.scene; do
+    grep -q '^# expect: rejected:' "$scene" && continue
+    name=$(basename "$scene" .scene)
+    size=$(awk '$1 == "image" { print $2 "x" $3; exit }' "$scene")
+    size=${size:-64x48}
+    mkdir -p "$onb/scenes/$name"
+    if "$BUILD/fxrt-scenec" "$scene" --number q16 --size $size --out "$onb/scenes/$name" 2>"$onb/scenec.log"; then
+        stress+=("$name")
+    else
+        bad "fxrt-scenec $scene: $(cat "$onb/scenec.log")"
+    fi
+    "$FXRT" render "$scene" --number q16 --size $size -o "$onb/host/$name.ppm" || bad "host render of $scene"
+done
+cfgv() { sed -nE "s/^#define $2 ([0-9]+)$/\1/p" "$onb/scenes/$1/scene_config.h"; }
+# onb_batch BOARD TAG NAME...: build and run one ELF; prints a verdict per
+# scene (PASS/FAIL/SKIP) on stdout; returns 3 when the ELF overflows RAM.
+onb_batch() {
+    local b=$1 tag=$2 dir rc n t
+    shift 2
+    dir=$onb/$b-$tag
+    progress "qemu.sh: on-board set-up of stress scenes: $b $tag ($# scenes)"
+    tests/onboard_gen.sh "$dir" "${@/#/$onb/scenes/}"
+    if ! $M onboard BOARD=$b ONB_DIR="$dir" >"$dir/build.log" 2>&1; then
+        grep -q "region .RAM' overflowed" "$dir/build.log" && return 3
+        for n in "$@"; do echo "FAIL $b $n: build failed: $(tail -n 2 "$dir/build.log" | tr '\n' ' ')"; done
+        return 0
+    fi
+    (cd "$dir" && timeout "${FXRT_QEMU_TIMEOUT:-300}" qemu-system-arm -M "$(qemu_m $b)" -nographic -monitor none \
+        -serial none -semihosting-config enable=on,target=native -icount shift=5 -kernel onboard.elf </dev/null) \
+        >"$dir/run.log" 2>&1
+    rc=$?
+    for n in "$@"; do
+        t=$(sed -nE "s/^scene=$n frame_tick_count=([0-9]+)$/\1/p" "$dir/run.log")
+        if [ -z "$t" ]; then
+            echo "FAIL $b $n: $(grep "^scene=$n " "$dir/run.log" || echo "no report (exit $rc)")"
+        elif mv "$dir/$n.ppm.part" "$dir/$n.ppm" && cmp -s "$onb/host/$n.ppm" "$dir/$n.ppm"; then
+            echo "PASS $b $n instructions=$(awk -v t="$t" -v ns="$(tick_ns $b)" 'BEGIN { printf "%.0f", t * ns / 32 }')"
+        else
+            echo "FAIL $b $n: frame differs from the host q16 render"
+        fi
+    done
+    [ $rc -eq 0 ] || echo "FAIL $b batch $tag: exit $rc: $(tail -n 3 "$dir/run.log" | tr '\n' ' ')"
+    return 0
+}
+qemu_m() { echo "$1"; }
+tick_ns() { case $1 in microbit) echo 62.5 ;; *) echo 40 ;; esac; }
+: >"$onb/verdicts.txt"
+for b in mps2-an385 mps2-an386; do
+    onb_batch $b all "${stress[@]}" >>"$onb/verdicts.txt" || for n in "${stress[@]}"; do
+        echo "FAIL $b $n: the batch does not fit the board" >>"$onb/verdicts.txt"
+    done
+done
+# micro:bit: greedy batches in the scenes' order, estimating RAM per batch as
+# render_t and world entries per object of the largest capacities (about
+# 1.1 KB each on the M0), 7 bytes per column (owner + row) and 4 KB of
+# stack; the linker has the last word.
+ONB_MB_BUDGET=11500
+batch=() bp=0 bs=0 bt=0 bb=0 bw=0 k=0
+onb_single() {
+    local n=$1
+    onb_batch microbit "s-$n" "$n" >>"$onb/verdicts.txt" && return
+    echo "SKIP microbit $n: does not fit 16 KB of RAM ($(cfgv $n SCENE_OBJECTS) objects, $(cfgv $n SCENE_WIDTH)" \
+        "columns; $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/microbit-s-$n/build.log"))" >>"$onb/verdicts.txt"
+}
+flush_mb() {
+    if [ ${#batch[@]} -eq 1 ]; then
+        onb_single "${batch[0]}"
+    elif [ ${#batch[@]} -gt 1 ]; then
+        k=$((k + 1))
+        local m
+        onb_batch microbit b$k "${batch[@]}" >>"$onb/verdicts.txt" || for m in "${batch[@]}"; do onb_single "$m"; done
+    fi
+    batch=() bp=0 bs=0 bt=0 bb=0 bw=0
+}
+for n in "${stress[@]}"; do
+    p=$(cfgv $n FXRT_MAX_PLANES) s=$(cfgv $n FXRT_MAX_SPHERES) t=$(cfgv $n FXRT_MAX_TRIANGLES)
+    bx=$(cfgv $n FXRT_MAX_BOXES) w=$(cfgv $n SCENE_WIDTH)
+    np=$((p > bp ? p : bp)) ns=$((s > bs ? s : bs)) nt=$((t > bt ? t : bt)) nb=$((bx > bb ? bx : bb))
+    nw=$((w > bw ? w : bw))
+    if [ ${#batch[@]} -gt 0 ] && [ $(((np + ns + nt + nb) * 1100 + 7 * nw)) -gt $ONB_MB_BUDGET ]; then
+        flush_mb
+        np=$p ns=$s nt=$t nb=$bx nw=$w
+    fi
+    batch+=("$n")
+    bp=$np bs=$ns bt=$nt bb=$nb bw=$nw
+done
+flush_mb
+sort -k2,3 "$onb/verdicts.txt"
+while read -r verdict b name rest; do
+    case $verdict in
+    PASS) ok ;;
+    SKIP) ;;
+    *) bad "$b $name $rest" ;;
+    esac
+done <"$onb/verdicts.txt"
+for b in $BOARDS; do
+    echo "on-board set-up, ${#stress[@]} stress scenes on $b: $(grep -c "^PASS $b " "$onb/verdicts.txt") byte-identical," \
+        "$(grep -c "^SKIP $b " "$onb/verdicts.txt") skipped (too large for the board)"
+done
+nv=$(grep -cE '^(PASS|SKIP) ' "$onb/verdicts.txt")
+check "every (board, stress scene) pair has a verdict ($nv of $((3 * ${#stress[@]})))" test "$nv" -eq $((3 * ${#stress[@]}))
+others=$(grep '^SKIP' "$onb/verdicts.txt" | grep -v '^SKIP microbit' || true)
+check "only the micro:bit skips, and only for RAM ($others)" test -z "$others"
+check "every non-rejected stress scene was compiled ($(ls scenes/stress/*.scene | wc -l) scenes)" \
+    test ${#stress[@]} -eq "$(grep -L '^# expect: rejected:' scenes/stress/*.scene | wc -l)"
 
 # The straightforward reference loop on target gives the same frames as
 # the fast renderer (the skipping and stepping change only the cost).
@@ -94,7 +212,7 @@ echo "rgb565 vs rgb888: $line"
 check "rgb565 frame: same pixels up to 565 quantisation" grep -qE 'max_err=[0-7] ' <<<"$line"
 
 # No heap in any firmware ELF; every ELF built above is checked.
-elfs=$(find "$BUILD/fw" -name '*.elf')
+elfs=$(find "$BUILD/fw" "$onb" -name '*.elf')
 check "found firmware ELFs" test -n "$elfs"
 for e in $elfs; do
     heap=$(arm-none-eabi-nm "$e" | awk '{print $NF}' | grep -xE 'malloc|_malloc_r|_sbrk|_sbrk_r|free|_free_r' || true)

@@ -1,0 +1,140 @@
+/* fxrt: the public API's checked entry points (see fxrt.h). */
+#include "fxrt.h"
+
+/* The configuration this core is built with, as a link-time name that
+ * fxrt_world_init (inline, compiled in the application) refers to. The
+ * value is unused; the name is the check. */
+const uint32_t FXRT_CONFIG_SYMBOL = 1;
+
+fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t world_size, uint32_t render_size,
+                                   const uint32_t *config)
+{
+    if (world_size != sizeof(world_t) || render_size != sizeof(render_t) || config != &FXRT_CONFIG_SYMBOL)
+        return FXRT_ERR_CONFIG;
+    fxrt_err_t e = geom_check_color(background);
+    if (e != FXRT_OK)
+        return e;
+    world_init(w, background);
+    return FXRT_OK;
+}
+
+int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
+{
+    switch (o->kind) {
+    case GEOM_PLANE: return world_add_plane(w, o->p[0], o->p[1], o->color);
+    case GEOM_SPHERE: return world_add_sphere(w, o->p[0], o->radius, o->color);
+    case GEOM_TRIANGLE: return world_add_triangle(w, o->p[0], o->p[1], o->p[2], o->color);
+    case GEOM_BOX: return world_add_box(w, o->p[0], o->p[1], o->color);
+    }
+    return FXRT_ERR_KIND;
+}
+
+/* cam_setup's codes in the API's terms. */
+static fxrt_err_t fxrt_cam_err(cam_err_t e)
+{
+    switch (e) {
+    case CAM_OK: return FXRT_OK;
+    case CAM_ERR_SIZE: return FXRT_ERR_SIZE;
+    case CAM_ERR_GAZE: return FXRT_ERR_DIRECTION;
+    case CAM_ERR_UP: return FXRT_ERR_UP;
+    case CAM_ERR_FOV: return FXRT_ERR_FOV;
+    case CAM_ERR_NARROW: return FXRT_ERR_NARROW;
+    case CAM_ERR_SCALE: return FXRT_ERR_SCALE;
+    case CAM_ERR_EXTENT: return FXRT_ERR_EXTENT;
+    default: break; /* codes cam.h adds later */
+    }
+    return (fxrt_err_t)(FXRT_ERR_CAM_BASE + (int)e);
+}
+
+/* What both camera kinds check before cam_setup: the image size, and eye,
+ * gaze and up inside the domain. */
+static fxrt_err_t fxrt_camera_common(vec3_t eye, vec3_t gaze, vec3_t up, int32_t width, int32_t height)
+{
+    if (width < 1 || height < 1 || width > FXRT_MAX_DIM || height > FXRT_MAX_DIM)
+        return FXRT_ERR_SIZE;
+    fxrt_err_t e = geom_check_point(eye);
+    if (e == FXRT_OK)
+        e = geom_check_dir(gaze);
+    if (e == FXRT_OK)
+        e = geom_check_dir(up);
+    return e;
+}
+
+fxrt_err_t fxrt_camera_perspective(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t up, num_t fov_deg,
+                                   int32_t width, int32_t height)
+{
+    fxrt_err_t e = fxrt_camera_common(eye, gaze, up, width, height);
+    if (e != FXRT_OK)
+        return e;
+    if (!(fov_deg > NUM_ZERO && fov_deg < NUM(180)))
+        return FXRT_ERR_FOV;
+    return fxrt_cam_err(cam_setup(cam, CAM_PERSPECTIVE, eye, gaze, up, fov_deg, NUM_ONE, width, height));
+}
+
+fxrt_err_t fxrt_camera_orthographic(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t up, num_t scale, int32_t width,
+                                    int32_t height)
+{
+    fxrt_err_t e = fxrt_camera_common(eye, gaze, up, width, height);
+    if (e != FXRT_OK)
+        return e;
+    if (!(scale > NUM_ZERO && scale <= num_from_int(FXRT_RADIUS_LIMIT)))
+        return FXRT_ERR_SCALE;
+#if FXRT_NUMBER != FXRT_Q16
+    if (scale < NUM(1.0 / 65536.0))
+        return FXRT_ERR_TINY;
+#endif
+    return fxrt_cam_err(cam_setup(cam, CAM_ORTHOGRAPHIC, eye, gaze, up, NUM(90), scale, width, height));
+}
+
+fxrt_err_t fxrt_camera_setup(cam_t *cam, const fxrt_camera_t *c)
+{
+    if (c->kind == CAM_PERSPECTIVE)
+        return fxrt_camera_perspective(cam, c->eye, c->gaze, c->up, c->fov_deg, c->width, c->height);
+    if (c->kind == CAM_ORTHOGRAPHIC)
+        return fxrt_camera_orthographic(cam, c->eye, c->gaze, c->up, c->scale, c->width, c->height);
+    return FXRT_ERR_CAMERA;
+}
+
+fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t *cam, uint32_t render_size)
+{
+    if (render_size != sizeof(render_t))
+        return FXRT_ERR_CONFIG;
+    if (cam->width > FXRT_RENDER_MAX_WIDTH)
+        return FXRT_ERR_WIDTH;
+    return render_setup(r, w, cam) ? FXRT_OK : FXRT_ERR_RENDER;
+}
+
+const char *fxrt_strerror(int32_t err)
+{
+    if (err >= 0)
+        return "ok";
+    if (err < FXRT_ERR_CAM_BASE && err > FXRT_ERR_CAM_BASE - 100)
+        return cam_strerror((cam_err_t)(err - FXRT_ERR_CAM_BASE));
+    switch ((fxrt_err_t)err) {
+    case FXRT_OK: return "ok";
+    case FXRT_ERR_FULL: return "no room for another object of this kind (FXRT_MAX_<KIND>; 0 compiles the kind out)";
+    case FXRT_ERR_COORD: return "coordinate beyond the limit +-FXRT_COORD_LIMIT";
+    case FXRT_ERR_TINY: return "nonzero value below 2^-16 (it would be 0 in Q16.16)";
+    case FXRT_ERR_DIRECTION: return "direction (normal, gaze or up) has zero length";
+    case FXRT_ERR_RADIUS: return "radius must be in (0, FXRT_RADIUS_LIMIT]";
+    case FXRT_ERR_COLOR: return "colour channel outside 0..1";
+    case FXRT_ERR_BOX: return "box min > max on some axis";
+    /* The camera's texts are cam_setup's, so the host tool's messages do
+     * not depend on which layer refused. */
+    case FXRT_ERR_SIZE: return cam_strerror(CAM_ERR_SIZE);
+    case FXRT_ERR_UP: return cam_strerror(CAM_ERR_UP);
+    case FXRT_ERR_FOV: return cam_strerror(CAM_ERR_FOV);
+    case FXRT_ERR_NARROW: return cam_strerror(CAM_ERR_NARROW);
+    case FXRT_ERR_SCALE: return "orthographic scale must be in (0, FXRT_RADIUS_LIMIT]";
+    case FXRT_ERR_EXTENT: return cam_strerror(CAM_ERR_EXTENT);
+    case FXRT_ERR_CAMERA: return "unknown camera kind";
+    case FXRT_ERR_CAM_BASE: break;
+    case FXRT_ERR_WIDTH: return "image wider than FXRT_RENDER_MAX_WIDTH";
+    case FXRT_ERR_KIND: return "unknown object kind";
+    case FXRT_ERR_CONFIG:
+        return "core and application built with different configurations (FXRT_NUMBER, FXRT_MAX_*, "
+               "FXRT_RENDER_MAX_WIDTH, FXRT_PIXEL must match)";
+    case FXRT_ERR_RENDER: return "the renderer cannot set this frame up (render_t capacity)";
+    }
+    return "unknown error";
+}

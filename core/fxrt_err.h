@@ -1,0 +1,62 @@
+/* fxrt_err: the error codes of the public API (core/fxrt.h). Every call
+ * that can refuse its input returns FXRT_OK (0), a non-negative result
+ * (an object id), or one of these negative codes; fxrt_strerror gives the
+ * text. Kept in its own header because the geometry constructors (geom.c)
+ * and the world (world.c) return them too. */
+#ifndef FXRT_ERR_H
+#define FXRT_ERR_H
+
+#include "fxrt_config.h"
+#include "fxrt_names.h"
+
+typedef enum {
+    FXRT_OK = 0,
+    FXRT_ERR_FULL = -1,      /* this kind's capacity (FXRT_MAX_<KIND>) is used up, or 0 */
+    FXRT_ERR_COORD = -2,     /* a coordinate beyond +-FXRT_COORD_LIMIT (or NaN) */
+    FXRT_ERR_TINY = -3,      /* float/double: a nonzero value below 2^-16, 0 in Q16.16 */
+    FXRT_ERR_DIRECTION = -4, /* a zero normal, gaze or up vector */
+    FXRT_ERR_RADIUS = -5,    /* sphere radius outside (0, FXRT_RADIUS_LIMIT] */
+    FXRT_ERR_COLOR = -6,     /* a colour channel outside 0..1 */
+    FXRT_ERR_BOX = -7,       /* box min > max on some axis */
+    FXRT_ERR_SIZE = -8,      /* image width or height outside 1..FXRT_MAX_DIM */
+    FXRT_ERR_UP = -9,        /* up parallel to the gaze */
+    FXRT_ERR_FOV = -10,      /* fov outside (0, 180) degrees */
+    FXRT_ERR_NARROW = -11,   /* height * cot(fov/2) > 32767: rays do not fit Q16.16 */
+    FXRT_ERR_SCALE = -12,    /* orthographic scale outside (0, FXRT_RADIUS_LIMIT] */
+    FXRT_ERR_EXTENT = -13,   /* orthographic ray origins would leave +-FXRT_COORD_LIMIT */
+    FXRT_ERR_CAMERA = -14,   /* a camera description of unknown kind */
+    FXRT_ERR_WIDTH = -15,    /* image wider than FXRT_RENDER_MAX_WIDTH */
+    FXRT_ERR_KIND = -16,     /* an fxrt_object_t with an unknown kind */
+    FXRT_ERR_CONFIG = -17,   /* core and application built with different configurations */
+    FXRT_ERR_RENDER = -18,   /* render_setup refused the frame for another reason (render_t capacity) */
+    /* Camera errors without a name above (cam_setup codes added later)
+     * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
+     * fxrt_strerror still tell them apart. */
+    FXRT_ERR_CAM_BASE = -100,
+} fxrt_err_t;
+
+/* The host links all three number types (FXRT_MULTI, see fxrt_names.h):
+ * the API's number-dependent functions get the type's suffix too. */
+#ifdef FXRT_MULTI
+#define geom_check_point FXRT_SYM(geom_check_point)
+#define geom_check_dir FXRT_SYM(geom_check_dir)
+#define geom_check_color FXRT_SYM(geom_check_color)
+#define geom_plane_check FXRT_SYM(geom_plane_check)
+#define geom_sphere_check FXRT_SYM(geom_sphere_check)
+#define geom_triangle_check FXRT_SYM(geom_triangle_check)
+#define geom_box_check FXRT_SYM(geom_box_check)
+#define world_count FXRT_SYM(world_count)
+#define world_add_plane FXRT_SYM(world_add_plane)
+#define world_add_sphere FXRT_SYM(world_add_sphere)
+#define world_add_triangle FXRT_SYM(world_add_triangle)
+#define world_add_box FXRT_SYM(world_add_box)
+#define fxrt_world_init_checked FXRT_SYM(fxrt_world_init_checked)
+#define fxrt_add FXRT_SYM(fxrt_add)
+#define fxrt_camera_perspective FXRT_SYM(fxrt_camera_perspective)
+#define fxrt_camera_orthographic FXRT_SYM(fxrt_camera_orthographic)
+#define fxrt_camera_setup FXRT_SYM(fxrt_camera_setup)
+#define fxrt_render_setup_checked FXRT_SYM(fxrt_render_setup_checked)
+#define fxrt_strerror FXRT_SYM(fxrt_strerror)
+#endif
+
+#endif

@@ -1,0 +1,75 @@
+# examples/ and the public API's tests (included by the top Makefile).
+#   build/examples/host/orbit OUTDIR      the orbit example on the host
+#   build/examples/microbit/orbit.elf     the same program for the micro:bit
+#   build/tests/test_fxrt_{q16,float,double}  the API's unit test
+# tests/examples.sh runs both builds and compares their frames.
+
+# The example's configuration: the core and the application are compiled
+# with the same macros (docs/EMBEDDING.md). Capacities are the example's
+# own object counts; rows are 64 pixels wide.
+EXAMPLE_CFG := -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=2 -DFXRT_MAX_TRIANGLES=1 \
+               -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64
+# The core's sources as the Makefile lists them (without the optional ray caster).
+EXAMPLE_CORE = fx $(filter-out raycast,$(CORE_NUM))
+EX_HOST := $(BUILD)/examples/host
+EX_MB   := $(BUILD)/examples/microbit
+
+$(EX_HOST)/core/%.o: core/%.c tests/examples.mk
+	@mkdir -p $(@D)
+	@echo "  CC ex   $<"
+	$(Q)$(CC) $(CFLAGS_H) $(EXAMPLE_CFG) -Icore -c $< -o $@
+$(EX_HOST)/%.o: examples/%.c tests/examples.mk
+	@mkdir -p $(@D)
+	@echo "  CC ex   $<"
+	$(Q)$(CC) $(CFLAGS_H) $(EXAMPLE_CFG) -Icore -c $< -o $@
+$(EX_HOST)/orbit: $(EXAMPLE_CORE:%=$(EX_HOST)/core/%.o) $(EX_HOST)/orbit.o $(EX_HOST)/io_host.o
+	@echo "  LD      $@"
+	$(Q)$(CC) $(CFLAGS_H) -o $@ $^
+
+EX_MB_CFLAGS = $(WARN) -O2 -g $(CPU_microbit) -ffreestanding -ffunction-sections -fdata-sections \
+               -fstack-usage $(EXAMPLE_CFG) -Icore -Ifirmware -Iexamples
+$(EX_MB)/core/%.o: core/%.c tests/examples.mk
+	@mkdir -p $(@D)
+	@echo "  ARMCC   $<"
+	$(Q)$(ARM_CC) $(EX_MB_CFLAGS) -MMD -MP -c $< -o $@
+$(EX_MB)/fw/%.o: firmware/%.c tests/examples.mk
+	@mkdir -p $(@D)
+	@echo "  ARMCC   $<"
+	$(Q)$(ARM_CC) $(EX_MB_CFLAGS) -MMD -MP -c $< -o $@
+$(EX_MB)/%.o: examples/%.c tests/examples.mk
+	@mkdir -p $(@D)
+	@echo "  ARMCC   $<"
+	$(Q)$(ARM_CC) $(EX_MB_CFLAGS) -MMD -MP -c $< -o $@
+$(EX_MB)/orbit.elf: $(EXAMPLE_CORE:%=$(EX_MB)/core/%.o) $(EX_MB)/orbit.o $(EX_MB)/io_board.o \
+                    $(EX_MB)/fw/startup.o $(EX_MB)/fw/semihost.o $(EX_MB)/fw/counter.o $(wildcard linker/*.ld)
+	@echo "  ARMLD   $@"
+	$(Q)$(ARM_CC) $(CPU_microbit) -o $@ $(filter %.o,$^) -nostartfiles --specs=nano.specs --specs=nosys.specs \
+	  -Wl,--gc-sections -Wl,-Map=$(EX_MB)/orbit.map -Llinker -Tlinker/microbit.ld
+
+examples: $(EX_HOST)/orbit $(EX_MB)/orbit.elf
+
+# The API's unit test, once per number type (like test_geom).
+TEST_FXRT_BIN := $(foreach n,$(NUMBERS),$(BUILD)/tests/test_fxrt_$(n))
+define test_fxrt_rule
+$(BUILD)/tests/test_fxrt_$(1): tests/test_fxrt.c $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(1)/%.o)
+	@mkdir -p $$(@D)
+	@echo "  CC/LD $(1) $$@"
+	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
+endef
+$(foreach n,$(NUMBERS),$(eval $(call test_fxrt_rule,$(n))))
+
+SUITES_EXTRA += $(TEST_FXRT_BIN) tests/examples.sh
+TEST_PREREQ  += $(TEST_FXRT_BIN) $(EX_HOST)/orbit $(EX_MB)/orbit.elf
+.PHONY: examples
+
+# On-board set-up of many scenes in one ELF (tests/qemu.sh):
+#   make onboard BOARD=b ONB_DIR=dir   (dir from tests/onboard_gen.sh)
+ONB_DIR ?= $(BUILD)/onboard
+ONB_SRC = $(CORE_NUM:%=core/%.c) core/fx.c tests/onboard_main.c firmware/startup.c firmware/semihost.c \
+          firmware/counter.c
+onboard:
+	@echo "  ARMCC   $(ONB_DIR)/onboard.elf"
+	$(Q)$(ARM_CC) $(WARN) -O2 $(CPU_$(BOARD)) -ffreestanding -ffunction-sections -fdata-sections -DFXRT_NUMBER=1 \
+	  -include $(ONB_DIR)/scene_config.h -I$(ONB_DIR) -Icore -Ifirmware $(ONB_SRC) -nostartfiles \
+	  --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Llinker -Tlinker/$(BOARD).ld -o $(ONB_DIR)/onboard.elf
+.PHONY: onboard
