@@ -7,3 +7,5 @@ test_color_DEPS := $(BUILD)/host/scene.o $(BUILD)/host/engine_select.o $(BUILD)/
 
 SUITES_EXTRA += $(COLOR_BIN)
 TEST_PREREQ  += $(COLOR_BIN)
+# Sanitized too (tests/sanitize.mk builds test_X from test_X_DEPS).
+UNIT_TESTS += test_color

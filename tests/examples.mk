@@ -73,3 +73,5 @@ onboard:
 	  -include $(ONB_DIR)/scene_config.h -I$(ONB_DIR) -Icore -Ifirmware $(ONB_SRC) -nostartfiles \
 	  --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Llinker -Tlinker/$(BOARD).ld -o $(ONB_DIR)/onboard.elf
 .PHONY: onboard
+# Sanitized too (tests/sanitize.mk's number-generic rule).
+NUM_TESTS += test_fxrt

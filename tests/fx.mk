@@ -46,3 +46,13 @@ TEST_PREREQ  += $(BUILD)/tests/test_fx_nohw $(FX_EXH_BIN)
 .PHONY: fx-exhaustive
 
 include firmware/benchfx.mk
+
+# test_fx_nohw under ASan+UBSan too (tests/sanitize.sh runs tests.list).
+$(SAN_DIR)/tests/fx-nohw.o: core/fx.c
+	@mkdir -p $(@D)
+	@echo "  CC san nohw $<"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) $(FX_NOHW_FLAGS) -c $< -o $@
+$(SAN_DIR)/tests/test_fx_nohw: tests/test_fx.c tests/check.h $(SAN_DIR)/tests/fx-nohw.o
+	@echo "  CC/LD san $@"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -DTEST_FX_NAME='"test_fx_nohw"' -Icore -o $@ tests/test_fx.c $(SAN_DIR)/tests/fx-nohw.o -lm
+SAN_EXTRA_BIN += $(SAN_DIR)/tests/test_fx_nohw

@@ -28,7 +28,9 @@ SAN_FXRT     = $(SAN_DIR)/fxrt
 SAN_HOST_OBJ = $(call san_path,$(HOST_OBJ))
 SAN_UNIT_BIN = $(UNIT_TESTS:%=$(SAN_DIR)/tests/%)
 SAN_NUM_BIN  = $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(SAN_DIR)/tests/$(t)_$(n)))
-SAN_BIN      = $(SAN_FXRT) $(SAN_UNIT_BIN) $(SAN_NUM_BIN)
+# Fragments with test binaries of their own add their sanitized twins here.
+SAN_EXTRA_BIN ?=
+SAN_BIN      = $(SAN_FXRT) $(SAN_UNIT_BIN) $(SAN_NUM_BIN) $(SAN_EXTRA_BIN)
 
 $(SAN_FXRT): $$(SAN_HOST_OBJ)
 	@echo "  LD san  $@"
@@ -105,7 +107,7 @@ $(SAN_DIFF): $$(call san_path,$$(DIFF_OBJ))
 # The fuzz harnesses are sanitized already; sanitize.sh replays their
 # corpora.
 san-build: $$(SAN_BIN) $$(SAN_ORACLE) $$(SAN_DIFF) $$(FUZZ_SCENE_BIN) $$(DIFF_FUZZ_BIN)
-	$(Q)printf '%s\n' $(SAN_UNIT_BIN) $(SAN_NUM_BIN) >$(SAN_DIR)/tests.list
+	$(Q)printf '%s\n' $(SAN_UNIT_BIN) $(SAN_NUM_BIN) $(SAN_EXTRA_BIN) >$(SAN_DIR)/tests.list
 
 sanitize: deps san-build
 	$(Q)BUILD=$(BUILD) tests/sanitize.sh
