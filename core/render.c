@@ -266,8 +266,10 @@ RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec
                   ortho ? rc_nw(num_neg(n.x), cam->step_u) : rc_zero(),
                   ortho ? rc_nw(num_neg(n.y), cam->step_v) : rc_zero()};
     rclin_t df = {rc_nn(n.z, num_neg(focal)), ortho ? rc_zero() : rc_n(n.x), ortho ? rc_zero() : rc_n(n.y)};
-    f->n = rlin_make(nf, ext);
-    f->d = rlin_make(df, ext);
+    int kn = rlin_need(&nf, ext, RENDER_LIN_BITS), kd = rlin_need(&df, ext, RENDER_LIN_BITS);
+    f->n = rlin_scaled(nf, kn);
+    f->d = rlin_scaled(df, kd);
+    f->te = (int8_t)(kn - kd); /* N real = N 2^(kn - 48), D real = D 2^(kd - 48) */
     f->edges = 0;
     f->x0 = 0;
     f->x1 = (int16_t)(cam->width - 1);
@@ -494,6 +496,8 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
      * and r2 is R^2 a brought to those units; b only matters by its sign. */
     rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
     int kp = rlin_need(&px, ext, RENDER_SPHERE_BITS), n;
+    n = rlin_need(&b, ext, RENDER_SPHERE_BITS); /* b + sqrt(disc) is formed for depth */
+    kp = kp > n ? kp : n;
     n = rlin_need(&py, ext, RENDER_SPHERE_BITS);
     kp = kp > n ? kp : n;
     n = rlin_need(&pz, ext, RENDER_SPHERE_BITS);
@@ -518,8 +522,12 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
     }
     int sk = 2 * kp - 48;
     o->u.sphere.k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
-    o->u.sphere.b = rlin_make(b, ext);
+    o->u.sphere.b = rlin_scaled(b, kp);
     o->u.sphere.a = rquad_scaled(a, ka);
+    /* b and sqrt(disc) are real * 2^(48 - kp), c is real * 2^(96 - 2 kp)
+     * and a is real * 2^(48 - ka). */
+    o->u.sphere.tc = (int8_t)(kp - 48);
+    o->u.sphere.ta = (int8_t)(kp - ka);
     o->u.sphere.px = rlin_scaled(px, kp);
     o->u.sphere.py = rlin_scaled(py, kp);
     o->u.sphere.pz = rlin_scaled(pz, kp);
@@ -531,6 +539,8 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
     o->u.sphere.pz = rlin_scaled(pz, 0);
     o->u.sphere.k = k;
     o->u.sphere.r2 = r2;
+    o->u.sphere.tc = 0;
+    o->u.sphere.ta = 0;
 #endif
     /* Bounds. */
     if (!rc_is_neg(cc) && c.z >= rad) {
@@ -611,11 +621,6 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
     }
     o->kind = RO_BOX;
     o->nflat = 0;
-    if (inside) {
-        o->kind = RO_ALL;
-        render_set_full(cam, o);
-        return;
-    }
     for (int axis = 0; axis < 3; axis++) {
         int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
         /* A face of zero area (a flat box seen from its side) covers
@@ -652,6 +657,13 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
             render_points_bounds(cam, q, 4, &tmp);
             render_flat_bounds_from(f, &tmp);
         }
+    }
+    if (inside) {
+        /* Every ray covers the box; its faces (all of them, from inside)
+         * give the depth of the exit point. */
+        o->kind = RO_ALL;
+        render_set_full(cam, o);
+        return;
     }
     if (o->nflat == 0) {
         render_set_empty(o);
@@ -735,78 +747,203 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     return true;
 }
 
-/* ---- depth at pixels that several objects cover ------------------------ */
+/* ---- depth at pixels that several objects cover ------------------------
+ * Depth is the ray parameter t of the camera-space ray r = (ix, iy, -F)
+ * (orthographic: (0, 0, -1)), formed from the same forms that decide
+ * coverage: a flat piece's t = N / D, a sphere's near root c / (b + s)
+ * (s = sqrt(disc); the far root (b + s) / a from inside), so no ray is cast.
+ * Q16.16: t is kept as n / d * 2^e with n and d normalised to 31 bits
+ * (truncated: a deterministic function of the exact integer forms), and
+ * two depths compare exactly by cross-multiplication in 64 bits. */
 
-/* t of object o along the pixel's ray by the world-space kernel; a kernel
- * miss (the two tests may disagree by a rounding at a silhouette) counts
- * as infinitely far. */
-static num_t render_depth(const render_t *r, const ro_t *o, const ray_t *ray)
+#if FXRT_NUMBER == FXRT_Q16
+/* The top 31 bits of v > 0 (v < 2^128), their exponent added to *e. */
+static uint32_t render_top31(uint64_t hi, uint64_t lo, int *e)
 {
-    const world_t *w = r->world;
-    num_t t = NUM_MAX;
-    bool hit = false;
-    switch (o->geom) {
-    case GEOM_PLANE:
-#if FXRT_MAX_PLANES > 0
-        hit = geom_plane_hit(&w->planes[o->index], ray, &t);
-#endif
-        break;
-    case GEOM_SPHERE:
-#if FXRT_MAX_SPHERES > 0
-        hit = geom_sphere_hit(&w->spheres[o->index], ray, &t);
-#endif
-        break;
-    case GEOM_TRIANGLE:
-#if FXRT_MAX_TRIANGLES > 0
-        hit = geom_triangle_hit(&w->triangles[o->index], ray, &t);
-#endif
-        break;
-    case GEOM_BOX:
-#if FXRT_MAX_BOXES > 0
-        hit = geom_box_hit(&w->boxes[o->index], ray, &t);
-#endif
-        break;
+    int b = hi ? 128 - __builtin_clzll(hi) : (lo ? 64 - __builtin_clzll(lo) : 0);
+    if (b == 0)
+        return 0;
+    *e += b - 31;
+    if (b <= 31)
+        return (uint32_t)(lo << (31 - b));
+    int s = b - 31; /* truncating right shift by s (1..97) */
+    if (s >= 64)
+        return (uint32_t)(hi >> (s - 64));
+    return (uint32_t)((lo >> s) | (hi << 1 << (63 - s)));
+}
+
+/* t = n / d * 2^e for n >= 0 and d > 0 (d = 0 cannot occur at a covered
+ * pixel; it would give the far depth). */
+static render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e)
+{
+    int en = 0, ed = 0;
+    render_depth_t t;
+    t.n = render_top31(n_hi, n_lo, &en);
+    t.d = render_top31(0, d, &ed);
+    t.e = e + en - ed;
+    if (t.d == 0) {
+        t.n = t.d = 1u << 30;
+        t.e = INT32_MAX / 2;
+    } else if (t.n == 0) {
+        t.d = 1u << 30;
+        t.e = 0;
     }
-    (void)w;
-    return hit ? t : NUM_MAX;
+    return t;
 }
 
-/* Two objects cover column x: the nearer keeps it (ties: lower scene id).
- * Depth needs the pixel's world-space ray, so this is the slow path. */
-static __attribute__((noinline)) uint16_t render_nearer(const render_t *r, uint16_t cur, uint16_t oi, int32_t x,
-                                                        int32_t y)
+/* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
+ * alone; otherwise 31 x 31-bit products (below 2^63 after one doubling). */
+static bool render_depth_less(render_depth_t a, render_depth_t b)
 {
-    ray_t ray;
-    cam_ray(r->cam, x, y, &ray);
-    const ro_t *a = &r->obj[cur], *b = &r->obj[oi];
-    num_t ta = render_depth(r, a, &ray), tb = render_depth(r, b, &ray);
-    return (tb < ta || (tb == ta && b->id < a->id)) ? oi : cur;
+    if (a.n == 0 || b.n == 0)
+        return a.n == 0 && b.n != 0;
+    int32_t de = a.e - b.e;
+    if (de >= 2)
+        return false;
+    if (de <= -2)
+        return true;
+    uint64_t l = (uint64_t)a.n * b.d, g = (uint64_t)b.n * a.d;
+    if (de == 1)
+        l <<= 1;
+    else if (de == -1)
+        g <<= 1;
+    return l < g;
 }
 
-/* Record that object oi covers column x and paint it if it is the nearest
- * so far. The result does not depend on the order of calls, so both loops
- * agree. */
-static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t y, uint8_t *rgb)
+static const render_depth_t render_depth_far = {1u << 30, 1u << 30, INT32_MAX / 2};
+
+static uint64_t render_uabs(rk_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
+
+static render_depth_t render_flat_depth(const rflat_t *f, rk_t n, rk_t d)
 {
-    uint32_t tag = (uint32_t)r->stamp << 16;
-    uint32_t cur = r->owner[x];
-    uint16_t win = oi;
-    if ((cur & 0xFFFF0000u) == tag) {
-        if ((uint16_t)cur == oi)
-            return;
-        win = render_nearer(r, (uint16_t)cur, oi, x, y);
-        if (win == (uint16_t)cur)
-            return;
+    return render_depth_make(0, render_uabs(n), render_uabs(d), f->te);
+}
+
+/* floor(sqrt(v)) to about 32 significant bits, v >= 0 (v < 2^127). */
+static uint64_t render_sqrt128(fx128_t v)
+{
+    if (v.hi < 0)
+        return 0;
+    int b = fx128_bits(v);
+    if (b <= 64)
+        return fx_isqrt64(v.lo);
+    int s = (b - 63) & ~1; /* even */
+    s = s < b - 64 ? s + 2 : s;
+    uint64_t top = s >= 64 ? (uint64_t)v.hi >> (s - 64) : (v.lo >> s) | ((uint64_t)v.hi << (64 - s));
+    return (uint64_t)fx_isqrt64(top) << (s / 2);
+}
+
+static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy, rk_t b, rsw_t c, rsw_t disc)
+{
+    uint64_t s = render_sqrt128(disc);
+    if (!rsw_neg(c)) /* outside: the near root, b > 0 */
+        return render_depth_make((uint64_t)c.hi, c.lo, (uint64_t)b + s, o->u.sphere.tc);
+    if (b < 0) { /* inside, looking away from the centre: (-c) / (s - b) */
+        fx128_t nc = fx128_neg(c);
+        return render_depth_make((uint64_t)nc.hi, nc.lo, s + (0 - (uint64_t)b), o->u.sphere.tc);
     }
-    r->owner[x] = tag | win;
-    rgb8_t c = r->obj[win].rgb;
-    rgb[3 * x + 0] = c.r;
-    rgb[3 * x + 1] = c.g;
-    rgb[3 * x + 2] = c.b;
+    rk_t a = o->u.sphere.ortho ? 1 : rquad_at(&o->u.sphere.a, ix, iy);
+    return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere.ta);
+}
+#else
+static bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
+static const render_depth_t render_depth_far = {NUM_MAX};
+static render_depth_t render_flat_depth(const rflat_t *f, rk_t n, rk_t d)
+{
+    (void)f;
+    render_depth_t t = {num_div(n, d)};
+    return t;
+}
+static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy, rk_t b, rsw_t c, rsw_t disc)
+{
+    num_t s = num_sqrt(disc);
+    render_depth_t t;
+    if (!(c < 0))
+        t.t = num_div(c, b + s);
+    else if (b < 0)
+        t.t = num_div(-c, s - b);
+    else
+        t.t = num_div(b + s, o->u.sphere.ortho ? NUM_ONE : rquad_at(&o->u.sphere.a, ix, iy));
+    return t;
+}
+#endif
+
+/* Depth of object o at a pixel it covers, from its forms evaluated there. */
+static render_depth_t render_depth_at(const ro_t *o, int32_t ix, int32_t iy)
+{
+    if (o->kind == RO_SPHERE) {
+        rsw_t c, disc;
+        render_sphere_cd(o, ix, iy, &c, &disc);
+        return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere.b, ix, iy), c, disc);
+    }
+    /* Flat pieces: the nearest face that covers the pixel. */
+    render_depth_t best = render_depth_far;
+    for (int i = 0; i < o->nflat; i++) {
+        const rflat_t *f = &o->u.flat[i];
+        if (!render_flat_at(f, ix, iy))
+            continue;
+        render_depth_t t = render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
+        if (render_depth_less(t, best))
+            best = t;
+    }
+    return best;
 }
 
-/* Paint column x for an object that no other object can reach on this
- * row: no owner bookkeeping needed. */
+/* Owner entries: stamp (15 bits) << 17 | depth-known bit << 16 | object. */
+#define RENDER_DEPTH_KNOWN 0x10000u
+#define RENDER_STAMP_SHIFT 17
+#define RENDER_STAMP_LIMIT 0x8000u
+
+/* Object oi, at depth tb, also covers column x, owned so far by the entry
+ * cur: the nearer keeps it (ties: lower scene id). The owner's depth is
+ * computed once per column and kept next to it. Returns true when oi wins. */
+static bool render_settle(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_depth_t tb)
+{
+    uint16_t ci = (uint16_t)cur;
+    const ro_t *a = &r->obj[ci];
+    render_depth_t ta =
+        (cur & RENDER_DEPTH_KNOWN) ? r->depth[x] : render_depth_at(a, 2 * x - r->cam->width + 1, iy);
+    bool win = render_depth_less(tb, ta) || (!render_depth_less(ta, tb) && r->obj[oi].id < a->id);
+    r->depth[x] = win ? tb : ta;
+    r->owner[x] = (cur & ~0x1FFFFu) | RENDER_DEPTH_KNOWN | (win ? oi : ci);
+    return win;
+}
+
+/* The newcomer's depth from its forms evaluated at the pixel. */
+static __attribute__((noinline)) bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
+{
+    return render_settle(r, cur, oi, x, iy, render_depth_at(&r->obj[oi], 2 * x - r->cam->width + 1, iy));
+}
+
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+/* The newcomer's depth from the values the scanline loop stepped. */
+static __attribute__((noinline)) bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x,
+                                                          int32_t iy, const rflat_t *f, rk_t n, rk_t d)
+{
+    return render_settle(r, cur, oi, x, iy, render_flat_depth(f, n, d));
+}
+static __attribute__((noinline)) bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x,
+                                                            int32_t iy, rk_t b, rsw_t c, rsw_t disc)
+{
+    const ro_t *o = &r->obj[oi];
+    return render_settle(r, cur, oi, x, iy, render_sphere_depth(o, 2 * x - r->cam->width + 1, iy, b, c, disc));
+}
+#endif
+
+/* Claim column x for object oi: free columns are taken at once, a column
+ * owned by another object goes to the nearer (RESOLVE, which may use cur_),
+ * and the pixel is painted when oi wins. */
+#define RENDER_COVER(r, oi, x, rgb, RESOLVE)                                         \
+    do {                                                                         \
+        uint32_t tag_ = (uint32_t)(r)->stamp << RENDER_STAMP_SHIFT, cur_ = (r)->owner[x]; \
+        if ((cur_ & ~0x1FFFFu) != tag_)                                          \
+            (r)->owner[x] = tag_ | (oi);                                         \
+        else if ((uint16_t)cur_ == (oi) || !(RESOLVE))                           \
+            break;                                                               \
+        render_paint(r, oi, x, rgb);                                             \
+    } while (0)
+
+/* Paint column x in object oi's colour. */
 static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
     rgb8_t c = r->obj[oi].rgb;
@@ -815,20 +952,29 @@ static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8
     rgb[3 * x + 2] = c.b;
 }
 
-/* A hit at column x: paint directly when the object is alone on the row. */
-#define RENDER_HIT(r, oi, x, y, rgb, lone)                                     \
+/* Record that object oi covers column x and paint it if it is the nearest
+ * so far. The result does not depend on the order of calls (depth, then
+ * id, order objects totally), so both loops agree. */
+static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t iy, uint8_t *rgb)
+{
+    RENDER_COVER(r, oi, x, rgb, render_resolve(r, cur_, oi, x, iy));
+}
+
+/* A hit at column x: paint directly when the object is alone on the row
+ * (no other object's bounds reach it, so no bookkeeping). */
+#define RENDER_HIT(r, oi, x, iy, rgb, lone)                                    \
     do {                                                                       \
         if (lone)                                                              \
             render_paint(r, oi, x, rgb);                                       \
         else                                                                   \
-            render_cover(r, oi, x, y, rgb);                                    \
+            render_cover(r, oi, x, iy, rgb);                                   \
     } while (0)
 
 /* Start a row: a new stamp (so every column is uncovered) and the
  * background in every pixel, four pixels (12 bytes) per copy. */
 static void render_begin_row(render_t *r, uint8_t *rgb)
 {
-    if (++r->stamp == 0) {
+    if (++r->stamp == RENDER_STAMP_LIMIT) {
         for (int32_t x = 0; x < r->cam->width; x++)
             r->owner[x] = 0;
         r->stamp = 1;
@@ -872,7 +1018,7 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
             if (FXRT_NO_HOIST)
                 render_setup_object(r, i);
             if (render_covers(&r->obj[i], ix, iy))
-                render_cover(r, i, x, y, rgb);
+                render_cover(r, i, x, iy, rgb);
         }
     }
 }
@@ -883,16 +1029,21 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
 /* Step a flat piece across columns x0..x1: each form is linear, so one
  * exact 64-bit addition per form and pixel. */
 static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t x0, int32_t x1, int32_t iy,
-                             int32_t y, uint8_t *rgb, bool lone)
+                             uint8_t *rgb, bool lone)
 {
+    bool single = r->obj[oi].kind == RO_FLAT;
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     uint64_t n = (uint64_t)rlin_at(&f->n, ix0, iy), d = (uint64_t)rlin_at(&f->d, ix0, iy);
     uint64_t sn = 2 * (uint64_t)f->n.x, sd = 2 * (uint64_t)f->d.x;
     int edges = f->edges;
     if (edges == 0) { /* a plane */
         for (int32_t x = x0; x <= x1; x++) {
-            if (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0))
-                RENDER_HIT(r, oi, x, y, rgb, lone);
+            if (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0)) {
+                if (lone)
+                    render_paint(r, oi, x, rgb);
+                else
+                    RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (rk_t)n, (rk_t)d));
+            }
             n += sn;
             d += sd;
         }
@@ -910,8 +1061,14 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
     for (int32_t x = x0; x <= x1; x++) {
         bool in = (rk_t)(e[0] | e[1] | e[2] | e[3]) >= 0 ||
                   ((rk_t)e[0] <= 0 && (rk_t)e[1] <= 0 && (rk_t)e[2] <= 0 && (rk_t)e[3] <= 0);
-        if (in && (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0)))
-            RENDER_HIT(r, oi, x, y, rgb, lone);
+        if (in && (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0))) {
+            if (lone)
+                render_paint(r, oi, x, rgb);
+            else if (single) /* a box's depth is the nearest of its faces there */
+                RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (rk_t)n, (rk_t)d));
+            else
+                render_cover(r, oi, x, iy, rgb);
+        }
         n += sn;
         d += sd;
         e[0] += se[0];
@@ -927,7 +1084,7 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
  * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the row:
  * in perspective c is, in orthographic b is, and c < 0 implies disc > 0. */
 static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t x0, int32_t x1, int32_t iy,
-                               int32_t y, uint8_t *rgb, bool lone)
+                               uint8_t *rgb, bool lone)
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     fx128_t c[3], q[3];
@@ -936,22 +1093,38 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
     bool ortho = render_ortho(r->cam);
     if (!ortho && rsw_neg(c[0])) { /* eye inside: every pixel */
         for (int32_t x = x0; x <= x1; x++)
-            RENDER_HIT(r, oi, x, y, rgb, lone);
+            RENDER_HIT(r, oi, x, iy, rgb, lone);
         return;
     }
     bool use_c = ortho && !(o->u.sphere.b.c > 0);
     fx128_t *f = use_c ? c : q;
     fx128_t v = f[0], d1 = fx128_sub(f[1], f[0]), d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
     if (ortho) {
-        for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2))
-            if (use_c ? v.hi < 0 : v.hi >= 0)
-                RENDER_HIT(r, oi, x, y, rgb, lone);
+        /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
+        fx128_t kr = fx128_add(o->u.sphere.k, o->u.sphere.r2);
+        rk_t b = o->u.sphere.b.c;
+        for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
+            if (!(use_c ? v.hi < 0 : v.hi >= 0))
+                continue;
+            if (lone)
+                render_paint(r, oi, x, rgb);
+            else
+                RENDER_COVER(r, oi, x, rgb,
+                             render_resolve_sphere(r, cur_, oi, x, iy, b, use_c ? v : fx128_sub(kr, v),
+                                                   use_c ? fx128_sub(kr, v) : v));
+        }
         return;
     }
     uint64_t b = (uint64_t)rlin_at(&o->u.sphere.b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere.b.x;
-    for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2))
-        if ((rk_t)b > 0 && v.hi >= 0)
-            RENDER_HIT(r, oi, x, y, rgb, lone);
+    fx128_t k = o->u.sphere.k;
+    for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
+        if (!((rk_t)b > 0 && v.hi >= 0))
+            continue;
+        if (lone)
+            render_paint(r, oi, x, rgb);
+        else
+            RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (rk_t)b, k, v));
+    }
 }
 #endif
 
@@ -995,20 +1168,20 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         switch (o->kind) {
         case RO_ALL:
             for (int32_t x = x0; x <= x1; x++)
-                RENDER_HIT(r, i, x, y, rgb, lone);
+                RENDER_HIT(r, i, x, iy, rgb, lone);
             break;
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
         case RO_SPHERE:
-            render_scan_sphere(r, i, o, x0, x1, iy, y, rgb, lone);
+            render_scan_sphere(r, i, o, x0, x1, iy, rgb, lone);
             break;
         case RO_FLAT:
         case RO_BOX:
             for (int k = 0; k < o->nflat; k++) {
                 const rflat_t *f = &o->u.flat[k];
                 if (FXRT_NO_BOUNDS)
-                    render_scan_flat(r, i, f, 0, w - 1, iy, y, rgb, lone);
+                    render_scan_flat(r, i, f, 0, w - 1, iy, rgb, lone);
                 else if (row >= f->r0 && row <= f->r1)
-                    render_scan_flat(r, i, f, f->x0, f->x1, iy, y, rgb, lone);
+                    render_scan_flat(r, i, f, f->x0, f->x1, iy, rgb, lone);
             }
             break;
 #else
@@ -1017,7 +1190,7 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
              * additions would accumulate rounding error across the row. */
             for (int32_t x = x0, ix = 2 * x0 - w + 1; x <= x1; x++, ix += 2)
                 if (render_covers(o, ix, iy))
-                    RENDER_HIT(r, i, x, y, rgb, lone);
+                    RENDER_HIT(r, i, x, iy, rgb, lone);
             break;
 #endif
         }

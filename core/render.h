@@ -75,6 +75,7 @@ typedef struct {
     rlin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
     rlin_t e[4];  /* edge forms */
     uint8_t edges;
+    int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
     int16_t x0, x1, r0, r1; /* this piece's own pixel bounds (a box face's) */
 } rflat_t;
 
@@ -98,9 +99,10 @@ typedef struct {
              * Orthographic: p = the offsets of the ray from the centre
              * across the view, pz = 0, a = 1, c = k + px^2 + py^2.
              * Q16.16: pieces below 2^62, squares and sums exact in 128 bits. */
-            rlin_t b, px, py, pz;
+            rlin_t b, px, py, pz; /* b shares the p pieces' scale */
             rquad_t a;
             bool ortho;
+            int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
 #if FXRT_NUMBER == FXRT_Q16
             fx128_t k, r2;
 #else
@@ -111,6 +113,19 @@ typedef struct {
     } u;
 } ro_t;
 
+/* A depth (ray parameter along the camera-space ray): Q16.16 keeps
+ * t = n / d * 2^e with n, d in [2^30, 2^31) (n = 0: t = 0). */
+#if FXRT_NUMBER == FXRT_Q16
+typedef struct {
+    uint32_t n, d;
+    int32_t e;
+} render_depth_t;
+#else
+typedef struct {
+    num_t t;
+} render_depth_t;
+#endif
+
 typedef struct {
     const world_t *world;
     const cam_t *cam;
@@ -120,6 +135,8 @@ typedef struct {
      * column whose stamp is not the current row's is uncovered, so rows
      * need no clearing pass. */
     uint32_t owner[FXRT_RENDER_MAX_WIDTH];
+    /* Per column: the owner's depth, where a second object has asked. */
+    render_depth_t depth[FXRT_RENDER_MAX_WIDTH];
     uint16_t stamp;
 } render_t;
 
