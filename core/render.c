@@ -23,6 +23,13 @@
 #ifndef FXRT_NO_HOIST
 #define FXRT_NO_HOIST 0
 #endif
+#ifndef FXRT_NO_ZRANGE
+#define FXRT_NO_ZRANGE 0
+#endif
+
+#if FXRT_NUMBER == FXRT_Q16
+static render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
+#endif
 
 /* Set-up helpers that a build without some primitive kind does not call. */
 #define RENDER_MAYBE_UNUSED __attribute__((unused))
@@ -421,10 +428,39 @@ RENDER_MAYBE_UNUSED static void render_set_bounds(const cam_t *cam, const rbox_t
     o->r1 = (int16_t)(h - 1 - render_clamp(y0, 0, h - 1));
 }
 
+/* The depth range of an object inside the camera-space points p: a hit
+ * at camera-space z has t = -z / F (orthographic: -z), so the points' z
+ * range bounds t. A margin covers the rounding of the corners and of the
+ * forms, so that every depth the forms give lies strictly inside. */
+RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t *p, int n, ro_t *o)
+{
+    num_t zlo = p[0].z, zhi = p[0].z;
+    for (int i = 1; i < n; i++) {
+        zlo = num_min(zlo, p[i].z);
+        zhi = num_max(zhi, p[i].z);
+    }
+    num_t f = render_ortho(cam) ? NUM_ONE : cam->focal;
+#if FXRT_NUMBER == FXRT_Q16
+    int64_t near = -(int64_t)zhi, far = -(int64_t)zlo;
+    near -= 64 + (near > 0 ? near >> 12 : 0);
+    far += 64 + (far > 0 ? far >> 12 : 0);
+    o->tlo = render_depth_make(0, near > 0 ? (uint64_t)near : 0, (uint64_t)f, 0);
+    o->thi = far > 0 ? render_depth_make(0, (uint64_t)far, (uint64_t)f, 0) : o->tlo;
+#else
+    num_t near = -zhi, far = -zlo;
+    near = near - NUM(1e-3) - num_abs(near) * NUM(1e-3);
+    far = far + NUM(1e-3) + num_abs(far) * NUM(1e-3);
+    o->tlo.t = near > 0 ? near / f : NUM_ZERO;
+    o->thi.t = far > 0 ? far / f : NUM_ZERO;
+#endif
+    o->ranged = true;
+}
+
 /* Bounds of camera-space points that are all in front in perspective;
  * straddling sets get the whole screen, sets wholly behind are empty. */
 RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, ro_t *o)
 {
+    render_set_zrange(cam, p, n, o);
     int front = 0, behind = 0;
     for (int i = 0; i < n; i++) {
         if (p[i].z < NUM_ZERO)
@@ -715,6 +751,7 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
     o->index = index;
     o->id = c->id;
     o->rgb = c->rgb;
+    o->ranged = false;
     render_setup_object(r, i);
 }
 
@@ -725,6 +762,12 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     r->world = w;
     r->cam = cam;
     r->count = 0;
+    r->row_win = 0;
+#if FXRT_MAX_PLANES > 0
+    r->nplanes = w->n_planes;
+#else
+    r->nplanes = 0;
+#endif
     for (int32_t x = 0; x < cam->width; x++)
         r->owner[x] = 0;
     r->stamp = 0;
@@ -894,39 +937,115 @@ static render_depth_t render_depth_at(const ro_t *o, int32_t ix, int32_t iy)
 #define RENDER_STAMP_SHIFT 17
 #define RENDER_STAMP_LIMIT 0x8000u
 
-/* Object oi, at depth tb, also covers column x, owned so far by the entry
- * cur: the nearer keeps it (ties: lower scene id). The owner's depth is
- * computed once per column and kept next to it. Returns true when oi wins. */
-static bool render_settle(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_depth_t tb)
+/* How to get a newcomer's depth when it is needed: from the values the
+ * scanline loop stepped (a flat piece's N and D, a sphere's b, c, disc) or
+ * from its forms evaluated at the pixel. */
+typedef struct {
+    enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_SPHERE } how;
+    const rflat_t *f;
+    rk_t n, d, b;
+    rsw_t c, disc;
+} render_raw_t;
+
+static render_depth_t render_raw_depth(const ro_t *o, int32_t ix, int32_t iy, const render_raw_t *raw)
+{
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+    if (raw->how == RENDER_RAW_FLAT)
+        return render_flat_depth(raw->f, raw->n, raw->d);
+    if (raw->how == RENDER_RAW_SPHERE)
+        return render_sphere_depth(o, ix, iy, raw->b, raw->c, raw->disc);
+#else
+    (void)raw;
+#endif
+    return render_depth_at(o, ix, iy);
+}
+
+/* Object oi also covers column x, owned so far by the entry cur: the
+ * nearer keeps it (ties: lower scene id). A depth, once computed, is kept
+ * next to the owner. Depths are only computed when the objects' depth
+ * ranges (render_setup: from their camera-space z, with a margin) do not
+ * already decide. Returns true when oi wins. */
+static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy,
+                                                    const render_raw_t *raw)
 {
     uint16_t ci = (uint16_t)cur;
-    const ro_t *a = &r->obj[ci];
-    render_depth_t ta =
-        (cur & RENDER_DEPTH_KNOWN) ? r->depth[x] : render_depth_at(a, 2 * x - r->cam->width + 1, iy);
-    bool win = render_depth_less(tb, ta) || (!render_depth_less(ta, tb) && r->obj[oi].id < a->id);
+    const ro_t *a = &r->obj[ci], *b = &r->obj[oi];
+    int32_t ix = 2 * x - r->cam->width + 1;
+    uint32_t stamp = cur & ~0x1FFFFu;
+    if (ci < 32 && ((r->row_win >> ci) & 1u)) { /* oi is nearer than plane ci all along this row */
+        r->owner[x] = stamp | oi;
+        return true;
+    }
+    bool known = (cur & RENDER_DEPTH_KNOWN) != 0;
+    if (!FXRT_NO_ZRANGE && !known && a->ranged && b->ranged) {
+        if (render_depth_less(a->thi, b->tlo))
+            return false;
+        if (render_depth_less(b->thi, a->tlo)) {
+            r->owner[x] = stamp | oi;
+            return true;
+        }
+    }
+    render_depth_t ta, tb;
+    if (known || FXRT_NO_ZRANGE || !a->ranged) {
+        ta = known ? r->depth[x] : render_depth_at(a, ix, iy);
+        if (!FXRT_NO_ZRANGE && b->ranged) {
+            if (render_depth_less(ta, b->tlo)) {
+                r->depth[x] = ta;
+                r->owner[x] = stamp | RENDER_DEPTH_KNOWN | ci;
+                return false;
+            }
+            if (render_depth_less(b->thi, ta)) {
+                r->owner[x] = stamp | oi;
+                return true;
+            }
+        }
+        tb = render_raw_depth(b, ix, iy, raw);
+    } else {
+        tb = render_raw_depth(b, ix, iy, raw);
+        if (render_depth_less(a->thi, tb))
+            return false;
+        if (render_depth_less(tb, a->tlo)) {
+            r->depth[x] = tb;
+            r->owner[x] = stamp | RENDER_DEPTH_KNOWN | oi;
+            return true;
+        }
+        ta = render_depth_at(a, ix, iy);
+    }
+    bool win = render_depth_less(tb, ta) || (!render_depth_less(ta, tb) && b->id < a->id);
     r->depth[x] = win ? tb : ta;
-    r->owner[x] = (cur & ~0x1FFFFu) | RENDER_DEPTH_KNOWN | (win ? oi : ci);
+    r->owner[x] = stamp | RENDER_DEPTH_KNOWN | (win ? oi : ci);
     return win;
 }
 
 /* The newcomer's depth from its forms evaluated at the pixel. */
-static __attribute__((noinline)) bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
+static bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
 {
-    return render_settle(r, cur, oi, x, iy, render_depth_at(&r->obj[oi], 2 * x - r->cam->width + 1, iy));
+    render_raw_t raw;
+    raw.how = RENDER_RAW_AT;
+    return render_settle(r, cur, oi, x, iy, &raw);
 }
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* The newcomer's depth from the values the scanline loop stepped. */
-static __attribute__((noinline)) bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x,
-                                                          int32_t iy, const rflat_t *f, rk_t n, rk_t d)
+static bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const rflat_t *f,
+                                rk_t n, rk_t d)
 {
-    return render_settle(r, cur, oi, x, iy, render_flat_depth(f, n, d));
+    render_raw_t raw;
+    raw.how = RENDER_RAW_FLAT;
+    raw.f = f;
+    raw.n = n;
+    raw.d = d;
+    return render_settle(r, cur, oi, x, iy, &raw);
 }
-static __attribute__((noinline)) bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x,
-                                                            int32_t iy, rk_t b, rsw_t c, rsw_t disc)
+static bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, rk_t b, rsw_t c,
+                                  rsw_t disc)
 {
-    const ro_t *o = &r->obj[oi];
-    return render_settle(r, cur, oi, x, iy, render_sphere_depth(o, 2 * x - r->cam->width + 1, iy, b, c, disc));
+    render_raw_t raw;
+    raw.how = RENDER_RAW_SPHERE;
+    raw.b = b;
+    raw.c = c;
+    raw.disc = disc;
+    return render_settle(r, cur, oi, x, iy, &raw);
 }
 #endif
 
@@ -1012,6 +1131,7 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
     int32_t w = r->cam->width, y = r->cam->height - 1 - row;
     int32_t iy = 2 * y - r->cam->height + 1;
     render_begin_row(r, rgb);
+    r->row_win = 0;
     for (int32_t x = 0; x < w; x++) {
         int32_t ix = 2 * x - w + 1;
         for (uint16_t i = 0; i < r->count; i++) {
@@ -1128,6 +1248,75 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
 }
 #endif
 
+/* t scaled by (1 + 2^-20) (up) or (1 - 2^-20): a margin for the 31-bit
+ * truncation of depths between the ends of a segment. */
+static render_depth_t render_depth_widen(render_depth_t t, bool up)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    if (t.n == 0)
+        return t;
+    if (up) {
+        t.n = (t.n >> 1) + (t.n >> 21) + 1; /* stays below 2^31 */
+        t.e += 1;
+    } else {
+        t.n = t.n - (t.n >> 20) - 1;
+    }
+#else
+    t.t = up ? t.t * NUM(1.0001) : t.t * NUM(0.9999);
+#endif
+    return t;
+}
+
+/* Depth range of plane p over columns x0..x1 of row iy when it covers both
+ * ends with one sign of N and D: then it covers the whole segment and its
+ * t = N / D is monotone there. */
+static bool render_plane_range(const render_t *r, const ro_t *p, int32_t x0, int32_t x1, int32_t iy,
+                               render_depth_t *lo, render_depth_t *hi)
+{
+    const rflat_t *f = &p->u.flat[0];
+    int32_t w = r->cam->width;
+    rk_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
+    rk_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
+    if (!((na > 0 && da > 0 && nb > 0 && db > 0) || (na < 0 && da < 0 && nb < 0 && db < 0)))
+        return false;
+    render_depth_t ta = render_flat_depth(f, na, da), tb = render_flat_depth(f, nb, db);
+    bool a_first = render_depth_less(ta, tb);
+    *lo = render_depth_widen(a_first ? ta : tb, false);
+    *hi = render_depth_widen(a_first ? tb : ta, true);
+    return true;
+}
+
+static bool render_is_plane(const ro_t *o) { return o->kind == RO_FLAT && o->u.flat[0].edges == 0; }
+
+/* Depth order against the planes on this row, for object i over its
+ * columns x0..x1: r->row_win gets bit j when i is nearer than plane j
+ * wherever both cover (no depth needed there); returns false when a plane
+ * covers the whole segment nearer than i (i is hidden on this row). */
+static bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy)
+{
+    const ro_t *o = &r->obj[i];
+    render_depth_t blo, bhi;
+    r->row_win = 0;
+    if (o->ranged) {
+        blo = o->tlo;
+        bhi = o->thi;
+    } else if (!render_is_plane(o) || !render_plane_range(r, o, x0, x1, iy, &blo, &bhi)) {
+        return true;
+    }
+    uint16_t n = r->nplanes < 32 ? r->nplanes : 32;
+    for (uint16_t j = 0; j < n; j++) {
+        render_depth_t plo, phi;
+        const ro_t *p = &r->obj[j];
+        if (j == i || p->r0 > p->r1 || !render_plane_range(r, p, x0, x1, iy, &plo, &phi))
+            continue;
+        if (render_depth_less(bhi, plo))
+            r->row_win |= 1u << j;
+        else if (render_depth_less(phi, blo))
+            return false;
+    }
+    return true;
+}
+
 /* Is object i the only one whose bounds reach columns x0..x1 on this row?
  * Then nothing can compete for its pixels. (Only checked for small worlds;
  * a large one simply takes the owner path.) */
@@ -1165,6 +1354,9 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
                 continue;
         }
         bool lone = !FXRT_NO_LONE && render_alone(r, i, row);
+        r->row_win = 0;
+        if (!FXRT_NO_ZRANGE && !lone && r->nplanes && !render_row_order(r, i, x0, x1, iy))
+            continue;
         switch (o->kind) {
         case RO_ALL:
             for (int32_t x = x0; x <= x1; x++)

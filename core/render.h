@@ -79,6 +79,19 @@ typedef struct {
     int16_t x0, x1, r0, r1; /* this piece's own pixel bounds (a box face's) */
 } rflat_t;
 
+/* A depth (ray parameter along the camera-space ray): Q16.16 keeps
+ * t = n / d * 2^e with n, d in [2^30, 2^31) (n = 0: t = 0). */
+#if FXRT_NUMBER == FXRT_Q16
+typedef struct {
+    uint32_t n, d;
+    int32_t e;
+} render_depth_t;
+#else
+typedef struct {
+    num_t t;
+} render_depth_t;
+#endif
+
 typedef enum { RO_SPHERE, RO_FLAT, RO_BOX, RO_ALL } ro_kind_t;
 
 typedef struct {
@@ -90,6 +103,8 @@ typedef struct {
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
     uint8_t nflat;     /* RO_FLAT: 1, RO_BOX: visible faces */
+    bool ranged;       /* tlo, thi bound its depth (not for planes) */
+    render_depth_t tlo, thi;
     union {
         struct {
             /* disc = r2 a - (px^2 + py^2 + pz^2) and c: with the eye at o,
@@ -113,19 +128,6 @@ typedef struct {
     } u;
 } ro_t;
 
-/* A depth (ray parameter along the camera-space ray): Q16.16 keeps
- * t = n / d * 2^e with n, d in [2^30, 2^31) (n = 0: t = 0). */
-#if FXRT_NUMBER == FXRT_Q16
-typedef struct {
-    uint32_t n, d;
-    int32_t e;
-} render_depth_t;
-#else
-typedef struct {
-    num_t t;
-} render_depth_t;
-#endif
-
 typedef struct {
     const world_t *world;
     const cam_t *cam;
@@ -138,6 +140,8 @@ typedef struct {
     /* Per column: the owner's depth, where a second object has asked. */
     render_depth_t depth[FXRT_RENDER_MAX_WIDTH];
     uint16_t stamp;
+    uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
+    uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
 } render_t;
 
 /* Per-frame set-up: camera-space forms and screen bounds of every object.
