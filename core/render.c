@@ -210,20 +210,20 @@ static bool render_flat_at(const rflat_t *f, int32_t ix, int32_t iy)
 
 static void render_sphere_cd(const ro_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
 {
-    rk_t a = rquad_at(&o->u.sphere.a, ix, iy);
-    rk_t px = rlin_at(&o->u.sphere.px, ix, iy), py = rlin_at(&o->u.sphere.py, ix, iy),
-         pz = rlin_at(&o->u.sphere.pz, ix, iy);
-    bool ortho = o->u.sphere.ortho;
+    rk_t a = rquad_at(o->u.sphere->a, ix, iy);
+    rk_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
+         pz = rlin_at(&o->u.sphere->pz, ix, iy);
+    bool ortho = o->u.sphere->ortho;
 #if FXRT_NUMBER == FXRT_Q16
     fx128_t sq = fx128_add(fx128_add(fx128_mul(px, px), fx128_mul(py, py)), fx128_mul(pz, pz));
     /* Orthographic: a = 1 exactly and r2 may use all 128 bits. */
-    fx128_t r2a = ortho ? o->u.sphere.r2 : fx128_mul(a, fx128_shr_round(o->u.sphere.r2, 0));
+    fx128_t r2a = ortho ? o->u.sphere->r2 : fx128_mul(a, fx128_shr_round(o->u.sphere->r2, 0));
     *disc_out = fx128_sub(r2a, sq);
-    *c_out = ortho ? fx128_add(o->u.sphere.k, sq) : o->u.sphere.k;
+    *c_out = ortho ? fx128_add(o->u.sphere->k, sq) : o->u.sphere->k;
 #else
     rk_t sq = px * px + py * py + pz * pz;
-    *disc_out = o->u.sphere.r2 * a - sq;
-    *c_out = ortho ? o->u.sphere.k + sq : o->u.sphere.k;
+    *disc_out = o->u.sphere->r2 * a - sq;
+    *c_out = ortho ? o->u.sphere->k + sq : o->u.sphere->k;
 #endif
 }
 
@@ -234,7 +234,7 @@ static bool render_covers(const ro_t *o, int32_t ix, int32_t iy)
     case RO_ALL:
         return true;
     case RO_SPHERE: {
-        rk_t b = rlin_at(&o->u.sphere.b, ix, iy);
+        rk_t b = rlin_at(&o->u.sphere->b, ix, iy);
         rsw_t c, disc;
         render_sphere_cd(o, ix, iy, &c, &disc);
         return render_sphere_vals(b, c, disc);
@@ -497,7 +497,7 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
     bool ortho = render_ortho(cam);
     (void)ext;
     o->kind = RO_SPHERE;
-    o->u.sphere.ortho = ortho;
+    o->u.sphere->ortho = ortho;
     if (ortho) {
         /* o = (su ix, sv iy, 0), r = (0, 0, -1): b = -cz, a = 1, the ray's
          * offset from the centre is (cx - su ix, cy - sv iy), so
@@ -550,33 +550,35 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
      * on tiny images the pieces' scales alone can leave it larger, and a
      * coarser kp (four times smaller r2 per step) fixes that. */
     int sr = 2 * kp - ka;
-    o->u.sphere.r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
-    while (!ortho && fx128_bits(o->u.sphere.r2) > RENDER_SPHERE_BITS) {
+    o->u.sphere->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    while (!ortho && fx128_bits(o->u.sphere->r2) > RENDER_SPHERE_BITS) {
         kp++;
         sr += 2;
-        o->u.sphere.r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+        o->u.sphere->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
     }
     int sk = 2 * kp - 48;
-    o->u.sphere.k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
-    o->u.sphere.b = rlin_scaled(b, kp);
-    o->u.sphere.a = rquad_scaled(a, ka);
+    o->u.sphere->k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
+    o->u.sphere->b = rlin_scaled(b, kp);
+    r->sphere_a = rquad_scaled(a, ka); /* the same for every sphere */
+    o->u.sphere->a = &r->sphere_a;
     /* b and sqrt(disc) are real * 2^(48 - kp), c is real * 2^(96 - 2 kp)
      * and a is real * 2^(48 - ka). */
-    o->u.sphere.tc = (int8_t)(kp - 48);
-    o->u.sphere.ta = (int8_t)(kp - ka);
-    o->u.sphere.px = rlin_scaled(px, kp);
-    o->u.sphere.py = rlin_scaled(py, kp);
-    o->u.sphere.pz = rlin_scaled(pz, kp);
+    o->u.sphere->tc = (int8_t)(kp - 48);
+    o->u.sphere->ta = (int8_t)(kp - ka);
+    o->u.sphere->px = rlin_scaled(px, kp);
+    o->u.sphere->py = rlin_scaled(py, kp);
+    o->u.sphere->pz = rlin_scaled(pz, kp);
 #else
-    o->u.sphere.b = rlin_scaled(b, 0);
-    o->u.sphere.a = rquad_scaled(a, 0);
-    o->u.sphere.px = rlin_scaled(px, 0);
-    o->u.sphere.py = rlin_scaled(py, 0);
-    o->u.sphere.pz = rlin_scaled(pz, 0);
-    o->u.sphere.k = k;
-    o->u.sphere.r2 = r2;
-    o->u.sphere.tc = 0;
-    o->u.sphere.ta = 0;
+    o->u.sphere->b = rlin_scaled(b, 0);
+    r->sphere_a = rquad_scaled(a, 0);
+    o->u.sphere->a = &r->sphere_a;
+    o->u.sphere->px = rlin_scaled(px, 0);
+    o->u.sphere->py = rlin_scaled(py, 0);
+    o->u.sphere->pz = rlin_scaled(pz, 0);
+    o->u.sphere->k = k;
+    o->u.sphere->r2 = r2;
+    o->u.sphere->tc = 0;
+    o->u.sphere->ta = 0;
 #endif
     /* Bounds. */
     if (!rc_is_neg(cc) && c.z >= rad) {
@@ -752,6 +754,28 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
     o->id = c->id;
     o->rgb = c->rgb;
     o->ranged = false;
+    switch (kind) {
+    case GEOM_PLANE:
+#if FXRT_MAX_PLANES > 0
+        o->u.flat = &r->flats[index];
+#endif
+        break;
+    case GEOM_SPHERE:
+#if FXRT_MAX_SPHERES > 0
+        o->u.sphere = &r->spheres[index];
+#endif
+        break;
+    case GEOM_TRIANGLE:
+#if FXRT_MAX_TRIANGLES > 0
+        o->u.flat = &r->flats[r->nplanes + index];
+#endif
+        break;
+    case GEOM_BOX:
+#if FXRT_MAX_BOXES > 0
+        o->u.flat = r->box_faces[index];
+#endif
+        break;
+    }
     render_setup_object(r, i);
 }
 
@@ -880,13 +904,13 @@ static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy,
 {
     uint64_t s = render_sqrt128(disc);
     if (!rsw_neg(c)) /* outside: the near root, b > 0 */
-        return render_depth_make((uint64_t)c.hi, c.lo, (uint64_t)b + s, o->u.sphere.tc);
+        return render_depth_make((uint64_t)c.hi, c.lo, (uint64_t)b + s, o->u.sphere->tc);
     if (b < 0) { /* inside, looking away from the centre: (-c) / (s - b) */
         fx128_t nc = fx128_neg(c);
-        return render_depth_make((uint64_t)nc.hi, nc.lo, s + (0 - (uint64_t)b), o->u.sphere.tc);
+        return render_depth_make((uint64_t)nc.hi, nc.lo, s + (0 - (uint64_t)b), o->u.sphere->tc);
     }
-    rk_t a = o->u.sphere.ortho ? 1 : rquad_at(&o->u.sphere.a, ix, iy);
-    return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere.ta);
+    rk_t a = o->u.sphere->ortho ? 1 : rquad_at(o->u.sphere->a, ix, iy);
+    return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere->ta);
 }
 #else
 static bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
@@ -906,7 +930,7 @@ static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy,
     else if (b < 0)
         t.t = num_div(-c, s - b);
     else
-        t.t = num_div(b + s, o->u.sphere.ortho ? NUM_ONE : rquad_at(&o->u.sphere.a, ix, iy));
+        t.t = num_div(b + s, o->u.sphere->ortho ? NUM_ONE : rquad_at(o->u.sphere->a, ix, iy));
     return t;
 }
 #endif
@@ -917,7 +941,7 @@ static render_depth_t render_depth_at(const ro_t *o, int32_t ix, int32_t iy)
     if (o->kind == RO_SPHERE) {
         rsw_t c, disc;
         render_sphere_cd(o, ix, iy, &c, &disc);
-        return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere.b, ix, iy), c, disc);
+        return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), c, disc);
     }
     /* Flat pieces: the nearest face that covers the pixel. */
     render_depth_t best = render_depth_far;
@@ -1216,13 +1240,13 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
             RENDER_HIT(r, oi, x, iy, rgb, lone);
         return;
     }
-    bool use_c = ortho && !(o->u.sphere.b.c > 0);
+    bool use_c = ortho && !(o->u.sphere->b.c > 0);
     fx128_t *f = use_c ? c : q;
     fx128_t v = f[0], d1 = fx128_sub(f[1], f[0]), d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
     if (ortho) {
         /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
-        fx128_t kr = fx128_add(o->u.sphere.k, o->u.sphere.r2);
-        rk_t b = o->u.sphere.b.c;
+        fx128_t kr = fx128_add(o->u.sphere->k, o->u.sphere->r2);
+        rk_t b = o->u.sphere->b.c;
         for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
             if (!(use_c ? v.hi < 0 : v.hi >= 0))
                 continue;
@@ -1235,8 +1259,8 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
         }
         return;
     }
-    uint64_t b = (uint64_t)rlin_at(&o->u.sphere.b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere.b.x;
-    fx128_t k = o->u.sphere.k;
+    uint64_t b = (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere->b.x;
+    fx128_t k = o->u.sphere->k;
     for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
         if (!((rk_t)b > 0 && v.hi >= 0))
             continue;

@@ -92,6 +92,25 @@ typedef struct {
 } render_depth_t;
 #endif
 
+/* A sphere's forms. disc = r2 a - (px^2 + py^2 + pz^2) and c: with the
+ * eye at o, centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
+ * (the same as b^2 - a c, without its cancellation).
+ * Perspective: p = C x r, a = |r|^2 (one form for every sphere), c = k =
+ * |C|^2 - R^2. Orthographic: p = the offsets of the ray from the centre
+ * across the view, pz = 0, a = 1, c = k + px^2 + py^2.
+ * Q16.16: pieces below 2^62, squares and sums exact in 128 bits. */
+typedef struct {
+    rlin_t b, px, py, pz; /* b shares the p pieces' scale */
+    const rquad_t *a;
+#if FXRT_NUMBER == FXRT_Q16
+    fx128_t k, r2;
+#else
+    rk_t k, r2;
+#endif
+    bool ortho;
+    int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
+} render_sphere_t;
+
 typedef enum { RO_SPHERE, RO_FLAT, RO_BOX, RO_ALL } ro_kind_t;
 
 typedef struct {
@@ -106,25 +125,8 @@ typedef struct {
     bool ranged;       /* tlo, thi bound its depth (not for planes) */
     render_depth_t tlo, thi;
     union {
-        struct {
-            /* disc = r2 a - (px^2 + py^2 + pz^2) and c: with the eye at o,
-             * centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
-             * (the same as b^2 - a c, without its cancellation).
-             * Perspective: p = C x r, a = |r|^2, c = k = |C|^2 - R^2.
-             * Orthographic: p = the offsets of the ray from the centre
-             * across the view, pz = 0, a = 1, c = k + px^2 + py^2.
-             * Q16.16: pieces below 2^62, squares and sums exact in 128 bits. */
-            rlin_t b, px, py, pz; /* b shares the p pieces' scale */
-            rquad_t a;
-            bool ortho;
-            int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
-#if FXRT_NUMBER == FXRT_Q16
-            fx128_t k, r2;
-#else
-            rk_t k, r2;
-#endif
-        } sphere;
-        rflat_t flat[6]; /* RO_BOX: its faces that can be hit (see render_setup_box) */
+        render_sphere_t *sphere; /* RO_SPHERE */
+        rflat_t *flat;           /* RO_FLAT: 1, RO_BOX and RO_ALL: nflat faces */
     } u;
 } ro_t;
 
@@ -133,6 +135,17 @@ typedef struct {
     const cam_t *cam;
     uint16_t count;
     ro_t obj[FXRT_RENDER_MAX_OBJECTS];
+    /* Per-kind records, sized by the per-kind capacities. */
+#if FXRT_MAX_SPHERES > 0
+    render_sphere_t spheres[FXRT_MAX_SPHERES];
+    rquad_t sphere_a; /* a = |r|^2, shared by every sphere */
+#endif
+#if FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES > 0
+    rflat_t flats[FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES]; /* one per plane or triangle */
+#endif
+#if FXRT_MAX_BOXES > 0
+    rflat_t box_faces[FXRT_MAX_BOXES][6];
+#endif
     /* Per column: (stamp << 16) | object of the nearest cover so far. A
      * column whose stamp is not the current row's is uncovered, so rows
      * need no clearing pass. */
