@@ -1,31 +1,10 @@
 /* render: per-frame set-up of camera-space coverage forms, and the two
  * scanline loops (fast and reference). See render.h for the method. */
+#include <stddef.h>
+
 #include "render.h"
 
 #define RO_NONE 0xFFFFu
-
-/* Ablation switches, for measuring what each optimisation saves (make
- * bench-ablation); each leaves the Q16.16 output unchanged:
- *   FXRT_NO_BOUNDS  step every object over the whole screen
- *   FXRT_NO_STEP    evaluate every form from scratch at each pixel
- *   FXRT_NO_LONE    always go through the owner bookkeeping
- *   FXRT_NO_HOIST   (reference loop) recompute each object's forms at
- *                   every pixel instead of once per frame */
-#ifndef FXRT_NO_BOUNDS
-#define FXRT_NO_BOUNDS 0
-#endif
-#ifndef FXRT_NO_STEP
-#define FXRT_NO_STEP 0
-#endif
-#ifndef FXRT_NO_LONE
-#define FXRT_NO_LONE 0
-#endif
-#ifndef FXRT_NO_HOIST
-#define FXRT_NO_HOIST 0
-#endif
-#ifndef FXRT_NO_ZRANGE
-#define FXRT_NO_ZRANGE 0
-#endif
 
 #if FXRT_NUMBER == FXRT_Q16
 static render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
@@ -33,6 +12,12 @@ static render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d
 
 /* Set-up helpers that a build without some primitive kind does not call. */
 #define RENDER_MAYBE_UNUSED __attribute__((unused))
+
+/* RGB565 of an 8-bit colour: each channel's top bits. */
+RENDER_MAYBE_UNUSED static uint16_t render_565(rgb8_t c)
+{
+    return (uint16_t)(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
+}
 
 /* ---- set-up arithmetic ----------------------------------------------------
  * Coefficients are first formed exactly (Q16.16: as 128-bit integers in
@@ -684,6 +669,10 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
             vec3_t q[4];
             for (int k = 0; k < 4; k++)
                 q[k] = corner[idx[k]];
+            if (o->u.flat + o->nflat >= r->box_faces + FXRT_RENDER_BOX_FACES) {
+                r->error = "more box faces than FXRT_RENDER_BOX_FACES";
+                continue;
+            }
             rflat_t *f = &o->u.flat[o->nflat++];
             render_flat_nd(cam, ext, nc, q[0], f);
             for (int k = 0; k < 4; k++)
@@ -753,6 +742,9 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
     o->index = index;
     o->id = c->id;
     o->rgb = c->rgb;
+#if FXRT_PIXEL == FXRT_RGB565
+    o->px = render_565(c->rgb);
+#endif
     o->ranged = false;
     switch (kind) {
     case GEOM_PLANE:
@@ -772,17 +764,25 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
         break;
     case GEOM_BOX:
 #if FXRT_MAX_BOXES > 0
-        o->u.flat = r->box_faces[index];
+        o->u.flat = &r->box_faces[r->box_used]; /* boxes come last: the rest of the pool */
 #endif
         break;
     }
     render_setup_object(r, i);
+#if FXRT_MAX_BOXES > 0
+    if (kind == GEOM_BOX)
+        r->box_used = (uint16_t)(r->box_used + o->nflat);
+#endif
 }
 
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 {
-    if (cam->width > FXRT_RENDER_MAX_WIDTH)
+    r->error = NULL;
+    if (cam->width > FXRT_RENDER_MAX_WIDTH) {
+        r->error = "image wider than FXRT_RENDER_MAX_WIDTH";
         return false;
+    }
+    r->box_used = 0;
     r->world = w;
     r->cam = cam;
     r->count = 0;
@@ -811,7 +811,7 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     for (uint16_t i = 0; i < w->n_boxes; i++)
         render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
 #endif
-    return true;
+    return r->error == NULL;
 }
 
 /* ---- depth at pixels that several objects cover ------------------------
@@ -824,19 +824,32 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
  * two depths compare exactly by cross-multiplication in 64 bits. */
 
 #if FXRT_NUMBER == FXRT_Q16
-/* The top 31 bits of v > 0 (v < 2^128), their exponent added to *e. */
-static uint32_t render_top31(uint64_t hi, uint64_t lo, int *e)
+/* The top 24 bits of v > 0 (v < 2^128), their exponent added to *e. */
+static uint32_t render_top24(uint64_t hi, uint64_t lo, int *e)
 {
     int b = hi ? 128 - __builtin_clzll(hi) : (lo ? 64 - __builtin_clzll(lo) : 0);
     if (b == 0)
         return 0;
-    *e += b - 31;
-    if (b <= 31)
-        return (uint32_t)(lo << (31 - b));
-    int s = b - 31; /* truncating right shift by s (1..97) */
+    *e += b - 24;
+    if (b <= 24)
+        return (uint32_t)(lo << (24 - b));
+    int s = b - 24; /* truncating right shift by s (1..104) */
     if (s >= 64)
         return (uint32_t)(hi >> (s - 64));
     return (uint32_t)((lo >> s) | (hi << 1 << (63 - s)));
+}
+
+#define RENDER_DEPTH_ONE (1u << 23)
+#define RENDER_DEPTH_EMAX 126 /* exponents clamp to +-126 (t beyond 2^+-126) */
+
+static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
+{
+    render_depth_t t;
+    e = e > RENDER_DEPTH_EMAX ? RENDER_DEPTH_EMAX : (e < -RENDER_DEPTH_EMAX ? -RENDER_DEPTH_EMAX : e);
+    t.n = n;
+    t.d = d;
+    t.e = e;
+    return t;
 }
 
 /* t = n / d * 2^e for n >= 0 and d > 0 (d = 0 cannot occur at a covered
@@ -844,27 +857,21 @@ static uint32_t render_top31(uint64_t hi, uint64_t lo, int *e)
 static render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e)
 {
     int en = 0, ed = 0;
-    render_depth_t t;
-    t.n = render_top31(n_hi, n_lo, &en);
-    t.d = render_top31(0, d, &ed);
-    t.e = e + en - ed;
-    if (t.d == 0) {
-        t.n = t.d = 1u << 30;
-        t.e = INT32_MAX / 2;
-    } else if (t.n == 0) {
-        t.d = 1u << 30;
-        t.e = 0;
-    }
-    return t;
+    uint32_t tn = render_top24(n_hi, n_lo, &en), td = render_top24(0, d, &ed);
+    if (td == 0)
+        return render_depth_pack(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
+    if (tn == 0)
+        return render_depth_pack(0, RENDER_DEPTH_ONE, 0);
+    return render_depth_pack(tn, td, e + en - ed);
 }
 
 /* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
- * alone; otherwise 31 x 31-bit products (below 2^63 after one doubling). */
+ * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
 static bool render_depth_less(render_depth_t a, render_depth_t b)
 {
     if (a.n == 0 || b.n == 0)
         return a.n == 0 && b.n != 0;
-    int32_t de = a.e - b.e;
+    int32_t de = (int32_t)a.e - (int32_t)b.e;
     if (de >= 2)
         return false;
     if (de <= -2)
@@ -877,7 +884,7 @@ static bool render_depth_less(render_depth_t a, render_depth_t b)
     return l < g;
 }
 
-static const render_depth_t render_depth_far = {1u << 30, 1u << 30, INT32_MAX / 2};
+static const render_depth_t render_depth_far = {RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX, RENDER_DEPTH_ONE};
 
 static uint64_t render_uabs(rk_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
 
@@ -1086,7 +1093,14 @@ static bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_
         render_paint(r, oi, x, rgb);                                             \
     } while (0)
 
-/* Paint column x in object oi's colour. */
+/* Paint column x in object oi's colour (the row's pixel format). */
+#if FXRT_PIXEL == FXRT_RGB565
+typedef uint16_t __attribute__((may_alias)) render_px16_t;
+static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
+{
+    ((render_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
+}
+#else
 static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
     rgb8_t c = r->obj[oi].rgb;
@@ -1094,6 +1108,7 @@ static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8
     rgb[3 * x + 1] = c.g;
     rgb[3 * x + 2] = c.b;
 }
+#endif
 
 /* Record that object oi covers column x and paint it if it is the nearest
  * so far. The result does not depend on the order of calls (depth, then
@@ -1114,7 +1129,7 @@ static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t iy,
     } while (0)
 
 /* Start a row: a new stamp (so every column is uncovered) and the
- * background in every pixel, four pixels (12 bytes) per copy. */
+ * background in every pixel, with word stores where the row is aligned. */
 static void render_begin_row(render_t *r, uint8_t *rgb)
 {
     if (++r->stamp == RENDER_STAMP_LIMIT) {
@@ -1123,6 +1138,19 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
         r->stamp = 1;
     }
     rgb8_t bg = r->world->background_rgb;
+    typedef uint32_t __attribute__((may_alias)) word_t;
+#if FXRT_PIXEL == FXRT_RGB565
+    uint16_t v = render_565(bg);
+    int32_t n = r->cam->width, i = 0;
+    render_px16_t *p16 = (render_px16_t *)(void *)rgb;
+    if (((uintptr_t)rgb & 3u) == 0) {
+        word_t two = (uint32_t)v * 0x10001u, *p = (word_t *)(void *)rgb;
+        for (; i + 2 <= n; i += 2)
+            *p++ = two;
+    }
+    for (; i < n; i++)
+        p16[i] = v;
+#else
     uint8_t pat[12];
     for (int i = 0; i < 4; i++) {
         pat[3 * i + 0] = bg.r;
@@ -1133,7 +1161,6 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
     if (((uintptr_t)rgb & 3u) == 0) {
         /* Aligned rows (the firmware's framebuffer and bands): three word
          * stores per four pixels. may_alias: the buffer is bytes. */
-        typedef uint32_t __attribute__((may_alias)) word_t;
         word_t w[3];
         __builtin_memcpy(w, pat, 12);
         word_t *p = (word_t *)(void *)rgb;
@@ -1148,6 +1175,7 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
     }
     for (; i < n; i++)
         rgb[i] = pat[i % 3];
+#endif
 }
 
 void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
@@ -1272,23 +1300,33 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
 }
 #endif
 
-/* t scaled by (1 + 2^-20) (up) or (1 - 2^-20): a margin for the 31-bit
- * truncation of depths between the ends of a segment. */
+/* t scaled by about (1 + 2^-16) (up) or (1 - 2^-16): a margin for the
+ * 24-bit truncation of depths between the ends of a segment. */
 static render_depth_t render_depth_widen(render_depth_t t, bool up)
 {
 #if FXRT_NUMBER == FXRT_Q16
-    if (t.n == 0)
+    uint32_t n = t.n;
+    int e = t.e;
+    if (n == 0)
         return t;
     if (up) {
-        t.n = (t.n >> 1) + (t.n >> 21) + 1; /* stays below 2^31 */
-        t.e += 1;
+        n += (n >> 16) + 1;
+        if (n >= 2 * RENDER_DEPTH_ONE) {
+            n >>= 1;
+            e++;
+        }
     } else {
-        t.n = t.n - (t.n >> 20) - 1;
+        n -= (n >> 16) + 1;
+        if (n < RENDER_DEPTH_ONE) {
+            n <<= 1;
+            e--;
+        }
     }
+    return render_depth_pack(n, t.d, e);
 #else
     t.t = up ? t.t * NUM(1.0001) : t.t * NUM(0.9999);
-#endif
     return t;
+#endif
 }
 
 /* Depth range of plane p over columns x0..x1 of row iy when it covers both

@@ -45,15 +45,6 @@
 #include "cam.h"
 #include "world.h"
 
-/* Widest image a render_t can hold (one owner entry per column). */
-#ifndef FXRT_RENDER_MAX_WIDTH
-#define FXRT_RENDER_MAX_WIDTH FXRT_MAX_DIM
-#endif
-#define FXRT_RENDER_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
-#if FXRT_RENDER_MAX_OBJECTS < 1
-#error "the world must be able to hold at least one object"
-#endif
-
 #if FXRT_NUMBER == FXRT_Q16
 typedef int64_t rk_t; /* coefficient: a scaled integer */
 #else
@@ -80,11 +71,12 @@ typedef struct {
 } rflat_t;
 
 /* A depth (ray parameter along the camera-space ray): Q16.16 keeps
- * t = n / d * 2^e with n, d in [2^30, 2^31) (n = 0: t = 0). */
+ * t = n / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes. */
 #if FXRT_NUMBER == FXRT_Q16
 typedef struct {
-    uint32_t n, d;
-    int32_t e;
+    unsigned int n : 24;
+    signed int e : 8;
+    unsigned int d : 24;
 } render_depth_t;
 #else
 typedef struct {
@@ -119,6 +111,9 @@ typedef struct {
     uint16_t index;    /* index there */
     uint16_t id;       /* scene order, for ties */
     rgb8_t rgb;
+#if FXRT_PIXEL == FXRT_RGB565
+    uint16_t px;       /* rgb as an RGB565 pixel */
+#endif
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
     uint8_t nflat;     /* RO_FLAT: 1, RO_BOX: visible faces */
@@ -144,8 +139,10 @@ typedef struct {
     rflat_t flats[FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES]; /* one per plane or triangle */
 #endif
 #if FXRT_MAX_BOXES > 0
-    rflat_t box_faces[FXRT_MAX_BOXES][6];
+    rflat_t box_faces[FXRT_RENDER_BOX_FACES]; /* the faces a box can be hit through, box after box */
+    uint16_t box_used;
 #endif
+    const char *error; /* why render_setup failed, or NULL */
     /* Per column: (stamp << 16) | object of the nearest cover so far. A
      * column whose stamp is not the current row's is uncovered, so rows
      * need no clearing pass. */
@@ -158,11 +155,14 @@ typedef struct {
 } render_t;
 
 /* Per-frame set-up: camera-space forms and screen bounds of every object.
- * The world and camera must outlive r. Returns false when the camera is
- * wider than FXRT_RENDER_MAX_WIDTH. */
+ * The world and camera must outlive r. Returns false (r->error says why)
+ * when the camera is wider than FXRT_RENDER_MAX_WIDTH or the boxes need
+ * more faces than FXRT_RENDER_BOX_FACES. */
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
 
-/* Render output row `row` (0 = top) into rgb (3 * width bytes, RGB888). */
+/* Render output row `row` (0 = top) into rgb in the FXRT_PIXEL format:
+ * RGB888, 3 * width bytes; RGB565, width uint16_t values in native byte
+ * order (rgb 2-byte aligned). */
 void render_row(render_t *r, int32_t row, uint8_t *rgb);
 
 /* The same image from the straightforward loop: every object's forms
