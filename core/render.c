@@ -19,6 +19,18 @@ RENDER_MAYBE_UNUSED static uint16_t render_565(rgb8_t c)
     return (uint16_t)(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
 }
 
+/* Face i of a flat object (a box's faces carry a fourth edge). */
+static inline rflat_t *render_face(const ro_t *o, int i)
+{
+    return o->kind == RO_FLAT ? o->u.flat : &o->u.face[i].f;
+}
+
+/* Edge form k of a flat piece; the fourth is a box face's. */
+static inline const rlin_t *render_edge_k(const rflat_t *f, int k)
+{
+    return k < 3 ? &f->e[k] : &((const render_face_t *)(const void *)f)->e4;
+}
+
 /* ---- set-up arithmetic ----------------------------------------------------
  * Coefficients are first formed exactly (Q16.16: as 128-bit integers in
  * Q80.48, so products of a Q16.16 and a Q32.32 value lose nothing), then
@@ -189,7 +201,7 @@ static bool render_flat_at(const rflat_t *f, int32_t ix, int32_t iy)
 {
     rk_t e[4];
     for (int i = 0; i < f->edges; i++)
-        e[i] = rlin_at(&f->e[i], ix, iy);
+        e[i] = rlin_at(render_edge_k(f, i), ix, iy);
     return render_flat_vals(rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy), e, f->edges);
 }
 
@@ -227,7 +239,7 @@ static bool render_covers(const ro_t *o, int32_t ix, int32_t iy)
     case RO_FLAT:
     case RO_BOX:
         for (int i = 0; i < o->nflat; i++)
-            if (render_flat_at(&o->u.flat[i], ix, iy))
+            if (render_flat_at(render_face(o, i), ix, iy))
                 return true;
         return false;
     }
@@ -588,7 +600,7 @@ static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, r
 {
     o->kind = RO_FLAT;
     o->nflat = 1;
-    render_flat_nd(r->cam, ext, render_dir_to_cam(r->cam, p->n), render_to_cam(r->cam, p->a), &o->u.flat[0]);
+    render_flat_nd(r->cam, ext, render_dir_to_cam(r->cam, p->n), render_to_cam(r->cam, p->a), render_face(o, 0));
     render_set_full(r->cam, o); /* rows beyond the horizon are skipped per row */
 }
 #endif
@@ -605,7 +617,7 @@ static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t
         render_set_empty(o);
         return;
     }
-    rflat_t *f = &o->u.flat[0];
+    rflat_t *f = render_face(o, 0);
     render_flat_nd(cam, ext, render_dir_to_cam(cam, t->n), v[0], f);
     for (int i = 0; i < 3; i++)
         f->e[i] = render_edge(cam, ext, v[i], v[(i + 1) % 3]);
@@ -669,14 +681,15 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
             vec3_t q[4];
             for (int k = 0; k < 4; k++)
                 q[k] = corner[idx[k]];
-            if (o->u.flat + o->nflat >= r->box_faces + FXRT_RENDER_BOX_FACES) {
+            if (o->u.face + o->nflat >= r->box_faces + FXRT_RENDER_BOX_FACES) {
                 r->error = "more box faces than FXRT_RENDER_BOX_FACES";
                 continue;
             }
-            rflat_t *f = &o->u.flat[o->nflat++];
+            render_face_t *bf = &o->u.face[o->nflat++];
+            rflat_t *f = &bf->f;
             render_flat_nd(cam, ext, nc, q[0], f);
             for (int k = 0; k < 4; k++)
-                f->e[k] = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
+                *(k < 3 ? &f->e[k] : &bf->e4) = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
             f->edges = 4;
             /* Each face gets its own bounds, so a pixel is mostly stepped
              * for one face rather than all of them. */
@@ -764,7 +777,7 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
         break;
     case GEOM_BOX:
 #if FXRT_MAX_BOXES > 0
-        o->u.flat = &r->box_faces[r->box_used]; /* boxes come last: the rest of the pool */
+        o->u.face = &r->box_faces[r->box_used]; /* boxes come last: the rest of the pool */
 #endif
         break;
     }
@@ -953,7 +966,7 @@ static render_depth_t render_depth_at(const ro_t *o, int32_t ix, int32_t iy)
     /* Flat pieces: the nearest face that covers the pixel. */
     render_depth_t best = render_depth_far;
     for (int i = 0; i < o->nflat; i++) {
-        const rflat_t *f = &o->u.flat[i];
+        const rflat_t *f = render_face(o, i);
         if (!render_flat_at(f, ix, iy))
             continue;
         render_depth_t t = render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
@@ -1227,8 +1240,9 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
      * OR are clear) or all <= 0. */
     uint64_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
     for (int k = 0; k < edges; k++) {
-        e[k] = (uint64_t)rlin_at(&f->e[k], ix0, iy);
-        se[k] = 2 * (uint64_t)f->e[k].x;
+        const rlin_t *ek = render_edge_k(f, k);
+        e[k] = (uint64_t)rlin_at(ek, ix0, iy);
+        se[k] = 2 * (uint64_t)ek->x;
     }
     for (int32_t x = x0; x <= x1; x++) {
         bool in = (rk_t)(e[0] | e[1] | e[2] | e[3]) >= 0 ||
@@ -1335,7 +1349,7 @@ static render_depth_t render_depth_widen(render_depth_t t, bool up)
 static bool render_plane_range(const render_t *r, const ro_t *p, int32_t x0, int32_t x1, int32_t iy,
                                render_depth_t *lo, render_depth_t *hi)
 {
-    const rflat_t *f = &p->u.flat[0];
+    const rflat_t *f = render_face(p, 0);
     int32_t w = r->cam->width;
     rk_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
     rk_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
@@ -1348,7 +1362,7 @@ static bool render_plane_range(const render_t *r, const ro_t *p, int32_t x0, int
     return true;
 }
 
-static bool render_is_plane(const ro_t *o) { return o->kind == RO_FLAT && o->u.flat[0].edges == 0; }
+static bool render_is_plane(const ro_t *o) { return o->kind == RO_FLAT && render_face(o, 0)->edges == 0; }
 
 /* Depth order against the planes on this row, for object i over its
  * columns x0..x1: r->row_win gets bit j when i is nearer than plane j
@@ -1408,11 +1422,11 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         int32_t x0 = FXRT_NO_BOUNDS ? 0 : o->x0, x1 = FXRT_NO_BOUNDS ? w - 1 : o->x1;
         if (x0 > x1)
             continue;
-        if (!FXRT_NO_BOUNDS && o->kind == RO_FLAT && o->u.flat[0].edges == 0) {
+        if (!FXRT_NO_BOUNDS && o->kind == RO_FLAT && render_face(o, 0)->edges == 0) {
             /* A plane: along a row its front test is one interval, so if
              * it fails at both ends the row is beyond the horizon. */
-            if (!render_flat_at(&o->u.flat[0], 2 * x0 - w + 1, iy) &&
-                !render_flat_at(&o->u.flat[0], 2 * x1 - w + 1, iy))
+            if (!render_flat_at(render_face(o, 0), 2 * x0 - w + 1, iy) &&
+                !render_flat_at(render_face(o, 0), 2 * x1 - w + 1, iy))
                 continue;
         }
         bool lone = !FXRT_NO_LONE && render_alone(r, i, row);
@@ -1431,7 +1445,7 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         case RO_FLAT:
         case RO_BOX:
             for (int k = 0; k < o->nflat; k++) {
-                const rflat_t *f = &o->u.flat[k];
+                const rflat_t *f = render_face(o, k);
                 if (FXRT_NO_BOUNDS)
                     render_scan_flat(r, i, f, 0, w - 1, iy, rgb, lone);
                 else if (row >= f->r0 && row <= f->r1)

@@ -64,7 +64,7 @@ typedef struct {
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
     rlin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
-    rlin_t e[4];  /* edge forms */
+    rlin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
     uint8_t edges;
     int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
     int16_t x0, x1, r0, r1; /* this piece's own pixel bounds (a box face's) */
@@ -103,11 +103,20 @@ typedef struct {
     int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
 } render_sphere_t;
 
+/* A box face: a flat piece with a fourth edge (rflat_t first, so a
+ * pointer to f is a pointer to the face). */
+typedef struct {
+    rflat_t f;
+    rlin_t e4;
+} render_face_t;
+
 typedef enum { RO_SPHERE, RO_FLAT, RO_BOX, RO_ALL } ro_kind_t;
 
 typedef struct {
-    ro_kind_t kind;
-    geom_kind_t geom;  /* which world array, for depth */
+    uint8_t kind;      /* ro_kind_t */
+    uint8_t geom;      /* geom_kind_t: which world array */
+    uint8_t nflat;     /* RO_FLAT: 1, RO_BOX and RO_ALL: faces */
+    bool ranged;       /* tlo, thi bound its depth (not for planes) */
     uint16_t index;    /* index there */
     uint16_t id;       /* scene order, for ties */
     rgb8_t rgb;
@@ -116,12 +125,11 @@ typedef struct {
 #endif
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
-    uint8_t nflat;     /* RO_FLAT: 1, RO_BOX: visible faces */
-    bool ranged;       /* tlo, thi bound its depth (not for planes) */
     render_depth_t tlo, thi;
     union {
         render_sphere_t *sphere; /* RO_SPHERE */
-        rflat_t *flat;           /* RO_FLAT: 1, RO_BOX and RO_ALL: nflat faces */
+        rflat_t *flat;           /* RO_FLAT: a plane or triangle */
+        render_face_t *face;     /* RO_BOX and RO_ALL: nflat faces */
     } u;
 } ro_t;
 
@@ -139,7 +147,7 @@ typedef struct {
     rflat_t flats[FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES]; /* one per plane or triangle */
 #endif
 #if FXRT_MAX_BOXES > 0
-    rflat_t box_faces[FXRT_RENDER_BOX_FACES]; /* the faces a box can be hit through, box after box */
+    render_face_t box_faces[FXRT_RENDER_BOX_FACES]; /* the faces a box can be hit through, box after box */
     uint16_t box_used;
 #endif
     const char *error; /* why render_setup failed, or NULL */
