@@ -13,6 +13,10 @@ static render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d
 /* Set-up helpers that a build without some primitive kind does not call. */
 #define RENDER_MAYBE_UNUSED __attribute__((unused))
 
+/* Does the fast loop step forms along the row? Q16.16 always (exactly),
+ * float and double with FXRT_FLOAT_STEP; never with FXRT_NO_STEP. */
+#define RENDER_STEPPED (!FXRT_NO_STEP && (FXRT_NUMBER == FXRT_Q16 || FXRT_FLOAT_STEP))
+
 /* RGB565 of an 8-bit colour: each channel's top bits. */
 RENDER_MAYBE_UNUSED static uint16_t render_565(rgb8_t c)
 {
@@ -795,7 +799,9 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
         r->error = "image wider than FXRT_RENDER_MAX_WIDTH";
         return false;
     }
+#if FXRT_MAX_BOXES > 0
     r->box_used = 0;
+#endif
     r->world = w;
     r->cam = cam;
     r->count = 0;
@@ -993,7 +999,7 @@ typedef struct {
 
 static render_depth_t render_raw_depth(const ro_t *o, int32_t ix, int32_t iy, const render_raw_t *raw)
 {
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+#if RENDER_STEPPED
     if (raw->how == RENDER_RAW_FLAT)
         return render_flat_depth(raw->f, raw->n, raw->d);
     if (raw->how == RENDER_RAW_SPHERE)
@@ -1069,7 +1075,7 @@ static bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, in
     return render_settle(r, cur, oi, x, iy, &raw);
 }
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+#if RENDER_STEPPED
 /* The newcomer's depth from the values the scanline loop stepped. */
 static bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const rflat_t *f,
                                 rk_t n, rk_t d)
@@ -1314,6 +1320,70 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
 }
 #endif
 
+#if FXRT_NUMBER != FXRT_Q16 && FXRT_FLOAT_STEP && !FXRT_NO_STEP
+/* FXRT_FLOAT_STEP: the float programmer's scanline. Each linear form is
+ * evaluated directly at the segment's first pixel and then stepped by one
+ * addition per pixel (the quadratic a by forward differences); rounding
+ * accumulates along the segment, unlike the exact Q16.16 steps. */
+static void render_scan_flat_f(render_t *r, uint16_t oi, const rflat_t *f, int32_t x0, int32_t x1, int32_t iy,
+                               uint8_t *rgb, bool lone)
+{
+    bool single = r->obj[oi].kind == RO_FLAT;
+    int32_t ix0 = 2 * x0 - r->cam->width + 1;
+    rk_t n = rlin_at(&f->n, ix0, iy), d = rlin_at(&f->d, ix0, iy), sn = 2 * f->n.x, sd = 2 * f->d.x;
+    rk_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
+    int edges = f->edges;
+    for (int k = 0; k < edges; k++) {
+        const rlin_t *ek = render_edge_k(f, k);
+        e[k] = rlin_at(ek, ix0, iy);
+        se[k] = 2 * ek->x;
+    }
+    for (int32_t x = x0; x <= x1; x++) {
+        if (render_flat_vals(n, d, e, edges)) {
+            if (lone)
+                render_paint(r, oi, x, rgb);
+            else if (single)
+                RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, n, d));
+            else
+                render_cover(r, oi, x, iy, rgb);
+        }
+        n += sn;
+        d += sd;
+        for (int k = 0; k < edges; k++)
+            e[k] += se[k];
+    }
+}
+
+static void render_scan_sphere_f(render_t *r, uint16_t oi, const ro_t *o, int32_t x0, int32_t x1, int32_t iy,
+                                 uint8_t *rgb, bool lone)
+{
+    const render_sphere_t *sp = o->u.sphere;
+    int32_t ix0 = 2 * x0 - r->cam->width + 1;
+    rk_t b = rlin_at(&sp->b, ix0, iy), px = rlin_at(&sp->px, ix0, iy), py = rlin_at(&sp->py, ix0, iy),
+         pz = rlin_at(&sp->pz, ix0, iy);
+    rk_t sb = 2 * sp->b.x, spx = 2 * sp->px.x, spy = 2 * sp->py.x, spz = 2 * sp->pz.x;
+    rk_t a0 = rquad_at(sp->a, ix0, iy), a1 = rquad_at(sp->a, ix0 + 2, iy), a2 = rquad_at(sp->a, ix0 + 4, iy);
+    rk_t a = a0, da = a1 - a0, dda = a2 - 2 * a1 + a0;
+    for (int32_t x = x0; x <= x1; x++) {
+        rk_t sq = px * px + py * py + pz * pz;
+        rk_t disc = sp->r2 * (sp->ortho ? NUM_ONE : a) - sq;
+        rk_t c = sp->ortho ? sp->k + sq : sp->k;
+        if (render_sphere_vals(b, c, disc)) {
+            if (lone)
+                render_paint(r, oi, x, rgb);
+            else
+                RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, b, c, disc));
+        }
+        b += sb;
+        px += spx;
+        py += spy;
+        pz += spz;
+        a += da;
+        da += dda;
+    }
+}
+#endif
+
 /* t scaled by about (1 + 2^-16) (up) or (1 - 2^-16): a margin for the
  * 24-bit truncation of depths between the ends of a segment. */
 static render_depth_t render_depth_widen(render_depth_t t, bool up)
@@ -1450,6 +1520,20 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
                     render_scan_flat(r, i, f, 0, w - 1, iy, rgb, lone);
                 else if (row >= f->r0 && row <= f->r1)
                     render_scan_flat(r, i, f, f->x0, f->x1, iy, rgb, lone);
+            }
+            break;
+#elif RENDER_STEPPED
+        case RO_SPHERE:
+            render_scan_sphere_f(r, i, o, x0, x1, iy, rgb, lone);
+            break;
+        case RO_FLAT:
+        case RO_BOX:
+            for (int k = 0; k < o->nflat; k++) {
+                const rflat_t *f = render_face(o, k);
+                if (FXRT_NO_BOUNDS)
+                    render_scan_flat_f(r, i, f, 0, w - 1, iy, rgb, lone);
+                else if (row >= f->r0 && row <= f->r1)
+                    render_scan_flat_f(r, i, f, f->x0, f->x1, iy, rgb, lone);
             }
             break;
 #else
