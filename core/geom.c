@@ -3,11 +3,6 @@
  * plane, triangle or box code. */
 #include "geom.h"
 
-static inline num_t geom_axis(vec3_t v, int i)
-{
-    return i == 0 ? v.x : (i == 1 ? v.y : v.z);
-}
-
 static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
 {
     c->color = color;
@@ -93,16 +88,6 @@ bool geom_triangle_make(geom_triangle_t *tr, vec3_t a, vec3_t b, vec3_t c, color
     geom_common_init(&tr->obj, color, id);
     tr->degenerate = !vec3_unit_cross(vec3_sub(b, a), vec3_sub(c, a), &tr->n);
     return true;
-}
-
-/* Lexicographic order of points, to give each edge one canonical direction. */
-static bool geom_point_less(vec3_t p, vec3_t q)
-{
-    if (p.x != q.x)
-        return p.x < q.x;
-    if (p.y != q.y)
-        return p.y < q.y;
-    return p.z < q.z;
 }
 
 /* Which side of the edge p -> q the ray passes: d . ((p - o) x (q - o)),

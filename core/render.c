@@ -4,7 +4,6 @@
 
 #include "render.h"
 
-#define RO_NONE 0xFFFFu
 
 #if FXRT_NUMBER == FXRT_Q16
 static render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
@@ -24,13 +23,13 @@ RENDER_MAYBE_UNUSED static uint16_t render_565(rgb8_t c)
 }
 
 /* Face i of a flat object (a box's faces carry a fourth edge). */
-static inline rflat_t *render_face(const ro_t *o, int i)
+static inline render_flat_t *render_face(const render_obj_t *o, int i)
 {
-    return o->kind == RO_FLAT ? o->u.flat : &o->u.face[i].f;
+    return o->kind == RENDER_FLAT ? o->u.flat : &o->u.face[i].f;
 }
 
 /* Edge form k of a flat piece; the fourth is a box face's. */
-static inline const rlin_t *render_edge_k(const rflat_t *f, int k)
+static inline const render_lin_t *render_edge_k(const render_flat_t *f, int k)
 {
     return k < 3 ? &f->e[k] : &((const render_face_t *)(const void *)f)->e4;
 }
@@ -88,22 +87,22 @@ static int rk_shift(const rc_t *coef, const uint32_t *mult, int n, int target)
     need += 3; /* at most 6 terms */
     return need > target ? need - target : 0;
 }
-static rk_t rk_of(rc_t c, int k) { return fx128_shr_round(c, k); }
+static render_k_t rk_of(rc_t c, int k) { return fx128_shr_round(c, k); }
 #define RK_SHIFT(coefs, mults, n, target) rk_shift(coefs, mults, n, target)
 #else
-static rk_t rk_of(rc_t c, int k) { (void)k; return c; }
+static render_k_t rk_of(rc_t c, int k) { (void)k; return c; }
 #define RK_SHIFT(coefs, mults, n, target) 0
 #endif
 
-static rlin_t rlin_scaled(rclin_t f, int k)
+static render_lin_t rlin_scaled(rclin_t f, int k)
 {
-    rlin_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k)};
+    render_lin_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k)};
     return r;
 }
 
-RENDER_MAYBE_UNUSED static rquad_t rquad_scaled(rcquad_t f, int k)
+RENDER_MAYBE_UNUSED static render_quad_t rquad_scaled(rcquad_t f, int k)
 {
-    rquad_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k), rk_of(f.xx, k), rk_of(f.xy, k), rk_of(f.yy, k)};
+    render_quad_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k), rk_of(f.xx, k), rk_of(f.xy, k), rk_of(f.yy, k)};
     return r;
 }
 
@@ -139,7 +138,7 @@ RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int tar
 /* The sphere's pieces get 62 bits; b^2 - a c is formed in 128 bits. */
 #define RENDER_SPHERE_BITS 62
 
-RENDER_MAYBE_UNUSED static rlin_t rlin_make(rclin_t f, rext_t ext)
+RENDER_MAYBE_UNUSED static render_lin_t rlin_make(rclin_t f, rext_t ext)
 {
     return rlin_scaled(f, rlin_need(&f, ext, RENDER_LIN_BITS));
 }
@@ -148,22 +147,22 @@ RENDER_MAYBE_UNUSED static rlin_t rlin_make(rclin_t f, rext_t ext)
  * Q16.16: in uint64, so that no intermediate can be signed overflow; every
  * final value is known to fit int64 (the scales above guarantee it). */
 #if FXRT_NUMBER == FXRT_Q16
-static inline rk_t rlin_at(const rlin_t *f, int32_t ix, int32_t iy)
+static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
 {
-    return (rk_t)((uint64_t)f->c + (uint64_t)f->x * (uint64_t)(int64_t)ix + (uint64_t)f->y * (uint64_t)(int64_t)iy);
+    return (render_k_t)((uint64_t)f->c + (uint64_t)f->x * (uint64_t)(int64_t)ix + (uint64_t)f->y * (uint64_t)(int64_t)iy);
 }
-static inline rk_t rquad_at(const rquad_t *f, int32_t ix, int32_t iy)
+static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
 {
     uint64_t x = (uint64_t)(int64_t)ix, y = (uint64_t)(int64_t)iy;
-    return (rk_t)((uint64_t)f->c + (uint64_t)f->x * x + (uint64_t)f->y * y + (uint64_t)f->xx * x * x +
+    return (render_k_t)((uint64_t)f->c + (uint64_t)f->x * x + (uint64_t)f->y * y + (uint64_t)f->xx * x * x +
                   (uint64_t)f->xy * x * y + (uint64_t)f->yy * y * y);
 }
 #else
-static inline rk_t rlin_at(const rlin_t *f, int32_t ix, int32_t iy)
+static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
 {
     return f->c + f->x * (num_t)ix + f->y * (num_t)iy;
 }
-static inline rk_t rquad_at(const rquad_t *f, int32_t ix, int32_t iy)
+static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
 {
     num_t x = (num_t)ix, y = (num_t)iy;
     return f->c + f->x * x + f->y * y + f->xx * x * x + f->xy * x * y + f->yy * y * y;
@@ -175,11 +174,11 @@ static inline rk_t rquad_at(const rquad_t *f, int32_t ix, int32_t iy)
 typedef fx128_t rsw_t;
 static inline bool rsw_neg(rsw_t v) { return v.hi < 0; }
 #else
-typedef rk_t rsw_t;
+typedef render_k_t rsw_t;
 static inline bool rsw_neg(rsw_t v) { return v < 0; }
 #endif
 
-static inline bool render_sphere_vals(rk_t b, rsw_t c, rsw_t disc)
+static inline bool render_sphere_vals(render_k_t b, rsw_t c, rsw_t disc)
 {
     return rsw_neg(c) || (b > 0 && !rsw_neg(disc));
 }
@@ -187,9 +186,9 @@ static inline bool render_sphere_vals(rk_t b, rsw_t c, rsw_t disc)
 /* c = k + px^2 + py^2 and disc = b^2 - a c at one pixel, exactly (Q16.16:
  * a is 1 in orthographic views and c is the constant k in perspective, so
  * a c is a single 64 x 64 product or none). */
-static void render_sphere_cd(const ro_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out);
+static void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out);
 
-static inline bool render_flat_vals(rk_t n, rk_t d, const rk_t *e, int edges)
+static inline bool render_flat_vals(render_k_t n, render_k_t d, const render_k_t *e, int edges)
 {
     if (!((n > 0 && d > 0) || (n < 0 && d < 0)))
         return false;
@@ -201,18 +200,18 @@ static inline bool render_flat_vals(rk_t n, rk_t d, const rk_t *e, int edges)
     return !(pos && neg);
 }
 
-static bool render_flat_at(const rflat_t *f, int32_t ix, int32_t iy)
+static bool render_flat_at(const render_flat_t *f, int32_t ix, int32_t iy)
 {
-    rk_t e[4];
+    render_k_t e[4];
     for (int i = 0; i < f->edges; i++)
         e[i] = rlin_at(render_edge_k(f, i), ix, iy);
     return render_flat_vals(rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy), e, f->edges);
 }
 
-static void render_sphere_cd(const ro_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
+static void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
 {
-    rk_t a = rquad_at(o->u.sphere->a, ix, iy);
-    rk_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
+    render_k_t a = rquad_at(o->u.sphere->a, ix, iy);
+    render_k_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
          pz = rlin_at(&o->u.sphere->pz, ix, iy);
     bool ortho = o->u.sphere->ortho;
 #if FXRT_NUMBER == FXRT_Q16
@@ -222,26 +221,26 @@ static void render_sphere_cd(const ro_t *o, int32_t ix, int32_t iy, rsw_t *c_out
     *disc_out = fx128_sub(r2a, sq);
     *c_out = ortho ? fx128_add(o->u.sphere->k, sq) : o->u.sphere->k;
 #else
-    rk_t sq = px * px + py * py + pz * pz;
+    render_k_t sq = px * px + py * py + pz * pz;
     *disc_out = o->u.sphere->r2 * a - sq;
     *c_out = ortho ? o->u.sphere->k + sq : o->u.sphere->k;
 #endif
 }
 
 /* Does object o cover the pixel? Every form evaluated from scratch. */
-static bool render_covers(const ro_t *o, int32_t ix, int32_t iy)
+static bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 {
     switch (o->kind) {
-    case RO_ALL:
+    case RENDER_ALL:
         return true;
-    case RO_SPHERE: {
-        rk_t b = rlin_at(&o->u.sphere->b, ix, iy);
+    case RENDER_SPHERE: {
+        render_k_t b = rlin_at(&o->u.sphere->b, ix, iy);
         rsw_t c, disc;
         render_sphere_cd(o, ix, iy, &c, &disc);
         return render_sphere_vals(b, c, disc);
     }
-    case RO_FLAT:
-    case RO_BOX:
+    case RENDER_FLAT:
+    case RENDER_BOX:
         for (int i = 0; i < o->nflat; i++)
             if (render_flat_at(render_face(o, i), ix, iy))
                 return true;
@@ -266,7 +265,7 @@ RENDER_MAYBE_UNUSED static vec3_t render_dir_to_cam(const cam_t *cam, vec3_t d)
 RENDER_MAYBE_UNUSED static bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTHOGRAPHIC; }
 
 /* N = n.(A - o) and D = n.r for camera-space normal n and point a. */
-RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec3_t n, vec3_t a, rflat_t *f)
+RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec3_t n, vec3_t a, render_flat_t *f)
 {
     bool ortho = render_ortho(cam);
     num_t focal = ortho ? NUM_ONE : cam->focal;
@@ -286,7 +285,7 @@ RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec
 }
 
 /* Copy an object's bounds to (or from) a flat piece. */
-RENDER_MAYBE_UNUSED static void render_flat_bounds_from(rflat_t *f, const ro_t *o)
+RENDER_MAYBE_UNUSED static void render_flat_bounds_from(render_flat_t *f, const render_obj_t *o)
 {
     f->x0 = o->x0;
     f->x1 = o->x1;
@@ -294,22 +293,13 @@ RENDER_MAYBE_UNUSED static void render_flat_bounds_from(rflat_t *f, const ro_t *
     f->r1 = o->r1;
 }
 
-RENDER_MAYBE_UNUSED static bool render_point_less(vec3_t p, vec3_t q)
-{
-    if (p.x != q.x)
-        return p.x < q.x;
-    if (p.y != q.y)
-        return p.y < q.y;
-    return p.z < q.z;
-}
-
 /* Edge form r.((P - o) x (Q - o)): which side of the plane through the ray
  * origin and the edge the ray passes. Formed with the edge in canonical
  * order and negated for the other, so that two faces sharing an edge get
  * exactly opposite forms: no ray slips between them (watertight). */
-RENDER_MAYBE_UNUSED static rlin_t render_edge(const cam_t *cam, rext_t ext, vec3_t p, vec3_t q)
+RENDER_MAYBE_UNUSED static render_lin_t render_edge(const cam_t *cam, rext_t ext, vec3_t p, vec3_t q)
 {
-    bool swap = render_point_less(q, p);
+    bool swap = geom_point_less(q, p);
     if (swap) {
         vec3_t t = p;
         p = q;
@@ -385,7 +375,7 @@ RENDER_MAYBE_UNUSED static int32_t render_clamp(int32_t v, int32_t lo, int32_t h
 /* floor(v / 2) for any sign. */
 RENDER_MAYBE_UNUSED static int32_t render_half_floor(int32_t v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
 
-RENDER_MAYBE_UNUSED static void render_set_full(const cam_t *cam, ro_t *o)
+RENDER_MAYBE_UNUSED static void render_set_full(const cam_t *cam, render_obj_t *o)
 {
     o->x0 = 0;
     o->x1 = (int16_t)(cam->width - 1);
@@ -393,7 +383,7 @@ RENDER_MAYBE_UNUSED static void render_set_full(const cam_t *cam, ro_t *o)
     o->r1 = (int16_t)(cam->height - 1);
 }
 
-RENDER_MAYBE_UNUSED static void render_set_empty(ro_t *o)
+RENDER_MAYBE_UNUSED static void render_set_empty(render_obj_t *o)
 {
     o->x0 = 1;
     o->x1 = 0;
@@ -404,7 +394,7 @@ RENDER_MAYBE_UNUSED static void render_set_empty(ro_t *o)
 /* Pixel rectangle of a projected bound, with a 2-pixel margin for the
  * rounding of the projection. A degenerate step (1-pixel axis) or a
  * saturated projection simply widens it to the screen. */
-RENDER_MAYBE_UNUSED static void render_set_bounds(const cam_t *cam, const rbox_t *b, ro_t *o)
+RENDER_MAYBE_UNUSED static void render_set_bounds(const cam_t *cam, const rbox_t *b, render_obj_t *o)
 {
     int32_t w = cam->width, h = cam->height;
     int32_t x0 = render_half_floor(render_clamp(render_floor(b->ix0), -2 * w, 2 * w) + w - 1) - 2;
@@ -433,7 +423,7 @@ RENDER_MAYBE_UNUSED static void render_set_bounds(const cam_t *cam, const rbox_t
  * at camera-space z has t = -z / F (orthographic: -z), so the points' z
  * range bounds t. A margin covers the rounding of the corners and of the
  * forms, so that every depth the forms give lies strictly inside. */
-RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t *p, int n, ro_t *o)
+RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
 {
     num_t zlo = p[0].z, zhi = p[0].z;
     for (int i = 1; i < n; i++) {
@@ -459,7 +449,7 @@ RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t
 
 /* Bounds of camera-space points that are all in front in perspective;
  * straddling sets get the whole screen, sets wholly behind are empty. */
-RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, ro_t *o)
+RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
 {
     render_set_zrange(cam, p, n, o);
     int front = 0, behind = 0;
@@ -484,7 +474,7 @@ RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec
 }
 
 #if FXRT_MAX_SPHERES > 0
-static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, ro_t *o)
+static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t c = render_to_cam(cam, s->center);
@@ -497,7 +487,7 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
     rc_t k;
     bool ortho = render_ortho(cam);
     (void)ext;
-    o->kind = RO_SPHERE;
+    o->kind = RENDER_SPHERE;
     o->u.sphere->ortho = ortho;
     if (ortho) {
         /* o = (su ix, sv iy, 0), r = (0, 0, -1): b = -cz, a = 1, the ray's
@@ -600,9 +590,9 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
 #endif
 
 #if FXRT_MAX_PLANES > 0
-static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, ro_t *o)
+static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
 {
-    o->kind = RO_FLAT;
+    o->kind = RENDER_FLAT;
     o->nflat = 1;
     render_flat_nd(r->cam, ext, render_dir_to_cam(r->cam, p->n), render_to_cam(r->cam, p->a), render_face(o, 0));
     render_set_full(r->cam, o); /* rows beyond the horizon are skipped per row */
@@ -610,18 +600,18 @@ static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, r
 #endif
 
 #if FXRT_MAX_TRIANGLES > 0
-static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, ro_t *o)
+static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
-    o->kind = RO_FLAT;
+    o->kind = RENDER_FLAT;
     o->nflat = 1;
     if (t->degenerate) {
         o->nflat = 0;
         render_set_empty(o);
         return;
     }
-    rflat_t *f = render_face(o, 0);
+    render_flat_t *f = render_face(o, 0);
     render_flat_nd(cam, ext, render_dir_to_cam(cam, t->n), v[0], f);
     for (int i = 0; i < 3; i++)
         f->e[i] = render_edge(cam, ext, v[i], v[(i + 1) % 3]);
@@ -632,9 +622,8 @@ static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t
 #endif
 
 #if FXRT_MAX_BOXES > 0
-static num_t render_axis(vec3_t v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
 
-static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t *o)
+static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     bool ortho = render_ortho(cam);
@@ -650,27 +639,27 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
     bool inside = !ortho, outside = false;
     int side_of[3];
     for (int axis = 0; axis < 3; axis++) {
-        num_t e = render_axis(cam->e, axis);
-        num_t lo = render_axis(b->min, axis), hi = render_axis(b->max, axis);
+        num_t e = geom_axis(cam->e, axis);
+        num_t lo = geom_axis(b->min, axis), hi = geom_axis(b->max, axis);
         if (!(e > lo && e < hi))
             inside = false;
         side_of[axis] = e < lo ? 0 : (e > hi ? 1 : -1);
         if (side_of[axis] >= 0)
             outside = true;
     }
-    o->kind = RO_BOX;
+    o->kind = RENDER_BOX;
     o->nflat = 0;
     for (int axis = 0; axis < 3; axis++) {
         int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
         /* A face of zero area (a flat box seen from its side) covers
          * nothing: its edge forms would describe a line or the whole
          * screen instead. */
-        if (render_axis(b->min, a1) == render_axis(b->max, a1) || render_axis(b->min, a2) == render_axis(b->max, a2))
+        if (geom_axis(b->min, a1) == geom_axis(b->max, a1) || geom_axis(b->min, a2) == geom_axis(b->max, a2))
             continue;
         for (int side = 0; side < 2; side++) {
             if (!ortho && outside && side != side_of[axis])
                 continue; /* turned away from an eye outside */
-            if ((ortho || !outside) && side == 1 && render_axis(b->min, axis) == render_axis(b->max, axis))
+            if ((ortho || !outside) && side == 1 && geom_axis(b->min, axis) == geom_axis(b->max, axis))
                 continue; /* a flat box: both faces are one rectangle, keep one */
             vec3_t nw = vec3_make(axis == 0 ? NUM_ONE : NUM_ZERO, axis == 1 ? NUM_ONE : NUM_ZERO,
                                   axis == 2 ? NUM_ONE : NUM_ZERO);
@@ -690,14 +679,14 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
                 continue;
             }
             render_face_t *bf = &o->u.face[o->nflat++];
-            rflat_t *f = &bf->f;
+            render_flat_t *f = &bf->f;
             render_flat_nd(cam, ext, nc, q[0], f);
             for (int k = 0; k < 4; k++)
                 *(k < 3 ? &f->e[k] : &bf->e4) = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
             f->edges = 4;
             /* Each face gets its own bounds, so a pixel is mostly stepped
              * for one face rather than all of them. */
-            ro_t tmp;
+            render_obj_t tmp;
             render_points_bounds(cam, q, 4, &tmp);
             render_flat_bounds_from(f, &tmp);
         }
@@ -705,7 +694,7 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, ro_t 
     if (inside) {
         /* Every ray covers the box; its faces (all of them, from inside)
          * give the depth of the exit point. */
-        o->kind = RO_ALL;
+        o->kind = RENDER_ALL;
         render_set_full(cam, o);
         return;
     }
@@ -723,7 +712,7 @@ static void render_setup_object(render_t *r, uint16_t i)
     const world_t *w = r->world;
     const cam_t *cam = r->cam;
     rext_t ext = {(uint32_t)(cam->width - 1), (uint32_t)(cam->height - 1)};
-    ro_t *o = &r->obj[i];
+    render_obj_t *o = &r->obj[i];
     (void)ext;
     (void)w;
     switch (o->geom) {
@@ -754,7 +743,7 @@ static void render_setup_object(render_t *r, uint16_t i)
 static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom_common_t *c)
 {
     uint16_t i = r->count++;
-    ro_t *o = &r->obj[i];
+    render_obj_t *o = &r->obj[i];
     o->geom = kind;
     o->index = index;
     o->id = c->id;
@@ -905,9 +894,9 @@ static bool render_depth_less(render_depth_t a, render_depth_t b)
 
 static const render_depth_t render_depth_far = {RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX, RENDER_DEPTH_ONE};
 
-static uint64_t render_uabs(rk_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
+static uint64_t render_uabs(render_k_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
 
-static render_depth_t render_flat_depth(const rflat_t *f, rk_t n, rk_t d)
+static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, render_k_t d)
 {
     return render_depth_make(0, render_uabs(n), render_uabs(d), f->te);
 }
@@ -926,7 +915,7 @@ static uint64_t render_sqrt128(fx128_t v)
     return (uint64_t)fx_isqrt64(top) << (s / 2);
 }
 
-static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy, rk_t b, rsw_t c, rsw_t disc)
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, rsw_t c, rsw_t disc)
 {
     uint64_t s = render_sqrt128(disc);
     if (!rsw_neg(c)) /* outside: the near root, b > 0 */
@@ -935,19 +924,19 @@ static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy,
         fx128_t nc = fx128_neg(c);
         return render_depth_make((uint64_t)nc.hi, nc.lo, s + (0 - (uint64_t)b), o->u.sphere->tc);
     }
-    rk_t a = o->u.sphere->ortho ? 1 : rquad_at(o->u.sphere->a, ix, iy);
+    render_k_t a = o->u.sphere->ortho ? 1 : rquad_at(o->u.sphere->a, ix, iy);
     return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere->ta);
 }
 #else
 static bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
 static const render_depth_t render_depth_far = {NUM_MAX};
-static render_depth_t render_flat_depth(const rflat_t *f, rk_t n, rk_t d)
+static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, render_k_t d)
 {
     (void)f;
     render_depth_t t = {num_div(n, d)};
     return t;
 }
-static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy, rk_t b, rsw_t c, rsw_t disc)
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, rsw_t c, rsw_t disc)
 {
     num_t s = num_sqrt(disc);
     render_depth_t t;
@@ -962,9 +951,9 @@ static render_depth_t render_sphere_depth(const ro_t *o, int32_t ix, int32_t iy,
 #endif
 
 /* Depth of object o at a pixel it covers, from its forms evaluated there. */
-static render_depth_t render_depth_at(const ro_t *o, int32_t ix, int32_t iy)
+static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t iy)
 {
-    if (o->kind == RO_SPHERE) {
+    if (o->kind == RENDER_SPHERE) {
         rsw_t c, disc;
         render_sphere_cd(o, ix, iy, &c, &disc);
         return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), c, disc);
@@ -972,7 +961,7 @@ static render_depth_t render_depth_at(const ro_t *o, int32_t ix, int32_t iy)
     /* Flat pieces: the nearest face that covers the pixel. */
     render_depth_t best = render_depth_far;
     for (int i = 0; i < o->nflat; i++) {
-        const rflat_t *f = render_face(o, i);
+        const render_flat_t *f = render_face(o, i);
         if (!render_flat_at(f, ix, iy))
             continue;
         render_depth_t t = render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
@@ -992,12 +981,12 @@ static render_depth_t render_depth_at(const ro_t *o, int32_t ix, int32_t iy)
  * from its forms evaluated at the pixel. */
 typedef struct {
     enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_SPHERE } how;
-    const rflat_t *f;
-    rk_t n, d, b;
+    const render_flat_t *f;
+    render_k_t n, d, b;
     rsw_t c, disc;
 } render_raw_t;
 
-static render_depth_t render_raw_depth(const ro_t *o, int32_t ix, int32_t iy, const render_raw_t *raw)
+static render_depth_t render_raw_depth(const render_obj_t *o, int32_t ix, int32_t iy, const render_raw_t *raw)
 {
 #if RENDER_STEPPED
     if (raw->how == RENDER_RAW_FLAT)
@@ -1019,7 +1008,7 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
                                                     const render_raw_t *raw)
 {
     uint16_t ci = (uint16_t)cur;
-    const ro_t *a = &r->obj[ci], *b = &r->obj[oi];
+    const render_obj_t *a = &r->obj[ci], *b = &r->obj[oi];
     int32_t ix = 2 * x - r->cam->width + 1;
     uint32_t stamp = cur & ~0x1FFFFu;
     if (ci < 32 && ((r->row_win >> ci) & 1u)) { /* oi is nearer than plane ci all along this row */
@@ -1077,8 +1066,8 @@ static bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, in
 
 #if RENDER_STEPPED
 /* The newcomer's depth from the values the scanline loop stepped. */
-static bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const rflat_t *f,
-                                rk_t n, rk_t d)
+static bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+                                render_k_t n, render_k_t d)
 {
     render_raw_t raw;
     raw.how = RENDER_RAW_FLAT;
@@ -1087,7 +1076,7 @@ static bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t 
     raw.d = d;
     return render_settle(r, cur, oi, x, iy, &raw);
 }
-static bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, rk_t b, rsw_t c,
+static bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, rsw_t c,
                                   rsw_t disc)
 {
     render_raw_t raw;
@@ -1219,21 +1208,21 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* Step a flat piece across columns x0..x1: each form is linear, so one
  * exact 64-bit addition per form and pixel. */
-static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb, bool lone)
 {
-    bool single = r->obj[oi].kind == RO_FLAT;
+    bool single = r->obj[oi].kind == RENDER_FLAT;
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     uint64_t n = (uint64_t)rlin_at(&f->n, ix0, iy), d = (uint64_t)rlin_at(&f->d, ix0, iy);
     uint64_t sn = 2 * (uint64_t)f->n.x, sd = 2 * (uint64_t)f->d.x;
     int edges = f->edges;
     if (edges == 0) { /* a plane */
         for (int32_t x = x0; x <= x1; x++) {
-            if (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0)) {
+            if (((render_k_t)n > 0 && (render_k_t)d > 0) || ((render_k_t)n < 0 && (render_k_t)d < 0)) {
                 if (lone)
                     render_paint(r, oi, x, rgb);
                 else
-                    RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (rk_t)n, (rk_t)d));
+                    RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
             }
             n += sn;
             d += sd;
@@ -1246,18 +1235,18 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
      * OR are clear) or all <= 0. */
     uint64_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
     for (int k = 0; k < edges; k++) {
-        const rlin_t *ek = render_edge_k(f, k);
+        const render_lin_t *ek = render_edge_k(f, k);
         e[k] = (uint64_t)rlin_at(ek, ix0, iy);
         se[k] = 2 * (uint64_t)ek->x;
     }
     for (int32_t x = x0; x <= x1; x++) {
-        bool in = (rk_t)(e[0] | e[1] | e[2] | e[3]) >= 0 ||
-                  ((rk_t)e[0] <= 0 && (rk_t)e[1] <= 0 && (rk_t)e[2] <= 0 && (rk_t)e[3] <= 0);
-        if (in && (((rk_t)n > 0 && (rk_t)d > 0) || ((rk_t)n < 0 && (rk_t)d < 0))) {
+        bool in = (render_k_t)(e[0] | e[1] | e[2] | e[3]) >= 0 ||
+                  ((render_k_t)e[0] <= 0 && (render_k_t)e[1] <= 0 && (render_k_t)e[2] <= 0 && (render_k_t)e[3] <= 0);
+        if (in && (((render_k_t)n > 0 && (render_k_t)d > 0) || ((render_k_t)n < 0 && (render_k_t)d < 0))) {
             if (lone)
                 render_paint(r, oi, x, rgb);
             else if (single) /* a box's depth is the nearest of its faces there */
-                RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (rk_t)n, (rk_t)d));
+                RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
             else
                 render_cover(r, oi, x, iy, rgb);
         }
@@ -1275,7 +1264,7 @@ static void render_scan_flat(render_t *r, uint16_t oi, const rflat_t *f, int32_t
  * exactly the values render_sphere_cd computes from scratch. The test
  * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the row:
  * in perspective c is, in orthographic b is, and c < 0 implies disc > 0. */
-static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
@@ -1294,7 +1283,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
     if (ortho) {
         /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
         fx128_t kr = fx128_add(o->u.sphere->k, o->u.sphere->r2);
-        rk_t b = o->u.sphere->b.c;
+        render_k_t b = o->u.sphere->b.c;
         for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
             if (!(use_c ? v.hi < 0 : v.hi >= 0))
                 continue;
@@ -1310,12 +1299,12 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
     uint64_t b = (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere->b.x;
     fx128_t k = o->u.sphere->k;
     for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
-        if (!((rk_t)b > 0 && v.hi >= 0))
+        if (!((render_k_t)b > 0 && v.hi >= 0))
             continue;
         if (lone)
             render_paint(r, oi, x, rgb);
         else
-            RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (rk_t)b, k, v));
+            RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (render_k_t)b, k, v));
     }
 }
 #endif
@@ -1325,16 +1314,16 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const ro_t *o, int32_t 
  * evaluated directly at the segment's first pixel and then stepped by one
  * addition per pixel (the quadratic a by forward differences); rounding
  * accumulates along the segment, unlike the exact Q16.16 steps. */
-static void render_scan_flat_f(render_t *r, uint16_t oi, const rflat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_flat_f(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
-    bool single = r->obj[oi].kind == RO_FLAT;
+    bool single = r->obj[oi].kind == RENDER_FLAT;
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
-    rk_t n = rlin_at(&f->n, ix0, iy), d = rlin_at(&f->d, ix0, iy), sn = 2 * f->n.x, sd = 2 * f->d.x;
-    rk_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
+    render_k_t n = rlin_at(&f->n, ix0, iy), d = rlin_at(&f->d, ix0, iy), sn = 2 * f->n.x, sd = 2 * f->d.x;
+    render_k_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
     int edges = f->edges;
     for (int k = 0; k < edges; k++) {
-        const rlin_t *ek = render_edge_k(f, k);
+        const render_lin_t *ek = render_edge_k(f, k);
         e[k] = rlin_at(ek, ix0, iy);
         se[k] = 2 * ek->x;
     }
@@ -1354,20 +1343,20 @@ static void render_scan_flat_f(render_t *r, uint16_t oi, const rflat_t *f, int32
     }
 }
 
-static void render_scan_sphere_f(render_t *r, uint16_t oi, const ro_t *o, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_sphere_f(render_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
                                  uint8_t *rgb, bool lone)
 {
     const render_sphere_t *sp = o->u.sphere;
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
-    rk_t b = rlin_at(&sp->b, ix0, iy), px = rlin_at(&sp->px, ix0, iy), py = rlin_at(&sp->py, ix0, iy),
+    render_k_t b = rlin_at(&sp->b, ix0, iy), px = rlin_at(&sp->px, ix0, iy), py = rlin_at(&sp->py, ix0, iy),
          pz = rlin_at(&sp->pz, ix0, iy);
-    rk_t sb = 2 * sp->b.x, spx = 2 * sp->px.x, spy = 2 * sp->py.x, spz = 2 * sp->pz.x;
-    rk_t a0 = rquad_at(sp->a, ix0, iy), a1 = rquad_at(sp->a, ix0 + 2, iy), a2 = rquad_at(sp->a, ix0 + 4, iy);
-    rk_t a = a0, da = a1 - a0, dda = a2 - 2 * a1 + a0;
+    render_k_t sb = 2 * sp->b.x, spx = 2 * sp->px.x, spy = 2 * sp->py.x, spz = 2 * sp->pz.x;
+    render_k_t a0 = rquad_at(sp->a, ix0, iy), a1 = rquad_at(sp->a, ix0 + 2, iy), a2 = rquad_at(sp->a, ix0 + 4, iy);
+    render_k_t a = a0, da = a1 - a0, dda = a2 - 2 * a1 + a0;
     for (int32_t x = x0; x <= x1; x++) {
-        rk_t sq = px * px + py * py + pz * pz;
-        rk_t disc = sp->r2 * (sp->ortho ? NUM_ONE : a) - sq;
-        rk_t c = sp->ortho ? sp->k + sq : sp->k;
+        render_k_t sq = px * px + py * py + pz * pz;
+        render_k_t disc = sp->r2 * (sp->ortho ? NUM_ONE : a) - sq;
+        render_k_t c = sp->ortho ? sp->k + sq : sp->k;
         if (render_sphere_vals(b, c, disc)) {
             if (lone)
                 render_paint(r, oi, x, rgb);
@@ -1416,13 +1405,13 @@ static render_depth_t render_depth_widen(render_depth_t t, bool up)
 /* Depth range of plane p over columns x0..x1 of row iy when it covers both
  * ends with one sign of N and D: then it covers the whole segment and its
  * t = N / D is monotone there. */
-static bool render_plane_range(const render_t *r, const ro_t *p, int32_t x0, int32_t x1, int32_t iy,
+static bool render_plane_range(const render_t *r, const render_obj_t *p, int32_t x0, int32_t x1, int32_t iy,
                                render_depth_t *lo, render_depth_t *hi)
 {
-    const rflat_t *f = render_face(p, 0);
+    const render_flat_t *f = render_face(p, 0);
     int32_t w = r->cam->width;
-    rk_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
-    rk_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
+    render_k_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
+    render_k_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
     if (!((na > 0 && da > 0 && nb > 0 && db > 0) || (na < 0 && da < 0 && nb < 0 && db < 0)))
         return false;
     render_depth_t ta = render_flat_depth(f, na, da), tb = render_flat_depth(f, nb, db);
@@ -1432,7 +1421,7 @@ static bool render_plane_range(const render_t *r, const ro_t *p, int32_t x0, int
     return true;
 }
 
-static bool render_is_plane(const ro_t *o) { return o->kind == RO_FLAT && render_face(o, 0)->edges == 0; }
+static bool render_is_plane(const render_obj_t *o) { return o->kind == RENDER_FLAT && render_face(o, 0)->edges == 0; }
 
 /* Depth order against the planes on this row, for object i over its
  * columns x0..x1: r->row_win gets bit j when i is nearer than plane j
@@ -1440,7 +1429,7 @@ static bool render_is_plane(const ro_t *o) { return o->kind == RO_FLAT && render
  * covers the whole segment nearer than i (i is hidden on this row). */
 static bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy)
 {
-    const ro_t *o = &r->obj[i];
+    const render_obj_t *o = &r->obj[i];
     render_depth_t blo, bhi;
     r->row_win = 0;
     if (o->ranged) {
@@ -1452,7 +1441,7 @@ static bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, in
     uint16_t n = r->nplanes < 32 ? r->nplanes : 32;
     for (uint16_t j = 0; j < n; j++) {
         render_depth_t plo, phi;
-        const ro_t *p = &r->obj[j];
+        const render_obj_t *p = &r->obj[j];
         if (j == i || p->r0 > p->r1 || !render_plane_range(r, p, x0, x1, iy, &plo, &phi))
             continue;
         if (render_depth_less(bhi, plo))
@@ -1470,9 +1459,9 @@ static bool render_alone(const render_t *r, uint16_t i, int32_t row)
 {
     if (r->count > 16)
         return false;
-    const ro_t *o = &r->obj[i];
+    const render_obj_t *o = &r->obj[i];
     for (uint16_t j = 0; j < r->count; j++) {
-        const ro_t *p = &r->obj[j];
+        const render_obj_t *p = &r->obj[j];
         if (j != i && row >= p->r0 && row <= p->r1 && p->x0 <= o->x1 && p->x1 >= o->x0)
             return false;
     }
@@ -1486,13 +1475,13 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
     int32_t iy = 2 * y - cam->height + 1;
     render_begin_row(r, rgb);
     for (uint16_t i = 0; i < r->count; i++) {
-        const ro_t *o = &r->obj[i];
+        const render_obj_t *o = &r->obj[i];
         if (!FXRT_NO_BOUNDS && (row < o->r0 || row > o->r1))
             continue;
         int32_t x0 = FXRT_NO_BOUNDS ? 0 : o->x0, x1 = FXRT_NO_BOUNDS ? w - 1 : o->x1;
         if (x0 > x1)
             continue;
-        if (!FXRT_NO_BOUNDS && o->kind == RO_FLAT && render_face(o, 0)->edges == 0) {
+        if (!FXRT_NO_BOUNDS && o->kind == RENDER_FLAT && render_face(o, 0)->edges == 0) {
             /* A plane: along a row its front test is one interval, so if
              * it fails at both ends the row is beyond the horizon. */
             if (!render_flat_at(render_face(o, 0), 2 * x0 - w + 1, iy) &&
@@ -1504,18 +1493,18 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         if (!FXRT_NO_ZRANGE && !lone && r->nplanes && !render_row_order(r, i, x0, x1, iy))
             continue;
         switch (o->kind) {
-        case RO_ALL:
+        case RENDER_ALL:
             for (int32_t x = x0; x <= x1; x++)
                 RENDER_HIT(r, i, x, iy, rgb, lone);
             break;
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
-        case RO_SPHERE:
+        case RENDER_SPHERE:
             render_scan_sphere(r, i, o, x0, x1, iy, rgb, lone);
             break;
-        case RO_FLAT:
-        case RO_BOX:
+        case RENDER_FLAT:
+        case RENDER_BOX:
             for (int k = 0; k < o->nflat; k++) {
-                const rflat_t *f = render_face(o, k);
+                const render_flat_t *f = render_face(o, k);
                 if (FXRT_NO_BOUNDS)
                     render_scan_flat(r, i, f, 0, w - 1, iy, rgb, lone);
                 else if (row >= f->r0 && row <= f->r1)
@@ -1523,13 +1512,13 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
             }
             break;
 #elif RENDER_STEPPED
-        case RO_SPHERE:
+        case RENDER_SPHERE:
             render_scan_sphere_f(r, i, o, x0, x1, iy, rgb, lone);
             break;
-        case RO_FLAT:
-        case RO_BOX:
+        case RENDER_FLAT:
+        case RENDER_BOX:
             for (int k = 0; k < o->nflat; k++) {
-                const rflat_t *f = render_face(o, k);
+                const render_flat_t *f = render_face(o, k);
                 if (FXRT_NO_BOUNDS)
                     render_scan_flat_f(r, i, f, 0, w - 1, iy, rgb, lone);
                 else if (row >= f->r0 && row <= f->r1)
