@@ -100,6 +100,8 @@
  *   FXRT_NO_BOUNDS  1 = step every object over the whole screen
  *   FXRT_NO_STEP    1 = evaluate every form from scratch at each pixel
  *   FXRT_NO_LONE    1 = always go through the owner bookkeeping
+ *   FXRT_NO_SPANS   1 = step a lone flat piece pixel by pixel instead of
+ *                   locating its runs on the row and filling them
  *   FXRT_NO_ZRANGE  1 = decide every overlap by computing both depths (no
  *                   depth ranges, no per-row order against planes)
  *   FXRT_NO_HOIST   1 = (reference loop) recompute each object's forms at
@@ -116,6 +118,9 @@
 #endif
 #ifndef FXRT_NO_ZRANGE
 #define FXRT_NO_ZRANGE 0
+#endif
+#ifndef FXRT_NO_SPANS
+#define FXRT_NO_SPANS 0
 #endif
 #ifndef FXRT_NO_HOIST
 #define FXRT_NO_HOIST 0
