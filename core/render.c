@@ -1292,11 +1292,12 @@ static void render_signs(int64_t a, int64_t b, int32_t kmax, render_iv_t iv[4])
     iv[3] = flip ? nonneg : nonpos;
 }
 
-/* A lone flat piece's hits on columns x0..x1 as at most four runs, found
- * exactly from its forms (the same sign tests as the stepping loop: N and
- * D of one strict sign, edges all >= 0 or all <= 0), then filled. */
-static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
-                             uint8_t *rgb)
+/* A flat piece's hits on columns x0..x1 as at most four runs (k from
+ * x0, possibly overlapping), found exactly from its forms: the same sign
+ * tests as the stepping loop (N and D of one strict sign, edges all >= 0
+ * or all <= 0). Returns the number of runs. */
+static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+                            render_iv_t run[4])
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0;
     render_iv_t n[4], d[4], e[4], ge = {0, kmax}, le = {0, kmax};
@@ -1309,13 +1310,25 @@ static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
         ge = render_iv_and(ge, e[1]);
         le = render_iv_and(le, e[3]);
     }
+    int nrun = 0;
     for (int i = 0; i < 2; i++) {
         render_iv_t a = render_iv_and(front[i], ge), b = render_iv_and(front[i], le);
         if (a.lo <= a.hi)
-            render_fill(r, oi, x0 + a.lo, x0 + a.hi, rgb);
+            run[nrun++] = a;
         if (b.lo <= b.hi && f->edges)
-            render_fill(r, oi, x0 + b.lo, x0 + b.hi, rgb);
+            run[nrun++] = b;
     }
+    return nrun;
+}
+
+/* A lone flat piece: its runs filled. */
+static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+                             uint8_t *rgb)
+{
+    render_iv_t run[4];
+    int nrun = render_runs_flat(r, f, x0, x1, iy, run);
+    for (int k = 0; k < nrun; k++)
+        render_fill(r, oi, x0 + run[k].lo, x0 + run[k].hi, rgb);
 }
 #endif
 
@@ -1331,6 +1344,16 @@ static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
      * (a division per form pays off from about 4 columns per form on the M3). */
     if (lone && x1 - x0 >= 4 * (1 + f->edges)) {
         render_span_flat(r, oi, f, x0, x1, iy, rgb);
+        return;
+    }
+    /* A plane among others: its run located the same way, then each
+     * column claimed (a depth, where one is needed, from the forms). */
+    if (f->edges == 0 && x1 - x0 >= 8) {
+        render_iv_t iv[4];
+        int nrun = render_runs_flat(r, f, x0, x1, iy, iv);
+        for (int k = 0; k < nrun; k++)
+            for (int32_t x = x0 + iv[k].lo; x <= x0 + iv[k].hi; x++)
+                RENDER_COVER(r, oi, x, rgb, render_resolve(r, cur_, oi, x, iy));
         return;
     }
 #endif
