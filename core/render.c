@@ -1351,9 +1351,28 @@ static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
     if (f->edges == 0 && x1 - x0 >= 8) {
         render_iv_t iv[4];
         int nrun = render_runs_flat(r, f, x0, x1, iy, iv);
-        for (int k = 0; k < nrun; k++)
-            for (int32_t x = x0 + iv[k].lo; x <= x0 + iv[k].hi; x++)
+        uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
+        for (int k = 0; k < nrun; k++) {
+            int32_t a = x0 + iv[k].lo, b = x0 + iv[k].hi;
+            /* Columns no object has reached yet on this row: claimed and
+             * filled without looking. */
+            int32_t fa = a, fb = b < r->dirty_lo ? b : r->dirty_lo - 1;
+            if (fa <= fb) {
+                for (int32_t x = fa; x <= fb; x++)
+                    r->owner[x] = tag;
+                render_fill(r, oi, fa, fb, rgb);
+                a = fb + 1;
+            }
+            fa = a > r->dirty_hi + 1 ? a : r->dirty_hi + 1;
+            if (fa <= b) {
+                for (int32_t x = fa; x <= b; x++)
+                    r->owner[x] = tag;
+                render_fill(r, oi, fa, b, rgb);
+                b = fa - 1;
+            }
+            for (int32_t x = a; x <= b; x++)
                 RENDER_COVER(r, oi, x, rgb, render_resolve(r, cur_, oi, x, iy));
+        }
         return;
     }
 #endif
@@ -1619,6 +1638,8 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
     int32_t w = cam->width, y = cam->height - 1 - row;
     int32_t iy = 2 * y - cam->height + 1;
     render_begin_row(r, rgb);
+    r->dirty_lo = (int16_t)w;
+    r->dirty_hi = -1;
     for (uint16_t i = 0; i < r->count; i++) {
         const render_obj_t *o = &r->obj[i];
         if (!FXRT_NO_BOUNDS && (row < o->r0 || row > o->r1))
@@ -1637,6 +1658,9 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         r->row_win = 0;
         if (!FXRT_NO_ZRANGE && !lone && r->nplanes && !render_row_order(r, i, x0, x1, iy))
             continue;
+        /* After this object, columns x0..x1 may be claimed (the hull of
+         * every object's columns so far on this row). */
+        int32_t dlo = r->dirty_lo, dhi = r->dirty_hi;
         switch (o->kind) {
         case RENDER_ALL:
             for (int32_t x = x0; x <= x1; x++)
@@ -1680,6 +1704,8 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
             break;
 #endif
         }
+        r->dirty_lo = x0 < dlo ? x0 : dlo;
+        r->dirty_hi = x1 > dhi ? x1 : dhi;
     }
 }
 

@@ -196,6 +196,7 @@ typedef struct {
     uint16_t stamp;
     uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
     uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
+    int16_t dirty_lo, dirty_hi; /* this row: columns outside have no owner yet */
 } render_t;
 
 /* Per-frame set-up: camera-space forms and screen bounds of every object.
