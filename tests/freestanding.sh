@@ -9,7 +9,7 @@ set -u
 . "$(dirname "$0")/lib.sh"
 out=$BUILD/tests/freestanding
 mkdir -p "$out"
-CORE="fx num color cam geom world render"
+CORE="fx num color cam geom world render_setup render_vis render_row"
 
 bad_includes=$(grep -hE '^\s*#\s*include\s*<' core/*.c core/*.h | grep -vE '<(stdint|stddef|stdbool)\.h>' || true)
 check "core includes only stdint/stddef/stdbool (found: $bad_includes)" test -z "$bad_includes"
