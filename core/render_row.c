@@ -358,6 +358,30 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     bool use_c = ortho && !(o->u.sphere->b.c > 0);
     fx128_t *f = use_c ? c : q;
     fx128_t v = f[0], d1 = fx128_sub(f[1], f[0]), d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
+    if (lone) {
+        /* Alone on the row: find each run by stepping and fill it. The
+         * covered set is one run when it is an interval: orthographic
+         * (c < 0 and disc >= 0 are convex and concave in x), perspective
+         * when disc is concave (d2 < 0) - then stop after it. */
+        bool one_run = ortho || d2.hi < 0;
+        uint64_t b = ortho ? 1 : (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = ortho ? 0 : 2 * (uint64_t)o->u.sphere->b.x;
+        int32_t start = -1, x;
+        for (x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
+            bool hit = ortho ? (use_c ? v.hi < 0 : v.hi >= 0) : ((render_k_t)b > 0 && v.hi >= 0);
+            if (hit) {
+                if (start < 0)
+                    start = x;
+            } else if (start >= 0) {
+                render_fill(r, oi, start, x - 1, rgb);
+                start = -1;
+                if (one_run)
+                    return;
+            }
+        }
+        if (start >= 0)
+            render_fill(r, oi, start, x1, rgb);
+        return;
+    }
     if (ortho) {
         /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
         fx128_t kr = fx128_add(o->u.sphere->k, o->u.sphere->r2);
