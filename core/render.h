@@ -164,7 +164,7 @@ typedef struct {
     render_depth_t tlo, thi;
     union {
         render_sphere_t *sphere; /* RENDER_SPHERE */
-        render_flat_t *flat;           /* RENDER_FLAT: a plane or triangle */
+        render_flat_t *flat;     /* RENDER_FLAT: a plane or triangle */
         render_face_t *face;     /* RENDER_BOX and RENDER_ALL: nflat faces */
     } u;
 } render_obj_t;
@@ -187,9 +187,10 @@ typedef struct {
     uint16_t box_used;
 #endif
     const char *error; /* why render_setup failed, or NULL */
-    /* Per column: (stamp << 16) | object of the nearest cover so far. A
-     * column whose stamp is not the current row's is uncovered, so rows
-     * need no clearing pass. */
+    /* Per column: stamp << 17 | depth-known << 16 | object (index into
+     * obj) of the nearest cover so far. A column whose stamp is not the
+     * current row's is uncovered, so rows need no clearing pass. Columns
+     * painted by an object alone on its row are not recorded. */
     uint32_t owner[FXRT_RENDER_MAX_WIDTH];
     /* Per column: the owner's depth, where a second object has asked. */
     render_depth_t depth[FXRT_RENDER_MAX_WIDTH];
