@@ -235,6 +235,64 @@ static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x
     return nrun;
 }
 
+/* a * m exactly (mod 2^128, so exact whenever the product fits). */
+static fx128_t render_mul128_small(fx128_t a, int32_t m)
+{
+    uint32_t um = m < 0 ? 0u - (uint32_t)m : (uint32_t)m;
+    uint64_t p0 = (uint64_t)(uint32_t)a.lo * um, p1 = (a.lo >> 32) * um;
+    fx128_t r;
+    r.lo = p0 + (p1 << 32);
+    r.hi = (int64_t)((uint64_t)a.hi * um + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
+    return m < 0 ? fx128_neg(r) : r;
+}
+
+/* q(k) = v + d1 k + d2 k (k - 1) / 2: the value the forward differences
+ * reach after k steps, evaluated directly (exact). */
+static fx128_t render_quad_k(fx128_t v, fx128_t d1, fx128_t d2, int32_t k)
+{
+    return fx128_add(fx128_add(v, render_mul128_small(d1, k)), render_mul128_small(d2, (int32_t)((int64_t)k * (k - 1) / 2)));
+}
+
+/* The columns k in 0..kmax where q(k) >= 0, for d2 < 0 (one run or none):
+ * q rises while its step d1 + d2 k is positive, then falls, so the peak
+ * and both ends are binary searches on monotone predicates. */
+static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t kmax)
+{
+    render_iv_t none = {1, 0};
+    int32_t lo = 0, hi = kmax; /* peak: first k whose step is <= 0 (or kmax) */
+    while (lo < hi) {
+        int32_t mid = lo + (hi - lo) / 2;
+        fx128_t step = fx128_add(d1, render_mul128_small(d2, mid));
+        if (step.hi < 0 || (step.hi == 0 && step.lo == 0))
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    int32_t peak = lo;
+    if (render_quad_k(v, d1, d2, peak).hi < 0)
+        return none;
+    int32_t a = 0, b = peak; /* first k <= peak with q >= 0 */
+    while (a < b) {
+        int32_t mid = a + (b - a) / 2;
+        if (render_quad_k(v, d1, d2, mid).hi >= 0)
+            b = mid;
+        else
+            a = mid + 1;
+    }
+    render_iv_t run;
+    run.lo = a;
+    a = peak, b = kmax; /* last k >= peak with q >= 0 */
+    while (a < b) {
+        int32_t mid = b - (b - a) / 2;
+        if (render_quad_k(v, d1, d2, mid).hi >= 0)
+            a = mid;
+        else
+            b = mid - 1;
+    }
+    run.hi = a;
+    return run;
+}
+
 /* A lone flat piece: its runs filled. */
 static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb)
@@ -358,6 +416,20 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     bool use_c = ortho && !(o->u.sphere->b.c > 0);
     fx128_t *f = use_c ? c : q;
     fx128_t v = f[0], d1 = fx128_sub(f[1], f[0]), d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
+#if !FXRT_NO_SPANS
+    if (lone && !ortho && d2.hi < 0) {
+        /* Alone, in perspective, disc concave along the row: its run is
+         * located by exact evaluations (binary searches on the monotone
+         * sides of the quadratic) instead of stepping, then filled. */
+        render_iv_t bi[4];
+        render_signs(rlin_at(&o->u.sphere->b, ix0, iy), 2 * o->u.sphere->b.x, x1 - x0, bi);
+        render_iv_t run = render_sphere_run(v, d1, d2, x1 - x0);
+        run = render_iv_and(run, bi[0]);
+        if (run.lo <= run.hi)
+            render_fill(r, oi, x0 + run.lo, x0 + run.hi, rgb);
+        return;
+    }
+#endif
     if (lone) {
         /* Alone on the row: find each run by stepping and fill it. The
          * covered set is one run when it is an interval: orthographic
