@@ -126,6 +126,23 @@
 #define FXRT_NO_HOIST 0
 #endif
 
+/* FXRT_SPHERE_SEARCH: how the fast Q16.16 renderer finds the run of a
+ * sphere alone on its row (the frame is the same either way):
+ *   1 = binary searches with exact evaluations of the row's quadratic
+ *       (64-bit multiplies: cheap where 32 x 32 -> 64 is one instruction)
+ *   0 = stepping along the row by forward differences (additions only)
+ * Default: 0 on Armv6-M (Cortex-M0 has no long multiply), else 1. */
+#ifndef FXRT_SPHERE_SEARCH
+#if defined(__ARM_ARCH_6M__)
+#define FXRT_SPHERE_SEARCH 0
+#else
+#define FXRT_SPHERE_SEARCH 1
+#endif
+#endif
+#if FXRT_SPHERE_SEARCH != 0 && FXRT_SPHERE_SEARCH != 1
+#error "FXRT_SPHERE_SEARCH must be 0 or 1"
+#endif
+
 /* FXRT_FLOAT_STEP (float and double builds only; Q16.16 always steps,
  * exactly):
  *   0 = evaluate every form directly at every pixel (default)

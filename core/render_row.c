@@ -235,6 +235,7 @@ static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x
     return nrun;
 }
 
+#if FXRT_SPHERE_SEARCH
 /* a * m exactly (mod 2^128, so exact whenever the product fits). */
 static fx128_t render_mul128_small(fx128_t a, int32_t m)
 {
@@ -292,6 +293,8 @@ static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t 
     run.hi = a;
     return run;
 }
+
+#endif
 
 /* A lone flat piece: its runs filled. */
 static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
@@ -416,7 +419,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     bool use_c = ortho && !(o->u.sphere->b.c > 0);
     fx128_t *f = use_c ? c : q;
     fx128_t v = f[0], d1 = fx128_sub(f[1], f[0]), d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
-#if !FXRT_NO_SPANS
+#if !FXRT_NO_SPANS && FXRT_SPHERE_SEARCH
     if (lone && !ortho && d2.hi < 0) {
         /* Alone, in perspective, disc concave along the row: its run is
          * located by exact evaluations (binary searches on the monotone
