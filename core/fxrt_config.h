@@ -111,4 +111,106 @@
 #define FX_HAVE_UMULL (!FXRT_ARCH_SMALL_ISA)
 #endif
 
+/* ---- the scanline renderer (render.h) ---------------------------------- */
+
+/* Widest image a render_t can hold (one owner and depth entry per column). */
+#ifndef FXRT_RENDER_MAX_WIDTH
+#define FXRT_RENDER_MAX_WIDTH FXRT_MAX_DIM
+#endif
+#if FXRT_RENDER_MAX_WIDTH < 1 || FXRT_RENDER_MAX_WIDTH > FXRT_MAX_DIM
+#error "FXRT_RENDER_MAX_WIDTH must be 1..FXRT_MAX_DIM"
+#endif
+
+#define FXRT_RENDER_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
+#if FXRT_RENDER_MAX_OBJECTS < 1
+#error "the world must be able to hold at least one object"
+#endif
+
+/* Box faces the renderer can hold per frame, over all boxes. A box seen
+ * from outside in perspective needs at most 3; from inside, from its
+ * surface, or cut by an orthographic camera's plane, up to 6. A frame that
+ * needs more fails in render_setup with a message. Default: 6 per box. */
+#ifndef FXRT_RENDER_BOX_FACES
+#define FXRT_RENDER_BOX_FACES (6 * FXRT_MAX_BOXES)
+#endif
+#if FXRT_MAX_BOXES > 0 && FXRT_RENDER_BOX_FACES < 1
+#error "FXRT_RENDER_BOX_FACES must be at least 1 when boxes are enabled"
+#endif
+
+/* Ablation switches, for measuring what each optimisation of the fast
+ * renderer saves (make bench-ablation); none changes a Q16.16 pixel:
+ *   FXRT_NO_BOUNDS  1 = step every object over the whole screen
+ *   FXRT_NO_STEP    1 = evaluate every form from scratch at each pixel
+ *   FXRT_NO_LONE    1 = always go through the owner bookkeeping
+ *   FXRT_NO_SPANS   1 = step a lone flat piece pixel by pixel instead of
+ *                   locating its runs on the row and filling them
+ *   FXRT_NO_ZRANGE  1 = decide every overlap by computing both depths (no
+ *                   depth ranges, no per-row order against planes)
+ *   FXRT_NO_HOIST   1 = (reference loop) recompute each object's forms at
+ *                   every pixel instead of once per frame
+ * 0 (default) = the optimisation is on. */
+#ifndef FXRT_NO_BOUNDS
+#define FXRT_NO_BOUNDS 0
+#endif
+#ifndef FXRT_NO_STEP
+#define FXRT_NO_STEP 0
+#endif
+#ifndef FXRT_NO_LONE
+#define FXRT_NO_LONE 0
+#endif
+#ifndef FXRT_NO_ZRANGE
+#define FXRT_NO_ZRANGE 0
+#endif
+#ifndef FXRT_NO_SPANS
+#define FXRT_NO_SPANS 0
+#endif
+#ifndef FXRT_NO_HOIST
+#define FXRT_NO_HOIST 0
+#endif
+
+/* FXRT_SPHERE_SEARCH: how the fast Q16.16 renderer finds the run of a
+ * sphere alone on its row (the frame is the same either way):
+ *   1 = binary searches with exact evaluations of the row's quadratic
+ *       (64-bit multiplies: cheap where 32 x 32 -> 64 is one instruction)
+ *   0 = stepping along the row by forward differences (additions only)
+ * Default: 0 on Armv6-M (Cortex-M0 has no long multiply), else 1. */
+#ifndef FXRT_SPHERE_SEARCH
+#if defined(__ARM_ARCH_6M__)
+#define FXRT_SPHERE_SEARCH 0
+#else
+#define FXRT_SPHERE_SEARCH 1
+#endif
+#endif
+#if FXRT_SPHERE_SEARCH != 0 && FXRT_SPHERE_SEARCH != 1
+#error "FXRT_SPHERE_SEARCH must be 0 or 1"
+#endif
+
+/* FXRT_FLOAT_STEP (float and double builds only; Q16.16 always steps,
+ * exactly):
+ *   0 = evaluate every form directly at every pixel (default)
+ *   1 = step forms by forward differences along the row, restarted from a
+ *       direct evaluation at the start of every object's row segment: what
+ *       a careful float programmer would write. Drift makes it differ from
+ *       the double reference; see docs/BENCHMARKS.md. */
+#ifndef FXRT_FLOAT_STEP
+#define FXRT_FLOAT_STEP 0
+#endif
+#if FXRT_FLOAT_STEP != 0 && FXRT_FLOAT_STEP != 1
+#error "FXRT_FLOAT_STEP must be 0 or 1"
+#endif
+
+/* Pixel format of the rows render_row writes:
+ *   1 = FXRT_RGB888  3 bytes per pixel, R, G, B (default)
+ *   2 = FXRT_RGB565  one uint16_t per pixel in native byte order,
+ *                    R in bits 15..11, G in 10..5, B in 4..0, each the
+ *                    8-bit value's top bits (truncated) */
+#define FXRT_RGB888 1
+#define FXRT_RGB565 2
+#ifndef FXRT_PIXEL
+#define FXRT_PIXEL FXRT_RGB888
+#endif
+#if FXRT_PIXEL != FXRT_RGB888 && FXRT_PIXEL != FXRT_RGB565
+#error "FXRT_PIXEL must be FXRT_RGB888 (1) or FXRT_RGB565 (2)"
+#endif
+
 #endif

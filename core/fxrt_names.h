@@ -33,6 +33,12 @@
 #define render_row FXRT_SYM(render_row)
 #define render_row_reference FXRT_SYM(render_row_reference)
 #define render_setup FXRT_SYM(render_setup)
+#define render_setup_object FXRT_SYM(render_setup_object)
+#define render_depth_make FXRT_SYM(render_depth_make)
+#define render_resolve FXRT_SYM(render_resolve)
+#define render_resolve_flat FXRT_SYM(render_resolve_flat)
+#define render_resolve_sphere FXRT_SYM(render_resolve_sphere)
+#define render_row_order FXRT_SYM(render_row_order)
 #define raycast_row FXRT_SYM(raycast_row)
 #endif
 

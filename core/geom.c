@@ -3,11 +3,6 @@
  * plane, triangle or box code. */
 #include "geom.h"
 
-static inline num_t geom_axis(vec3_t v, int i)
-{
-    return i == 0 ? v.x : (i == 1 ? v.y : v.z);
-}
-
 /* One value against |v| <= limit; NaN fails the comparison. */
 static fxrt_err_t geom_check_num(num_t v, int32_t limit)
 {
@@ -31,7 +26,9 @@ fxrt_err_t geom_check_point(vec3_t p)
 }
 
 /* Only the direction of these matters, so a tiny component is harmless
- * (the host normalises them in double before rounding): no TINY check. */
+ * (a value given in the build's number type is taken as it is; the scene
+ * parser refuses decimal directions that rounding would turn): no TINY
+ * check. */
 fxrt_err_t geom_check_dir(vec3_t d)
 {
     num_t lim = num_from_int(FXRT_COORD_LIMIT);
@@ -183,16 +180,6 @@ bool geom_triangle_make(geom_triangle_t *tr, vec3_t a, vec3_t b, vec3_t c, color
     geom_common_init(&tr->obj, color, id);
     tr->degenerate = !vec3_unit_cross(vec3_sub(b, a), vec3_sub(c, a), &tr->n);
     return geom_triangle_check(a, b, c, color) == FXRT_OK;
-}
-
-/* Lexicographic order of points, to give each edge one canonical direction. */
-static bool geom_point_less(vec3_t p, vec3_t q)
-{
-    if (p.x != q.x)
-        return p.x < q.x;
-    if (p.y != q.y)
-        return p.y < q.y;
-    return p.z < q.z;
 }
 
 /* Which side of the edge p -> q the ray passes: d . ((p - o) x (q - o)),

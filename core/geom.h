@@ -48,6 +48,24 @@ typedef struct {
     geom_common_t obj;
 } geom_box_t;
 
+/* Component i (0 = x, 1 = y, 2 = z) of v. */
+static inline num_t geom_axis(vec3_t v, int i)
+{
+    return i == 0 ? v.x : (i == 1 ? v.y : v.z);
+}
+
+/* Lexicographic order of points, to give each edge one canonical
+ * direction (the kernels and the renderer's edge forms both use it, so
+ * two faces sharing an edge get exactly opposite tests: watertight). */
+static inline bool geom_point_less(vec3_t p, vec3_t q)
+{
+    if (p.x != q.x)
+        return p.x < q.x;
+    if (p.y != q.y)
+        return p.y < q.y;
+    return p.z < q.z;
+}
+
 /* Colour channels: COLOR_MAX is full intensity and COLOR_FRAC(x) the
  * channel for an intensity fraction x in 0..1 (a constant initialiser).
  * Here a channel is the fraction itself; color.h may define both for

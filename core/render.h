@@ -1,7 +1,7 @@
 /* render: the scanline renderer for primary rays.
  *
- * Primary rays are coherent: in camera space the ray through pixel offsets
- * (ix, iy) = (2x - W + 1, 2y - H + 1) is
+ * Coverage. Primary rays are coherent: in camera space the ray through
+ * pixel offsets (ix, iy) = (2x - W + 1, 2y - H + 1) is
  *   perspective   o = 0,                r = (ix, iy, -F)   (F = H cot(fov/2))
  *   orthographic  o = (su ix, sv iy, 0), r = (0, 0, -1)
  * so whether a ray hits an object is the sign of a few polynomials of
@@ -9,7 +9,7 @@
  * per frame (the ray-invariant work, hoisted):
  *   sphere     b = oc.r (linear, oc = C - o), c = |oc|^2 - R^2 (inside
  *              when < 0), disc = R^2 |r|^2 - |oc x r|^2 (= b^2 - a c
- *              without its cancellation; oc x r is linear)
+ *              without its cancellation; oc x r is linear, a = |r|^2)
  *              hit = c < 0 || (b > 0 && disc >= 0)
  *   flat       N = n.(A - o), D = n.r; in front when N, D have one strict
  *              sign; a triangle or box face adds one linear edge form per
@@ -22,22 +22,58 @@
  * In the Q16.16 build the coefficients are integers (rounded once, with a
  * per-form power-of-two scale), so every value along a scanline is exact:
  * forward differencing (one 64-bit addition per linear form and pixel,
- * two 128-bit additions for a sphere's quadratic) gives
- * exactly what evaluating the polynomial from scratch gives. That is what
- * lets the fast renderer skip and step while staying byte-identical to
- * the reference loop (render_row_reference), which evaluates every
- * object's polynomials at every pixel. The float and double builds use the
- * same set-up but evaluate each polynomial directly (float forward
- * differencing would drift).
+ * two 128-bit additions for a sphere's quadratic) gives exactly what
+ * evaluating the polynomial from scratch gives. That is what lets the fast
+ * renderer skip and step while staying byte-identical to the reference
+ * loop (render_row_reference), which evaluates every object's polynomials
+ * at every pixel. The float and double builds use the same set-up and
+ * evaluate each polynomial directly, or, with FXRT_FLOAT_STEP, step them
+ * in floating point from a direct evaluation at the start of each object's
+ * row segment (that drifts; it is the baseline a float programmer writes).
+ *
+ * Visibility. Where two objects cover a pixel, the nearer wins; ties go to
+ * the object that comes first in the scene (lower id). Depth is the ray
+ * parameter t along the camera-space ray r above (the same r for every
+ * object at a pixel), formed from the coverage forms themselves, never by
+ * casting the pixel's ray:
+ *   flat       t = N / D
+ *   sphere     t = c / (b + s) outside (the near root without
+ *              cancellation), s = sqrt(disc); inside, the far root
+ *              (b + s) / a, or (-c) / (s - b) when b < 0
+ *   box        the smallest t of its faces that cover the pixel
+ * Q16.16 keeps t as n / d * 2^e with n and d the top 24 bits of the exact
+ * integer numerator and denominator (s: the integer square root of the top
+ * bits of disc), and compares two depths exactly by cross-multiplication
+ * (24 x 24-bit products). This depth, a deterministic function of the
+ * object's integer forms at the pixel, is the depth rule of both loops.
+ * Each column keeps its owner and, once a second object has asked, the
+ * owner's depth, so a further object costs one compare. Most overlaps need
+ * no depth at all: every bounded object has a depth range from its
+ * camera-space z (t = -z / F, orthographic -z) with a margin, and per row
+ * each object's range is compared with each plane's range over the
+ * object's columns (t = N / D is monotone along a row), which decides "in
+ * front of that plane on this whole row" or hides the object on the row.
+ * These shortcuts only skip computations whose result they already know,
+ * so the image is what the per-pixel compare gives (FXRT_NO_ZRANGE turns
+ * them off; the frames are byte-identical).
+ *
+ * What is exact: coverage (every form value, in integers); the depth
+ * compare of the 24-bit depths. What is rounded: the forms' coefficients
+ * (once per frame) and the 24-bit truncation of n, d and s, so two
+ * surfaces closer than about 2^-22 of their distance may be ordered
+ * differently from exact arithmetic (a world-space ray caster in Q16.16
+ * resolves far less).
  *
  * Screen bounds: each object also gets a conservative pixel rectangle (its
  * projected bounding box plus a margin, or the whole screen when it
  * straddles the eye plane); planes are unbounded but whole rows on the far
  * side of the horizon are skipped. Pixels no object can cover are never
  * tested, and an object whose rectangle meets no other's on a row paints
- * its hits without any bookkeeping. When two objects cover one pixel, the nearer wins: t comes from
- * the world-space kernels (geom_*_hit) along that pixel's ray, ties go to
- * the object that comes first in the scene.
+ * its hits without any bookkeeping.
+ *
+ * Memory: per-kind records (render_sphere_t, render_flat_t, render_face_t) in
+ * arrays sized by the per-kind capacities of fxrt_config.h, plus per column
+ * an owner word and an 8-byte depth.
  */
 #ifndef FXRT_RENDER_H
 #define FXRT_RENDER_H
@@ -45,90 +81,134 @@
 #include "cam.h"
 #include "world.h"
 
-/* Widest image a render_t can hold (one owner entry per column). */
-#ifndef FXRT_RENDER_MAX_WIDTH
-#define FXRT_RENDER_MAX_WIDTH FXRT_MAX_DIM
-#endif
-#define FXRT_RENDER_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
-#if FXRT_RENDER_MAX_OBJECTS < 1
-#error "the world must be able to hold at least one object"
-#endif
-
 #if FXRT_NUMBER == FXRT_Q16
-typedef int64_t rk_t; /* coefficient: a scaled integer */
+typedef int64_t render_k_t; /* coefficient: a scaled integer */
 #else
-typedef num_t rk_t;
+typedef num_t render_k_t;
 #endif
 
 /* c + x ix + y iy */
 typedef struct {
-    rk_t c, x, y;
-} rlin_t;
+    render_k_t c, x, y;
+} render_lin_t;
 
 /* c + x ix + y iy + xx ix^2 + xy ix iy + yy iy^2 */
 typedef struct {
-    rk_t c, x, y, xx, xy, yy;
-} rquad_t;
+    render_k_t c, x, y, xx, xy, yy;
+} render_quad_t;
 
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
-    rlin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
-    rlin_t e[4];  /* edge forms */
+    render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
+    render_lin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
     uint8_t edges;
+    int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
     int16_t x0, x1, r0, r1; /* this piece's own pixel bounds (a box face's) */
-} rflat_t;
+} render_flat_t;
 
-typedef enum { RO_SPHERE, RO_FLAT, RO_BOX, RO_ALL } ro_kind_t;
+/* A depth (ray parameter along the camera-space ray): Q16.16 keeps
+ * t = n / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef struct {
+    unsigned int n : 24;
+    signed int e : 8;
+    unsigned int d : 24;
+} render_depth_t;
+#else
+typedef struct {
+    num_t t;
+} render_depth_t;
+#endif
+
+/* A sphere's forms. disc = r2 a - (px^2 + py^2 + pz^2) and c: with the
+ * eye at o, centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
+ * (the same as b^2 - a c, without its cancellation).
+ * Perspective: p = C x r, a = |r|^2 (one form for every sphere), c = k =
+ * |C|^2 - R^2. Orthographic: p = the offsets of the ray from the centre
+ * across the view, pz = 0, a = 1, c = k + px^2 + py^2.
+ * Q16.16: pieces below 2^62, squares and sums exact in 128 bits. */
+typedef struct {
+    render_lin_t b, px, py, pz; /* b shares the p pieces' scale */
+    const render_quad_t *a;
+#if FXRT_NUMBER == FXRT_Q16
+    fx128_t k, r2;
+#else
+    render_k_t k, r2;
+#endif
+    bool ortho;
+    int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
+} render_sphere_t;
+
+/* A box face: a flat piece with a fourth edge (render_flat_t first, so a
+ * pointer to f is a pointer to the face). */
+typedef struct {
+    render_flat_t f;
+    render_lin_t e4;
+} render_face_t;
+
+typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_ALL } render_kind_t;
 
 typedef struct {
-    ro_kind_t kind;
-    geom_kind_t geom;  /* which world array, for depth */
+    uint8_t kind;      /* render_kind_t */
+    uint8_t geom;      /* geom_kind_t: which world array */
+    uint8_t nflat;     /* RENDER_FLAT: 1, RENDER_BOX and RENDER_ALL: faces */
+    bool ranged;       /* tlo, thi bound its depth (not for planes) */
     uint16_t index;    /* index there */
     uint16_t id;       /* scene order, for ties */
     rgb8_t rgb;
+#if FXRT_PIXEL == FXRT_RGB565
+    uint16_t px;       /* rgb as an RGB565 pixel */
+#endif
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
-    uint8_t nflat;     /* RO_FLAT: 1, RO_BOX: visible faces */
+    render_depth_t tlo, thi;
     union {
-        struct {
-            /* disc = r2 a - (px^2 + py^2 + pz^2) and c: with the eye at o,
-             * centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
-             * (the same as b^2 - a c, without its cancellation).
-             * Perspective: p = C x r, a = |r|^2, c = k = |C|^2 - R^2.
-             * Orthographic: p = the offsets of the ray from the centre
-             * across the view, pz = 0, a = 1, c = k + px^2 + py^2.
-             * Q16.16: pieces below 2^62, squares and sums exact in 128 bits. */
-            rlin_t b, px, py, pz;
-            rquad_t a;
-            bool ortho;
-#if FXRT_NUMBER == FXRT_Q16
-            fx128_t k, r2;
-#else
-            rk_t k, r2;
-#endif
-        } sphere;
-        rflat_t flat[6]; /* RO_BOX: its faces that can be hit (see render_setup_box) */
+        render_sphere_t *sphere; /* RENDER_SPHERE */
+        render_flat_t *flat;     /* RENDER_FLAT: a plane or triangle */
+        render_face_t *face;     /* RENDER_BOX and RENDER_ALL: nflat faces */
     } u;
-} ro_t;
+} render_obj_t;
 
 typedef struct {
     const world_t *world;
     const cam_t *cam;
     uint16_t count;
-    ro_t obj[FXRT_RENDER_MAX_OBJECTS];
-    /* Per column: (stamp << 16) | object of the nearest cover so far. A
-     * column whose stamp is not the current row's is uncovered, so rows
-     * need no clearing pass. */
+    render_obj_t obj[FXRT_RENDER_MAX_OBJECTS];
+    /* Per-kind records, sized by the per-kind capacities. */
+#if FXRT_MAX_SPHERES > 0
+    render_sphere_t spheres[FXRT_MAX_SPHERES];
+    render_quad_t sphere_a; /* a = |r|^2, shared by every sphere */
+#endif
+#if FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES > 0
+    render_flat_t flats[FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES]; /* one per plane or triangle */
+#endif
+#if FXRT_MAX_BOXES > 0
+    render_face_t box_faces[FXRT_RENDER_BOX_FACES]; /* the faces a box can be hit through, box after box */
+    uint16_t box_used;
+#endif
+    const char *error; /* why render_setup failed, or NULL */
+    /* Per column: stamp << 17 | depth-known << 16 | object (index into
+     * obj) of the nearest cover so far. A column whose stamp is not the
+     * current row's is uncovered, so rows need no clearing pass. Columns
+     * painted by an object alone on its row are not recorded. */
     uint32_t owner[FXRT_RENDER_MAX_WIDTH];
+    /* Per column: the owner's depth, where a second object has asked. */
+    render_depth_t depth[FXRT_RENDER_MAX_WIDTH];
     uint16_t stamp;
+    uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
+    uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
+    int16_t dirty_lo, dirty_hi; /* this row: columns outside have no owner yet */
 } render_t;
 
 /* Per-frame set-up: camera-space forms and screen bounds of every object.
- * The world and camera must outlive r. Returns false when the camera is
- * wider than FXRT_RENDER_MAX_WIDTH. */
+ * The world and camera must outlive r. Returns false (r->error says why)
+ * when the camera is wider than FXRT_RENDER_MAX_WIDTH or the boxes need
+ * more faces than FXRT_RENDER_BOX_FACES. */
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
 
-/* Render output row `row` (0 = top) into rgb (3 * width bytes, RGB888). */
+/* Render output row `row` (0 = top) into rgb in the FXRT_PIXEL format:
+ * RGB888, 3 * width bytes; RGB565, width uint16_t values in native byte
+ * order (rgb 2-byte aligned). */
 void render_row(render_t *r, int32_t row, uint8_t *rgb);
 
 /* The same image from the straightforward loop: every object's forms

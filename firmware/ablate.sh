@@ -8,7 +8,12 @@
 #   fast, no bounds         stepping, but over the whole screen
 #   fast, no stepping       bounds, but every form evaluated from scratch
 #   fast, no lone painting  every hit through the owner bookkeeping
+#   fast, no spans          lone flat pieces stepped pixel by pixel
+#   fast, no depth ranges   every overlap decided by computing both depths
+#                           (no z ranges, no per-row order against planes)
 #   fast                    the default build
+# Scenes: the seed scenes and, when present, scenes/bench/ (ABLATE_SCENES
+# overrides the list).
 # Prints a markdown table; exits non-zero if a frame differs.
 set -eu
 BUILD=${BUILD:-build}
@@ -21,9 +26,18 @@ variants=(
     "fast, no bounds|ablnobounds|-DFXRT_NO_BOUNDS=1"
     "fast, no stepping|ablnostep|-DFXRT_NO_STEP=1"
     "fast, no lone painting|ablnolone|-DFXRT_NO_LONE=1"
+    "fast, no spans|ablnospans|-DFXRT_NO_SPANS=1"
+    "fast, no depth ranges|ablnozrange|-DFXRT_NO_ZRANGE=1"
     "fast||"
 )
-scenes=(scenes/abb*.scene)
+if [ -n "${ABLATE_SCENES:-}" ]; then
+    read -r -a scenes <<<"$ABLATE_SCENES"
+else
+    scenes=(scenes/abb*.scene)
+    for s in scenes/bench/*.scene; do
+        [ -e "$s" ] && scenes+=("$s")
+    done
+fi
 header="| variant |"
 rule="|---|"
 for s in "${scenes[@]}"; do

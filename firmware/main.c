@@ -8,10 +8,10 @@
  *   FXRT_FB_FULL    the whole frame in a static framebuffer, then one dump
  *   FXRT_FB_STREAM  FXRT_BAND_ROWS rows at a time, each band sent as soon
  *                   as it is rendered: RAM does not grow with image height
- * Pixel format of the framebuffer (FXRT_PIXEL, full-frame mode):
- *   FXRT_RGB888     3 bytes per pixel, exactly the renderer's output
- *   FXRT_RGB565     2 bytes per pixel; expanded back to 8 bits for the PPM
- *                   (lossy: low bits replicated)
+ * Pixel format of the framebuffer: FXRT_PIXEL (fxrt_config.h), the format
+ * the core's render_row writes (full-frame mode): RGB888, or RGB565 as
+ * uint16_t per pixel, expanded back to 8 bits for the PPM (lossy: low bits
+ * replicated). The ray caster writes RGB888 only, so it is packed here.
  */
 #include "fxrt.h"
 #include "raycast.h"
@@ -24,11 +24,6 @@
 #define FXRT_FB_STREAM 2
 #ifndef FXRT_FB_MODE
 #define FXRT_FB_MODE FXRT_FB_FULL
-#endif
-#define FXRT_RGB888 1
-#define FXRT_RGB565 2
-#ifndef FXRT_PIXEL
-#define FXRT_PIXEL FXRT_RGB888
 #endif
 #ifndef FXRT_BAND_ROWS
 #define FXRT_BAND_ROWS 1
@@ -61,7 +56,7 @@ static cam_t cam;
 #if FXRT_PIXEL == FXRT_RGB888
 static uint8_t framebuffer[SCENE_HEIGHT][ROW_BYTES] __attribute__((aligned(4)));
 #else
-static uint16_t framebuffer[SCENE_HEIGHT][SCENE_WIDTH];
+static uint16_t framebuffer[SCENE_HEIGHT][SCENE_WIDTH] __attribute__((aligned(4)));
 static uint8_t row_rgb[ROW_BYTES] __attribute__((aligned(4)));
 #endif
 #else
@@ -135,10 +130,12 @@ static void send_header(int32_t fd)
 }
 
 #if FXRT_PIXEL == FXRT_RGB565
+#if FXRT_RENDERER == FXRT_RENDERER_RAYCAST
 static uint16_t pack565(const uint8_t *p)
 {
     return (uint16_t)(((p[0] >> 3) << 11) | ((p[1] >> 2) << 5) | (p[2] >> 3));
 }
+#endif
 static void unpack565(uint16_t c, uint8_t *p)
 {
     uint8_t r = (uint8_t)(c >> 11), g = (uint8_t)((c >> 5) & 63), b = (uint8_t)(c & 31);
@@ -180,17 +177,20 @@ int main(void)
     uint64_t build_ticks = t0 - tb;
     int32_t se = fxrt_render_setup(&render_state, &world, &cam);
     if (se != FXRT_OK)
-        fail2("render set-up: ", fxrt_strerror(se));
+        fail2("render set-up: ", se == FXRT_ERR_RENDER && render_state.error ? render_state.error : fxrt_strerror(se));
 #if FXRT_FB_MODE == FXRT_FB_FULL
 #if FXRT_PIXEL == FXRT_RGB888
     for (int32_t row = 0; row < SCENE_HEIGHT; row++)
         RENDER_ROW(&render_state, row, framebuffer[row]);
-#else
+#elif FXRT_RENDERER == FXRT_RENDERER_RAYCAST
     for (int32_t row = 0; row < SCENE_HEIGHT; row++) {
         RENDER_ROW(&render_state, row, row_rgb);
         for (int32_t x = 0; x < SCENE_WIDTH; x++)
             framebuffer[row][x] = pack565(&row_rgb[3 * x]);
     }
+#else
+    for (int32_t row = 0; row < SCENE_HEIGHT; row++) /* the core writes RGB565 */
+        RENDER_ROW(&render_state, row, (uint8_t *)framebuffer[row]);
 #endif
     uint64_t ticks = counter_ticks() - t0;
 #if FXRT_PIXEL == FXRT_RGB888

@@ -1333,6 +1333,159 @@ static void test_color_rule(void)
     CHECK(p.r == 50 && p.g == 100 && p.b == 0);
 }
 
+/* ---- 10. overlapping objects -------------------------------------------- */
+
+#define OW 40
+#define OH 30
+
+static double orand(uint64_t *st, double lo, double hi)
+{
+    return lo + (hi - lo) * (double)(check_rng_next(st) >> 11) / 9007199254740992.0;
+}
+
+/* Nearest and second-nearest hit over every object of the world, by the
+ * world-space kernels (an algorithm independent of the renderer's
+ * camera-space forms and depths). */
+static int oracle_pixel(const ray_t *ray, num_t *t1, num_t *t2, rgb8_t *rgb)
+{
+    int best = -1;
+    uint16_t best_id = 0;
+    *t1 = *t2 = NUM_MAX;
+    *rgb = world.background_rgb;
+    for (int kind = 0; kind < 4; kind++) {
+        int n = kind == 0 ? world.n_planes : kind == 1 ? world.n_spheres : kind == 2 ? world.n_triangles : world.n_boxes;
+        for (int i = 0; i < n; i++) {
+            num_t t;
+            bool hit;
+            const geom_common_t *o;
+            if (kind == 0) {
+                hit = geom_plane_hit(&world.planes[i], ray, &t);
+                o = &world.planes[i].obj;
+            } else if (kind == 1) {
+                hit = geom_sphere_hit(&world.spheres[i], ray, &t);
+                o = &world.spheres[i].obj;
+            } else if (kind == 2) {
+                hit = geom_triangle_hit(&world.triangles[i], ray, &t);
+                o = &world.triangles[i].obj;
+            } else {
+                hit = geom_box_hit(&world.boxes[i], ray, &t);
+                o = &world.boxes[i].obj;
+            }
+            if (!hit)
+                continue;
+            if (t < *t1 || (t == *t1 && o->id < best_id)) {
+                *t2 = *t1;
+                *t1 = t;
+                best = o->id;
+                best_id = o->id;
+                *rgb = o->rgb;
+            } else if (t < *t2) {
+                *t2 = t;
+            }
+        }
+    }
+    return best;
+}
+
+/* Random worlds whose objects overlap on screen (planes, spheres,
+ * triangles, boxes in one region; both camera kinds; arbitrary colours):
+ * render_row must equal render_row_reference byte for byte, and every
+ * pixel away from silhouettes (its 8 neighbours see the same object) and
+ * from near ties (second hit within 1/1000 of the first) must show the
+ * nearest object of the world-space kernels. Cap: 0 such pixels wrong. */
+static void test_render_overlap(void)
+{
+    uint64_t st = 0x5eed0ffe12ull;
+    static int ids[OH][OW];
+    static rgb8_t want[OH][OW];
+    static bool tie[OH][OW];
+    long rows_bad = 0, interior = 0, interior_bad = 0, overlaps = 0;
+    for (int it = 0; it < 120; it++) {
+        world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
+        uint16_t id = 0;
+        int np = (int)(check_rng_next(&st) % 3), ns = (int)(check_rng_next(&st) % 5),
+            nt = (int)(check_rng_next(&st) % 4), nb = (int)(check_rng_next(&st) % 3);
+        for (int i = 0; i < np; i++) {
+            vec3_t n = V3(orand(&st, -0.5, 0.5), orand(&st, 0.2, 1), orand(&st, -0.3, 1));
+            if (geom_plane_make(&world.planes[world.n_planes], V3(0, orand(&st, -3, -1), orand(&st, -12, -6)), n,
+                                col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_planes++, id++;
+        }
+        for (int i = 0; i < ns; i++)
+            if (geom_sphere_make(&world.spheres[world.n_spheres],
+                                 V3(orand(&st, -2, 2), orand(&st, -1.5, 1.5), orand(&st, -7, -3)),
+                                 N(orand(&st, 0.3, 1.5)), col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)),
+                                 id))
+                world.n_spheres++, id++;
+        for (int i = 0; i < nt; i++) {
+            double x = orand(&st, -2, 2), y = orand(&st, -1.5, 1.5), z = orand(&st, -7, -3);
+            if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x, y, z),
+                                   V3(x + orand(&st, -2, 2), y + orand(&st, 0.5, 2), z + orand(&st, -2, 2)),
+                                   V3(x + orand(&st, 0.5, 2), y + orand(&st, -2, 2), z + orand(&st, -2, 2)),
+                                   col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_triangles++, id++;
+        }
+        for (int i = 0; i < nb; i++) {
+            double x = orand(&st, -2, 2), y = orand(&st, -1.5, 1.5), z = orand(&st, -7, -3);
+            if (geom_box_make(&world.boxes[world.n_boxes], V3(x, y, z),
+                              V3(x + orand(&st, 0.2, 2), y + orand(&st, 0.2, 2), z + orand(&st, 0.2, 2)),
+                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_boxes++, id++;
+        }
+        cam_t c;
+        bool ortho = it % 3 == 2;
+        vec3_t eye = V3(orand(&st, -1, 1), orand(&st, -0.5, 1.5), orand(&st, 0, 2));
+        vec3_t gaze = V3(orand(&st, -0.2, 0.2), orand(&st, -0.3, 0.1), -1);
+        CHECK(cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, eye, gaze, V3(0, 1, 0),
+                        N(orand(&st, 30, 90)), N(orand(&st, 4, 10)), OW, OH) == CAM_OK);
+        static render_t state;
+        CHECK(render_setup(&state, &world, &c));
+        for (int32_t row = 0; row < OH; row++)
+            for (int32_t x = 0; x < OW; x++) {
+                ray_t r;
+                num_t t1, t2;
+                cam_ray(&c, x, OH - 1 - row, &r);
+                ids[row][x] = oracle_pixel(&r, &t1, &t2, &want[row][x]);
+                tie[row][x] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
+                overlaps += t2 != NUM_MAX;
+            }
+        for (int32_t row = 0; row < OH; row++) {
+            uint8_t fast[3 * OW], ref[3 * OW];
+            render_row(&state, row, fast);
+            render_row_reference(&state, row, ref);
+            if (memcmp(fast, ref, sizeof fast) != 0) {
+                rows_bad++;
+                CHECK_SWEEP(false, "scene %d row %d: fast != reference", it, (int)row);
+            }
+            for (int32_t x = 1; x + 1 < OW; x++) {
+                if (row == 0 || row + 1 == OH || tie[row][x])
+                    continue;
+                bool edge = false;
+                for (int dy = -1; dy <= 1; dy++)
+                    for (int dx = -1; dx <= 1; dx++)
+                        edge |= ids[row + dy][x + dx] != ids[row][x];
+                if (edge)
+                    continue;
+                interior++;
+                const uint8_t *p = &fast[3 * x];
+                rgb8_t w = want[row][x];
+                if (p[0] != w.r || p[1] != w.g || p[2] != w.b) {
+                    interior_bad++;
+                    CHECK_SWEEP(false, "scene %d (%s) row %d x %d: got %d %d %d, want %d %d %d (object %d)", it,
+                                ortho ? "ortho" : "persp", (int)row, (int)x, p[0], p[1], p[2], w.r, w.g, w.b,
+                                ids[row][x]);
+                }
+            }
+        }
+    }
+    printf("overlap: %ld interior pixels checked, %ld with two or more hits, %ld wrong, %ld rows fast != reference\n",
+           interior, overlaps, interior_bad, rows_bad);
+    CHECK_MSG(interior > 20000 && overlaps > 5000, "too few pixels exercised: %ld interior, %ld overlaps", interior,
+              overlaps);
+    CHECK_MSG(interior_bad == 0, "%ld interior pixels differ from the kernels' nearest object", interior_bad);
+    CHECK_MSG(rows_bad == 0, "%ld rows differ between render_row and render_row_reference", rows_bad);
+}
+
 int main(void)
 {
     test_color_rule();
@@ -1355,5 +1508,6 @@ int main(void)
     test_random();
     test_world();
     test_render();
+    test_render_overlap();
     return check_report("test_geom_" NUM_NAME);
 }

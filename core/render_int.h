@@ -1,0 +1,179 @@
+/* render_int: what the renderer's three parts share (private; the public
+ * API is render.h):
+ *   render_setup.c  per-frame set-up: each object's camera-space forms,
+ *                   screen bounds and depth range (render_setup)
+ *   render_vis.c    visibility: depths from the forms, the nearest owner of
+ *                   a column, depth ranges and per-row order against planes
+ *   render_row.c    the scanlines: stepping, spans, painting in the pixel
+ *                   format (render_row, render_row_reference)
+ */
+#ifndef FXRT_RENDER_INT_H
+#define FXRT_RENDER_INT_H
+
+#include <stddef.h>
+
+#include "render.h"
+
+/* Set-up helpers that a build without some primitive kind does not call. */
+#define RENDER_MAYBE_UNUSED __attribute__((unused))
+
+/* Does the fast loop step forms along the row? Q16.16 always (exactly),
+ * float and double with FXRT_FLOAT_STEP; never with FXRT_NO_STEP. */
+#define RENDER_STEPPED (!FXRT_NO_STEP && (FXRT_NUMBER == FXRT_Q16 || FXRT_FLOAT_STEP))
+
+/* RGB565 of an 8-bit colour: each channel's top bits. */
+RENDER_MAYBE_UNUSED static uint16_t render_565(rgb8_t c)
+{
+    return (uint16_t)(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
+}
+
+/* Face i of a flat object (a box's faces carry a fourth edge). */
+static inline render_flat_t *render_face(const render_obj_t *o, int i)
+{
+    return o->kind == RENDER_FLAT ? o->u.flat : &o->u.face[i].f;
+}
+
+/* Edge form k of a flat piece; the fourth is a box face's. */
+static inline const render_lin_t *render_edge_k(const render_flat_t *f, int k)
+{
+    return k < 3 ? &f->e[k] : &((const render_face_t *)(const void *)f)->e4;
+}
+
+static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTHOGRAPHIC; }
+
+/* ---- evaluation ----------------------------------------------------------
+ * Q16.16: in uint64, so that no intermediate can be signed overflow; every
+ * final value is known to fit int64 (the scales above guarantee it). */
+#if FXRT_NUMBER == FXRT_Q16
+static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
+{
+    return (render_k_t)((uint64_t)f->c + (uint64_t)f->x * (uint64_t)(int64_t)ix + (uint64_t)f->y * (uint64_t)(int64_t)iy);
+}
+static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
+{
+    uint64_t x = (uint64_t)(int64_t)ix, y = (uint64_t)(int64_t)iy;
+    return (render_k_t)((uint64_t)f->c + (uint64_t)f->x * x + (uint64_t)f->y * y + (uint64_t)f->xx * x * x +
+                  (uint64_t)f->xy * x * y + (uint64_t)f->yy * y * y);
+}
+#else
+static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
+{
+    return f->c + f->x * (num_t)ix + f->y * (num_t)iy;
+}
+static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
+{
+    num_t x = (num_t)ix, y = (num_t)iy;
+    return f->c + f->x * x + f->y * y + f->xx * x * x + f->xy * x * y + f->yy * y * y;
+}
+#endif
+
+/* The sphere's c and disc: 128-bit in Q16.16, num otherwise. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef fx128_t rsw_t;
+static inline bool rsw_neg(rsw_t v) { return v.hi < 0; }
+#else
+typedef render_k_t rsw_t;
+static inline bool rsw_neg(rsw_t v) { return v < 0; }
+#endif
+
+static inline bool render_sphere_vals(render_k_t b, rsw_t c, rsw_t disc)
+{
+    return rsw_neg(c) || (b > 0 && !rsw_neg(disc));
+}
+
+/* c = k + px^2 + py^2 and disc = b^2 - a c at one pixel, exactly (Q16.16:
+ * a is 1 in orthographic views and c is the constant k in perspective, so
+ * a c is a single 64 x 64 product or none). */
+
+static inline bool render_flat_vals(render_k_t n, render_k_t d, const render_k_t *e, int edges)
+{
+    if (!((n > 0 && d > 0) || (n < 0 && d < 0)))
+        return false;
+    bool pos = false, neg = false;
+    for (int i = 0; i < edges; i++) {
+        pos |= e[i] > 0;
+        neg |= e[i] < 0;
+    }
+    return !(pos && neg);
+}
+
+static inline bool render_flat_at(const render_flat_t *f, int32_t ix, int32_t iy)
+{
+    render_k_t e[4];
+    for (int i = 0; i < f->edges; i++)
+        e[i] = rlin_at(render_edge_k(f, i), ix, iy);
+    return render_flat_vals(rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy), e, f->edges);
+}
+
+static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
+{
+    render_k_t a = rquad_at(o->u.sphere->a, ix, iy);
+    render_k_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
+         pz = rlin_at(&o->u.sphere->pz, ix, iy);
+    bool ortho = o->u.sphere->ortho;
+#if FXRT_NUMBER == FXRT_Q16
+    fx128_t sq = fx128_add(fx128_add(fx128_mul(px, px), fx128_mul(py, py)), fx128_mul(pz, pz));
+    /* Orthographic: a = 1 exactly and r2 may use all 128 bits. */
+    fx128_t r2a = ortho ? o->u.sphere->r2 : fx128_mul(a, fx128_shr_round(o->u.sphere->r2, 0));
+    *disc_out = fx128_sub(r2a, sq);
+    *c_out = ortho ? fx128_add(o->u.sphere->k, sq) : o->u.sphere->k;
+#else
+    render_k_t sq = px * px + py * py + pz * pz;
+    *disc_out = o->u.sphere->r2 * a - sq;
+    *c_out = ortho ? o->u.sphere->k + sq : o->u.sphere->k;
+#endif
+}
+
+/* Does object o cover the pixel? Every form evaluated from scratch. */
+static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
+{
+    switch (o->kind) {
+    case RENDER_ALL:
+        return true;
+    case RENDER_SPHERE: {
+        render_k_t b = rlin_at(&o->u.sphere->b, ix, iy);
+        rsw_t c, disc;
+        render_sphere_cd(o, ix, iy, &c, &disc);
+        return render_sphere_vals(b, c, disc);
+    }
+    case RENDER_FLAT:
+    case RENDER_BOX:
+        for (int i = 0; i < o->nflat; i++)
+            if (render_flat_at(render_face(o, i), ix, iy))
+                return true;
+        return false;
+    }
+    return false;
+}
+
+/* Owner entries: stamp (15 bits) << 17 | depth-known bit << 16 | object. */
+#define RENDER_DEPTH_KNOWN 0x10000u
+#define RENDER_STAMP_SHIFT 17
+#define RENDER_STAMP_LIMIT 0x8000u
+
+/* render_setup.c: (re)compute object i's forms and bounds. */
+void render_setup_object(render_t *r, uint16_t i);
+
+#if FXRT_NUMBER == FXRT_Q16
+/* render_vis.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
+ * and a denominator d > 0, truncated to 24 bits each. */
+render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
+#endif
+
+/* render_vis.c: object oi also covers column x, owned so far by the owner
+ * entry cur; returns true when oi is nearer (or ties with a lower id) and
+ * has taken the column. The newcomer's depth comes from its forms at the
+ * pixel (render_resolve) or from values the scanline stepped. */
+bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy);
+#if RENDER_STEPPED
+bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+                         render_k_t n, render_k_t d);
+bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, rsw_t c,
+                           rsw_t disc);
+#endif
+
+/* render_vis.c: object i's depth order against the planes on row iy over
+ * columns x0..x1 (sets r->row_win); false when a plane hides it there. */
+bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy);
+
+#endif

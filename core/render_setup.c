@@ -1,0 +1,685 @@
+/* render_setup: per-frame set-up of every object's camera-space coverage
+ * forms, screen bounds and depth range. See render.h for the method. */
+#include "render_int.h"
+
+/* ---- set-up arithmetic ----------------------------------------------------
+ * Coefficients are first formed exactly (Q16.16: as 128-bit integers in
+ * Q80.48, so products of a Q16.16 and a Q32.32 value lose nothing), then
+ * each form is scaled by a power of two so that its value over the whole
+ * screen stays below 2^target, and rounded once to int64. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef fx128_t rc_t;
+RENDER_MAYBE_UNUSED static rc_t rc_n(num_t a) { return fx128_shl(fx128_from64(a), 32); }
+RENDER_MAYBE_UNUSED static rc_t rc_w(numw_t w) { return fx128_shl(fx128_from64(w), 16); }
+RENDER_MAYBE_UNUSED static rc_t rc_nn(num_t a, num_t b) { return fx128_shl(fx128_mul(a, b), 16); }
+RENDER_MAYBE_UNUSED static rc_t rc_nw(num_t a, numw_t w) { return fx128_mul(a, w); }
+RENDER_MAYBE_UNUSED static rc_t rc_add(rc_t a, rc_t b) { return fx128_add(a, b); }
+RENDER_MAYBE_UNUSED static rc_t rc_neg(rc_t a) { return fx128_neg(a); }
+RENDER_MAYBE_UNUSED static rc_t rc_zero(void) { return fx128_from64(0); }
+RENDER_MAYBE_UNUSED static bool rc_is_neg(rc_t a) { return a.hi < 0; }
+#else
+typedef num_t rc_t;
+RENDER_MAYBE_UNUSED static rc_t rc_n(num_t a) { return a; }
+RENDER_MAYBE_UNUSED static rc_t rc_w(numw_t w) { return w; }
+RENDER_MAYBE_UNUSED static rc_t rc_nn(num_t a, num_t b) { return a * b; }
+RENDER_MAYBE_UNUSED static rc_t rc_nw(num_t a, numw_t w) { return a * w; }
+RENDER_MAYBE_UNUSED static rc_t rc_add(rc_t a, rc_t b) { return a + b; }
+RENDER_MAYBE_UNUSED static rc_t rc_neg(rc_t a) { return -a; }
+RENDER_MAYBE_UNUSED static rc_t rc_zero(void) { return NUM_ZERO; }
+RENDER_MAYBE_UNUSED static bool rc_is_neg(rc_t a) { return a < 0; }
+#endif
+RENDER_MAYBE_UNUSED static rc_t rc_sub(rc_t a, rc_t b) { return rc_add(a, rc_neg(b)); }
+
+/* Forms under construction: exact coefficients. */
+typedef struct {
+    rc_t c, x, y;
+} rclin_t;
+typedef struct {
+    rc_t c, x, y, xx, xy, yy;
+} rcquad_t;
+
+#if FXRT_NUMBER == FXRT_Q16
+static int render_bits32(uint32_t v) { return v ? 32 - __builtin_clz(v) : 0; }
+
+/* Smallest right shift that keeps sum |coef[i]| * mult[i] below 2^target. */
+static int rk_shift(const rc_t *coef, const uint32_t *mult, int n, int target)
+{
+    int need = 0;
+    for (int i = 0; i < n; i++) {
+        int b = fx128_bits(coef[i]);
+        if (b)
+            b += render_bits32(mult[i]);
+        if (b > need)
+            need = b;
+    }
+    need += 3; /* at most 6 terms */
+    return need > target ? need - target : 0;
+}
+static render_k_t rk_of(rc_t c, int k) { return fx128_shr_round(c, k); }
+#define RK_SHIFT(coefs, mults, n, target) rk_shift(coefs, mults, n, target)
+#else
+static render_k_t rk_of(rc_t c, int k) { (void)k; return c; }
+#define RK_SHIFT(coefs, mults, n, target) 0
+#endif
+
+static render_lin_t rlin_scaled(rclin_t f, int k)
+{
+    render_lin_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k)};
+    return r;
+}
+
+RENDER_MAYBE_UNUSED static render_quad_t rquad_scaled(rcquad_t f, int k)
+{
+    render_quad_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k), rk_of(f.xx, k), rk_of(f.xy, k), rk_of(f.yy, k)};
+    return r;
+}
+
+/* Screen extents of ix and iy, for the scale bounds. */
+typedef struct {
+    uint32_t xm, ym;
+} rext_t;
+
+static int rlin_need(const rclin_t *f, rext_t ext, int target)
+{
+    rc_t c[3] = {f->c, f->x, f->y};
+    uint32_t m[3] = {1, ext.xm, ext.ym};
+    (void)c;
+    (void)m;
+    (void)target;
+    return RK_SHIFT(c, m, 3, target);
+}
+
+#if FXRT_NUMBER == FXRT_Q16
+RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int target)
+{
+    rc_t c[6] = {f->c, f->x, f->y, f->xx, f->xy, f->yy};
+    uint32_t m[6] = {1, ext.xm, ext.ym, ext.xm * ext.xm, ext.xm * ext.ym, ext.ym * ext.ym};
+    (void)c;
+    (void)m;
+    (void)target;
+    return RK_SHIFT(c, m, 6, target);
+}
+#endif
+
+/* Linear forms get 61 bits: values, steps and sums stay inside int64. */
+#define RENDER_LIN_BITS 61
+/* The sphere's pieces get 62 bits; b^2 - a c is formed in 128 bits. */
+#define RENDER_SPHERE_BITS 62
+
+RENDER_MAYBE_UNUSED static render_lin_t rlin_make(rclin_t f, rext_t ext)
+{
+    return rlin_scaled(f, rlin_need(&f, ext, RENDER_LIN_BITS));
+}
+
+/* ---- set-up of each object ------------------------------------------- */
+
+RENDER_MAYBE_UNUSED static vec3_t render_to_cam(const cam_t *cam, vec3_t p)
+{
+    vec3_t q = vec3_sub(p, cam->e);
+    return vec3_make(vec3_dot(q, cam->u), vec3_dot(q, cam->v), vec3_dot(q, cam->w));
+}
+
+RENDER_MAYBE_UNUSED static vec3_t render_dir_to_cam(const cam_t *cam, vec3_t d)
+{
+    return vec3_make(vec3_dot(d, cam->u), vec3_dot(d, cam->v), vec3_dot(d, cam->w));
+}
+
+
+/* N = n.(A - o) and D = n.r for camera-space normal n and point a. */
+RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec3_t n, vec3_t a, render_flat_t *f)
+{
+    bool ortho = render_ortho(cam);
+    num_t focal = ortho ? NUM_ONE : cam->focal;
+    rclin_t nf = {rc_add(rc_add(rc_nn(n.x, a.x), rc_nn(n.y, a.y)), rc_nn(n.z, a.z)),
+                  ortho ? rc_nw(num_neg(n.x), cam->step_u) : rc_zero(),
+                  ortho ? rc_nw(num_neg(n.y), cam->step_v) : rc_zero()};
+    rclin_t df = {rc_nn(n.z, num_neg(focal)), ortho ? rc_zero() : rc_n(n.x), ortho ? rc_zero() : rc_n(n.y)};
+    int kn = rlin_need(&nf, ext, RENDER_LIN_BITS), kd = rlin_need(&df, ext, RENDER_LIN_BITS);
+    f->n = rlin_scaled(nf, kn);
+    f->d = rlin_scaled(df, kd);
+    f->te = (int8_t)(kn - kd); /* N real = N 2^(kn - 48), D real = D 2^(kd - 48) */
+    f->edges = 0;
+    f->x0 = 0;
+    f->x1 = (int16_t)(cam->width - 1);
+    f->r0 = 0;
+    f->r1 = (int16_t)(cam->height - 1);
+}
+
+/* Copy an object's bounds to (or from) a flat piece. */
+RENDER_MAYBE_UNUSED static void render_flat_bounds_from(render_flat_t *f, const render_obj_t *o)
+{
+    f->x0 = o->x0;
+    f->x1 = o->x1;
+    f->r0 = o->r0;
+    f->r1 = o->r1;
+}
+
+/* Edge form r.((P - o) x (Q - o)): which side of the plane through the ray
+ * origin and the edge the ray passes. Formed with the edge in canonical
+ * order and negated for the other, so that two faces sharing an edge get
+ * exactly opposite forms: no ray slips between them (watertight). */
+RENDER_MAYBE_UNUSED static render_lin_t render_edge(const cam_t *cam, rext_t ext, vec3_t p, vec3_t q)
+{
+    bool swap = geom_point_less(q, p);
+    if (swap) {
+        vec3_t t = p;
+        p = q;
+        q = t;
+    }
+    bool ortho = render_ortho(cam);
+    num_t focal = ortho ? NUM_ONE : cam->focal;
+    numw_t gx = numw_sub(numw_mul(p.y, q.z), numw_mul(p.z, q.y));
+    numw_t gy = numw_sub(numw_mul(p.z, q.x), numw_mul(p.x, q.z));
+    numw_t gz = numw_sub(numw_mul(p.x, q.y), numw_mul(p.y, q.x));
+    rclin_t f;
+    f.c = rc_nw(num_neg(focal), gz);
+    if (ortho) {
+        f.x = rc_nw(num_sub(q.y, p.y), cam->step_u);
+        f.y = rc_nw(num_sub(p.x, q.x), cam->step_v);
+    } else {
+        f.x = rc_w(gx);
+        f.y = rc_w(gy);
+    }
+    if (swap) {
+        f.c = rc_neg(f.c);
+        f.x = rc_neg(f.x);
+        f.y = rc_neg(f.y);
+    }
+    return rlin_make(f, ext);
+}
+
+RENDER_MAYBE_UNUSED static int32_t render_floor(num_t v)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return v >> FX_FRAC_BITS; /* arithmetic shift: floor */
+#else
+    if (v > NUM(1e6))
+        return 1000000;
+    if (v < NUM(-1e6))
+        return -1000000;
+    int32_t i = (int32_t)v;
+    return (num_t)i > v ? i - 1 : i;
+#endif
+}
+
+/* Pixel bounds from a camera-space point set, projected. */
+typedef struct {
+    num_t ix0, ix1, iy0, iy1;
+    bool any;
+} rbox_t;
+
+RENDER_MAYBE_UNUSED static void render_bound_add(const cam_t *cam, rbox_t *b, vec3_t p)
+{
+    num_t ix, iy;
+    if (render_ortho(cam)) {
+        ix = numw_div(numw_from(p.x), cam->step_u);
+        iy = numw_div(numw_from(p.y), cam->step_v);
+    } else {
+        numw_t z = numw_from(num_neg(p.z));
+        ix = numw_div(numw_mul(p.x, cam->focal), z);
+        iy = numw_div(numw_mul(p.y, cam->focal), z);
+    }
+    if (!b->any) {
+        b->ix0 = b->ix1 = ix;
+        b->iy0 = b->iy1 = iy;
+        b->any = true;
+        return;
+    }
+    b->ix0 = num_min(b->ix0, ix);
+    b->ix1 = num_max(b->ix1, ix);
+    b->iy0 = num_min(b->iy0, iy);
+    b->iy1 = num_max(b->iy1, iy);
+}
+
+RENDER_MAYBE_UNUSED static int32_t render_clamp(int32_t v, int32_t lo, int32_t hi) { return v < lo ? lo : v > hi ? hi : v; }
+
+/* floor(v / 2) for any sign. */
+RENDER_MAYBE_UNUSED static int32_t render_half_floor(int32_t v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
+
+RENDER_MAYBE_UNUSED static void render_set_full(const cam_t *cam, render_obj_t *o)
+{
+    o->x0 = 0;
+    o->x1 = (int16_t)(cam->width - 1);
+    o->r0 = 0;
+    o->r1 = (int16_t)(cam->height - 1);
+}
+
+RENDER_MAYBE_UNUSED static void render_set_empty(render_obj_t *o)
+{
+    o->x0 = 1;
+    o->x1 = 0;
+    o->r0 = 1;
+    o->r1 = 0;
+}
+
+/* Pixel rectangle of a projected bound, with a 2-pixel margin for the
+ * rounding of the projection. A degenerate step (1-pixel axis) or a
+ * saturated projection simply widens it to the screen. */
+RENDER_MAYBE_UNUSED static void render_set_bounds(const cam_t *cam, const rbox_t *b, render_obj_t *o)
+{
+    int32_t w = cam->width, h = cam->height;
+    int32_t x0 = render_half_floor(render_clamp(render_floor(b->ix0), -2 * w, 2 * w) + w - 1) - 2;
+    int32_t x1 = render_half_floor(render_clamp(render_floor(b->ix1), -2 * w, 2 * w) + w - 1) + 3;
+    int32_t y0 = render_half_floor(render_clamp(render_floor(b->iy0), -2 * h, 2 * h) + h - 1) - 2;
+    int32_t y1 = render_half_floor(render_clamp(render_floor(b->iy1), -2 * h, 2 * h) + h - 1) + 3;
+    if (render_ortho(cam) && w == 1) {
+        x0 = 0;
+        x1 = 0;
+    }
+    if (render_ortho(cam) && h == 1) {
+        y0 = 0;
+        y1 = 0;
+    }
+    if (x1 < 0 || x0 > w - 1 || y1 < 0 || y0 > h - 1) {
+        render_set_empty(o);
+        return;
+    }
+    o->x0 = (int16_t)render_clamp(x0, 0, w - 1);
+    o->x1 = (int16_t)render_clamp(x1, 0, w - 1);
+    o->r0 = (int16_t)(h - 1 - render_clamp(y1, 0, h - 1));
+    o->r1 = (int16_t)(h - 1 - render_clamp(y0, 0, h - 1));
+}
+
+/* The depth range of an object inside the camera-space points p: a hit
+ * at camera-space z has t = -z / F (orthographic: -z), so the points' z
+ * range bounds t. A margin covers the rounding of the corners and of the
+ * forms, so that every depth the forms give lies strictly inside. */
+RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
+{
+    num_t zlo = p[0].z, zhi = p[0].z;
+    for (int i = 1; i < n; i++) {
+        zlo = num_min(zlo, p[i].z);
+        zhi = num_max(zhi, p[i].z);
+    }
+    num_t f = render_ortho(cam) ? NUM_ONE : cam->focal;
+#if FXRT_NUMBER == FXRT_Q16
+    int64_t near = -(int64_t)zhi, far = -(int64_t)zlo;
+    near -= 64 + (near > 0 ? near >> 12 : 0);
+    far += 64 + (far > 0 ? far >> 12 : 0);
+    o->tlo = render_depth_make(0, near > 0 ? (uint64_t)near : 0, (uint64_t)f, 0);
+    o->thi = far > 0 ? render_depth_make(0, (uint64_t)far, (uint64_t)f, 0) : o->tlo;
+#else
+    num_t near = -zhi, far = -zlo;
+    near = near - NUM(1e-3) - num_abs(near) * NUM(1e-3);
+    far = far + NUM(1e-3) + num_abs(far) * NUM(1e-3);
+    o->tlo.t = near > 0 ? near / f : NUM_ZERO;
+    o->thi.t = far > 0 ? far / f : NUM_ZERO;
+#endif
+    o->ranged = true;
+}
+
+/* Bounds of camera-space points that are all in front in perspective;
+ * straddling sets get the whole screen, sets wholly behind are empty. */
+RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
+{
+    render_set_zrange(cam, p, n, o);
+    int front = 0, behind = 0;
+    for (int i = 0; i < n; i++) {
+        if (p[i].z < NUM_ZERO)
+            front++;
+        else
+            behind++;
+    }
+    if (front == 0) { /* no point with z < 0 can be on a ray (t > 0) */
+        render_set_empty(o);
+        return;
+    }
+    if (behind && !render_ortho(cam)) {
+        render_set_full(cam, o);
+        return;
+    }
+    rbox_t b = {NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO, false};
+    for (int i = 0; i < n; i++)
+        render_bound_add(cam, &b, p[i]);
+    render_set_bounds(cam, &b, o);
+}
+
+#if FXRT_MAX_SPHERES > 0
+static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
+{
+    const cam_t *cam = r->cam;
+    vec3_t c = render_to_cam(cam, s->center);
+    num_t rad = s->radius;
+    rc_t r2 = rc_w(s->radius2);
+    rc_t cc = rc_sub(rc_add(rc_add(rc_nn(c.x, c.x), rc_nn(c.y, c.y)), rc_nn(c.z, c.z)), r2);
+    rclin_t zero = {rc_zero(), rc_zero(), rc_zero()};
+    rclin_t b = zero, px = zero, py = zero, pz = zero;
+    rcquad_t a = {rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero()};
+    rc_t k;
+    bool ortho = render_ortho(cam);
+    (void)ext;
+    o->kind = RENDER_SPHERE;
+    o->u.sphere->ortho = ortho;
+    if (ortho) {
+        /* o = (su ix, sv iy, 0), r = (0, 0, -1): b = -cz, a = 1, the ray's
+         * offset from the centre is (cx - su ix, cy - sv iy), so
+         * disc = R^2 - px^2 - py^2 and c = cz^2 - R^2 + px^2 + py^2. */
+        b.c = rc_n(num_neg(c.z));
+        a.c = rc_n(NUM_ONE);
+        px.c = rc_n(c.x);
+        px.x = rc_neg(rc_w(cam->step_u));
+        py.c = rc_n(c.y);
+        py.y = rc_neg(rc_w(cam->step_v));
+        k = rc_sub(rc_nn(c.z, c.z), r2);
+    } else {
+        /* o = 0, r = (ix, iy, -F): b = C.r, a = |r|^2, p = C x r =
+         * (-cy F - cz iy, cz ix + cx F, cx iy - cy ix), c = |C|^2 - R^2. */
+        num_t f = cam->focal;
+        b.c = rc_nn(c.z, num_neg(f));
+        b.x = rc_n(c.x);
+        b.y = rc_n(c.y);
+        px.c = rc_nn(c.y, num_neg(f));
+        px.y = rc_n(num_neg(c.z));
+        py.c = rc_nn(c.x, f);
+        py.x = rc_n(c.z);
+        pz.x = rc_n(num_neg(c.y));
+        pz.y = rc_n(c.x);
+        a.c = rc_nn(f, f);
+        a.xx = rc_n(NUM_ONE);
+        a.yy = rc_n(NUM_ONE);
+        k = cc;
+    }
+#if FXRT_NUMBER == FXRT_Q16
+    /* Scales: the p pieces share kp, so disc is in units of 2^(2 kp - 96)
+     * and r2 is R^2 a brought to those units; b only matters by its sign. */
+    rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
+    int kp = rlin_need(&px, ext, RENDER_SPHERE_BITS), n;
+    n = rlin_need(&b, ext, RENDER_SPHERE_BITS); /* b + sqrt(disc) is formed for depth */
+    kp = kp > n ? kp : n;
+    n = rlin_need(&py, ext, RENDER_SPHERE_BITS);
+    kp = kp > n ? kp : n;
+    n = rlin_need(&pz, ext, RENDER_SPHERE_BITS);
+    kp = kp > n ? kp : n;
+    int ka = 48; /* orthographic: a = 1 exactly */
+    if (ortho) {
+        n = rlin_need(&radl, ext, RENDER_SPHERE_BITS);
+        kp = kp > n ? kp : n;
+    } else {
+        ka = rquad_need(&a, ext, RENDER_SPHERE_BITS);
+    }
+    /* R^2 a in units of 2^(2 kp - 96): r2 = R2_48 * 2^(ka - 2 kp). In
+     * perspective r2 multiplies a 64-bit a, so it must fit 62 bits too:
+     * on tiny images the pieces' scales alone can leave it larger, and a
+     * coarser kp (four times smaller r2 per step) fixes that. */
+    int sr = 2 * kp - ka;
+    o->u.sphere->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    while (!ortho && fx128_bits(o->u.sphere->r2) > RENDER_SPHERE_BITS) {
+        kp++;
+        sr += 2;
+        o->u.sphere->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    }
+    int sk = 2 * kp - 48;
+    o->u.sphere->k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
+    o->u.sphere->b = rlin_scaled(b, kp);
+    r->sphere_a = rquad_scaled(a, ka); /* the same for every sphere */
+    o->u.sphere->a = &r->sphere_a;
+    /* b and sqrt(disc) are real * 2^(48 - kp), c is real * 2^(96 - 2 kp)
+     * and a is real * 2^(48 - ka). */
+    o->u.sphere->tc = (int8_t)(kp - 48);
+    o->u.sphere->ta = (int8_t)(kp - ka);
+    o->u.sphere->px = rlin_scaled(px, kp);
+    o->u.sphere->py = rlin_scaled(py, kp);
+    o->u.sphere->pz = rlin_scaled(pz, kp);
+#else
+    o->u.sphere->b = rlin_scaled(b, 0);
+    r->sphere_a = rquad_scaled(a, 0);
+    o->u.sphere->a = &r->sphere_a;
+    o->u.sphere->px = rlin_scaled(px, 0);
+    o->u.sphere->py = rlin_scaled(py, 0);
+    o->u.sphere->pz = rlin_scaled(pz, 0);
+    o->u.sphere->k = k;
+    o->u.sphere->r2 = r2;
+    o->u.sphere->tc = 0;
+    o->u.sphere->ta = 0;
+#endif
+    /* Bounds. */
+    if (!rc_is_neg(cc) && c.z >= rad) {
+        render_set_empty(o); /* wholly at z >= 0: behind the eye */
+        return;
+    }
+    if (rc_is_neg(cc)) {
+        render_set_full(r->cam, o); /* eye inside */
+        return;
+    }
+    vec3_t corner[8];
+    for (int i = 0; i < 8; i++)
+        corner[i] = vec3_make((i & 1) ? num_add(c.x, rad) : num_sub(c.x, rad),
+                              (i & 2) ? num_add(c.y, rad) : num_sub(c.y, rad),
+                              (i & 4) ? num_add(c.z, rad) : num_sub(c.z, rad));
+    render_points_bounds(cam, corner, 8, o);
+}
+#endif
+
+#if FXRT_MAX_PLANES > 0
+static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
+{
+    o->kind = RENDER_FLAT;
+    o->nflat = 1;
+    render_flat_nd(r->cam, ext, render_dir_to_cam(r->cam, p->n), render_to_cam(r->cam, p->a), render_face(o, 0));
+    render_set_full(r->cam, o); /* rows beyond the horizon are skipped per row */
+}
+#endif
+
+#if FXRT_MAX_TRIANGLES > 0
+static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
+{
+    const cam_t *cam = r->cam;
+    vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
+    o->kind = RENDER_FLAT;
+    o->nflat = 1;
+    if (t->degenerate) {
+        o->nflat = 0;
+        render_set_empty(o);
+        return;
+    }
+    render_flat_t *f = render_face(o, 0);
+    render_flat_nd(cam, ext, render_dir_to_cam(cam, t->n), v[0], f);
+    for (int i = 0; i < 3; i++)
+        f->e[i] = render_edge(cam, ext, v[i], v[(i + 1) % 3]);
+    f->edges = 3;
+    render_points_bounds(cam, v, 3, o);
+    render_flat_bounds_from(f, o);
+}
+#endif
+
+#if FXRT_MAX_BOXES > 0
+
+static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
+{
+    const cam_t *cam = r->cam;
+    bool ortho = render_ortho(cam);
+    vec3_t corner[8]; /* bit i of the index: max on axis i */
+    for (int i = 0; i < 8; i++)
+        corner[i] = render_to_cam(cam, vec3_make((i & 1) ? b->max.x : b->min.x, (i & 2) ? b->max.y : b->min.y,
+                                                 (i & 4) ? b->max.z : b->min.z));
+    /* A ray covers the box when it crosses one of its faces at t > 0 (the
+     * entry face from outside, the exit face from inside), so the box's
+     * coverage is the union of its faces' coverage, each with its own
+     * front test. A perspective eye strictly outside can only reach the
+     * faces turned towards it; strictly inside, every ray hits. */
+    bool inside = !ortho, outside = false;
+    int side_of[3];
+    for (int axis = 0; axis < 3; axis++) {
+        num_t e = geom_axis(cam->e, axis);
+        num_t lo = geom_axis(b->min, axis), hi = geom_axis(b->max, axis);
+        if (!(e > lo && e < hi))
+            inside = false;
+        side_of[axis] = e < lo ? 0 : (e > hi ? 1 : -1);
+        if (side_of[axis] >= 0)
+            outside = true;
+    }
+    o->kind = RENDER_BOX;
+    o->nflat = 0;
+    for (int axis = 0; axis < 3; axis++) {
+        int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+        /* A face of zero area (a flat box seen from its side) covers
+         * nothing: its edge forms would describe a line or the whole
+         * screen instead. */
+        if (geom_axis(b->min, a1) == geom_axis(b->max, a1) || geom_axis(b->min, a2) == geom_axis(b->max, a2))
+            continue;
+        for (int side = 0; side < 2; side++) {
+            if (!ortho && outside && side != side_of[axis])
+                continue; /* turned away from an eye outside */
+            if ((ortho || !outside) && side == 1 && geom_axis(b->min, axis) == geom_axis(b->max, axis))
+                continue; /* a flat box: both faces are one rectangle, keep one */
+            vec3_t nw = vec3_make(axis == 0 ? NUM_ONE : NUM_ZERO, axis == 1 ? NUM_ONE : NUM_ZERO,
+                                  axis == 2 ? NUM_ONE : NUM_ZERO);
+            if (side == 0)
+                nw = vec3_neg(nw);
+            vec3_t nc = render_dir_to_cam(cam, nw);
+            if (ortho && nc.z == NUM_ZERO)
+                continue; /* parallel to every ray */
+            /* The face's four corners, in order around it. */
+            int base = side << axis;
+            int idx[4] = {base, base | (1 << a1), base | (1 << a1) | (1 << a2), base | (1 << a2)};
+            vec3_t q[4];
+            for (int k = 0; k < 4; k++)
+                q[k] = corner[idx[k]];
+            if (o->u.face + o->nflat >= r->box_faces + FXRT_RENDER_BOX_FACES) {
+                r->error = "more box faces than FXRT_RENDER_BOX_FACES";
+                continue;
+            }
+            render_face_t *bf = &o->u.face[o->nflat++];
+            render_flat_t *f = &bf->f;
+            render_flat_nd(cam, ext, nc, q[0], f);
+            for (int k = 0; k < 4; k++)
+                *(k < 3 ? &f->e[k] : &bf->e4) = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
+            f->edges = 4;
+            /* Each face gets its own bounds, so a pixel is mostly stepped
+             * for one face rather than all of them. */
+            render_obj_t tmp;
+            render_points_bounds(cam, q, 4, &tmp);
+            render_flat_bounds_from(f, &tmp);
+        }
+    }
+    if (inside) {
+        /* Every ray covers the box; its faces (all of them, from inside)
+         * give the depth of the exit point. */
+        o->kind = RENDER_ALL;
+        render_set_full(cam, o);
+        return;
+    }
+    if (o->nflat == 0) {
+        render_set_empty(o);
+        return;
+    }
+    render_points_bounds(cam, corner, 8, o);
+}
+#endif
+
+/* (Re)compute object i's forms and bounds from its world object. */
+void render_setup_object(render_t *r, uint16_t i)
+{
+    const world_t *w = r->world;
+    const cam_t *cam = r->cam;
+    rext_t ext = {(uint32_t)(cam->width - 1), (uint32_t)(cam->height - 1)};
+    render_obj_t *o = &r->obj[i];
+    (void)ext;
+    (void)w;
+    switch (o->geom) {
+    case GEOM_PLANE:
+#if FXRT_MAX_PLANES > 0
+        render_setup_plane(r, ext, &w->planes[o->index], o);
+#endif
+        break;
+    case GEOM_SPHERE:
+#if FXRT_MAX_SPHERES > 0
+        render_setup_sphere(r, ext, &w->spheres[o->index], o);
+#endif
+        break;
+    case GEOM_TRIANGLE:
+#if FXRT_MAX_TRIANGLES > 0
+        render_setup_triangle(r, ext, &w->triangles[o->index], o);
+#endif
+        break;
+    case GEOM_BOX:
+#if FXRT_MAX_BOXES > 0
+        render_setup_box(r, ext, &w->boxes[o->index], o);
+#endif
+        break;
+    }
+}
+
+/* Register an object of the world in scene-array order. */
+static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom_common_t *c)
+{
+    uint16_t i = r->count++;
+    render_obj_t *o = &r->obj[i];
+    o->geom = kind;
+    o->index = index;
+    o->id = c->id;
+    o->rgb = c->rgb;
+#if FXRT_PIXEL == FXRT_RGB565
+    o->px = render_565(c->rgb);
+#endif
+    o->ranged = false;
+    switch (kind) {
+    case GEOM_PLANE:
+#if FXRT_MAX_PLANES > 0
+        o->u.flat = &r->flats[index];
+#endif
+        break;
+    case GEOM_SPHERE:
+#if FXRT_MAX_SPHERES > 0
+        o->u.sphere = &r->spheres[index];
+#endif
+        break;
+    case GEOM_TRIANGLE:
+#if FXRT_MAX_TRIANGLES > 0
+        o->u.flat = &r->flats[r->nplanes + index];
+#endif
+        break;
+    case GEOM_BOX:
+#if FXRT_MAX_BOXES > 0
+        o->u.face = &r->box_faces[r->box_used]; /* boxes come last: the rest of the pool */
+#endif
+        break;
+    }
+    render_setup_object(r, i);
+#if FXRT_MAX_BOXES > 0
+    if (kind == GEOM_BOX)
+        r->box_used = (uint16_t)(r->box_used + o->nflat);
+#endif
+}
+
+bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
+{
+    r->error = NULL;
+    if (cam->width > FXRT_RENDER_MAX_WIDTH) {
+        r->error = "image wider than FXRT_RENDER_MAX_WIDTH";
+        return false;
+    }
+#if FXRT_MAX_BOXES > 0
+    r->box_used = 0;
+#endif
+    r->world = w;
+    r->cam = cam;
+    r->count = 0;
+    r->row_win = 0;
+#if FXRT_MAX_PLANES > 0
+    r->nplanes = w->n_planes;
+#else
+    r->nplanes = 0;
+#endif
+    for (int32_t x = 0; x < cam->width; x++)
+        r->owner[x] = 0;
+    r->stamp = 0;
+#if FXRT_MAX_PLANES > 0
+    for (uint16_t i = 0; i < w->n_planes; i++)
+        render_add(r, GEOM_PLANE, i, &w->planes[i].obj);
+#endif
+#if FXRT_MAX_SPHERES > 0
+    for (uint16_t i = 0; i < w->n_spheres; i++)
+        render_add(r, GEOM_SPHERE, i, &w->spheres[i].obj);
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    for (uint16_t i = 0; i < w->n_triangles; i++)
+        render_add(r, GEOM_TRIANGLE, i, &w->triangles[i].obj);
+#endif
+#if FXRT_MAX_BOXES > 0
+    for (uint16_t i = 0; i < w->n_boxes; i++)
+        render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
+#endif
+    return r->error == NULL;
+}
+

@@ -1,0 +1,346 @@
+/* render_vis: visibility. Depths from the forms, the nearest owner of a
+ * column, and the depth ranges that decide most overlaps without a depth.
+ * See render.h for the rule. */
+#include "render_int.h"
+
+/* ---- depth at pixels that several objects cover ------------------------
+ * Depth is the ray parameter t of the camera-space ray r = (ix, iy, -F)
+ * (orthographic: (0, 0, -1)), formed from the same forms that decide
+ * coverage: a flat piece's t = N / D, a sphere's near root c / (b + s)
+ * (s = sqrt(disc); the far root (b + s) / a from inside), so no ray is cast.
+ * Q16.16: t is kept as n / d * 2^e with n and d normalised to 31 bits
+ * (truncated: a deterministic function of the exact integer forms), and
+ * two depths compare exactly by cross-multiplication in 64 bits. */
+
+#if FXRT_NUMBER == FXRT_Q16
+/* The top 24 bits of v > 0 (v < 2^128), their exponent added to *e. */
+static uint32_t render_top24(uint64_t hi, uint64_t lo, int *e)
+{
+    int b = hi ? 128 - __builtin_clzll(hi) : (lo ? 64 - __builtin_clzll(lo) : 0);
+    if (b == 0)
+        return 0;
+    *e += b - 24;
+    if (b <= 24)
+        return (uint32_t)(lo << (24 - b));
+    int s = b - 24; /* truncating right shift by s (1..104) */
+    if (s >= 64)
+        return (uint32_t)(hi >> (s - 64));
+    return (uint32_t)((lo >> s) | (hi << 1 << (63 - s)));
+}
+
+#define RENDER_DEPTH_ONE (1u << 23)
+#define RENDER_DEPTH_EMAX 126 /* exponents clamp to +-126 (t beyond 2^+-126) */
+
+static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
+{
+    render_depth_t t;
+    e = e > RENDER_DEPTH_EMAX ? RENDER_DEPTH_EMAX : (e < -RENDER_DEPTH_EMAX ? -RENDER_DEPTH_EMAX : e);
+    t.n = n;
+    t.d = d;
+    t.e = e;
+    return t;
+}
+
+/* t = n / d * 2^e for n >= 0 and d > 0 (d = 0 cannot occur at a covered
+ * pixel; it would give the far depth). */
+render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e)
+{
+    int en = 0, ed = 0;
+    uint32_t tn = render_top24(n_hi, n_lo, &en), td = render_top24(0, d, &ed);
+    if (td == 0)
+        return render_depth_pack(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
+    if (tn == 0)
+        return render_depth_pack(0, RENDER_DEPTH_ONE, 0);
+    return render_depth_pack(tn, td, e + en - ed);
+}
+
+/* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
+ * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
+static bool render_depth_less(render_depth_t a, render_depth_t b)
+{
+    if (a.n == 0 || b.n == 0)
+        return a.n == 0 && b.n != 0;
+    int32_t de = (int32_t)a.e - (int32_t)b.e;
+    if (de >= 2)
+        return false;
+    if (de <= -2)
+        return true;
+    uint64_t l = (uint64_t)a.n * b.d, g = (uint64_t)b.n * a.d;
+    if (de == 1)
+        l <<= 1;
+    else if (de == -1)
+        g <<= 1;
+    return l < g;
+}
+
+static const render_depth_t render_depth_far = {RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX, RENDER_DEPTH_ONE};
+
+static uint64_t render_uabs(render_k_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
+
+static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, render_k_t d)
+{
+    return render_depth_make(0, render_uabs(n), render_uabs(d), f->te);
+}
+
+/* floor(sqrt(v)) to about 32 significant bits, v >= 0 (v < 2^127). */
+static uint64_t render_sqrt128(fx128_t v)
+{
+    if (v.hi < 0)
+        return 0;
+    int b = fx128_bits(v);
+    if (b <= 64)
+        return fx_isqrt64(v.lo);
+    int s = (b - 63) & ~1; /* even */
+    s = s < b - 64 ? s + 2 : s;
+    uint64_t top = s >= 64 ? (uint64_t)v.hi >> (s - 64) : (v.lo >> s) | ((uint64_t)v.hi << (64 - s));
+    return (uint64_t)fx_isqrt64(top) << (s / 2);
+}
+
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, rsw_t c, rsw_t disc)
+{
+    uint64_t s = render_sqrt128(disc);
+    if (!rsw_neg(c)) /* outside: the near root, b > 0 */
+        return render_depth_make((uint64_t)c.hi, c.lo, (uint64_t)b + s, o->u.sphere->tc);
+    if (b < 0) { /* inside, looking away from the centre: (-c) / (s - b) */
+        fx128_t nc = fx128_neg(c);
+        return render_depth_make((uint64_t)nc.hi, nc.lo, s + (0 - (uint64_t)b), o->u.sphere->tc);
+    }
+    render_k_t a = o->u.sphere->ortho ? 1 : rquad_at(o->u.sphere->a, ix, iy);
+    return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere->ta);
+}
+#else
+static bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
+static const render_depth_t render_depth_far = {NUM_MAX};
+static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, render_k_t d)
+{
+    (void)f;
+    render_depth_t t = {num_div(n, d)};
+    return t;
+}
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, rsw_t c, rsw_t disc)
+{
+    num_t s = num_sqrt(disc);
+    render_depth_t t;
+    if (!(c < 0))
+        t.t = num_div(c, b + s);
+    else if (b < 0)
+        t.t = num_div(-c, s - b);
+    else
+        t.t = num_div(b + s, o->u.sphere->ortho ? NUM_ONE : rquad_at(o->u.sphere->a, ix, iy));
+    return t;
+}
+#endif
+
+/* Depth of object o at a pixel it covers, from its forms evaluated there. */
+static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t iy)
+{
+    if (o->kind == RENDER_SPHERE) {
+        rsw_t c, disc;
+        render_sphere_cd(o, ix, iy, &c, &disc);
+        return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), c, disc);
+    }
+    /* Flat pieces: the nearest face that covers the pixel. */
+    render_depth_t best = render_depth_far;
+    for (int i = 0; i < o->nflat; i++) {
+        const render_flat_t *f = render_face(o, i);
+        if (!render_flat_at(f, ix, iy))
+            continue;
+        render_depth_t t = render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
+        if (render_depth_less(t, best))
+            best = t;
+    }
+    return best;
+}
+
+
+/* How to get a newcomer's depth when it is needed: from the values the
+ * scanline loop stepped (a flat piece's N and D, a sphere's b, c, disc) or
+ * from its forms evaluated at the pixel. */
+typedef struct {
+    enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_SPHERE } how;
+    const render_flat_t *f;
+    render_k_t n, d, b;
+    rsw_t c, disc;
+} render_raw_t;
+
+static render_depth_t render_raw_depth(const render_obj_t *o, int32_t ix, int32_t iy, const render_raw_t *raw)
+{
+#if RENDER_STEPPED
+    if (raw->how == RENDER_RAW_FLAT)
+        return render_flat_depth(raw->f, raw->n, raw->d);
+    if (raw->how == RENDER_RAW_SPHERE)
+        return render_sphere_depth(o, ix, iy, raw->b, raw->c, raw->disc);
+#else
+    (void)raw;
+#endif
+    return render_depth_at(o, ix, iy);
+}
+
+/* Object oi also covers column x, owned so far by the entry cur: the
+ * nearer keeps it (ties: lower scene id). A depth, once computed, is kept
+ * next to the owner. Depths are only computed when the objects' depth
+ * ranges (render_setup: from their camera-space z, with a margin) do not
+ * already decide. Returns true when oi wins. */
+static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy,
+                                                    const render_raw_t *raw)
+{
+    uint16_t ci = (uint16_t)cur;
+    const render_obj_t *a = &r->obj[ci], *b = &r->obj[oi];
+    int32_t ix = 2 * x - r->cam->width + 1;
+    uint32_t stamp = cur & ~0x1FFFFu;
+    if (ci < 32 && ((r->row_win >> ci) & 1u)) { /* oi is nearer than plane ci all along this row */
+        r->owner[x] = stamp | oi;
+        return true;
+    }
+    bool known = (cur & RENDER_DEPTH_KNOWN) != 0;
+    if (!FXRT_NO_ZRANGE && !known && a->ranged && b->ranged) {
+        if (render_depth_less(a->thi, b->tlo))
+            return false;
+        if (render_depth_less(b->thi, a->tlo)) {
+            r->owner[x] = stamp | oi;
+            return true;
+        }
+    }
+    render_depth_t ta, tb;
+    if (known || FXRT_NO_ZRANGE || !a->ranged) {
+        ta = known ? r->depth[x] : render_depth_at(a, ix, iy);
+        if (!FXRT_NO_ZRANGE && b->ranged) {
+            if (render_depth_less(ta, b->tlo)) {
+                r->depth[x] = ta;
+                r->owner[x] = stamp | RENDER_DEPTH_KNOWN | ci;
+                return false;
+            }
+            if (render_depth_less(b->thi, ta)) {
+                r->owner[x] = stamp | oi;
+                return true;
+            }
+        }
+        tb = render_raw_depth(b, ix, iy, raw);
+    } else {
+        tb = render_raw_depth(b, ix, iy, raw);
+        if (render_depth_less(a->thi, tb))
+            return false;
+        if (render_depth_less(tb, a->tlo)) {
+            r->depth[x] = tb;
+            r->owner[x] = stamp | RENDER_DEPTH_KNOWN | oi;
+            return true;
+        }
+        ta = render_depth_at(a, ix, iy);
+    }
+    bool win = render_depth_less(tb, ta) || (!render_depth_less(ta, tb) && b->id < a->id);
+    r->depth[x] = win ? tb : ta;
+    r->owner[x] = stamp | RENDER_DEPTH_KNOWN | (win ? oi : ci);
+    return win;
+}
+
+/* The newcomer's depth from its forms evaluated at the pixel. */
+bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
+{
+    render_raw_t raw;
+    raw.how = RENDER_RAW_AT;
+    return render_settle(r, cur, oi, x, iy, &raw);
+}
+
+#if RENDER_STEPPED
+/* The newcomer's depth from the values the scanline loop stepped. */
+bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+                                render_k_t n, render_k_t d)
+{
+    render_raw_t raw;
+    raw.how = RENDER_RAW_FLAT;
+    raw.f = f;
+    raw.n = n;
+    raw.d = d;
+    return render_settle(r, cur, oi, x, iy, &raw);
+}
+bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, rsw_t c,
+                                  rsw_t disc)
+{
+    render_raw_t raw;
+    raw.how = RENDER_RAW_SPHERE;
+    raw.b = b;
+    raw.c = c;
+    raw.disc = disc;
+    return render_settle(r, cur, oi, x, iy, &raw);
+}
+#endif
+
+/* t scaled by about (1 + 2^-16) (up) or (1 - 2^-16): a margin for the
+ * 24-bit truncation of depths between the ends of a segment. */
+static render_depth_t render_depth_widen(render_depth_t t, bool up)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    uint32_t n = t.n;
+    int e = t.e;
+    if (n == 0)
+        return t;
+    if (up) {
+        n += (n >> 16) + 1;
+        if (n >= 2 * RENDER_DEPTH_ONE) {
+            n >>= 1;
+            e++;
+        }
+    } else {
+        n -= (n >> 16) + 1;
+        if (n < RENDER_DEPTH_ONE) {
+            n <<= 1;
+            e--;
+        }
+    }
+    return render_depth_pack(n, t.d, e);
+#else
+    t.t = up ? t.t * NUM(1.0001) : t.t * NUM(0.9999);
+    return t;
+#endif
+}
+
+/* Depth range of plane p over columns x0..x1 of row iy when it covers both
+ * ends with one sign of N and D: then it covers the whole segment and its
+ * t = N / D is monotone there. */
+static bool render_plane_range(const render_t *r, const render_obj_t *p, int32_t x0, int32_t x1, int32_t iy,
+                               render_depth_t *lo, render_depth_t *hi)
+{
+    const render_flat_t *f = render_face(p, 0);
+    int32_t w = r->cam->width;
+    render_k_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
+    render_k_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
+    if (!((na > 0 && da > 0 && nb > 0 && db > 0) || (na < 0 && da < 0 && nb < 0 && db < 0)))
+        return false;
+    render_depth_t ta = render_flat_depth(f, na, da), tb = render_flat_depth(f, nb, db);
+    bool a_first = render_depth_less(ta, tb);
+    *lo = render_depth_widen(a_first ? ta : tb, false);
+    *hi = render_depth_widen(a_first ? tb : ta, true);
+    return true;
+}
+
+static bool render_is_plane(const render_obj_t *o) { return o->kind == RENDER_FLAT && render_face(o, 0)->edges == 0; }
+
+/* Depth order against the planes on this row, for object i over its
+ * columns x0..x1: r->row_win gets bit j when i is nearer than plane j
+ * wherever both cover (no depth needed there); returns false when a plane
+ * covers the whole segment nearer than i (i is hidden on this row). */
+bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy)
+{
+    const render_obj_t *o = &r->obj[i];
+    render_depth_t blo, bhi;
+    r->row_win = 0;
+    if (o->ranged) {
+        blo = o->tlo;
+        bhi = o->thi;
+    } else if (!render_is_plane(o) || !render_plane_range(r, o, x0, x1, iy, &blo, &bhi)) {
+        return true;
+    }
+    uint16_t n = r->nplanes < 32 ? r->nplanes : 32;
+    for (uint16_t j = 0; j < n; j++) {
+        render_depth_t plo, phi;
+        const render_obj_t *p = &r->obj[j];
+        if (j == i || p->r0 > p->r1 || !render_plane_range(r, p, x0, x1, iy, &plo, &phi))
+            continue;
+        if (render_depth_less(bhi, plo))
+            r->row_win |= 1u << j;
+        else if (render_depth_less(phi, blo))
+            return false;
+    }
+    return true;
+}
+
