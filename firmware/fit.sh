@@ -81,6 +81,18 @@ probe() {
     mkdir -p "$pdir"
     sed -E "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
         "$DIR/scene_config.h" >"$pdir/scene_config.h"
+    # A box brings its faces: when the scene compiler sized the face pool
+    # (FXRT_RENDER_BOX_FACES, the faces this camera needs), the extra boxes
+    # get as many faces as the scene's boxes have on average, so the per-box
+    # figure includes them.
+    local faces nbox
+    faces=$(sed -nE 's/^#define FXRT_RENDER_BOX_FACES ([0-9]+).*/\1/p' "$DIR/scene_config.h")
+    nbox=$(sed -nE 's/^#define FXRT_MAX_BOXES ([0-9]+).*/\1/p' "$DIR/scene_config.h")
+    if [[ $kind == boxes && -n $faces && ${nbox:-0} -gt 0 ]]; then
+        local more=$((((cap - nbox) * faces + nbox - 1) / nbox))
+        sed -i -E "s/^#define FXRT_RENDER_BOX_FACES .*/#define FXRT_RENDER_BOX_FACES $((faces + more))/" \
+            "$pdir/scene_config.h"
+    fi
     for s in "${CFLAGS[@]}"; do
         [[ $s == "$DIR/scene_config.h" ]] && s=$pdir/scene_config.h
         flags+=("$s")

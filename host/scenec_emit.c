@@ -79,6 +79,20 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(cfg, "#define SCENE_WIDTH %d\n#define SCENE_HEIGHT %d\n", width, height);
     fprintf(cfg, "#define SCENE_OBJECTS %d\n", d.count);
     fprintf(cfg, "#define FXRT_RENDER_MAX_WIDTH %d\n", width);
+#if FXRT_MAX_BOXES > 0
+    /* The box-face pool holds what this camera needs (3 faces for a box
+     * seen from outside in perspective, up to 6 otherwise), counted by the
+     * same render_setup the board runs on the same values, so the board
+     * never runs short and RAM is not spent on faces no ray can cross. */
+    if (w.n_boxes > 0 && !all_kinds) {
+        static render_t rs;
+        if (!render_setup(&rs, &w, &cam)) {
+            snprintf(err, errlen, "%s: %s", path, rs.error ? rs.error : "render set-up failed");
+            return -1;
+        }
+        fprintf(cfg, "#define FXRT_RENDER_BOX_FACES %u\n", rs.box_used > 0 ? (unsigned)rs.box_used : 1u);
+    }
+#endif
 
     /* The scene's own values, each rounded once to the number type (Q16.16:
      * integers; float and double: exact hex literals). The firmware sets the
