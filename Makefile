@@ -21,13 +21,13 @@ NUMBERS := q16 float double
 num_id   = $(if $(filter q16,$1),1,$(if $(filter float,$1),2,3))
 
 CORE_NUM := num color cam geom world render_setup render_vis render_row raycast fxrt
-HOST_SRC := main scene image compare engine_select args
+HOST_SRC := main scene image errf compare engine_select args
 
 # --- host tool -----------------------------------------------------------
 HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o \
             $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
 
-SCENEC_OBJ := $(BUILD)/host/scenec.o $(BUILD)/host/scene.o $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
+SCENEC_OBJ := $(BUILD)/host/scenec.o $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
               $(BUILD)/host/fx.o $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(BUILD)/host/scenec_emit-$(n).o \
               $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
 
@@ -71,9 +71,9 @@ $(foreach n,$(NUMBERS),$(eval $(call number_rules,$(n))))
 UNIT_TESTS := test_fx test_image test_compare test_scene
 TEST_BIN   := $(UNIT_TESTS:%=$(BUILD)/tests/%)
 test_fx_DEPS      := $(BUILD)/host/fx.o
-test_image_DEPS   := $(BUILD)/host/image.o
-test_compare_DEPS := $(BUILD)/host/compare.o $(BUILD)/host/image.o
-test_scene_DEPS   := $(BUILD)/host/scene.o
+test_image_DEPS   := $(BUILD)/host/image.o $(BUILD)/host/errf.o
+test_compare_DEPS := $(BUILD)/host/compare.o $(BUILD)/host/image.o $(BUILD)/host/errf.o
+test_scene_DEPS   := $(BUILD)/host/scene.o $(BUILD)/host/errf.o
 
 $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(@D)

@@ -26,35 +26,9 @@ static uint64_t fx_udiv_round(uint64_t num, uint64_t den)
     return q + (r >= den - r ? 1u : 0u);
 }
 
-/* Count leading zeros of a non-zero uint32, rounded down to an even number,
- * as a shift that brings the top set bit to bit 30 or 31. Hardware CLZ
- * where the target has it; a four-step binary search on the Cortex-M0
- * (whose libgcc __clzsi2 costs more). FX_HAVE_CLZ in core/fxrt_config.h. */
-static inline __attribute__((always_inline)) int fx_clz_even(uint32_t v)
-{
-#if FX_HAVE_CLZ
-    return __builtin_clz(v) & ~1;
-#else
-    int e = 0;
-    if (v < (1u << 16)) {
-        v <<= 16;
-        e += 16;
-    }
-    if (v < (1u << 24)) {
-        v <<= 8;
-        e += 8;
-    }
-    if (v < (1u << 28)) {
-        v <<= 4;
-        e += 4;
-    }
-    if (v < (1u << 30))
-        e += 2;
-    return e;
-#endif
-}
-
-/* Leading zero count of a non-zero uint32. */
+/* Leading zero count of a non-zero uint32. Hardware CLZ where the target
+ * has it; a five-step binary search on the Cortex-M0 (whose libgcc
+ * __clzsi2 costs more). FX_HAVE_CLZ in core/fxrt_config.h. */
 static inline __attribute__((always_inline)) int fx_clz32(uint32_t v)
 {
 #if FX_HAVE_CLZ
@@ -81,6 +55,13 @@ static inline __attribute__((always_inline)) int fx_clz32(uint32_t v)
         e += 1;
     return e;
 #endif
+}
+
+/* The leading zero count of a non-zero uint32 rounded down to an even
+ * number, as a shift that brings the top set bit to bit 30 or 31. */
+static inline __attribute__((always_inline)) int fx_clz_even(uint32_t v)
+{
+    return fx_clz32(v) & ~1;
 }
 
 #if !FX_HAVE_UDIV
@@ -545,7 +526,7 @@ bool fx_normalize3(fx_t v[3])
      * 1 / |s| ~ Y 2^-46 / 2^k, and each component in Q16.16 is
      * s Y / 2^(30 + k), rounded once. Dropping len2's low bits costs at
      * most 2^-30 relative. */
-    int e = fx_clz32((uint32_t)(len2 >> 32)) & ~1; /* 2 or 4 */
+    int e = fx_clz_even((uint32_t)(len2 >> 32)); /* 2 or 4 */
     int k = 16 - (e >> 1);
     uint32_t Y = fx_rsqrt_q46((uint32_t)(len2 >> (32 - e)));
     for (int i = 0; i < 3; i++) {

@@ -4,6 +4,8 @@
  * acquired; on failure the image is left empty (safe to image_free). */
 #include "image.h"
 
+#include "errf.h"
+
 #include <errno.h>
 #include <png.h>
 #include <setjmp.h>
@@ -23,20 +25,8 @@
 /* Length of a libpng error message we keep; libpng's own are short. */
 #define IMAGE_PNG_MSG_LEN 200
 
-static void image_errf(char *err, size_t errlen, const char *fmt, ...) IMAGE_PRINTF(3, 4);
 static void image_path_err(char *err, size_t errlen, const char *path, const char *fmt, ...)
     IMAGE_PRINTF(4, 5);
-
-static void image_errf(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-
-    if (err == NULL || errlen == 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* All user-facing errors name the file first, so a batch run that touches
  * many images says which one is at fault. */
@@ -80,17 +70,17 @@ int image_alloc(image_t *img, int width, int height, char *err, size_t errlen)
 
     image_clear(img);
     if (width <= 0 || height <= 0) {
-        image_errf(err, errlen, "invalid image size %dx%d", width, height);
+        errf_set(err, errlen, "invalid image size %dx%d", width, height);
         return -1;
     }
     bytes = image_byte_count(width, height);
     if (bytes == 0) {
-        image_errf(err, errlen, "image size %dx%d is too large", width, height);
+        errf_set(err, errlen, "image size %dx%d is too large", width, height);
         return -1;
     }
     img->rgb = calloc(bytes, 1);
     if (img->rgb == NULL) {
-        image_errf(err, errlen, "out of memory allocating a %dx%d image", width, height);
+        errf_set(err, errlen, "out of memory allocating a %dx%d image", width, height);
         return -1;
     }
     img->width = width;

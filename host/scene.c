@@ -16,6 +16,8 @@
  * Named fields may come in any order; each is required exactly once. */
 #include "scene.h"
 
+#include "errf.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -143,18 +145,6 @@ typedef struct {
 typedef struct {
     char s[SCENE_QUOTE_MAX + 4];
 } scene_quote_t;
-
-SCENE_PRINTF(3, 4)
-static void scene_errf(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-
-    if (err == NULL || errlen == 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* Write "NAME:LINE: message" and return -1, so callers can `return
  * scene_fail(...)`. */
@@ -864,14 +854,14 @@ int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
     f = fopen(path, "rb");
     if (f == NULL) {
         int e = errno;
-        scene_errf(err, errlen, "%s: cannot open: %s", path, strerror(e));
+        errf_set(err, errlen, "%s: cannot open: %s", path, strerror(e));
         return -1;
     }
     /* One byte more than allowed, so "exactly 1 MiB" and "larger" differ. */
     buf = malloc((size_t)SCENE_MAX_FILE_BYTES + 1);
     if (buf == NULL) {
         fclose(f);
-        scene_errf(err, errlen, "%s: out of memory", path);
+        errf_set(err, errlen, "%s: out of memory", path);
         return -1;
     }
     len = fread(buf, 1, (size_t)SCENE_MAX_FILE_BYTES + 1, f);
@@ -879,13 +869,13 @@ int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
         int e = errno;
         fclose(f);
         free(buf);
-        scene_errf(err, errlen, "%s: cannot read: %s", path, strerror(e));
+        errf_set(err, errlen, "%s: cannot read: %s", path, strerror(e));
         return -1;
     }
     fclose(f);
     if (len > (size_t)SCENE_MAX_FILE_BYTES) {
         free(buf);
-        scene_errf(err, errlen, "%s: file too large (over 1 MiB)", path);
+        errf_set(err, errlen, "%s: file too large (over 1 MiB)", path);
         return -1;
     }
     rc = scene_parse(path, buf, len, out, err, errlen);

@@ -20,26 +20,26 @@ static void emit_num(FILE *f, num_t v)
 #endif
 }
 
-static void emit_vec(FILE *f, vec3_t v)
+/* "{a, b, c}": a vector or a colour. */
+static void emit_num3(FILE *f, num_t a, num_t b, num_t c)
 {
     fputs("{", f);
-    emit_num(f, v.x);
+    emit_num(f, a);
     fputs(", ", f);
-    emit_num(f, v.y);
+    emit_num(f, b);
     fputs(", ", f);
-    emit_num(f, v.z);
+    emit_num(f, c);
     fputs("}", f);
+}
+
+static void emit_vec(FILE *f, vec3_t v)
+{
+    emit_num3(f, v.x, v.y, v.z);
 }
 
 static void emit_color(FILE *f, color_t c)
 {
-    fputs("{", f);
-    emit_num(f, c.r);
-    fputs(", ", f);
-    emit_num(f, c.g);
-    fputs(", ", f);
-    emit_num(f, c.b);
-    fputs("}", f);
+    emit_num3(f, c.r, c.g, c.b);
 }
 
 static const char *kind_name(geom_kind_t k)

@@ -11,7 +11,7 @@
 
 ORACLE_NUMBERS := q16 double
 ORACLE_BIN     := $(BUILD)/tests/oracle
-ORACLE_OBJ     := $(BUILD)/tests/oracle.o $(BUILD)/tests/randscene.o $(BUILD)/host/scene.o $(BUILD)/host/fx.o \
+ORACLE_OBJ     := $(BUILD)/tests/oracle.o $(BUILD)/tests/randscene.o $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/fx.o \
                   $(foreach n,$(ORACLE_NUMBERS),$(BUILD)/tests/oracle_num-$(n).o $(BUILD)/host/engine-$(n).o \
                     $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
 

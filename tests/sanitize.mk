@@ -133,7 +133,7 @@ $(FUZZ_DIR)/obj/fuzz_scene.o: tests/fuzz_scene.c
 	@echo "  CC fuzz $<"
 	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -Ihost -Icore -c $< -o $@
 
-$(FUZZ_SCENE_BIN): $(FUZZ_DIR)/obj/fuzz_scene.o $(FUZZ_DIR)/obj/scene.o
+$(FUZZ_SCENE_BIN): $(FUZZ_DIR)/obj/fuzz_scene.o $(FUZZ_DIR)/obj/scene.o $(FUZZ_DIR)/obj/errf.o
 	@echo "  LD fuzz $@"
 	$(Q)$(FUZZ_CC) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $(filter %.o,$^) -lm
 
