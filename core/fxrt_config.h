@@ -213,4 +213,31 @@
 #error "FXRT_PIXEL must be FXRT_RGB888 (1) or FXRT_RGB565 (2)"
 #endif
 
+/* ---- the board program (firmware/main.c) ------------------------------- */
+
+/* Frame mode of the firmware (make qemu FB=full|stream):
+ *   1 = FXRT_FB_FULL    the whole frame in a static framebuffer, sent
+ *                       after the render (default)
+ *   2 = FXRT_FB_STREAM  FXRT_BAND_ROWS rows at a time, each band sent as
+ *                       soon as it is rendered: RAM does not grow with the
+ *                       image height (the micro:bit's default) */
+#define FXRT_FB_FULL 1
+#define FXRT_FB_STREAM 2
+#ifndef FXRT_FB_MODE
+#define FXRT_FB_MODE FXRT_FB_FULL
+#endif
+#if FXRT_FB_MODE != FXRT_FB_FULL && FXRT_FB_MODE != FXRT_FB_STREAM
+#error "FXRT_FB_MODE must be FXRT_FB_FULL (1) or FXRT_FB_STREAM (2)"
+#endif
+/* Rows per band in streaming mode (1..any; RAM: 3 * width bytes a row). */
+#ifndef FXRT_BAND_ROWS
+#define FXRT_BAND_ROWS 1
+#endif
+#if FXRT_BAND_ROWS < 1
+#error "FXRT_BAND_ROWS must be at least 1"
+#endif
+#if FXRT_FB_MODE == FXRT_FB_STREAM && FXRT_PIXEL != FXRT_RGB888
+#error "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer"
+#endif
+
 #endif

@@ -20,19 +20,9 @@
 #include "board.h"
 #include "semihost.h"
 
-#define FXRT_FB_FULL 1
-#define FXRT_FB_STREAM 2
-#ifndef FXRT_FB_MODE
-#define FXRT_FB_MODE FXRT_FB_FULL
-#endif
-#ifndef FXRT_BAND_ROWS
-#define FXRT_BAND_ROWS 1
-#endif
+/* FXRT_FB_MODE, FXRT_BAND_ROWS and their guards: core/fxrt_config.h. */
 #ifndef FXRT_OUT_PATH
-#error "FXRT_OUT_PATH (the host file for the frame) must be defined"
-#endif
-#if FXRT_FB_MODE == FXRT_FB_STREAM && FXRT_PIXEL != FXRT_RGB888
-#error "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer"
+#error "FXRT_OUT_PATH (the host file for the frame, a build input set by firmware/firmware.mk) must be defined"
 #endif
 
 #define ROW_BYTES (3 * SCENE_WIDTH)
