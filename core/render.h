@@ -16,9 +16,12 @@
  *              side, inside when no two edges have opposite strict signs
  *   box        the union of its faces that a ray can cross at t > 0:
  *              the front faces seen from outside in perspective, every
- *              non-degenerate face when the eye is on its surface or the
- *              camera is orthographic (ray origins spread over a plane
- *              that may cut the box); every pixel when the eye is inside
+ *              non-degenerate face when the eye is on its surface (except
+ *              the faces whose plane holds the eye: a ray leaves them at
+ *              t = 0, so a ray that leaves the box at once misses it, as
+ *              in the kernels) or the camera is orthographic (ray origins
+ *              spread over a plane that may cut the box); every pixel
+ *              when the eye is strictly inside
  * In the Q16.16 build the coefficients are integers (rounded once, with a
  * per-form power-of-two scale), so every value along a scanline is exact:
  * forward differencing (one 64-bit addition per linear form and pixel,

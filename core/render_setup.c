@@ -522,6 +522,9 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, rende
                 continue; /* turned away from an eye outside */
             if ((ortho || !outside) && side == 1 && geom_axis(b->min, axis) == geom_axis(b->max, axis))
                 continue; /* a flat box: both faces are one rectangle, keep one */
+            if (!ortho && geom_axis(cam->e, axis) == geom_axis(side ? b->max : b->min, axis))
+                continue; /* the eye on this face's plane: no ray crosses it at t > 0 (the
+                           * kernels' rule; rays that leave the box at once miss it) */
             vec3_t nw = vec3_make(axis == 0 ? NUM_ONE : NUM_ZERO, axis == 1 ? NUM_ONE : NUM_ZERO,
                                   axis == 2 ? NUM_ONE : NUM_ZERO);
             if (side == 0)
