@@ -13,12 +13,19 @@
  *              hit = c < 0 || (b > 0 && disc >= 0)
  *   flat       N = n.(A - o), D = n.r; in front when N, D have one strict
  *              sign; a triangle or box face adds one linear edge form per
- *              side, inside when no two edges have opposite strict signs
+ *              side, inside when no two edges have opposite strict signs.
+ *              In perspective N is one constant: a plane or triangle whose
+ *              plane holds the eye (the kernels' n.(A - e) is 0) covers
+ *              nothing, and N takes the sign of the kernels' n.(A - e)
+ *              where the camera-space rounding disagrees
  *   box        the union of its faces that a ray can cross at t > 0:
  *              the front faces seen from outside in perspective, every
- *              non-degenerate face when the eye is on its surface or the
- *              camera is orthographic (ray origins spread over a plane
- *              that may cut the box); every pixel when the eye is inside
+ *              non-degenerate face when the eye is on its surface (except
+ *              the faces whose plane holds the eye: a ray leaves them at
+ *              t = 0, so a ray that leaves the box at once misses it, as
+ *              in the kernels) or the camera is orthographic (ray origins
+ *              spread over a plane that may cut the box); every pixel
+ *              when the eye is strictly inside
  * In the Q16.16 build the coefficients are integers (rounded once, with a
  * per-form power-of-two scale), so every value along a scanline is exact:
  * forward differencing (one 64-bit addition per linear form and pixel,

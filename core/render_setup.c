@@ -145,6 +145,36 @@ RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec
     f->r1 = (int16_t)(cam->height - 1);
 }
 
+/* Perspective: every ray starts at the eye, so the kernels' numerator
+ * n.(A - e) (geom_flat_t, in the same numbers) is one value for the whole
+ * frame: the side of the plane the eye is on. A plane through the eye (0)
+ * is never hit at t > 0, whatever the direction: returns false and N is
+ * set to 0, which covers no pixel. Where the camera-space rounding gave
+ * N the other sign (the plane within a rounding of the eye), N takes the
+ * kernels' sign at the smallest magnitude (t ~ 0). Orthographic rays
+ * start on a plane: nothing to do. */
+RENDER_MAYBE_UNUSED static bool render_flat_eye(const cam_t *cam, vec3_t a, vec3_t n, render_flat_t *f)
+{
+    if (render_ortho(cam))
+        return true;
+    numw_t k = vec3_dotw(vec3_sub(a, cam->e), n);
+    if (k == 0) {
+        f->n.c = 0;
+        return false;
+    }
+    bool neg = k < 0;
+    if (f->n.c == 0 || (f->n.c < 0) != neg) {
+#if FXRT_NUMBER == FXRT_Q16
+        f->n.c = neg ? -1 : 1;
+#else
+        f->n.c = (render_k_t)k;
+        if (f->n.c == 0)
+            f->n.c = (render_k_t)(neg ? -1e-30 : 1e-30);
+#endif
+    }
+    return true;
+}
+
 /* Copy an object's bounds to (or from) a flat piece. */
 RENDER_MAYBE_UNUSED static void render_flat_bounds_from(render_flat_t *f, const render_obj_t *o)
 {
@@ -457,6 +487,8 @@ static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, r
     o->nflat = 1;
     render_flat_nd(r->cam, ext, render_dir_to_cam(r->cam, p->n), render_to_cam(r->cam, p->a), render_face(o, 0));
     render_set_full(r->cam, o); /* rows beyond the horizon are skipped per row */
+    if (!render_flat_eye(r->cam, p->a, p->n, render_face(o, 0)))
+        render_set_empty(o); /* the eye on the plane */
 }
 #endif
 
@@ -478,6 +510,8 @@ static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t
         f->e[i] = render_edge(cam, ext, v[i], v[(i + 1) % 3]);
     f->edges = 3;
     render_points_bounds(cam, v, 3, o);
+    if (!render_flat_eye(cam, t->a, t->n, f))
+        render_set_empty(o); /* the eye in the triangle's plane */
     render_flat_bounds_from(f, o);
 }
 #endif
@@ -522,6 +556,9 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, rende
                 continue; /* turned away from an eye outside */
             if ((ortho || !outside) && side == 1 && geom_axis(b->min, axis) == geom_axis(b->max, axis))
                 continue; /* a flat box: both faces are one rectangle, keep one */
+            if (!ortho && geom_axis(cam->e, axis) == geom_axis(side ? b->max : b->min, axis))
+                continue; /* the eye on this face's plane: no ray crosses it at t > 0 (the
+                           * kernels' rule; rays that leave the box at once miss it) */
             vec3_t nw = vec3_make(axis == 0 ? NUM_ONE : NUM_ZERO, axis == 1 ? NUM_ONE : NUM_ZERO,
                                   axis == 2 ? NUM_ONE : NUM_ZERO);
             if (side == 0)

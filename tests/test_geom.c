@@ -1486,6 +1486,98 @@ static void test_render_overlap(void)
     CHECK_MSG(rows_bad == 0, "%ld rows differ between render_row and render_row_reference", rows_bad);
 }
 
+/* The eye exactly on a box's surface: on a face, an edge or a corner (the
+ * eye's coordinates on those axes are the box's own min or max, in the
+ * build's numbers; on the other axes strictly inside), random box, gaze,
+ * up and fov, and a plane behind. The kernels' rule: a hit needs t > 0, so
+ * a ray that leaves the box at once misses it and one that enters it hits
+ * its far face. render_row must equal render_row_reference byte for byte,
+ * and every pixel away from silhouettes (its 8 neighbours see the same
+ * object) must show what the world-space kernels see. Cap: 0 wrong. */
+static void test_render_eye_on_box(void)
+{
+    uint64_t st = 0xb0c5eed1ull;
+    static int ids[OH][OW];
+    static rgb8_t want[OH][OW];
+    long rows_bad = 0, interior = 0, interior_bad = 0, box_px = 0, other_px = 0;
+    for (int it = 0; it < 90; it++) {
+        world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
+        double lo[3], hi[3];
+        for (int a = 0; a < 3; a++) {
+            lo[a] = orand(&st, -3, 1);
+            hi[a] = lo[a] + orand(&st, 0.5, 3);
+        }
+        CHECK(geom_box_make(&world.boxes[0], V3(lo[0], lo[1], lo[2]), V3(hi[0], hi[1], hi[2]),
+                            col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), 0));
+        world.n_boxes = 1;
+        dv_t pn = dnorm(dv(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1)));
+        CHECK(geom_plane_make(&world.planes[0], V3(pn.x * -12, pn.y * -12, pn.z * -12), V3(pn.x, pn.y, pn.z),
+                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), 1));
+        world.n_planes = 1;
+        /* it % 3 + 1 axes on the surface: a face, an edge, a corner. */
+        int on = it % 3 + 1, first = (int)(check_rng_next(&st) % 3);
+        num_t e[3];
+        for (int a = 0; a < 3; a++) {
+            int k = (a - first + 3) % 3;
+            if (k < on)
+                e[a] = geom_axis((check_rng_next(&st) & 1) ? world.boxes[0].max : world.boxes[0].min, a);
+            else
+                e[a] = N(orand(&st, lo[a] + 0.1, hi[a] - 0.1));
+        }
+        cam_t c;
+        vec3_t gaze = V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1));
+        vec3_t up = V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1));
+        if (cam_setup(&c, CAM_PERSPECTIVE, vec3_make(e[0], e[1], e[2]), gaze, up, N(orand(&st, 30, 150)),
+                      NUM_ZERO, OW, OH) != CAM_OK)
+            continue; /* up nearly parallel to the gaze */
+        static render_t state;
+        CHECK(render_setup(&state, &world, &c));
+        for (int32_t row = 0; row < OH; row++)
+            for (int32_t x = 0; x < OW; x++) {
+                ray_t r;
+                hit_t h;
+                cam_ray(&c, x, OH - 1 - row, &r);
+                bool found = world_hit(&world, &r, &h);
+                ids[row][x] = found ? h.obj->id : -1;
+                want[row][x] = found ? h.obj->rgb : world.background_rgb;
+            }
+        for (int32_t row = 0; row < OH; row++) {
+            uint8_t fast[3 * OW], ref[3 * OW];
+            render_row(&state, row, fast);
+            render_row_reference(&state, row, ref);
+            if (memcmp(fast, ref, sizeof fast) != 0) {
+                rows_bad++;
+                CHECK_SWEEP(false, "eye on box %d row %d: fast != reference", it, (int)row);
+            }
+            for (int32_t x = 1; x + 1 < OW; x++) {
+                if (row == 0 || row + 1 == OH)
+                    continue;
+                bool edge = false;
+                for (int dy = -1; dy <= 1; dy++)
+                    for (int dx = -1; dx <= 1; dx++)
+                        edge |= ids[row + dy][x + dx] != ids[row][x];
+                if (edge)
+                    continue;
+                interior++;
+                box_px += ids[row][x] == 0;
+                other_px += ids[row][x] != 0;
+                const uint8_t *p = &fast[3 * x];
+                rgb8_t w = want[row][x];
+                if (p[0] != w.r || p[1] != w.g || p[2] != w.b) {
+                    interior_bad++;
+                    CHECK_SWEEP(false, "eye on box %d (%d axes on the surface) row %d x %d: got %d %d %d, want %d %d %d (object %d)",
+                                it, on, (int)row, (int)x, p[0], p[1], p[2], w.r, w.g, w.b, ids[row][x]);
+                }
+            }
+        }
+    }
+    printf("eye on box: %ld interior pixels checked (%ld box, %ld not), %ld wrong, %ld rows fast != reference\n",
+           interior, box_px, other_px, interior_bad, rows_bad);
+    CHECK_MSG(box_px > 10000 && other_px > 10000, "too few pixels exercised: %ld box, %ld not", box_px, other_px);
+    CHECK_MSG(interior_bad == 0, "%ld interior pixels differ from the kernels", interior_bad);
+    CHECK_MSG(rows_bad == 0, "%ld rows differ between render_row and render_row_reference", rows_bad);
+}
+
 int main(void)
 {
     test_color_rule();
@@ -1509,5 +1601,6 @@ int main(void)
     test_world();
     test_render();
     test_render_overlap();
+    test_render_eye_on_box();
     return check_report("test_geom_" NUM_NAME);
 }
