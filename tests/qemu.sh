@@ -101,11 +101,14 @@ onb_batch() {
 qemu_m() { echo "$1"; }
 tick_ns() { case $1 in microbit) echo 62.5 ;; *) echo 40 ;; esac; }
 : >"$onb/verdicts.txt"
+# The two MPS2 batches build and run side by side (two cores).
 for b in mps2-an385 mps2-an386; do
-    onb_batch $b all "${stress[@]}" >>"$onb/verdicts.txt" || for n in "${stress[@]}"; do
-        echo "FAIL $b $n: the batch does not fit the board" >>"$onb/verdicts.txt"
-    done
+    (onb_batch $b all "${stress[@]}" >"$onb/verdicts-$b.txt" || for n in "${stress[@]}"; do
+        echo "FAIL $b $n: the batch does not fit the board" >>"$onb/verdicts-$b.txt"
+    done) &
 done
+wait
+cat "$onb/verdicts-mps2-an385.txt" "$onb/verdicts-mps2-an386.txt" >>"$onb/verdicts.txt"
 # micro:bit: greedy batches in the scenes' order, estimating RAM per batch as
 # render_t and world entries per object of the largest capacities (about
 # 1.1 KB each on the M0), 7 bytes per column (owner + row) and 4 KB of
