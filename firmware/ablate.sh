@@ -41,7 +41,7 @@ fi
 header="| variant |"
 rule="|---|"
 for s in "${scenes[@]}"; do
-    header+=" $(basename "$s" .scene | sed -E 's/-.*//') |"
+    n=$(basename "$s" .scene); [[ $n == abb* ]] && n=${n%%-*}; header+=" $n |"
     rule+="---:|"
 done
 declare -A ipp
