@@ -550,6 +550,16 @@ static void render_scan_sphere_f(render_t *r, uint16_t oi, const render_obj_t *o
 }
 #endif
 
+/* The stepping scanlines of this build: exact integer steps in Q16.16,
+ * the float programmer's restarted forward differences otherwise. */
+#if FXRT_NUMBER == FXRT_Q16
+#define RENDER_SCAN_SPHERE render_scan_sphere
+#define RENDER_SCAN_FLAT render_scan_flat
+#else
+#define RENDER_SCAN_SPHERE render_scan_sphere_f
+#define RENDER_SCAN_FLAT render_scan_flat_f
+#endif
+
 /* Is object i the only one whose bounds reach columns x0..x1 on this row?
  * Then nothing can compete for its pixels. (Only checked for small worlds;
  * a large one simply takes the owner path.) */
@@ -600,32 +610,18 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
             for (int32_t x = x0; x <= x1; x++)
                 RENDER_HIT(r, i, x, iy, rgb, lone);
             break;
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+#if RENDER_STEPPED
         case RENDER_SPHERE:
-            render_scan_sphere(r, i, o, x0, x1, iy, rgb, lone);
+            RENDER_SCAN_SPHERE(r, i, o, x0, x1, iy, rgb, lone);
             break;
         case RENDER_FLAT:
         case RENDER_BOX:
             for (int k = 0; k < o->nflat; k++) {
                 const render_flat_t *f = render_face(o, k);
                 if (FXRT_NO_BOUNDS)
-                    render_scan_flat(r, i, f, 0, w - 1, iy, rgb, lone);
+                    RENDER_SCAN_FLAT(r, i, f, 0, w - 1, iy, rgb, lone);
                 else if (row >= f->r0 && row <= f->r1)
-                    render_scan_flat(r, i, f, f->x0, f->x1, iy, rgb, lone);
-            }
-            break;
-#elif RENDER_STEPPED
-        case RENDER_SPHERE:
-            render_scan_sphere_f(r, i, o, x0, x1, iy, rgb, lone);
-            break;
-        case RENDER_FLAT:
-        case RENDER_BOX:
-            for (int k = 0; k < o->nflat; k++) {
-                const render_flat_t *f = render_face(o, k);
-                if (FXRT_NO_BOUNDS)
-                    render_scan_flat_f(r, i, f, 0, w - 1, iy, rgb, lone);
-                else if (row >= f->r0 && row <= f->r1)
-                    render_scan_flat_f(r, i, f, f->x0, f->x1, iy, rgb, lone);
+                    RENDER_SCAN_FLAT(r, i, f, f->x0, f->x1, iy, rgb, lone);
             }
             break;
 #else
