@@ -1387,6 +1387,47 @@ static int oracle_pixel(const ray_t *ray, num_t *t1, num_t *t2, rgb8_t *rgb)
     return best;
 }
 
+/* One OW x OH frame of state against the kernels: render_row must equal
+ * render_row_reference byte for byte, and every pixel off the border, not
+ * marked in skip (may be NULL) and whose 8 neighbours see the same object
+ * (ids) must show want. what names the frame in failure messages. */
+typedef struct {
+    long rows_bad, interior, interior_bad, id0_px;
+} frame_tally_t;
+
+static void check_frame(render_t *state, int ids[OH][OW], rgb8_t want[OH][OW], bool skip[OH][OW],
+                        const char *what, frame_tally_t *t)
+{
+    for (int32_t row = 0; row < OH; row++) {
+        uint8_t fast[3 * OW], ref[3 * OW];
+        render_row(state, row, fast);
+        render_row_reference(state, row, ref);
+        if (memcmp(fast, ref, sizeof fast) != 0) {
+            t->rows_bad++;
+            CHECK_SWEEP(false, "%s row %d: fast != reference", what, (int)row);
+        }
+        for (int32_t x = 1; x + 1 < OW; x++) {
+            if (row == 0 || row + 1 == OH || (skip && skip[row][x]))
+                continue;
+            bool edge = false;
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++)
+                    edge |= ids[row + dy][x + dx] != ids[row][x];
+            if (edge)
+                continue;
+            t->interior++;
+            t->id0_px += ids[row][x] == 0;
+            const uint8_t *p = &fast[3 * x];
+            rgb8_t w = want[row][x];
+            if (p[0] != w.r || p[1] != w.g || p[2] != w.b) {
+                t->interior_bad++;
+                CHECK_SWEEP(false, "%s row %d x %d: got %d %d %d, want %d %d %d (object %d)", what, (int)row,
+                            (int)x, p[0], p[1], p[2], w.r, w.g, w.b, ids[row][x]);
+            }
+        }
+    }
+}
+
 /* Random worlds whose objects overlap on screen (planes, spheres,
  * triangles, boxes in one region; both camera kinds; arbitrary colours):
  * render_row must equal render_row_reference byte for byte, and every
@@ -1399,7 +1440,8 @@ static void test_render_overlap(void)
     static int ids[OH][OW];
     static rgb8_t want[OH][OW];
     static bool tie[OH][OW];
-    long rows_bad = 0, interior = 0, interior_bad = 0, overlaps = 0;
+    long overlaps = 0;
+    frame_tally_t tally = {0, 0, 0, 0};
     for (int it = 0; it < 120; it++) {
         world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
         uint16_t id = 0;
@@ -1449,41 +1491,17 @@ static void test_render_overlap(void)
                 tie[row][x] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
                 overlaps += t2 != NUM_MAX;
             }
-        for (int32_t row = 0; row < OH; row++) {
-            uint8_t fast[3 * OW], ref[3 * OW];
-            render_row(&state, row, fast);
-            render_row_reference(&state, row, ref);
-            if (memcmp(fast, ref, sizeof fast) != 0) {
-                rows_bad++;
-                CHECK_SWEEP(false, "scene %d row %d: fast != reference", it, (int)row);
-            }
-            for (int32_t x = 1; x + 1 < OW; x++) {
-                if (row == 0 || row + 1 == OH || tie[row][x])
-                    continue;
-                bool edge = false;
-                for (int dy = -1; dy <= 1; dy++)
-                    for (int dx = -1; dx <= 1; dx++)
-                        edge |= ids[row + dy][x + dx] != ids[row][x];
-                if (edge)
-                    continue;
-                interior++;
-                const uint8_t *p = &fast[3 * x];
-                rgb8_t w = want[row][x];
-                if (p[0] != w.r || p[1] != w.g || p[2] != w.b) {
-                    interior_bad++;
-                    CHECK_SWEEP(false, "scene %d (%s) row %d x %d: got %d %d %d, want %d %d %d (object %d)", it,
-                                ortho ? "ortho" : "persp", (int)row, (int)x, p[0], p[1], p[2], w.r, w.g, w.b,
-                                ids[row][x]);
-                }
-            }
-        }
+        char what[64];
+        snprintf(what, sizeof what, "scene %d (%s)", it, ortho ? "ortho" : "persp");
+        check_frame(&state, ids, want, tie, what, &tally);
     }
     printf("overlap: %ld interior pixels checked, %ld with two or more hits, %ld wrong, %ld rows fast != reference\n",
-           interior, overlaps, interior_bad, rows_bad);
-    CHECK_MSG(interior > 20000 && overlaps > 5000, "too few pixels exercised: %ld interior, %ld overlaps", interior,
-              overlaps);
-    CHECK_MSG(interior_bad == 0, "%ld interior pixels differ from the kernels' nearest object", interior_bad);
-    CHECK_MSG(rows_bad == 0, "%ld rows differ between render_row and render_row_reference", rows_bad);
+           tally.interior, overlaps, tally.interior_bad, tally.rows_bad);
+    CHECK_MSG(tally.interior > 20000 && overlaps > 5000, "too few pixels exercised: %ld interior, %ld overlaps",
+              tally.interior, overlaps);
+    CHECK_MSG(tally.interior_bad == 0, "%ld interior pixels differ from the kernels' nearest object",
+              tally.interior_bad);
+    CHECK_MSG(tally.rows_bad == 0, "%ld rows differ between render_row and render_row_reference", tally.rows_bad);
 }
 
 /* The eye exactly on a box's surface: on a face, an edge or a corner (the
@@ -1499,7 +1517,7 @@ static void test_render_eye_on_box(void)
     uint64_t st = 0xb0c5eed1ull;
     static int ids[OH][OW];
     static rgb8_t want[OH][OW];
-    long rows_bad = 0, interior = 0, interior_bad = 0, box_px = 0, other_px = 0;
+    frame_tally_t tally = {0, 0, 0, 0};
     for (int it = 0; it < 90; it++) {
         world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
         double lo[3], hi[3];
@@ -1541,41 +1559,17 @@ static void test_render_eye_on_box(void)
                 ids[row][x] = found ? h.obj->id : -1;
                 want[row][x] = found ? h.obj->rgb : world.background_rgb;
             }
-        for (int32_t row = 0; row < OH; row++) {
-            uint8_t fast[3 * OW], ref[3 * OW];
-            render_row(&state, row, fast);
-            render_row_reference(&state, row, ref);
-            if (memcmp(fast, ref, sizeof fast) != 0) {
-                rows_bad++;
-                CHECK_SWEEP(false, "eye on box %d row %d: fast != reference", it, (int)row);
-            }
-            for (int32_t x = 1; x + 1 < OW; x++) {
-                if (row == 0 || row + 1 == OH)
-                    continue;
-                bool edge = false;
-                for (int dy = -1; dy <= 1; dy++)
-                    for (int dx = -1; dx <= 1; dx++)
-                        edge |= ids[row + dy][x + dx] != ids[row][x];
-                if (edge)
-                    continue;
-                interior++;
-                box_px += ids[row][x] == 0;
-                other_px += ids[row][x] != 0;
-                const uint8_t *p = &fast[3 * x];
-                rgb8_t w = want[row][x];
-                if (p[0] != w.r || p[1] != w.g || p[2] != w.b) {
-                    interior_bad++;
-                    CHECK_SWEEP(false, "eye on box %d (%d axes on the surface) row %d x %d: got %d %d %d, want %d %d %d (object %d)",
-                                it, on, (int)row, (int)x, p[0], p[1], p[2], w.r, w.g, w.b, ids[row][x]);
-                }
-            }
-        }
+        char what[64];
+        snprintf(what, sizeof what, "eye on box %d (%d axes on the surface)", it, on);
+        check_frame(&state, ids, want, NULL, what, &tally);
     }
+    /* The box is object 0 (its scene id), the plane object 1. */
+    long box_px = tally.id0_px, other_px = tally.interior - tally.id0_px;
     printf("eye on box: %ld interior pixels checked (%ld box, %ld not), %ld wrong, %ld rows fast != reference\n",
-           interior, box_px, other_px, interior_bad, rows_bad);
+           tally.interior, box_px, other_px, tally.interior_bad, tally.rows_bad);
     CHECK_MSG(box_px > 10000 && other_px > 10000, "too few pixels exercised: %ld box, %ld not", box_px, other_px);
-    CHECK_MSG(interior_bad == 0, "%ld interior pixels differ from the kernels", interior_bad);
-    CHECK_MSG(rows_bad == 0, "%ld rows differ between render_row and render_row_reference", rows_bad);
+    CHECK_MSG(tally.interior_bad == 0, "%ld interior pixels differ from the kernels", tally.interior_bad);
+    CHECK_MSG(tally.rows_bad == 0, "%ld rows differ between render_row and render_row_reference", tally.rows_bad);
 }
 
 int main(void)
