@@ -20,13 +20,25 @@ fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t worl
 
 int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
 {
+    int32_t id;
     switch (o->kind) {
-    case GEOM_PLANE: return world_add_plane(w, o->p[0], o->p[1], o->color);
-    case GEOM_SPHERE: return world_add_sphere(w, o->p[0], o->radius, o->color);
-    case GEOM_TRIANGLE: return world_add_triangle(w, o->p[0], o->p[1], o->p[2], o->color);
-    case GEOM_BOX: return world_add_box(w, o->p[0], o->p[1], o->color);
+    case GEOM_PLANE: id = world_add_plane(w, o->p[0], o->p[1], o->color); break;
+    case GEOM_SPHERE: id = world_add_sphere(w, o->p[0], o->radius, o->color); break;
+    case GEOM_TRIANGLE: id = world_add_triangle(w, o->p[0], o->p[1], o->p[2], o->color); break;
+    case GEOM_BOX: id = world_add_box(w, o->p[0], o->p[1], o->color); break;
+    default: return FXRT_ERR_KIND;
     }
-    return FXRT_ERR_KIND;
+    if (id >= 0 && o->material.kind != MATERIAL_FLAT) {
+        fxrt_err_t e = world_set_material(w, id, &o->material);
+        if (e != FXRT_OK)
+            return e;
+    }
+    return id;
+}
+
+int32_t fxrt_add_light(world_t *w, const fxrt_light_t *l)
+{
+    return world_add_light(w, l->kind, l->position, l->direction, l->angle_deg, l->color, l->shadows);
 }
 
 /* cam_setup's codes in the API's terms. */
@@ -135,6 +147,12 @@ const char *fxrt_strerror(int32_t err)
         return "core and application built with different configurations (FXRT_NUMBER, FXRT_MAX_*, "
                "FXRT_RENDER_MAX_WIDTH, FXRT_PIXEL must match)";
     case FXRT_ERR_RENDER: return "the renderer cannot set this frame up (render_t capacity)";
+    case FXRT_ERR_ANGLE: return "spot light half-angle must be in (0, 90] degrees";
+    case FXRT_ERR_MATERIAL:
+        return "material not available (unknown kind, phong exponent outside 1..1024, or lighting compiled out: "
+               "FXRT_MAX_LIGHTS, FXRT_PHONG)";
+    case FXRT_ERR_ID: return "no object with this id";
+    case FXRT_ERR_LIGHT: return "unknown light kind";
     }
     return "unknown error";
 }

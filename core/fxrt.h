@@ -34,12 +34,12 @@
  * it is refused, never rendered wrong.
  *
  * Configuration: the core and the application must be compiled with the
- * same FXRT_NUMBER, FXRT_MAX_<KIND>, FXRT_RENDER_MAX_WIDTH (and
- * FXRT_PIXEL), since they change world_t and render_t. fxrt_world_init
+ * same FXRT_NUMBER, FXRT_MAX_<KIND>, FXRT_MAX_LIGHTS, FXRT_RENDER_MAX_WIDTH
+ * (and FXRT_PIXEL), since they change world_t and render_t. fxrt_world_init
  * references a symbol whose name spells the application's configuration
- * (fxrt_config_n1_p4_s4_t4_b4_w64_px1 ...); the core defines only the one
+ * (fxrt_config_n1_p4_s4_t4_b4_w64_px1_l0 ...); the core defines only the one
  * for its own, so a mismatch fails at link time with
- *   undefined reference to `fxrt_config_n1_p0_s8_t0_b0_w64_px1'
+ *   undefined reference to `fxrt_config_n1_p0_s8_t0_b0_w64_px1_l0'
  * and, should it link anyway, fxrt_world_init returns FXRT_ERR_CONFIG.
  * The macros must be plain decimal integers for the name to form.
  */
@@ -70,12 +70,13 @@
 #else
 #define FXRT_CONFIG_PIXEL 1
 #endif
-#define FXRT_CONFIG_CAT_(n, p, s, t, b, w, px) fxrt_config_n##n##_p##p##_s##s##_t##t##_b##b##_w##w##_px##px
-#define FXRT_CONFIG_CAT(n, p, s, t, b, w, px) FXRT_CONFIG_CAT_(n, p, s, t, b, w, px)
-/* The configuration as a link-time name, e.g. fxrt_config_n1_p64_s64_t64_b64_w4096_px1. */
+#define FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l) fxrt_config_n##n##_p##p##_s##s##_t##t##_b##b##_w##w##_px##px##_l##l
+#define FXRT_CONFIG_CAT(n, p, s, t, b, w, px, l) FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l)
+/* The configuration as a link-time name, e.g.
+ * fxrt_config_n1_p64_s64_t64_b64_w4096_px1_l8 (l: FXRT_MAX_LIGHTS). */
 #define FXRT_CONFIG_SYMBOL                                                                                    \
     FXRT_CONFIG_CAT(FXRT_NUMBER, FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES, FXRT_MAX_BOXES,       \
-                    FXRT_RENDER_MAX_WIDTH, FXRT_CONFIG_PIXEL)
+                    FXRT_RENDER_MAX_WIDTH, FXRT_CONFIG_PIXEL, FXRT_MAX_LIGHTS)
 /* Defined once, in core/fxrt.c, for the configuration the core is built with. */
 extern const uint32_t FXRT_CONFIG_SYMBOL;
 
@@ -118,11 +119,31 @@ typedef struct {
     vec3_t p[3];
     num_t radius;
     color_t color;
+    material_t material; /* all zero: MATERIAL_FLAT */
 } fxrt_object_t;
 
-/* world_add_<kind> for o->kind. Returns the id or a negative fxrt_err_t
- * (FXRT_ERR_KIND for an unknown kind). */
+/* world_add_<kind> for o->kind, then world_set_material when the material
+ * is not flat. Returns the id or a negative fxrt_err_t (FXRT_ERR_KIND for
+ * an unknown kind; a refused material removes nothing but leaves the
+ * object flat, so check the code). */
 int32_t fxrt_add(world_t *w, const fxrt_object_t *o);
+
+/* --- lights ---------------------------------------------------------------
+ * (world.h: world_set_ambient, world_set_material, world_add_light.) A
+ * light as data, what the scene compiler emits: position for point and
+ * spot, direction for directional and spot, angle_deg (the cone's
+ * half-angle) for spot. */
+typedef struct {
+    light_kind_t kind;
+    vec3_t position, direction;
+    num_t angle_deg;
+    color_t color; /* fractions 0..1 */
+    bool shadows;
+} fxrt_light_t;
+
+/* world_add_light for a description: the light's index or a negative
+ * fxrt_err_t. */
+int32_t fxrt_add_light(world_t *w, const fxrt_light_t *l);
 
 /* --- camera --------------------------------------------------------------- */
 

@@ -213,6 +213,44 @@
 #error "FXRT_PIXEL must be FXRT_RGB888 (1) or FXRT_RGB565 (2)"
 #endif
 
+/* ---- lighting (core/light.h, core/shade.c, core/shadow.c) -------------- */
+
+/* Lights a world can hold (0..8). 0 compiles lighting out: every object is
+ * drawn in its flat colour, material and light calls return
+ * FXRT_ERR_MATERIAL / FXRT_ERR_FULL, and no shading code is linked. The
+ * firmware sets it from the scene (fxrt-scenec: 0 when every material is
+ * flat). At most 8: a pixel's key holds one bit per light. */
+#ifndef FXRT_MAX_LIGHTS
+#define FXRT_MAX_LIGHTS 8
+#endif
+#if FXRT_MAX_LIGHTS < 0 || FXRT_MAX_LIGHTS > 8
+#error "FXRT_MAX_LIGHTS must be in 0..8"
+#endif
+/* FXRT_SHADOWS 0 compiles shadow rays out (every light then reaches every
+ * surface that faces it, whatever its shadows setting); 1 (default) casts
+ * them for lights with shadows on. The scene compiler emits 0 when no
+ * light casts shadows. */
+#ifndef FXRT_SHADOWS
+#define FXRT_SHADOWS (FXRT_MAX_LIGHTS > 0)
+#endif
+#if FXRT_SHADOWS != 0 && FXRT_SHADOWS != 1
+#error "FXRT_SHADOWS must be 0 or 1"
+#endif
+/* FXRT_PHONG 0 compiles the specular term out (phong materials are then
+ * refused with FXRT_ERR_MATERIAL); 1 (default) keeps it. The scene
+ * compiler emits 0 when no object is phong. */
+#ifndef FXRT_PHONG
+#define FXRT_PHONG (FXRT_MAX_LIGHTS > 0)
+#endif
+#if FXRT_PHONG != 0 && FXRT_PHONG != 1
+#error "FXRT_PHONG must be 0 or 1"
+#endif
+#if FXRT_MAX_LIGHTS == 0 && (FXRT_SHADOWS || FXRT_PHONG)
+#error "FXRT_SHADOWS and FXRT_PHONG need FXRT_MAX_LIGHTS > 0"
+#endif
+/* Largest Phong exponent (the scene format allows 1..1024). */
+#define FXRT_PHONG_MAX_EXPONENT 1024
+
 /* ---- the board program (firmware/main.c) ------------------------------- */
 
 /* Frame mode of the firmware (make qemu FB=full|stream):

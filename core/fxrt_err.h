@@ -29,6 +29,10 @@ typedef enum {
     FXRT_ERR_KIND = -16,     /* an fxrt_object_t with an unknown kind */
     FXRT_ERR_CONFIG = -17,   /* core and application built with different configurations */
     FXRT_ERR_RENDER = -18,   /* render_setup refused the frame for another reason (render_t capacity) */
+    FXRT_ERR_ANGLE = -19,    /* spot light half-angle outside (0, 90] degrees */
+    FXRT_ERR_MATERIAL = -20, /* unknown material, exponent outside 1..1024, or lighting compiled out */
+    FXRT_ERR_ID = -21,       /* no object with this id */
+    FXRT_ERR_LIGHT = -22,    /* unknown light kind */
     /* Camera errors without a name above (cam_setup codes added later)
      * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
      * fxrt_strerror still tell them apart. */
@@ -57,6 +61,11 @@ typedef enum {
 #define fxrt_camera_setup FXRT_SYM(fxrt_camera_setup)
 #define fxrt_render_setup_checked FXRT_SYM(fxrt_render_setup_checked)
 #define fxrt_strerror FXRT_SYM(fxrt_strerror)
+#define fxrt_add_light FXRT_SYM(fxrt_add_light)
+#define world_set_ambient FXRT_SYM(world_set_ambient)
+#define world_set_material FXRT_SYM(world_set_material)
+#define world_add_light FXRT_SYM(world_add_light)
+#define light_check_fraction FXRT_SYM(light_check_fraction)
 #endif
 
 #endif

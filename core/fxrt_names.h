@@ -15,6 +15,7 @@
 #define FXRT_SYM(name) name##_double
 #endif
 #define num_cot_deg FXRT_SYM(num_cot_deg)
+#define num_cos_deg FXRT_SYM(num_cos_deg)
 #define color_to_rgb8 FXRT_SYM(color_to_rgb8)
 #define cam_setup FXRT_SYM(cam_setup)
 #define cam_strerror FXRT_SYM(cam_strerror)
@@ -40,6 +41,18 @@
 #define render_resolve_sphere FXRT_SYM(render_resolve_sphere)
 #define render_row_order FXRT_SYM(render_row_order)
 #define raycast_row FXRT_SYM(raycast_row)
+#define geom_plane_surface FXRT_SYM(geom_plane_surface)
+#define geom_sphere_surface FXRT_SYM(geom_sphere_surface)
+#define geom_triangle_surface FXRT_SYM(geom_triangle_surface)
+#define geom_box_surface FXRT_SYM(geom_box_surface)
+#define geom_box_hit_face FXRT_SYM(geom_box_hit_face)
+#define shade_color FXRT_SYM(shade_color)
+#define shade_object FXRT_SYM(shade_object)
+#define shadow_blocked FXRT_SYM(shadow_blocked)
+#define world_occluded FXRT_SYM(world_occluded)
+#define world_find FXRT_SYM(world_find)
+#define world_common FXRT_SYM(world_common)
+#define render_shade_row FXRT_SYM(render_shade_row)
 #endif
 
 #endif

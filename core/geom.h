@@ -16,11 +16,26 @@
 
 typedef enum { GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX } geom_kind_t;
 
+/* How a surface responds to light (core/shade.c has the formulas):
+ *   MATERIAL_FLAT     its colour as is, whatever the lights (the default)
+ *   MATERIAL_LAMBERT  ambient + diffuse
+ *   MATERIAL_PHONG    ambient + diffuse + specular (specular, exponent) */
+typedef enum { MATERIAL_FLAT, MATERIAL_LAMBERT, MATERIAL_PHONG } material_kind_t;
+
+typedef struct {
+    uint8_t kind;      /* material_kind_t */
+    uint16_t exponent; /* phong: 1..FXRT_PHONG_MAX_EXPONENT */
+    color_t specular;  /* phong: c_s, fractions 0..1 (NUM_ONE = full) */
+} material_t;
+
 /* What every object carries besides its shape. */
 typedef struct {
     color_t color;
     rgb8_t rgb;  /* color as output pixels, computed once */
     uint16_t id; /* position in the scene file: ties in t go to the lower id */
+#if FXRT_MAX_LIGHTS > 0
+    material_t mat; /* MATERIAL_FLAT unless world_set_material changed it */
+#endif
 } geom_common_t;
 
 typedef struct {
@@ -111,5 +126,23 @@ bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t);
 bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t);
 bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t);
 bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t);
+/* geom_box_hit that also gives the face hit: axis * 2 + (1 for the max
+ * side), 0..5. */
+bool geom_box_hit_face(const geom_box_t *b, const ray_t *ray, num_t *t, uint8_t *face);
+
+/* Shading: where a ray that the renderer has already found to meet the
+ * object meets its surface, and the unit geometric normal there (outward
+ * for a sphere and a box, the stored normal for a plane and a triangle;
+ * not yet turned towards the ray). Unlike the hit tests these never miss:
+ * at a silhouette pixel, whose centre ray may pass just outside the
+ * object, they return the nearest surface point the ray comes to (a
+ * sphere's tangent point: the root with the discriminant clamped at 0; a
+ * flat piece's plane ignoring its edges; a box's entry face by the slab
+ * test ignoring the miss). *t may be 0 or negative only for a ray that
+ * starts behind or on the surface. */
+void geom_plane_surface(const geom_plane_t *p, const ray_t *ray, num_t *t, vec3_t *n);
+void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n);
+void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n);
+void geom_box_surface(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n);
 
 #endif

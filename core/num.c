@@ -17,4 +17,18 @@ num_t num_cot_deg(num_t deg)
     }
     return num_div(c, s);
 }
+
+/* cos(deg degrees) for deg in [0, 90] by the same series (the spot
+ * light's cone, once per light at set-up). */
+num_t num_cos_deg(num_t deg)
+{
+    num_t x = deg * NUM(3.14159265358979323846 / 180.0);
+    num_t x2 = x * x;
+    num_t c = NUM_ZERO, tc = NUM_ONE;
+    for (int k = 0; k < 14; k++) {
+        c = (k & 1) ? c - tc : c + tc;
+        tc = tc * x2 / (num_t)((2 * k + 1) * (2 * k + 2));
+    }
+    return c;
+}
 #endif

@@ -46,6 +46,7 @@ static inline num_t num_mul_int(num_t a, int32_t i) { return fx_mul_int(a, i); }
 /* a / 2, rounded to nearest, ties toward +infinity. */
 static inline num_t num_half(num_t a) { return (fx_t)(((int64_t)a + 1) >> 1); }
 static inline num_t num_cot_deg(num_t deg) { return fx_cot_deg(deg); }
+static inline num_t num_cos_deg(num_t deg) { return fx_cos_deg(deg); }
 
 static inline numw_t numw_mul(num_t a, num_t b) { return (fxw_t)a * b; }
 static inline numw_t numw_add(numw_t a, numw_t b) { return fxw_add(a, b); }
@@ -108,6 +109,7 @@ static inline num_t num_from_int(int32_t i) { return (num_t)i; }
 static inline num_t num_mul_int(num_t a, int32_t i) { return a * (num_t)i; }
 static inline num_t num_half(num_t a) { return a * NUM(0.5); }
 num_t num_cot_deg(num_t deg);
+num_t num_cos_deg(num_t deg); /* deg in [0, 90] */
 
 static inline numw_t numw_mul(num_t a, num_t b) { return a * b; }
 static inline numw_t numw_add(numw_t a, numw_t b) { return a + b; }

@@ -204,6 +204,17 @@ typedef struct {
     uint16_t stamp;
     uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
     uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
+#if FXRT_MAX_LIGHTS > 0
+    /* Shading pass: per column of the current row, the object (index into
+     * obj) painted last, RENDER_NONE where none; lit[i] says whether object
+     * i's material is not flat. */
+    uint16_t vis[FXRT_RENDER_MAX_WIDTH];
+    bool any_lit;
+#endif
+    /* Optional, set by the caller after render_setup: when not NULL,
+     * render_row and render_row_reference also write each pixel's key
+     * (render_key) into keys[0 .. width-1]. */
+    uint32_t *keys;
     int16_t dirty_lo, dirty_hi; /* this row: columns outside have no owner yet */
 } render_t;
 
@@ -212,6 +223,14 @@ typedef struct {
  * when the camera is wider than FXRT_RENDER_MAX_WIDTH or the boxes need
  * more faces than FXRT_RENDER_BOX_FACES. */
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
+
+/* A pixel's key: the nearest object's scene id and the set of lights that
+ * reach its hit point (bit i for light i; core/shade.c), id << 8 | mask.
+ * A pixel that shows the background has RENDER_KEY_MISS. Two neighbouring
+ * pixels with different keys mark a discontinuity (silhouette, shadow
+ * edge, spot-cone edge, terminator): host/compare.c. */
+#define RENDER_KEY_MISS 0xFFFF00u
+static inline uint32_t render_key(uint16_t id, uint8_t mask) { return (uint32_t)id << 8 | mask; }
 
 /* Render output row `row` (0 = top) into rgb in the FXRT_PIXEL format:
  * RGB888, 3 * width bytes; RGB565, width uint16_t values in native byte

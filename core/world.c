@@ -17,6 +17,11 @@ void world_init(world_t *w, color_t background)
 #if FXRT_MAX_BOXES > 0
     w->n_boxes = 0;
 #endif
+#if FXRT_MAX_LIGHTS > 0
+    w->ambient = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    w->n_lights = 0;
+    w->n_lit = 0;
+#endif
 }
 
 uint16_t world_count(const world_t *w)
@@ -156,4 +161,151 @@ bool world_hit(const world_t *w, const ray_t *ray, hit_t *hit)
     if (found)
         hit->point = ray_at(ray, hit->t);
     return found;
+}
+
+const geom_common_t *world_common(const world_t *w, geom_kind_t kind, uint16_t index)
+{
+    switch (kind) {
+#if FXRT_MAX_PLANES > 0
+    case GEOM_PLANE: return &w->planes[index].obj;
+#endif
+#if FXRT_MAX_SPHERES > 0
+    case GEOM_SPHERE: return &w->spheres[index].obj;
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    case GEOM_TRIANGLE: return &w->triangles[index].obj;
+#endif
+#if FXRT_MAX_BOXES > 0
+    case GEOM_BOX: return &w->boxes[index].obj;
+#endif
+    default: break;
+    }
+    return 0;
+}
+
+bool world_find(const world_t *w, uint16_t id, geom_kind_t *kind, uint16_t *index)
+{
+    static const geom_kind_t kinds[4] = {GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX};
+    uint16_t counts[4] = {0, 0, 0, 0};
+#if FXRT_MAX_PLANES > 0
+    counts[0] = w->n_planes;
+#endif
+#if FXRT_MAX_SPHERES > 0
+    counts[1] = w->n_spheres;
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    counts[2] = w->n_triangles;
+#endif
+#if FXRT_MAX_BOXES > 0
+    counts[3] = w->n_boxes;
+#endif
+    /* Ids are assigned in order of addition across kinds, so search each
+     * kind's array (ids within a kind increase). */
+    for (int k = 0; k < 4; k++)
+        for (uint16_t i = 0; i < counts[k]; i++)
+            if (world_common(w, kinds[k], i)->id == id) {
+                *kind = kinds[k];
+                *index = i;
+                return true;
+            }
+    return false;
+}
+
+fxrt_err_t light_check_fraction(color_t c)
+{
+    /* A fraction colour is a colour with NUM_ONE as full intensity. */
+    if (!(c.r >= NUM_ZERO && c.r <= NUM_ONE && c.g >= NUM_ZERO && c.g <= NUM_ONE && c.b >= NUM_ZERO &&
+          c.b <= NUM_ONE))
+        return FXRT_ERR_COLOR;
+    return geom_check_color(c);
+}
+
+fxrt_err_t world_set_ambient(world_t *w, color_t ambient)
+{
+    fxrt_err_t e = light_check_fraction(ambient);
+    if (e != FXRT_OK)
+        return e;
+#if FXRT_MAX_LIGHTS > 0
+    w->ambient = ambient;
+    return FXRT_OK;
+#else
+    (void)w;
+    return ambient.r == NUM_ZERO && ambient.g == NUM_ZERO && ambient.b == NUM_ZERO ? FXRT_OK : FXRT_ERR_MATERIAL;
+#endif
+}
+
+fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
+{
+    geom_kind_t kind;
+    uint16_t index;
+    if (id < 0 || id > 0xFFFF || !world_find(w, (uint16_t)id, &kind, &index))
+        return FXRT_ERR_ID;
+    if (m->kind == MATERIAL_FLAT)
+        ; /* always possible */
+    else if (m->kind == MATERIAL_LAMBERT)
+        ;
+    else if (m->kind == MATERIAL_PHONG) {
+        if (!FXRT_PHONG || m->exponent < 1 || m->exponent > FXRT_PHONG_MAX_EXPONENT)
+            return FXRT_ERR_MATERIAL;
+        fxrt_err_t e = light_check_fraction(m->specular);
+        if (e != FXRT_OK)
+            return e;
+    } else
+        return FXRT_ERR_MATERIAL;
+#if FXRT_MAX_LIGHTS > 0
+    geom_common_t *c = (geom_common_t *)world_common(w, kind, index);
+    bool was = c->mat.kind != MATERIAL_FLAT, is = m->kind != MATERIAL_FLAT;
+    c->mat = *m;
+    if (m->kind != MATERIAL_PHONG) {
+        c->mat.exponent = 0;
+        c->mat.specular = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    }
+    w->n_lit = (uint16_t)(w->n_lit + is - was);
+    return FXRT_OK;
+#else
+    return m->kind == MATERIAL_FLAT ? FXRT_OK : FXRT_ERR_MATERIAL;
+#endif
+}
+
+int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t direction, num_t angle_deg,
+                        color_t color, bool shadows)
+{
+    if (kind != LIGHT_POINT && kind != LIGHT_DIRECTIONAL && kind != LIGHT_SPOT)
+        return FXRT_ERR_LIGHT;
+    fxrt_err_t e = FXRT_OK;
+    if (kind != LIGHT_DIRECTIONAL)
+        e = geom_check_point(position);
+    if (e == FXRT_OK && kind != LIGHT_POINT)
+        e = geom_check_dir(direction);
+    if (e == FXRT_OK && kind == LIGHT_SPOT && !(angle_deg > NUM_ZERO && angle_deg <= num_from_int(90)))
+        e = FXRT_ERR_ANGLE;
+    if (e == FXRT_OK)
+        e = light_check_fraction(color);
+    if (e != FXRT_OK)
+        return e;
+#if FXRT_MAX_LIGHTS > 0
+    if (w->n_lights >= FXRT_MAX_LIGHTS)
+        return FXRT_ERR_FULL;
+    light_t *l = &w->lights[w->n_lights];
+    l->kind = (uint8_t)kind;
+    l->shadows = shadows;
+    l->position = kind == LIGHT_DIRECTIONAL ? vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : position;
+    l->dir = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    l->cos_angle = NUM_ZERO;
+    l->color = color;
+    if (kind != LIGHT_POINT) {
+        /* The direction is normalised once, here: a directional light's l
+         * (towards the light) is -direction / |direction| at every pixel. */
+        vec3_t d = kind == LIGHT_DIRECTIONAL ? vec3_neg(direction) : direction;
+        if (!vec3_normalize(&d))
+            return FXRT_ERR_DIRECTION;
+        l->dir = d;
+    }
+    if (kind == LIGHT_SPOT)
+        l->cos_angle = num_cos_deg(angle_deg);
+    return w->n_lights++;
+#else
+    (void)w, (void)shadows;
+    return FXRT_ERR_FULL;
+#endif
 }

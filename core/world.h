@@ -5,6 +5,7 @@
 #define FXRT_WORLD_H
 
 #include "geom.h"
+#include "light.h"
 
 typedef struct {
     color_t background;
@@ -25,6 +26,12 @@ typedef struct {
     uint16_t n_boxes;
     geom_box_t boxes[FXRT_MAX_BOXES];
 #endif
+#if FXRT_MAX_LIGHTS > 0
+    color_t ambient;  /* c_a, fractions 0..1 (default 0) */
+    uint8_t n_lights;
+    uint16_t n_lit;   /* objects whose material is not flat */
+    light_t lights[FXRT_MAX_LIGHTS];
+#endif
 } world_t;
 
 /* The nearest hit of a ray: what shading needs. */
@@ -35,6 +42,13 @@ typedef struct {
     uint16_t index;             /* its index there */
     const geom_common_t *obj;   /* its colour and scene id */
 } hit_t;
+
+/* The object with scene id `id`: its kind and index in that kind's array.
+ * Returns false when there is none. */
+bool world_find(const world_t *w, uint16_t id, geom_kind_t *kind, uint16_t *index);
+
+/* The shared part (colour, id, material) of object `index` of `kind`. */
+const geom_common_t *world_common(const world_t *w, geom_kind_t kind, uint16_t index);
 
 /* Empty world with a background colour. (Applications use
  * fxrt_world_init from fxrt.h, which also checks the colour and that the
@@ -54,8 +68,36 @@ int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color)
 int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t color);
 int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color);
 
+/* Lighting (FXRT_MAX_LIGHTS > 0; with 0 these refuse everything:
+ * FXRT_ERR_FULL for lights, FXRT_ERR_MATERIAL for a material other than
+ * flat, and world_set_ambient accepts only black).
+ *
+ * world_set_ambient: the ambient colour c_a (fractions). FXRT_OK or
+ * FXRT_ERR_COLOR.
+ * world_set_material: the material of object `id` (default flat). FXRT_OK,
+ * FXRT_ERR_ID, FXRT_ERR_MATERIAL (unknown kind, a phong exponent outside
+ * 1..FXRT_PHONG_MAX_EXPONENT, or phong with FXRT_PHONG 0) or
+ * FXRT_ERR_COLOR (specular).
+ * world_add_light: a light, checked: position inside the domain
+ * (FXRT_ERR_COORD), a nonzero direction (FXRT_ERR_DIRECTION), a spot
+ * half-angle in (0, 90] degrees (FXRT_ERR_ANGLE), colour fractions
+ * (FXRT_ERR_COLOR), kind (FXRT_ERR_LIGHT), room (FXRT_ERR_FULL). Returns
+ * the light's index (0..7, its bit in a pixel's key) or a negative
+ * fxrt_err_t; a refused light leaves the world unchanged. Unused fields
+ * (direction of a point light, ...) are ignored. */
+fxrt_err_t world_set_ambient(world_t *w, color_t ambient);
+fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m);
+int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t direction, num_t angle_deg,
+                        color_t color, bool shadows);
+
 /* Nearest object with t > 0 along the ray. Ties in t go to the object that
  * came first in the scene (lower id). Returns false on a miss. */
 bool world_hit(const world_t *w, const ray_t *ray, hit_t *hit);
+
+/* Shadow rays: true when some object is hit along the ray with
+ * 0 < t < tmax (any t > 0 when tmax is NUM_MAX), stopping at the first
+ * such hit (any-hit, not nearest). Object `skip_id` is not tested (the
+ * surface the ray starts on; core/shadow.c has the self-shadowing rule). */
+bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id);
 
 #endif

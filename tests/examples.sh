@@ -72,10 +72,10 @@ else
     ok
 fi
 sed 's/^/  link: /' "$mm/link.log" | grep -m2 fxrt_config
-check "the link error names the application's configuration (fxrt_config_n1_p1_s8_t1_b1_w64_px1)" \
-    grep -q "fxrt_config_n1_p1_s8_t1_b1_w64_px1" "$mm/link.log"
-check "the core defines its own (fxrt_config_n1_p1_s2_t1_b1_w64_px1)" \
-    bash -c "nm '$BUILD/examples/host/core/fxrt.o' | grep -q ' R fxrt_config_n1_p1_s2_t1_b1_w64_px1$'"
+check "the link error names the application's configuration (fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8)" \
+    grep -q "fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8" "$mm/link.log"
+check "the core defines its own (fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8)" \
+    bash -c "nm '$BUILD/examples/host/core/fxrt.o' | grep -q ' R fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8$'"
 # And the matching build links (the check above is not a link that always fails).
 $CC -std=c11 -O2 $(sed 's/SPHERES=8/SPHERES=2/' <<<"$CFG_APP") -Icore -c examples/orbit.c -o "$mm/orbit-ok.o"
 check "the same files with matching macros link" $CC -o "$mm/orbit-ok" "$mm/orbit-ok.o" "$mm/io_host.o" $core

@@ -1,0 +1,32 @@
+/* light: the lights of a world (core/shade.c applies them).
+ *
+ * A light's colour, like the ambient colour and a material's specular
+ * colour, is a fraction per channel: NUM_ONE is full intensity (a scaling
+ * factor, not a colour in 1/255 units; color.h). Lights have no distance
+ * attenuation. */
+#ifndef FXRT_LIGHT_H
+#define FXRT_LIGHT_H
+
+#include "geom.h"
+
+typedef enum { LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_SPOT } light_kind_t;
+
+typedef struct {
+    uint8_t kind;    /* light_kind_t */
+    bool shadows;    /* cast shadow rays (FXRT_SHADOWS 1 only) */
+    vec3_t position; /* point and spot: where it is */
+    vec3_t dir;      /* directional: unit vector towards the light,
+                      * -direction / |direction|, computed once (no
+                      * per-pixel normalisation); spot: the unit cone
+                      * axis s = direction / |direction| */
+    num_t cos_angle; /* spot: cos(half-angle), computed once; a point p is
+                      * in the cone when (-l) . s >= cos_angle */
+    color_t color;   /* fractions 0..1 */
+} light_t;
+
+/* A fraction colour (light, ambient, specular): each channel in 0..1 (NaN
+ * fails): FXRT_OK or FXRT_ERR_COLOR (FXRT_ERR_TINY for a nonzero channel
+ * below 2^-16 in float and double, as geom_check_color). */
+fxrt_err_t light_check_fraction(color_t c);
+
+#endif
