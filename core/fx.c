@@ -435,9 +435,9 @@ static inline uint32_t fx_mul_q31(uint32_t a, uint32_t b)
     return (uint32_t)(fx_umul32(a, b) >> 31);
 }
 
-/* sin (want_cos false) or cos (want_cos true) of r degrees in Q16.16,
- * 0 <= r <= 45 degrees, as Q16.16 in [0, 1]. */
-static fx_t fx_sincos45(uint32_t r, bool want_cos)
+/* sin (want_cos false) or cos (want_cos true) of r degrees (Q16.16),
+ * 0 <= r <= 45 degrees, as Q1.31 in [0, 1], within 1e-8. */
+static uint32_t fx_sincos45_q31(uint32_t r, bool want_cos)
 {
     /* x = r pi/180 in Q31 = r * round(pi/180 2^37) / 2^22, r < 2^22. */
     uint32_t x = (uint32_t)(fx_umul32(r, 2398762259u) >> 22);
@@ -457,6 +457,13 @@ static fx_t fx_sincos45(uint32_t r, bool want_cos)
         v = 357913941u - fx_mul_q31(u, v);
         v = fx_mul_q31(x, FX_Q31_ONE - fx_mul_q31(u, v));
     }
+    return v;
+}
+
+/* The same as Q16.16. */
+static fx_t fx_sincos45(uint32_t r, bool want_cos)
+{
+    uint32_t v = fx_sincos45_q31(r, want_cos);
     v = (v + (1u << 14)) >> 15; /* Q31 -> Q16, ties toward +infinity */
     return v > (uint32_t)FX_ONE ? FX_ONE : (fx_t)v; /* a guard: the bound keeps v <= 1 */
 }
@@ -499,6 +506,47 @@ fx_t fx_sin_deg(fx_t deg)
 fx_t fx_cos_deg(fx_t deg)
 {
     return fx_sin_quarter(deg, 1);
+}
+
+int32_t fx_cos_deg_q30(fx_t deg)
+{
+    if (deg <= 0)
+        return (int32_t)1 << 30;
+    if ((uint32_t)deg >= FX_DEG90)
+        return 0;
+    uint32_t a = (uint32_t)deg;
+    uint32_t v = a > FX_DEG45 ? fx_sincos45_q31(FX_DEG90 - a, false) : fx_sincos45_q31(a, true);
+    return (int32_t)((v + 1u) >> 1);
+}
+
+bool fx_unit30(const fx_t v[3], int32_t out[3])
+{
+    uint32_t m = 0;
+    for (int i = 0; i < 3; i++)
+        m |= v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
+    if (m == 0)
+        return false;
+    /* Scale the largest magnitude into [2^29, 2^30): the root of the
+     * squared length then has at least 29 bits. */
+    int sh = 0;
+    while ((m << sh) < ((uint32_t)1 << 29))
+        sh++;
+    int shr = 0;
+    while ((m >> shr) >= ((uint32_t)1 << 30))
+        shr++;
+    int64_t w[3];
+    uint64_t len2 = 0;
+    for (int i = 0; i < 3; i++) {
+        w[i] = shr ? (int64_t)v[i] / ((int64_t)1 << shr) : (int64_t)v[i] * ((int64_t)1 << sh);
+        len2 += (uint64_t)(w[i] * w[i]); /* < 3 * 2^60 */
+    }
+    uint64_t r = fx_isqrt64(len2); /* >= 2^29 */
+    for (int i = 0; i < 3; i++) {
+        uint64_t mag = (uint64_t)(w[i] < 0 ? -w[i] : w[i]) << 30; /* < 2^60 */
+        uint64_t q = (mag + r / 2) / r;
+        out[i] = w[i] < 0 ? -(int32_t)q : (int32_t)q;
+    }
+    return true;
 }
 
 bool fx_normalize3(fx_t v[3])

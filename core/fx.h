@@ -224,6 +224,14 @@ fx_t fx_cot_deg(fx_t deg);
 fx_t fx_sin_deg(fx_t deg);
 fx_t fx_cos_deg(fx_t deg);
 
+/* cos(deg degrees) for deg in [0, 90] (clamped) in Q2.30, within 2^-30 +
+ * 1e-8: the spot light's cone test, which needs more than Q16.16. */
+int32_t fx_cos_deg_q30(fx_t deg);
+
+/* v / |v| in Q2.30 (each component within ~2^-29), or false for the zero
+ * vector. Set-up only: a 64-bit division per component. */
+bool fx_unit30(const fx_t v[3], int32_t out[3]);
+
 /* A signed 128-bit integer for exact set-up arithmetic on 32-bit targets
  * (which have no __int128): two's complement, hi:lo. */
 typedef struct {

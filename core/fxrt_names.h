@@ -48,6 +48,7 @@
 #define geom_box_hit_face FXRT_SYM(geom_box_hit_face)
 #define shade_color FXRT_SYM(shade_color)
 #define shade_object FXRT_SYM(shade_object)
+#define shade_point FXRT_SYM(shade_point)
 #define shadow_blocked FXRT_SYM(shadow_blocked)
 #define world_occluded FXRT_SYM(world_occluded)
 #define world_find FXRT_SYM(world_find)

@@ -118,6 +118,12 @@ __attribute__((unused)) static bool geom_flat_t(vec3_t a, vec3_t n, const ray_t 
     return true;
 }
 
+/* The plane's t for any ray (no side or sign test): shading's hit point
+ * on a flat piece the renderer found the ray to cover. */
+__attribute__((unused)) static num_t geom_flat_surface_t(vec3_t a, vec3_t n, const ray_t *ray)
+{
+    return numw_div(vec3_dotw(vec3_sub(a, ray->o), n), vec3_dotw(ray->d, n));
+}
 
 #if FXRT_MAX_PLANES > 0
 bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id)
@@ -131,6 +137,12 @@ bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color
 bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t)
 {
     return geom_flat_t(p->a, p->n, ray, t);
+}
+
+void geom_plane_surface(const geom_plane_t *p, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    *t = geom_flat_surface_t(p->a, p->n, ray);
+    *n = p->n;
 }
 #endif
 
@@ -168,6 +180,29 @@ bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
         return true;
     }
     return false;
+}
+
+void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    /* As geom_sphere_hit, with the discriminant clamped at 0 (the tangent
+     * point for a ray that just misses). The normal (p - c) / r is formed
+     * as p - c = -q -+ h d, the offset of the hit from the centre without
+     * subtracting two large coordinates (o + t d - c cancels for a far
+     * sphere), and normalised: on the sphere |p - c| = r, so this is
+     * (p - c) / r, with the rounding of p kept out of the direction. */
+    vec3_t oc = vec3_sub(s->center, ray->o);
+    num_t b = vec3_dot(oc, ray->d);
+    vec3_t q = vec3_sub(oc, vec3_scale(ray->d, b));
+    numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
+    num_t h = disc > 0 ? numw_sqrt(disc) : NUM_ZERO;
+    num_t t0 = num_sub(b, h);
+    bool near = t0 > NUM_ZERO;
+    *t = near ? t0 : num_add(b, h);
+    vec3_t hd = vec3_scale(ray->d, h);
+    vec3_t v = near ? vec3_sub(vec3_neg(q), hd) : vec3_add(vec3_neg(q), hd);
+    if (!vec3_normalize(&v))
+        v = vec3_neg(ray->d); /* radius below 1 LSB: face the ray */
+    *n = v;
 }
 #endif
 
@@ -210,6 +245,12 @@ bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
         return false;
     return geom_flat_t(tr->a, tr->n, ray, t);
 }
+
+void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    *t = geom_flat_surface_t(tr->a, tr->n, ray);
+    *n = tr->n;
+}
 #endif
 
 #if FXRT_MAX_BOXES > 0
@@ -221,34 +262,87 @@ bool geom_box_make(geom_box_t *b, vec3_t min, vec3_t max, color_t color, uint16_
     return geom_box_check(min, max, color) == FXRT_OK;
 }
 
-bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t)
+/* Slabs: the ray is inside the box for t in [tnear, tfar], entering
+ * through face fnear and leaving through ffar (axis * 2 + 1 for the max
+ * side). A direction component of zero cannot divide: the ray is then
+ * inside that slab for all t or for none (*outside: it misses). Near-zero
+ * components saturate the quotients to +-NUM_MAX, which orders correctly. */
+static void geom_box_slabs(const geom_box_t *b, const ray_t *ray, num_t *tnear_out, num_t *tfar_out,
+                           uint8_t *fnear, uint8_t *ffar, bool *outside)
 {
-    /* Slabs: the ray is inside the box for t in [tnear, tfar]. A direction
-     * component of zero cannot divide: the ray is then inside that slab for
-     * all t or for none. Near-zero components saturate the quotients to
-     * +-NUM_MAX, which orders correctly. */
     num_t tnear = num_neg(NUM_MAX), tfar = NUM_MAX;
+    uint8_t fn = 0, ff = 0;
+    *outside = false;
     for (int i = 0; i < 3; i++) {
         num_t o = geom_axis(ray->o, i), d = geom_axis(ray->d, i);
         num_t lo = geom_axis(b->min, i), hi = geom_axis(b->max, i);
         if (d == NUM_ZERO) {
             if (o < lo || o > hi)
-                return false;
+                *outside = true;
             continue;
         }
         num_t t1 = num_div(num_sub(lo, o), d);
         num_t t2 = num_div(num_sub(hi, o), d);
+        uint8_t f1 = (uint8_t)(2 * i), f2 = (uint8_t)(2 * i + 1);
         if (t1 > t2) {
             num_t tmp = t1;
             t1 = t2;
             t2 = tmp;
+            f1 = (uint8_t)(2 * i + 1);
+            f2 = (uint8_t)(2 * i);
         }
-        tnear = num_max(tnear, t1);
-        tfar = num_min(tfar, t2);
+        if (t1 > tnear) {
+            tnear = t1;
+            fn = f1;
+        }
+        if (t2 < tfar) {
+            tfar = t2;
+            ff = f2;
+        }
     }
-    if (tnear > tfar || !(tfar > NUM_ZERO))
+    *tnear_out = tnear;
+    *tfar_out = tfar;
+    *fnear = fn;
+    *ffar = ff;
+}
+
+bool geom_box_hit_face(const geom_box_t *b, const ray_t *ray, num_t *t, uint8_t *face)
+{
+    num_t tnear, tfar;
+    uint8_t fn, ff;
+    bool outside;
+    geom_box_slabs(b, ray, &tnear, &tfar, &fn, &ff, &outside);
+    if (outside || tnear > tfar || !(tfar > NUM_ZERO))
         return false;
-    *t = tnear > NUM_ZERO ? tnear : tfar; /* tnear <= 0: origin inside */
+    bool in = !(tnear > NUM_ZERO); /* tnear <= 0: origin inside */
+    *t = in ? tfar : tnear;
+    *face = in ? ff : fn;
     return true;
+}
+
+bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t)
+{
+    uint8_t face;
+    return geom_box_hit_face(b, ray, t, &face);
+}
+
+/* The outward unit normal of face f (axis f / 2, max side when f is odd). */
+static vec3_t geom_box_normal(uint8_t f)
+{
+    num_t s = (f & 1) ? NUM_ONE : num_neg(NUM_ONE);
+    return vec3_make(f / 2 == 0 ? s : NUM_ZERO, f / 2 == 1 ? s : NUM_ZERO, f / 2 == 2 ? s : NUM_ZERO);
+}
+
+void geom_box_surface(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    num_t tnear, tfar;
+    uint8_t fn, ff;
+    bool outside;
+    geom_box_slabs(b, ray, &tnear, &tfar, &fn, &ff, &outside);
+    /* A ray that just misses still takes its entry face; a ray from inside
+     * leaves through the far face. */
+    bool in = !outside && !(tnear > NUM_ZERO) && tfar > NUM_ZERO;
+    *t = in ? tfar : tnear;
+    *n = geom_box_normal(in ? ff : fn);
 }
 #endif

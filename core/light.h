@@ -22,6 +22,12 @@ typedef struct {
     num_t cos_angle; /* spot: cos(half-angle), computed once; a point p is
                       * in the cone when (-l) . s >= cos_angle */
     color_t color;   /* fractions 0..1 */
+#if FXRT_NUMBER == FXRT_Q16
+    /* Spot, Q16.16 build: the cone test (-v) . s >= cos(angle) |v| with s
+     * and cos(angle) in Q2.30, so that their rounding (0.5 LSB of Q16.16
+     * is 0.3 pixel-widths of bias on a typical cone edge) stays out of it. */
+    int32_t axis30[3], cos30;
+#endif
 } light_t;
 
 /* A fraction colour (light, ambient, specular): each channel in 0..1 (NaN

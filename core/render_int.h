@@ -6,6 +6,7 @@
  *                   a column, depth ranges and per-row order against planes
  *   render_row.c    the scanlines: stepping, spans, painting in the pixel
  *                   format (render_row, render_row_reference)
+ *   render_shade.c  the shading pass: lit pixels and keys (render_shade_row)
  */
 #ifndef FXRT_RENDER_INT_H
 #define FXRT_RENDER_INT_H
@@ -38,6 +39,16 @@ static inline const render_lin_t *render_edge_k(const render_flat_t *f, int k)
 {
     return k < 3 ? &f->e[k] : &((const render_face_t *)(const void *)f)->e4;
 }
+
+/* The shading pass (FXRT_MAX_LIGHTS > 0): the visibility pass records in
+ * r->vis which object it painted last in each column when render_tracks
+ * says so (some object is lit, or keys are wanted); render_shade_row then
+ * shades those columns. */
+#define RENDER_VIS_NONE 0xFFFFu
+#if FXRT_MAX_LIGHTS > 0
+static inline bool render_tracks(const render_t *r) { return r->any_lit || r->keys; }
+#endif
+void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
 
 static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTHOGRAPHIC; }
 

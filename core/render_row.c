@@ -1,6 +1,7 @@
 /* render_row: the scanline loops (fast and reference), spans and the
  * pixel format. See render.h for the method. */
 #include "render_int.h"
+#include "shade.h"
 
 /* Claim column x for object oi: free columns are taken at once, a column
  * owned by another object goes to the nearer (RESOLVE, which may use cur_),
@@ -18,13 +19,19 @@
 /* Paint column x in object oi's colour (the row's pixel format). */
 #if FXRT_PIXEL == FXRT_RGB565
 typedef uint16_t __attribute__((may_alias)) render_px16_t;
-static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
+static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
+#if FXRT_MAX_LIGHTS > 0
+    r->vis[x] = oi;
+#endif
     ((render_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
 }
 #else
-static inline void render_paint(const render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
+static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
+#if FXRT_MAX_LIGHTS > 0
+    r->vis[x] = oi;
+#endif
     rgb8_t c = r->obj[oi].rgb;
     rgb[3 * x + 0] = c.r;
     rgb[3 * x + 1] = c.g;
@@ -54,6 +61,11 @@ static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t iy,
  * background in every pixel, with word stores where the row is aligned. */
 static void render_begin_row(render_t *r, uint8_t *rgb)
 {
+#if FXRT_MAX_LIGHTS > 0
+    if (render_tracks(r))
+        for (int32_t x = 0; x < r->cam->width; x++)
+            r->vis[x] = RENDER_VIS_NONE;
+#endif
     if (++r->stamp == RENDER_STAMP_LIMIT) {
         for (int32_t x = 0; x < r->cam->width; x++)
             r->owner[x] = 0;
@@ -115,6 +127,10 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
                 render_cover(r, i, x, iy, rgb);
         }
     }
+#if FXRT_MAX_LIGHTS > 0
+    if (render_tracks(r))
+        render_shade_row(r, row, rgb);
+#endif
 }
 
 /* ---- the fast loop ------------------------------------------------------ */
@@ -124,10 +140,14 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
 /* Fill columns xa..xb with object oi's colour, with word stores where the
  * row is aligned (RGB888: three words per four pixels; RGB565: one word
  * per two). */
-RENDER_MAYBE_UNUSED static void render_fill(const render_t *r, uint16_t oi, int32_t xa, int32_t xb, uint8_t *rgb)
+RENDER_MAYBE_UNUSED static void render_fill(render_t *r, uint16_t oi, int32_t xa, int32_t xb, uint8_t *rgb)
 {
     typedef uint32_t __attribute__((may_alias)) word_t;
     int32_t x = xa;
+#if FXRT_MAX_LIGHTS > 0
+    for (int32_t k = xa; k <= xb; k++)
+        r->vis[k] = oi;
+#endif
 #if FXRT_PIXEL == FXRT_RGB565
     if (((uintptr_t)rgb & 3u) == 0) {
         for (; x <= xb && (x & 1); x++)
@@ -637,6 +657,10 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         r->dirty_lo = x0 < dlo ? x0 : dlo;
         r->dirty_hi = x1 > dhi ? x1 : dhi;
     }
+#if FXRT_MAX_LIGHTS > 0
+    if (render_tracks(r))
+        render_shade_row(r, row, rgb);
+#endif
 }
 
 /* ---- arbitrary rays ------------------------------------------------------ */
@@ -644,8 +668,12 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
 rgb8_t render_pixel(const world_t *w, const ray_t *ray)
 {
     hit_t hit;
-    if (world_hit(w, ray, &hit))
-        return hit.obj->rgb;
-    return w->background_rgb;
+    if (!world_hit(w, ray, &hit))
+        return w->background_rgb;
+#if FXRT_MAX_LIGHTS > 0
+    if (hit.obj->mat.kind != MATERIAL_FLAT)
+        return color_to_rgb8(shade_object(w, hit.kind, hit.index, ray, NULL));
+#endif
+    return hit.obj->rgb;
 }
 

@@ -693,6 +693,10 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     r->cam = cam;
     r->count = 0;
     r->row_win = 0;
+    r->keys = NULL;
+#if FXRT_MAX_LIGHTS > 0
+    r->any_lit = w->n_lit > 0;
+#endif
 #if FXRT_MAX_PLANES > 0
     r->nplanes = w->n_planes;
 #else

@@ -301,8 +301,14 @@ int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t d
             return FXRT_ERR_DIRECTION;
         l->dir = d;
     }
-    if (kind == LIGHT_SPOT)
+    if (kind == LIGHT_SPOT) {
         l->cos_angle = num_cos_deg(angle_deg);
+#if FXRT_NUMBER == FXRT_Q16
+        fx_t s[3] = {direction.x, direction.y, direction.z};
+        fx_unit30(s, l->axis30);
+        l->cos30 = fx_cos_deg_q30(angle_deg);
+#endif
+    }
     return w->n_lights++;
 #else
     (void)w, (void)shadows;

@@ -1,0 +1,54 @@
+/* shade: the lighting model, per hit point (issue 11; docs/ACCURACY.md
+ * "Shading" has its error bound).
+ *
+ * With hit point p, unit normal n turned towards the incoming ray (surfaces
+ * are two-sided), e = -d towards the eye, surface colour c_d (1/255 units),
+ * ambient c_a, and for each light its colour c_l and the unit vector l from
+ * p towards it:
+ *   flat     c = c_d (lights ignored)
+ *   lambert  c = c_d (.) c_a + sum over lights that reach p of
+ *                c_d (.) c_l * (n . l)
+ *   phong    lambert + sum over the same lights of
+ *                c_s (.) c_l * max(0, r . e)^k,   r = 2 (n . l) n - l
+ * A light reaches p when n . l > 0, p is inside its cone (spot: (-l) . s >=
+ * cos(angle), cosines compared, no acos) and, for a light with shadows on,
+ * no object is hit along the ray from p towards it with 0 < t < distance
+ * (any t > 0 for a directional light; core/shadow.c). Each channel is
+ * summed unclamped; color_to_rgb8 clamps and rounds. No distance
+ * attenuation. The double build is the reference: this code, in doubles.
+ */
+#ifndef FXRT_SHADE_H
+#define FXRT_SHADE_H
+
+#include <stddef.h>
+
+#include "world.h"
+
+/* The colour (1/255 units, unclamped) of object `index` of `kind` seen
+ * along `ray`, which the caller has found to meet it (the renderer's
+ * visibility pass, or world_hit): the hit point and normal come from the
+ * object's geom_<kind>_surface, the light sum from shade_point. When mask
+ * is not NULL it receives the lights that reach the hit point (bit i for
+ * light i), also for a flat material; without it a flat object costs
+ * nothing but its colour. */
+color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask);
+
+/* The light sum at hit point p of object (kind, index) with geometric unit
+ * normal n_geo (not yet turned) for a ray of unit direction d. */
+color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                    uint8_t *mask);
+
+/* Shadow ray (FXRT_SHADOWS 1): is light `l`, in unit direction ldir at
+ * distance dist (NUM_MAX for a directional light) from p, blocked? p lies
+ * on object (kind, index), seen from its back (inside) or front.
+ * Self-shadowing policy (no offset, no epsilon): every primitive is
+ * convex, so a ray leaving its surface towards the side the normal faces
+ * never meets it again, except a solid (sphere, box) seen from inside,
+ * where the ray crosses the interior and leaves it: that object then
+ * blocks the light exactly when the light is outside it (always for a
+ * directional light). Every other object is tested with the world-space
+ * kernels, t limited to (0, dist), stopping at the first hit. */
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, vec3_t p, const light_t *l,
+                    vec3_t ldir, num_t dist);
+
+#endif

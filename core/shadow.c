@@ -1,0 +1,66 @@
+/* shadow: shadow rays (see shade.h for the self-shadowing policy). */
+#include "shade.h"
+
+#if FXRT_MAX_LIGHTS > 0 && FXRT_SHADOWS
+
+/* Is the light's position strictly inside solid (kind, index)? */
+static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t index, const light_t *l)
+{
+    if (l->kind == LIGHT_DIRECTIONAL)
+        return false; /* at infinity */
+#if FXRT_MAX_SPHERES > 0
+    if (kind == GEOM_SPHERE) {
+        const geom_sphere_t *s = &w->spheres[index];
+        vec3_t v = vec3_sub(l->position, s->center);
+        return vec3_dotw(v, v) < s->radius2;
+    }
+#endif
+#if FXRT_MAX_BOXES > 0
+    if (kind == GEOM_BOX) {
+        const geom_box_t *b = &w->boxes[index];
+        vec3_t q = l->position;
+        return q.x > b->min.x && q.x < b->max.x && q.y > b->min.y && q.y < b->max.y && q.z > b->min.z &&
+               q.z < b->max.z;
+    }
+#endif
+    (void)w, (void)index;
+    return false;
+}
+
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, vec3_t p, const light_t *l,
+                    vec3_t ldir, num_t dist)
+{
+    bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
+    if (inside && solid && !shadow_light_inside(w, kind, index, l))
+        return true;
+    ray_t ray = {p, ldir};
+    return world_occluded(w, &ray, dist, world_common(w, kind, index)->id);
+}
+
+bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
+{
+    num_t t;
+#if FXRT_MAX_PLANES > 0
+    for (uint16_t i = 0; i < w->n_planes; i++)
+        if (w->planes[i].obj.id != skip_id && geom_plane_hit(&w->planes[i], ray, &t) && t < tmax)
+            return true;
+#endif
+#if FXRT_MAX_SPHERES > 0
+    for (uint16_t i = 0; i < w->n_spheres; i++)
+        if (w->spheres[i].obj.id != skip_id && geom_sphere_hit(&w->spheres[i], ray, &t) && t < tmax)
+            return true;
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    for (uint16_t i = 0; i < w->n_triangles; i++)
+        if (w->triangles[i].obj.id != skip_id && geom_triangle_hit(&w->triangles[i], ray, &t) && t < tmax)
+            return true;
+#endif
+#if FXRT_MAX_BOXES > 0
+    for (uint16_t i = 0; i < w->n_boxes; i++)
+        if (w->boxes[i].obj.id != skip_id && geom_box_hit(&w->boxes[i], ray, &t) && t < tmax)
+            return true;
+#endif
+    return false;
+}
+
+#endif
