@@ -267,7 +267,7 @@ static int cmd_render(int argc, char **argv)
         return 2;
     }
     int rc = 0;
-    if (engine_render(num, scene_path, &scene, w, h, renderer, img.rgb, err, sizeof err) ||
+    if (engine_render(num, scene_path, &scene, w, h, renderer, img.rgb, NULL, err, sizeof err) ||
         image_write(out, &img, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         rc = 2;
