@@ -9,6 +9,8 @@
 #include "engine.h"
 #include "engine_build.h"
 
+_Static_assert(ENGINE_KEY_MISS == RENDER_KEY_MISS, "engine.h's ENGINE_KEY_MISS must be the core's RENDER_KEY_MISS");
+
 num_t ENGINE_SYM(engine_num)(double x)
 {
 #if FXRT_NUMBER == FXRT_Q16
