@@ -256,7 +256,9 @@ int compare_keys_image(const uint32_t *keys, int width, int height, uint32_t mis
         if (h == miss_key)
             continue; /* image_alloc zeroes: black */
         /* A 32-bit integer mix (murmur3's finaliser): every key bit moves
-         * every channel. */
+         * every channel. The offset keeps key 0 (the first object, no
+         * light) from mixing to 0, a dull grey. */
+        h += 0x9e3779b9u;
         h ^= h >> 16;
         h *= 0x85ebca6bu;
         h ^= h >> 13;
