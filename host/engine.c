@@ -9,6 +9,8 @@
 #include "engine.h"
 #include "engine_build.h"
 
+_Static_assert(ENGINE_KEY_MISS == RENDER_KEY_MISS, "engine.h's ENGINE_KEY_MISS must be the core's RENDER_KEY_MISS");
+
 num_t ENGINE_SYM(engine_num)(double x)
 {
 #if FXRT_NUMBER == FXRT_Q16
@@ -130,7 +132,8 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
 }
 
 int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, int height,
-                              engine_renderer_t renderer, uint8_t *rgb, char *err, size_t errlen)
+                              engine_renderer_t renderer, uint8_t *rgb, uint32_t *keys, char *err,
+                              size_t errlen)
 {
     /* Static: the host world and render state hold up to 64 objects of each
      * kind, too big for a stack frame. The CLI renders one frame at a time. */
@@ -145,11 +148,20 @@ int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, in
     }
     for (int row = 0; row < height; row++) {
         uint8_t *out = rgb + (size_t)3 * width * row;
+        /* The renderers write a key only where they paint an object (or
+         * not at all, the ray caster), so every row starts as background. */
+        state.keys = NULL;
+        if (keys != NULL) {
+            state.keys = keys + (size_t)width * row;
+            for (int x = 0; x < width; x++)
+                state.keys[x] = RENDER_KEY_MISS;
+        }
         switch (renderer) {
         case ENGINE_FAST: render_row(&state, row, out); break;
         case ENGINE_REFERENCE: render_row_reference(&state, row, out); break;
         case ENGINE_RAYCAST: raycast_row(&world, &cam, row, out, NULL); break;
         }
     }
+    state.keys = NULL; /* state outlives the caller's buffer */
     return 0;
 }

@@ -33,12 +33,12 @@ const char *engine_number_name(engine_number_t n)
 }
 
 int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height, engine_renderer_t renderer,
-                  uint8_t *rgb, char *err, size_t errlen)
+                  uint8_t *rgb, uint32_t *keys, char *err, size_t errlen)
 {
     switch (n) {
-    case ENGINE_Q16: return engine_render_q16(path, sc, width, height, renderer, rgb, err, errlen);
-    case ENGINE_FLOAT: return engine_render_float(path, sc, width, height, renderer, rgb, err, errlen);
-    case ENGINE_DOUBLE: return engine_render_double(path, sc, width, height, renderer, rgb, err, errlen);
+    case ENGINE_Q16: return engine_render_q16(path, sc, width, height, renderer, rgb, keys, err, errlen);
+    case ENGINE_FLOAT: return engine_render_float(path, sc, width, height, renderer, rgb, keys, err, errlen);
+    case ENGINE_DOUBLE: return engine_render_double(path, sc, width, height, renderer, rgb, keys, err, errlen);
     }
     return -1;
 }

@@ -30,9 +30,9 @@ static const char usage_main[] =
     "\n"
     "commands:\n"
     "  render SCENE [-o OUT.png|OUT.ppm] [--size WxH] [--number q16|float|double]\n"
-    "         [--renderer fast|reference|raycast]\n"
+    "         [--renderer fast|reference|raycast] [--keys KEYS.png]\n"
     "                 render a scene file\n"
-    "  compare A B [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
+    "  compare A B [--scene SCENE] [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
     "                 compare two images and print metrics\n"
     "  sheet -o OUT IMAGE[=LABEL]... [--no-labels]\n"
     "                 place labelled images of equal height side by side\n"
@@ -46,7 +46,7 @@ static const char usage_main[] =
 
 static const char usage_render[] =
     "usage: fxrt render SCENE [-o OUT] [--size WxH] [--number q16|float|double]\n"
-    "                         [--renderer fast|reference|raycast]\n"
+    "                         [--renderer fast|reference|raycast] [--keys KEYS]\n"
     "\n"
     "Render SCENE (see README: scene format) and write the image.\n"
     "\n"
@@ -63,29 +63,47 @@ static const char usage_render[] =
     "                     output is byte-identical, it only takes longer) or\n"
     "                     raycast (a camera ray and a nearest-hit search per\n"
     "                     pixel: the independent oracle and naive baseline)\n"
+    "  --keys KEYS        also write a picture of the pixels' keys (.png or .ppm):\n"
+    "                     one colour per key (object id and the set of lights\n"
+    "                     that reach the hit point), black for the background;\n"
+    "                     the ray caster writes no keys (all black)\n"
     "  -h, --help         this text\n"
     "Each option may be given once; '--' ends the options.\n"
     "Exit status: 0 written, 2 bad scene (FILE:LINE: message), unwritable output\n"
     "or bad arguments; nothing is written on failure.\n";
 
 static const char usage_compare[] =
-    "usage: fxrt compare A B [--diff DIFF.png] [--max-pct P] [--max-interior N]\n"
+    "usage: fxrt compare A B [--scene SCENE] [--diff DIFF.png] [--max-pct P]\n"
+    "                        [--max-interior N]\n"
     "\n"
     "Compare images A and B (PNG or PPM, same size) and print one line:\n"
     "  pixels= mismatched= mismatched_pct= max_err= psnr= edge_mismatched= interior_mismatched=\n"
+    "  within1_pct= within2_pct= near_pixels= far_pixels= far_within1_pct= far_within2_pct=\n"
+    "  far_max_err= near_max_err= near_within1_pct= near_within2_pct=\n"
     "A mismatch is a pixel whose RGB differs. It is interior when no pixel within\n"
     "1 px of it in A lies on an edge (a pixel of A whose 4-neighbour differs).\n"
+    "A pixel's error is its largest channel difference in units of 1/255;\n"
+    "withinK_pct is the share of pixels with error <= K (rounded down).\n"
+    "near/far: with --scene, a pixel is near a discontinuity when one of its 8\n"
+    "neighbours has another key (object, and lights reaching it) in the double\n"
+    "render of SCENE; far_* and near_* count each set (a share of no pixels is\n"
+    "100). Without --scene every pixel is far (near_pixels=0).\n"
     "\n"
+    "  --scene SCENE      render SCENE in double (fast renderer) at the images'\n"
+    "                     size for the key map; a bad SCENE is an error\n"
     "  --diff DIFF        write a heat map of the differences (.png or .ppm):\n"
-    "                     black = equal, dark red to white = small to large error;\n"
-    "                     for identical images it says 'identical'. DIFF must\n"
-    "                     not be A or B (same path or same file)\n"
+    "                     black = equal; pixel error 1 = dark red (128,0,0),\n"
+    "                     rising linearly to red at 6, yellow at 11 and white at\n"
+    "                     16 and above. With --scene, equal pixels near a\n"
+    "                     discontinuity are dark blue (0,0,72). For identical\n"
+    "                     images it says 'identical'. DIFF must not be A, B or\n"
+    "                     SCENE (same path or same file)\n"
     "  --max-pct P        exit 1 if mismatched_pct > P\n"
     "  --max-interior N   exit 1 if interior_mismatched > N\n"
     "  -h, --help         this text\n"
     "Each option may be given once; '--' ends the options.\n"
     "Exit status: 0 within thresholds, 1 threshold exceeded, 2 unreadable input,\n"
-    "size mismatch or bad arguments.\n";
+    "bad scene, size mismatch or bad arguments; nothing is written on error.\n";
 
 static const char usage_sheet[] =
     "usage: fxrt sheet -o OUT.png|OUT.ppm IMAGE[=LABEL]... [--no-labels]\n"
@@ -199,8 +217,8 @@ static void base_name(const char *path, char *out, size_t len)
 static int cmd_render(int argc, char **argv)
 {
     static const char cmd[] = "render";
-    const char *scene_path = NULL, *out = NULL;
-    const char *seen_out = NULL, *seen_size = NULL, *seen_number = NULL, *seen_renderer = NULL;
+    const char *scene_path = NULL, *out = NULL, *keys_path = NULL;
+    const char *seen_out = NULL, *seen_size = NULL, *seen_number = NULL, *seen_renderer = NULL, *seen_keys = NULL;
     int w = 0, h = 0;
     engine_number_t num = ENGINE_Q16;
     engine_renderer_t renderer = ENGINE_FAST;
@@ -231,6 +249,9 @@ static int cmd_render(int argc, char **argv)
                 return 2;
             if (engine_renderer_parse(v, &renderer))
                 return usage_error(cmd, "bad --renderer '%s' (want fast, reference or raycast)", v);
+        } else if (opts && !strcmp(a, "--keys")) {
+            if (!(keys_path = opt_value(cmd, argc, argv, &i, &seen_keys)))
+                return 2;
         } else if (opts && a[0] == '-' && a[1]) {
             return usage_error(cmd, "unknown option '%s'", a);
         } else if (!scene_path) {
@@ -261,17 +282,32 @@ static int cmd_render(int argc, char **argv)
     }
     if (same_file(out, scene_path))
         return usage_error(cmd, "output '%s' is the scene file itself", out);
-    image_t img;
+    if (keys_path && same_file(keys_path, scene_path))
+        return usage_error(cmd, "--keys '%s' is the scene file itself", keys_path);
+    if (keys_path && same_file(keys_path, out))
+        return usage_error(cmd, "--keys '%s' is the output image too", keys_path);
+    image_t img = {0}, kimg = {0};
+    uint32_t *keys = NULL;
     if (image_alloc(&img, w, h, err, sizeof err)) {
         fprintf(stderr, "fxrt: %s\n", err);
         return 2;
     }
+    if (keys_path && !(keys = malloc(sizeof *keys * (size_t)w * (size_t)h))) {
+        fprintf(stderr, "fxrt: render: out of memory for the key map\n");
+        image_free(&img);
+        return 2;
+    }
+    /* The key picture is made before either file is written, so a failure
+     * leaves neither. */
     int rc = 0;
-    if (engine_render(num, scene_path, &scene, w, h, renderer, img.rgb, err, sizeof err) ||
-        image_write(out, &img, err, sizeof err)) {
+    if (engine_render(num, scene_path, &scene, w, h, renderer, img.rgb, keys, err, sizeof err) ||
+        (keys && compare_keys_image(keys, w, h, ENGINE_KEY_MISS, &kimg, err, sizeof err)) ||
+        image_write(out, &img, err, sizeof err) || (keys && image_write(keys_path, &kimg, err, sizeof err))) {
         fprintf(stderr, "%s\n", err);
         rc = 2;
     }
+    free(keys);
+    image_free(&kimg);
     image_free(&img);
     return rc;
 }
@@ -294,8 +330,8 @@ static void mark_identical(image_t *diff)
 static int cmd_compare(int argc, char **argv)
 {
     static const char cmd[] = "compare";
-    const char *pa = NULL, *pb = NULL, *diff_path = NULL;
-    const char *seen_diff = NULL, *seen_pct = NULL, *seen_interior = NULL;
+    const char *pa = NULL, *pb = NULL, *diff_path = NULL, *scene_path = NULL;
+    const char *seen_diff = NULL, *seen_pct = NULL, *seen_interior = NULL, *seen_scene = NULL;
     double max_pct = -1;
     long max_interior = -1;
     bool opts = true;
@@ -309,6 +345,9 @@ static int cmd_compare(int argc, char **argv)
             opts = false;
         } else if (opts && !strcmp(a, "--diff")) {
             if (!(diff_path = opt_value(cmd, argc, argv, &i, &seen_diff)))
+                return 2;
+        } else if (opts && !strcmp(a, "--scene")) {
+            if (!(scene_path = opt_value(cmd, argc, argv, &i, &seen_scene)))
                 return 2;
         } else if (opts && !strcmp(a, "--max-pct")) {
             if (!(v = opt_value(cmd, argc, argv, &i, &seen_pct)))
@@ -335,13 +374,47 @@ static int cmd_compare(int argc, char **argv)
     if (diff_path && (same_file(diff_path, pa) || same_file(diff_path, pb)))
         return usage_error(cmd, "--diff '%s' would overwrite the input '%s'", diff_path,
                            same_file(diff_path, pa) ? pa : pb);
+    if (diff_path && scene_path && same_file(diff_path, scene_path))
+        return usage_error(cmd, "--diff '%s' would overwrite the input '%s'", diff_path, scene_path);
 
     char err[ERR_LEN];
-    image_t a = {0}, b = {0}, diff = {0};
+    image_t a = {0}, b = {0}, diff = {0}, ref = {0};
+    uint32_t *keys = NULL;
+    static scene_t scene; /* large: static, not on the stack */
     int rc = 2;
     compare_result_t res;
-    if (image_read(pa, &a, err, sizeof err) || image_read(pb, &b, err, sizeof err) ||
-        compare_images(&a, &b, &res, diff_path ? &diff : NULL, err, sizeof err)) {
+    if (image_read(pa, &a, err, sizeof err) || image_read(pb, &b, err, sizeof err)) {
+        fprintf(stderr, "fxrt: compare: %s\n", err);
+        goto done;
+    }
+    if (scene_path) {
+        /* The key map: the double render of the scene (fast renderer) at
+         * the images' size, never the images under test. */
+        if (a.width != b.width || a.height != b.height) {
+            fprintf(stderr, "fxrt: compare: size mismatch: %dx%d vs %dx%d\n", a.width, a.height, b.width, b.height);
+            goto done;
+        }
+        if (a.width > FXRT_MAX_DIM || a.height > FXRT_MAX_DIM) {
+            fprintf(stderr, "fxrt: compare: --scene: images of %dx%d are larger than a render (at most %dx%d)\n",
+                    a.width, a.height, FXRT_MAX_DIM, FXRT_MAX_DIM);
+            goto done;
+        }
+        if (scene_load(scene_path, &scene, err, sizeof err)) {
+            fprintf(stderr, "fxrt: compare: %s\n", err);
+            goto done;
+        }
+        keys = malloc(sizeof *keys * (size_t)a.width * (size_t)a.height);
+        if (!keys || image_alloc(&ref, a.width, a.height, err, sizeof err)) {
+            fprintf(stderr, "fxrt: compare: out of memory for the key map\n");
+            goto done;
+        }
+        if (engine_render(ENGINE_DOUBLE, scene_path, &scene, a.width, a.height, ENGINE_FAST, ref.rgb, keys, err,
+                          sizeof err)) {
+            fprintf(stderr, "fxrt: compare: %s\n", err);
+            goto done;
+        }
+    }
+    if (compare_images_keyed(&a, &b, keys, &res, diff_path ? &diff : NULL, err, sizeof err)) {
         fprintf(stderr, "fxrt: compare: %s\n", err);
         goto done;
     }
@@ -362,6 +435,8 @@ static int cmd_compare(int argc, char **argv)
         rc = 1;
     }
 done:
+    free(keys);
+    image_free(&ref);
     image_free(&a);
     image_free(&b);
     image_free(&diff);

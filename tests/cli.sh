@@ -223,6 +223,97 @@ check "one changed pixel: mismatched=1" grep -q ' mismatched=1 ' "$out/one.txt"
 lit=$(tail -c $((40 * 30 * 3)) "$out/one-diff.ppm" | od -An -v -tu1 | tr -s ' ' '\n' | grep -cvE '^(0|)$')
 check "one changed pixel: the diff map lights 1..3 bytes, no text (got $lit)" test "$lit" -ge 1 -a "$lit" -le 3
 
+# --- compare --scene: the near/far split from the double render's keys
+# ppm_bytes FILE W H: the pixel bytes of a P6 file written by fxrt, one per line
+ppm_bytes() { tail -c $(($2 * $3 * 3)) "$1" | od -An -v -tu1 | tr -s ' ' '\n' | grep -v '^$'; }
+sc=scenes/abb9-two-spheres.scene
+"$FXRT" render $sc --size 32x24 --number double -o "$out/kd.ppm"
+"$FXRT" render $sc --size 32x24 --number float -o "$out/kf.ppm"
+check "render --keys writes the key picture" "$FXRT" render $sc --size 32x24 --number double -o "$out/kd2.ppm" --keys "$out/keys.ppm"
+check "render --keys: the image is the same as without" cmp -s "$out/kd.ppm" "$out/kd2.ppm"
+check "render --keys: key picture has the image's size" test "$(ppm_dims "$out/keys.ppm")" = "32 24"
+line=$("$FXRT" compare "$out/kd.ppm" "$out/kf.ppm" --scene $sc 2>"$out/stderr.txt")
+check "compare --scene: exit 0 (stderr: $(head -c 200 "$out/stderr.txt"))" test -n "$line"
+for k in within1_pct within2_pct near_pixels far_pixels far_within1_pct far_within2_pct far_max_err near_max_err; do
+    check "compare --scene prints $k= (got: $line)" grep -qE "(^| )$k=[0-9.]+( |\$)" <<<"$line"
+done
+np=$(sed -nE 's/.* near_pixels=([0-9]+) .*/\1/p' <<<"$line")
+fp=$(sed -nE 's/.* far_pixels=([0-9]+) .*/\1/p' <<<"$line")
+check "compare --scene: near_pixels + far_pixels = 768 (got $np + $fp)" test "$((np + fp))" -eq 768
+# The near count again, independently: from the key picture (one colour per
+# key) with the 8-neighbourhood rule, in awk.
+want=$(ppm_bytes "$out/keys.ppm" 32 24 | awk -v W=32 -v H=24 '
+    { v[int((NR - 1) / 3)] = v[int((NR - 1) / 3)] "," $1 }
+    END {
+        for (y = 0; y < H; y++) for (x = 0; x < W; x++) {
+            near = 0
+            for (dy = -1; dy <= 1; dy++) for (dx = -1; dx <= 1; dx++) {
+                nx = x + dx; ny = y + dy
+                if (nx >= 0 && ny >= 0 && nx < W && ny < H && v[ny * W + nx] != v[y * W + x]) near = 1
+            }
+            n += near
+        }
+        print n + 0
+    }')
+check "compare --scene: near_pixels=$np is the count from the key picture ($want)" test "$np" = "$want"
+if grep -q 'keys\[' core/*.c; then
+    # Once the core writes keys, the two spheres' silhouettes are near pixels.
+    check "compare --scene: the silhouettes are near pixels (near_pixels=$np)" test "$np" -gt 0
+    lit=$(ppm_bytes "$out/keys.ppm" 32 24 | grep -cv '^0$')
+    check "render --keys: the spheres show in the key picture ($lit lit bytes)" test "$lit" -gt 0
+fi
+noscene=$("$FXRT" compare "$out/kd.ppm" "$out/kf.ppm")
+check "compare without --scene: near_pixels=0 far_pixels=768" grep -q ' near_pixels=0 far_pixels=768 ' <<<"$noscene"
+check "compare without --scene: the same all-pixel metrics" \
+    test "$(cut -d' ' -f1-9 <<<"$noscene")" = "$(cut -d' ' -f1-9 <<<"$line")"
+check "compare --help documents --scene and the heat scale" \
+    bash -c "'$FXRT' compare --help | grep -q -- '--scene SCENE' && '$FXRT' compare --help | grep -q 'dark red (128,0,0)'"
+# scene_fails DESC WANT CMD...: exit 2, nothing on stdout, stderr says WANT, no diff written
+scene_fails() {
+    local desc=$1 want=$2 rc
+    shift 2
+    rm -f "$out/sdiff.png"
+    "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"
+    rc=$?
+    check "$desc: exit 2 (got $rc)" test $rc -eq 2
+    check "$desc: nothing on stdout" test ! -s "$out/stdout.txt"
+    check "$desc: stderr says '$want' (got: $(head -c 300 "$out/stderr.txt"))" grep -qF -- "$want" "$out/stderr.txt"
+    check "$desc: no diff file" test ! -e "$out/sdiff.png"
+    check "$desc: no temporary file" bash -c "! ls '$out' | grep -q tmp"
+}
+scene_fails "compare --scene missing file" "fxrt: compare: $out/none.scene: " \
+    "$FXRT" compare "$out/kd.ppm" "$out/kf.ppm" --scene "$out/none.scene" --diff "$out/sdiff.png"
+badsc=tests/bad-scenes/bad-color.scene
+badline=$(expect_of $badsc)
+scene_fails "compare --scene bad scene" "fxrt: compare: $badsc:${badline%%:*}: " \
+    "$FXRT" compare "$out/kd.ppm" "$out/kf.ppm" --scene $badsc --diff "$out/sdiff.png"
+scene_fails "compare --scene a directory" "fxrt: compare: $out" \
+    "$FXRT" compare "$out/kd.ppm" "$out/kf.ppm" --scene "$out" --diff "$out/sdiff.png"
+usage_err "compare --scene twice" "fxrt: compare: --scene given twice" \
+    "$FXRT" compare "$out/kd.ppm" "$out/kf.ppm" --scene $sc --scene $sc
+usage_err "compare --scene without value" "fxrt: compare: --scene needs a value" \
+    "$FXRT" compare "$out/kd.ppm" "$out/kf.ppm" --scene
+cp $sc "$out/sc-copy.scene"
+"$FXRT" compare "$out/kd.ppm" "$out/kf.ppm" --scene "$out/sc-copy.scene" --diff "$out/sc-copy.scene" >"$out/stdout.txt" 2>"$out/stderr.txt"
+check "compare --diff SCENE: exit 2" test $? -eq 2
+check "compare --diff SCENE: says why" grep -q "would overwrite the input" "$out/stderr.txt"
+check "compare --diff SCENE: scene untouched" cmp -s $sc "$out/sc-copy.scene"
+rm -f "$out/kbad.png" "$out/kbad-keys.png"
+"$FXRT" render $badsc -o "$out/kbad.png" --keys "$out/kbad-keys.png" 2>/dev/null
+check "render --keys of a bad scene: exit 2, neither file" \
+    bash -c "test $? -eq 2 && test ! -e '$out/kbad.png' && test ! -e '$out/kbad-keys.png'"
+usage_err "render --keys = -o" "fxrt: render: --keys '$out/kk.png' is the output image too" \
+    "$FXRT" render $sc -o "$out/kk.png" --keys "$out/kk.png"
+check "compare --scene --diff writes the heat map" \
+    bash -c "'$FXRT' compare '$out/kd.ppm' '$out/kf.ppm' --scene $sc --diff '$out/sdiff.png' >/dev/null && test -s '$out/sdiff.png'"
+# Heat scale end to end: a pixel off by 1 is dark red (128,0,0).
+{ head -c $(($(stat -c %s "$out/kd.ppm") - 32 * 24 * 3)) "$out/kd.ppm"; tail -c $((32 * 24 * 3)) "$out/kd.ppm" | head -c 3 | od -An -v -tu1 |
+    awk '{ printf "%c%c%c", ($1 < 255 ? $1 + 1 : 254), $2, $3 }'; tail -c $((32 * 24 * 3 - 3)) "$out/kd.ppm"; } >"$out/kd1.ppm"
+"$FXRT" compare "$out/kd.ppm" "$out/kd1.ppm" --diff "$out/kd1-diff.ppm" >"$out/kd1.txt"
+check "one pixel off by 1: max_err=1 within1_pct=100.0000" grep -q ' max_err=1 .* within1_pct=100.0000 ' "$out/kd1.txt"
+check "one pixel off by 1: the diff's first pixel is (128,0,0)" \
+    test "$(ppm_bytes "$out/kd1-diff.ppm" 32 24 | head -n 3 | tr '\n' ' ')" = "128 0 0 "
+
 # --- paths with spaces, and fxrt size
 mkdir -p "$out/dir with space"
 cp $good "$out/dir with space/a scene.scene"

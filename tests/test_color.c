@@ -77,7 +77,7 @@ int main(void)
         for (int n = 0; n < 3; n++) {
             for (int r = 0; r < 2; r++) {
                 uint8_t rgb[6];
-                if (engine_render(nums[n], "sweep", &sc, 2, 1, rends[r], rgb, err, sizeof err) != 0) {
+                if (engine_render(nums[n], "sweep", &sc, 2, 1, rends[r], rgb, NULL, err, sizeof err) != 0) {
                     CHECK_SWEEP(0, "value %d, %s: %s", i, engine_number_name(nums[n]), err);
                     failed_scenes++;
                     continue;
@@ -110,7 +110,7 @@ int main(void)
         CHECK(scene_parse("example", t, strlen(t), &sc, err, sizeof err) == 0);
         for (int n = 0; n < 3; n++) {
             uint8_t rgb[3] = {0, 0, 0};
-            CHECK(engine_render(nums[n], "example", &sc, 1, 1, ENGINE_FAST, rgb, err, sizeof err) == 0);
+            CHECK(engine_render(nums[n], "example", &sc, 1, 1, ENGINE_FAST, rgb, NULL, err, sizeof err) == 0);
             CHECK_MSG(rgb[0] == 179 && rgb[1] == 230 && rgb[2] == 77, "%s: 0.7 0.9 0.3 -> %d %d %d, want 179 230 77",
                       engine_number_name(nums[n]), rgb[0], rgb[1], rgb[2]);
         }
