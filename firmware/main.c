@@ -1,5 +1,6 @@
 /* Board main: set the compiled-in scene up through the public API
- * (core/fxrt.h: the camera, every object, the renderer's forms), render it
+ * (core/fxrt.h: the camera, every object with its material, the ambient
+ * colour and lights, the renderer's forms), render it
  * and send it to the host as a binary PPM over semihosting, then report
  * instructions, RAM and stack. scene_data.h holds only the scene's own
  * values (fxrt-scenec); the world and camera are built here, at boot.
@@ -83,6 +84,23 @@ static void build_scene(void)
         if (e != i)
             fail2("object: ", e < 0 ? fxrt_strerror(e) : "id out of scene order");
     }
+#if FXRT_MAX_LIGHTS > 0
+    /* After the objects, as engine_build does: ambient, then the lights in
+     * scene order (light i gets index i, its bit in a pixel's key). */
+    e = world_set_ambient(&world, scene_ambient);
+    if (e != FXRT_OK)
+        fail2("ambient: ", fxrt_strerror(e));
+    for (int32_t i = 0; i < SCENE_LIGHTS; i++) {
+        e = fxrt_add_light(&world, &scene_lights[i]);
+        if (e != i)
+            fail2("light: ", e < 0 ? fxrt_strerror(e) : "index out of scene order");
+    }
+#else
+    /* Every material is flat (fxrt-scenec): no light changes a pixel and no
+     * lighting code is linked; the (empty) tables stay unused. */
+    (void)scene_ambient;
+    (void)scene_lights;
+#endif
 }
 
 static void send(int32_t fd, const void *buf, uint32_t len)

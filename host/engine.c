@@ -43,6 +43,34 @@ static color_t engine_color(const double c[3])
     return color_make(engine_channel(c[0]), engine_channel(c[1]), engine_channel(c[2]));
 }
 
+/* A fraction (light colour, ambient, specular: NUM_ONE is full intensity)
+ * quantised to 2^-16: round(x * 65536) / 65536. It has at most 17
+ * significant bits, so Q16.16, float and double all hold the same value
+ * (engine_channel does the same for colours in 1/255 units). */
+num_t ENGINE_SYM(engine_fraction)(double x)
+{
+    return ENGINE_SYM(engine_num)(floor(x * 65536.0 + 0.5) / 65536.0);
+}
+
+static color_t engine_fraction3(const double c[3])
+{
+    return color_make(ENGINE_SYM(engine_fraction)(c[0]), ENGINE_SYM(engine_fraction)(c[1]),
+                      ENGINE_SYM(engine_fraction)(c[2]));
+}
+
+static material_t engine_material(const scene_obj_t *o)
+{
+    material_t m;
+    m.kind = o->material == SCENE_MAT_PHONG     ? MATERIAL_PHONG
+             : o->material == SCENE_MAT_LAMBERT ? MATERIAL_LAMBERT
+                                                : MATERIAL_FLAT;
+    /* Unused by flat and lambert: zero, as world_set_material stores them. */
+    m.exponent = (uint16_t)(o->material == SCENE_MAT_PHONG ? o->exponent : 0);
+    m.specular = o->material == SCENE_MAT_PHONG ? engine_fraction3(o->specular)
+                                                : color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    return m;
+}
+
 int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine_desc_t *d)
 {
     const scene_camera_t *c = &sc->camera;
@@ -86,6 +114,22 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
             t->p[1] = engine_vec(o->p[1]);
             break;
         }
+        t->material = engine_material(o);
+    }
+    d->ambient = engine_fraction3(sc->ambient);
+    d->nlights = sc->nlights;
+    for (int i = 0; i < sc->nlights; i++) {
+        const scene_light_t *l = &sc->light[i];
+        fxrt_light_t *t = &d->lights[i];
+        vec3_t zero = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        t->kind = l->kind == SCENE_LIGHT_SPOT ? LIGHT_SPOT : l->kind == SCENE_LIGHT_DIRECTIONAL ? LIGHT_DIRECTIONAL
+                                                                                                : LIGHT_POINT;
+        /* Fields a kind does not use are 0 in the description. */
+        t->position = l->kind == SCENE_LIGHT_DIRECTIONAL ? zero : engine_vec(l->position);
+        t->direction = l->kind == SCENE_LIGHT_POINT ? zero : engine_vec(l->direction);
+        t->angle_deg = l->kind == SCENE_LIGHT_SPOT ? ENGINE_SYM(engine_num)(l->angle_deg) : NUM_ZERO;
+        t->color = engine_fraction3(l->color);
+        t->shadows = l->shadows != 0;
     }
     return 0;
 }
@@ -123,8 +167,25 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
     for (int i = 0; i < d.count; i++) {
         int32_t id = fxrt_add(w, &d.obj[i]);
         if (id < 0) {
+            /* fxrt_add also sets the material (FXRT_ERR_MATERIAL, ...). */
             snprintf(err, errlen, "%s:%d: %s cannot be built in %s: %s", path, sc->obj[i].line,
                      engine_kind_name(d.obj[i].kind), NUM_NAME, fxrt_strerror(id));
+            return -1;
+        }
+    }
+    /* Default ambient (black) is always accepted, also with lighting
+     * compiled out. */
+    fxrt_err_t ae = world_set_ambient(w, d.ambient);
+    if (ae != FXRT_OK) {
+        snprintf(err, errlen, "%s:%d: ambient cannot be set in %s: %s", path, sc->ambient_line, NUM_NAME,
+                 fxrt_strerror(ae));
+        return -1;
+    }
+    for (int i = 0; i < d.nlights; i++) {
+        int32_t li = fxrt_add_light(w, &d.lights[i]);
+        if (li < 0) {
+            snprintf(err, errlen, "%s:%d: light cannot be added in %s: %s", path, sc->light[i].line, NUM_NAME,
+                     fxrt_strerror(li));
             return -1;
         }
     }

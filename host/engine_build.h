@@ -23,15 +23,23 @@ typedef struct {
     fxrt_camera_t camera;
     color_t background;
     int count;
-    fxrt_object_t obj[SCENE_MAX_OBJECTS]; /* scene order: object i gets id i */
+    fxrt_object_t obj[SCENE_MAX_OBJECTS]; /* scene order: object i gets id i; .material set */
+    color_t ambient; /* fractions (NUM_ONE = full), quantised to 2^-16 */
+    int nlights;
+    fxrt_light_t lights[SCENE_MAX_LIGHTS > 0 ? SCENE_MAX_LIGHTS : 1]; /* scene order */
 } engine_desc_t;
+
+/* A fraction (light colour, ambient, specular) x in 0..1 as the build
+ * stores it: round(x * 65536) / 65536, the same value in every build. */
+num_t ENGINE_SYM(engine_fraction)(double x);
 
 /* Convert the parsed scene (doubles) into d, rounding each value once
  * (engine_num). Returns 0. */
 int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine_desc_t *d);
 
-/* Build the world and camera for a width x height frame. Returns 0, or -1
- * with "PATH:LINE: ..." in err. */
+/* Build the world and camera for a width x height frame: camera, world,
+ * objects with their materials (fxrt_add), ambient (world_set_ambient),
+ * lights (fxrt_add_light). Returns 0, or -1 with "PATH:LINE: ..." in err. */
 int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int height, world_t *w,
                              cam_t *cam, char *err, size_t errlen);
 

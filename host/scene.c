@@ -13,7 +13,13 @@
  *   sphere   center X Y Z radius R color R G B
  *   triangle a X Y Z b X Y Z c X Y Z color R G B
  *   box      min X Y Z max X Y Z color R G B
- * Named fields may come in any order; each is required exactly once. */
+ *   ambient R G B
+ *   light point       position X Y Z color R G B [shadows on|off]
+ *   light directional direction X Y Z color R G B [shadows on|off]
+ *   light spot        position X Y Z direction X Y Z angle DEGREES color R G B [shadows on|off]
+ * and on any object: [material flat|lambert|phong] (phong: specular R G B
+ * exponent N). Named fields may come in any order; each is required
+ * exactly once, optional ones at most once. docs/SCENES.md has the rules. */
 #include "scene.h"
 
 #include "errf.h"
@@ -73,15 +79,20 @@ typedef enum {
     SCENE_F_COLOR,  /* 3 components in 0..1 */
     SCENE_F_RADIUS, /* 1 value in (0, FXRT_RADIUS_LIMIT] */
     SCENE_F_FOV,    /* 1 value in (0, 180) degrees */
-    SCENE_F_SCALE   /* 1 value in (0, FXRT_RADIUS_LIMIT] */
+    SCENE_F_SCALE,  /* 1 value in (0, FXRT_RADIUS_LIMIT] */
+    SCENE_F_ANGLE,  /* 1 value in (0, 90] degrees (a spot light's half-angle) */
+    SCENE_F_EXPONENT, /* 1 integer in 1..SCENE_MAX_EXPONENT */
+    SCENE_F_MATERIAL, /* 1 word: flat, lambert or phong */
+    SCENE_F_ONOFF     /* 1 word: on or off */
 } scene_ftype_t;
 
 typedef struct {
     const char *name;
     scene_ftype_t type;
+    int optional; /* 0: required exactly once; 1: at most once */
 } scene_field_t;
 
-#define SCENE_MAX_FIELDS 4
+#define SCENE_MAX_FIELDS 7
 
 /* The fields of one statement, in the order they are stored and in which
  * missing ones are reported. */
@@ -91,28 +102,57 @@ typedef struct {
     scene_field_t field[SCENE_MAX_FIELDS];
 } scene_shape_t;
 
+/* Every object ends with color and then its optional material fields
+ * (scene_parse_object relies on this order). */
+#define SCENE_MATERIAL_FIELDS                                                                                 \
+    {"material", SCENE_F_MATERIAL, 1}, {"specular", SCENE_F_COLOR, 1}, { "exponent", SCENE_F_EXPONENT, 1 }
+#define SCENE_N_MATERIAL_FIELDS 3
 static const scene_shape_t scene_shape_plane = {
-    "plane", 3, {{"point", SCENE_F_POINT}, {"normal", SCENE_F_DIR}, {"color", SCENE_F_COLOR}}};
+    "plane", 6,
+    {{"point", SCENE_F_POINT, 0}, {"normal", SCENE_F_DIR, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
 static const scene_shape_t scene_shape_sphere = {
-    "sphere", 3, {{"center", SCENE_F_POINT}, {"radius", SCENE_F_RADIUS}, {"color", SCENE_F_COLOR}}};
+    "sphere", 6,
+    {{"center", SCENE_F_POINT, 0}, {"radius", SCENE_F_RADIUS, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
 static const scene_shape_t scene_shape_triangle = {
-    "triangle", 4,
-    {{"a", SCENE_F_POINT}, {"b", SCENE_F_POINT}, {"c", SCENE_F_POINT}, {"color", SCENE_F_COLOR}}};
+    "triangle", 7,
+    {{"a", SCENE_F_POINT, 0},
+     {"b", SCENE_F_POINT, 0},
+     {"c", SCENE_F_POINT, 0},
+     {"color", SCENE_F_COLOR, 0},
+     SCENE_MATERIAL_FIELDS}};
 static const scene_shape_t scene_shape_box = {
-    "box", 3, {{"min", SCENE_F_POINT}, {"max", SCENE_F_POINT}, {"color", SCENE_F_COLOR}}};
+    "box", 6,
+    {{"min", SCENE_F_POINT, 0}, {"max", SCENE_F_POINT, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
+/* Lights: shadows is optional (default on). */
+static const scene_shape_t scene_shape_point = {
+    "point light", 3, {{"position", SCENE_F_POINT, 0}, {"color", SCENE_F_COLOR, 0}, {"shadows", SCENE_F_ONOFF, 1}}};
+static const scene_shape_t scene_shape_directional = {
+    "directional light", 3,
+    {{"direction", SCENE_F_DIR, 0}, {"color", SCENE_F_COLOR, 0}, {"shadows", SCENE_F_ONOFF, 1}}};
+static const scene_shape_t scene_shape_spot = {"spot light", 5,
+                                               {{"position", SCENE_F_POINT, 0},
+                                                {"direction", SCENE_F_DIR, 0},
+                                                {"angle", SCENE_F_ANGLE, 0},
+                                                {"color", SCENE_F_COLOR, 0},
+                                                {"shadows", SCENE_F_ONOFF, 1}}};
 static const scene_shape_t scene_shape_persp = {
     "perspective camera", 4,
-    {{"eye", SCENE_F_POINT}, {"gaze", SCENE_F_DIR}, {"up", SCENE_F_DIR}, {"fov", SCENE_F_FOV}}};
+    {{"eye", SCENE_F_POINT, 0}, {"gaze", SCENE_F_DIR, 0}, {"up", SCENE_F_DIR, 0}, {"fov", SCENE_F_FOV, 0}}};
 static const scene_shape_t scene_shape_ortho = {
     "orthographic camera", 4,
-    {{"eye", SCENE_F_POINT}, {"gaze", SCENE_F_DIR}, {"up", SCENE_F_DIR}, {"scale", SCENE_F_SCALE}}};
+    {{"eye", SCENE_F_POINT, 0}, {"gaze", SCENE_F_DIR, 0}, {"up", SCENE_F_DIR, 0}, {"scale", SCENE_F_SCALE, 0}}};
 
 /* Every field name of every statement. A run of values ends at any of
  * them, so "center 0 0 radius 1" reports "got 2" rather than trying to read
  * "radius" as a number. */
 static const char *const scene_all_fields[] = {"point", "normal", "center", "radius", "a",
                                                 "b",     "c",      "min",    "max",    "color",
-                                                "eye",   "gaze",   "up",     "fov",    "scale"};
+                                                "eye",   "gaze",   "up",     "fov",    "scale",
+                                                "material", "specular", "exponent", "position", "direction",
+                                                "angle", "shadows"};
+
+/* Word values, indexed like scene_material_t. */
+static const char *const scene_material_names[] = {"flat", "lambert", "phong"};
 
 /* Per object kind (indexed by scene_kind_t): names and capacities. */
 static const char *const scene_kind_plural[] = {"planes", "spheres", "triangles", "boxes"};
@@ -127,6 +167,8 @@ typedef struct {
     int seen;
     double v[3];
     scene_tok_t t[3];
+    int word; /* word fields: the index of the word (material: scene_material_t; on/off: 1/0) */
+    long iv;  /* SCENE_F_EXPONENT: the integer */
 } scene_fval_t;
 
 typedef struct {
@@ -135,7 +177,7 @@ typedef struct {
     size_t errlen;
     int line; /* current line, 1-based */
     scene_t *out;
-    int camera_line, image_line, background_line; /* 0 = not seen yet */
+    int camera_line, image_line, background_line, ambient_line; /* 0 = not seen yet */
     int kind_count[4];
     int ntok;
     scene_tok_t tok[SCENE_MAX_TOKENS];
@@ -352,6 +394,14 @@ static int scene_check_value(scene_parser_t *p, const char *what, scene_ftype_t 
         if (!(v > 0.0 && v < 180.0))
             return scene_fail(p, "%s must be inside (0, 180), got %s", what, q.s);
         break;
+    case SCENE_F_ANGLE:
+        if (!(v > 0.0 && v <= 90.0))
+            return scene_fail(p, "%s must be inside (0, 90] degrees (the cone's half-angle), got %s", what, q.s);
+        break;
+    case SCENE_F_EXPONENT:
+    case SCENE_F_MATERIAL:
+    case SCENE_F_ONOFF:
+        break; /* not numbers: scene_parse_word */
     }
     return 0;
 }
@@ -366,9 +416,53 @@ static int scene_ftype_count(scene_ftype_t type)
     case SCENE_F_RADIUS:
     case SCENE_F_FOV:
     case SCENE_F_SCALE:
+    case SCENE_F_ANGLE:
+    case SCENE_F_EXPONENT:
+    case SCENE_F_MATERIAL:
+    case SCENE_F_ONOFF:
         break;
     }
     return 1;
+}
+
+static int scene_is_word_type(scene_ftype_t type)
+{
+    return type == SCENE_F_EXPONENT || type == SCENE_F_MATERIAL || type == SCENE_F_ONOFF;
+}
+
+static int scene_parse_uint(scene_tok_t t, long *v);
+
+/* The value of a one-token field that is not a decimal number: a material
+ * name, on/off, or the exponent (an integer, so '64.0' is refused). */
+static int scene_parse_word(scene_parser_t *p, const scene_field_t *fd, scene_tok_t t, scene_fval_t *fv)
+{
+    scene_quote_t q = scene_quote(t);
+    int k;
+
+    switch (fd->type) {
+    case SCENE_F_MATERIAL:
+        for (k = 0; k < 3; k++)
+            if (scene_tok_is(t, scene_material_names[k])) {
+                fv->word = k;
+                return 0;
+            }
+        return scene_fail(p, "unknown material '%s' (expected flat, lambert or phong)", q.s);
+    case SCENE_F_ONOFF:
+        if (scene_tok_is(t, "on") || scene_tok_is(t, "off")) {
+            fv->word = scene_tok_is(t, "on");
+            return 0;
+        }
+        return scene_fail(p, "%s must be on or off, got '%s'", fd->name, q.s);
+    case SCENE_F_EXPONENT:
+        if (scene_parse_uint(t, &fv->iv) != 0)
+            return scene_fail(p, "%s must be an integer in 1..%d, got '%s'", fd->name, SCENE_MAX_EXPONENT, q.s);
+        if (fv->iv < 1 || fv->iv > SCENE_MAX_EXPONENT)
+            return scene_fail(p, "%s %s outside 1..%d", fd->name, q.s, SCENE_MAX_EXPONENT);
+        return 0;
+    default:
+        break;
+    }
+    return scene_fail(p, "internal error: '%s' is not a word field", fd->name);
 }
 
 /* "center, radius, color": the field list used as a hint in messages. */
@@ -431,6 +525,19 @@ static int scene_parse_fields(scene_parser_t *p, const scene_shape_t *sh, int fi
             while (i + got + extra < p->ntok && !scene_is_field_name(p->tok[i + got + extra]) &&
                    scene_looks_numeric(p->tok[i + got + extra]))
                 extra++;
+        if (scene_is_word_type(fd->type)) {
+            /* One word; a surplus token is left for the loop above. */
+            if (got != 1)
+                return scene_fail(p, "'%s' needs a value (%s)", fd->name,
+                                  fd->type == SCENE_F_MATERIAL ? "flat, lambert or phong"
+                                  : fd->type == SCENE_F_ONOFF  ? "on or off"
+                                                               : "an integer");
+            vals[f].t[0] = p->tok[i];
+            if (scene_parse_word(p, fd, p->tok[i], &vals[f]) != 0)
+                return -1;
+            i++;
+            continue;
+        }
         if (got != want || extra != 0)
             return scene_fail(p, "'%s' needs %d number%s, got %d", fd->name, want,
                               want == 1 ? "" : "s", got + extra);
@@ -444,7 +551,7 @@ static int scene_parse_fields(scene_parser_t *p, const scene_shape_t *sh, int fi
         i += want;
     }
     for (f = 0; f < sh->nfields; f++)
-        if (!vals[f].seen)
+        if (!vals[f].seen && !sh->field[f].optional)
             return scene_fail(p, "missing field '%s' for %s", sh->field[f].name, sh->label);
     return 0;
 }
@@ -564,11 +671,102 @@ static int scene_parse_camera(scene_parser_t *p)
     return 0;
 }
 
+/* The material fields of an object (m[0] material, m[1] specular, m[2]
+ * exponent): specular and exponent belong to phong, which needs both. */
+static int scene_check_material(scene_parser_t *p, const scene_shape_t *sh, const scene_fval_t *m)
+{
+    int phong = m[0].seen && m[0].word == SCENE_MAT_PHONG;
+    int k;
+
+    for (k = 1; k <= 2; k++) {
+        const char *name = k == 1 ? "specular" : "exponent";
+        if (phong && !m[k].seen)
+            return scene_fail(p, "missing field '%s' for %s with material phong", name, sh->label);
+        if (!phong && m[k].seen) {
+            if (m[0].seen) {
+                scene_quote_t q = scene_quote(m[0].t[0]);
+                return scene_fail(p, "'%s' is only for material phong, not %s", name, q.s);
+            }
+            return scene_fail(p, "'%s' is only for material phong (add 'material phong')", name);
+        }
+    }
+    return 0;
+}
+
+/* A direction whose Q16.16 rounding would turn it by more than the cap. */
+static int scene_check_turn(scene_parser_t *p, const char *what, scene_vec_t v)
+{
+    scene_vec_t vq = scene_vq16(v);
+    double t = scene_len(vq) > 0 ? scene_turn(v, vq) : INFINITY;
+
+    if (!(t <= SCENE_TURN_CAP))
+        return scene_fail(p, "%s is too short for Q16.16: rounding it to 1/65536 turns it by %.3g LSB "
+                             "(more than %g); directions are scale-free, so multiply it by e.g. 1000",
+                          what, t, SCENE_TURN_CAP);
+    return 0;
+}
+
+static int scene_parse_light(scene_parser_t *p)
+{
+    const scene_shape_t *sh;
+    scene_fval_t vals[SCENE_MAX_FIELDS];
+    scene_light_t l;
+    int f;
+
+    memset(&l, 0, sizeof l);
+    if (p->ntok < 2)
+        return scene_fail(p, "light needs a type: point, directional or spot");
+    if (scene_tok_is(p->tok[1], "point")) {
+        sh = &scene_shape_point;
+        l.kind = SCENE_LIGHT_POINT;
+    } else if (scene_tok_is(p->tok[1], "directional")) {
+        sh = &scene_shape_directional;
+        l.kind = SCENE_LIGHT_DIRECTIONAL;
+    } else if (scene_tok_is(p->tok[1], "spot")) {
+        sh = &scene_shape_spot;
+        l.kind = SCENE_LIGHT_SPOT;
+    } else {
+        scene_quote_t q = scene_quote(p->tok[1]);
+        return scene_fail(p, "unknown light type '%s' (expected point, directional or spot)", q.s);
+    }
+    if (SCENE_MAX_LIGHTS <= 0)
+        return scene_fail(p, "lights are not in this build (FXRT_MAX_LIGHTS is 0)");
+    if (p->out->nlights >= SCENE_MAX_LIGHTS)
+        return scene_fail(p, "too many lights (at most %d; the first is on line %d)", SCENE_MAX_LIGHTS,
+                          p->out->light[0].line);
+    if (scene_parse_fields(p, sh, 2, vals) != 0)
+        return -1;
+    l.line = p->line;
+    l.shadows = 1;
+    for (f = 0; f < sh->nfields; f++) {
+        const scene_fval_t *v = &vals[f];
+        const char *name = sh->field[f].name;
+        if (strcmp(name, "position") == 0) {
+            l.position = scene_vec(v);
+        } else if (strcmp(name, "direction") == 0) {
+            l.direction = scene_vec(v);
+            if (scene_is_zero(l.direction))
+                return scene_fail(p, "direction has zero length");
+            if (scene_check_turn(p, "direction", l.direction) != 0)
+                return -1;
+        } else if (strcmp(name, "angle") == 0) {
+            l.angle_deg = v->v[0];
+        } else if (strcmp(name, "color") == 0) {
+            memcpy(l.color, v->v, sizeof l.color);
+        } else if (strcmp(name, "shadows") == 0) {
+            if (v->seen)
+                l.shadows = v->word;
+        }
+    }
+    p->out->light[p->out->nlights++] = l;
+    return 0;
+}
+
 static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_shape_t *sh)
 {
     scene_fval_t vals[SCENE_MAX_FIELDS];
     scene_obj_t *o;
-    int f, color_field;
+    int f, color_field, mat_field;
 
     if (scene_kind_capacity[kind] <= 0)
         return scene_fail(p, "%s are not in this build (%s is 0)", scene_kind_plural[kind],
@@ -577,6 +775,9 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
         return scene_fail(p, "too many %s (capacity %d)", scene_kind_plural[kind],
                           scene_kind_capacity[kind]);
     if (scene_parse_fields(p, sh, 1, vals) != 0)
+        return -1;
+    mat_field = sh->nfields - SCENE_N_MATERIAL_FIELDS;
+    if (scene_check_material(p, sh, &vals[mat_field]) != 0)
         return -1;
     if (kind == SCENE_PLANE && scene_is_zero(scene_vec(&vals[1])))
         return scene_fail(p, "normal has zero length");
@@ -608,9 +809,10 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
     memset(o, 0, sizeof *o);
     o->kind = kind;
     o->line = p->line;
-    /* Color is always the last field; the others map in order onto p[]
-     * (sphere: center -> p[0], radius -> radius, p[1] stays zero). */
-    color_field = sh->nfields - 1;
+    /* Color is the last field before the material ones; the others map in
+     * order onto p[] (sphere: center -> p[0], radius -> radius, p[1] stays
+     * zero). */
+    color_field = sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS;
     for (f = 0; f < color_field; f++) {
         if (sh->field[f].type == SCENE_F_RADIUS)
             o->radius = vals[f].v[0];
@@ -620,6 +822,12 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
     o->color[0] = vals[color_field].v[0];
     o->color[1] = vals[color_field].v[1];
     o->color[2] = vals[color_field].v[2];
+    o->material = vals[mat_field].seen ? (scene_material_t)vals[mat_field].word : SCENE_MAT_FLAT;
+    if (o->material == SCENE_MAT_PHONG) {
+        for (f = 0; f < 3; f++)
+            o->specular[f] = vals[mat_field + 1].v[f];
+        o->exponent = (int)vals[mat_field + 2].iv;
+    }
     p->out->count++;
     p->kind_count[kind]++;
     return 0;
@@ -672,23 +880,24 @@ static int scene_parse_image(scene_parser_t *p)
     return 0;
 }
 
-static int scene_parse_background(scene_parser_t *p)
+/* 'background R G B' and 'ambient R G B': one colour, at most once. */
+static int scene_parse_colour_line(scene_parser_t *p, const char *what, int *seen_line, double *out)
 {
     double c[3];
     int k;
 
-    if (p->background_line)
-        return scene_fail(p, "duplicate 'background' line (first on line %d)", p->background_line);
+    if (*seen_line)
+        return scene_fail(p, "duplicate '%s' line (first on line %d)", what, *seen_line);
     if (p->ntok != 4)
-        return scene_fail(p, "'background' needs 3 numbers, got %d", p->ntok - 1);
+        return scene_fail(p, "'%s' needs 3 numbers, got %d", what, p->ntok - 1);
     for (k = 0; k < 3; k++) {
-        if (scene_number(p, "background", p->tok[k + 1], &c[k]) != 0)
+        if (scene_number(p, what, p->tok[k + 1], &c[k]) != 0)
             return -1;
-        if (scene_check_value(p, "background", SCENE_F_COLOR, p->tok[k + 1], c[k]) != 0)
+        if (scene_check_value(p, what, SCENE_F_COLOR, p->tok[k + 1], c[k]) != 0)
             return -1;
     }
-    memcpy(p->out->background, c, sizeof c);
-    p->background_line = p->line;
+    memcpy(out, c, sizeof c);
+    *seen_line = p->line;
     return 0;
 }
 
@@ -767,7 +976,15 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
     if (scene_tok_is(kw, "image"))
         return scene_parse_image(p);
     if (scene_tok_is(kw, "background"))
-        return scene_parse_background(p);
+        return scene_parse_colour_line(p, "background", &p->background_line, p->out->background);
+    if (scene_tok_is(kw, "ambient")) {
+        if (scene_parse_colour_line(p, "ambient", &p->ambient_line, p->out->ambient) != 0)
+            return -1;
+        p->out->ambient_line = p->ambient_line;
+        return 0;
+    }
+    if (scene_tok_is(kw, "light"))
+        return scene_parse_light(p);
     if (scene_tok_is(kw, "camera"))
         return scene_parse_camera(p);
     if (scene_tok_is(kw, "plane"))
@@ -780,8 +997,8 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
         return scene_parse_object(p, SCENE_BOX, &scene_shape_box);
     {
         scene_quote_t q = scene_quote(kw);
-        return scene_fail(p, "unknown keyword '%s' (expected image, background, camera, plane, "
-                             "sphere, triangle or box)", q.s);
+        return scene_fail(p, "unknown keyword '%s' (expected image, background, ambient, camera, "
+                             "light, plane, sphere, triangle or box)", q.s);
     }
 }
 

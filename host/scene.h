@@ -16,7 +16,16 @@ typedef struct {
     double x, y, z;
 } scene_vec_t;
 
+/* Lights a scene may hold: the build's capacity (the format allows 8). */
+#define SCENE_MAX_LIGHTS FXRT_MAX_LIGHTS
+/* Largest Phong exponent ('exponent' is an integer in 1..this). */
+#define SCENE_MAX_EXPONENT FXRT_PHONG_MAX_EXPONENT
+
 typedef enum { SCENE_PLANE, SCENE_SPHERE, SCENE_TRIANGLE, SCENE_BOX } scene_kind_t;
+
+/* 'material flat|lambert|phong' on an object; flat (the default) is the
+ * colour as is, unaffected by lights. */
+typedef enum { SCENE_MAT_FLAT, SCENE_MAT_LAMBERT, SCENE_MAT_PHONG } scene_material_t;
 
 typedef struct {
     scene_kind_t kind;
@@ -24,7 +33,22 @@ typedef struct {
     double color[3];   /* 0..1 */
     scene_vec_t p[3];  /* plane: point, normal; sphere: center; triangle: a, b, c; box: min, max */
     double radius;     /* sphere only */
+    scene_material_t material;
+    double specular[3]; /* phong only: fractions 0..1, else 0 */
+    int exponent;       /* phong only: 1..SCENE_MAX_EXPONENT, else 0 */
 } scene_obj_t;
+
+typedef enum { SCENE_LIGHT_POINT, SCENE_LIGHT_DIRECTIONAL, SCENE_LIGHT_SPOT } scene_light_kind_t;
+
+typedef struct {
+    scene_light_kind_t kind;
+    int line;              /* line of its 'light' keyword */
+    scene_vec_t position;  /* point, spot; else 0 */
+    scene_vec_t direction; /* directional, spot: nonzero; else 0 */
+    double angle_deg;      /* spot: half-angle of the cone, (0, 90]; else 0 */
+    double color[3];       /* fractions 0..1 */
+    int shadows;           /* 1 (default) or 0 ('shadows off') */
+} scene_light_t;
 
 typedef enum { SCENE_CAM_PERSPECTIVE, SCENE_CAM_ORTHOGRAPHIC } scene_cam_kind_t;
 
@@ -39,9 +63,13 @@ typedef struct {
 typedef struct {
     int width, height;     /* from 'image', else the defaults above */
     double background[3];  /* 0..1, default black */
+    double ambient[3];     /* fractions 0..1, default 0 0 0 */
+    int ambient_line;      /* line of 'ambient', 0 when absent */
     scene_camera_t camera;
     int count;
     scene_obj_t obj[SCENE_MAX_OBJECTS]; /* in file order */
+    int nlights;
+    scene_light_t light[SCENE_MAX_LIGHTS > 0 ? SCENE_MAX_LIGHTS : 1]; /* in file order */
 } scene_t;
 
 /* Parse scene text (len bytes, need not be NUL-terminated). name is used in

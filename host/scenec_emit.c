@@ -53,6 +53,21 @@ static const char *kind_name(geom_kind_t k)
     return "?";
 }
 
+static const char *light_kind_name(light_kind_t k)
+{
+    switch (k) {
+    case LIGHT_POINT: return "LIGHT_POINT";
+    case LIGHT_DIRECTIONAL: return "LIGHT_DIRECTIONAL";
+    case LIGHT_SPOT: return "LIGHT_SPOT";
+    }
+    return "?";
+}
+
+static const char *material_kind_name(unsigned k)
+{
+    return k == MATERIAL_PHONG ? "MATERIAL_PHONG" : k == MATERIAL_LAMBERT ? "MATERIAL_LAMBERT" : "MATERIAL_FLAT";
+}
+
 static unsigned scenec_cap(unsigned n, bool all_kinds)
 {
     return all_kinds && n == 0 ? 1 : n;
@@ -79,6 +94,22 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(cfg, "#define SCENE_WIDTH %d\n#define SCENE_HEIGHT %d\n", width, height);
     fprintf(cfg, "#define SCENE_OBJECTS %d\n", d.count);
     fprintf(cfg, "#define FXRT_RENDER_MAX_WIDTH %d\n", width);
+    /* Lighting: compiled out entirely (FXRT_MAX_LIGHTS 0) when every
+     * material is flat, since no light then changes a pixel; else room for
+     * the scene's lights (at least 1). Shadow rays and the specular term
+     * only when something uses them. */
+    int lit = 0, phong = 0, shadows = 0;
+    for (int i = 0; i < d.count; i++) {
+        lit |= d.obj[i].material.kind != MATERIAL_FLAT;
+        phong |= d.obj[i].material.kind == MATERIAL_PHONG;
+    }
+    for (int i = 0; i < d.nlights; i++)
+        shadows |= d.lights[i].shadows;
+    int max_lights = lit ? (d.nlights > 1 ? d.nlights : 1) : 0;
+    int n_lights = lit ? d.nlights : 0;
+    fprintf(cfg, "#define FXRT_MAX_LIGHTS %d\n#define FXRT_SHADOWS %d\n#define FXRT_PHONG %d\n", max_lights,
+            lit && shadows, lit && phong);
+    fprintf(cfg, "#define SCENE_LIGHTS %d\n", n_lights);
 #if FXRT_MAX_BOXES > 0
     /* The box-face pool holds what this camera needs (3 faces for a box
      * seen from outside in perspective, up to 6 otherwise), counted by the
@@ -135,10 +166,43 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
         }
         fputs(".color = ", data);
         emit_color(data, o->color);
+        /* Flat objects leave .material zero (MATERIAL_FLAT). */
+        if (o->material.kind != MATERIAL_FLAT) {
+            fprintf(data, ", .material = {.kind = %s", material_kind_name(o->material.kind));
+            if (o->material.kind == MATERIAL_PHONG) {
+                fprintf(data, ", .exponent = %u, .specular = ", (unsigned)o->material.exponent);
+                emit_color(data, o->material.specular);
+            }
+            fputs("}", data);
+        }
         fprintf(data, "}, /* id %d, line %d */\n", i, sc->obj[i].line);
     }
     if (d.count == 0)
         fputs("    {.kind = GEOM_SPHERE},\n", data);
+    fputs("};\n", data);
+
+    /* Ambient and lights, which the firmware adds with world_set_ambient
+     * and fxrt_add_light when FXRT_MAX_LIGHTS > 0 (SCENE_LIGHTS of them;
+     * none when lighting is compiled out, where they change no pixel). */
+    fputs("static const color_t scene_ambient = ", data);
+    emit_color(data, lit ? d.ambient : color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+    fputs(";\n", data);
+    fprintf(data, "static const fxrt_light_t scene_lights[%d] = {\n", n_lights ? n_lights : 1);
+    for (int i = 0; i < n_lights; i++) {
+        const fxrt_light_t *l = &d.lights[i];
+        fprintf(data, "    {.kind = %s, .position = ", light_kind_name(l->kind));
+        emit_vec(data, l->position);
+        fputs(", .direction = ", data);
+        emit_vec(data, l->direction);
+        fputs(", .angle_deg = ", data);
+        emit_num(data, l->angle_deg);
+        fputs(", .color = ", data);
+        emit_color(data, l->color);
+        fprintf(data, ", .shadows = %s}, /* light %d, line %d */\n", l->shadows ? "true" : "false", i,
+                sc->light[i].line);
+    }
+    if (n_lights == 0)
+        fputs("    {.kind = LIGHT_POINT},\n", data);
     fputs("};\n", data);
     return 0;
 }

@@ -5,7 +5,9 @@
  * "NAME:LINE: message". A parse that succeeds must satisfy what the README
  * and host/scene.h promise: exactly one camera, on the line of a 'camera'
  * statement; objects in file order on lines starting with their keyword,
- * per-kind counts within the capacities; every value inside the documented
+ * per-kind counts within the capacities; lights likewise on 'light' lines
+ * (at most SCENE_MAX_LIGHTS), the ambient colour on its 'ambient' line;
+ * materials consistent (specular and exponent for phong only); every value inside the documented
  * domain (core/fxrt_config.h) and either 0 or at least 2^-16 in magnitude;
  * no -0. Rejections must not depend on the size of the error buffer: a
  * short buffer gets a prefix of the same message. Any violation aborts,
@@ -62,11 +64,13 @@ static long fuzz_line_count(const uint8_t *d, size_t n)
  * FUZZ_LINE_CAMERA, or FUZZ_LINE_OTHER. One pass, so that checking a
  * 4 KiB input of empty lines stays linear. */
 #define FUZZ_LINE_CAMERA 4
-#define FUZZ_LINE_OTHER 5
+#define FUZZ_LINE_LIGHT 5
+#define FUZZ_LINE_AMBIENT 6
+#define FUZZ_LINE_OTHER 7
 
 static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, long lines)
 {
-    static const char *const kw[] = {"plane", "sphere", "triangle", "box", "camera"};
+    static const char *const kw[] = {"plane", "sphere", "triangle", "box", "camera", "light", "ambient"};
     size_t i = 0;
     long l;
 
@@ -81,7 +85,7 @@ static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, lo
             i++;
         len = i - start;
         kinds[l] = FUZZ_LINE_OTHER;
-        for (k = 0; k < 5; k++)
+        for (k = 0; k < 7; k++)
             if (len == strlen(kw[k]) && memcmp(d + start, kw[k], len) == 0)
                 kinds[l] = (unsigned char)k;
         while (i < n && d[i] != '\n')
@@ -231,6 +235,70 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
         FUZZ_CHECK(kind_count[k] <= cap[k], NULL);
         FUZZ_CHECK(kind_count[k] == file_count[k], NULL);
     }
+
+    /* Materials: flat by default; specular and exponent only for phong. */
+    for (i = 0; i < s->count; i++) {
+        const scene_obj_t *o = &s->obj[i];
+        FUZZ_CHECK(o->material == SCENE_MAT_FLAT || o->material == SCENE_MAT_LAMBERT ||
+                       o->material == SCENE_MAT_PHONG,
+                   NULL);
+        fuzz_check_color(o->specular);
+        if (o->material == SCENE_MAT_PHONG) {
+            FUZZ_CHECK(o->exponent >= 1 && o->exponent <= SCENE_MAX_EXPONENT, NULL);
+        } else {
+            FUZZ_CHECK(o->exponent == 0, NULL);
+            FUZZ_CHECK(o->specular[0] == 0.0 && o->specular[1] == 0.0 && o->specular[2] == 0.0, NULL);
+        }
+    }
+
+    /* Ambient: at most one line, and the stored line is it. */
+    {
+        long ambients = 0;
+        for (l = 1; l <= lines; l++)
+            ambients += kinds[l] == FUZZ_LINE_AMBIENT;
+        FUZZ_CHECK(ambients <= 1, NULL);
+        FUZZ_CHECK(ambients == 0 ? s->ambient_line == 0 : kinds[s->ambient_line] == FUZZ_LINE_AMBIENT, NULL);
+        fuzz_check_color(s->ambient);
+        if (ambients == 0)
+            FUZZ_CHECK(s->ambient[0] == 0.0 && s->ambient[1] == 0.0 && s->ambient[2] == 0.0, NULL);
+    }
+
+    /* Lights: within capacity, in file order, one per 'light' line, each
+     * kind with exactly its own fields. */
+    {
+        long light_lines = 0;
+        for (l = 1; l <= lines; l++)
+            light_lines += kinds[l] == FUZZ_LINE_LIGHT;
+        FUZZ_CHECK(s->nlights >= 0 && s->nlights <= SCENE_MAX_LIGHTS, NULL);
+        FUZZ_CHECK(s->nlights == light_lines, NULL);
+        prev_line = 0;
+        for (i = 0; i < s->nlights; i++) {
+            const scene_light_t *lt = &s->light[i];
+            FUZZ_CHECK(lt->line > prev_line && lt->line <= lines, NULL);
+            prev_line = lt->line;
+            FUZZ_CHECK(kinds[lt->line] == FUZZ_LINE_LIGHT, NULL);
+            fuzz_check_vec(lt->position);
+            fuzz_check_vec(lt->direction);
+            fuzz_check_color(lt->color);
+            FUZZ_CHECK(lt->shadows == 0 || lt->shadows == 1, NULL);
+            switch (lt->kind) {
+            case SCENE_LIGHT_POINT:
+                FUZZ_CHECK(fuzz_is_zero(lt->direction) && lt->angle_deg == 0.0, NULL);
+                break;
+            case SCENE_LIGHT_DIRECTIONAL:
+                FUZZ_CHECK(!fuzz_is_zero(lt->direction), NULL);
+                FUZZ_CHECK(fuzz_is_zero(lt->position) && lt->angle_deg == 0.0, NULL);
+                break;
+            case SCENE_LIGHT_SPOT:
+                FUZZ_CHECK(!fuzz_is_zero(lt->direction), NULL);
+                FUZZ_CHECK(lt->angle_deg > 0.0 && lt->angle_deg <= 90.0, NULL);
+                fuzz_check_num(lt->angle_deg, 90.0);
+                break;
+            default:
+                FUZZ_CHECK(0 && "light kind", NULL);
+            }
+        }
+    }
     free(kinds);
 }
 
@@ -270,6 +338,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (rc == 0) {
         FUZZ_CHECK(fuzz_scene_b.count == fuzz_scene_a.count, NULL);
         FUZZ_CHECK(fuzz_scene_b.camera.line == fuzz_scene_a.camera.line, NULL);
+        FUZZ_CHECK(fuzz_scene_b.nlights == fuzz_scene_a.nlights, NULL);
     }
     return 0;
 }

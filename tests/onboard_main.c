@@ -17,6 +17,9 @@ typedef struct {
     const color_t *background;
     const fxrt_object_t *objects;
     int32_t count;
+    const color_t *ambient;
+    const fxrt_light_t *lights;
+    int32_t nlights; /* 0 when the scene's materials are all flat */
 } onb_scene_t;
 
 #include "scenes.h"
@@ -56,6 +59,13 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
     for (int32_t i = 0; e == FXRT_OK && i < s->count; i++) {
         int32_t id = fxrt_add(&world, &s->objects[i]);
         e = id == i ? FXRT_OK : (id < 0 ? id : FXRT_ERR_KIND);
+    }
+    /* Black ambient is accepted also with lighting compiled out. */
+    if (e == FXRT_OK)
+        e = world_set_ambient(&world, *s->ambient);
+    for (int32_t i = 0; e == FXRT_OK && i < s->nlights; i++) {
+        int32_t li = fxrt_add_light(&world, &s->lights[i]);
+        e = li == i ? FXRT_OK : (li < 0 ? li : FXRT_ERR_LIGHT);
     }
     if (e == FXRT_OK)
         e = fxrt_render_setup(&rs, &world, &cam);

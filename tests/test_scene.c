@@ -201,6 +201,95 @@ static void test_comments_order_layout(void)
                  "color component 2 outside 0..1");
 }
 
+
+/* Lighting: the issue's example lines, then every field in another order,
+ * defaults and the values as stored. */
+static const char *lit_scene =
+    "camera perspective eye 4 4 4 gaze -1 -1 -1 up 0 1 0 fov 45\n"
+    "ambient 0.1 0.2 0.3\n"
+    "light point position 4 4 4 color 1 1 1\n"
+    "light directional direction -1 -1 -1 color 1 0.5 0 shadows off\n"
+    "light spot position 4 4 4 direction -1 -1 -1 angle 12.86 color 0.25 1 1 shadows on\n"
+    "sphere center 1 1 1 radius 0.5 color 0 1 0 material phong specular 1 0.5 0 exponent 64\n"
+    "plane point 0 0 0 normal 0 1 0 color 1 0 0 material lambert\n"
+    "box min -1.5 0.5 0.5 max -0.5 1.5 1.5 color 0 0 1 material flat\n"
+    "triangle a 0 0 -1 b 1 0 -1 c 1 1 -1 color 1 1 0\n"
+    "light shadows off color 0 0 1 angle 90 direction 0 -1 0 position 0 5 0 spot\n";
+
+static void test_lights_materials(void)
+{
+    const scene_light_t *l;
+
+    /* 'spot' after the fields is not a light type: the type comes second. */
+    EXPECT_ERROR(lit_scene, 10, "unknown light type 'shadows'");
+    CHECK_MSG(parse_len(lit_scene, strlen(lit_scene) - strlen("light shadows off color 0 0 1 angle 90 "
+                                                               "direction 0 -1 0 position 0 5 0 spot\n")) == 0,
+              "%s", g_err);
+    CHECK(color_is(g_scene.ambient, 0.1, 0.2, 0.3) && g_scene.ambient_line == 2);
+    CHECK(g_scene.nlights == 3);
+    l = &g_scene.light[0];
+    CHECK(l->kind == SCENE_LIGHT_POINT && l->line == 3 && vec_is(l->position, 4, 4, 4));
+    CHECK(vec_is(l->direction, 0, 0, 0) && l->angle_deg == 0 && color_is(l->color, 1, 1, 1));
+    CHECK(l->shadows == 1); /* default on */
+    l = &g_scene.light[1];
+    CHECK(l->kind == SCENE_LIGHT_DIRECTIONAL && l->line == 4 && vec_is(l->direction, -1, -1, -1));
+    CHECK(vec_is(l->position, 0, 0, 0) && color_is(l->color, 1, 0.5, 0) && l->shadows == 0);
+    l = &g_scene.light[2];
+    CHECK(l->kind == SCENE_LIGHT_SPOT && l->line == 5 && vec_is(l->position, 4, 4, 4));
+    CHECK(vec_is(l->direction, -1, -1, -1) && near(l->angle_deg, 12.86) && l->shadows == 1);
+    CHECK(color_is(l->color, 0.25, 1, 1));
+    CHECK(g_scene.count == 4);
+    CHECK(g_scene.obj[0].material == SCENE_MAT_PHONG && g_scene.obj[0].exponent == 64);
+    CHECK(color_is(g_scene.obj[0].specular, 1, 0.5, 0));
+    CHECK(g_scene.obj[1].material == SCENE_MAT_LAMBERT && g_scene.obj[1].exponent == 0);
+    CHECK(color_is(g_scene.obj[1].specular, 0, 0, 0));
+    CHECK(g_scene.obj[2].material == SCENE_MAT_FLAT && g_scene.obj[3].material == SCENE_MAT_FLAT);
+
+    /* Fields in any order, for lights and for the material fields. */
+    CHECK_MSG(parse_str(CAM "light spot shadows off color 0 0 1 angle 90 direction 0 -1 0 position 0 5 0\n"
+                            "sphere exponent 1024 material phong color 1 1 1 specular 0 0 0 radius 1 "
+                            "center 0 0 -3\n"
+                            "triangle material lambert color 1 1 1 c 0 1 0 b 1 0 0 a 0 0 0\n"
+                            "light directional color 0 0 0 direction 0 0.00002 0\n") == 0,
+              "%s", g_err);
+    CHECK(g_scene.nlights == 2 && g_scene.light[0].kind == SCENE_LIGHT_SPOT && g_scene.light[0].line == 2);
+    CHECK(g_scene.light[0].angle_deg == 90 && g_scene.light[0].shadows == 0);
+    CHECK(vec_is(g_scene.light[0].position, 0, 5, 0) && vec_is(g_scene.light[0].direction, 0, -1, 0));
+    CHECK(g_scene.obj[0].material == SCENE_MAT_PHONG && g_scene.obj[0].exponent == 1024);
+    CHECK(g_scene.obj[1].kind == SCENE_TRIANGLE && g_scene.obj[1].material == SCENE_MAT_LAMBERT);
+    /* Exponent 1, spot angle just above 0, lights before the camera. */
+    CHECK_MSG(parse_str("light spot position 0 0 0 direction 1 0 0 angle 0.001 color 1 1 1\n" CAM
+                        "box min 0 0 0 max 1 1 1 color 1 1 1 material phong exponent 1 specular 1 1 1\n") == 0,
+              "%s", g_err);
+    CHECK(g_scene.obj[0].exponent == 1 && g_scene.light[0].line == 1);
+    /* Without the new keywords: flat, no lights, black ambient. */
+    CHECK_MSG(parse_str(good_scene) == 0, "%s", g_err);
+    CHECK(g_scene.nlights == 0 && g_scene.ambient_line == 0 && color_is(g_scene.ambient, 0, 0, 0));
+    for (int i = 0; i < g_scene.count; i++)
+        CHECK(g_scene.obj[i].material == SCENE_MAT_FLAT && g_scene.obj[i].exponent == 0);
+}
+
+static void test_light_capacity(void)
+{
+    static char buf[4096];
+    size_t n = 0;
+    int i;
+
+    n += (size_t)snprintf(buf + n, sizeof buf - n, "%s", CAM);
+    for (i = 0; i < SCENE_MAX_LIGHTS; i++)
+        n += (size_t)snprintf(buf + n, sizeof buf - n, "light point position %d 0 0 color 1 1 1\n", i);
+    CHECK_MSG(parse_len(buf, n) == 0, "%s", g_err);
+    CHECK(g_scene.nlights == SCENE_MAX_LIGHTS);
+    for (i = 0; i < g_scene.nlights; i++)
+        CHECK(g_scene.light[i].line == i + 2 && g_scene.light[i].position.x == i);
+    n += (size_t)snprintf(buf + n, sizeof buf - n, "light directional direction 0 -1 0 color 1 1 1\n");
+    if (SCENE_MAX_LIGHTS > 0)
+        expect_error_len(buf, n, SCENE_MAX_LIGHTS + 2,
+                         "too many lights (at most " STR(SCENE_MAX_LIGHTS) "; the first is on line 2)", HERE);
+    else
+        expect_error_len(buf, n, 2, "lights are not in this build", HERE);
+}
+
 static void test_limits_accepted(void)
 {
     /* Values exactly at the documented limits are inside the domain. */
@@ -339,6 +428,98 @@ static const struct error_case error_cases[] = {
     {CAM "plane point 0 -1 0 normal 0 0 0 color 0 1 0\n", 2, "normal has zero length"},
     {CAM "box min 2 0 0 max 1 1 1 color 0 0 1\n", 2, "box min exceeds max on x (2 > 1)"},
     {CAM "box min 0 0 5.5 max 1 1 -1 color 0 0 1\n", 2, "box min exceeds max on z (5.5 > -1)"},
+    /* ambient */
+    {"ambient 0 2 0\n" CAM, 1, "ambient color component 2 outside 0..1"},
+    {CAM "ambient 0 -0.1 0\n", 2, "ambient color component -0.1 outside 0..1"},
+    {"ambient 0 0\n" CAM, 1, "'ambient' needs 3 numbers, got 2"},
+    {"ambient 0 0 0 0\n" CAM, 1, "'ambient' needs 3 numbers, got 4"},
+    {"ambient 0.1 0.1 0.1\n" CAM "ambient 0 0 0\n", 3, "duplicate 'ambient' line (first on line 1)"},
+    {"ambient 0 nan 0\n" CAM, 1, "ambient: NaN or infinity not allowed: 'nan'"},
+    {"ambient 0 0.000001 0\n" CAM, 1, "ambient: too small for Q16.16: 0.000001"},
+    /* lights */
+    {CAM "light\n", 2, "light needs a type: point, directional or spot"},
+    {CAM "light laser position 0 0 0 color 1 1 1\n", 2, "unknown light type 'laser'"},
+    {CAM "light point color 1 1 1\n", 2, "missing field 'position' for point light"},
+    {CAM "light point position 0 0 0\n", 2, "missing field 'color' for point light"},
+    {CAM "light directional color 1 1 1\n", 2, "missing field 'direction' for directional light"},
+    {CAM "light spot position 0 0 0 direction 0 -1 0 color 1 1 1\n", 2, "missing field 'angle' for spot light"},
+    {CAM "light spot position 0 0 0 angle 10 color 1 1 1\n", 2, "missing field 'direction' for spot light"},
+    {CAM "light spot direction 0 -1 0 angle 10 color 1 1 1\n", 2, "missing field 'position' for spot light"},
+    {CAM "light point position 0 0 0 direction 0 -1 0 color 1 1 1\n", 2, "point light has no field 'direction'"},
+    {CAM "light directional position 0 0 0 direction 0 -1 0 color 1 1 1\n", 2,
+     "directional light has no field 'position'"},
+    {CAM "light point position 0 0 0 angle 10 color 1 1 1\n", 2, "point light has no field 'angle'"},
+    {CAM "light point position 0 0 0 color 1 1 1 material lambert\n", 2, "point light has no field 'material'"},
+    {CAM "light point position 0 0 0 color 1 1 1 position 1 1 1\n", 2, "duplicate field 'position' in point light"},
+    {CAM "light point position 0 0 0 color 1 1 1 shadows on shadows off\n", 2,
+     "duplicate field 'shadows' in point light"},
+    {CAM "light point position 0 0 0 color 1 1 1 shadows\n", 2, "'shadows' needs a value (on or off)"},
+    {CAM "light point position 0 0 0 color 1 1 1 shadows yes\n", 2, "shadows must be on or off, got 'yes'"},
+    {CAM "light point position 0 0 0 color 1 1 1 shadows ON\n", 2, "shadows must be on or off, got 'ON'"},
+    {CAM "light point position 0 0 0 color 1 1 1 shadows on off\n", 2, "unexpected 'off' after point light"},
+    {CAM "light point position 0 0 color 1 1 1\n", 2, "'position' needs 3 numbers, got 2"},
+    {CAM "light point position 0 0 9000 color 1 1 1\n", 2, "value 9000 out of range (|coordinate| <= "},
+    {CAM "light point position 0 0 0 color 1 1.5 1\n", 2, "color component 1.5 outside 0..1"},
+    {CAM "light point position 0 0 0 color 1 1 -1\n", 2, "color component -1 outside 0..1"},
+    {CAM "light directional direction 0 0 0 color 1 1 1\n", 2, "direction has zero length"},
+    {CAM "light spot position 0 0 0 direction 0 0 0 angle 10 color 1 1 1\n", 2, "direction has zero length"},
+    {CAM "light directional direction 0.00002 0.00011 0.00003 color 1 1 1\n", 2,
+     "direction is too short for Q16.16: rounding it to 1/65536 turns it by"},
+    {CAM "light directional direction 0 -9000 0 color 1 1 1\n", 2, "value -9000 out of range (|component| <= "},
+    {CAM "light spot position 0 0 0 direction 0 -1 0 angle 0 color 1 1 1\n", 2,
+     "angle must be inside (0, 90] degrees (the cone's half-angle), got 0"},
+    {CAM "light spot position 0 0 0 direction 0 -1 0 angle 90.001 color 1 1 1\n", 2,
+     "angle must be inside (0, 90] degrees (the cone's half-angle), got 90.001"},
+    {CAM "light spot position 0 0 0 direction 0 -1 0 angle -5 color 1 1 1\n", 2, "got -5"},
+    {CAM "light spot position 0 0 0 direction 0 -1 0 angle 1e999 color 1 1 1\n", 2, "got 1e999"},
+    {CAM "light spot position 0 0 0 direction 0 -1 0 angle ten color 1 1 1\n", 2, "angle: 'ten' is not a number"},
+    /* materials */
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material\n", 2,
+     "'material' needs a value (flat, lambert or phong)"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material metal\n", 2,
+     "unknown material 'metal' (expected flat, lambert or phong)"},
+    {CAM "plane point 0 0 0 normal 0 1 0 color 1 0 0 material Phong specular 1 1 1 exponent 2\n", 2,
+     "unknown material 'Phong'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material flat material lambert\n", 2,
+     "duplicate field 'material' in sphere"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material lambert flat\n", 2, "unexpected 'flat' after sphere"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong exponent 8\n", 2,
+     "missing field 'specular' for sphere with material phong"},
+    {CAM "box min 0 0 0 max 1 1 1 color 1 0 0 material phong specular 1 1 1\n", 2,
+     "missing field 'exponent' for box with material phong"},
+    {CAM "triangle a 0 0 0 b 1 0 0 c 0 1 0 color 1 0 0 material lambert specular 1 1 1\n", 2,
+     "'specular' is only for material phong, not lambert"},
+    {CAM "plane point 0 0 0 normal 0 1 0 color 1 0 0 material flat exponent 3\n", 2,
+     "'exponent' is only for material phong, not flat"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 specular 1 1 1 exponent 3\n", 2,
+     "'specular' is only for material phong (add 'material phong')"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 exponent 3\n", 2,
+     "'exponent' is only for material phong (add 'material phong')"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 0\n", 2,
+     "exponent 0 outside 1..1024"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 1025\n", 2,
+     "exponent 1025 outside 1..1024"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 99999999999999\n", 2,
+     "exponent 99999999999999 outside 1..1024"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 64.5\n", 2,
+     "exponent must be an integer in 1..1024, got '64.5'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 1e2\n", 2,
+     "exponent must be an integer in 1..1024, got '1e2'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent -3\n", 2,
+     "exponent must be an integer in 1..1024, got '-3'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent\n", 2,
+     "'exponent' needs a value (an integer)"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 exponent 4\n", 2,
+     "'specular' needs 3 numbers, got 2"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 2 1 exponent 4\n", 2,
+     "specular color component 2 outside 0..1"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 specular 1 1 1 exponent 4\n", 2,
+     "duplicate field 'specular' in sphere"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 4 exponent 5\n", 2,
+     "duplicate field 'exponent' in sphere"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 shadows off\n", 2, "sphere has no field 'shadows'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 material lambert\n", 2, "missing field 'color' for sphere"},
+    {"ambiant 0 0 0\n" CAM, 1, "unknown keyword 'ambiant' (expected image, background, ambient, camera, light"},
     /* image */
     {"image 0 5\n" CAM, 1, "image size must be 1..4096 x 1..4096, got 0x5"},
     {"image 4097 5\n" CAM, 1, "got 4097x5"},
@@ -454,17 +635,17 @@ static void test_err_buffers(void)
 
 /* Cheap in-process mutation run: the real fuzzing is libFuzzer's job, but
  * under ASan/UBSan this catches the obvious crashes on every test run. */
-static void test_mutations(void)
+static void test_mutations_of(const char *scene)
 {
     static char buf[2048];
-    size_t base = strlen(good_scene);
+    size_t base = strlen(scene);
     uint32_t state = 12345;
     int iter, bad_rc = 0, bad_err = 0;
 
     for (iter = 0; iter < 20000; iter++) {
         size_t n = base;
         int k, edits;
-        memcpy(buf, good_scene, base);
+        memcpy(buf, scene, base);
         state = state * 1664525u + 1013904223u;
         edits = 1 + (int)((state >> 24) % 4);
         for (k = 0; k < edits; k++) {
@@ -495,10 +676,18 @@ static void test_mutations(void)
                 bad_err++;
             if (rc == 0 && (g_scene.count < 0 || g_scene.count > SCENE_MAX_OBJECTS))
                 bad_rc++;
+            if (rc == 0 && (g_scene.nlights < 0 || g_scene.nlights > SCENE_MAX_LIGHTS))
+                bad_rc++;
         }
     }
     CHECK_MSG(bad_rc == 0, "%d bad results", bad_rc);
     CHECK_MSG(bad_err == 0, "%d bad messages, last \"%s\"", bad_err, g_err);
+}
+
+static void test_mutations(void)
+{
+    test_mutations_of(good_scene);
+    test_mutations_of(lit_scene);
 }
 
 static int write_file(const char *path, const char *data, size_t len)
@@ -651,6 +840,8 @@ int main(void)
     test_embedded_nul();
     test_long_lines();
     test_capacity();
+    test_lights_materials();
+    test_light_capacity();
     test_err_buffers();
     test_mutations();
     test_load();
