@@ -110,6 +110,7 @@ TEST_PREREQ  :=
 -include tests/fx.mk
 -include tests/examples.mk
 -include tests/scene_light.mk
+-include tests/skip.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)

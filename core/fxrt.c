@@ -29,9 +29,13 @@ int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
     default: return FXRT_ERR_KIND;
     }
     if (id >= 0 && o->material.kind != MATERIAL_FLAT) {
+#if FXRT_MAX_LIGHTS > 0
         fxrt_err_t e = world_set_material(w, id, &o->material);
         if (e != FXRT_OK)
             return e;
+#else
+        return FXRT_ERR_MATERIAL; /* lighting compiled out */
+#endif
     }
     return id;
 }

@@ -248,6 +248,12 @@
 #if FXRT_MAX_LIGHTS == 0 && (FXRT_SHADOWS || FXRT_PHONG)
 #error "FXRT_SHADOWS and FXRT_PHONG need FXRT_MAX_LIGHTS > 0"
 #endif
+/* FXRT_STATS 1 counts the shading work (core/fxrt_stats.h) for tests;
+ * 0 (default) compiles the counters out. */
+#ifndef FXRT_STATS
+#define FXRT_STATS 0
+#endif
+
 /* Largest Phong exponent (the scene format allows 1..1024). */
 #define FXRT_PHONG_MAX_EXPONENT 1024
 

@@ -200,6 +200,7 @@ void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec
     *t = near ? t0 : num_add(b, h);
     vec3_t hd = vec3_scale(ray->d, h);
     vec3_t v = near ? vec3_sub(vec3_neg(q), hd) : vec3_add(vec3_neg(q), hd);
+    FXRT_COUNT(n_normalised);
     if (!vec3_normalize(&v))
         v = vec3_neg(ray->d); /* radius below 1 LSB: face the ray */
     *n = v;

@@ -22,6 +22,7 @@ num_t num_cot_deg(num_t deg)
  * light's cone, once per light at set-up). */
 num_t num_cos_deg(num_t deg)
 {
+    FXRT_COUNT(cosines);
     num_t x = deg * NUM(3.14159265358979323846 / 180.0);
     num_t x2 = x * x;
     num_t c = NUM_ZERO, tc = NUM_ONE;

@@ -21,6 +21,7 @@
 #include "fxrt_config.h"
 #include "fx.h"
 #include "fxrt_names.h"
+#include "fxrt_stats.h"
 
 #if FXRT_NUMBER == FXRT_Q16
 
@@ -46,7 +47,11 @@ static inline num_t num_mul_int(num_t a, int32_t i) { return fx_mul_int(a, i); }
 /* a / 2, rounded to nearest, ties toward +infinity. */
 static inline num_t num_half(num_t a) { return (fx_t)(((int64_t)a + 1) >> 1); }
 static inline num_t num_cot_deg(num_t deg) { return fx_cot_deg(deg); }
-static inline num_t num_cos_deg(num_t deg) { return fx_cos_deg(deg); }
+static inline num_t num_cos_deg(num_t deg)
+{
+    FXRT_COUNT(cosines);
+    return fx_cos_deg(deg);
+}
 
 static inline numw_t numw_mul(num_t a, num_t b) { return (fxw_t)a * b; }
 static inline numw_t numw_add(numw_t a, numw_t b) { return fxw_add(a, b); }
@@ -81,12 +86,17 @@ static inline num_t numw_pow_int(numw_t x, uint32_t k)
 {
     uint32_t b = x <= 0 ? 0u : (x >= ((int64_t)1 << 32) ? 0x80000000u : (uint32_t)((uint64_t)x >> 1));
     uint32_t acc = 0x80000000u; /* 1.0 in Q1.31 */
+    FXRT_COUNT(phong);
     while (k) {
-        if (k & 1u)
+        if (k & 1u) {
             acc = (uint32_t)((fx_umul32(acc, b) + 0x40000000u) >> 31);
+            FXRT_COUNT(pow_products);
+        }
         k >>= 1;
-        if (k)
+        if (k) {
             b = (uint32_t)((fx_umul32(b, b) + 0x40000000u) >> 31);
+            FXRT_COUNT(pow_products);
+        }
     }
     return (fx_t)((acc + 0x4000u) >> 15);
 }
@@ -143,12 +153,17 @@ static inline numw_t numw_mul_int(numw_t w, int32_t i) { return w * (num_t)i; }
 static inline num_t numw_pow_int(numw_t x, uint32_t k)
 {
     num_t b = x <= NUM_ZERO ? NUM_ZERO : (x >= NUM_ONE ? NUM_ONE : x), acc = NUM_ONE;
+    FXRT_COUNT(phong);
     while (k) {
-        if (k & 1u)
+        if (k & 1u) {
             acc = acc * b;
+            FXRT_COUNT(pow_products);
+        }
         k >>= 1;
-        if (k)
+        if (k) {
             b = b * b;
+            FXRT_COUNT(pow_products);
+        }
     }
     return acc;
 }

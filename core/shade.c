@@ -1,6 +1,10 @@
 /* shade: the lighting model (see shade.h). */
 #include "shade.h"
 
+#if FXRT_STATS
+fxrt_stats_t fxrt_stats;
+#endif
+
 #if FXRT_MAX_LIGHTS > 0
 
 /* A specular colour (fractions) in 1/255 units: exact in Q16.16. */
@@ -27,6 +31,7 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
 {
     const geom_common_t *obj = world_common(w, kind, index);
     const material_t *m = &obj->mat;
+    FXRT_COUNT(shaded);
     bool lit = m->kind != MATERIAL_FLAT;
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw(n_geo, d) > 0;
@@ -49,6 +54,7 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
             if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))
                 continue; /* outside the cone */
             l = v;
+            FXRT_COUNT(l_normalised);
             if (!vec3_normalize(&l))
                 continue; /* the light is at p: no direction, no light */
         }

@@ -30,6 +30,7 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, vec3_t p, const light_t *l,
                     vec3_t ldir, num_t dist)
 {
+    FXRT_COUNT(shadow_rays);
     bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
     if (inside && solid && !shadow_light_inside(w, kind, index, l))
         return true;

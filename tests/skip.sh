@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The renderer links only what a scene needs (issue 11): tests/skip_app.c
+# built for the Cortex-M0 with --gc-sections in three configurations:
+#   flat        FXRT_MAX_LIGHTS 0: no shading, shadow or key code at all
+#   lit, no shadows   FXRT_SHADOWS 0: shading, but no shadow-ray code
+#   lit, shadows      both (the control: the symbols exist and are found)
+# and none of them links a libm function (pow, acos, cos, sqrt, ...).
+# Then the counters of tests/test_skip.c (built with FXRT_STATS 1) run.
+set -u
+. "$(dirname "$0")/lib.sh"
+out=$BUILD/tests/skip
+mkdir -p "$out"
+CORE=$(cd core && ls *.c | sed "s/\.c$//")
+LIGHTING='^(shade_point|shade_object|render_shade_row|shadow_blocked|world_occluded|world_set_material|world_add_light|geom_(plane|sphere|triangle|box)_surface)$'
+SHADOW='^(shadow_blocked|world_occluded)$'
+LIBM='^(pow|powf|acos|acosf|cos|cosf|sin|sinf|sqrt|sqrtf|exp|log)$'
+
+build() { # NAME FLAGS...
+    local name=$1
+    shift
+    local srcs=()
+    for f in $CORE; do srcs+=(core/$f.c); done
+    arm-none-eabi-gcc -std=c11 -O2 -mcpu=cortex-m0 -mthumb -ffreestanding -ffunction-sections -fdata-sections \
+        -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=1 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 \
+        -DFXRT_RENDER_MAX_WIDTH=32 "$@" -Icore tests/skip_app.c "${srcs[@]}" \
+        -nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Wl,-e,main \
+        -o "$out/$name.elf" 2>"$out/$name.log"
+}
+syms() { arm-none-eabi-nm "$out/$1.elf" | awk '$2 ~ /^[TtWw]$/ {print $3}' | sort -u; }
+
+if ! command -v arm-none-eabi-gcc >/dev/null; then
+    bad "arm-none-eabi-gcc not installed (run make deps)"
+    report skip
+    exit 1
+fi
+check "flat build links" build flat -DFXRT_MAX_LIGHTS=0 -DSKIP_LIT=0
+check "lit build without shadows links" build noshadow -DFXRT_MAX_LIGHTS=1 -DFXRT_SHADOWS=0 -DFXRT_PHONG=0 -DSKIP_LIT=1
+check "lit build with shadows links" build shadow -DFXRT_MAX_LIGHTS=1 -DFXRT_SHADOWS=1 -DFXRT_PHONG=0 -DSKIP_LIT=1
+flat=$(syms flat | grep -E "$LIGHTING" || true)
+check "flat materials link no lighting code (found: $flat)" test -z "$flat"
+noshadow=$(syms noshadow | grep -E "$SHADOW" || true)
+check "no shadow-casting light links no shadow-ray code (found: $noshadow)" test -z "$noshadow"
+check "the lit build links shade_point (control)" bash -c "arm-none-eabi-nm '$out/noshadow.elf' | grep -qw shade_point"
+check "the shadow build links shadow_blocked and world_occluded (control)" \
+    bash -c "arm-none-eabi-nm '$out/shadow.elf' | grep -qw shadow_blocked && arm-none-eabi-nm '$out/shadow.elf' | grep -qw world_occluded"
+for b in flat noshadow shadow; do
+    m=$(arm-none-eabi-nm "$out/$b.elf" | awk '{print $NF}' | grep -E "$LIBM" || true)
+    check "$b: no libm function linked (found: $m)" test -z "$m"
+done
+for b in flat noshadow shadow; do
+    echo "$b: text $(arm-none-eabi-size "$out/$b.elf" | awk 'NR == 2 {print $1}') bytes"
+done
+for n in q16 double; do
+    bin=$BUILD/tests/test_skip_$n
+    if [ -x "$bin" ]; then
+        "$bin" >"$out/counters-$n.log" 2>&1
+        rc=$?
+        line=$(tail -n 1 "$out/counters-$n.log")
+        p=$(sed -nE 's/.*: ([0-9]+) passed, ([0-9]+) failed/\1/p' <<<"$line")
+        f=$(sed -nE 's/.*: ([0-9]+) passed, ([0-9]+) failed/\2/p' <<<"$line")
+        PASSED=$((PASSED + ${p:-0}))
+        FAILED=$((FAILED + ${f:-1}))
+        [ "$rc" -eq 0 ] || cat "$out/counters-$n.log" >&2
+    else
+        bad "$bin missing"
+    fi
+done
+report skip

@@ -1,0 +1,208 @@
+/* The renderer skips what a scene does not need (issue 11), proved by the
+ * work counters of core/fxrt_stats.h (this program and its core are built
+ * with FXRT_STATS 1, once per number type, see tests/skip.mk):
+ *   - a light behind a surface (n . l <= 0) sends no shadow ray;
+ *   - a directional light's l is never normalised per pixel;
+ *   - flat pieces' normals are constant (no per-pixel normalisation);
+ *   - the Phong power takes O(log k) products (repeated squaring);
+ *   - a spot light's cosine is computed once, at set-up;
+ *   - flat materials cost no lighting at all.
+ * Expected counts come from the scene's own geometry (pixel counts from
+ * the keys, bit counts of the exponent), not from the renderer's output
+ * values. tests/skip.sh checks the link-time side with nm. */
+#include <string.h>
+
+#include "../core/fxrt.h"
+#include "check.h"
+
+#if FXRT_NUMBER == FXRT_Q16
+#define V(x) ((fx_t)((x) * 65536.0 + ((x) < 0 ? -0.5 : 0.5)))
+#else
+#define V(x) ((num_t)(x))
+#endif
+#define P(x, y, z) vec3_make(V(x), V(y), V(z))
+#define COL(r, g, b) color_make(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
+#define FRAC(r, g, b) color_make(V(r), V(g), V(b))
+
+enum { W = 64, H = 48 };
+static world_t world;
+static render_t rs;
+static uint8_t img[W * H * 3];
+static uint32_t keys[W * H];
+
+static void reset(void)
+{
+    memset(&fxrt_stats, 0, sizeof fxrt_stats);
+}
+
+/* Render the frame (fast renderer), with keys when want_keys. */
+static void render(const cam_t *cam, bool want_keys)
+{
+    CHECK(fxrt_render_setup(&rs, &world, cam) == FXRT_OK);
+    reset();
+    for (int y = 0; y < H; y++) {
+        rs.keys = want_keys ? keys + W * y : NULL;
+        render_row(&rs, y, img + 3 * W * y);
+    }
+}
+
+static long count_id(uint16_t id)
+{
+    long n = 0;
+    for (int i = 0; i < W * H; i++)
+        n += (keys[i] >> 8) == id;
+    return n;
+}
+
+static void lit(int32_t id, material_kind_t k, int exponent)
+{
+    material_t m = {0};
+    m.kind = (uint8_t)k;
+    m.exponent = (uint16_t)exponent;
+    m.specular = FRAC(0.8, 0.6, 0.4);
+    CHECK(world_set_material(&world, id, &m) == FXRT_OK);
+}
+
+static void camera(cam_t *cam)
+{
+    CHECK(fxrt_camera_perspective(cam, P(0, 4, 6), P(0, -4, -6), P(0, 1, 0), V(45), W, H) == FXRT_OK);
+}
+
+/* A plane lit from below sends no shadow ray; lit from above, one per
+ * pixel it covers (every plane pixel faces the light). */
+static void test_behind(void)
+{
+    cam_t cam;
+    camera(&cam);
+    for (int above = 0; above < 2; above++) {
+        fxrt_world_init(&world, COL(0, 0, 0));
+        int32_t id = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.7, 0.3, 0.2));
+        lit(id, MATERIAL_LAMBERT, 0);
+        CHECK(world_add_light(&world, LIGHT_POINT, P(0.3, above ? 5 : -5, 0.2), P(0, 0, 0), V(0),
+                              FRAC(1, 1, 1), true) == 0);
+        render(&cam, true);
+        long plane = count_id((uint16_t)id);
+        CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
+        if (above)
+            CHECK_MSG(fxrt_stats.shadow_rays == (uint32_t)plane, "light above: %u shadow rays for %ld pixels",
+                      (unsigned)fxrt_stats.shadow_rays, plane);
+        else
+            CHECK_MSG(fxrt_stats.shadow_rays == 0, "light behind: %u shadow rays", (unsigned)fxrt_stats.shadow_rays);
+    }
+}
+
+/* A scene of every kind: directional lights need no per-pixel
+ * normalisation of l; point lights one per shaded pixel. Flat pieces
+ * normalise no normal; spheres one per shaded pixel. */
+static void test_normalisations(void)
+{
+    cam_t cam;
+    camera(&cam);
+    for (int kind = 0; kind < 2; kind++) {
+        for (int with_sphere = 0; with_sphere < 2; with_sphere++) {
+            fxrt_world_init(&world, COL(0.1, 0.2, 0.3));
+            world_set_ambient(&world, FRAC(0.2, 0.1, 0.05));
+            lit(world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.9, 0.1, 0.3)), MATERIAL_LAMBERT, 0);
+            lit(world_add_box(&world, P(-1.5, 0, -1), P(-0.5, 1, 0), COL(0.2, 0.3, 0.9)), MATERIAL_PHONG, 33);
+            lit(world_add_triangle(&world, P(0.5, 0, -1), P(1.5, 0, -1), P(1, 1.2, -1), COL(0.6, 0.6, 0.1)),
+                MATERIAL_LAMBERT, 0);
+            int32_t sid = -1;
+            if (with_sphere) {
+                sid = world_add_sphere(&world, P(0.2, 0.6, 0.8), V(0.6), COL(0.1, 0.8, 0.2));
+                lit(sid, MATERIAL_PHONG, 64);
+            }
+            if (kind == 0)
+                world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(-1, -2, -1.5), V(0), FRAC(1, 0.9, 0.8), true);
+            else
+                world_add_light(&world, LIGHT_POINT, P(2, 3, 2), P(0, 0, 0), V(0), FRAC(1, 0.9, 0.8), true);
+            render(&cam, true);
+            long covered = W * H - count_id(0xFFFF);
+            CHECK_MSG(fxrt_stats.shaded == (uint32_t)covered, "shaded %u of %ld covered pixels",
+                      (unsigned)fxrt_stats.shaded, covered);
+            if (kind == 0)
+                CHECK_MSG(fxrt_stats.l_normalised == 0, "directional: %u normalisations of l",
+                          (unsigned)fxrt_stats.l_normalised);
+            else
+                CHECK_MSG(fxrt_stats.l_normalised == (uint32_t)covered, "point: %u normalisations of l for %ld",
+                          (unsigned)fxrt_stats.l_normalised, covered);
+            long spheres = sid >= 0 ? count_id((uint16_t)sid) : 0;
+            CHECK_MSG(fxrt_stats.n_normalised == (uint32_t)spheres, "%u normal normalisations, %ld sphere pixels",
+                      (unsigned)fxrt_stats.n_normalised, spheres);
+        }
+    }
+}
+
+/* Phong powers: products per power <= 2 * bits(k), for small and large k. */
+static void test_pow(void)
+{
+    static const int ks[] = {1, 2, 3, 64, 100, 1000, 1023, 1024};
+    for (size_t i = 0; i < sizeof ks / sizeof ks[0]; i++) {
+        int k = ks[i], bits = 0;
+        while ((k >> bits) > 0)
+            bits++;
+        reset();
+        for (int j = 0; j <= 16; j++)
+            (void)numw_pow_int(numw_mul(V(j / 16.0), NUM_ONE), (uint32_t)k);
+        CHECK_MSG(fxrt_stats.phong == 17, "k=%d: %u powers", k, (unsigned)fxrt_stats.phong);
+        CHECK_MSG(fxrt_stats.pow_products <= 17u * 2u * (unsigned)bits, "k=%d: %u products for 17 powers (cap %u)",
+                  k, (unsigned)fxrt_stats.pow_products, 17u * 2u * (unsigned)bits);
+        CHECK_MSG(fxrt_stats.pow_products >= 17u * (unsigned)(bits - 1), "k=%d: %u products", k,
+                  (unsigned)fxrt_stats.pow_products);
+    }
+}
+
+/* Spot lights: the cosine is taken once per light, at world_add_light,
+ * however many pixels the frame has. */
+static void test_spot(void)
+{
+    cam_t cam;
+    camera(&cam);
+    fxrt_world_init(&world, COL(0, 0, 0));
+    lit(world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.5, 0.5, 0.5)), MATERIAL_LAMBERT, 0);
+    reset();
+    world_add_light(&world, LIGHT_SPOT, P(0, 4, 0), P(0, -1, 0), V(20), FRAC(1, 1, 1), false);
+    world_add_light(&world, LIGHT_SPOT, P(1, 4, 0), P(0, -1, 0.2), V(35.5), FRAC(0.5, 0.2, 1), false);
+    CHECK_MSG(fxrt_stats.cosines == 2, "%u cosines at set-up", (unsigned)fxrt_stats.cosines);
+    render(&cam, true);
+    CHECK_MSG(fxrt_stats.cosines == 0, "%u cosines while rendering", (unsigned)fxrt_stats.cosines);
+    CHECK(fxrt_stats.shaded > 0);
+    long inside = 0;
+    for (int i = 0; i < W * H; i++)
+        inside += (keys[i] & 0xFF) != 0 && keys[i] != RENDER_KEY_MISS;
+    CHECK_MSG(inside > 0 && inside < (long)fxrt_stats.shaded, "%ld of %u pixels inside a cone", inside,
+              (unsigned)fxrt_stats.shaded);
+}
+
+/* Flat materials: lights in the world, but nothing shaded and no pixel
+ * differs from the world without lights. */
+static void test_flat(void)
+{
+    cam_t cam;
+    camera(&cam);
+    static uint8_t ref[W * H * 3];
+    for (int with_lights = 0; with_lights < 2; with_lights++) {
+        fxrt_world_init(&world, COL(0.1, 0.1, 0.1));
+        world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.7, 0.2, 0.1));
+        world_add_sphere(&world, P(0, 1, 0), V(0.8), COL(0.3, 0.6, 0.9));
+        if (with_lights) {
+            world_set_ambient(&world, FRAC(0.3, 0.3, 0.3));
+            world_add_light(&world, LIGHT_POINT, P(2, 3, 2), P(0, 0, 0), V(0), FRAC(1, 1, 1), true);
+        }
+        render(&cam, false);
+        if (!with_lights)
+            memcpy(ref, img, sizeof img);
+        CHECK_MSG(fxrt_stats.shaded == 0 && fxrt_stats.shadow_rays == 0, "flat: %u shaded, %u shadow rays",
+                  (unsigned)fxrt_stats.shaded, (unsigned)fxrt_stats.shadow_rays);
+    }
+    CHECK(memcmp(ref, img, sizeof img) == 0);
+}
+
+int main(void)
+{
+    test_behind();
+    test_normalisations();
+    test_pow();
+    test_spot();
+    test_flat();
+    return check_report("test_skip_" NUM_NAME);
+}
