@@ -109,6 +109,7 @@ TEST_PREREQ  :=
 -include tests/fit.mk
 -include tests/fx.mk
 -include tests/examples.mk
+-include tests/lit.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)
