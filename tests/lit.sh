@@ -4,7 +4,7 @@
 # float, and "fxrt compare DOUBLE OTHER --scene SCENE" measures the error
 # against the double reference; "near a discontinuity" means a pixel whose
 # 8-neighbourhood holds another key (object id and set of lights that reach
-# it) in the double render (README, "Lighting"). Checks, per scene:
+# it) in the double render (issue 11; docs/ACCURACY.md). Checks, per scene:
 #   - Q16.16 against double: within1_pct >= 99.9 (pixels within 1/255 in
 #     every channel), far_within2_pct == 100 and far_max_err <= 2 (every
 #     pixel away from discontinuities within 2/255), psnr >= 50 dB;
