@@ -100,6 +100,11 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
     c->color = color;
     c->rgb = color_to_rgb8(color);
     c->id = id;
+#if FXRT_MAX_LIGHTS > 0
+    c->mat.kind = MATERIAL_FLAT;
+    c->mat.exponent = 0;
+    c->mat.specular = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+#endif
 }
 
 /* Where the ray meets the plane through a with normal n: t = (a - o) . n /

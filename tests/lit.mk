@@ -4,8 +4,7 @@
 #
 #   make lit        run tests/lit.sh alone (through tests/run.sh)
 #
-# Not yet part of `make test` (it needs the lit renderer and the key-based
-# compare metrics); to add it: SUITES_EXTRA += tests/lit.sh
+# Part of `make test` (SUITES_EXTRA below).
 
 lit: deps $(BUILD)/fxrt
 	$(Q)BUILD=$(BUILD) tests/run.sh tests/lit.sh
