@@ -274,16 +274,16 @@ bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
 
 bool geom_triangle_occludes(const geom_triangle_t *tr, const ray_t *ray, num_t tmax)
 {
-    if (tr->degenerate)
+    /* The plane first (two dot products): most shadow rays do not cross
+     * it in (0, tmax), and then the edges are not needed. */
+    if (tr->degenerate || !geom_flat_occludes(tr->a, tr->n, ray, tmax))
         return false;
     numw_t e0 = geom_edge(tr->a, tr->b, ray);
     numw_t e1 = geom_edge(tr->b, tr->c, ray);
     numw_t e2 = geom_edge(tr->c, tr->a, ray);
     bool neg = e0 < 0 || e1 < 0 || e2 < 0;
     bool pos = e0 > 0 || e1 > 0 || e2 > 0;
-    if (neg && pos)
-        return false;
-    return geom_flat_occludes(tr->a, tr->n, ray, tmax);
+    return !(neg && pos);
 }
 
 void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n)
