@@ -86,6 +86,7 @@
 #define FXRT_RENDER_H
 
 #include "cam.h"
+#include "shade.h"
 #include "world.h"
 
 #if FXRT_NUMBER == FXRT_Q16
@@ -210,6 +211,8 @@ typedef struct {
      * i's material is not flat. */
     uint16_t vis[FXRT_RENDER_MAX_WIDTH];
     bool any_lit;
+    /* Per object (index into obj): its shading constants, once per frame. */
+    shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
 #endif
     /* Optional, set by the caller after render_setup: when not NULL,
      * render_row and render_row_reference also write each pixel's key

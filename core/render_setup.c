@@ -721,6 +721,13 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     for (uint16_t i = 0; i < w->n_boxes; i++)
         render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
 #endif
+#if FXRT_MAX_LIGHTS > 0
+    for (uint16_t i = 0; r->any_lit && i < r->count; i++) {
+        const geom_common_t *c = world_common(w, (geom_kind_t)r->obj[i].geom, r->obj[i].index);
+        if (c->mat.kind != MATERIAL_FLAT)
+            shade_consts(w, c, &r->shade_k[i]);
+    }
+#endif
     return r->error == NULL;
 }
 

@@ -7,13 +7,48 @@ fxrt_stats_t fxrt_stats;
 
 #if FXRT_MAX_LIGHTS > 0
 
-#if FXRT_PHONG
-/* A specular colour (fractions) in 1/255 units: exact in Q16.16. */
-static color_t shade_255(color_t f)
+/* Colour arithmetic of the light sum. Every term is at most 255 (1/255
+ * units) times fractions <= 1, and the sum of the ambient term and two
+ * terms per light stays below 255 (1 + 2 FXRT_MAX_LIGHTS) = 4335, far
+ * inside Q16.16: the products are fx_mul's rounding without its
+ * saturation checks, and the sums plain additions. Identical values. */
+#if FXRT_NUMBER == FXRT_Q16
+static inline num_t shade_mul(num_t a, num_t b)
 {
-    return color_make(num_mul_int(f.r, 255), num_mul_int(f.g, 255), num_mul_int(f.b, 255));
+    return (fx_t)(((int64_t)a * b + FX_HALF) >> FX_FRAC_BITS);
 }
+static inline num_t shade_add(num_t a, num_t b)
+{
+    return (fx_t)((uint32_t)a + (uint32_t)b);
+}
+#else
+static inline num_t shade_mul(num_t a, num_t b) { return a * b; }
+static inline num_t shade_add(num_t a, num_t b) { return a + b; }
 #endif
+static inline color_t shade_filter(color_t a, color_t f)
+{
+    return color_make(shade_mul(a.r, f.r), shade_mul(a.g, f.g), shade_mul(a.b, f.b));
+}
+/* c + a * s */
+static inline color_t shade_madd(color_t c, color_t a, num_t s)
+{
+    return color_make(shade_add(c.r, shade_mul(a.r, s)), shade_add(c.g, shade_mul(a.g, s)),
+                      shade_add(c.b, shade_mul(a.b, s)));
+}
+
+void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k)
+{
+    k->ambient = shade_filter(obj->color, w->ambient);
+    for (uint8_t i = 0; i < w->n_lights; i++) {
+        k->kd[i] = shade_filter(obj->color, w->lights[i].color);
+#if FXRT_PHONG
+        /* The specular colour (fractions) in 1/255 units: exact in Q16.16. */
+        color_t s = obj->mat.specular;
+        color_t s255 = color_make(num_mul_int(s.r, 255), num_mul_int(s.g, 255), num_mul_int(s.b, 255));
+        k->ks[i] = shade_filter(s255, w->lights[i].color);
+#endif
+    }
+}
 
 /* Spot cone: (-l) . s >= cos(angle) for l = v / |v|, compared as
  * (-v) . s >= cos(angle) |v|: cosines, no acos, and no rounding of l. */
@@ -31,15 +66,25 @@ static bool shade_in_cone(const light_t *L, vec3_t v, num_t dist)
 color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
                     uint8_t *mask)
 {
+    return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
+}
+
+color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                      const shade_k_t *k, uint8_t *mask)
+{
     const geom_common_t *obj = world_common(w, kind, index);
     const material_t *m = &obj->mat;
     FXRT_COUNT(shaded);
     bool lit = m->kind != MATERIAL_FLAT;
+    shade_k_t own;
+    if (lit && !k) {
+        shade_consts(w, obj, &own);
+        k = &own;
+    }
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw(n_geo, d) > 0;
     vec3_t n = inside ? vec3_neg(n_geo) : n_geo;
-    color_t cd = obj->color;
-    color_t c = lit ? color_mul(cd, w->ambient) : cd;
+    color_t c = lit ? k->ambient : obj->color;
     uint8_t bits = 0;
     for (uint8_t i = 0; i < w->n_lights; i++) {
         const light_t *L = &w->lights[i];
@@ -70,14 +115,13 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
         if (!lit)
             continue;
         num_t ndl = numw_round(ndlw);
-        c = color_add(c, color_scale(color_mul(cd, L->color), ndl));
+        c = shade_madd(c, k->kd[i], ndl);
 #if FXRT_PHONG
         if (m->kind == MATERIAL_PHONG) {
             vec3_t r = vec3_sub(vec3_scale(n, num_mul_int(ndl, 2)), l);
             numw_t rde = vec3_dotw(r, vec3_neg(d)); /* r . e, e = -d */
             if (rde > 0)
-                c = color_add(c, color_scale(color_mul(shade_255(m->specular), L->color),
-                                             numw_pow_int(rde, m->exponent)));
+                c = shade_madd(c, k->ks[i], numw_pow_int(rde, m->exponent));
         }
 #endif
     }
@@ -87,6 +131,12 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
 }
 
 color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask)
+{
+    return shade_object_k(w, kind, index, ray, NULL, mask);
+}
+
+color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
+                       uint8_t *mask)
 {
     const geom_common_t *obj = world_common(w, kind, index);
     if (obj->mat.kind == MATERIAL_FLAT && !mask)
@@ -108,7 +158,7 @@ color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const r
 #endif
     default: break;
     }
-    return shade_point(w, kind, index, ray_at(ray, t), n, ray->d, mask);
+    return shade_point_k(w, kind, index, ray_at(ray, t), n, ray->d, k, mask);
 }
 
 #endif

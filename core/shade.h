@@ -24,6 +24,21 @@
 
 #include "world.h"
 
+/* What the light sum needs of one object that does not change within a
+ * frame, computed once per frame and object (render_setup) instead of at
+ * every pixel: the ambient term c_d (.) c_a and, per light, the diffuse
+ * colour c_d (.) c_l and the specular colour c_s (.) c_l in 1/255 units. */
+typedef struct {
+    color_t ambient;
+    color_t kd[FXRT_MAX_LIGHTS > 0 ? FXRT_MAX_LIGHTS : 1];
+#if FXRT_PHONG
+    color_t ks[FXRT_MAX_LIGHTS];
+#endif
+} shade_k_t;
+
+/* Fill k for object obj of world w. */
+void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k);
+
 /* The colour (1/255 units, unclamped) of object `index` of `kind` seen
  * along `ray`, which the caller has found to meet it (the renderer's
  * visibility pass, or world_hit): the hit point and normal come from the
@@ -32,11 +47,16 @@
  * light i), also for a flat material; without it a flat object costs
  * nothing but its colour. */
 color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask);
+/* The same with the object's per-frame constants (NULL: computed here). */
+color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
+                       uint8_t *mask);
 
 /* The light sum at hit point p of object (kind, index) with geometric unit
  * normal n_geo (not yet turned) for a ray of unit direction d. */
 color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
                     uint8_t *mask);
+color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                      const shade_k_t *k, uint8_t *mask);
 
 /* Shadow ray (FXRT_SHADOWS 1): is light `l`, in unit direction ldir at
  * distance dist (NUM_MAX for a directional light) from p, blocked? p lies

@@ -48,7 +48,8 @@ bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t ski
 #if FXRT_MAX_SPHERES > 0
     for (uint16_t i = 0; i < w->n_spheres; i++) {
         num_t t;
-        if (w->spheres[i].obj.id != skip_id && geom_sphere_hit(&w->spheres[i], ray, &t) && t < tmax)
+        if (w->spheres[i].obj.id != skip_id && geom_sphere_hit(&w->spheres[i], ray, &t) &&
+            (t < tmax || tmax == NUM_MAX))
             return true;
     }
 #endif
