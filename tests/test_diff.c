@@ -1498,8 +1498,14 @@ static void eval_normal(const dcase_t *c, dres_t *res)
         double h = disc > 0 ? sqrt(disc) : 0.0;
         double t0 = b - h;
         double dh = (h > 0 ? fmin(sqrt(E), E / h) : sqrt(E)) / LSB + 0.5;
-        double vlen = sqrt(dot3(q, q) + h * h);
-        res->cond = (2.24 + dh) * LSB / vlen / LSB;
+        /* |v| is r only for a unit d: with |d|^2 = 1 + eps, q . d = -b eps,
+         * so a far sphere (b eps comparable to r) has a much shorter v,
+         * and the same |dv| turns the normal further. */
+        double v[3];
+        for (int i = 0; i < 3; i++)
+            v[i] = -q[i] + (t0 > 0 ? -h : h) * d[i];
+        double vlen = norm3(v);
+        res->cond = (2.24 + dh) / fmax(vlen, LSB);
         double tb = (SPHERE_T0 + dh) * LSB;
         res->band_ratio = ratio(t0, tb);
         /* independent: p = o + t d from the double build's t, n = (p - c) / |p - c| */
