@@ -2,7 +2,8 @@
 # (tests/test_diff.c, tests/diffk.c) and the kernel fuzzer
 # (tests/fuzz_kernels.c). Included by the top Makefile; variables DIFF_*.
 #
-#   make test           runs build/tests/test_diff (10^6 cases per kind)
+#   make test           runs build/tests/test_diff (10^6 cases per kind; ten
+#                       kinds, five of them lighting) and test_shade_*
 #   make stress         10^8 cases per kind on every core, with progress
 #   make fuzz-kernels   libFuzzer for FUZZ_SECONDS, artifacts in build/fuzz/
 

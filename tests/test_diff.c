@@ -17,6 +17,11 @@
  *      and a double hit beyond Q16.16 range is a q16 hit with t == FX_MAX,
  *  (c) cameras: both accept or both reject (unless within rounding of a
  *      limit); ray origins and directions within the stated bounds.
+ * Lighting (issue 11; docs/ACCURACY.md, "Shading error"): surface normals
+ * (normal), shade_point colours and light masks (shade, also against the
+ * formula written out here in long double), numw_pow_int (pow), the spot
+ * cone's decision (spot) and world_occluded (shadow), each within its
+ * stated bound or band.
  *
  * Usage: test_diff [CASES] [--seed N] [--jobs N] [--progress] [--only KIND]
  *        test_diff --replay KIND:INDEX [--seed N]
