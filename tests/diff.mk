@@ -2,7 +2,8 @@
 # (tests/test_diff.c, tests/diffk.c) and the kernel fuzzer
 # (tests/fuzz_kernels.c). Included by the top Makefile; variables DIFF_*.
 #
-#   make test           runs build/tests/test_diff (10^6 cases per kind)
+#   make test           runs build/tests/test_diff (10^6 cases per kind; ten
+#                       kinds, five of them lighting) and test_shade_*
 #   make stress         10^8 cases per kind on every core, with progress
 #   make fuzz-kernels   libFuzzer for FUZZ_SECONDS, artifacts in build/fuzz/
 
@@ -25,6 +26,15 @@ $(DIFF_BIN): $(DIFF_OBJ)
 
 SUITES_EXTRA += $(DIFF_BIN)
 TEST_PREREQ  += $(DIFF_BIN)
+
+# tests/test_shade.c: lit worlds built through the API, one binary per
+# number type (the Makefile's num_test_rules), also sanitized (sanitize.mk
+# builds SAN_EXTRA_BIN and sanitize.sh runs them).
+SHADE_TEST_BIN := $(foreach n,$(NUMBERS),$(BUILD)/tests/test_shade_$(n))
+$(foreach n,$(NUMBERS),$(eval $(call num_test_rules,test_shade,$(n))))
+SUITES_EXTRA  += $(SHADE_TEST_BIN)
+TEST_PREREQ   += $(SHADE_TEST_BIN)
+SAN_EXTRA_BIN += $(foreach n,$(NUMBERS),$(SAN_DIR)/tests/test_shade_$(n))
 
 # --- make stress -----------------------------------------------------------
 DIFF_STRESS_CASES ?= 100000000

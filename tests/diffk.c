@@ -172,3 +172,124 @@ int DIFFK_SYM(diffk_cam)(const diffk_cam_t *c, int n, const int *xs, const int *
     }
     return 0;
 }
+
+/* ---- lighting (issue 11) --------------------------------------------------- */
+#include "../core/shade.h"
+#include "../core/world.h"
+
+static color_t diffk_col(const double c[3])
+{
+    return color_make(diffk_num(c[0]), diffk_num(c[1]), diffk_num(c[2]));
+}
+
+/* A world_add_<kind> for a diffk_obj_t: the id, or a negative fxrt_err_t. */
+static int32_t diffk_add(world_t *w, const diffk_obj_t *o)
+{
+    color_t col = diffk_col((const double[3]){128, 128, 128});
+    switch (o->kind) {
+    case 0: return world_add_plane(w, diffk_vec(o->p[0]), diffk_vec(o->p[1]), col);
+    case 1: return world_add_sphere(w, diffk_vec(o->p[0]), diffk_num(o->radius), col);
+    case 2: return world_add_triangle(w, diffk_vec(o->p[0]), diffk_vec(o->p[1]), diffk_vec(o->p[2]), col);
+    default: return world_add_box(w, diffk_vec(o->p[0]), diffk_vec(o->p[1]), col);
+    }
+}
+
+int DIFFK_SYM(diffk_surface)(const diffk_obj_t *o, const diffk_ray_t *ray, double *t, double n[3])
+{
+    ray_t r = diffk_ray(ray);
+    num_t tt = NUM_ZERO;
+    vec3_t nn = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    color_t col = diffk_color();
+    switch (o->kind) {
+    case 0: {
+        geom_plane_t p;
+        if (!geom_plane_make(&p, diffk_vec(o->p[0]), diffk_vec(o->p[1]), col, 0))
+            return DIFFK_REJECTED;
+        geom_plane_surface(&p, &r, &tt, &nn);
+        break;
+    }
+    case 1: {
+        geom_sphere_t s;
+        if (!geom_sphere_make(&s, diffk_vec(o->p[0]), diffk_num(o->radius), col, 0))
+            return DIFFK_REJECTED;
+        geom_sphere_surface(&s, &r, &tt, &nn);
+        break;
+    }
+    case 2: {
+        geom_triangle_t tr;
+        if (!geom_triangle_make(&tr, diffk_vec(o->p[0]), diffk_vec(o->p[1]), diffk_vec(o->p[2]), col, 0))
+            return DIFFK_REJECTED;
+        if (tr.degenerate)
+            return DIFFK_DEGENERATE;
+        geom_triangle_surface(&tr, &r, &tt, &nn);
+        break;
+    }
+    default: {
+        geom_box_t b;
+        if (!geom_box_make(&b, diffk_vec(o->p[0]), diffk_vec(o->p[1]), col, 0))
+            return DIFFK_REJECTED;
+        geom_box_surface(&b, &r, &tt, &nn);
+        break;
+    }
+    }
+    *t = diffk_dbl(tt);
+    diffk_out(nn, n);
+    return DIFFK_HIT;
+}
+
+/* world_t holds every kind's capacity: static, not on the stack. */
+static world_t diffk_world;
+
+int DIFFK_SYM(diffk_shade)(const diffk_shade_t *sh, const double p[3], const double n[3], const double d[3],
+                           double rgb[3], int *mask)
+{
+    world_t *w = &diffk_world;
+    world_init(w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+    int32_t id = world_add_sphere(w, vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), NUM_ONE, diffk_col(sh->color));
+    if (id < 0)
+        return (int)id;
+    material_t m;
+    m.kind = (uint8_t)(sh->material == DIFFK_PHONG ? MATERIAL_PHONG : MATERIAL_LAMBERT);
+    m.exponent = (uint16_t)sh->exponent;
+    m.specular = diffk_col(sh->specular);
+    fxrt_err_t e = world_set_material(w, id, &m);
+    if (e == FXRT_OK)
+        e = world_set_ambient(w, diffk_col(sh->ambient));
+    if (e != FXRT_OK)
+        return (int)e;
+    for (int i = 0; i < sh->n_lights; i++) {
+        const diffk_light_t *L = &sh->lights[i];
+        int32_t r = world_add_light(w, (light_kind_t)L->kind, diffk_vec(L->pos), diffk_vec(L->dir),
+                                    diffk_num(L->angle), diffk_col(L->color), false);
+        if (r < 0)
+            return (int)r;
+    }
+    uint8_t bits = 0;
+    color_t c = shade_point(w, GEOM_SPHERE, 0, diffk_vec(p), diffk_vec(n), diffk_vec(d), &bits);
+    rgb[0] = diffk_dbl(c.r);
+    rgb[1] = diffk_dbl(c.g);
+    rgb[2] = diffk_dbl(c.b);
+    *mask = bits;
+    return 0;
+}
+
+int DIFFK_SYM(diffk_occluded)(int n, const diffk_obj_t *objs, const diffk_ray_t *ray, double tmax)
+{
+    world_t *w = &diffk_world;
+    world_init(w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+    for (int i = 0; i < n; i++)
+        if (diffk_add(w, &objs[i]) < 0)
+            return -1;
+    ray_t r = diffk_ray(ray);
+    /* skip_id = n: no object has it. */
+    return world_occluded(w, &r, tmax < 0 ? NUM_MAX : diffk_num(tmax), (uint16_t)n) ? 1 : 0;
+}
+
+double DIFFK_SYM(diffk_pow)(long long x_q32, unsigned k)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return diffk_dbl(numw_pow_int((numw_t)x_q32, k));
+#else
+    return diffk_dbl(numw_pow_int((numw_t)x_q32 / (numw_t)4294967296.0, k));
+#endif
+}

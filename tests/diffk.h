@@ -41,6 +41,38 @@ typedef struct {
     int width, height;
 } diffk_cam_t;
 
+/* Lighting (issue 11): one object, its material and lights, for the
+ * shading, spot and shadow cases. Object kinds as geom_kind_t: 0 plane
+ * (p[0] point, p[1] normal), 1 sphere (p[0] centre, radius), 2 triangle
+ * (p[0..2]), 3 box (p[0] min, p[1] max). */
+typedef struct {
+    int kind;
+    double p[3][3];
+    double radius;
+} diffk_obj_t;
+
+enum { DIFFK_LIGHT_POINT = 0, DIFFK_LIGHT_DIRECTIONAL = 1, DIFFK_LIGHT_SPOT = 2 };
+enum { DIFFK_LAMBERT = 1, DIFFK_PHONG = 2 };
+#define DIFFK_MAX_LIGHTS 4
+
+typedef struct {
+    int kind;        /* DIFFK_LIGHT_* */
+    double pos[3];   /* point, spot */
+    double dir[3];   /* directional, spot: the direction the light shines in */
+    double angle;    /* spot: half-angle, degrees */
+    double color[3]; /* fractions 0..1 */
+} diffk_light_t;
+
+typedef struct {
+    int material;       /* DIFFK_LAMBERT or DIFFK_PHONG */
+    int exponent;       /* phong, 1..1024 */
+    double color[3];    /* the object's colour, 1/255 units (0..255) */
+    double specular[3]; /* fractions */
+    double ambient[3];  /* fractions */
+    int n_lights;
+    diffk_light_t lights[DIFFK_MAX_LIGHTS];
+} diffk_shade_t;
+
 /* The largest t a Q16.16 build can return (FX_MAX): a far hit. */
 #define DIFFK_Q16_TMAX (2147483647.0 / 65536.0)
 #define DIFFK_LSB (1.0 / 65536.0)
@@ -64,7 +96,21 @@ typedef struct {
     int diffk_cam_##S(const diffk_cam_t *cam, int n, const int *xs, const int *ys, diffk_ray_t *rays); \
     /* cam_setup's basis (basis[0..2] = u, v, w) and focal (H cot(fov/2), 1 for orthographic);   \
      * returns the cam_err_t, and writes only on success. */                                      \
-    int diffk_cam_basis_##S(const diffk_cam_t *cam, double basis[3][3], double *focal);
+    int diffk_cam_basis_##S(const diffk_cam_t *cam, double basis[3][3], double *focal);           \
+    /* geom_<kind>_surface for the ray: t and the unit geometric normal. DIFFK_HIT, or          \
+     * DIFFK_REJECTED / DIFFK_DEGENERATE (the object cannot be built or is never hit). */       \
+    int diffk_surface_##S(const diffk_obj_t *obj, const diffk_ray_t *ray, double *t, double n[3]); \
+    /* shade_point at p with geometric normal n for a ray of direction d, in a world holding     \
+     * one sphere with the case's material and lights (shadows off): the colour (1/255 units,   \
+     * unclamped) and the mask of lights that reach p. 0, or the negative fxrt_err_t of the     \
+     * set-up (world_add_light, world_set_material, world_set_ambient). */                      \
+    int diffk_shade_##S(const diffk_shade_t *sh, const double p[3], const double n[3],          \
+                        const double d[3], double rgb[3], int *mask);                             \
+    /* world_occluded for a world of n objects (ids 0..n-1) and tmax (< 0: NUM_MAX, a           \
+     * directional light), skipping no object: 1 blocked, 0 not, -1 an object was refused. */   \
+    int diffk_occluded_##S(int n, const diffk_obj_t *objs, const diffk_ray_t *ray, double tmax); \
+    /* numw_pow_int(x, k) with x given as Q32.32 (x_q32 / 2^32). */                              \
+    double diffk_pow_##S(long long x_q32, unsigned k);
 
 DIFFK_DECLARE(q16)
 DIFFK_DECLARE(double)

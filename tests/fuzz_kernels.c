@@ -4,7 +4,10 @@
  * the bounds of tests/test_diff.c (included below); a violation prints the
  * case (replayable %a values) and aborts.
  *
- * Input: byte 0 picks the kind (plane, sphere, triangle, box, camera);
+ * Input: byte 0 picks the kind (plane, sphere, triangle, box, camera, and
+ * the lighting kinds normal, shade, pow, spot, shadow: geom_*_surface,
+ * shade_point, numw_pow_int, the spot cone, world_occluded; their checks
+ * include the invariants unit-length normal and colour in range);
  * byte 1 bit 0 picks the decoding:
  *   0: the test_diff generators, drawing their random numbers from the
  *      remaining bytes (then from a counter), so mutations move through
@@ -152,6 +155,83 @@ static void fz_raw(int kind, fz_src_t *s, dcase_t *c)
     }
 }
 
+/* A fraction 0..1 (Q16.16) from raw bits. */
+static double fz_frac(fz_src_t *s)
+{
+    return (double)(fz_u32(s) % 65537u) / 65536.0;
+}
+
+/* The lighting kinds from raw bits: objects as fz_raw makes them; shading
+ * inputs with every value raw (a light may sit exactly on p, a spot's
+ * half-angle is any Q16.16 value in (0, 90], colours any fraction). */
+static void fz_raw_light(int kind, fz_src_t *s, dcase_t *c)
+{
+    dcase_t tmp;
+    memset(c, 0, sizeof *c);
+    c->kind = kind;
+    c->mode = -1;
+    switch (kind) {
+    case K_NORMAL:
+        c->sub = (int)(fz_u32(s) % 4);
+        fz_raw(c->sub, s, &tmp);
+        memcpy(c->p, tmp.p, sizeof c->p);
+        c->radius = tmp.radius;
+        c->ray = tmp.ray;
+        break;
+    case K_SHADOW:
+        c->sub = 1 + (int)(fz_u32(s) % SHADOW_OBJS);
+        for (int j = 0; j < c->sub; j++) {
+            fz_raw((int)(fz_u32(s) % 4), s, &tmp);
+            obj_from_case(&tmp, &c->obj[j]);
+            if (j == 0)
+                c->ray = tmp.ray;
+        }
+        c->tmax = (fz_u32(s) & 1) ? -1.0 : fz_positive(s, 0x7fffffff);
+        break;
+    case K_POW:
+        c->xq = (long long)((uint64_t)fz_u32(s) << 32 | fz_u32(s));
+        c->k = 1 + fz_u32(s) % 1024;
+        break;
+    default: { /* shade, spot */
+        diffk_shade_t *sh = &c->sh;
+        uint32_t v = fz_u32(s);
+        sh->material = (v & 1) ? DIFFK_PHONG : DIFFK_LAMBERT;
+        sh->exponent = 1 + (int)((v >> 1) % 1024);
+        sh->n_lights = kind == K_SPOT ? 1 : 1 + (int)((v >> 11) % DIFFK_MAX_LIGHTS);
+        for (int i = 0; i < 3; i++) {
+            sh->color[i] = fz_frac(s) * 255.0;
+            sh->color[i] = rq(sh->color[i]);
+            sh->specular[i] = fz_frac(s);
+            sh->ambient[i] = fz_frac(s);
+        }
+        fz_point(s, c->sp);
+        fz_dir(s, c->sn);
+        fz_dir(s, c->sdir);
+        for (int j = 0; j < sh->n_lights; j++) {
+            diffk_light_t *L = &sh->lights[j];
+            uint32_t w = fz_u32(s);
+            L->kind = kind == K_SPOT ? DIFFK_LIGHT_SPOT : (int)(w % 3);
+            /* the position raw, or p plus a raw offset of +-2^-16 .. +-2^-4 */
+            if (w & 4) {
+                fz_point(s, L->pos);
+            } else {
+                for (int i = 0; i < 3; i++)
+                    L->pos[i] = clampd(c->sp[i] + fz_signed(s, (int64_t)1 << (w >> 3) % 13), -COORD, COORD);
+            }
+            do
+                fz_point(s, L->dir);
+            while (L->dir[0] == 0 && L->dir[1] == 0 && L->dir[2] == 0 && s->n > 0);
+            if (L->dir[0] == 0 && L->dir[1] == 0 && L->dir[2] == 0)
+                L->dir[2] = 1;
+            L->angle = fz_positive(s, (int64_t)90 << 16);
+            for (int i = 0; i < 3; i++)
+                L->color[i] = fz_frac(s);
+        }
+        break;
+    }
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -162,7 +242,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     dcase_t c;
     if (data[1] & 1) {
         fz_src_t s = {data + 2, size - 2};
-        fz_raw(kind, &s, &c);
+        if (kind >= K_NORMAL)
+            fz_raw_light(kind, &s, &c);
+        else
+            fz_raw(kind, &s, &c);
     } else {
         rng_t r = {0x5EED0F0F1u, data + 2, size - 2};
         gen_case_rng(kind, &r, &c);

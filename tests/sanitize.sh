@@ -3,11 +3,15 @@
 # code, with what `make san-build` built with clang
 # -fsanitize=address,undefined -fno-sanitize-recover=all into $BUILD/san/:
 #   - every unit test binary (list in $BUILD/san/tests.list: test_fx,
-#     test_image, test_compare, test_scene, test_geom_q16/float/double);
+#     test_image, test_compare, test_scene, test_geom_q16/float/double,
+#     test_shade_q16/float/double: lit worlds built through the API);
 #   - test_diff with SAN_DIFF_CASES cases per kind (default 50000);
 #   - tests/cli.sh, golden.sh, stress_scenes.sh and renderers.sh against
 #     $BUILD/san/fxrt, with their outputs under $BUILD/san/tests/ (the
 #     normal ones are not touched);
+#   - every lit scene (scenes/lit/*.scene, or any scene with a light or
+#     ambient line) rendered by $BUILD/san/fxrt in q16, float and double
+#     with both renderers at SAN_LIT_SIZE (default 160x120);
 #   - tests/oracle.sh with $BUILD/san/tests/oracle: every scene file and
 #     SAN_ORACLE_SCENES random scenes (default 300), and the stress
 #     expectations check;
@@ -234,6 +238,53 @@ run_suite test_diff "$san/tests/test_diff" "$SAN_DIFF_CASES"
 run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
 run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
 run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
+
+# --- lit scenes (issue 11) ----------------------------------------------------
+# Every lit scene (scenes/lit/, and any scene elsewhere whose name says lit
+# or that has a light line) through the sanitized fxrt in q16, float and
+# double at SAN_LIT_SIZE, with every renderer the tool has: exit 0, an
+# image, no sanitizer report. (The lighting code itself is also exercised
+# by the sanitized test_shade_* and test_diff binaries above, which build
+# lit worlds through the API, whether or not lit scene files exist yet.)
+SAN_LIT_SIZE=${SAN_LIT_SIZE:-160x120}
+lit=()
+for f in scenes/lit/*.scene scenes/*.scene scenes/stress/*.scene scenes/*/*.scene; do
+    [ -f "$f" ] || continue
+    case " ${lit[*]:-} " in *" $f "*) continue ;; esac
+    if [[ $f == scenes/lit/* || $f == *lit* ]] || grep -qE '^[[:space:]]*(light|ambient)[[:space:]]' "$f"; then
+        lit+=("$f")
+    fi
+done
+if [ ${#lit[@]} -eq 0 ]; then
+    echo "lit scenes: none yet (scenes/lit/*.scene); lighting covered by test_shade_* and test_diff only"
+else
+    progress "sanitize.sh: ${#lit[@]} lit scenes"
+    start=$(date +%s)
+    n_lit_bad=0
+    for f in "${lit[@]}"; do
+        for n in q16 float double; do
+            for rr in fast reference; do
+                name=lit-$(printf '%s' "${f%.scene}" | tr / _)-$n-$rr
+                out=$san/tests/lit/$name.png
+                mkdir -p "$san/tests/lit"
+                rm -f "$out"
+                (san_env "$logs/$name" &&
+                    exec "$sfxrt" render "$f" -o "$out" --size "$SAN_LIT_SIZE" --number $n --renderer $rr) \
+                    >"$logs/$name.log" 2>&1
+                rc=$?
+                if [ $rc -eq 0 ] && [ -s "$out" ] && no_reports "$logs/$name" >"$logs/$name.reports"; then
+                    ok
+                else
+                    n_lit_bad=$((n_lit_bad + 1))
+                    bad "lit scene $f ($n, $rr): exit $rc$([ -s "$out" ] || echo ', no image') (log $logs/$name.log)"
+                    sed 's/^/    | /' "$logs/$name.reports" | head -n 20
+                fi
+            done
+        done
+    done
+    echo "lit scenes: ${#lit[@]} scenes x 3 numbers x 2 renderers at $SAN_LIT_SIZE, $n_lit_bad failed," \
+        "$(($(date +%s) - start)) s"
+fi
 
 # --- fuzz corpora -------------------------------------------------------------
 # Every input of the fuzzers' corpora (and the scene seeds) once more through
