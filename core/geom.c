@@ -375,10 +375,11 @@ static bool geom_frac_less(num_t n1, num_t d1, num_t n2, num_t d2)
 bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax)
 {
     /* The slab test with each bound kept as a fraction num / |d_i|: the
-     * ray is in the box for t in [near, far]; it occludes when some t in
-     * (0, tmax) is in it: max(near, 0) < min(far, tmax). */
-    num_t nn = NUM_ZERO, nd = NUM_ONE; /* near = 0 */
-    num_t fn = tmax, fd = NUM_ONE;     /* far = tmax */
+     * ray is in the box for t in [near, far], and meets its surface at
+     * near (or at far when it starts inside, near <= 0), as
+     * geom_box_hit does; that t must be in (0, tmax). */
+    num_t nn = num_neg(NUM_MAX), nd = NUM_ONE; /* near = -infinity */
+    num_t fn = NUM_MAX, fd = NUM_ONE;          /* far = +infinity */
     for (int i = 0; i < 3; i++) {
         num_t o = geom_axis(ray->o, i), d = geom_axis(ray->d, i);
         num_t lo = geom_axis(b->min, i), hi = geom_axis(b->max, i);
@@ -399,7 +400,13 @@ bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax)
             fd = ad;
         }
     }
-    return geom_frac_less(nn, nd, fn, fd);
+    if (geom_frac_less(fn, fd, nn, nd))
+        return false; /* the slabs do not overlap: a miss */
+    bool starts_inside = !geom_frac_less(NUM_ZERO, NUM_ONE, nn, nd); /* near <= 0 */
+    num_t hn = starts_inside ? fn : nn, hd = starts_inside ? fd : nd;
+    if (!geom_frac_less(NUM_ZERO, NUM_ONE, hn, hd))
+        return false; /* the surface is met at t <= 0 */
+    return tmax == NUM_MAX || geom_frac_less(hn, hd, tmax, NUM_ONE);
 }
 
 /* The outward unit normal of face f (axis f / 2, max side when f is odd). */
