@@ -11,7 +11,7 @@ set -u
 out=$BUILD/tests/skip
 mkdir -p "$out"
 CORE=$(cd core && ls *.c | sed "s/\.c$//")
-LIGHTING='^(shade_point|shade_object|render_shade_row|shadow_blocked|world_occluded|world_set_material|world_add_light|geom_(plane|sphere|triangle|box)_surface)$'
+LIGHTING='^(shade_point|shade_point_k|shade_object|shade_object_k|shade_consts|render_shade_row|shadow_blocked|world_occluded|world_set_material|world_add_light|geom_(plane|sphere|triangle|box)_surface)$'
 SHADOW='^(shadow_blocked|world_occluded)$'
 LIBM='^(pow|powf|acos|acosf|cos|cosf|sin|sinf|sqrt|sqrtf|exp|log)$'
 
@@ -40,7 +40,7 @@ flat=$(syms flat | grep -E "$LIGHTING" || true)
 check "flat materials link no lighting code (found: $flat)" test -z "$flat"
 noshadow=$(syms noshadow | grep -E "$SHADOW" || true)
 check "no shadow-casting light links no shadow-ray code (found: $noshadow)" test -z "$noshadow"
-check "the lit build links shade_point (control)" bash -c "arm-none-eabi-nm '$out/noshadow.elf' | grep -qw shade_point"
+check "the lit build links shade_point_k (control)" bash -c "arm-none-eabi-nm '$out/noshadow.elf' | grep -qw shade_point_k"
 check "the shadow build links shadow_blocked and world_occluded (control)" \
     bash -c "arm-none-eabi-nm '$out/shadow.elf' | grep -qw shadow_blocked && arm-none-eabi-nm '$out/shadow.elf' | grep -qw world_occluded"
 for b in flat noshadow shadow; do
