@@ -129,7 +129,7 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
  * saturating. The 64-bit product is exact. */
 static inline fx_t fx_mul(fx_t a, fx_t b)
 {
-    int64_t p = (int64_t)a * b;
+    int64_t p = fx_smul32(a, b);
     /* >> of a negative int64 is an arithmetic shift on every compiler we
      * support (gcc, clang); it floors, and the +half turns that into
      * round-to-nearest. */
@@ -139,7 +139,7 @@ static inline fx_t fx_mul(fx_t a, fx_t b)
 /* a * i for an integer i: exact, saturating. */
 static inline fx_t fx_mul_int(fx_t a, int32_t i)
 {
-    return fx_sat64((int64_t)a * i);
+    return fx_sat64(fx_smul32(a, i));
 }
 
 /* Q32.32 -> Q16.16, |error| <= 0.5 LSB, ties toward +infinity, saturating. */

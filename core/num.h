@@ -53,7 +53,7 @@ static inline num_t num_cos_deg(num_t deg)
     return fx_cos_deg(deg);
 }
 
-static inline numw_t numw_mul(num_t a, num_t b) { return (fxw_t)a * b; }
+static inline numw_t numw_mul(num_t a, num_t b) { return fx_smul32(a, b); }
 static inline numw_t numw_add(numw_t a, numw_t b) { return fxw_add(a, b); }
 static inline numw_t numw_sub(numw_t a, numw_t b) { return fxw_add(a, b == INT64_MIN ? INT64_MAX : -b); }
 static inline numw_t numw_from(num_t a) { return fxw_from_fx(a); }

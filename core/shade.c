@@ -15,7 +15,7 @@ fxrt_stats_t fxrt_stats;
 #if FXRT_NUMBER == FXRT_Q16
 static inline num_t shade_mul(num_t a, num_t b)
 {
-    return (fx_t)(((int64_t)a * b + FX_HALF) >> FX_FRAC_BITS);
+    return (fx_t)((fx_smul32(a, b) + FX_HALF) >> FX_FRAC_BITS);
 }
 static inline num_t shade_add(num_t a, num_t b)
 {
@@ -56,8 +56,8 @@ static bool shade_in_cone(const light_t *L, vec3_t v, num_t dist)
 {
 #if FXRT_NUMBER == FXRT_Q16
     /* Q16.16 x Q2.30 products (< 2^61 each), exact in int64. */
-    int64_t lhs = -((int64_t)v.x * L->axis30[0] + (int64_t)v.y * L->axis30[1] + (int64_t)v.z * L->axis30[2]);
-    return lhs >= (int64_t)dist * L->cos30;
+    int64_t lhs = -(fx_smul32(v.x, L->axis30[0]) + fx_smul32(v.y, L->axis30[1]) + fx_smul32(v.z, L->axis30[2]));
+    return lhs >= fx_smul32(dist, L->cos30);
 #else
     return vec3_dotw(vec3_neg(v), L->dir) >= numw_mul(L->cos_angle, dist);
 #endif
