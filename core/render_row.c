@@ -596,7 +596,11 @@ static bool render_alone(const render_t *r, uint16_t i, int32_t row)
     return true;
 }
 
-void render_row(render_t *r, int32_t row, uint8_t *rgb)
+/* The visibility pass of one row: every object's coverage, the nearest
+ * owner of each column, flat colours painted (and r->vis recorded for the
+ * shading pass). Out of line so that its frame is gone before the shading
+ * pass runs (stack depth on the micro:bit). */
+static __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t *rgb)
 {
     const cam_t *cam = r->cam;
     int32_t w = cam->width, y = cam->height - 1 - row;
@@ -657,6 +661,11 @@ void render_row(render_t *r, int32_t row, uint8_t *rgb)
         r->dirty_lo = x0 < dlo ? x0 : dlo;
         r->dirty_hi = x1 > dhi ? x1 : dhi;
     }
+}
+
+void render_row(render_t *r, int32_t row, uint8_t *rgb)
+{
+    render_row_vis(r, row, rgb);
 #if FXRT_MAX_LIGHTS > 0
     if (render_tracks(r))
         render_shade_row(r, row, rgb);

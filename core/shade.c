@@ -69,6 +69,16 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
     return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
 }
 
+/* shade_point_k without per-frame constants (the ray caster, arbitrary
+ * rays): they are computed here, off the renderer's stack path. */
+static __attribute__((noinline)) color_t shade_point_own(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p,
+                                                        vec3_t n_geo, vec3_t d, uint8_t *mask)
+{
+    shade_k_t own;
+    shade_consts(w, world_common(w, kind, index), &own);
+    return shade_point_k(w, kind, index, p, n_geo, d, &own, mask);
+}
+
 color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
                       const shade_k_t *k, uint8_t *mask)
 {
@@ -76,11 +86,8 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
     const material_t *m = &obj->mat;
     FXRT_COUNT(shaded);
     bool lit = m->kind != MATERIAL_FLAT;
-    shade_k_t own;
-    if (lit && !k) {
-        shade_consts(w, obj, &own);
-        k = &own;
-    }
+    if (lit && !k)
+        return shade_point_own(w, kind, index, p, n_geo, d, mask); /* computes k on its own frame */
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw(n_geo, d) > 0;
     vec3_t n = inside ? vec3_neg(n_geo) : n_geo;
