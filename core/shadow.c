@@ -23,7 +23,7 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
                q.z < b->max.z;
     }
 #endif
-    (void)w, (void)index;
+    (void)w, (void)kind, (void)index;
     return false;
 }
 
