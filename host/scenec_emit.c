@@ -79,6 +79,12 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(cfg, "#define SCENE_WIDTH %d\n#define SCENE_HEIGHT %d\n", width, height);
     fprintf(cfg, "#define SCENE_OBJECTS %d\n", d.count);
     fprintf(cfg, "#define FXRT_RENDER_MAX_WIDTH %d\n", width);
+    /* No light and every material flat: lighting compiled out (world_t
+     * holds no lights, no colour fractions, no materials). */
+#if FXRT_MAX_LIGHTS > 0
+    if (w.n_lights == 0 && w.n_lit == 0)
+#endif
+        fprintf(cfg, "#define FXRT_MAX_LIGHTS 0\n");
 #if FXRT_MAX_BOXES > 0
     /* The box-face pool holds what this camera needs (3 faces for a box
      * seen from outside in perspective, up to 6 otherwise), counted by the

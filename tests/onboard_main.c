@@ -118,6 +118,13 @@ int main(void)
     semihost_put_u64(board_ram_static());
     semihost_puts(" stack_used=");
     semihost_put_u64(board_stack_used());
+    semihost_puts(" stack_size=");
+    semihost_put_u64(board_stack_size());
     semihost_puts("\n");
+    /* The reservation must leave FXRT_STACK_MARGIN unused (firmware/main.c). */
+    if (board_stack_used() + FXRT_STACK_MARGIN > board_stack_size()) {
+        semihost_puts("error=stack: the run left less than FXRT_STACK_MARGIN bytes of the reserved stack unused\n");
+        failed = 1;
+    }
     return failed;
 }
