@@ -62,15 +62,15 @@ static render_k_t rk_of(rc_t c, int k) { (void)k; return c; }
 #define RK_SHIFT(coefs, mults, n, target) 0
 #endif
 
-static render_lin_t rlin_scaled(rclin_t f, int k)
+static render_lin_t rlin_scaled(const rclin_t *f, int k)
 {
-    render_lin_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k)};
+    render_lin_t r = {rk_of(f->c, k), rk_of(f->x, k), rk_of(f->y, k)};
     return r;
 }
 
-RENDER_MAYBE_UNUSED static render_quad_t rquad_scaled(rcquad_t f, int k)
+RENDER_MAYBE_UNUSED static render_quad_t rquad_scaled(const rcquad_t *f, int k)
 {
-    render_quad_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k), rk_of(f.xx, k), rk_of(f.xy, k), rk_of(f.yy, k)};
+    render_quad_t r = {rk_of(f->c, k), rk_of(f->x, k), rk_of(f->y, k), rk_of(f->xx, k), rk_of(f->xy, k), rk_of(f->yy, k)};
     return r;
 }
 
@@ -108,7 +108,7 @@ RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int tar
 
 RENDER_MAYBE_UNUSED static render_lin_t rlin_make(rclin_t f, rext_t ext)
 {
-    return rlin_scaled(f, rlin_need(&f, ext, RENDER_LIN_BITS));
+    return rlin_scaled(&f, rlin_need(&f, ext, RENDER_LIN_BITS));
 }
 
 /* ---- set-up of each object ------------------------------------------- */
@@ -135,8 +135,8 @@ RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec
                   ortho ? rc_nw(num_neg(n.y), cam->step_v) : rc_zero()};
     rclin_t df = {rc_nn(n.z, num_neg(focal)), ortho ? rc_zero() : rc_n(n.x), ortho ? rc_zero() : rc_n(n.y)};
     int kn = rlin_need(&nf, ext, RENDER_LIN_BITS), kd = rlin_need(&df, ext, RENDER_LIN_BITS);
-    f->n = rlin_scaled(nf, kn);
-    f->d = rlin_scaled(df, kd);
+    f->n = rlin_scaled(&nf, kn);
+    f->d = rlin_scaled(&df, kd);
     f->te = (int8_t)(kn - kd); /* N real = N 2^(kn - 48), D real = D 2^(kd - 48) */
     f->edges = 0;
 }
@@ -401,16 +401,16 @@ __attribute__((noinline)) static void render_sphere_scale(render_t *r, rext_t ex
     }
     int sk = 2 * kp - 48;
     sp->k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
-    sp->b = rlin_scaled(*b, kp);
-    r->sphere_a = rquad_scaled(*a, ka); /* the same for every sphere */
+    sp->b = rlin_scaled(b, kp);
+    r->sphere_a = rquad_scaled(a, ka); /* the same for every sphere */
     sp->a = &r->sphere_a;
     /* b and sqrt(disc) are real * 2^(48 - kp), c is real * 2^(96 - 2 kp)
      * and a is real * 2^(48 - ka). */
     sp->tc = (int8_t)(kp - 48);
     sp->ta = (int8_t)(kp - ka);
-    sp->px = rlin_scaled(*px, kp);
-    sp->py = rlin_scaled(*py, kp);
-    sp->pz = rlin_scaled(*pz, kp);
+    sp->px = rlin_scaled(px, kp);
+    sp->py = rlin_scaled(py, kp);
+    sp->pz = rlin_scaled(pz, kp);
 }
 #endif
 
@@ -433,16 +433,17 @@ __attribute__((noinline)) static void render_sphere_bounds(const cam_t *cam, vec
     render_points_bounds(cam, corner, 8, o);
 }
 
-static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t c = render_to_cam(cam, s->center);
     num_t rad = s->radius;
     rc_t r2 = rc_w(s->radius2);
     rc_t cc = rc_sub(rc_add(rc_add(rc_nn(c.x, c.x), rc_nn(c.y, c.y)), rc_nn(c.z, c.z)), r2);
-    rclin_t zero = {rc_zero(), rc_zero(), rc_zero()};
+    static const rclin_t zero; /* all coefficients 0 (static: no stack copy) */
+    static const rcquad_t zero_q;
     rclin_t b = zero, px = zero, py = zero, pz = zero;
-    rcquad_t a = {rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero()};
+    rcquad_t a = zero_q;
     rc_t k;
     bool ortho = render_ortho(cam);
     (void)ext;
@@ -480,12 +481,12 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
 #if FXRT_NUMBER == FXRT_Q16
     render_sphere_scale(r, ext, o->u.sphere, rad, r2, k, &b, &px, &py, &pz, &a);
 #else
-    o->u.sphere->b = rlin_scaled(b, 0);
-    r->sphere_a = rquad_scaled(a, 0);
+    o->u.sphere->b = rlin_scaled(&b, 0);
+    r->sphere_a = rquad_scaled(&a, 0);
     o->u.sphere->a = &r->sphere_a;
-    o->u.sphere->px = rlin_scaled(px, 0);
-    o->u.sphere->py = rlin_scaled(py, 0);
-    o->u.sphere->pz = rlin_scaled(pz, 0);
+    o->u.sphere->px = rlin_scaled(&px, 0);
+    o->u.sphere->py = rlin_scaled(&py, 0);
+    o->u.sphere->pz = rlin_scaled(&pz, 0);
     o->u.sphere->k = k;
     o->u.sphere->r2 = r2;
     o->u.sphere->tc = 0;
@@ -496,7 +497,7 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
 #endif
 
 #if FXRT_MAX_PLANES > 0
-static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
 {
     o->kind = RENDER_FLAT;
     o->nflat = 1;
@@ -508,7 +509,7 @@ static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, r
 #endif
 
 #if FXRT_MAX_TRIANGLES > 0
-static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
@@ -532,7 +533,7 @@ static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t
 
 #if FXRT_MAX_BOXES > 0
 
-static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     bool ortho = render_ortho(cam);
