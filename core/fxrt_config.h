@@ -280,6 +280,14 @@
 #if FXRT_BAND_ROWS < 1
 #error "FXRT_BAND_ROWS must be at least 1"
 #endif
+/* Bytes of the reserved stack (STACK_SIZE in linker/BOARD.ld) that a
+ * firmware run must leave unused, read from the painted stack at the end
+ * of the run: firmware/main.c and tests/onboard_main.c fail the run (exit
+ * 2) otherwise, so every make qemu, test and bench run checks that the
+ * reservation covers what the run used, with this margin to spare. */
+#ifndef FXRT_STACK_MARGIN
+#define FXRT_STACK_MARGIN 512
+#endif
 #if FXRT_FB_MODE == FXRT_FB_STREAM && FXRT_PIXEL != FXRT_RGB888
 #error "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer"
 #endif

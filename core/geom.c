@@ -97,7 +97,9 @@ fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color)
 
 static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
 {
+#if FXRT_MAX_LIGHTS > 0
     c->color = color;
+#endif
     c->rgb = color_to_rgb8(color);
     c->id = id;
 #if FXRT_MAX_LIGHTS > 0

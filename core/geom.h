@@ -30,10 +30,10 @@ typedef struct {
 
 /* What every object carries besides its shape. */
 typedef struct {
-    color_t color;
     rgb8_t rgb;  /* color as output pixels, computed once */
     uint16_t id; /* position in the scene file: ties in t go to the lower id */
 #if FXRT_MAX_LIGHTS > 0
+    color_t color;  /* fractions, for shading (an unlit build needs only rgb) */
     material_t mat; /* MATERIAL_FLAT unless world_set_material changed it */
 #endif
 } geom_common_t;

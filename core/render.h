@@ -111,7 +111,6 @@ typedef struct {
     render_lin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
     uint8_t edges;
     int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
-    int16_t x0, x1, r0, r1; /* this piece's own pixel bounds (a box face's) */
 } render_flat_t;
 
 /* A depth (ray parameter along the camera-space ray): Q16.16 keeps
@@ -138,20 +137,24 @@ typedef struct {
 typedef struct {
     render_lin_t b, px, py, pz; /* b shares the p pieces' scale */
     const render_quad_t *a;
+    bool ortho;
+    int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
+    /* (k and r2 last: on a 32-bit target the small fields above fill the
+     * padding before them) */
 #if FXRT_NUMBER == FXRT_Q16
     fx128_t k, r2;
 #else
     render_k_t k, r2;
 #endif
-    bool ortho;
-    int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
 } render_sphere_t;
 
-/* A box face: a flat piece with a fourth edge (render_flat_t first, so a
- * pointer to f is a pointer to the face). */
+/* A box face: a flat piece with a fourth edge and its own pixel bounds
+ * (render_flat_t first, so a pointer to f is a pointer to the face). A
+ * plane's or triangle's bounds are its object's. */
 typedef struct {
     render_flat_t f;
     render_lin_t e4;
+    int16_t x0, x1, r0, r1;
 } render_face_t;
 
 typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_ALL } render_kind_t;

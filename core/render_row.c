@@ -642,10 +642,10 @@ static __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, u
         case RENDER_BOX:
             for (int k = 0; k < o->nflat; k++) {
                 const render_flat_t *f = render_face(o, k);
-                if (FXRT_NO_BOUNDS)
-                    RENDER_SCAN_FLAT(r, i, f, 0, w - 1, iy, rgb, lone);
-                else if (row >= f->r0 && row <= f->r1)
-                    RENDER_SCAN_FLAT(r, i, f, f->x0, f->x1, iy, rgb, lone);
+                if (FXRT_NO_BOUNDS || o->kind == RENDER_FLAT)
+                    RENDER_SCAN_FLAT(r, i, f, x0, x1, iy, rgb, lone); /* a plane's or triangle's bounds are its object's */
+                else if (row >= o->u.face[k].r0 && row <= o->u.face[k].r1)
+                    RENDER_SCAN_FLAT(r, i, f, o->u.face[k].x0, o->u.face[k].x1, iy, rgb, lone);
             }
             break;
 #else

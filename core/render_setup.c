@@ -9,9 +9,9 @@
  * screen stays below 2^target, and rounded once to int64. */
 #if FXRT_NUMBER == FXRT_Q16
 typedef fx128_t rc_t;
-RENDER_MAYBE_UNUSED static rc_t rc_n(num_t a) { return fx128_shl(fx128_from64(a), 32); }
+RENDER_MAYBE_UNUSED __attribute__((noinline)) static rc_t rc_n(num_t a) { return fx128_shl(fx128_from64(a), 32); }
 RENDER_MAYBE_UNUSED static rc_t rc_w(numw_t w) { return fx128_shl(fx128_from64(w), 16); }
-RENDER_MAYBE_UNUSED static rc_t rc_nn(num_t a, num_t b) { return fx128_shl(fx128_mul(a, b), 16); }
+RENDER_MAYBE_UNUSED __attribute__((noinline)) static rc_t rc_nn(num_t a, num_t b) { return fx128_shl(fx128_mul(a, b), 16); }
 RENDER_MAYBE_UNUSED static rc_t rc_nw(num_t a, numw_t w) { return fx128_mul(a, w); }
 RENDER_MAYBE_UNUSED static rc_t rc_add(rc_t a, rc_t b) { return fx128_add(a, b); }
 RENDER_MAYBE_UNUSED static rc_t rc_neg(rc_t a) { return fx128_neg(a); }
@@ -62,15 +62,15 @@ static render_k_t rk_of(rc_t c, int k) { (void)k; return c; }
 #define RK_SHIFT(coefs, mults, n, target) 0
 #endif
 
-static render_lin_t rlin_scaled(rclin_t f, int k)
+static render_lin_t rlin_scaled(const rclin_t *f, int k)
 {
-    render_lin_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k)};
+    render_lin_t r = {rk_of(f->c, k), rk_of(f->x, k), rk_of(f->y, k)};
     return r;
 }
 
-RENDER_MAYBE_UNUSED static render_quad_t rquad_scaled(rcquad_t f, int k)
+RENDER_MAYBE_UNUSED static render_quad_t rquad_scaled(const rcquad_t *f, int k)
 {
-    render_quad_t r = {rk_of(f.c, k), rk_of(f.x, k), rk_of(f.y, k), rk_of(f.xx, k), rk_of(f.xy, k), rk_of(f.yy, k)};
+    render_quad_t r = {rk_of(f->c, k), rk_of(f->x, k), rk_of(f->y, k), rk_of(f->xx, k), rk_of(f->xy, k), rk_of(f->yy, k)};
     return r;
 }
 
@@ -108,7 +108,7 @@ RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int tar
 
 RENDER_MAYBE_UNUSED static render_lin_t rlin_make(rclin_t f, rext_t ext)
 {
-    return rlin_scaled(f, rlin_need(&f, ext, RENDER_LIN_BITS));
+    return rlin_scaled(&f, rlin_need(&f, ext, RENDER_LIN_BITS));
 }
 
 /* ---- set-up of each object ------------------------------------------- */
@@ -135,14 +135,10 @@ RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec
                   ortho ? rc_nw(num_neg(n.y), cam->step_v) : rc_zero()};
     rclin_t df = {rc_nn(n.z, num_neg(focal)), ortho ? rc_zero() : rc_n(n.x), ortho ? rc_zero() : rc_n(n.y)};
     int kn = rlin_need(&nf, ext, RENDER_LIN_BITS), kd = rlin_need(&df, ext, RENDER_LIN_BITS);
-    f->n = rlin_scaled(nf, kn);
-    f->d = rlin_scaled(df, kd);
+    f->n = rlin_scaled(&nf, kn);
+    f->d = rlin_scaled(&df, kd);
     f->te = (int8_t)(kn - kd); /* N real = N 2^(kn - 48), D real = D 2^(kd - 48) */
     f->edges = 0;
-    f->x0 = 0;
-    f->x1 = (int16_t)(cam->width - 1);
-    f->r0 = 0;
-    f->r1 = (int16_t)(cam->height - 1);
 }
 
 /* Perspective: every ray starts at the eye, so the kernels' numerator
@@ -175,8 +171,8 @@ RENDER_MAYBE_UNUSED static bool render_flat_eye(const cam_t *cam, vec3_t a, vec3
     return true;
 }
 
-/* Copy an object's bounds to (or from) a flat piece. */
-RENDER_MAYBE_UNUSED static void render_flat_bounds_from(render_flat_t *f, const render_obj_t *o)
+/* Copy bounds to a box face. */
+RENDER_MAYBE_UNUSED static void render_face_bounds_from(render_face_t *f, const render_obj_t *o)
 {
     f->x0 = o->x0;
     f->x1 = o->x1;
@@ -365,16 +361,89 @@ RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec
 }
 
 #if FXRT_MAX_SPHERES > 0
-static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
+/* The sphere's set-up in three out-of-line steps (exact forms, their
+ * scaling, the bounds), so that the stack holds one step's temporaries at
+ * a time: on the Cortex-M0 the 128-bit arithmetic inlined into one
+ * function took over 1 KB of stack (the micro:bit reserves little). */
+#if FXRT_NUMBER == FXRT_Q16
+__attribute__((noinline)) static void render_sphere_scale(render_t *r, rext_t ext, render_sphere_t *sp, num_t rad,
+                                                          rc_t r2, rc_t k, const rclin_t *b, const rclin_t *px,
+                                                          const rclin_t *py, const rclin_t *pz, const rcquad_t *a)
+{
+    bool ortho = sp->ortho;
+    /* Scales: the p pieces share kp, so disc is in units of 2^(2 kp - 96)
+     * and r2 is R^2 a brought to those units; b only matters by its sign. */
+    rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
+    int kp = rlin_need(px, ext, RENDER_SPHERE_BITS), n;
+    n = rlin_need(b, ext, RENDER_SPHERE_BITS); /* b + sqrt(disc) is formed for depth */
+    kp = kp > n ? kp : n;
+    n = rlin_need(py, ext, RENDER_SPHERE_BITS);
+    kp = kp > n ? kp : n;
+    n = rlin_need(pz, ext, RENDER_SPHERE_BITS);
+    kp = kp > n ? kp : n;
+    int ka = 48; /* orthographic: a = 1 exactly */
+    if (ortho) {
+        n = rlin_need(&radl, ext, RENDER_SPHERE_BITS);
+        kp = kp > n ? kp : n;
+    } else {
+        ka = rquad_need(a, ext, RENDER_SPHERE_BITS);
+    }
+    /* R^2 a in units of 2^(2 kp - 96): r2 = R2_48 * 2^(ka - 2 kp). In
+     * perspective r2 multiplies a 64-bit a, so it must fit 62 bits too:
+     * on tiny images the pieces' scales alone can leave it larger, and a
+     * coarser kp (four times smaller r2 per step) fixes that. */
+    int sr = 2 * kp - ka;
+    sp->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    while (!ortho && fx128_bits(sp->r2) > RENDER_SPHERE_BITS) {
+        kp++;
+        sr += 2;
+        sp->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
+    }
+    int sk = 2 * kp - 48;
+    sp->k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
+    sp->b = rlin_scaled(b, kp);
+    r->sphere_a = rquad_scaled(a, ka); /* the same for every sphere */
+    sp->a = &r->sphere_a;
+    /* b and sqrt(disc) are real * 2^(48 - kp), c is real * 2^(96 - 2 kp)
+     * and a is real * 2^(48 - ka). */
+    sp->tc = (int8_t)(kp - 48);
+    sp->ta = (int8_t)(kp - ka);
+    sp->px = rlin_scaled(px, kp);
+    sp->py = rlin_scaled(py, kp);
+    sp->pz = rlin_scaled(pz, kp);
+}
+#endif
+
+__attribute__((noinline)) static void render_sphere_bounds(const cam_t *cam, vec3_t c, num_t rad, rc_t cc,
+                                                           render_obj_t *o)
+{
+    if (!rc_is_neg(cc) && c.z >= rad) {
+        render_set_empty(o); /* wholly at z >= 0: behind the eye */
+        return;
+    }
+    if (rc_is_neg(cc)) {
+        render_set_full(cam, o); /* eye inside */
+        return;
+    }
+    vec3_t corner[8];
+    for (int i = 0; i < 8; i++)
+        corner[i] = vec3_make((i & 1) ? num_add(c.x, rad) : num_sub(c.x, rad),
+                              (i & 2) ? num_add(c.y, rad) : num_sub(c.y, rad),
+                              (i & 4) ? num_add(c.z, rad) : num_sub(c.z, rad));
+    render_points_bounds(cam, corner, 8, o);
+}
+
+__attribute__((noinline)) static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t c = render_to_cam(cam, s->center);
     num_t rad = s->radius;
     rc_t r2 = rc_w(s->radius2);
     rc_t cc = rc_sub(rc_add(rc_add(rc_nn(c.x, c.x), rc_nn(c.y, c.y)), rc_nn(c.z, c.z)), r2);
-    rclin_t zero = {rc_zero(), rc_zero(), rc_zero()};
+    static const rclin_t zero; /* all coefficients 0 (static: no stack copy) */
+    static const rcquad_t zero_q;
     rclin_t b = zero, px = zero, py = zero, pz = zero;
-    rcquad_t a = {rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero(), rc_zero()};
+    rcquad_t a = zero_q;
     rc_t k;
     bool ortho = render_ortho(cam);
     (void)ext;
@@ -410,78 +479,25 @@ static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s,
         k = cc;
     }
 #if FXRT_NUMBER == FXRT_Q16
-    /* Scales: the p pieces share kp, so disc is in units of 2^(2 kp - 96)
-     * and r2 is R^2 a brought to those units; b only matters by its sign. */
-    rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
-    int kp = rlin_need(&px, ext, RENDER_SPHERE_BITS), n;
-    n = rlin_need(&b, ext, RENDER_SPHERE_BITS); /* b + sqrt(disc) is formed for depth */
-    kp = kp > n ? kp : n;
-    n = rlin_need(&py, ext, RENDER_SPHERE_BITS);
-    kp = kp > n ? kp : n;
-    n = rlin_need(&pz, ext, RENDER_SPHERE_BITS);
-    kp = kp > n ? kp : n;
-    int ka = 48; /* orthographic: a = 1 exactly */
-    if (ortho) {
-        n = rlin_need(&radl, ext, RENDER_SPHERE_BITS);
-        kp = kp > n ? kp : n;
-    } else {
-        ka = rquad_need(&a, ext, RENDER_SPHERE_BITS);
-    }
-    /* R^2 a in units of 2^(2 kp - 96): r2 = R2_48 * 2^(ka - 2 kp). In
-     * perspective r2 multiplies a 64-bit a, so it must fit 62 bits too:
-     * on tiny images the pieces' scales alone can leave it larger, and a
-     * coarser kp (four times smaller r2 per step) fixes that. */
-    int sr = 2 * kp - ka;
-    o->u.sphere->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
-    while (!ortho && fx128_bits(o->u.sphere->r2) > RENDER_SPHERE_BITS) {
-        kp++;
-        sr += 2;
-        o->u.sphere->r2 = sr >= 0 ? fx128_shr128(r2, sr) : fx128_shl(r2, -sr);
-    }
-    int sk = 2 * kp - 48;
-    o->u.sphere->k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
-    o->u.sphere->b = rlin_scaled(b, kp);
-    r->sphere_a = rquad_scaled(a, ka); /* the same for every sphere */
-    o->u.sphere->a = &r->sphere_a;
-    /* b and sqrt(disc) are real * 2^(48 - kp), c is real * 2^(96 - 2 kp)
-     * and a is real * 2^(48 - ka). */
-    o->u.sphere->tc = (int8_t)(kp - 48);
-    o->u.sphere->ta = (int8_t)(kp - ka);
-    o->u.sphere->px = rlin_scaled(px, kp);
-    o->u.sphere->py = rlin_scaled(py, kp);
-    o->u.sphere->pz = rlin_scaled(pz, kp);
+    render_sphere_scale(r, ext, o->u.sphere, rad, r2, k, &b, &px, &py, &pz, &a);
 #else
-    o->u.sphere->b = rlin_scaled(b, 0);
-    r->sphere_a = rquad_scaled(a, 0);
+    o->u.sphere->b = rlin_scaled(&b, 0);
+    r->sphere_a = rquad_scaled(&a, 0);
     o->u.sphere->a = &r->sphere_a;
-    o->u.sphere->px = rlin_scaled(px, 0);
-    o->u.sphere->py = rlin_scaled(py, 0);
-    o->u.sphere->pz = rlin_scaled(pz, 0);
+    o->u.sphere->px = rlin_scaled(&px, 0);
+    o->u.sphere->py = rlin_scaled(&py, 0);
+    o->u.sphere->pz = rlin_scaled(&pz, 0);
     o->u.sphere->k = k;
     o->u.sphere->r2 = r2;
     o->u.sphere->tc = 0;
     o->u.sphere->ta = 0;
 #endif
-    /* Bounds. */
-    if (!rc_is_neg(cc) && c.z >= rad) {
-        render_set_empty(o); /* wholly at z >= 0: behind the eye */
-        return;
-    }
-    if (rc_is_neg(cc)) {
-        render_set_full(r->cam, o); /* eye inside */
-        return;
-    }
-    vec3_t corner[8];
-    for (int i = 0; i < 8; i++)
-        corner[i] = vec3_make((i & 1) ? num_add(c.x, rad) : num_sub(c.x, rad),
-                              (i & 2) ? num_add(c.y, rad) : num_sub(c.y, rad),
-                              (i & 4) ? num_add(c.z, rad) : num_sub(c.z, rad));
-    render_points_bounds(cam, corner, 8, o);
+    render_sphere_bounds(cam, c, rad, cc, o);
 }
 #endif
 
 #if FXRT_MAX_PLANES > 0
-static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
 {
     o->kind = RENDER_FLAT;
     o->nflat = 1;
@@ -493,7 +509,7 @@ static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, r
 #endif
 
 #if FXRT_MAX_TRIANGLES > 0
-static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
@@ -512,13 +528,12 @@ static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t
     render_points_bounds(cam, v, 3, o);
     if (!render_flat_eye(cam, t->a, t->n, f))
         render_set_empty(o); /* the eye in the triangle's plane */
-    render_flat_bounds_from(f, o);
 }
 #endif
 
 #if FXRT_MAX_BOXES > 0
 
-static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     bool ortho = render_ortho(cam);
@@ -586,7 +601,7 @@ static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, rende
              * for one face rather than all of them. */
             render_obj_t tmp;
             render_points_bounds(cam, q, 4, &tmp);
-            render_flat_bounds_from(f, &tmp);
+            render_face_bounds_from(bf, &tmp);
         }
     }
     if (inside) {

@@ -16,8 +16,11 @@
 /* A colour from intensity fractions 0..1 (COLOR_FRAC: core/geom.h). */
 #define RGB(r, g, b) color_make(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
 
+/* Static storage, not the stack: the micro:bit reserves 2 KB of stack for
+ * the core's own use (docs/BENCHMARKS.md, "RAM"). */
 static world_t world;              /* 5 objects: the capacities in examples.mk */
 static render_t rs;                /* per-frame forms of every object */
+static cam_t cam;                  /* set again for every frame */
 static uint8_t row[FXRT_ROW_BYTES(ORBIT_W)];
 
 static vec3_t v3(fx_t x, fx_t y, fx_t z)
@@ -32,7 +35,9 @@ static void must(int32_t r, const char *what)
         example_fail(what, fxrt_strerror(r));
 }
 
-static void build_world(void)
+/* Out of line: its call arguments then take stack only while it runs,
+ * not during every frame's set-up as well. */
+__attribute__((noinline)) static void build_world(void)
 {
     must(fxrt_world_init(&world, RGB(0.05, 0.1, 0.2)), "world");
     must(world_add_plane(&world, v3(0, F16(-1), 0), v3(0, F16(1), 0), RGB(0.35, 0.55, 0.3)),
@@ -51,7 +56,6 @@ static void build_world(void)
 int orbit_main(void)
 {
     build_world();
-    cam_t cam;
     const fx_t radius = F16(5.5), height = F16(1.8);
     for (int32_t f = 0; f < ORBIT_FRAMES; f++) {
         example_frame_begin(f, ORBIT_W, ORBIT_H);

@@ -234,5 +234,8 @@ int main(void)
     report("stack_used=", board_stack_used());
     report("stack_size=", board_stack_size());
     semihost_puts("\n");
+    if (board_stack_used() + FXRT_STACK_MARGIN > board_stack_size())
+        fail("stack: the run left less than FXRT_STACK_MARGIN bytes of the reserved stack unused "
+             "(stack_used= above; STACK_SIZE in linker/BOARD.ld)");
     return 0;
 }

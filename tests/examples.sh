@@ -44,6 +44,13 @@ for f in $(seq 0 $((FRAMES - 1))); do
     fi
     check "micro:bit $name byte-identical to the host's" cmp -s "$out/host/$name" "$out/microbit/$name"
 done
+# The micro:bit's stack reservation is sized from measured use with
+# FXRT_STACK_MARGIN to spare (docs/BENCHMARKS.md, "RAM"): the example too.
+su=$(sed -nE 's/.* stack_used=([0-9]+).*/\1/p' "$log" | tail -n 1)
+ss=$(sed -nE 's/.* stack_size=([0-9]+).*/\1/p' "$log" | tail -n 1)
+sm=$(sed -nE 's/^#define FXRT_STACK_MARGIN ([0-9]+).*/\1/p' core/fxrt_config.h)
+check "micro:bit orbit: stack used (${su:-?} B) + FXRT_STACK_MARGIN (${sm:-?} B) <= reserved (${ss:-?} B)" \
+    test -n "$su" -a -n "$ss" -a -n "$sm" -a "$((${su:-0} + ${sm:-0}))" -le "${ss:-0}"
 ticks=$(sed -nE 's/^ticks=([0-9]+) .*/\1/p' "$log")
 if [ -n "$ticks" ]; then
     echo "micro:bit orbit: instructions_per_frame=$(awk -v t="$ticks" -v f=$FRAMES 'BEGIN { printf "%.0f", t * 62.5 / 32 / f }')" \

@@ -74,7 +74,8 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
         say(fxrt_strerror(e), "\n", "");
         return 1;
     }
-    char path[96], *p = path;
+    static char path[96]; /* static: the stack is what the core's use is measured against */
+    char *p = path;
     for (const char *q = s->name; *q && p < path + 80; q++)
         *p++ = *q;
     for (const char *q = ".ppm.part"; *q; q++)
@@ -85,7 +86,7 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
         say("scene=", s->name, " error=cannot open the output\n");
         return 1;
     }
-    char hdr[32] = "P6\n";
+    static char hdr[32] = "P6\n";
     p = put_dec(hdr + 3, (uint32_t)cam.width);
     *p++ = ' ';
     p = put_dec(p, (uint32_t)cam.height);
@@ -128,6 +129,13 @@ int main(void)
     semihost_put_u64(board_ram_static());
     semihost_puts(" stack_used=");
     semihost_put_u64(board_stack_used());
+    semihost_puts(" stack_size=");
+    semihost_put_u64(board_stack_size());
     semihost_puts("\n");
+    /* The reservation must leave FXRT_STACK_MARGIN unused (firmware/main.c). */
+    if (board_stack_used() + FXRT_STACK_MARGIN > board_stack_size()) {
+        semihost_puts("error=stack: the run left less than FXRT_STACK_MARGIN bytes of the reserved stack unused\n");
+        failed = 1;
+    }
     return failed;
 }
