@@ -258,18 +258,22 @@ static numw_t geom_edge(vec3_t p, vec3_t q, const ray_t *ray)
     return swap ? numw_sub(numw_from(NUM_ZERO), e) : e;
 }
 
-bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
+/* Does the ray's line pass inside the triangle? When all three edge tests
+ * agree in sign (either winding; a zero means the ray grazes that edge
+ * and counts). */
+static bool geom_triangle_inside(const geom_triangle_t *tr, const ray_t *ray)
 {
-    if (tr->degenerate)
-        return false;
     numw_t e0 = geom_edge(tr->a, tr->b, ray);
     numw_t e1 = geom_edge(tr->b, tr->c, ray);
     numw_t e2 = geom_edge(tr->c, tr->a, ray);
-    /* Inside when all three agree in sign (either winding; a zero means the
-     * ray grazes that edge and counts as a hit). */
     bool neg = e0 < 0 || e1 < 0 || e2 < 0;
     bool pos = e0 > 0 || e1 > 0 || e2 > 0;
-    if (neg && pos)
+    return !(neg && pos);
+}
+
+bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
+{
+    if (tr->degenerate || !geom_triangle_inside(tr, ray))
         return false;
     return geom_flat_t(tr->a, tr->n, ray, t);
 }
@@ -278,14 +282,7 @@ bool geom_triangle_occludes(const geom_triangle_t *tr, const ray_t *ray, num_t t
 {
     /* The plane first (two dot products): most shadow rays do not cross
      * it in (0, tmax), and then the edges are not needed. */
-    if (tr->degenerate || !geom_flat_occludes(tr->a, tr->n, ray, tmax))
-        return false;
-    numw_t e0 = geom_edge(tr->a, tr->b, ray);
-    numw_t e1 = geom_edge(tr->b, tr->c, ray);
-    numw_t e2 = geom_edge(tr->c, tr->a, ray);
-    bool neg = e0 < 0 || e1 < 0 || e2 < 0;
-    bool pos = e0 > 0 || e1 > 0 || e2 > 0;
-    return !(neg && pos);
+    return !tr->degenerate && geom_flat_occludes(tr->a, tr->n, ray, tmax) && geom_triangle_inside(tr, ray);
 }
 
 void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n)
