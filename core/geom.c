@@ -100,6 +100,11 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
     c->color = color;
     c->rgb = color_to_rgb8(color);
     c->id = id;
+#if FXRT_MAX_LIGHTS > 0
+    c->mat.kind = MATERIAL_FLAT;
+    c->mat.exponent = 0;
+    c->mat.specular = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+#endif
 }
 
 /* Where the ray meets the plane through a with normal n: t = (a - o) . n /
@@ -116,6 +121,21 @@ __attribute__((unused)) static bool geom_flat_t(vec3_t a, vec3_t n, const ray_t 
         return false;
     *t = tt;
     return true;
+}
+
+/* Shadow rays (any hit with 0 < t < tmax; tmax NUM_MAX: any t > 0)
+ * without a division: t = num / den is in range when num and den have one
+ * strict sign and |num| < tmax |den| (numw_lt_mul: exact in Q16.16). */
+__attribute__((unused)) static bool geom_flat_occludes(vec3_t a, vec3_t n, const ray_t *ray, num_t tmax)
+{
+    numw_t den = vec3_dotw(ray->d, n);
+    numw_t num = vec3_dotw(vec3_sub(a, ray->o), n);
+    if (den == 0 || num == 0 || (num < 0) != (den < 0))
+        return false;
+    if (tmax == NUM_MAX)
+        return true;
+    return num > 0 ? numw_lt_mul(num, tmax, den) : numw_lt_mul(numw_sub(numw_from(NUM_ZERO), num), tmax,
+                                                               numw_sub(numw_from(NUM_ZERO), den));
 }
 
 /* The plane's t for any ray (no side or sign test): shading's hit point
@@ -137,6 +157,11 @@ bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color
 bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t)
 {
     return geom_flat_t(p->a, p->n, ray, t);
+}
+
+bool geom_plane_occludes(const geom_plane_t *p, const ray_t *ray, num_t tmax)
+{
+    return geom_flat_occludes(p->a, p->n, ray, tmax);
 }
 
 void geom_plane_surface(const geom_plane_t *p, const ray_t *ray, num_t *t, vec3_t *n)
@@ -247,6 +272,20 @@ bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
     return geom_flat_t(tr->a, tr->n, ray, t);
 }
 
+bool geom_triangle_occludes(const geom_triangle_t *tr, const ray_t *ray, num_t tmax)
+{
+    if (tr->degenerate)
+        return false;
+    numw_t e0 = geom_edge(tr->a, tr->b, ray);
+    numw_t e1 = geom_edge(tr->b, tr->c, ray);
+    numw_t e2 = geom_edge(tr->c, tr->a, ray);
+    bool neg = e0 < 0 || e1 < 0 || e2 < 0;
+    bool pos = e0 > 0 || e1 > 0 || e2 > 0;
+    if (neg && pos)
+        return false;
+    return geom_flat_occludes(tr->a, tr->n, ray, tmax);
+}
+
 void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n)
 {
     *t = geom_flat_surface_t(tr->a, tr->n, ray);
@@ -325,6 +364,42 @@ bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t)
 {
     uint8_t face;
     return geom_box_hit_face(b, ray, t, &face);
+}
+
+/* n1 / d1 < n2 / d2 for d1, d2 > 0: exact in Q16.16 (64-bit products). */
+static bool geom_frac_less(num_t n1, num_t d1, num_t n2, num_t d2)
+{
+    return numw_mul(n1, d2) < numw_mul(n2, d1);
+}
+
+bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax)
+{
+    /* The slab test with each bound kept as a fraction num / |d_i|: the
+     * ray is in the box for t in [near, far]; it occludes when some t in
+     * (0, tmax) is in it: max(near, 0) < min(far, tmax). */
+    num_t nn = NUM_ZERO, nd = NUM_ONE; /* near = 0 */
+    num_t fn = tmax, fd = NUM_ONE;     /* far = tmax */
+    for (int i = 0; i < 3; i++) {
+        num_t o = geom_axis(ray->o, i), d = geom_axis(ray->d, i);
+        num_t lo = geom_axis(b->min, i), hi = geom_axis(b->max, i);
+        if (d == NUM_ZERO) {
+            if (o < lo || o > hi)
+                return false;
+            continue;
+        }
+        num_t a0 = num_sub(lo, o), a1 = num_sub(hi, o);
+        num_t in = d > NUM_ZERO ? a0 : num_neg(a1), out = d > NUM_ZERO ? a1 : num_neg(a0);
+        num_t ad = num_abs(d);
+        if (geom_frac_less(nn, nd, in, ad)) {
+            nn = in;
+            nd = ad;
+        }
+        if (geom_frac_less(out, ad, fn, fd)) {
+            fn = out;
+            fd = ad;
+        }
+    }
+    return geom_frac_less(nn, nd, fn, fd);
 }
 
 /* The outward unit normal of face f (axis f / 2, max side when f is odd). */

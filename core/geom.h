@@ -130,6 +130,14 @@ bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t);
  * side), 0..5. */
 bool geom_box_hit_face(const geom_box_t *b, const ray_t *ray, num_t *t, uint8_t *face);
 
+/* Shadow rays: is the object hit at some t with 0 < t < tmax (tmax =
+ * NUM_MAX: any t > 0)? Any hit, not the nearest, and no division: the
+ * bounds are compared as fractions, exactly in Q16.16 (a sphere's own
+ * kernel has no division, world_occluded uses it). */
+bool geom_plane_occludes(const geom_plane_t *p, const ray_t *ray, num_t tmax);
+bool geom_triangle_occludes(const geom_triangle_t *tr, const ray_t *ray, num_t tmax);
+bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax);
+
 /* Shading: where a ray that the renderer has already found to meet the
  * object meets its surface, and the unit geometric normal there (outward
  * for a sphere and a box, the stored normal for a plane and a triangle;

@@ -77,6 +77,14 @@ static inline numw_t numw_mul_int(numw_t w, int32_t i)
     return p;
 }
 
+/* a < t * b for wide a, b and a scalar t, exactly: a * 2^16 < t * b in
+ * 128-bit integers (shadow rays' "t < tmax" without a division). */
+static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b)
+{
+    fx128_t d = fx128_sub(fx128_shl(fx128_from64(a), 16), fx128_mul(t, b));
+    return d.hi < 0;
+}
+
 /* x^k for x in [0, 1] (given wide, clamped to [0, 1]) and an integer k
  * >= 1, by repeated squaring (no pow): Q16.16 works in unsigned Q1.31
  * with 32 x 32 -> 64-bit products rounded to nearest, so the ~log2(k)
@@ -149,6 +157,7 @@ static inline num_t numw_sqrt(numw_t w) { return num_sqrt(w); }
 static inline num_t numw_div(numw_t a, numw_t b) { return num_div(a, b); }
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d) { return a * (num_t)m / (num_t)d; }
 static inline numw_t numw_mul_int(numw_t w, int32_t i) { return w * (num_t)i; }
+static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b) { return a < t * b; }
 /* x^k for x clamped to [0, 1], k >= 1, by repeated squaring (no pow). */
 static inline num_t numw_pow_int(numw_t x, uint32_t k)
 {

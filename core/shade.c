@@ -7,11 +7,13 @@ fxrt_stats_t fxrt_stats;
 
 #if FXRT_MAX_LIGHTS > 0
 
+#if FXRT_PHONG
 /* A specular colour (fractions) in 1/255 units: exact in Q16.16. */
 static color_t shade_255(color_t f)
 {
     return color_make(num_mul_int(f.r, 255), num_mul_int(f.g, 255), num_mul_int(f.b, 255));
 }
+#endif
 
 /* Spot cone: (-l) . s >= cos(angle) for l = v / |v|, compared as
  * (-v) . s >= cos(angle) |v|: cosines, no acos, and no rounding of l. */
@@ -36,7 +38,6 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw(n_geo, d) > 0;
     vec3_t n = inside ? vec3_neg(n_geo) : n_geo;
-    vec3_t e = vec3_neg(d);
     color_t cd = obj->color;
     color_t c = lit ? color_mul(cd, w->ambient) : cd;
     uint8_t bits = 0;
@@ -73,7 +74,7 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
 #if FXRT_PHONG
         if (m->kind == MATERIAL_PHONG) {
             vec3_t r = vec3_sub(vec3_scale(n, num_mul_int(ndl, 2)), l);
-            numw_t rde = vec3_dotw(r, e);
+            numw_t rde = vec3_dotw(r, vec3_neg(d)); /* r . e, e = -d */
             if (rde > 0)
                 c = color_add(c, color_scale(color_mul(shade_255(m->specular), L->color),
                                              numw_pow_int(rde, m->exponent)));

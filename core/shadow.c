@@ -40,25 +40,26 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool ins
 
 bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
 {
-    num_t t;
 #if FXRT_MAX_PLANES > 0
     for (uint16_t i = 0; i < w->n_planes; i++)
-        if (w->planes[i].obj.id != skip_id && geom_plane_hit(&w->planes[i], ray, &t) && t < tmax)
+        if (w->planes[i].obj.id != skip_id && geom_plane_occludes(&w->planes[i], ray, tmax))
             return true;
 #endif
 #if FXRT_MAX_SPHERES > 0
-    for (uint16_t i = 0; i < w->n_spheres; i++)
+    for (uint16_t i = 0; i < w->n_spheres; i++) {
+        num_t t;
         if (w->spheres[i].obj.id != skip_id && geom_sphere_hit(&w->spheres[i], ray, &t) && t < tmax)
             return true;
+    }
 #endif
 #if FXRT_MAX_TRIANGLES > 0
     for (uint16_t i = 0; i < w->n_triangles; i++)
-        if (w->triangles[i].obj.id != skip_id && geom_triangle_hit(&w->triangles[i], ray, &t) && t < tmax)
+        if (w->triangles[i].obj.id != skip_id && geom_triangle_occludes(&w->triangles[i], ray, tmax))
             return true;
 #endif
 #if FXRT_MAX_BOXES > 0
     for (uint16_t i = 0; i < w->n_boxes; i++)
-        if (w->boxes[i].obj.id != skip_id && geom_box_hit(&w->boxes[i], ray, &t) && t < tmax)
+        if (w->boxes[i].obj.id != skip_id && geom_box_occludes(&w->boxes[i], ray, tmax))
             return true;
 #endif
     return false;

@@ -5,7 +5,9 @@
 #
 #   # expect: q16 vs double: mismatched_pct <= 0.05, interior_mismatched == 0
 #       metrics of "fxrt compare DOUBLE-RENDER OTHER-RENDER" (q16 or float
-#       against double); any key of the compare line, conditions joined by ","
+#       against double); any key of the compare line, conditions joined by
+#       ","; lit scenes are compared with --scene SCENE, which adds the
+#       key-based metrics (within1_pct, far_max_err, ...)
 #   # expect: all: background == all
 #   # expect: q16,float: color 175 55 131 >= 100
 #   # expect: all: color 175 55 131 in 783..1073
@@ -204,8 +206,14 @@ for scene in "$dir"/*.scene; do
         pixel_stats "$out/$name-$n.ppm" $bg "$holes" >"$out/$name-$n.stats"
     done
     [ $rendered -eq 1 ] || continue
+    # Lit scenes (lights, ambient or a material other than flat) also get
+    # the key-based metrics (within1_pct, far_max_err, ...: issue 11),
+    # which need the scene.
+    keyed=()
+    grep -qE '^[[:space:]]*(light|ambient)[[:space:]]|[[:space:]]material[[:space:]]+(lambert|phong)' "$scene" &&
+        keyed=(--scene "$scene")
     for n in q16 float; do
-        line=$("$FXRT" compare "$out/$name-double.ppm" "$out/$name-$n.ppm" --diff "$out/$name-$n-diff.png")
+        line=$("$FXRT" compare "$out/$name-double.ppm" "$out/$name-$n.ppm" "${keyed[@]}" --diff "$out/$name-$n-diff.png")
         echo "$line" >"$out/$name-$n.compare"
         echo "$name $n vs double: $line"
     done

@@ -197,8 +197,27 @@ static void test_flat(void)
     CHECK(memcmp(ref, img, sizeof img) == 0);
 }
 
+/* A world set up again in the same storage starts flat: a second lit
+ * world is shaded like the first (a stale material once hid it). */
+static void test_reuse(void)
+{
+    cam_t cam;
+    camera(&cam);
+    uint32_t shaded[2];
+    for (int pass = 0; pass < 2; pass++) {
+        fxrt_world_init(&world, COL(0, 0, 0));
+        lit(world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.5, 0.5, 0.5)), MATERIAL_LAMBERT, 0);
+        world_add_light(&world, LIGHT_POINT, P(0, 4, 0), P(0, 0, 0), V(0), FRAC(1, 1, 1), false);
+        render(&cam, false);
+        shaded[pass] = fxrt_stats.shaded;
+    }
+    CHECK_MSG(shaded[0] > 0 && shaded[1] == shaded[0], "shaded %u then %u", (unsigned)shaded[0],
+              (unsigned)shaded[1]);
+}
+
 int main(void)
 {
+    test_reuse();
     test_behind();
     test_normalisations();
     test_pow();
