@@ -101,8 +101,8 @@ for b in $BOARDS; do
     echo "== on-board batch, $b: ${#names[@]} lit scenes at $SIZE (streamed rows)"
     cat "$out/onb-$b.txt"
     np=$(grep -c "^PASS $b " "$out/onb-$b.txt")
-    check "$b: every lit scene ran on board byte-identical to the host q16 render ($np of ${#names[@]})" \
-        test "$np" -eq "${#names[@]}"
+    check "$b: every lit scene ran on board byte-identical to the host q16 render ($np of ${#scenes[@]})" \
+        test "$np" -eq "${#scenes[@]}"
     grep -E "^FAIL" "$out/onb-$b.txt" | while read -r l; do echo "  $l"; done
 done
 echo "== firmware (firmware/main.c, make qemu)"
