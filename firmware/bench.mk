@@ -41,3 +41,10 @@ bench-ablation: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 ram-table: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' FIT_SIZE=$(or $(FIT_SIZE),160x120) RAM_UPDATE_DOCS=$(RAM_UPDATE_DOCS) firmware/fit.sh table
 .PHONY: ram-table
+
+# Per-function instruction profile of one firmware run in QEMU (the target's
+# own code, soft-float and libgcc helpers by name), for the missed targets:
+#   make profile SCENE=scenes/lit/room.scene BOARD=mps2-an385 NUMBER=float [PROFILE_SIZE=80x60] [FW_EXTRA=...]
+profile: deps $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) firmware/profile.sh '$(SCENE)' $(BOARD) $(NUMBER) $(or $(PROFILE_SIZE),80x60) '$(FW_EXTRA)'
+.PHONY: profile

@@ -3,6 +3,11 @@
 # board (firmware, semihosting frame dump), render the double reference on
 # the host, write PNGs and a sheet (Q16.16 | double | diff) per scene to
 # build/demo/, and print instructions and the mismatch against double.
+# Then the same for the lit course scenes (scenes/lit/course-*.scene, issue
+# 11) at DEMO_LIT_SIZE (default 320x240, a quarter of their 640x480, to keep
+# the demo quick), with fxrt compare --scene's metrics against double
+# (within 1/255, within 2/255, far from discontinuities, PSNR).
+#   DEMO_SIZE (640x430), DEMO_LIT_SIZE (320x240), DEMO_LIT_SCENES (files)
 set -eu
 BUILD=${BUILD:-build}
 FXRT=${FXRT:-$BUILD/fxrt}
@@ -10,6 +15,7 @@ BOARD=${BOARD:-mps2-an385}
 SIZE=${DEMO_SIZE:-640x430}
 out=$BUILD/demo
 mkdir -p "$out"
+get() { sed -E "s/.*(^| )$1=([^ ]+).*/\2/" <<<"$2"; }
 rows=()
 for scene in scenes/abb*.scene; do
     name=$(basename "$scene" .scene)
@@ -20,7 +26,6 @@ for scene in scenes/abb*.scene; do
     "$FXRT" render "$scene" --number double --size "$SIZE" -o "$out/$name-double.png"
     line=$("$FXRT" compare "$out/$name-double.png" "$out/$name-q16.png" --diff "$out/$name-diff.png")
     "$FXRT" sheet -o "$out/$name-sheet.png" "$out/$name-q16.png=Q16.16 (QEMU)" "$out/$name-double.png=double" "$out/$name-diff.png=diff"
-    get() { sed -E "s/.*(^| )$1=([^ ]+).*/\2/" <<<"$2"; }
     rows+=("$(printf '%-24s %-11s %12s %8s %9s %7s %8s %8s' "$name" "$BOARD" "$(get instructions "$run")" \
         "$(get instructions_per_pixel "$run")" "$(get mismatched "$line")" "$(get mismatched_pct "$line")" \
         "$(get interior_mismatched "$line")" "$(get psnr "$line")")")
@@ -31,3 +36,29 @@ printf '%s\n' "${rows[@]}"
 echo
 echo "frames: $out/NAME-q16.png (QEMU, Q16.16), NAME-double.png (host reference), NAME-diff.png,"
 echo "        NAME-sheet.png (the three side by side); size $SIZE, mismatch = Q16.16 vs double"
+
+# Lit course scenes: the same, with the lighting metrics.
+LSIZE=${DEMO_LIT_SIZE:-320x240}
+LSCENES=${DEMO_LIT_SCENES:-$(printf '%s ' scenes/lit/course-*.scene)}
+lrows=()
+for scene in $LSCENES; do
+    name=$(basename "$scene" .scene)
+    echo "[$name] QEMU $BOARD q16 $LSIZE"
+    run=$(make -s --no-print-directory BUILD="$BUILD" qemu SCENE="$scene" BOARD="$BOARD" NUMBER=q16 SIZE="$LSIZE" | grep instructions=)
+    "$FXRT" sheet --no-labels -o "$out/$name-q16.png" "$BUILD/qemu/$BOARD/$name-q16-$LSIZE.ppm"
+    "$FXRT" render "$scene" --number double --size "$LSIZE" -o "$out/$name-double.png"
+    line=$("$FXRT" compare "$out/$name-double.png" "$out/$name-q16.png" --scene "$scene" --diff "$out/$name-diff.png")
+    "$FXRT" sheet -o "$out/$name-sheet.png" "$out/$name-q16.png=Q16.16 (QEMU)" "$out/$name-double.png=double" "$out/$name-diff.png=diff"
+    lrows+=("$(printf '%-28s %-11s %11s %8s %8s %8s %8s %9s %7s %7s' "$name" "$BOARD" "$(get instructions "$run")" \
+        "$(get instructions_per_pixel "$run")" "$(get mismatched_pct "$line")" "$(get within1_pct "$line")" \
+        "$(get within2_pct "$line")" "$(get far_within1_pct "$line")" "$(get max_err "$line")" "$(get psnr "$line")")")
+done
+if [ ${#lrows[@]} -gt 0 ]; then
+    echo
+    echo "lit course scenes at $LSIZE, Q16.16 on $BOARD (QEMU) against the host double render (fxrt compare --scene):"
+    printf '%-28s %-11s %11s %8s %8s %8s %8s %9s %7s %7s\n' scene board instructions instr/px "mism %" "<=1 %" "<=2 %" "far<=1 %" max_err psnr
+    printf '%s\n' "${lrows[@]}"
+    echo
+    echo "frames: $out/NAME-{q16,double,diff,sheet}.png as above; <=K % = pixels within K/255 of double,"
+    echo "        far = away from object and shadow edges (see fxrt compare --help)"
+fi

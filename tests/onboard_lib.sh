@@ -1,0 +1,36 @@
+# Shared by tests/qemu.sh and tests/qemu_lit.sh (sourced, after lib.sh):
+# build tests/onboard_main.c for a batch of scenes compiled by fxrt-scenec
+# into $onb/scenes/NAME (host q16 frames in $onb/host/NAME.ppm), run it in
+# QEMU and give a verdict per scene. Needs $onb and $M (make command).
+# onb_batch BOARD TAG NAME...: build and run one ELF; prints a verdict per
+# scene (PASS/FAIL/SKIP) on stdout; returns 3 when the ELF overflows RAM.
+onb_batch() {
+    local b=$1 tag=$2 dir rc n t
+    shift 2
+    dir=$onb/$b-$tag
+    progress "${ONB_WHAT:-qemu.sh: on-board set-up of stress scenes}: $b $tag ($# scenes)"
+    tests/onboard_gen.sh "$dir" "${@/#/$onb/scenes/}"
+    if ! $M onboard BOARD=$b ONB_DIR="$dir" >"$dir/build.log" 2>&1; then
+        grep -q "region .RAM' overflowed" "$dir/build.log" && return 3
+        for n in "$@"; do echo "FAIL $b $n: build failed: $(tail -n 2 "$dir/build.log" | tr '\n' ' ')"; done
+        return 0
+    fi
+    (cd "$dir" && timeout "${FXRT_QEMU_TIMEOUT:-300}" qemu-system-arm -M "$(qemu_m $b)" -nographic -monitor none \
+        -serial none -semihosting-config enable=on,target=native -icount shift=5 -kernel onboard.elf </dev/null) \
+        >"$dir/run.log" 2>&1
+    rc=$?
+    for n in "$@"; do
+        t=$(sed -nE "s/^scene=$n frame_tick_count=([0-9]+)$/\1/p" "$dir/run.log")
+        if [ -z "$t" ]; then
+            echo "FAIL $b $n: $(grep "^scene=$n " "$dir/run.log" || echo "no report (exit $rc)")"
+        elif mv "$dir/$n.ppm.part" "$dir/$n.ppm" && cmp -s "$onb/host/$n.ppm" "$dir/$n.ppm"; then
+            echo "PASS $b $n instructions=$(awk -v t="$t" -v ns="$(tick_ns $b)" 'BEGIN { printf "%.0f", t * ns / 32 }')"
+        else
+            echo "FAIL $b $n: frame differs from the host q16 render"
+        fi
+    done
+    [ $rc -eq 0 ] || echo "FAIL $b batch $tag: exit $rc: $(tail -n 3 "$dir/run.log" | tr '\n' ' ')"
+    return 0
+}
+qemu_m() { echo "$1"; }
+tick_ns() { case $1 in microbit) echo 62.5 ;; *) echo 40 ;; esac; }
