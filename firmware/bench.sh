@@ -131,8 +131,11 @@ if [[ ${1:-} == --unit ]]; then
         exit 0
     fi
     read -r fwx tag < <(loop_extra "$r"; echo)
+    # Scene names repeat across sets (bench/room, lit/room): the lit set's
+    # firmware and frames get their own tag, references and frames the set.
+    [[ $set == lit ]] && tag=${tag:+$tag-}lit
     extra=()
-    [[ -n $fwx ]] && extra=(FW_EXTRA="$fwx" FW_TAG="$tag")
+    [[ -n $tag ]] && extra=(FW_EXTRA="$fwx" FW_TAG="$tag")
     log=$OUT/runs/$id.log
     if ! $M qemu SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$SIZE" FB="$fb" "${extra[@]}" >"$log" 2>&1; then
         if grep -q "^$scene: does not fit $board" "$log"; then
@@ -148,11 +151,11 @@ if [[ ${1:-} == --unit ]]; then
         { echo "$label: no or bad 'board= instructions= ... pixels=' line from make qemu:"; sed 's/^/  | /' "$log"; } >"$OUT/runs/$id.err"
         exit 1
     fi
-    frame=$OUT/frames/$board/$name-$number-$r.ppm
+    frame=$OUT/frames/$board/$set-$name-$number-$r.ppm
     mkdir -p "$(dirname "$frame")"
     cp "$BUILD/qemu/$board/$name-$number-$SIZE${tag:+-$tag}.ppm" "$frame"
-    if ! cmp=$("$FXRT" compare "$OUT/ref/$name-double.ppm" "$frame" 2>&1); then
-        echo "$label: fxrt compare $OUT/ref/$name-double.ppm $frame failed: $cmp" >"$OUT/runs/$id.err"
+    if ! cmp=$("$FXRT" compare "$OUT/ref/$set-$name-double.ppm" "$frame" 2>&1); then
+        echo "$label: fxrt compare $OUT/ref/$set-$name-double.ppm $frame failed: $cmp" >"$OUT/runs/$id.err"
         exit 1
     fi
     elf=$BUILD/fw/$board/$name-$number-$SIZE-$fb${tag:+-$tag}/fxrt.elf
@@ -254,7 +257,7 @@ step_ok || echo "bench: core/fxrt_config.h has no FXRT_FLOAT_STEP: the float-ste
 # Host double references, one per scene.
 for scene in $SCENES; do
     name=$(basename "$scene" .scene)
-    "$FXRT" render "$scene" --number double --size "$SIZE" -o "$OUT/ref/$name-double.ppm" ||
+    "$FXRT" render "$scene" --number double --size "$SIZE" -o "$OUT/ref/$(set_of "$scene")-$name-double.ppm" ||
         die "$name: host double reference render failed"
 done
 
@@ -345,6 +348,7 @@ function bname(n, r) { return n " " r }
 function cpuof(c) { return (c in board_of) ? board_of[c] : "" }
 NR == 1 { next }
 { set = $1; s = $2; b = $3; n = $5; r = $6
+  if ((s in sset) && sset[s] != set) s = set "/" s # a name another set has too (bench/room, lit/room)
   add("s", s); add("b", b); cpu[b] = $4; sset[s] = set; add("set" set, s)
   if (!(($4) in board_of)) board_of[$4] = b
   st[b, n, r, s] = $7; ins[b, n, r, s] = $8; ipp[b, n, r, s] = $9; mm[b, n, r, s] = $10; ps[b, n, r, s] = $11
