@@ -3,6 +3,13 @@
 # "NAME: N passed, N failed". Sum them and end with the total line; exit
 # non-zero if any check failed or any suite crashed.
 #
+# Two lanes run side by side (the suites are single-threaded): the suites
+# that build and run firmware in build/fw (qemu*, fit, examples, cli,
+# whose make fw runs would race on shared firmware directories) one after
+# another in one lane, every other suite in the other. RUN_LANES=1 runs
+# everything in one lane, in the order given. Each suite's line is printed
+# when it ends; the total comes last.
+#
 # Progress: a suite's output goes to its log, but a long suite may print
 # progress lines to the terminal with `progress` (tests/lib.sh), which
 # writes to fd $PROGRESS_FD: run.sh's own stdout, opened as fd 3. A suite
@@ -12,11 +19,15 @@ BUILD=${BUILD:-build}
 logdir=$BUILD/tests/logs
 mkdir -p "$logdir"
 notice_secs=${RUN_NOTICE_SECONDS:-10}
+lanes=${RUN_LANES:-2}
 exec 3>&1
 export PROGRESS_FD=3
-total_pass=0
-total_fail=0
-for suite in "$@"; do
+results=$(mktemp -d)
+trap 'rm -rf "$results"' EXIT
+
+# run_one SUITE: run it, print its line, record "PASSED FAILED" in $results.
+run_one() {
+    local suite=$1 name log start rc notice secs line p f
     name=$(basename "$suite")
     log=$logdir/$name.log
     start=$(date +%s)
@@ -40,13 +51,50 @@ for suite in "$@"; do
         echo "FAIL $name: exit $rc"
     fi
     if [ "$f" -ne 0 ]; then
-        printf '%-22s %6d passed %4d FAILED (%ds)\n' "$name" "$p" "$f" "$secs"
-        tail -n 30 "$log" | sed 's/^/    | /'
+        # one block per suite, so that the other lane's lines do not interleave
+        { printf '%-22s %6d passed %4d FAILED (%ds)\n' "$name" "$p" "$f" "$secs"
+          tail -n 30 "$log" | sed 's/^/    | /'; } | cat
     else
         printf '%-22s %6d passed (%ds)\n' "$name" "$p" "$secs"
     fi
+    echo "$p $f" >"$results/$(printf '%03d' "$2")"
+}
+
+firmware=() others=()
+i=0
+for suite in "$@"; do
+    case $(basename "$suite") in
+    qemu*.sh | fit.sh | examples.sh | cli.sh) firmware+=("$i:$suite") ;;
+    *) others+=("$i:$suite") ;;
+    esac
+    i=$((i + 1))
+done
+lane() { for item in "$@"; do run_one "${item#*:}" "${item%%:*}"; done; }
+if [ "$lanes" -ge 2 ]; then
+    lane "${firmware[@]}" &
+    first=$!
+    lane "${others[@]}"
+    wait "$first"
+else
+    i=0
+    for suite in "$@"; do
+        run_one "$suite" "$i"
+        i=$((i + 1))
+    done
+fi
+total_pass=0
+total_fail=0
+n=0
+for r in "$results"/*; do
+    [ -f "$r" ] || continue
+    read -r p f <"$r"
     total_pass=$((total_pass + p))
     total_fail=$((total_fail + f))
+    n=$((n + 1))
 done
+if [ "$n" -ne "$#" ]; then
+    echo "FAIL run.sh: $n of $# suites reported"
+    total_fail=$((total_fail + 1))
+fi
 echo "total: $total_pass passed, $total_fail failed"
 [ "$total_fail" -eq 0 ]
