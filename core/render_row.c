@@ -145,8 +145,9 @@ RENDER_MAYBE_UNUSED static void render_fill(render_t *r, uint16_t oi, int32_t xa
     typedef uint32_t __attribute__((may_alias)) word_t;
     int32_t x = xa;
 #if FXRT_MAX_LIGHTS > 0
-    for (int32_t k = xa; k <= xb; k++)
-        r->vis[k] = oi;
+    if (render_tracks(r)) /* only the shading pass reads vis */
+        for (int32_t k = xa; k <= xb; k++)
+            r->vis[k] = oi;
 #endif
 #if FXRT_PIXEL == FXRT_RGB565
     if (((uintptr_t)rgb & 3u) == 0) {

@@ -69,25 +69,29 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
     return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
 }
 
-/* shade_point_k without per-frame constants (the ray caster, arbitrary
- * rays): they are computed here, off the renderer's stack path. */
-static __attribute__((noinline)) color_t shade_point_own(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p,
-                                                        vec3_t n_geo, vec3_t d, uint8_t *mask)
+static color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
+                         vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask);
+
+/* shade_sum without per-frame constants (the ray caster, arbitrary rays):
+ * they are computed here, off the renderer's stack path. */
+static __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
+                                                      uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d, uint8_t *mask)
 {
     shade_k_t own;
-    shade_consts(w, world_common(w, kind, index), &own);
-    return shade_point_k(w, kind, index, p, n_geo, d, &own, mask);
+    shade_consts(w, obj, &own);
+    return shade_sum(w, obj, kind, index, p, n_geo, d, &own, mask);
 }
 
-color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
-                      const shade_k_t *k, uint8_t *mask)
+/* The light sum for object obj (= world_common(w, kind, index)), looked
+ * up once by the caller. */
+static color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
+                         vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask)
 {
-    const geom_common_t *obj = world_common(w, kind, index);
     const material_t *m = &obj->mat;
     FXRT_COUNT(shaded);
     bool lit = m->kind != MATERIAL_FLAT;
     if (lit && !k)
-        return shade_point_own(w, kind, index, p, n_geo, d, mask); /* computes k on its own frame */
+        return shade_sum_own(w, obj, kind, index, p, n_geo, d, mask); /* computes k on its own frame */
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw(n_geo, d) > 0;
     vec3_t n = inside ? vec3_neg(n_geo) : n_geo;
@@ -137,6 +141,12 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
     return c;
 }
 
+color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                      const shade_k_t *k, uint8_t *mask)
+{
+    return shade_sum(w, world_common(w, kind, index), kind, index, p, n_geo, d, k, mask);
+}
+
 color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask)
 {
     return shade_object_k(w, kind, index, ray, NULL, mask);
@@ -165,7 +175,7 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
 #endif
     default: break;
     }
-    return shade_point_k(w, kind, index, ray_at(ray, t), n, ray->d, k, mask);
+    return shade_sum(w, obj, kind, index, ray_at(ray, t), n, ray->d, k, mask);
 }
 
 #endif

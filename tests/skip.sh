@@ -40,7 +40,7 @@ flat=$(syms flat | grep -E "$LIGHTING" || true)
 check "flat materials link no lighting code (found: $flat)" test -z "$flat"
 noshadow=$(syms noshadow | grep -E "$SHADOW" || true)
 check "no shadow-casting light links no shadow-ray code (found: $noshadow)" test -z "$noshadow"
-check "the lit build links shade_point_k (control)" bash -c "arm-none-eabi-nm '$out/noshadow.elf' | grep -qw shade_point_k"
+check "the lit build links shade_object_k (control)" bash -c "arm-none-eabi-nm '$out/noshadow.elf' | grep -qw shade_object_k"
 check "the shadow build links shadow_blocked and world_occluded (control)" \
     bash -c "arm-none-eabi-nm '$out/shadow.elf' | grep -qw shadow_blocked && arm-none-eabi-nm '$out/shadow.elf' | grep -qw world_occluded"
 for b in flat noshadow shadow; do
