@@ -257,6 +257,47 @@
 /* Largest Phong exponent (the scene format allows 1..1024). */
 #define FXRT_PHONG_MAX_EXPONENT 1024
 
+/* ---- secondary rays and supersampling (core/trace.c, render_sample.c) -- */
+
+/* Largest bounce depth a world may ask for (world_set_depth, the scene's
+ * 'depth', 0..16). The bounce loop's stack of pending rays has this many
+ * entries (core/trace.h). 0 compiles bounces out: reflective materials
+ * keep their Phong term, transparent ones show black, and no bounce code
+ * is linked. The scene compiler emits the scene's own depth, or 0 when no
+ * object is reflective or transparent. */
+#ifndef FXRT_MAX_DEPTH
+#define FXRT_MAX_DEPTH (FXRT_MAX_LIGHTS > 0 ? 16 : 0)
+#endif
+#if FXRT_MAX_DEPTH < 0 || FXRT_MAX_DEPTH > 16
+#error "FXRT_MAX_DEPTH must be in 0..16"
+#endif
+#if FXRT_MAX_DEPTH > 0 && FXRT_MAX_LIGHTS == 0
+#error "FXRT_MAX_DEPTH > 0 needs FXRT_MAX_LIGHTS > 0 (reflective and transparent materials)"
+#endif
+/* Largest N of 'samples N' (N x N rays per pixel, 1..16). 1 compiles
+ * supersampling out. The visibility pass then works on a camera N times
+ * as wide, so N * width must stay within FXRT_RENDER_MAX_WIDTH. */
+#ifndef FXRT_MAX_SAMPLES
+#define FXRT_MAX_SAMPLES 16
+#endif
+#if FXRT_MAX_SAMPLES < 1 || FXRT_MAX_SAMPLES > 16
+#error "FXRT_MAX_SAMPLES must be in 1..16"
+#endif
+/* FXRT_ADAPTIVE 1 allows 'samples N adaptive' (one ray per pixel where
+ * the pixel's 3x3 neighbourhood has one key); 0 compiles it out. */
+#ifndef FXRT_ADAPTIVE
+#define FXRT_ADAPTIVE (FXRT_MAX_SAMPLES > 1)
+#endif
+#if FXRT_ADAPTIVE != 0 && FXRT_ADAPTIVE != 1
+#error "FXRT_ADAPTIVE must be 0 or 1"
+#endif
+#if FXRT_ADAPTIVE && FXRT_MAX_SAMPLES == 1
+#error "FXRT_ADAPTIVE needs FXRT_MAX_SAMPLES > 1"
+#endif
+/* Refraction index range ('index', transparent materials). */
+#define FXRT_INDEX_MIN 0.01
+#define FXRT_INDEX_MAX 100
+
 /* ---- the board program (firmware/main.c) ------------------------------- */
 
 /* Frame mode of the firmware (make qemu FB=full|stream):

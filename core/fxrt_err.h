@@ -33,6 +33,8 @@ typedef enum {
     FXRT_ERR_MATERIAL = -20, /* unknown material, exponent outside 1..1024, or lighting compiled out */
     FXRT_ERR_ID = -21,       /* no object with this id */
     FXRT_ERR_LIGHT = -22,    /* unknown light kind */
+    FXRT_ERR_DEPTH = -23,    /* bounce depth outside 0..FXRT_MAX_DEPTH */
+    FXRT_ERR_SAMPLES = -24,  /* samples outside 1..FXRT_MAX_SAMPLES, or adaptive compiled out */
     /* Camera errors without a name above (cam_setup codes added later)
      * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
      * fxrt_strerror still tell them apart. */
@@ -66,6 +68,8 @@ typedef enum {
 #define world_set_material FXRT_SYM(world_set_material)
 #define world_add_light FXRT_SYM(world_add_light)
 #define light_check_fraction FXRT_SYM(light_check_fraction)
+#define world_set_depth FXRT_SYM(world_set_depth)
+#define world_set_samples FXRT_SYM(world_set_samples)
 #endif
 
 #endif

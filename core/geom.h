@@ -16,17 +16,37 @@
 
 typedef enum { GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX } geom_kind_t;
 
-/* How a surface responds to light (core/shade.c has the formulas):
- *   MATERIAL_FLAT     its colour as is, whatever the lights (the default)
- *   MATERIAL_LAMBERT  ambient + diffuse
- *   MATERIAL_PHONG    ambient + diffuse + specular (specular, exponent) */
-typedef enum { MATERIAL_FLAT, MATERIAL_LAMBERT, MATERIAL_PHONG } material_kind_t;
+/* How a surface responds to light (core/shade.c and core/trace.c have
+ * the formulas):
+ *   MATERIAL_FLAT         its colour as is, whatever the lights (the default)
+ *   MATERIAL_LAMBERT      ambient + diffuse
+ *   MATERIAL_PHONG        ambient + diffuse + specular (specular, exponent)
+ *   MATERIAL_REFLECTIVE   phong + reflection (.) the colour seen along the
+ *                         mirrored ray
+ *   MATERIAL_TRANSPARENT  no local term: Schlick-weighted reflected and
+ *                         transmitted (refracted, tinted by the colour)
+ *                         rays; casts no shadow */
+typedef enum {
+    MATERIAL_FLAT,
+    MATERIAL_LAMBERT,
+    MATERIAL_PHONG,
+    MATERIAL_REFLECTIVE,
+    MATERIAL_TRANSPARENT
+} material_kind_t;
 
 typedef struct {
-    uint8_t kind;      /* material_kind_t */
-    uint16_t exponent; /* phong: 1..FXRT_PHONG_MAX_EXPONENT */
-    color_t specular;  /* phong: c_s, fractions 0..1 (NUM_ONE = full) */
+    uint8_t kind;       /* material_kind_t */
+    uint16_t exponent;  /* phong, reflective: 1..FXRT_PHONG_MAX_EXPONENT */
+    color_t specular;   /* phong, reflective: c_s, fractions 0..1 (NUM_ONE = full) */
+    color_t reflection; /* reflective: c_r, fractions 0..1 */
+    num_t index;        /* transparent: refraction index eta, FXRT_INDEX_MIN..MAX */
 } material_t;
+
+/* Does the material trace secondary rays (when FXRT_MAX_DEPTH > 0)? */
+static inline bool material_bounces(uint8_t kind)
+{
+    return kind == MATERIAL_REFLECTIVE || kind == MATERIAL_TRANSPARENT;
+}
 
 /* What every object carries besides its shape. */
 typedef struct {

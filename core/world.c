@@ -22,6 +22,57 @@ void world_init(world_t *w, color_t background)
     w->n_lights = 0;
     w->n_lit = 0;
 #endif
+#if FXRT_MAX_DEPTH > 0
+    w->depth = FXRT_MAX_DEPTH < 4 ? FXRT_MAX_DEPTH : 4;
+    w->n_bounce = 0;
+    w->bounded = false;
+#endif
+#if FXRT_MAX_SAMPLES > 1
+    w->samples = 1;
+    w->adaptive = false;
+#endif
+}
+
+/* Grow the bounds of the bounded objects by the box lo..hi. */
+static void world_grow(world_t *w, vec3_t lo, vec3_t hi)
+{
+#if FXRT_MAX_DEPTH > 0
+    if (!w->bounded) {
+        w->bmin = lo;
+        w->bmax = hi;
+        w->bounded = true;
+        return;
+    }
+    w->bmin = vec3_make(num_min(w->bmin.x, lo.x), num_min(w->bmin.y, lo.y), num_min(w->bmin.z, lo.z));
+    w->bmax = vec3_make(num_max(w->bmax.x, hi.x), num_max(w->bmax.y, hi.y), num_max(w->bmax.z, hi.z));
+#else
+    (void)w, (void)lo, (void)hi;
+#endif
+}
+
+fxrt_err_t world_set_depth(world_t *w, int32_t depth)
+{
+    if (depth < 0 || depth > FXRT_MAX_DEPTH)
+        return FXRT_ERR_DEPTH;
+#if FXRT_MAX_DEPTH > 0
+    w->depth = (uint8_t)depth;
+#else
+    (void)w;
+#endif
+    return FXRT_OK;
+}
+
+fxrt_err_t world_set_samples(world_t *w, int32_t samples, bool adaptive)
+{
+    if (samples < 1 || samples > FXRT_MAX_SAMPLES || (adaptive && (!FXRT_ADAPTIVE || samples < 2)))
+        return FXRT_ERR_SAMPLES;
+#if FXRT_MAX_SAMPLES > 1
+    w->samples = (uint8_t)samples;
+    w->adaptive = adaptive;
+#else
+    (void)w;
+#endif
+    return FXRT_OK;
 }
 
 uint16_t world_count(const world_t *w)
@@ -76,6 +127,8 @@ int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color)
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
     geom_sphere_make(&w->spheres[w->n_spheres++], center, radius, color, id);
+    world_grow(w, vec3_sub(center, vec3_make(radius, radius, radius)),
+               vec3_add(center, vec3_make(radius, radius, radius)));
     return id;
 #else
     (void)w;
@@ -94,6 +147,10 @@ int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t col
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
     geom_triangle_make(&w->triangles[w->n_triangles++], a, b, c, color, id);
+    world_grow(w, vec3_make(num_min(a.x, num_min(b.x, c.x)), num_min(a.y, num_min(b.y, c.y)),
+                            num_min(a.z, num_min(b.z, c.z))),
+               vec3_make(num_max(a.x, num_max(b.x, c.x)), num_max(a.y, num_max(b.y, c.y)),
+                         num_max(a.z, num_max(b.z, c.z))));
     return id;
 #else
     (void)w;
@@ -112,6 +169,7 @@ int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color)
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
     geom_box_make(&w->boxes[w->n_boxes++], min, max, color, id);
+    world_grow(w, min, max);
     return id;
 #else
     (void)w;
@@ -244,22 +302,39 @@ fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
         ; /* always possible */
     else if (m->kind == MATERIAL_LAMBERT)
         ;
-    else if (m->kind == MATERIAL_PHONG) {
+    else if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) {
         if (!FXRT_PHONG || m->exponent < 1 || m->exponent > FXRT_PHONG_MAX_EXPONENT)
             return FXRT_ERR_MATERIAL;
         fxrt_err_t e = light_check_fraction(m->specular);
+        if (e == FXRT_OK && m->kind == MATERIAL_REFLECTIVE)
+            e = light_check_fraction(m->reflection);
         if (e != FXRT_OK)
             return e;
+    } else if (m->kind == MATERIAL_TRANSPARENT) {
+        /* (x >= lo && x <= hi) also refuses NaN */
+        if (!(m->index >= NUM(FXRT_INDEX_MIN) && m->index <= NUM(FXRT_INDEX_MAX)))
+            return FXRT_ERR_MATERIAL;
     } else
         return FXRT_ERR_MATERIAL;
 #if FXRT_MAX_LIGHTS > 0
     geom_common_t *c = (geom_common_t *)world_common(w, kind, index);
     bool was = c->mat.kind != MATERIAL_FLAT, is = m->kind != MATERIAL_FLAT;
+    bool was_b = material_bounces(c->mat.kind), is_b = material_bounces(m->kind);
+    (void)was_b, (void)is_b;
     c->mat = *m;
-    if (m->kind != MATERIAL_PHONG) {
+    /* Fields the kind does not use are stored as zero. */
+    color_t black = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    if (m->kind != MATERIAL_PHONG && m->kind != MATERIAL_REFLECTIVE) {
         c->mat.exponent = 0;
-        c->mat.specular = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        c->mat.specular = black;
     }
+    if (m->kind != MATERIAL_REFLECTIVE)
+        c->mat.reflection = black;
+    if (m->kind != MATERIAL_TRANSPARENT)
+        c->mat.index = NUM_ZERO;
+#if FXRT_MAX_DEPTH > 0
+    w->n_bounce = (uint16_t)(w->n_bounce + is_b - was_b);
+#endif
     w->n_lit = (uint16_t)(w->n_lit + is - was);
     return FXRT_OK;
 #else

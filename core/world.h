@@ -32,6 +32,24 @@ typedef struct {
     uint16_t n_lit;   /* objects whose material is not flat */
     light_t lights[FXRT_MAX_LIGHTS];
 #endif
+#if FXRT_MAX_DEPTH > 0
+    /* Secondary rays (core/trace.c): the largest bounce (world_set_depth,
+     * default 4 or FXRT_MAX_DEPTH if smaller), how many objects have a
+     * reflective or transparent material, and the box around every
+     * bounded object (spheres, triangles, boxes; grown by world_add_*),
+     * which a secondary ray must meet before those objects are tested. */
+    uint8_t depth;
+    uint16_t n_bounce;
+    bool bounded;  /* some bounded object exists: bmin, bmax are valid */
+    vec3_t bmin, bmax;
+#endif
+#if FXRT_MAX_SAMPLES > 1
+    /* Supersampling (core/render_sample.c): N x N rays per pixel, 1 by
+     * default; adaptive (FXRT_ADAPTIVE): N x N only where the 3x3
+     * neighbourhood's keys differ at one sample. */
+    uint8_t samples;
+    bool adaptive;
+#endif
 } world_t;
 
 /* The nearest hit of a ray: what shading needs. */
@@ -86,6 +104,41 @@ int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color);
  * fxrt_err_t; a refused light leaves the world unchanged. Unused fields
  * (direction of a point light, ...) are ignored. */
 fxrt_err_t world_set_ambient(world_t *w, color_t ambient);
+/* Secondary rays and supersampling (the scene's 'depth' and 'samples'):
+ * world_set_depth: the largest bounce, 0..FXRT_MAX_DEPTH (FXRT_ERR_DEPTH);
+ * world_set_samples: N x N rays per pixel, 1..FXRT_MAX_SAMPLES, adaptive
+ * only with FXRT_ADAPTIVE and N > 1 (FXRT_ERR_SAMPLES). A refused value
+ * leaves the world unchanged. */
+fxrt_err_t world_set_depth(world_t *w, int32_t depth);
+fxrt_err_t world_set_samples(world_t *w, int32_t samples, bool adaptive);
+/* The world's bounce depth and samples (0 and 1 when compiled out). */
+static inline int32_t world_depth(const world_t *w)
+{
+#if FXRT_MAX_DEPTH > 0
+    return w->depth;
+#else
+    (void)w;
+    return 0;
+#endif
+}
+static inline int32_t world_samples(const world_t *w)
+{
+#if FXRT_MAX_SAMPLES > 1
+    return w->samples;
+#else
+    (void)w;
+    return 1;
+#endif
+}
+static inline bool world_adaptive(const world_t *w)
+{
+#if FXRT_MAX_SAMPLES > 1
+    return w->adaptive;
+#else
+    (void)w;
+    return false;
+#endif
+}
 fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m);
 int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t direction, num_t angle_deg,
                         color_t color, bool shadows);

@@ -25,7 +25,18 @@ typedef enum { SCENE_PLANE, SCENE_SPHERE, SCENE_TRIANGLE, SCENE_BOX } scene_kind
 
 /* 'material flat|lambert|phong' on an object; flat (the default) is the
  * colour as is, unaffected by lights. */
-typedef enum { SCENE_MAT_FLAT, SCENE_MAT_LAMBERT, SCENE_MAT_PHONG } scene_material_t;
+typedef enum {
+    SCENE_MAT_FLAT,
+    SCENE_MAT_LAMBERT,
+    SCENE_MAT_PHONG,
+    SCENE_MAT_REFLECTIVE, /* specular, exponent and reflection all required */
+    SCENE_MAT_TRANSPARENT /* index required */
+} scene_material_t;
+
+/* 'depth N' (bounces per primary ray) and 'samples N [adaptive]'. */
+#define SCENE_DEFAULT_DEPTH 4
+#define SCENE_MAX_DEPTH 16
+#define SCENE_MAX_SAMPLES 16
 
 typedef struct {
     scene_kind_t kind;
@@ -34,8 +45,10 @@ typedef struct {
     scene_vec_t p[3];  /* plane: point, normal; sphere: center; triangle: a, b, c; box: min, max */
     double radius;     /* sphere only */
     scene_material_t material;
-    double specular[3]; /* phong only: fractions 0..1, else 0 */
-    int exponent;       /* phong only: 1..SCENE_MAX_EXPONENT, else 0 */
+    double specular[3]; /* phong, reflective: fractions 0..1, else 0 */
+    int exponent;       /* phong, reflective: 1..SCENE_MAX_EXPONENT, else 0 */
+    double reflection[3]; /* reflective only: fractions 0..1, else 0 */
+    double index;       /* transparent only: FXRT_INDEX_MIN..FXRT_INDEX_MAX, else 0 */
 } scene_obj_t;
 
 typedef enum { SCENE_LIGHT_POINT, SCENE_LIGHT_DIRECTIONAL, SCENE_LIGHT_SPOT } scene_light_kind_t;
@@ -68,6 +81,11 @@ typedef struct {
     scene_camera_t camera;
     int count;
     scene_obj_t obj[SCENE_MAX_OBJECTS]; /* in file order */
+    int depth;             /* 'depth', 0..SCENE_MAX_DEPTH, default SCENE_DEFAULT_DEPTH */
+    int depth_line;        /* line of 'depth', 0 when absent */
+    int samples;           /* 'samples', 1..SCENE_MAX_SAMPLES, default 1 */
+    int adaptive;          /* 1 for 'samples N adaptive' */
+    int samples_line;      /* line of 'samples', 0 when absent */
     int nlights;
     scene_light_t light[SCENE_MAX_LIGHTS > 0 ? SCENE_MAX_LIGHTS : 1]; /* in file order */
 } scene_t;
