@@ -157,6 +157,10 @@ const char *fxrt_strerror(int32_t err)
                "FXRT_MAX_LIGHTS, FXRT_PHONG)";
     case FXRT_ERR_ID: return "no object with this id";
     case FXRT_ERR_LIGHT: return "unknown light kind";
+    case FXRT_ERR_DEPTH: return "depth outside 0..FXRT_MAX_DEPTH (largest number of bounces)";
+    case FXRT_ERR_SAMPLES:
+        return "samples outside 1..FXRT_MAX_SAMPLES, or adaptive with fewer than 2 samples or compiled out "
+               "(FXRT_ADAPTIVE 0)";
     }
     return "unknown error";
 }
