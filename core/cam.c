@@ -214,3 +214,28 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
         ray->d = vec3_neg(cam->w);
     }
 }
+
+cam_err_t cam_fine(const cam_t *cam, int32_t n, cam_t *fine)
+{
+    if (n < 1 || n > 16 || cam->width > FXRT_MAX_DIM / n || cam->height > FXRT_MAX_DIM / n)
+        return CAM_ERR_SIZE;
+    *fine = *cam;
+    fine->width = cam->width * n;
+    fine->height = cam->height * n;
+    if (cam->kind == CAM_PERSPECTIVE) {
+        if (cam->focal > num_div(NUM(32767), num_from_int(n)))
+            return CAM_ERR_NARROW;
+        fine->focal = num_mul_int(cam->focal, n);
+        fine->fwd = vec3_scale_int(cam->fwd, n);
+    } else {
+#if FXRT_NUMBER == FXRT_Q16
+        int64_t h = n / 2;
+        fine->step_u = (cam->step_u + h) / n; /* steps are >= 0 */
+        fine->step_v = (cam->step_v + h) / n;
+#else
+        fine->step_u = cam->step_u / (num_t)n;
+        fine->step_v = cam->step_v / (num_t)n;
+#endif
+    }
+    return CAM_OK;
+}

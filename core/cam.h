@@ -69,6 +69,16 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
 /* Short English text for an error code. */
 const char *cam_strerror(cam_err_t err);
 
+/* Supersampling (samples N): the camera whose pixels are the N x N cells
+ * of cam's pixels, so that fine pixel (x N + i, y N + j) has its centre at
+ * the centre of cell (i, j) of cam's pixel (x, y): width and height times
+ * N, the same eye and basis, fwd times N exactly (perspective: the same
+ * rays, scaled), the orthographic steps divided by N (rounded to nearest
+ * in Q16.16's wide steps). Returns CAM_OK, CAM_ERR_SIZE (N outside 1..16
+ * or a dimension beyond FXRT_MAX_DIM) or CAM_ERR_NARROW (N H cot(fov/2)
+ * beyond 32767, as cam_setup refuses it). */
+cam_err_t cam_fine(const cam_t *cam, int32_t n, cam_t *fine);
+
 /* The primary ray through pixel (x, y), y counted from the bottom. */
 void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray);
 

@@ -77,4 +77,37 @@ static inline color_t color_scale(color_t a, num_t s)
  * floor(c + 1/2), exactly in every build. */
 rgb8_t color_to_rgb8(color_t c);
 
+/* Supersampling: the sum of a pixel's samples, one channel, each sample
+ * clamped to 0..255 (1/255 units) first; the output is the mean rounded
+ * half up, floor(sum / n2 + 1/2), as color_to_rgb8 rounds one sample.
+ * Q16.16 sums raw units in uint32: at most 255 * 2^16 * 256 plus half a
+ * unit per sample, below 2^32, so 16 x 16 samples never overflow. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef uint32_t color_sum_t;
+_Static_assert((uint64_t)255 * 65536 * 256 + 256 * 32768 < ((uint64_t)1 << 32),
+               "a pixel's sum of 16 x 16 clamped samples, plus half a unit each, fits uint32");
+/* Add channel c, clamped, n times. */
+static inline void color_sum_add(color_sum_t *a, num_t c, uint32_t n)
+{
+    uint32_t v = c <= 0 ? 0u : c >= (255 << 16) ? (255u << 16) : (uint32_t)c;
+    *a += v * n;
+}
+static inline uint8_t color_sum_out(color_sum_t a, uint32_t n2)
+{
+    return (uint8_t)((a + n2 * 32768u) / (n2 << 16));
+}
+#else
+typedef num_t color_sum_t;
+static inline void color_sum_add(color_sum_t *a, num_t c, uint32_t n)
+{
+    num_t v = !(c > NUM_ZERO) ? NUM_ZERO : c >= NUM(255) ? NUM(255) : c;
+    *a += v * (num_t)n;
+}
+static inline uint8_t color_sum_out(color_sum_t a, uint32_t n2)
+{
+    num_t m = a / (num_t)n2 + NUM(0.5);
+    return m >= NUM(255) ? 255 : !(m > NUM_ZERO) ? 0 : (uint8_t)m;
+}
+#endif
+
 #endif

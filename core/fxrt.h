@@ -34,12 +34,13 @@
  * it is refused, never rendered wrong.
  *
  * Configuration: the core and the application must be compiled with the
- * same FXRT_NUMBER, FXRT_MAX_<KIND>, FXRT_MAX_LIGHTS, FXRT_RENDER_MAX_WIDTH
- * (and FXRT_PIXEL), since they change world_t and render_t. fxrt_world_init
+ * same FXRT_NUMBER, FXRT_MAX_<KIND>, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH,
+ * FXRT_MAX_SAMPLES, FXRT_ADAPTIVE, FXRT_RENDER_MAX_WIDTH (and FXRT_PIXEL),
+ * since they change world_t and render_t. fxrt_world_init
  * references a symbol whose name spells the application's configuration
- * (fxrt_config_n1_p4_s4_t4_b4_w64_px1_l0 ...); the core defines only the one
+ * (fxrt_config_n1_p4_s4_t4_b4_w64_px1_l0_d0_x1a0 ...); the core defines only the one
  * for its own, so a mismatch fails at link time with
- *   undefined reference to `fxrt_config_n1_p0_s8_t0_b0_w64_px1_l0'
+ *   undefined reference to `fxrt_config_n1_p0_s8_t0_b0_w64_px1_l0_d0_x1a0'
  * and, should it link anyway, fxrt_world_init returns FXRT_ERR_CONFIG.
  * The macros must be plain decimal integers for the name to form.
  */
@@ -70,13 +71,16 @@
 #else
 #define FXRT_CONFIG_PIXEL 1
 #endif
-#define FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l) fxrt_config_n##n##_p##p##_s##s##_t##t##_b##b##_w##w##_px##px##_l##l
-#define FXRT_CONFIG_CAT(n, p, s, t, b, w, px, l) FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l)
+#define FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l, d, x, ad)                                                    \
+    fxrt_config_n##n##_p##p##_s##s##_t##t##_b##b##_w##w##_px##px##_l##l##_d##d##_x##x##a##ad
+#define FXRT_CONFIG_CAT(n, p, s, t, b, w, px, l, d, x, ad) FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l, d, x, ad)
 /* The configuration as a link-time name, e.g.
- * fxrt_config_n1_p64_s64_t64_b64_w4096_px1_l8 (l: FXRT_MAX_LIGHTS). */
+ * fxrt_config_n1_p64_s64_t64_b64_w4096_px1_l8_d16_x16a1 (l: FXRT_MAX_LIGHTS, d: FXRT_MAX_DEPTH,
+ * x: FXRT_MAX_SAMPLES, a: FXRT_ADAPTIVE). */
 #define FXRT_CONFIG_SYMBOL                                                                                    \
     FXRT_CONFIG_CAT(FXRT_NUMBER, FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES, FXRT_MAX_BOXES,       \
-                    FXRT_RENDER_MAX_WIDTH, FXRT_CONFIG_PIXEL, FXRT_MAX_LIGHTS)
+                    FXRT_RENDER_MAX_WIDTH, FXRT_CONFIG_PIXEL, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES,    \
+                    FXRT_ADAPTIVE)
 /* Defined once, in core/fxrt.c, for the configuration the core is built with. */
 extern const uint32_t FXRT_CONFIG_SYMBOL;
 

@@ -266,7 +266,11 @@
  * is linked. The scene compiler emits the scene's own depth, or 0 when no
  * object is reflective or transparent. */
 #ifndef FXRT_MAX_DEPTH
-#define FXRT_MAX_DEPTH (FXRT_MAX_LIGHTS > 0 ? 16 : 0)
+#if FXRT_MAX_LIGHTS > 0
+#define FXRT_MAX_DEPTH 16
+#else
+#define FXRT_MAX_DEPTH 0
+#endif
 #endif
 #if FXRT_MAX_DEPTH < 0 || FXRT_MAX_DEPTH > 16
 #error "FXRT_MAX_DEPTH must be in 0..16"
@@ -286,7 +290,11 @@
 /* FXRT_ADAPTIVE 1 allows 'samples N adaptive' (one ray per pixel where
  * the pixel's 3x3 neighbourhood has one key); 0 compiles it out. */
 #ifndef FXRT_ADAPTIVE
-#define FXRT_ADAPTIVE (FXRT_MAX_SAMPLES > 1)
+#if FXRT_MAX_SAMPLES > 1
+#define FXRT_ADAPTIVE 1
+#else
+#define FXRT_ADAPTIVE 0
+#endif
 #endif
 #if FXRT_ADAPTIVE != 0 && FXRT_ADAPTIVE != 1
 #error "FXRT_ADAPTIVE must be 0 or 1"

@@ -20,6 +20,7 @@
 #define cam_setup FXRT_SYM(cam_setup)
 #define cam_strerror FXRT_SYM(cam_strerror)
 #define cam_ray FXRT_SYM(cam_ray)
+#define cam_fine FXRT_SYM(cam_fine)
 #define geom_plane_make FXRT_SYM(geom_plane_make)
 #define geom_sphere_make FXRT_SYM(geom_sphere_make)
 #define geom_triangle_make FXRT_SYM(geom_triangle_make)
@@ -61,6 +62,12 @@
 #define world_find FXRT_SYM(world_find)
 #define world_common FXRT_SYM(world_common)
 #define render_shade_row FXRT_SYM(render_shade_row)
+#define render_row_vis FXRT_SYM(render_row_vis)
+#define render_row_reference_vis FXRT_SYM(render_row_reference_vis)
+#define render_sample_row FXRT_SYM(render_sample_row)
+#define geom_sphere_exit FXRT_SYM(geom_sphere_exit)
+#define geom_box_exit FXRT_SYM(geom_box_exit)
+#define trace_bounces FXRT_SYM(trace_bounces)
 #endif
 
 #endif

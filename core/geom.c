@@ -97,7 +97,7 @@ fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color)
 
 static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
 {
-#if FXRT_MAX_LIGHTS > 0
+#if FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1
     c->color = color;
 #endif
     c->rgb = color_to_rgb8(color);
@@ -106,6 +106,8 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
     c->mat.kind = MATERIAL_FLAT;
     c->mat.exponent = 0;
     c->mat.specular = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    c->mat.reflection = c->mat.specular;
+    c->mat.index = NUM_ZERO;
 #endif
 }
 
@@ -231,6 +233,25 @@ void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec
     if (!vec3_normalize(&v))
         v = vec3_neg(ray->d); /* radius below 1 LSB: face the ray */
     *n = v;
+}
+
+bool geom_sphere_exit(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    /* As geom_sphere_surface, always the far root b + h: p - c = -q + h d. */
+    vec3_t oc = vec3_sub(s->center, ray->o);
+    num_t b = vec3_dot(oc, ray->d);
+    vec3_t q = vec3_sub(oc, vec3_scale(ray->d, b));
+    numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
+    num_t h = disc > 0 ? numw_sqrt(disc) : NUM_ZERO;
+    *t = num_add(b, h);
+    if (!(*t > NUM_ZERO))
+        return false;
+    vec3_t v = vec3_add(vec3_neg(q), vec3_scale(ray->d, h));
+    FXRT_COUNT(n_normalised);
+    if (!vec3_normalize(&v))
+        v = ray->d; /* radius below 1 LSB: leave along the ray */
+    *n = v;
+    return true;
 }
 #endif
 
@@ -426,5 +447,19 @@ void geom_box_surface(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n
     bool in = !outside && !(tnear > NUM_ZERO) && tfar > NUM_ZERO;
     *t = in ? tfar : tnear;
     *n = geom_box_normal(in ? ff : fn);
+}
+
+bool geom_box_exit(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    num_t tnear, tfar;
+    uint8_t fn, ff;
+    bool outside;
+    geom_box_slabs(b, ray, &tnear, &tfar, &fn, &ff, &outside);
+    (void)tnear, (void)fn;
+    if (outside || !(tfar > NUM_ZERO))
+        return false;
+    *t = tfar;
+    *n = geom_box_normal(ff);
+    return true;
 }
 #endif

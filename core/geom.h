@@ -52,8 +52,10 @@ static inline bool material_bounces(uint8_t kind)
 typedef struct {
     rgb8_t rgb;  /* color as output pixels, computed once */
     uint16_t id; /* position in the scene file: ties in t go to the lower id */
+#if FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1
+    color_t color;  /* 1/255 units, for shading and sampling (a flat 1-sample build needs only rgb) */
+#endif
 #if FXRT_MAX_LIGHTS > 0
-    color_t color;  /* fractions, for shading (an unlit build needs only rgb) */
     material_t mat; /* MATERIAL_FLAT unless world_set_material changed it */
 #endif
 } geom_common_t;
@@ -172,5 +174,13 @@ void geom_plane_surface(const geom_plane_t *p, const ray_t *ray, num_t *t, vec3_
 void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n);
 void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n);
 void geom_box_surface(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n);
+
+/* Secondary rays that start on a solid's surface and go into it
+ * (core/trace.c): where the ray leaves it, and the outward unit normal
+ * there. The far root of a sphere (the discriminant clamped at 0), the far
+ * slab of a box. False when that exit is not at t > 0 (a ray that only
+ * grazes the surface it starts on). */
+bool geom_sphere_exit(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n);
+bool geom_box_exit(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n);
 
 #endif

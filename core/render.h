@@ -113,6 +113,13 @@ typedef struct {
     int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
 } render_flat_t;
 
+/* The per-column owner array of the shading and sampling passes exists
+ * when some pass reads it. */
+#define RENDER_VIS (FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1)
+
+/* Output columns with samples > 1 (at most half the fine columns). */
+#define RENDER_OUT_COLS ((FXRT_RENDER_MAX_WIDTH + 1) / 2)
+
 /* A depth (ray parameter along the camera-space ray): Q16.16 keeps
  * t = n / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes. */
 #if FXRT_NUMBER == FXRT_Q16
@@ -208,14 +215,40 @@ typedef struct {
     uint16_t stamp;
     uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
     uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
-#if FXRT_MAX_LIGHTS > 0
-    /* Shading pass: per column of the current row, the object (index into
-     * obj) painted last, RENDER_NONE where none; lit[i] says whether object
-     * i's material is not flat. */
+#if RENDER_VIS
+    /* Shading and sampling passes: per column of the current row, the
+     * object (index into obj) painted last, RENDER_VIS_NONE where none,
+     * recorded when track is set (some object is lit, or samples > 1) or
+     * keys are wanted. */
     uint16_t vis[FXRT_RENDER_MAX_WIDTH];
+    bool track;
+#endif
+#if FXRT_MAX_LIGHTS > 0
     bool any_lit;
     /* Per object (index into obj): its shading constants, once per frame. */
     shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
+    uint16_t kind_base[4]; /* obj index of each kind's first object (obj = base + index) */
+#endif
+#if FXRT_MAX_SAMPLES > 1
+    /* Supersampling (render_sample.c), samples > 1: cam points to `fine`,
+     * the camera of the N x N cells (cam_fine), and out_cam to the output
+     * camera; each output row sums the clamped colours of its N fine rows
+     * in acc (Q16.16: raw units, at most 255 * 2^16 * 256 < 2^32). */
+    uint8_t samples;
+    bool adaptive;
+    const cam_t *out_cam;
+    cam_t fine;
+    uint8_t fine_rgb[(FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * FXRT_RENDER_MAX_WIDTH] __attribute__((aligned(4)));
+    color_sum_t acc[3 * RENDER_OUT_COLS];
+#if FXRT_ADAPTIVE
+    /* Adaptive: keys and colours of output rows at one sample per pixel
+     * (a ring of three rows: slot row % 3 holds row arow[row % 3]), and
+     * per column whether the pixel takes the N x N rays. */
+    uint32_t akeys[3][RENDER_OUT_COLS];
+    rgb8_t argb[3][RENDER_OUT_COLS];
+    int32_t arow[3];
+    bool need[RENDER_OUT_COLS];
+#endif
 #endif
     /* Optional, set by the caller after render_setup: when not NULL,
      * render_row and render_row_reference also write each pixel's key
@@ -237,6 +270,11 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
  * edge, spot-cone edge, terminator): host/compare.c. */
 #define RENDER_KEY_MISS 0xFFFF00u
 static inline uint32_t render_key(uint16_t id, uint8_t mask) { return (uint32_t)id << 8 | mask; }
+
+/* With samples N > 1 (world_set_samples), render_row and
+ * render_row_reference give each pixel the mean of its N x N cell-centre
+ * rays, each clamped to [0, 1], rounded to 8 bits (core/render_sample.c);
+ * keys are then not written (they are defined at one sample per pixel). */
 
 /* Render output row `row` (0 = top) into rgb in the FXRT_PIXEL format:
  * RGB888, 3 * width bytes; RGB565, width uint16_t values in native byte

@@ -7,6 +7,8 @@
  *   render_row.c    the scanlines: stepping, spans, painting in the pixel
  *                   format (render_row, render_row_reference)
  *   render_shade.c  the shading pass: lit pixels and keys (render_shade_row)
+ *   render_sample.c supersampling: N fine rows per output row, averaged
+ *                   (render_sample_row); secondary rays are core/trace.c
  */
 #ifndef FXRT_RENDER_INT_H
 #define FXRT_RENDER_INT_H
@@ -45,10 +47,18 @@ static inline const render_lin_t *render_edge_k(const render_flat_t *f, int k)
  * says so (some object is lit, or keys are wanted); render_shade_row then
  * shades those columns. */
 #define RENDER_VIS_NONE 0xFFFFu
-#if FXRT_MAX_LIGHTS > 0
-static inline bool render_tracks(const render_t *r) { return r->any_lit || r->keys; }
+#if RENDER_VIS
+static inline bool render_tracks(const render_t *r) { return r->track || r->keys; }
 #endif
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
+
+/* The visibility pass alone (fast loop and reference loop): owners in
+ * r->vis (when render_tracks), flat colours painted into rgb. */
+void render_row_vis(render_t *r, int32_t row, uint8_t *rgb);
+void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb);
+
+/* render_sample.c: output row `row` with samples > 1. */
+void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference);
 
 static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTHOGRAPHIC; }
 

@@ -21,7 +21,7 @@
 typedef uint16_t __attribute__((may_alias)) render_px16_t;
 static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
-#if FXRT_MAX_LIGHTS > 0
+#if RENDER_VIS
     r->vis[x] = oi;
 #endif
     ((render_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
@@ -29,7 +29,7 @@ static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rg
 #else
 static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
-#if FXRT_MAX_LIGHTS > 0
+#if RENDER_VIS
     r->vis[x] = oi;
 #endif
     rgb8_t c = r->obj[oi].rgb;
@@ -61,7 +61,7 @@ static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t iy,
  * background in every pixel, with word stores where the row is aligned. */
 static void render_begin_row(render_t *r, uint8_t *rgb)
 {
-#if FXRT_MAX_LIGHTS > 0
+#if RENDER_VIS
     if (render_tracks(r))
         for (int32_t x = 0; x < r->cam->width; x++)
             r->vis[x] = RENDER_VIS_NONE;
@@ -114,6 +114,21 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
 
 void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
 {
+#if FXRT_MAX_SAMPLES > 1
+    if (r->samples > 1) {
+        render_sample_row(r, row, rgb, true);
+        return;
+    }
+#endif
+    render_row_reference_vis(r, row, rgb);
+#if FXRT_MAX_LIGHTS > 0
+    if (render_tracks(r))
+        render_shade_row(r, row, rgb);
+#endif
+}
+
+void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb)
+{
     int32_t w = r->cam->width, y = r->cam->height - 1 - row;
     int32_t iy = 2 * y - r->cam->height + 1;
     render_begin_row(r, rgb);
@@ -127,10 +142,6 @@ void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
                 render_cover(r, i, x, iy, rgb);
         }
     }
-#if FXRT_MAX_LIGHTS > 0
-    if (render_tracks(r))
-        render_shade_row(r, row, rgb);
-#endif
 }
 
 /* ---- the fast loop ------------------------------------------------------ */
@@ -144,8 +155,8 @@ RENDER_MAYBE_UNUSED static void render_fill(render_t *r, uint16_t oi, int32_t xa
 {
     typedef uint32_t __attribute__((may_alias)) word_t;
     int32_t x = xa;
-#if FXRT_MAX_LIGHTS > 0
-    if (render_tracks(r)) /* only the shading pass reads vis */
+#if RENDER_VIS
+    if (render_tracks(r)) /* only the shading and sampling passes read vis */
         for (int32_t k = xa; k <= xb; k++)
             r->vis[k] = oi;
 #endif
@@ -601,7 +612,7 @@ static bool render_alone(const render_t *r, uint16_t i, int32_t row)
  * owner of each column, flat colours painted (and r->vis recorded for the
  * shading pass). Out of line so that its frame is gone before the shading
  * pass runs (stack depth on the micro:bit). */
-static __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t *rgb)
+__attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t *rgb)
 {
     const cam_t *cam = r->cam;
     int32_t w = cam->width, y = cam->height - 1 - row;
@@ -666,6 +677,12 @@ static __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, u
 
 void render_row(render_t *r, int32_t row, uint8_t *rgb)
 {
+#if FXRT_MAX_SAMPLES > 1
+    if (r->samples > 1) {
+        render_sample_row(r, row, rgb, false);
+        return;
+    }
+#endif
     render_row_vis(r, row, rgb);
 #if FXRT_MAX_LIGHTS > 0
     if (render_tracks(r))

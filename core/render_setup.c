@@ -697,6 +697,26 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 {
     r->error = NULL;
+#if FXRT_MAX_SAMPLES > 1
+    /* Supersampling: the forms and bounds are those of the fine camera. */
+    r->samples = (uint8_t)world_samples(w);
+    r->adaptive = world_adaptive(w);
+    r->out_cam = cam;
+    if (r->samples > 1) {
+        if (cam->width > FXRT_RENDER_MAX_WIDTH / r->samples) {
+            r->error = "samples x width wider than FXRT_RENDER_MAX_WIDTH";
+            return false;
+        }
+        if (cam_fine(cam, r->samples, &r->fine) != CAM_OK) {
+            r->error = "samples x height beyond FXRT_MAX_DIM, or samples x height x cot(fov/2) beyond 32767";
+            return false;
+        }
+        cam = &r->fine;
+#if FXRT_ADAPTIVE
+        r->arow[0] = r->arow[1] = r->arow[2] = -1;
+#endif
+    }
+#endif
     if (cam->width > FXRT_RENDER_MAX_WIDTH) {
         r->error = "image wider than FXRT_RENDER_MAX_WIDTH";
         return false;
@@ -711,6 +731,12 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     r->keys = NULL;
 #if FXRT_MAX_LIGHTS > 0
     r->any_lit = w->n_lit > 0;
+#endif
+#if RENDER_VIS
+    r->track = world_samples(w) > 1;
+#if FXRT_MAX_LIGHTS > 0
+    r->track = r->track || r->any_lit;
+#endif
 #endif
 #if FXRT_MAX_PLANES > 0
     r->nplanes = w->n_planes;
@@ -737,6 +763,13 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
         render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
 #endif
 #if FXRT_MAX_LIGHTS > 0
+    /* Objects were added kind after kind, each in index order. */
+    uint16_t base = 0;
+    for (int k = 0; k < 4; k++) {
+        r->kind_base[k] = base;
+        for (uint16_t i = 0; i < r->count; i++)
+            base = (uint16_t)(base + (r->obj[i].geom == k));
+    }
     for (uint16_t i = 0; r->any_lit && i < r->count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->obj[i].geom, r->obj[i].index);
         if (c->mat.kind != MATERIAL_FLAT)

@@ -1,5 +1,6 @@
 /* shade: the lighting model (see shade.h). */
 #include "shade.h"
+#include "trace.h"
 
 #if FXRT_STATS
 fxrt_stats_t fxrt_stats;
@@ -90,12 +91,17 @@ static color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t
     const material_t *m = &obj->mat;
     FXRT_COUNT(shaded);
     bool lit = m->kind != MATERIAL_FLAT;
-    if (lit && !k)
+    /* Transparent: no local term (core/trace.c adds what it transmits and
+     * reflects); the light loop runs only for a pixel's key. */
+    bool clear = m->kind == MATERIAL_TRANSPARENT;
+    if ((!lit || clear) && !mask)
+        return clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : obj->color;
+    if (lit && !clear && !k)
         return shade_sum_own(w, obj, kind, index, p, n_geo, d, mask); /* computes k on its own frame */
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw(n_geo, d) > 0;
     vec3_t n = inside ? vec3_neg(n_geo) : n_geo;
-    color_t c = lit ? k->ambient : obj->color;
+    color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
     for (uint8_t i = 0; i < w->n_lights; i++) {
         const light_t *L = &w->lights[i];
@@ -123,12 +129,12 @@ static color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t
             continue;
 #endif
         bits = (uint8_t)(bits | (1u << i));
-        if (!lit)
+        if (!lit || clear)
             continue;
         num_t ndl = numw_round(ndlw);
         c = shade_madd(c, k->kd[i], ndl);
 #if FXRT_PHONG
-        if (m->kind == MATERIAL_PHONG) {
+        if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) {
             vec3_t r = vec3_sub(vec3_scale(n, num_mul_int(ndl, 2)), l);
             numw_t rde = vec3_dotw(r, vec3_neg(d)); /* r . e, e = -d */
             if (rde > 0)
@@ -175,7 +181,13 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
 #endif
     default: break;
     }
-    return shade_sum(w, obj, kind, index, ray_at(ray, t), n, ray->d, k, mask);
+    vec3_t p = ray_at(ray, t);
+    color_t c = shade_sum(w, obj, kind, index, p, n, ray->d, k, mask);
+#if FXRT_MAX_DEPTH > 0
+    if (material_bounces(obj->mat.kind))
+        c = trace_bounces(w, kind, index, ray, p, n, c);
+#endif
+    return c;
 }
 
 #endif

@@ -3,6 +3,13 @@
 
 #if FXRT_MAX_LIGHTS > 0 && FXRT_SHADOWS
 
+/* Transparent objects cast no shadow (core/trace.h). */
+#if FXRT_MAX_DEPTH > 0
+#define SHADOW_CASTS(o) ((o).mat.kind != MATERIAL_TRANSPARENT)
+#else
+#define SHADOW_CASTS(o) true
+#endif
+
 /* Is the light's position strictly inside solid (kind, index)? */
 static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t index, const light_t *l)
 {
@@ -32,7 +39,7 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool ins
 {
     FXRT_COUNT(shadow_rays);
     bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
-    if (inside && solid && !shadow_light_inside(w, kind, index, l))
+    if (inside && solid && SHADOW_CASTS(*world_common(w, kind, index)) && !shadow_light_inside(w, kind, index, l))
         return true;
     ray_t ray = {p, ldir};
     return world_occluded(w, &ray, dist, world_common(w, kind, index)->id);
@@ -42,25 +49,26 @@ bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t ski
 {
 #if FXRT_MAX_PLANES > 0
     for (uint16_t i = 0; i < w->n_planes; i++)
-        if (w->planes[i].obj.id != skip_id && geom_plane_occludes(&w->planes[i], ray, tmax))
+        if (w->planes[i].obj.id != skip_id && SHADOW_CASTS(w->planes[i].obj) && geom_plane_occludes(&w->planes[i], ray, tmax))
             return true;
 #endif
 #if FXRT_MAX_SPHERES > 0
     for (uint16_t i = 0; i < w->n_spheres; i++) {
         num_t t;
-        if (w->spheres[i].obj.id != skip_id && geom_sphere_hit(&w->spheres[i], ray, &t) &&
+        if (w->spheres[i].obj.id != skip_id && SHADOW_CASTS(w->spheres[i].obj) && geom_sphere_hit(&w->spheres[i], ray, &t) &&
             (t < tmax || tmax == NUM_MAX))
             return true;
     }
 #endif
 #if FXRT_MAX_TRIANGLES > 0
     for (uint16_t i = 0; i < w->n_triangles; i++)
-        if (w->triangles[i].obj.id != skip_id && geom_triangle_occludes(&w->triangles[i], ray, tmax))
+        if (w->triangles[i].obj.id != skip_id && SHADOW_CASTS(w->triangles[i].obj) &&
+            geom_triangle_occludes(&w->triangles[i], ray, tmax))
             return true;
 #endif
 #if FXRT_MAX_BOXES > 0
     for (uint16_t i = 0; i < w->n_boxes; i++)
-        if (w->boxes[i].obj.id != skip_id && geom_box_occludes(&w->boxes[i], ray, tmax))
+        if (w->boxes[i].obj.id != skip_id && SHADOW_CASTS(w->boxes[i].obj) && geom_box_occludes(&w->boxes[i], ray, tmax))
             return true;
 #endif
     return false;

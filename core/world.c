@@ -34,7 +34,7 @@ void world_init(world_t *w, color_t background)
 }
 
 /* Grow the bounds of the bounded objects by the box lo..hi. */
-static void world_grow(world_t *w, vec3_t lo, vec3_t hi)
+__attribute__((unused)) static void world_grow(world_t *w, vec3_t lo, vec3_t hi)
 {
 #if FXRT_MAX_DEPTH > 0
     if (!w->bounded) {

@@ -110,6 +110,8 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(cfg, "#define FXRT_MAX_LIGHTS %d\n#define FXRT_SHADOWS %d\n#define FXRT_PHONG %d\n", max_lights,
             lit && shadows, lit && phong);
     fprintf(cfg, "#define SCENE_LIGHTS %d\n", n_lights);
+    /* Bounces and supersampling: compiled out until the scene asks for them. */
+    fprintf(cfg, "#define FXRT_MAX_DEPTH 0\n#define FXRT_MAX_SAMPLES 1\n");
 #if FXRT_MAX_BOXES > 0
     /* The box-face pool holds what this camera needs (3 faces for a box
      * seen from outside in perspective, up to 6 otherwise), counted by the

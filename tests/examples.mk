@@ -8,7 +8,7 @@
 # with the same macros (docs/EMBEDDING.md). Capacities are the example's
 # own object counts; rows are 64 pixels wide.
 EXAMPLE_CFG := -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=2 -DFXRT_MAX_TRIANGLES=1 \
-               -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64
+               -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64 -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=1
 # The core's sources as the Makefile lists them (without the optional ray caster).
 EXAMPLE_CORE = fx $(filter-out raycast,$(CORE_NUM))
 EX_HOST := $(BUILD)/examples/host

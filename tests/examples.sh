@@ -66,7 +66,7 @@ check "orbit.elf: no malloc/_sbrk (found: $heap)" test -z "$heap"
 # core with the example's 2. The link must fail and name the configuration.
 mm=$out/mismatch
 mkdir -p "$mm"
-CFG_APP="-DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=8 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64"
+CFG_APP="-DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=8 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64 -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=1"
 CC=${CC:-gcc}
 $CC -std=c11 -O2 $CFG_APP -Icore -c examples/orbit.c -o "$mm/orbit.o"
 $CC -std=c11 -O2 -c examples/io_host.c -Icore -o "$mm/io_host.o"
@@ -79,10 +79,10 @@ else
     ok
 fi
 sed 's/^/  link: /' "$mm/link.log" | grep -m2 fxrt_config
-check "the link error names the application's configuration (fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8)" \
-    grep -q "fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8" "$mm/link.log"
-check "the core defines its own (fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8)" \
-    bash -c "nm '$BUILD/examples/host/core/fxrt.o' | grep -q ' R fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8$'"
+check "the link error names the application's configuration (fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8_d0_x1a0)" \
+    grep -q "fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8_d0_x1a0" "$mm/link.log"
+check "the core defines its own (fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8_d0_x1a0)" \
+    bash -c "nm '$BUILD/examples/host/core/fxrt.o' | grep -q ' R fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8_d0_x1a0$'"
 # And the matching build links (the check above is not a link that always fails).
 $CC -std=c11 -O2 $(sed 's/SPHERES=8/SPHERES=2/' <<<"$CFG_APP") -Icore -c examples/orbit.c -o "$mm/orbit-ok.o"
 check "the same files with matching macros link" $CC -o "$mm/orbit-ok" "$mm/orbit-ok.o" "$mm/io_host.o" $core
@@ -100,7 +100,7 @@ void send(const uint8_t *row, size_t len) { rows += len == 192 && row; }
 int main(void) { orbit(); printf("rows=%zu\n", rows); return rows == 16 * 48 ? 0 : 1; }
 C
 check "docs/EMBEDDING.md snippet extracted ($(wc -l <"$mm/snippet.c") lines)" grep -q fxrt_render_row "$mm/snippet.c"
-ecfg="-DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=2 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64"
+ecfg="-DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=2 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64 -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=1"
 check "docs/EMBEDDING.md snippet builds with -Wall -Wextra -Wpedantic -Werror" \
     $CC -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $ecfg -Icore -o "$mm/snippet" \
     "$mm/snippet.c" "$mm/snippet_main.c" $core

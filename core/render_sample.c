@@ -1,0 +1,194 @@
+/* render_sample: supersampling, samples N > 1 (issue 12).
+ *
+ * Each pixel's N x N rays go through the centres of the N x N equal cells
+ * of the pixel square. Those are exactly the pixel centres of a camera N
+ * times as wide and high (cam_fine), so the per-frame set-up is done once,
+ * for that camera, and every output row is N rows of it: the visibility
+ * pass (stepped forms, spans) over each fine row, then the sampling pass
+ * below, which adds each fine pixel's colour, clamped to [0, 1], into its
+ * output pixel's sum. The output pixel is the mean, rounded half up to 8
+ * bits (as color_to_rgb8). Flat colours and the background are summed
+ * unrounded; a lit sample is shaded along its fine camera ray.
+ *
+ * Cheap case: where the N fine columns of an output pixel have one flat
+ * owner (or none), the fine row adds N times one colour, with no clamp
+ * (a flat colour and the background are within [0, 1] already).
+ *
+ * Adaptive (samples N adaptive): the keys of one sample per pixel are cast
+ * first, row by row (a ring of three output rows, computed once each when
+ * rows come in order): the pixel-centre ray, its nearest object
+ * (world_hit) and the lights that reach it. A pixel whose 3x3
+ * neighbourhood (clipped at the border) has one key keeps that one-sample
+ * colour; the others are summed from their N x N rays as above. When no
+ * pixel of a row needs them, the row's fine rows are not rendered at all.
+ */
+#include "render_int.h"
+#include "shade.h"
+
+#if FXRT_MAX_SAMPLES > 1
+
+/* The colour of fine column X's sample (owner oi) on fine row y (counted
+ * from the bottom), unclamped. */
+static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t y)
+{
+    if (oi == RENDER_VIS_NONE)
+        return r->world->background;
+    const render_obj_t *o = &r->obj[oi];
+    const geom_common_t *obj = world_common(r->world, (geom_kind_t)o->geom, o->index);
+#if FXRT_MAX_LIGHTS > 0
+    if (obj->mat.kind != MATERIAL_FLAT) {
+        ray_t ray;
+        cam_ray(r->cam, X, y, &ray);
+        return shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, &r->shade_k[oi], NULL);
+    }
+#else
+    (void)X, (void)y;
+#endif
+    return obj->color;
+}
+
+static inline bool render_sample_flat(const render_t *r, uint16_t oi)
+{
+#if FXRT_MAX_LIGHTS > 0
+    if (oi == RENDER_VIS_NONE)
+        return true;
+    const render_obj_t *o = &r->obj[oi];
+    return world_common(r->world, (geom_kind_t)o->geom, o->index)->mat.kind == MATERIAL_FLAT;
+#else
+    (void)r, (void)oi;
+    return true;
+#endif
+}
+
+/* Fine row frow (0 = top of the fine image): visibility, then each output
+ * pixel that wants its samples (need == NULL: all) adds them. */
+static void render_sample_fine(render_t *r, int32_t frow, bool reference, const bool *need)
+{
+    if (reference)
+        render_row_reference_vis(r, frow, r->fine_rgb);
+    else
+        render_row_vis(r, frow, r->fine_rgb);
+    int32_t n = r->samples, w = r->out_cam->width, y = r->cam->height - 1 - frow;
+    for (int32_t x = 0, X0 = 0; x < w; x++, X0 += n) {
+        if (need && !need[x])
+            continue;
+        color_sum_t *a = &r->acc[3 * x];
+        uint16_t oi = r->vis[X0];
+        bool one = true;
+        for (int32_t i = 1; i < n && one; i++)
+            one = r->vis[X0 + i] == oi;
+        if (one && render_sample_flat(r, oi)) {
+            color_t c = render_sample_color(r, oi, X0, y);
+            color_sum_add(&a[0], c.r, (uint32_t)n);
+            color_sum_add(&a[1], c.g, (uint32_t)n);
+            color_sum_add(&a[2], c.b, (uint32_t)n);
+            continue;
+        }
+        for (int32_t i = 0; i < n; i++) {
+            color_t c = render_sample_color(r, r->vis[X0 + i], X0 + i, y);
+            color_sum_add(&a[0], c.r, 1);
+            color_sum_add(&a[1], c.g, 1);
+            color_sum_add(&a[2], c.b, 1);
+        }
+    }
+}
+
+static void render_sample_put(uint8_t *rgb, int32_t x, uint8_t cr, uint8_t cg, uint8_t cb)
+{
+#if FXRT_PIXEL == FXRT_RGB565
+    rgb8_t p = {cr, cg, cb};
+    ((uint16_t *)(void *)rgb)[x] = render_565(p);
+#else
+    rgb[3 * x + 0] = cr;
+    rgb[3 * x + 1] = cg;
+    rgb[3 * x + 2] = cb;
+#endif
+}
+
+#if FXRT_ADAPTIVE
+/* One sample per pixel of output row `row` into ring slot row % 3: the
+ * pixel-centre ray's key and colour. */
+static void render_adaptive_row(render_t *r, int32_t row)
+{
+    int32_t s = row % 3;
+    if (r->arow[s] == row)
+        return;
+    const cam_t *cam = r->out_cam;
+    const world_t *w = r->world;
+    int32_t y = cam->height - 1 - row;
+    for (int32_t x = 0; x < cam->width; x++) {
+        ray_t ray;
+        hit_t hit;
+        cam_ray(cam, x, y, &ray);
+        uint32_t key = RENDER_KEY_MISS;
+        rgb8_t c = w->background_rgb;
+        if (world_hit(w, &ray, &hit)) {
+            uint8_t mask = 0;
+#if FXRT_MAX_LIGHTS > 0
+            uint16_t oi = (uint16_t)(r->kind_base[hit.kind] + hit.index);
+            bool lit = hit.obj->mat.kind != MATERIAL_FLAT;
+            c = color_to_rgb8(shade_object_k(w, hit.kind, hit.index, &ray, lit ? &r->shade_k[oi] : NULL, &mask));
+#else
+            c = hit.obj->rgb;
+#endif
+            key = render_key(hit.obj->id, mask);
+        }
+        r->akeys[s][x] = key;
+        r->argb[s][x] = c;
+    }
+    r->arow[s] = row;
+}
+
+/* Which pixels of output row `row` take N x N rays; false when none. */
+static bool render_adaptive_need(render_t *r, int32_t row)
+{
+    const cam_t *cam = r->out_cam;
+    int32_t h = cam->height, w = cam->width;
+    int32_t r0 = row > 0 ? row - 1 : row, r1 = row < h - 1 ? row + 1 : row;
+    for (int32_t q = r0; q <= r1; q++)
+        render_adaptive_row(r, q);
+    bool any = false;
+    const uint32_t *mid = r->akeys[row % 3];
+    for (int32_t x = 0; x < w; x++) {
+        uint32_t k = mid[x];
+        int32_t x0 = x > 0 ? x - 1 : x, x1 = x < w - 1 ? x + 1 : x;
+        bool differ = false;
+        for (int32_t q = r0; q <= r1 && !differ; q++)
+            for (int32_t xx = x0; xx <= x1; xx++)
+                differ |= r->akeys[q % 3][xx] != k;
+        r->need[x] = differ;
+        any |= differ;
+    }
+    return any;
+}
+#endif
+
+void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
+{
+    int32_t n = r->samples, w = r->out_cam->width;
+    const bool *need = NULL;
+#if FXRT_ADAPTIVE
+    if (r->adaptive) {
+        bool any = render_adaptive_need(r, row);
+        const rgb8_t *one = r->argb[row % 3];
+        for (int32_t x = 0; x < w; x++)
+            render_sample_put(rgb, x, one[x].r, one[x].g, one[x].b);
+        if (!any)
+            return;
+        need = r->need;
+    }
+#endif
+    for (int32_t i = 0; i < 3 * w; i++)
+        r->acc[i] = 0;
+    for (int32_t j = 0; j < n; j++)
+        render_sample_fine(r, row * n + j, reference, need);
+    uint32_t n2 = (uint32_t)(n * n);
+    for (int32_t x = 0; x < w; x++) {
+        if (need && !need[x])
+            continue;
+        const color_sum_t *a = &r->acc[3 * x];
+        render_sample_put(rgb, x, color_sum_out(a[0], n2), color_sum_out(a[1], n2), color_sum_out(a[2], n2));
+    }
+}
+
+#endif
