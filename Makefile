@@ -110,6 +110,7 @@ TEST_PREREQ  :=
 -include tests/fx.mk
 -include tests/examples.mk
 -include tests/scene_light.mk
+-include tests/scene_trace.mk
 -include tests/skip.mk
 -include tests/lit.mk
 -include tests/qemu_lit.mk

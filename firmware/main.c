@@ -1,6 +1,7 @@
 /* Board main: set the compiled-in scene up through the public API
  * (core/fxrt.h: the camera, every object with its material, the ambient
- * colour and lights, the renderer's forms), render it
+ * colour and lights, the bounce depth and samples, the renderer's forms),
+ * render it
  * and send it to the host as a binary PPM over semihosting, then report
  * instructions, RAM and stack. scene_data.h holds only the scene's own
  * values (fxrt-scenec); the world and camera are built here, at boot.
@@ -100,6 +101,25 @@ static void build_scene(void)
      * lighting code is linked; the (empty) tables stay unused. */
     (void)scene_ambient;
     (void)scene_lights;
+#endif
+    /* Then depth and samples, as engine_build does. fxrt-scenec compiles
+     * bounces out (FXRT_MAX_DEPTH 0) when no object is reflective or
+     * transparent, where the depth changes nothing, and supersampling
+     * (FXRT_MAX_SAMPLES 1) for one sample per pixel, the world's default. */
+#if FXRT_MAX_DEPTH > 0
+    e = world_set_depth(&world, scene_depth);
+    if (e != FXRT_OK)
+        fail2("depth: ", fxrt_strerror(e));
+#else
+    (void)scene_depth;
+#endif
+#if FXRT_MAX_SAMPLES > 1
+    e = world_set_samples(&world, scene_samples, scene_adaptive);
+    if (e != FXRT_OK)
+        fail2("samples: ", fxrt_strerror(e));
+#else
+    (void)scene_samples;
+    (void)scene_adaptive;
 #endif
 }
 

@@ -43,7 +43,7 @@ static color_t engine_color(const double c[3])
     return color_make(engine_channel(c[0]), engine_channel(c[1]), engine_channel(c[2]));
 }
 
-/* A fraction (light colour, ambient, specular: NUM_ONE is full intensity)
+/* A fraction (light colour, ambient, specular, reflection: NUM_ONE is full intensity)
  * quantised to 2^-16: round(x * 65536) / 65536. It has at most 17
  * significant bits, so Q16.16, float and double all hold the same value
  * (engine_channel does the same for colours in 1/255 units). */
@@ -58,16 +58,34 @@ static color_t engine_fraction3(const double c[3])
                       ENGINE_SYM(engine_fraction)(c[2]));
 }
 
+/* The refraction index quantised like a fraction (round(x * 65536) /
+ * 65536: at most 23 significant bits up to FXRT_INDEX_MAX = 100, so every
+ * build holds it exactly), but not below FXRT_INDEX_MIN: 0.01 would round
+ * to 655/65536 < 0.01, which the float and double builds' world_set_material
+ * would refuse, so it becomes 656/65536 (ceil(0.01 * 65536) / 65536). */
+num_t ENGINE_SYM(engine_index)(double x)
+{
+    double q = floor(x * 65536.0 + 0.5), lo = ceil(FXRT_INDEX_MIN * 65536.0);
+    return ENGINE_SYM(engine_num)((q < lo ? lo : q) / 65536.0);
+}
+
 static material_t engine_material(const scene_obj_t *o)
 {
     material_t m;
-    m.kind = o->material == SCENE_MAT_PHONG     ? MATERIAL_PHONG
-             : o->material == SCENE_MAT_LAMBERT ? MATERIAL_LAMBERT
-                                                : MATERIAL_FLAT;
-    /* Unused by flat and lambert: zero, as world_set_material stores them. */
-    m.exponent = (uint16_t)(o->material == SCENE_MAT_PHONG ? o->exponent : 0);
-    m.specular = o->material == SCENE_MAT_PHONG ? engine_fraction3(o->specular)
-                                                : color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    color_t black = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    bool phong_terms = o->material == SCENE_MAT_PHONG || o->material == SCENE_MAT_REFLECTIVE;
+    switch (o->material) {
+    case SCENE_MAT_LAMBERT: m.kind = MATERIAL_LAMBERT; break;
+    case SCENE_MAT_PHONG: m.kind = MATERIAL_PHONG; break;
+    case SCENE_MAT_REFLECTIVE: m.kind = MATERIAL_REFLECTIVE; break;
+    case SCENE_MAT_TRANSPARENT: m.kind = MATERIAL_TRANSPARENT; break;
+    default: m.kind = MATERIAL_FLAT; break;
+    }
+    /* Fields a material does not use: zero, as world_set_material stores them. */
+    m.exponent = (uint16_t)(phong_terms ? o->exponent : 0);
+    m.specular = phong_terms ? engine_fraction3(o->specular) : black;
+    m.reflection = o->material == SCENE_MAT_REFLECTIVE ? engine_fraction3(o->reflection) : black;
+    m.index = o->material == SCENE_MAT_TRANSPARENT ? ENGINE_SYM(engine_index)(o->index) : NUM_ZERO;
     return m;
 }
 
@@ -85,6 +103,7 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
     d->camera.height = height;
     d->background = engine_color(sc->background);
     d->count = sc->count;
+    d->bounces = false;
     for (int i = 0; i < sc->count; i++) {
         const scene_obj_t *o = &sc->obj[i];
         fxrt_object_t *t = &d->obj[i];
@@ -115,7 +134,11 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
             break;
         }
         t->material = engine_material(o);
+        d->bounces |= material_bounces(t->material.kind);
     }
+    d->depth = sc->depth;
+    d->samples = sc->samples;
+    d->adaptive = sc->adaptive != 0;
     d->ambient = engine_fraction3(sc->ambient);
     d->nlights = sc->nlights;
     for (int i = 0; i < sc->nlights; i++) {
@@ -189,7 +212,54 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
             return -1;
         }
     }
+    /* The depth is set whenever the build can hold it; a refusal (more
+     * than FXRT_MAX_DEPTH) only matters to reflective and transparent
+     * objects, as on the board, where fxrt-scenec compiles bounces out
+     * (FXRT_MAX_DEPTH 0) for a scene without them. The line is the
+     * 'depth' line, or the first bouncing object's when the default is
+     * too deep. */
+    fxrt_err_t de = world_set_depth(w, d.depth);
+    if (de != FXRT_OK && d.bounces) {
+        int line = sc->depth_line;
+        for (int i = 0; line == 0 && i < sc->count; i++)
+            if (material_bounces(d.obj[i].material.kind))
+                line = sc->obj[i].line;
+        snprintf(err, errlen, "%s:%d: depth %d cannot be set in %s: %s", path, line, d.depth, NUM_NAME,
+                 fxrt_strerror(de));
+        return -1;
+    }
+    fxrt_err_t se = world_set_samples(w, d.samples, d.adaptive);
+    if (se != FXRT_OK) {
+        snprintf(err, errlen, "%s:%d: samples %d%s cannot be set in %s: %s", path, sc->samples_line, d.samples,
+                 d.adaptive ? " adaptive" : "", NUM_NAME, fxrt_strerror(se));
+        return -1;
+    }
     return 0;
+}
+
+/* Render every row with the renderer; keys (when not NULL) receives each
+ * pixel's key, rgb (when NULL) goes to a scratch row that is thrown away. */
+static void engine_pass(render_t *state, const world_t *world, const cam_t *cam, int width, int height,
+                        engine_renderer_t renderer, uint8_t *rgb, uint32_t *keys)
+{
+    static uint8_t scratch[3 * FXRT_MAX_DIM];
+    for (int row = 0; row < height; row++) {
+        uint8_t *out = rgb != NULL ? rgb + (size_t)3 * width * row : scratch;
+        /* The renderers write a key only where they paint an object (or
+         * not at all, the ray caster), so every row starts as background. */
+        state->keys = NULL;
+        if (keys != NULL) {
+            state->keys = keys + (size_t)width * row;
+            for (int x = 0; x < width; x++)
+                state->keys[x] = RENDER_KEY_MISS;
+        }
+        switch (renderer) {
+        case ENGINE_FAST: render_row(state, row, out); break;
+        case ENGINE_REFERENCE: render_row_reference(state, row, out); break;
+        case ENGINE_RAYCAST: raycast_row(world, cam, row, out, NULL); break;
+        }
+    }
+    state->keys = NULL; /* state outlives the caller's buffer */
 }
 
 int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, int height,
@@ -203,26 +273,30 @@ int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, in
     cam_t cam;
     if (ENGINE_SYM(engine_build)(path, sc, width, height, &world, &cam, err, errlen) != 0)
         return -1;
+    int32_t samples = world_samples(&world);
+    bool adaptive = world_adaptive(&world);
+    if (keys != NULL && samples > 1) {
+        /* A key is that of one ray through the pixel centre (render_key),
+         * whatever the samples: a pass at one sample per pixel writes the
+         * keys, its colours are thrown away, and the image is rendered
+         * after it with the scene's samples and no keys. */
+        if (world_set_samples(&world, 1, false) != FXRT_OK ||
+            fxrt_render_setup(&state, &world, &cam) != FXRT_OK) {
+            snprintf(err, errlen, "%s: image wider than %d pixels", path, FXRT_RENDER_MAX_WIDTH);
+            return -1;
+        }
+        engine_pass(&state, &world, &cam, width, height, renderer, NULL, keys);
+        keys = NULL;
+        if (world_set_samples(&world, samples, adaptive) != FXRT_OK) {
+            snprintf(err, errlen, "%s:%d: samples %d cannot be set in %s", path, sc->samples_line, (int)samples,
+                     NUM_NAME);
+            return -1;
+        }
+    }
     if (fxrt_render_setup(&state, &world, &cam) != FXRT_OK) {
         snprintf(err, errlen, "%s: image wider than %d pixels", path, FXRT_RENDER_MAX_WIDTH);
         return -1;
     }
-    for (int row = 0; row < height; row++) {
-        uint8_t *out = rgb + (size_t)3 * width * row;
-        /* The renderers write a key only where they paint an object (or
-         * not at all, the ray caster), so every row starts as background. */
-        state.keys = NULL;
-        if (keys != NULL) {
-            state.keys = keys + (size_t)width * row;
-            for (int x = 0; x < width; x++)
-                state.keys[x] = RENDER_KEY_MISS;
-        }
-        switch (renderer) {
-        case ENGINE_FAST: render_row(&state, row, out); break;
-        case ENGINE_REFERENCE: render_row_reference(&state, row, out); break;
-        case ENGINE_RAYCAST: raycast_row(&world, &cam, row, out, NULL); break;
-        }
-    }
-    state.keys = NULL; /* state outlives the caller's buffer */
+    engine_pass(&state, &world, &cam, width, height, renderer, rgb, keys);
     return 0;
 }

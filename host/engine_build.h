@@ -27,11 +27,22 @@ typedef struct {
     color_t ambient; /* fractions (NUM_ONE = full), quantised to 2^-16 */
     int nlights;
     fxrt_light_t lights[SCENE_MAX_LIGHTS > 0 ? SCENE_MAX_LIGHTS : 1]; /* scene order */
+    int depth;     /* the scene's 'depth' (world_set_depth) */
+    int samples;   /* the scene's 'samples' N (world_set_samples) */
+    bool adaptive; /* 'samples N adaptive' */
+    bool bounces;  /* some object is reflective or transparent */
 } engine_desc_t;
 
-/* A fraction (light colour, ambient, specular) x in 0..1 as the build
- * stores it: round(x * 65536) / 65536, the same value in every build. */
+/* A fraction (light colour, ambient, specular, reflection) x in 0..1 as
+ * the build stores it: round(x * 65536) / 65536, the same value in every
+ * build. */
 num_t ENGINE_SYM(engine_fraction)(double x);
+
+/* A refraction index x in [FXRT_INDEX_MIN, FXRT_INDEX_MAX] as the build
+ * stores it: round(x * 65536) / 65536, but at least the smallest multiple
+ * of 2^-16 that is >= FXRT_INDEX_MIN (0.01 -> 656/65536, since 655/65536
+ * is below 0.01); the same value in every build. */
+num_t ENGINE_SYM(engine_index)(double x);
 
 /* Convert the parsed scene (doubles) into d, rounding each value once
  * (engine_num). Returns 0. */
@@ -39,7 +50,10 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
 
 /* Build the world and camera for a width x height frame: camera, world,
  * objects with their materials (fxrt_add), ambient (world_set_ambient),
- * lights (fxrt_add_light). Returns 0, or -1 with "PATH:LINE: ..." in err. */
+ * lights (fxrt_add_light), depth (world_set_depth: a refusal is an error
+ * only when some object is reflective or transparent, since the depth
+ * changes nothing else) and samples (world_set_samples). Returns 0, or -1
+ * with "PATH:LINE: ..." in err. */
 int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int height, world_t *w,
                              cam_t *cam, char *err, size_t errlen);
 

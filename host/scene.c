@@ -17,9 +17,13 @@
  *   light point       position X Y Z color R G B [shadows on|off]
  *   light directional direction X Y Z color R G B [shadows on|off]
  *   light spot        position X Y Z direction X Y Z angle DEGREES color R G B [shadows on|off]
- * and on any object: [material flat|lambert|phong] (phong: specular R G B
- * exponent N). Named fields may come in any order; each is required
- * exactly once, optional ones at most once. docs/SCENES.md has the rules. */
+ *   depth N
+ *   samples N [adaptive]
+ * and on any object: [material flat|lambert|phong|reflective|transparent]
+ * (phong: specular R G B exponent N; reflective: the same and reflection
+ * R G B; transparent: index ETA). Named fields may come in any order; each
+ * is required exactly once, optional ones at most once. docs/SCENES.md has
+ * the rules. */
 #include "scene.h"
 
 #include "errf.h"
@@ -81,8 +85,9 @@ typedef enum {
     SCENE_F_FOV,    /* 1 value in (0, 180) degrees */
     SCENE_F_SCALE,  /* 1 value in (0, FXRT_RADIUS_LIMIT] */
     SCENE_F_ANGLE,  /* 1 value in (0, 90] degrees (a spot light's half-angle) */
+    SCENE_F_INDEX,  /* 1 value in [FXRT_INDEX_MIN, FXRT_INDEX_MAX] (refraction index) */
     SCENE_F_EXPONENT, /* 1 integer in 1..SCENE_MAX_EXPONENT */
-    SCENE_F_MATERIAL, /* 1 word: flat, lambert or phong */
+    SCENE_F_MATERIAL, /* 1 word: flat, lambert, phong, reflective or transparent */
     SCENE_F_ONOFF     /* 1 word: on or off */
 } scene_ftype_t;
 
@@ -92,7 +97,7 @@ typedef struct {
     int optional; /* 0: required exactly once; 1: at most once */
 } scene_field_t;
 
-#define SCENE_MAX_FIELDS 7
+#define SCENE_MAX_FIELDS 9
 
 /* The fields of one statement, in the order they are stored and in which
  * missing ones are reported. */
@@ -103,25 +108,26 @@ typedef struct {
 } scene_shape_t;
 
 /* Every object ends with color and then its optional material fields
- * (scene_parse_object relies on this order). */
+ * (scene_parse_object and scene_check_material rely on this order). */
 #define SCENE_MATERIAL_FIELDS                                                                                 \
-    {"material", SCENE_F_MATERIAL, 1}, {"specular", SCENE_F_COLOR, 1}, { "exponent", SCENE_F_EXPONENT, 1 }
-#define SCENE_N_MATERIAL_FIELDS 3
+    {"material", SCENE_F_MATERIAL, 1}, {"specular", SCENE_F_COLOR, 1}, {"exponent", SCENE_F_EXPONENT, 1},     \
+        {"reflection", SCENE_F_COLOR, 1}, { "index", SCENE_F_INDEX, 1 }
+#define SCENE_N_MATERIAL_FIELDS 5
 static const scene_shape_t scene_shape_plane = {
-    "plane", 6,
+    "plane", 8,
     {{"point", SCENE_F_POINT, 0}, {"normal", SCENE_F_DIR, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
 static const scene_shape_t scene_shape_sphere = {
-    "sphere", 6,
+    "sphere", 8,
     {{"center", SCENE_F_POINT, 0}, {"radius", SCENE_F_RADIUS, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
 static const scene_shape_t scene_shape_triangle = {
-    "triangle", 7,
+    "triangle", 9,
     {{"a", SCENE_F_POINT, 0},
      {"b", SCENE_F_POINT, 0},
      {"c", SCENE_F_POINT, 0},
      {"color", SCENE_F_COLOR, 0},
      SCENE_MATERIAL_FIELDS}};
 static const scene_shape_t scene_shape_box = {
-    "box", 6,
+    "box", 8,
     {{"min", SCENE_F_POINT, 0}, {"max", SCENE_F_POINT, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
 /* Lights: shadows is optional (default on). */
 static const scene_shape_t scene_shape_point = {
@@ -149,10 +155,12 @@ static const char *const scene_all_fields[] = {"point", "normal", "center", "rad
                                                 "b",     "c",      "min",    "max",    "color",
                                                 "eye",   "gaze",   "up",     "fov",    "scale",
                                                 "material", "specular", "exponent", "position", "direction",
-                                                "angle", "shadows"};
+                                                "angle", "shadows", "reflection", "index"};
 
 /* Word values, indexed like scene_material_t. */
-static const char *const scene_material_names[] = {"flat", "lambert", "phong"};
+static const char *const scene_material_names[] = {"flat", "lambert", "phong", "reflective", "transparent"};
+#define SCENE_N_MATERIALS ((int)(sizeof scene_material_names / sizeof scene_material_names[0]))
+#define SCENE_MATERIAL_LIST "flat, lambert, phong, reflective or transparent"
 
 /* Per object kind (indexed by scene_kind_t): names and capacities. */
 static const char *const scene_kind_plural[] = {"planes", "spheres", "triangles", "boxes"};
@@ -177,7 +185,7 @@ typedef struct {
     size_t errlen;
     int line; /* current line, 1-based */
     scene_t *out;
-    int camera_line, image_line, background_line, ambient_line; /* 0 = not seen yet */
+    int camera_line, image_line, background_line, ambient_line, depth_line, samples_line; /* 0 = not seen yet */
     int kind_count[4];
     int ntok;
     scene_tok_t tok[SCENE_MAX_TOKENS];
@@ -398,6 +406,11 @@ static int scene_check_value(scene_parser_t *p, const char *what, scene_ftype_t 
         if (!(v > 0.0 && v <= 90.0))
             return scene_fail(p, "%s must be inside (0, 90] degrees (the cone's half-angle), got %s", what, q.s);
         break;
+    case SCENE_F_INDEX:
+        if (!(v >= FXRT_INDEX_MIN && v <= FXRT_INDEX_MAX))
+            return scene_fail(p, "%s must be inside [%g, %g], got %s", what, (double)FXRT_INDEX_MIN,
+                              (double)FXRT_INDEX_MAX, q.s);
+        break;
     case SCENE_F_EXPONENT:
     case SCENE_F_MATERIAL:
     case SCENE_F_ONOFF:
@@ -417,6 +430,7 @@ static int scene_ftype_count(scene_ftype_t type)
     case SCENE_F_FOV:
     case SCENE_F_SCALE:
     case SCENE_F_ANGLE:
+    case SCENE_F_INDEX:
     case SCENE_F_EXPONENT:
     case SCENE_F_MATERIAL:
     case SCENE_F_ONOFF:
@@ -441,12 +455,12 @@ static int scene_parse_word(scene_parser_t *p, const scene_field_t *fd, scene_to
 
     switch (fd->type) {
     case SCENE_F_MATERIAL:
-        for (k = 0; k < 3; k++)
+        for (k = 0; k < SCENE_N_MATERIALS; k++)
             if (scene_tok_is(t, scene_material_names[k])) {
                 fv->word = k;
                 return 0;
             }
-        return scene_fail(p, "unknown material '%s' (expected flat, lambert or phong)", q.s);
+        return scene_fail(p, "unknown material '%s' (expected " SCENE_MATERIAL_LIST ")", q.s);
     case SCENE_F_ONOFF:
         if (scene_tok_is(t, "on") || scene_tok_is(t, "off")) {
             fv->word = scene_tok_is(t, "on");
@@ -529,7 +543,7 @@ static int scene_parse_fields(scene_parser_t *p, const scene_shape_t *sh, int fi
             /* One word; a surplus token is left for the loop above. */
             if (got != 1)
                 return scene_fail(p, "'%s' needs a value (%s)", fd->name,
-                                  fd->type == SCENE_F_MATERIAL ? "flat, lambert or phong"
+                                  fd->type == SCENE_F_MATERIAL ? SCENE_MATERIAL_LIST
                                   : fd->type == SCENE_F_ONOFF  ? "on or off"
                                                                : "an integer");
             vals[f].t[0] = p->tok[i];
@@ -671,23 +685,40 @@ static int scene_parse_camera(scene_parser_t *p)
     return 0;
 }
 
-/* The material fields of an object (m[0] material, m[1] specular, m[2]
- * exponent): specular and exponent belong to phong, which needs both. */
+/* The material fields of an object, in SCENE_MATERIAL_FIELDS order (m[0]
+ * material, m[1] specular, m[2] exponent, m[3] reflection, m[4] index):
+ * each of the others belongs to some materials, which need it. */
 static int scene_check_material(scene_parser_t *p, const scene_shape_t *sh, const scene_fval_t *m)
 {
-    int phong = m[0].seen && m[0].word == SCENE_MAT_PHONG;
+    /* Per field: the materials it belongs to (bit per scene_material_t),
+     * how messages name them, and what to add when no material is given. */
+    static const struct {
+        const char *name;
+        unsigned owners;
+        const char *owned_by, *hint;
+    } own[SCENE_N_MATERIAL_FIELDS] = {
+        {"material", 0, "", ""},
+        {"specular", 1u << SCENE_MAT_PHONG | 1u << SCENE_MAT_REFLECTIVE, "material phong or reflective",
+         "add 'material phong' or 'material reflective'"},
+        {"exponent", 1u << SCENE_MAT_PHONG | 1u << SCENE_MAT_REFLECTIVE, "material phong or reflective",
+         "add 'material phong' or 'material reflective'"},
+        {"reflection", 1u << SCENE_MAT_REFLECTIVE, "material reflective", "add 'material reflective'"},
+        {"index", 1u << SCENE_MAT_TRANSPARENT, "material transparent", "add 'material transparent'"},
+    };
+    int mat = m[0].seen ? m[0].word : SCENE_MAT_FLAT;
     int k;
 
-    for (k = 1; k <= 2; k++) {
-        const char *name = k == 1 ? "specular" : "exponent";
-        if (phong && !m[k].seen)
-            return scene_fail(p, "missing field '%s' for %s with material phong", name, sh->label);
-        if (!phong && m[k].seen) {
+    for (k = 1; k < SCENE_N_MATERIAL_FIELDS; k++) {
+        int owns = (own[k].owners >> mat) & 1u;
+        if (owns && !m[k].seen)
+            return scene_fail(p, "missing field '%s' for %s with material %s", own[k].name, sh->label,
+                              scene_material_names[mat]);
+        if (!owns && m[k].seen) {
             if (m[0].seen) {
                 scene_quote_t q = scene_quote(m[0].t[0]);
-                return scene_fail(p, "'%s' is only for material phong, not %s", name, q.s);
+                return scene_fail(p, "'%s' is only for %s, not %s", own[k].name, own[k].owned_by, q.s);
             }
-            return scene_fail(p, "'%s' is only for material phong (add 'material phong')", name);
+            return scene_fail(p, "'%s' is only for %s (%s)", own[k].name, own[k].owned_by, own[k].hint);
         }
     }
     return 0;
@@ -823,11 +854,18 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
     o->color[1] = vals[color_field].v[1];
     o->color[2] = vals[color_field].v[2];
     o->material = vals[mat_field].seen ? (scene_material_t)vals[mat_field].word : SCENE_MAT_FLAT;
-    if (o->material == SCENE_MAT_PHONG) {
+    /* Fields a material does not use stay 0 (scene_check_material has
+     * refused them). */
+    if (o->material == SCENE_MAT_PHONG || o->material == SCENE_MAT_REFLECTIVE) {
         for (f = 0; f < 3; f++)
             o->specular[f] = vals[mat_field + 1].v[f];
         o->exponent = (int)vals[mat_field + 2].iv;
     }
+    if (o->material == SCENE_MAT_REFLECTIVE)
+        for (f = 0; f < 3; f++)
+            o->reflection[f] = vals[mat_field + 3].v[f];
+    if (o->material == SCENE_MAT_TRANSPARENT)
+        o->index = vals[mat_field + 4].v[0];
     p->out->count++;
     p->kind_count[kind]++;
     return 0;
@@ -877,6 +915,61 @@ static int scene_parse_image(scene_parser_t *p)
     p->out->width = (int)size[0];
     p->out->height = (int)size[1];
     p->image_line = p->line;
+    return 0;
+}
+
+/* The integer of 'depth N' or 'samples N' (token 1), in lo..hi. */
+static int scene_parse_count(scene_parser_t *p, const char *what, long lo, long hi, long *v)
+{
+    scene_quote_t q = scene_quote(p->tok[1]);
+
+    if (scene_parse_uint(p->tok[1], v) != 0)
+        return scene_fail(p, "'%s' needs an integer in %ld..%ld, got '%s'", what, lo, hi, q.s);
+    if (*v < lo || *v > hi)
+        return scene_fail(p, "%s %s outside %ld..%ld", what, q.s, lo, hi);
+    return 0;
+}
+
+/* 'depth N': bounces per primary ray, 0..SCENE_MAX_DEPTH, at most once. */
+static int scene_parse_depth(scene_parser_t *p)
+{
+    long v;
+
+    if (p->depth_line)
+        return scene_fail(p, "duplicate 'depth' line (first on line %d)", p->depth_line);
+    if (p->ntok != 2)
+        return scene_fail(p, "'depth' needs 1 integer, got %d values", p->ntok - 1);
+    if (scene_parse_count(p, "depth", 0, SCENE_MAX_DEPTH, &v) != 0)
+        return -1;
+    p->out->depth = (int)v;
+    p->depth_line = p->out->depth_line = p->line;
+    return 0;
+}
+
+/* 'samples N [adaptive]': N x N rays per pixel, 1..SCENE_MAX_SAMPLES, at
+ * most once; adaptive needs N >= 2 (with one ray per pixel there is
+ * nothing to leave out). */
+static int scene_parse_samples(scene_parser_t *p)
+{
+    long v;
+
+    if (p->samples_line)
+        return scene_fail(p, "duplicate 'samples' line (first on line %d)", p->samples_line);
+    if (p->ntok < 2 || p->ntok > 3)
+        return scene_fail(p, "'samples' needs 1 integer and optionally 'adaptive', got %d values", p->ntok - 1);
+    if (scene_parse_count(p, "samples", 1, SCENE_MAX_SAMPLES, &v) != 0)
+        return -1;
+    if (p->ntok == 3) {
+        if (!scene_tok_is(p->tok[2], "adaptive")) {
+            scene_quote_t q = scene_quote(p->tok[2]);
+            return scene_fail(p, "unexpected '%s' after samples (only 'adaptive' may follow the number)", q.s);
+        }
+        if (v < 2)
+            return scene_fail(p, "'samples %ld adaptive': adaptive needs samples 2 or more", v);
+        p->out->adaptive = 1;
+    }
+    p->out->samples = (int)v;
+    p->samples_line = p->out->samples_line = p->line;
     return 0;
 }
 
@@ -985,6 +1078,10 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
     }
     if (scene_tok_is(kw, "light"))
         return scene_parse_light(p);
+    if (scene_tok_is(kw, "depth"))
+        return scene_parse_depth(p);
+    if (scene_tok_is(kw, "samples"))
+        return scene_parse_samples(p);
     if (scene_tok_is(kw, "camera"))
         return scene_parse_camera(p);
     if (scene_tok_is(kw, "plane"))
@@ -998,7 +1095,7 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
     {
         scene_quote_t q = scene_quote(kw);
         return scene_fail(p, "unknown keyword '%s' (expected image, background, ambient, camera, "
-                             "light, plane, sphere, triangle or box)", q.s);
+                             "light, depth, samples, plane, sphere, triangle or box)", q.s);
     }
 }
 
@@ -1025,6 +1122,8 @@ int scene_parse(const char *name, const char *text, size_t len, scene_t *out, ch
     memset(out, 0, sizeof *out);
     out->width = SCENE_DEFAULT_WIDTH;
     out->height = SCENE_DEFAULT_HEIGHT;
+    out->depth = SCENE_DEFAULT_DEPTH;
+    out->samples = 1;
 
     /* A UTF-8 byte-order mark (EF BB BF), which some editors put at the
      * start of a file, is skipped there only; anywhere else its bytes are

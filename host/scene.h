@@ -23,8 +23,8 @@ typedef struct {
 
 typedef enum { SCENE_PLANE, SCENE_SPHERE, SCENE_TRIANGLE, SCENE_BOX } scene_kind_t;
 
-/* 'material flat|lambert|phong' on an object; flat (the default) is the
- * colour as is, unaffected by lights. */
+/* 'material flat|lambert|phong|reflective|transparent' on an object; flat
+ * (the default) is the colour as is, unaffected by lights. */
 typedef enum {
     SCENE_MAT_FLAT,
     SCENE_MAT_LAMBERT,

@@ -1,9 +1,11 @@
 /* fxrt-scenec: compile a .scene file into C for the firmware: a header of
  * capacity macros (FXRT_MAX_<KIND> = the scene's own counts, so unused
  * kinds compile out; FXRT_MAX_LIGHTS, FXRT_SHADOWS, FXRT_PHONG from the
- * scene's materials and lights) and a header with the scene's own values
- * (camera, background, objects, ambient, lights) in the chosen number type, which the firmware
- * passes to the public API (core/fxrt.h) at boot. */
+ * scene's materials and lights; FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES,
+ * FXRT_ADAPTIVE from its depth, samples and materials) and a header with
+ * the scene's own values (camera, background, objects, ambient, lights,
+ * depth, samples) in the chosen number type, which the firmware passes to
+ * the public API (core/fxrt.h) at boot. */
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,13 +20,18 @@ static const char usage[] =
     "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR [--all-kinds]\n"
     "\n"
     "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT/OBJECTS/LIGHTS,\n"
-    "FXRT_SHADOWS, FXRT_PHONG) and DIR/scene_data.h (the scene's own values:\n"
-    "fxrt_camera_t scene_camera, color_t scene_background, fxrt_object_t\n"
-    "scene_objects[] with materials, color_t scene_ambient, fxrt_light_t\n"
-    "scene_lights[]), which the firmware sets up at boot through core/fxrt.h.\n"
+    "FXRT_SHADOWS, FXRT_PHONG, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES, FXRT_ADAPTIVE) and\n"
+    "DIR/scene_data.h (the scene's own values: fxrt_camera_t scene_camera, color_t\n"
+    "scene_background, fxrt_object_t scene_objects[] with materials, color_t\n"
+    "scene_ambient, fxrt_light_t scene_lights[], int32_t scene_depth and\n"
+    "scene_samples, bool scene_adaptive), which the firmware sets up at boot\n"
+    "through core/fxrt.h.\n"
     "FXRT_MAX_LIGHTS is 0 (lighting compiled out) when every material is flat,\n"
     "else max(1, lights); FXRT_SHADOWS 1 only if a light casts shadows; FXRT_PHONG\n"
-    "1 only if an object is phong.\n"
+    "1 only if an object is phong or reflective; FXRT_MAX_DEPTH is the scene's\n"
+    "depth if an object is reflective or transparent, else 0; FXRT_MAX_SAMPLES is\n"
+    "the scene's samples N (FXRT_RENDER_MAX_WIDTH N x width); FXRT_ADAPTIVE 1 only\n"
+    "for 'samples N adaptive'.\n"
     "--all-kinds keeps every primitive kind compiled in (capacity >= 1), to\n"
     "measure what stripping the unused ones saves.\n";
 

@@ -65,7 +65,13 @@ static const char *light_kind_name(light_kind_t k)
 
 static const char *material_kind_name(unsigned k)
 {
-    return k == MATERIAL_PHONG ? "MATERIAL_PHONG" : k == MATERIAL_LAMBERT ? "MATERIAL_LAMBERT" : "MATERIAL_FLAT";
+    switch (k) {
+    case MATERIAL_LAMBERT: return "MATERIAL_LAMBERT";
+    case MATERIAL_PHONG: return "MATERIAL_PHONG";
+    case MATERIAL_REFLECTIVE: return "MATERIAL_REFLECTIVE";
+    case MATERIAL_TRANSPARENT: return "MATERIAL_TRANSPARENT";
+    }
+    return "MATERIAL_FLAT";
 }
 
 static unsigned scenec_cap(unsigned n, bool all_kinds)
@@ -93,7 +99,12 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
             scenec_cap(w.n_triangles, all_kinds), scenec_cap(w.n_boxes, all_kinds));
     fprintf(cfg, "#define SCENE_WIDTH %d\n#define SCENE_HEIGHT %d\n", width, height);
     fprintf(cfg, "#define SCENE_OBJECTS %d\n", d.count);
-    fprintf(cfg, "#define FXRT_RENDER_MAX_WIDTH %d\n", width);
+    /* Supersampling runs the visibility pass on a camera N times as wide
+     * (core/fxrt_config.h FXRT_MAX_SAMPLES), so the render state needs N *
+     * width columns (never more than FXRT_MAX_DIM: a frame beyond it is
+     * refused by render set-up on the host and the board alike). */
+    long cols = (long)width * d.samples;
+    fprintf(cfg, "#define FXRT_RENDER_MAX_WIDTH %ld\n", cols < FXRT_MAX_DIM ? cols : (long)FXRT_MAX_DIM);
     /* Lighting: compiled out entirely (FXRT_MAX_LIGHTS 0) when every
      * material is flat, since no light then changes a pixel; else room for
      * the scene's lights (at least 1). Shadow rays and the specular term
@@ -101,7 +112,8 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     int lit = 0, phong = 0, shadows = 0;
     for (int i = 0; i < d.count; i++) {
         lit |= d.obj[i].material.kind != MATERIAL_FLAT;
-        phong |= d.obj[i].material.kind == MATERIAL_PHONG;
+        /* Reflective materials have the Phong term too. */
+        phong |= d.obj[i].material.kind == MATERIAL_PHONG || d.obj[i].material.kind == MATERIAL_REFLECTIVE;
     }
     for (int i = 0; i < d.nlights; i++)
         shadows |= d.lights[i].shadows;
@@ -110,8 +122,13 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(cfg, "#define FXRT_MAX_LIGHTS %d\n#define FXRT_SHADOWS %d\n#define FXRT_PHONG %d\n", max_lights,
             lit && shadows, lit && phong);
     fprintf(cfg, "#define SCENE_LIGHTS %d\n", n_lights);
-    /* Bounces and supersampling: compiled out until the scene asks for them. */
-    fprintf(cfg, "#define FXRT_MAX_DEPTH 0\n#define FXRT_MAX_SAMPLES 1\n");
+    /* Secondary rays: the bounce stack holds the scene's depth when some
+     * object is reflective or transparent, else bounces are compiled out
+     * (FXRT_MAX_DEPTH 0: no bounce code is linked). Supersampling: the
+     * scene's N (1 compiles it out), adaptive only when asked for. Such an
+     * object is never flat, so FXRT_MAX_DEPTH > 0 implies lighting. */
+    fprintf(cfg, "#define FXRT_MAX_DEPTH %d\n#define FXRT_MAX_SAMPLES %d\n#define FXRT_ADAPTIVE %d\n",
+            d.bounces ? d.depth : 0, d.samples, d.adaptive ? 1 : 0);
 #if FXRT_MAX_BOXES > 0
     /* The box-face pool holds what this camera needs (3 faces for a box
      * seen from outside in perspective, up to 6 otherwise), counted by the
@@ -171,9 +188,17 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
         /* Flat objects leave .material zero (MATERIAL_FLAT). */
         if (o->material.kind != MATERIAL_FLAT) {
             fprintf(data, ", .material = {.kind = %s", material_kind_name(o->material.kind));
-            if (o->material.kind == MATERIAL_PHONG) {
+            if (o->material.kind == MATERIAL_PHONG || o->material.kind == MATERIAL_REFLECTIVE) {
                 fprintf(data, ", .exponent = %u, .specular = ", (unsigned)o->material.exponent);
                 emit_color(data, o->material.specular);
+            }
+            if (o->material.kind == MATERIAL_REFLECTIVE) {
+                fputs(", .reflection = ", data);
+                emit_color(data, o->material.reflection);
+            }
+            if (o->material.kind == MATERIAL_TRANSPARENT) {
+                fputs(", .index = ", data);
+                emit_num(data, o->material.index);
             }
             fputs("}", data);
         }
@@ -206,5 +231,12 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     if (n_lights == 0)
         fputs("    {.kind = LIGHT_POINT},\n", data);
     fputs("};\n", data);
+
+    /* Depth and samples, which the firmware sets with world_set_depth
+     * (when FXRT_MAX_DEPTH > 0) and world_set_samples (when
+     * FXRT_MAX_SAMPLES > 1) after the lights, as engine_build does. */
+    fprintf(data, "static const int32_t scene_depth = %d; /* line %d */\n", d.depth, sc->depth_line);
+    fprintf(data, "static const int32_t scene_samples = %d; /* line %d */\n", d.samples, sc->samples_line);
+    fprintf(data, "static const bool scene_adaptive = %s;\n", d.adaptive ? "true" : "false");
     return 0;
 }

@@ -7,7 +7,11 @@
  * statement; objects in file order on lines starting with their keyword,
  * per-kind counts within the capacities; lights likewise on 'light' lines
  * (at most SCENE_MAX_LIGHTS), the ambient colour on its 'ambient' line;
- * materials consistent (specular and exponent for phong only); every value inside the documented
+ * materials consistent (specular and exponent for phong and reflective
+ * only, reflection for reflective only, an index in [FXRT_INDEX_MIN,
+ * FXRT_INDEX_MAX] for transparent only); depth and samples from their
+ * one line each or the defaults (4, 1), adaptive only with samples >= 2;
+ * every value inside the documented
  * domain (core/fxrt_config.h) and either 0 or at least 2^-16 in magnitude;
  * no -0. Rejections must not depend on the size of the error buffer: a
  * short buffer gets a prefix of the same message. Any violation aborts,
@@ -66,11 +70,14 @@ static long fuzz_line_count(const uint8_t *d, size_t n)
 #define FUZZ_LINE_CAMERA 4
 #define FUZZ_LINE_LIGHT 5
 #define FUZZ_LINE_AMBIENT 6
-#define FUZZ_LINE_OTHER 7
+#define FUZZ_LINE_DEPTH 7
+#define FUZZ_LINE_SAMPLES 8
+#define FUZZ_LINE_OTHER 9
 
 static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, long lines)
 {
-    static const char *const kw[] = {"plane", "sphere", "triangle", "box", "camera", "light", "ambient"};
+    static const char *const kw[] = {"plane", "sphere",  "triangle", "box",    "camera",
+                                     "light", "ambient", "depth",    "samples"};
     size_t i = 0;
     long l;
 
@@ -85,7 +92,7 @@ static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, lo
             i++;
         len = i - start;
         kinds[l] = FUZZ_LINE_OTHER;
-        for (k = 0; k < 7; k++)
+        for (k = 0; k < (int)(sizeof kw / sizeof kw[0]); k++)
             if (len == strlen(kw[k]) && memcmp(d + start, kw[k], len) == 0)
                 kinds[l] = (unsigned char)k;
         while (i < n && d[i] != '\n')
@@ -236,19 +243,55 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
         FUZZ_CHECK(kind_count[k] == file_count[k], NULL);
     }
 
-    /* Materials: flat by default; specular and exponent only for phong. */
+    /* Materials: flat by default; specular and exponent only for phong
+     * and reflective, reflection only for reflective, index only for
+     * transparent. */
     for (i = 0; i < s->count; i++) {
         const scene_obj_t *o = &s->obj[i];
         FUZZ_CHECK(o->material == SCENE_MAT_FLAT || o->material == SCENE_MAT_LAMBERT ||
-                       o->material == SCENE_MAT_PHONG,
+                       o->material == SCENE_MAT_PHONG || o->material == SCENE_MAT_REFLECTIVE ||
+                       o->material == SCENE_MAT_TRANSPARENT,
                    NULL);
         fuzz_check_color(o->specular);
-        if (o->material == SCENE_MAT_PHONG) {
+        fuzz_check_color(o->reflection);
+        if (o->material == SCENE_MAT_PHONG || o->material == SCENE_MAT_REFLECTIVE) {
             FUZZ_CHECK(o->exponent >= 1 && o->exponent <= SCENE_MAX_EXPONENT, NULL);
         } else {
             FUZZ_CHECK(o->exponent == 0, NULL);
             FUZZ_CHECK(o->specular[0] == 0.0 && o->specular[1] == 0.0 && o->specular[2] == 0.0, NULL);
         }
+        if (o->material != SCENE_MAT_REFLECTIVE)
+            FUZZ_CHECK(o->reflection[0] == 0.0 && o->reflection[1] == 0.0 && o->reflection[2] == 0.0, NULL);
+        if (o->material == SCENE_MAT_TRANSPARENT) {
+            FUZZ_CHECK(o->index >= FXRT_INDEX_MIN && o->index <= FXRT_INDEX_MAX, NULL);
+            fuzz_check_num(o->index, FXRT_INDEX_MAX);
+        } else {
+            FUZZ_CHECK(o->index == 0.0, NULL);
+        }
+    }
+
+    /* Depth and samples: at most one line each, the stored line is it,
+     * the defaults (4; 1, not adaptive) without one. */
+    {
+        long depths = 0, samples = 0;
+        for (l = 1; l <= lines; l++) {
+            depths += kinds[l] == FUZZ_LINE_DEPTH;
+            samples += kinds[l] == FUZZ_LINE_SAMPLES;
+        }
+        FUZZ_CHECK(depths <= 1 && samples <= 1, NULL);
+        FUZZ_CHECK(s->depth >= 0 && s->depth <= SCENE_MAX_DEPTH, NULL);
+        if (depths == 0)
+            FUZZ_CHECK(s->depth_line == 0 && s->depth == SCENE_DEFAULT_DEPTH, NULL);
+        else
+            FUZZ_CHECK(s->depth_line >= 1 && s->depth_line <= lines && kinds[s->depth_line] == FUZZ_LINE_DEPTH, NULL);
+        FUZZ_CHECK(s->samples >= 1 && s->samples <= SCENE_MAX_SAMPLES, NULL);
+        FUZZ_CHECK(s->adaptive == 0 || (s->adaptive == 1 && s->samples >= 2), NULL);
+        if (samples == 0)
+            FUZZ_CHECK(s->samples_line == 0 && s->samples == 1 && s->adaptive == 0, NULL);
+        else
+            FUZZ_CHECK(s->samples_line >= 1 && s->samples_line <= lines &&
+                           kinds[s->samples_line] == FUZZ_LINE_SAMPLES,
+                       NULL);
     }
 
     /* Ambient: at most one line, and the stored line is it. */

@@ -20,6 +20,8 @@ typedef struct {
     const color_t *ambient;
     const fxrt_light_t *lights;
     int32_t nlights; /* 0 when the scene's materials are all flat */
+    const int32_t *depth, *samples;
+    const bool *adaptive;
 } onb_scene_t;
 
 #include "scenes.h"
@@ -67,6 +69,19 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
         int32_t li = fxrt_add_light(&world, &s->lights[i]);
         e = li == i ? FXRT_OK : (li < 0 ? li : FXRT_ERR_LIGHT);
     }
+    /* Depth and samples as engine_build sets them: a depth the batch's
+     * FXRT_MAX_DEPTH cannot hold is an error only for a scene with
+     * reflective or transparent objects (it changes nothing else). */
+    if (e == FXRT_OK) {
+        bool bounces = false;
+        for (int32_t i = 0; i < s->count; i++)
+            bounces |= material_bounces(s->objects[i].material.kind);
+        int32_t de = world_set_depth(&world, *s->depth);
+        if (de != FXRT_OK && bounces)
+            e = de;
+    }
+    if (e == FXRT_OK)
+        e = world_set_samples(&world, *s->samples, *s->adaptive);
     if (e == FXRT_OK)
         e = fxrt_render_setup(&rs, &world, &cam);
     if (e != FXRT_OK) {

@@ -87,7 +87,7 @@ batch=() bp=0 bs=0 bt=0 bb=0 bw=0 k=0
 onb_single() {
     local n=$1
     onb_batch microbit "s-$n" "$n" >>"$onb/verdicts.txt" && return
-    echo "SKIP microbit $n: does not fit 16 KB of RAM ($(cfgv $n SCENE_OBJECTS) objects, $(cfgv $n SCENE_WIDTH)" \
+    echo "SKIP microbit $n: does not fit 16 KB of RAM ($(cfgv $n SCENE_OBJECTS) objects, $(cfgv $n FXRT_RENDER_MAX_WIDTH)" \
         "columns; $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/microbit-s-$n/build.log"))" >>"$onb/verdicts.txt"
 }
 flush_mb() {
@@ -102,7 +102,7 @@ flush_mb() {
 }
 for n in "${stress[@]}"; do
     p=$(cfgv $n FXRT_MAX_PLANES) s=$(cfgv $n FXRT_MAX_SPHERES) t=$(cfgv $n FXRT_MAX_TRIANGLES)
-    bx=$(cfgv $n FXRT_MAX_BOXES) w=$(cfgv $n SCENE_WIDTH)
+    bx=$(cfgv $n FXRT_MAX_BOXES) w=$(cfgv $n FXRT_RENDER_MAX_WIDTH)
     np=$((p > bp ? p : bp)) ns=$((s > bs ? s : bs)) nt=$((t > bt ? t : bt)) nb=$((bx > bb ? bx : bb))
     nw=$((w > bw ? w : bw))
     if [ ${#batch[@]} -gt 0 ] && [ $(((np + ns + nt + nb) * 1100 + 7 * nw)) -gt $ONB_MB_BUDGET ]; then

@@ -143,7 +143,8 @@ FUZZ_SCENE_DICT_WORDS := image background camera perspective orthographic plane 
     8192 -8192 8192.0001 4096 4096.0001 180 179.99999 0.0000152587890625 0.00001 \
     1e-5 1e99999 1e-400 -0 0.5 1 nan inf 0x1 32767 65536 \
     ambient light directional spot position direction angle shadows on off material flat lambert \
-    phong specular exponent 90 90.0001 1024 1025 64.0
+    phong specular exponent 90 90.0001 1024 1025 64.0 \
+    reflective transparent reflection index depth samples adaptive 0.01 0.00999 100 100.0001 1.33 16 17
 
 $(FUZZ_DIR)/scene.dict: tests/sanitize.mk
 	@mkdir -p $(@D)

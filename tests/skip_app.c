@@ -23,7 +23,7 @@ int main(void)
     ids[2] = world_add_box(&world, P(-2, 0, -1), P(-1, 1, 0), COL(0.2, 0.3, 0.9));
     ids[3] = world_add_triangle(&world, P(1, 0, -1), P(2, 0, -1), P(1.5, 1, -1), COL(0.6, 0.6, 0.1));
 #if SKIP_LIT
-    material_t m = {MATERIAL_LAMBERT, 0, {0, 0, 0}, {0, 0, 0}, 0};
+    material_t m = {.kind = MATERIAL_LAMBERT};
     for (int i = 0; i < 4; i++)
         world_set_material(&world, ids[i], &m);
     world_set_ambient(&world, COL(0.1, 0.1, 0.1));

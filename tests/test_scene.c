@@ -269,6 +269,74 @@ static void test_lights_materials(void)
         CHECK(g_scene.obj[i].material == SCENE_MAT_FLAT && g_scene.obj[i].exponent == 0);
 }
 
+/* Reflection, refraction and supersampling: the issue's example lines,
+ * fields in any order, the limits, defaults and the values as stored. */
+static const char *trace_scene =
+    "camera perspective eye 8 8 8 gaze -1 -1 -1 up 0 1 0 fov 45\n"
+    "sphere center 0 1 0 radius 1 color 0 1 0 material reflective specular 1 1 1 exponent 64 reflection 0.5 0.5 0.5\n"
+    "sphere center 0 2 1.5 radius 0.5 color 1 1 1 material transparent index 1.33\n"
+    "depth 6            # largest number of bounces\n"
+    "samples 4          # N x N rays per pixel\n"
+    "plane point 0 0 0 normal 0 1 0 color 0.1 0.1 0.1 material reflective specular 0 0 0 exponent 1 reflection 0.5 0.25 1\n"
+    "box reflection 0 0.75 1 exponent 1024 max 1 1 1 material reflective color 1 0 0 specular 0.5 0 1 min 0 0 0\n"
+    "triangle index 100 a 0 0 0 b 1 0 0 c 0 1 0 material transparent color 1 1 1\n"
+    "sphere material transparent center 0 0 0 index 0.01 radius 1 color 0 0 1\n";
+
+static void test_trace_keywords(void)
+{
+    const scene_obj_t *o;
+
+    CHECK_MSG(parse_str(trace_scene) == 0, "%s", g_err);
+    CHECK(g_scene.count == 6);
+    o = &g_scene.obj[0];
+    CHECK(o->material == SCENE_MAT_REFLECTIVE && o->exponent == 64 && color_is(o->specular, 1, 1, 1));
+    CHECK(color_is(o->reflection, 0.5, 0.5, 0.5) && o->index == 0);
+    o = &g_scene.obj[1];
+    CHECK(o->material == SCENE_MAT_TRANSPARENT && o->index == 1.33 && o->exponent == 0);
+    CHECK(color_is(o->specular, 0, 0, 0) && color_is(o->reflection, 0, 0, 0) && color_is(o->color, 1, 1, 1));
+    o = &g_scene.obj[2];
+    CHECK(o->kind == SCENE_PLANE && o->material == SCENE_MAT_REFLECTIVE && o->exponent == 1);
+    CHECK(color_is(o->specular, 0, 0, 0) && color_is(o->reflection, 0.5, 0.25, 1) && o->line == 6);
+    o = &g_scene.obj[3];
+    CHECK(o->kind == SCENE_BOX && o->material == SCENE_MAT_REFLECTIVE && o->exponent == 1024);
+    CHECK(color_is(o->specular, 0.5, 0, 1) && color_is(o->reflection, 0, 0.75, 1));
+    CHECK(vec_is(o->p[0], 0, 0, 0) && vec_is(o->p[1], 1, 1, 1) && color_is(o->color, 1, 0, 0));
+    o = &g_scene.obj[4];
+    CHECK(o->kind == SCENE_TRIANGLE && o->material == SCENE_MAT_TRANSPARENT && o->index == 100);
+    CHECK(vec_is(o->p[2], 0, 1, 0));
+    o = &g_scene.obj[5];
+    CHECK(o->kind == SCENE_SPHERE && o->material == SCENE_MAT_TRANSPARENT && o->index == 0.01 && o->line == 9);
+    CHECK(g_scene.depth == 6 && g_scene.depth_line == 4);
+    CHECK(g_scene.samples == 4 && g_scene.adaptive == 0 && g_scene.samples_line == 5);
+
+    /* Defaults: depth 4, one sample, not adaptive, no lines. */
+    CHECK_MSG(parse_str(good_scene) == 0, "%s", g_err);
+    CHECK(g_scene.depth == SCENE_DEFAULT_DEPTH && g_scene.depth == 4 && g_scene.depth_line == 0);
+    CHECK(g_scene.samples == 1 && g_scene.adaptive == 0 && g_scene.samples_line == 0);
+    for (int i = 0; i < g_scene.count; i++)
+        CHECK(color_is(g_scene.obj[i].reflection, 0, 0, 0) && g_scene.obj[i].index == 0);
+    /* Limits, adaptive, leading zeros, anywhere in the file (also before
+     * the camera), with comments and tabs. */
+    CHECK_MSG(parse_str("depth 0\nsamples\t16   adaptive # full grid where keys differ\n" CAM) == 0, "%s", g_err);
+    CHECK(g_scene.depth == 0 && g_scene.depth_line == 1 && g_scene.samples == 16 && g_scene.adaptive == 1);
+    CHECK(g_scene.samples_line == 2);
+    CHECK_MSG(parse_str(CAM "depth 16\nsamples 1\n") == 0, "%s", g_err);
+    CHECK(g_scene.depth == 16 && g_scene.samples == 1 && g_scene.adaptive == 0);
+    CHECK_MSG(parse_str(CAM "samples 2 adaptive\ndepth 007\n") == 0, "%s", g_err);
+    CHECK(g_scene.samples == 2 && g_scene.adaptive == 1 && g_scene.depth == 7 && g_scene.depth_line == 3);
+    /* Explicit 'depth 4' and 'samples 1' store the defaults with their lines. */
+    CHECK_MSG(parse_str(CAM "depth 4\nsamples 1\n") == 0, "%s", g_err);
+    CHECK(g_scene.depth == 4 && g_scene.depth_line == 2 && g_scene.samples == 1 && g_scene.samples_line == 3);
+    /* Index written in other spellings; reflection 0 0 0 is allowed. */
+    CHECK_MSG(parse_str(CAM "sphere center 0 0 -3 radius 1 color 1 1 1 material transparent index 1e2\n"
+                            "sphere center 0 0 -3 radius 1 color 1 1 1 material transparent index .01\n"
+                            "sphere center 0 0 -3 radius 1 color 1 1 1 material reflective reflection 0 0 0 "
+                            "specular 0 0 0 exponent 1\n") == 0,
+              "%s", g_err);
+    CHECK(g_scene.obj[0].index == 100 && g_scene.obj[1].index == 0.01);
+    CHECK(g_scene.obj[2].material == SCENE_MAT_REFLECTIVE && color_is(g_scene.obj[2].reflection, 0, 0, 0));
+}
+
 static void test_light_capacity(void)
 {
     static char buf[4096];
@@ -475,9 +543,9 @@ static const struct error_case error_cases[] = {
     {CAM "light spot position 0 0 0 direction 0 -1 0 angle ten color 1 1 1\n", 2, "angle: 'ten' is not a number"},
     /* materials */
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material\n", 2,
-     "'material' needs a value (flat, lambert or phong)"},
+     "'material' needs a value (flat, lambert, phong, reflective or transparent)"},
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material metal\n", 2,
-     "unknown material 'metal' (expected flat, lambert or phong)"},
+     "unknown material 'metal' (expected flat, lambert, phong, reflective or transparent)"},
     {CAM "plane point 0 0 0 normal 0 1 0 color 1 0 0 material Phong specular 1 1 1 exponent 2\n", 2,
      "unknown material 'Phong'"},
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material flat material lambert\n", 2,
@@ -488,13 +556,13 @@ static const struct error_case error_cases[] = {
     {CAM "box min 0 0 0 max 1 1 1 color 1 0 0 material phong specular 1 1 1\n", 2,
      "missing field 'exponent' for box with material phong"},
     {CAM "triangle a 0 0 0 b 1 0 0 c 0 1 0 color 1 0 0 material lambert specular 1 1 1\n", 2,
-     "'specular' is only for material phong, not lambert"},
+     "'specular' is only for material phong or reflective, not lambert"},
     {CAM "plane point 0 0 0 normal 0 1 0 color 1 0 0 material flat exponent 3\n", 2,
-     "'exponent' is only for material phong, not flat"},
+     "'exponent' is only for material phong or reflective, not flat"},
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 specular 1 1 1 exponent 3\n", 2,
-     "'specular' is only for material phong (add 'material phong')"},
+     "'specular' is only for material phong or reflective (add 'material phong' or 'material reflective')"},
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 exponent 3\n", 2,
-     "'exponent' is only for material phong (add 'material phong')"},
+     "'exponent' is only for material phong or reflective (add 'material phong' or 'material reflective')"},
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 0\n", 2,
      "exponent 0 outside 1..1024"},
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 1025\n", 2,
@@ -520,6 +588,112 @@ static const struct error_case error_cases[] = {
     {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 shadows off\n", 2, "sphere has no field 'shadows'"},
     {CAM "sphere center 0 0 -3 radius 0.5 material lambert\n", 2, "missing field 'color' for sphere"},
     {"ambiant 0 0 0\n" CAM, 1, "unknown keyword 'ambiant' (expected image, background, ambient, camera, light"},
+    /* reflective and transparent */
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 8\n", 2,
+     "missing field 'reflection' for sphere with material reflective"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective exponent 8 reflection 1 1 1\n", 2,
+     "missing field 'specular' for sphere with material reflective"},
+    {CAM "box min 0 0 0 max 1 1 1 color 1 0 0 material reflective specular 1 1 1 reflection 1 1 1\n", 2,
+     "missing field 'exponent' for box with material reflective"},
+    {CAM "plane point 0 0 0 normal 0 1 0 color 1 0 0 material reflective\n", 2,
+     "missing field 'specular' for plane with material reflective"},
+    {CAM "triangle a 0 0 0 b 1 0 0 c 0 1 0 color 1 0 0 material transparent\n", 2,
+     "missing field 'index' for triangle with material transparent"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 1.5 specular 1 1 1\n", 2,
+     "'specular' is only for material phong or reflective, not transparent"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 1.5 exponent 3\n", 2,
+     "'exponent' is only for material phong or reflective, not transparent"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 1.5 reflection 1 1 1\n", 2,
+     "'reflection' is only for material reflective, not transparent"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material phong specular 1 1 1 exponent 3 reflection 1 1 1\n", 2,
+     "'reflection' is only for material reflective, not phong"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 reflection 0.5 0.5 0.5\n", 2,
+     "'reflection' is only for material reflective (add 'material reflective')"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material lambert index 1.5\n", 2,
+     "'index' is only for material transparent, not lambert"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 index 1.5\n", 2,
+     "'index' is only for material transparent (add 'material transparent')"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 3 "
+         "reflection 1 1 1 index 1.5\n", 2,
+     "'index' is only for material transparent, not reflective"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 3 "
+         "reflection 1 1.5 1\n", 2,
+     "reflection color component 1.5 outside 0..1"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 3 "
+         "reflection 1 -0.5 1\n", 2,
+     "reflection color component -0.5 outside 0..1"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 3 reflection 1 1\n", 2,
+     "'reflection' needs 3 numbers, got 2"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 3 "
+         "reflection 1 1 1 reflection 1 1 1\n", 2,
+     "duplicate field 'reflection' in sphere"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 0 reflection 1 1 1\n", 2,
+     "exponent 0 outside 1..1024"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 1025 "
+         "reflection 1 1 1\n", 2,
+     "exponent 1025 outside 1..1024"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material reflective specular 1 1 1 exponent 6.4 "
+         "reflection 1 1 1\n", 2,
+     "exponent must be an integer in 1..1024, got '6.4'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 0.00999\n", 2,
+     "index must be inside [0.01, 100], got 0.00999"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 100.001\n", 2,
+     "index must be inside [0.01, 100], got 100.001"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 0\n", 2,
+     "index must be inside [0.01, 100], got 0"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index -1.5\n", 2,
+     "index must be inside [0.01, 100], got -1.5"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 1e999\n", 2,
+     "index must be inside [0.01, 100], got 1e999"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index nan\n", 2,
+     "index: NaN or infinity not allowed: 'nan'"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index glass\n", 2,
+     "index: 'glass' is not a number"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 0.000001\n", 2,
+     "index: too small for Q16.16: 0.000001"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index\n", 2,
+     "'index' needs 1 number, got 0"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 1.3 1.4\n", 2,
+     "'index' needs 1 number, got 2"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material transparent index 1.3 index 1.4\n", 2,
+     "duplicate field 'index' in sphere"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material Transparent index 1.3\n", 2,
+     "unknown material 'Transparent' (expected flat, lambert, phong, reflective or transparent)"},
+    {CAM "sphere center 0 0 -3 radius 0.5 color 1 0 0 material mirror\n", 2, "unknown material 'mirror'"},
+    {CAM "light point position 0 0 0 color 1 1 1 index 1.5\n", 2, "point light has no field 'index'"},
+    {CAM "light point position 0 0 0 color 1 1 1 reflection 1 1 1\n", 2, "point light has no field 'reflection'"},
+    {"camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45 index 2\n", 1,
+     "perspective camera has no field 'index'"},
+    /* depth and samples */
+    {CAM "depth 17\n", 2, "depth 17 outside 0..16"},
+    {CAM "depth 99999999999999999999\n", 2, "depth 99999999999999999999 outside 0..16"},
+    {CAM "depth -1\n", 2, "'depth' needs an integer in 0..16, got '-1'"},
+    {CAM "depth +2\n", 2, "'depth' needs an integer in 0..16, got '+2'"},
+    {CAM "depth 4.0\n", 2, "'depth' needs an integer in 0..16, got '4.0'"},
+    {CAM "depth 1e1\n", 2, "'depth' needs an integer in 0..16, got '1e1'"},
+    {CAM "depth six\n", 2, "'depth' needs an integer in 0..16, got 'six'"},
+    {CAM "depth\n", 2, "'depth' needs 1 integer, got 0 values"},
+    {CAM "depth 4 5\n", 2, "'depth' needs 1 integer, got 2 values"},
+    {CAM "depth 4 adaptive\n", 2, "'depth' needs 1 integer, got 2 values"},
+    {"depth 4\n" CAM "depth 4\n", 3, "duplicate 'depth' line (first on line 1)"},
+    {"depth 4\n" CAM "depth 5\n", 3, "duplicate 'depth' line (first on line 1)"},
+    {CAM "samples 0\n", 2, "samples 0 outside 1..16"},
+    {CAM "samples 17\n", 2, "samples 17 outside 1..16"},
+    {CAM "samples 17 adaptive\n", 2, "samples 17 outside 1..16"},
+    {CAM "samples -4\n", 2, "'samples' needs an integer in 1..16, got '-4'"},
+    {CAM "samples 2.5\n", 2, "'samples' needs an integer in 1..16, got '2.5'"},
+    {CAM "samples adaptive\n", 2, "'samples' needs an integer in 1..16, got 'adaptive'"},
+    {CAM "samples adaptive 4\n", 2, "'samples' needs an integer in 1..16, got 'adaptive'"},
+    {CAM "samples\n", 2, "'samples' needs 1 integer and optionally 'adaptive', got 0 values"},
+    {CAM "samples 4 adaptive adaptive\n", 2, "'samples' needs 1 integer and optionally 'adaptive', got 3 values"},
+    {CAM "samples 4 4\n", 2, "unexpected '4' after samples (only 'adaptive' may follow the number)"},
+    {CAM "samples 4 Adaptive\n", 2, "unexpected 'Adaptive' after samples (only 'adaptive' may follow the number)"},
+    {CAM "samples 1 adaptive\n", 2, "'samples 1 adaptive': adaptive needs samples 2 or more"},
+    {CAM "samples 01 adaptive\n", 2, "'samples 1 adaptive': adaptive needs samples 2 or more"},
+    {"samples 2\n" CAM "samples 2\n", 3, "duplicate 'samples' line (first on line 1)"},
+    {"samples 2 adaptive\n# x\n" CAM "samples 4\n", 4, "duplicate 'samples' line (first on line 1)"},
+    {CAM "deph 4\n", 2, "unknown keyword 'deph' (expected image, background, ambient, camera, light, depth, samples, "
+                        "plane, sphere, triangle or box)"},
     /* image */
     {"image 0 5\n" CAM, 1, "image size must be 1..4096 x 1..4096, got 0x5"},
     {"image 4097 5\n" CAM, 1, "got 4097x5"},
@@ -678,6 +852,9 @@ static void test_mutations_of(const char *scene)
                 bad_rc++;
             if (rc == 0 && (g_scene.nlights < 0 || g_scene.nlights > SCENE_MAX_LIGHTS))
                 bad_rc++;
+            if (rc == 0 && (g_scene.depth < 0 || g_scene.depth > SCENE_MAX_DEPTH || g_scene.samples < 1 ||
+                            g_scene.samples > SCENE_MAX_SAMPLES || (g_scene.adaptive && g_scene.samples < 2)))
+                bad_rc++;
         }
     }
     CHECK_MSG(bad_rc == 0, "%d bad results", bad_rc);
@@ -688,6 +865,7 @@ static void test_mutations(void)
 {
     test_mutations_of(good_scene);
     test_mutations_of(lit_scene);
+    test_mutations_of(trace_scene);
 }
 
 static int write_file(const char *path, const char *data, size_t len)
@@ -842,6 +1020,7 @@ int main(void)
     test_capacity();
     test_lights_materials();
     test_light_capacity();
+    test_trace_keywords();
     test_err_buffers();
     test_mutations();
     test_load();

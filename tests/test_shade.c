@@ -395,7 +395,7 @@ static void check_frame(const char *name, const scene_t *s)
 
 static void probe_material_reset(void)
 {
-    material_t m = {MATERIAL_PHONG, 8, color_make(NUM_ONE, NUM_ONE, NUM_ONE), color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), NUM_ZERO};
+    material_t m = {.kind = MATERIAL_PHONG, .exponent = 8, .specular = color_make(NUM_ONE, NUM_ONE, NUM_ONE)};
     color_t grey = color_make(N(chan(0.5)), N(chan(0.5)), N(chan(0.5)));
     fxrt_world_init(&world, grey);
     int32_t id = world_add_sphere(&world, vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), NUM_ONE, grey);
