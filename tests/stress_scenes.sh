@@ -210,7 +210,7 @@ for scene in "$dir"/*.scene; do
     # the key-based metrics (within1_pct, far_max_err, ...: issue 11),
     # which need the scene.
     keyed=()
-    grep -qE '^[[:space:]]*(light|ambient)[[:space:]]|[[:space:]]material[[:space:]]+(lambert|phong)' "$scene" &&
+    grep -qE '^[[:space:]]*(light|ambient)[[:space:]]|[[:space:]]material[[:space:]]+(lambert|phong|reflective|transparent)' "$scene" &&
         keyed=(--scene "$scene")
     for n in q16 float; do
         line=$("$FXRT" compare "$out/$name-double.ppm" "$out/$name-$n.ppm" "${keyed[@]}" --diff "$out/$name-$n-diff.png")
