@@ -1,0 +1,5 @@
+# make bounce-growth: Q16.16 and float error against double per bounce depth
+# on the parallel-mirror stress scene (docs/ACCURACY.md "Secondary rays").
+bounce-growth: $(BUILD)/fxrt
+	$(Q)BUILD=$(BUILD) FXRT=$(BUILD)/fxrt bash tests/bounce_growth.sh
+.PHONY: bounce-growth
