@@ -94,6 +94,10 @@ static inline void color_sum_add(color_sum_t *a, num_t c, uint32_t n)
 }
 static inline uint8_t color_sum_out(color_sum_t a, uint32_t n2)
 {
+    if ((n2 & (n2 - 1)) == 0) { /* N a power of two: a shift, the same value */
+        int sh = __builtin_ctz(n2) + 16;
+        return (uint8_t)((a + (1u << (sh - 1))) >> sh);
+    }
     return (uint8_t)((a + n2 * 32768u) / (n2 << 16));
 }
 #else

@@ -180,6 +180,10 @@ typedef struct {
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
     render_depth_t tlo, thi;
+#if FXRT_MAX_SAMPLES > 1
+    bool flat;          /* its material is flat: the colour is the sample */
+    color_sum_t sum[3]; /* flat: N samples of its colour (color_sum_add), for the sampling pass */
+#endif
     union {
         render_sphere_t *sphere; /* RENDER_SPHERE */
         render_flat_t *flat;     /* RENDER_FLAT: a plane or triangle */
@@ -236,10 +240,12 @@ typedef struct {
      * in acc (Q16.16: raw units, at most 255 * 2^16 * 256 < 2^32). */
     uint8_t samples;
     bool adaptive;
+    color_sum_t bg_sum[3]; /* N samples of the background */
     const cam_t *out_cam;
     cam_t fine;
     uint8_t fine_rgb[(FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * FXRT_RENDER_MAX_WIDTH] __attribute__((aligned(4)));
     color_sum_t acc[3 * RENDER_OUT_COLS];
+    uint16_t uni[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
 #if FXRT_ADAPTIVE
     /* Adaptive: keys and colours of output rows at one sample per pixel
      * (a ring of three rows: slot row % 3 holds row arow[row % 3]), and

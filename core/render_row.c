@@ -71,6 +71,10 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
             r->owner[x] = 0;
         r->stamp = 1;
     }
+#if FXRT_MAX_SAMPLES > 1
+    if (r->samples > 1)
+        return; /* the sampling pass reads vis, not the painted scratch row */
+#endif
     rgb8_t bg = r->world->background_rgb;
     typedef uint32_t __attribute__((may_alias)) word_t;
 #if FXRT_PIXEL == FXRT_RGB565

@@ -34,9 +34,8 @@ static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t 
     if (oi == RENDER_VIS_NONE)
         return r->world->background;
     const render_obj_t *o = &r->obj[oi];
-    const geom_common_t *obj = world_common(r->world, (geom_kind_t)o->geom, o->index);
 #if FXRT_MAX_LIGHTS > 0
-    if (obj->mat.kind != MATERIAL_FLAT) {
+    if (!o->flat) {
         ray_t ray;
         cam_ray(r->cam, X, y, &ray);
         return shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, &r->shade_k[oi], NULL);
@@ -44,48 +43,70 @@ static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t 
 #else
     (void)X, (void)y;
 #endif
-    return obj->color;
+    return world_common(r->world, (geom_kind_t)o->geom, o->index)->color;
 }
 
 static inline bool render_sample_flat(const render_t *r, uint16_t oi)
 {
-#if FXRT_MAX_LIGHTS > 0
-    if (oi == RENDER_VIS_NONE)
-        return true;
-    const render_obj_t *o = &r->obj[oi];
-    return world_common(r->world, (geom_kind_t)o->geom, o->index)->mat.kind == MATERIAL_FLAT;
-#else
-    (void)r, (void)oi;
-    return true;
-#endif
+    return oi == RENDER_VIS_NONE || r->obj[oi].flat;
 }
 
-/* Fine row frow (0 = top of the fine image): visibility, then each output
- * pixel that wants its samples (need == NULL: all) adds them. */
-static void render_sample_fine(render_t *r, int32_t frow, bool reference, const bool *need)
+/* uni[x] while an output pixel's samples so far all had one flat owner
+ * (or the background): that owner; RENDER_UNI_MIXED once they did not (its
+ * sum is then in acc). A pixel that stays uniform is that owner's colour,
+ * exactly what the mean of N x N equal samples rounds to, with no sums. */
+#define RENDER_UNI_MIXED 0xFFFEu
+
+/* Fine row j of output row `row`: visibility, then each output pixel that
+ * wants its samples (need == NULL: all) checks or adds them. */
+static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool reference, const bool *need)
 {
+    int32_t n = r->samples, w = r->out_cam->width, frow = row * n + j, y = r->cam->height - 1 - frow;
     if (reference)
         render_row_reference_vis(r, frow, r->fine_rgb);
     else
         render_row_vis(r, frow, r->fine_rgb);
-    int32_t n = r->samples, w = r->out_cam->width, y = r->cam->height - 1 - frow;
     for (int32_t x = 0, X0 = 0; x < w; x++, X0 += n) {
         if (need && !need[x])
             continue;
+        const uint16_t *v = &r->vis[X0];
         color_sum_t *a = &r->acc[3 * x];
-        uint16_t oi = r->vis[X0];
+        uint16_t u = r->uni[x];
+        if (u != RENDER_UNI_MIXED) {
+            bool same = true;
+            if (j == 0) {
+                u = r->uni[x] = v[0];
+                same = render_sample_flat(r, u); /* uni holds flat owners only */
+            }
+            for (int32_t i = 0; i < n && same; i++)
+                same = v[i] == u;
+            if (same)
+                continue;
+            /* The first other sample: the rows so far into the sum (none
+             * on row 0, where u may be a lit owner). */
+            if (j == 0) {
+                a[0] = a[1] = a[2] = 0;
+            } else {
+                const color_sum_t *c = u == RENDER_VIS_NONE ? r->bg_sum : r->obj[u].sum;
+                a[0] = c[0] * (color_sum_t)j;
+                a[1] = c[1] * (color_sum_t)j;
+                a[2] = c[2] * (color_sum_t)j;
+            }
+            r->uni[x] = RENDER_UNI_MIXED;
+        }
+        uint16_t oi = v[0];
         bool one = true;
         for (int32_t i = 1; i < n && one; i++)
-            one = r->vis[X0 + i] == oi;
+            one = v[i] == oi;
         if (one && render_sample_flat(r, oi)) {
-            color_t c = render_sample_color(r, oi, X0, y);
-            color_sum_add(&a[0], c.r, (uint32_t)n);
-            color_sum_add(&a[1], c.g, (uint32_t)n);
-            color_sum_add(&a[2], c.b, (uint32_t)n);
+            const color_sum_t *c = oi == RENDER_VIS_NONE ? r->bg_sum : r->obj[oi].sum;
+            a[0] += c[0];
+            a[1] += c[1];
+            a[2] += c[2];
             continue;
         }
         for (int32_t i = 0; i < n; i++) {
-            color_t c = render_sample_color(r, r->vis[X0 + i], X0 + i, y);
+            color_t c = render_sample_color(r, v[i], X0 + i, y);
             color_sum_add(&a[0], c.r, 1);
             color_sum_add(&a[1], c.g, 1);
             color_sum_add(&a[2], c.b, 1);
@@ -178,14 +199,18 @@ void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
         need = r->need;
     }
 #endif
-    for (int32_t i = 0; i < 3 * w; i++)
-        r->acc[i] = 0;
     for (int32_t j = 0; j < n; j++)
-        render_sample_fine(r, row * n + j, reference, need);
+        render_sample_fine(r, row, j, reference, need);
     uint32_t n2 = (uint32_t)(n * n);
     for (int32_t x = 0; x < w; x++) {
         if (need && !need[x])
             continue;
+        uint16_t u = r->uni[x];
+        if (u != RENDER_UNI_MIXED) {
+            rgb8_t c = u == RENDER_VIS_NONE ? r->world->background_rgb : r->obj[u].rgb;
+            render_sample_put(rgb, x, c.r, c.g, c.b);
+            continue;
+        }
         const color_sum_t *a = &r->acc[3 * x];
         render_sample_put(rgb, x, color_sum_out(a[0], n2), color_sum_out(a[1], n2), color_sum_out(a[2], n2));
     }

@@ -653,6 +653,18 @@ void render_setup_object(render_t *r, uint16_t i)
 }
 
 /* Register an object of the world in scene-array order. */
+#if FXRT_MAX_SAMPLES > 1
+/* sum = n samples of colour c (the sampling pass adds it for a run of n
+ * fine columns with one flat owner). */
+static void render_sum_n(color_sum_t sum[3], color_t c, int32_t n)
+{
+    sum[0] = sum[1] = sum[2] = 0;
+    color_sum_add(&sum[0], c.r, (uint32_t)n);
+    color_sum_add(&sum[1], c.g, (uint32_t)n);
+    color_sum_add(&sum[2], c.b, (uint32_t)n);
+}
+#endif
+
 static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom_common_t *c)
 {
     uint16_t i = r->count++;
@@ -665,6 +677,14 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
     o->px = render_565(c->rgb);
 #endif
     o->ranged = false;
+#if FXRT_MAX_SAMPLES > 1
+#if FXRT_MAX_LIGHTS > 0
+    o->flat = c->mat.kind == MATERIAL_FLAT;
+#else
+    o->flat = true;
+#endif
+    render_sum_n(o->sum, c->color, r->samples);
+#endif
     switch (kind) {
     case GEOM_PLANE:
 #if FXRT_MAX_PLANES > 0
@@ -712,6 +732,7 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
             return false;
         }
         cam = &r->fine;
+        render_sum_n(r->bg_sum, w->background, r->samples);
 #if FXRT_ADAPTIVE
         r->arow[0] = r->arow[1] = r->arow[2] = -1;
 #endif

@@ -42,17 +42,33 @@ static void trace_consider(trace_hit_t *best, bool *found, num_t t, geom_kind_t 
     best->exit = exit;
 }
 
-/* Does the ray meet the box around the bounded objects (at some t > 0, or
- * start inside it)? */
+/* Does the ray meet the box around the bounded objects at some t >= 0 (or
+ * start inside it)? The slab test; its rounding (a quotient within 1 LSB)
+ * is far inside the padding. */
 static bool trace_in_bounds(const world_t *w, const ray_t *ray)
 {
     if (!w->bounded)
         return false;
-    vec3_t pad = vec3_make(TRACE_BOUNDS_PAD, TRACE_BOUNDS_PAD, TRACE_BOUNDS_PAD);
-    geom_box_t b;
-    b.min = vec3_sub(w->bmin, pad);
-    b.max = vec3_add(w->bmax, pad);
-    return geom_box_occludes(&b, ray, NUM_MAX);
+    num_t tnear = num_neg(NUM_MAX), tfar = NUM_MAX;
+    for (int i = 0; i < 3; i++) {
+        num_t o = geom_axis(ray->o, i), d = geom_axis(ray->d, i);
+        num_t lo = num_sub(geom_axis(w->bmin, i), TRACE_BOUNDS_PAD);
+        num_t hi = num_add(geom_axis(w->bmax, i), TRACE_BOUNDS_PAD);
+        if (d == NUM_ZERO) {
+            if (o < lo || o > hi)
+                return false;
+            continue;
+        }
+        num_t t1 = num_div(num_sub(lo, o), d), t2 = num_div(num_sub(hi, o), d);
+        if (t1 > t2) {
+            num_t tmp = t1;
+            t1 = t2;
+            t2 = tmp;
+        }
+        tnear = num_max(tnear, t1);
+        tfar = num_min(tfar, t2);
+    }
+    return tnear <= tfar && tfar >= NUM_ZERO;
 }
 
 /* Nearest object along a secondary ray, with the self-intersection rule of
