@@ -71,11 +71,11 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
             continue;
         const uint16_t *v = &r->vis[X0];
         color_sum_t *a = &r->acc[3 * x];
-        uint16_t u = r->uni[x];
+        uint16_t u = j == 0 ? v[0] : r->uni[x]; /* row 0 starts the pixel afresh */
         if (u != RENDER_UNI_MIXED) {
             bool same = true;
             if (j == 0) {
-                u = r->uni[x] = v[0];
+                r->uni[x] = u;
                 same = render_sample_flat(r, u); /* uni holds flat owners only */
             }
             for (int32_t i = 0; i < n && same; i++)
