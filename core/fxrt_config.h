@@ -139,7 +139,8 @@
 
 /* Ablation switches, for measuring what each optimisation of the fast
  * renderer saves (make bench-ablation); none changes a Q16.16 pixel:
- *   FXRT_NO_BOUNDS  1 = step every object over the whole screen
+ *   FXRT_NO_BOUNDS  1 = step every object over the whole screen, and test
+ *                   every bounded object against every secondary ray
  *   FXRT_NO_STEP    1 = evaluate every form from scratch at each pixel
  *   FXRT_NO_LONE    1 = always go through the owner bookkeeping
  *   FXRT_NO_SPANS   1 = step a lone flat piece pixel by pixel instead of

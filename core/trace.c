@@ -24,11 +24,6 @@ typedef struct {
     bool exit; /* the exit of the solid the ray starts in */
 } trace_hit_t;
 
-/* Padding of the bounds box: a kernel's rounding may report a hit a little
- * outside an object (about t * 2^-16 in Q16.16); 1/16 scene unit covers
- * t up to 4096 with room to spare. The box only decides what to test. */
-#define TRACE_BOUNDS_PAD NUM(0.0625)
-
 static void trace_consider(trace_hit_t *best, bool *found, num_t t, geom_kind_t kind, uint16_t index, uint16_t id,
                            bool exit)
 {
@@ -42,33 +37,25 @@ static void trace_consider(trace_hit_t *best, bool *found, num_t t, geom_kind_t 
     best->exit = exit;
 }
 
-/* Does the ray meet the box around the bounded objects at some t >= 0 (or
- * start inside it)? The slab test; its rounding (a quotient within 1 LSB)
- * is far inside the padding. */
+/* Could the ray meet a bounded object? It must meet the sphere around
+ * their box (world_t.bc, br2) at some t >= 0 or start inside it: with
+ * oc = c - o and b = oc . d, a miss is b < 0 with o outside, or a closest
+ * approach |oc|^2 - b^2 beyond the radius. No division; the products are
+ * exact in Q16.16's wide type, and the padding covers the rounding of b. */
 static bool trace_in_bounds(const world_t *w, const ray_t *ray)
 {
     if (!w->bounded)
         return false;
-    num_t tnear = num_neg(NUM_MAX), tfar = NUM_MAX;
-    for (int i = 0; i < 3; i++) {
-        num_t o = geom_axis(ray->o, i), d = geom_axis(ray->d, i);
-        num_t lo = num_sub(geom_axis(w->bmin, i), TRACE_BOUNDS_PAD);
-        num_t hi = num_add(geom_axis(w->bmax, i), TRACE_BOUNDS_PAD);
-        if (d == NUM_ZERO) {
-            if (o < lo || o > hi)
-                return false;
-            continue;
-        }
-        num_t t1 = num_div(num_sub(lo, o), d), t2 = num_div(num_sub(hi, o), d);
-        if (t1 > t2) {
-            num_t tmp = t1;
-            t1 = t2;
-            t2 = tmp;
-        }
-        tnear = num_max(tnear, t1);
-        tfar = num_min(tfar, t2);
-    }
-    return tnear <= tfar && tfar >= NUM_ZERO;
+    if (FXRT_NO_BOUNDS)
+        return true; /* every bounded object tested (the frames are the same) */
+    vec3_t oc = vec3_sub(w->bc, ray->o);
+    numw_t oc2 = vec3_dotw(oc, oc);
+    if (oc2 <= w->br2)
+        return true; /* starts inside */
+    num_t b = vec3_dot(oc, ray->d);
+    if (b < NUM_ZERO)
+        return false; /* outside and moving away */
+    return numw_sub(oc2, numw_mul(b, b)) <= w->br2;
 }
 
 /* Nearest object along a secondary ray, with the self-intersection rule of

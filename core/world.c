@@ -41,10 +41,22 @@ __attribute__((unused)) static void world_grow(world_t *w, vec3_t lo, vec3_t hi)
         w->bmin = lo;
         w->bmax = hi;
         w->bounded = true;
-        return;
+    } else {
+        w->bmin = vec3_make(num_min(w->bmin.x, lo.x), num_min(w->bmin.y, lo.y), num_min(w->bmin.z, lo.z));
+        w->bmax = vec3_make(num_max(w->bmax.x, hi.x), num_max(w->bmax.y, hi.y), num_max(w->bmax.z, hi.z));
     }
-    w->bmin = vec3_make(num_min(w->bmin.x, lo.x), num_min(w->bmin.y, lo.y), num_min(w->bmin.z, lo.z));
-    w->bmax = vec3_make(num_max(w->bmax.x, hi.x), num_max(w->bmax.y, hi.y), num_max(w->bmax.z, hi.z));
+    /* The sphere through the box's corners, radius padded by one scene
+     * unit: a kernel's hit may lie a little outside its object, and the
+     * test's b = oc . d carries d's rounding times |oc| (at most 0.75 for
+     * coordinates within +-8192 in Q16.16; trace.c). Half extents first:
+     * the full extent may not fit Q16.16. */
+    vec3_t h = vec3_make(num_half(num_sub(num_half(w->bmax.x), num_half(w->bmin.x))),
+                         num_half(num_sub(num_half(w->bmax.y), num_half(w->bmin.y))),
+                         num_half(num_sub(num_half(w->bmax.z), num_half(w->bmin.z))));
+    w->bc = vec3_add(vec3_make(num_half(w->bmin.x), num_half(w->bmin.y), num_half(w->bmin.z)),
+                     vec3_make(num_half(w->bmax.x), num_half(w->bmax.y), num_half(w->bmax.z)));
+    num_t r = num_add(num_mul_int(numw_sqrt(vec3_dotw(h, h)), 2), NUM_ONE);
+    w->br2 = numw_mul(r, r);
 #else
     (void)w, (void)lo, (void)hi;
 #endif

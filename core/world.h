@@ -42,6 +42,8 @@ typedef struct {
     uint16_t n_bounce;
     bool bounded;  /* some bounded object exists: bmin, bmax are valid */
     vec3_t bmin, bmax;
+    vec3_t bc;     /* the sphere around that box: centre and squared */
+    numw_t br2;    /* radius, padded (core/trace.c) */
 #endif
 #if FXRT_MAX_SAMPLES > 1
     /* Supersampling (core/render_sample.c): N x N rays per pixel, 1 by
