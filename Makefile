@@ -113,6 +113,7 @@ TEST_PREREQ  :=
 -include tests/scene_trace.mk
 -include tests/skip.mk
 -include tests/lit.mk
+-include tests/trace.mk
 -include tests/qemu_lit.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
