@@ -16,3 +16,11 @@ norecurse: deps
 
 .PHONY: trace norecurse
 SUITES_EXTRA += tests/trace.sh tests/norecurse.sh
+
+# tests/test_trace.c: the bounce model against a double oracle, one binary
+# per number type (the Makefile's num_test_rules), also sanitized.
+TRACE_TEST_BIN := $(foreach n,$(NUMBERS),$(BUILD)/tests/test_trace_$(n))
+$(foreach n,$(NUMBERS),$(eval $(call num_test_rules,test_trace,$(n))))
+SUITES_EXTRA  += $(TRACE_TEST_BIN)
+TEST_PREREQ   += $(TRACE_TEST_BIN)
+SAN_EXTRA_BIN += $(foreach n,$(NUMBERS),$(SAN_DIR)/tests/test_trace_$(n))
