@@ -50,12 +50,17 @@ check "lit build without shadows links" build noshadow -DFXRT_MAX_LIGHTS=1 -DFXR
 check "lit build with shadows links" build shadow -DFXRT_MAX_LIGHTS=1 -DFXRT_SHADOWS=1 -DFXRT_PHONG=0 -DSKIP_LIT=1
 # issue 12 (render state for samples 2 needs 2 x 32 columns)
 LIT12=(-DFXRT_MAX_LIGHTS=1 -DFXRT_SHADOWS=1 -DFXRT_PHONG=1 -DSKIP_LIT=1 -UFXRT_RENDER_MAX_WIDTH -DFXRT_RENDER_MAX_WIDTH=64)
-check "lit build without bounce or samples links" build nobounce "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=1
-check "bounce build links" build bounce "${LIT12[@]}" -DFXRT_MAX_DEPTH=2 -DFXRT_MAX_SAMPLES=1 -DSKIP_BOUNCE=1
-check "samples 2 build links" build samples2 "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 -DFXRT_ADAPTIVE=0 \
-    -DSKIP_SAMPLES=2
-check "samples 2 adaptive build links" build adaptive "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 \
-    -DFXRT_ADAPTIVE=1 -DSKIP_SAMPLES=2 -DSKIP_ADAPTIVE=1
+# two builds at a time (two cores); each records its status
+build_rc() { build "$@"; echo $? >"$out/$1.rc"; }
+build_rc nobounce "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=1 &
+build_rc bounce "${LIT12[@]}" -DFXRT_MAX_DEPTH=2 -DFXRT_MAX_SAMPLES=1 -DSKIP_BOUNCE=1
+wait
+build_rc samples2 "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 -DFXRT_ADAPTIVE=0 -DSKIP_SAMPLES=2 &
+build_rc adaptive "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 -DFXRT_ADAPTIVE=1 -DSKIP_SAMPLES=2 -DSKIP_ADAPTIVE=1
+wait
+for b in nobounce bounce samples2 adaptive; do
+    check "$b build links ($(head -c 200 "$out/$b.log"))" test "$(cat "$out/$b.rc")" = 0
+done
 BOUNCE='^(trace_bounces|geom_sphere_exit|geom_box_exit)$'
 SAMPLE='^(render_sample_row|cam_fine)$'
 found=$(syms nobounce | grep -E "$BOUNCE" || true)
