@@ -113,6 +113,7 @@ TEST_PREREQ  :=
 -include tests/scene_trace.mk
 -include tests/skip.mk
 -include tests/lit.mk
+-include tests/trace.mk
 -include tests/qemu_lit.mk
 -include tests/growth.mk
 

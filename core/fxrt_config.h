@@ -279,6 +279,16 @@
 #if FXRT_MAX_DEPTH > 0 && FXRT_MAX_LIGHTS == 0
 #error "FXRT_MAX_DEPTH > 0 needs FXRT_MAX_LIGHTS > 0 (reflective and transparent materials)"
 #endif
+/* FXRT_NO_CUTOFF 1 traces every secondary ray up to the depth, however
+ * small its weight (a measurement switch for the cut-off's effect: make
+ * cutoff, tests/cutoff.sh); 0 (default) is the model of issue 12: a ray
+ * whose weight is below 1/512 in every channel is not traced. */
+#ifndef FXRT_NO_CUTOFF
+#define FXRT_NO_CUTOFF 0
+#endif
+#if FXRT_NO_CUTOFF != 0 && FXRT_NO_CUTOFF != 1
+#error "FXRT_NO_CUTOFF must be 0 or 1"
+#endif
 /* Largest N of 'samples N' (N x N rays per pixel, 1..16). 1 compiles
  * supersampling out. The visibility pass then works on a camera N times
  * as wide, so N * width must stay within FXRT_RENDER_MAX_WIDTH. */

@@ -70,17 +70,19 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
     return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
 }
 
-static color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
-                         vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask);
+static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
+                            vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask);
 
 /* shade_sum without per-frame constants (the ray caster, arbitrary rays):
- * they are computed here, off the renderer's stack path. */
+ * they are computed here, off the renderer's stack path. It calls
+ * shade_lights, not shade_sum: no cycle in the call graph
+ * (tests/norecurse.sh). */
 static __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
                                                       uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d, uint8_t *mask)
 {
     shade_k_t own;
     shade_consts(w, obj, &own);
-    return shade_sum(w, obj, kind, index, p, n_geo, d, &own, mask);
+    return shade_lights(w, obj, kind, index, p, n_geo, d, &own, mask);
 }
 
 /* The light sum for object obj (= world_common(w, kind, index)), looked
@@ -98,6 +100,17 @@ static color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t
         return clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : obj->color;
     if (lit && !clear && !k)
         return shade_sum_own(w, obj, kind, index, p, n_geo, d, mask); /* computes k on its own frame */
+    return shade_lights(w, obj, kind, index, p, n_geo, d, k, mask);
+}
+
+/* The light loop of shade_sum (k not NULL when the material is lit and
+ * not transparent). */
+static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
+                            vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask)
+{
+    const material_t *m = &obj->mat;
+    bool lit = m->kind != MATERIAL_FLAT;
+    bool clear = m->kind == MATERIAL_TRANSPARENT;
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw(n_geo, d) > 0;
     vec3_t n = inside ? vec3_neg(n_geo) : n_geo;

@@ -138,8 +138,13 @@ static void trace_surface(const world_t *w, const trace_hit_t *h, const ray_t *r
 /* Is a weight below the cut-off, 1/512, in every channel? */
 static bool trace_cut(color_t wt)
 {
+#if FXRT_NO_CUTOFF
+    (void)wt;
+    return false; /* measurement build: no cut-off (fxrt_config.h) */
+#else
     num_t c = NUM(1.0 / 512);
     return wt.r < c && wt.g < c && wt.b < c;
+#endif
 }
 
 /* One node of the tree: a hit and the ray that reached it. */

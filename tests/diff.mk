@@ -7,7 +7,7 @@
 #   make stress         10^8 cases per kind on every core, with progress
 #   make fuzz-kernels   libFuzzer for FUZZ_SECONDS, artifacts in build/fuzz/
 
-DIFF_NUMBERS := q16 double
+DIFF_NUMBERS := q16 float double
 DIFF_BIN     := $(BUILD)/tests/test_diff
 DIFF_OBJ     := $(BUILD)/tests/test_diff.o $(DIFF_NUMBERS:%=$(BUILD)/tests/diffk-%.o) $(BUILD)/host/fx.o \
                 $(foreach n,$(DIFF_NUMBERS),$(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))

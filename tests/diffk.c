@@ -1,8 +1,9 @@
 /* diffk: see diffk.h. Compiled once per number type (FXRT_MULTI). */
 #ifndef FXRT_MULTI
-#error "tests/diffk.c is built with -DFXRT_MULTI -DFXRT_NUMBER=1 or 3"
+#error "tests/diffk.c is built with -DFXRT_MULTI -DFXRT_NUMBER=1, 2 or 3"
 #endif
 #include <math.h>
+#include <string.h>
 
 #include "../core/cam.h"
 #include "../core/geom.h"
@@ -292,4 +293,62 @@ double DIFFK_SYM(diffk_pow)(long long x_q32, unsigned k)
 #else
     return diffk_dbl(numw_pow_int((numw_t)x_q32 / (numw_t)4294967296.0, k));
 #endif
+}
+
+/* ---- secondary rays (issue 12) ----------------------------------------------
+ * trace.c's helpers are static: its source is compiled into this file, with
+ * its one external function renamed (diffk_trace_copy_<number>) so that it
+ * does not clash with the core's trace_bounces. The static trace_children
+ * then makes the same children as in the renderer. */
+#include "../core/trace.h"
+#undef trace_bounces
+#define trace_bounces FXRT_SYM(diffk_trace_copy)
+color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
+                      color_t local);
+#include "../core/trace.c"
+
+void DIFFK_SYM(diffk_bounce)(const double d[3], const double n[3], double eta, double refl[3], int *tir,
+                             double trans[3], int *has_t, double *R)
+{
+    geom_common_t obj;
+    memset(&obj, 0, sizeof obj);
+    obj.color = color_make(COLOR_MAX, COLOR_MAX, COLOR_MAX);
+    trace_node_t nd;
+    memset(&nd, 0, sizeof nd);
+    nd.obj = &obj;
+    nd.p = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    nd.n_geo = diffk_vec(n);
+    nd.d = diffk_vec(d);
+    nd.w = color_make(NUM_ONE, NUM_ONE, NUM_ONE);
+    trace_ray_t out[2];
+    obj.mat.kind = MATERIAL_REFLECTIVE;
+    obj.mat.reflection = color_make(NUM_ONE, NUM_ONE, NUM_ONE);
+    int k = trace_children(&nd, out);
+    refl[0] = refl[1] = refl[2] = 0;
+    if (k == 1)
+        diffk_out(out[0].ray.d, refl);
+    obj.mat.kind = MATERIAL_TRANSPARENT;
+    obj.mat.index = diffk_num(eta);
+    bool inside = vec3_dotw(nd.d, nd.n_geo) > 0;
+    k = trace_children(&nd, out);
+    *tir = 0;
+    *has_t = 0;
+    *R = 0;
+    trans[0] = trans[1] = trans[2] = 0;
+    /* total internal reflection: one child, the reflected ray with the full weight */
+    if (k == 1 && out[0].inward == inside && out[0].w.r == NUM_ONE) {
+        *tir = 1;
+        *R = 1;
+        return;
+    }
+    for (int i = 0; i < k; i++) {
+        if (out[i].inward == inside) { /* reflected: weight R */
+            *R = diffk_dbl(out[i].w.r);
+        } else {
+            *has_t = 1;
+            diffk_out(out[i].ray.d, trans);
+            if (k == 1)
+                *R = 1 - diffk_dbl(out[i].w.r);
+        }
+    }
 }

@@ -110,9 +110,17 @@ typedef struct {
      * directional light), skipping no object: 1 blocked, 0 not, -1 an object was refused. */   \
     int diffk_occluded_##S(int n, const diffk_obj_t *objs, const diffk_ray_t *ray, double tmax); \
     /* numw_pow_int(x, k) with x given as Q32.32 (x_q32 / 2^32). */                              \
-    double diffk_pow_##S(long long x_q32, unsigned k);
+    double diffk_pow_##S(long long x_q32, unsigned k);                                            \
+    /* The children core/trace.c makes at a hit with incoming direction d and geometric normal  \
+     * n (weight 1): for a reflective material (reflection 1) the reflected direction; for a   \
+     * clear transparent one of index eta: *tir, and unless total internal reflection, the     \
+     * transmitted direction (*has_t: not cut off) and Schlick's R (from the reflected ray's    \
+     * weight, or 1 - the transmitted one's when the reflected ray is cut off). */             \
+    void diffk_bounce_##S(const double d[3], const double n[3], double eta, double refl[3],     \
+                          int *tir, double trans[3], int *has_t, double *R);
 
 DIFFK_DECLARE(q16)
+DIFFK_DECLARE(float)
 DIFFK_DECLARE(double)
 
 #endif

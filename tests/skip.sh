@@ -5,6 +5,18 @@
 #   lit, no shadows   FXRT_SHADOWS 0: shading, but no shadow-ray code
 #   lit, shadows      both (the control: the symbols exist and are found)
 # and none of them links a libm function (pow, acos, cos, sqrt, ...).
+# Issue 12, with the configuration the scene compiler emits for each case:
+#   lit, no bounce    FXRT_MAX_DEPTH 0 (no reflective or transparent
+#                     material), samples 1: no bounce code (trace_bounces,
+#                     geom_sphere_exit, geom_box_exit), no supersampling
+#                     (render_sample_row, cam_fine)
+#   bounce            a reflective sphere and a transparent box, depth 2:
+#                     the bounce code is there (the control)
+#   samples 2         FXRT_MAX_SAMPLES 2, FXRT_ADAPTIVE 0: render_sample_row
+#                     is there, the adaptive one-sample key pass is not
+#                     (its ray caster world_hit: the fast renderer never
+#                     casts a primary ray)
+#   samples 2 adaptive  world_hit is there (the control)
 # Then the counters of tests/test_skip.c (built with FXRT_STATS 1) run.
 set -u
 . "$(dirname "$0")/lib.sh"
@@ -36,6 +48,38 @@ fi
 check "flat build links" build flat -DFXRT_MAX_LIGHTS=0 -DSKIP_LIT=0
 check "lit build without shadows links" build noshadow -DFXRT_MAX_LIGHTS=1 -DFXRT_SHADOWS=0 -DFXRT_PHONG=0 -DSKIP_LIT=1
 check "lit build with shadows links" build shadow -DFXRT_MAX_LIGHTS=1 -DFXRT_SHADOWS=1 -DFXRT_PHONG=0 -DSKIP_LIT=1
+# issue 12 (render state for samples 2 needs 2 x 32 columns)
+LIT12=(-DFXRT_MAX_LIGHTS=1 -DFXRT_SHADOWS=1 -DFXRT_PHONG=1 -DSKIP_LIT=1 -UFXRT_RENDER_MAX_WIDTH -DFXRT_RENDER_MAX_WIDTH=64)
+# two builds at a time (two cores); each records its status
+build_rc() { build "$@"; echo $? >"$out/$1.rc"; }
+build_rc nobounce "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=1 &
+build_rc bounce "${LIT12[@]}" -DFXRT_MAX_DEPTH=2 -DFXRT_MAX_SAMPLES=1 -DSKIP_BOUNCE=1
+wait
+build_rc samples2 "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 -DFXRT_ADAPTIVE=0 -DSKIP_SAMPLES=2 &
+build_rc adaptive "${LIT12[@]}" -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 -DFXRT_ADAPTIVE=1 -DSKIP_SAMPLES=2 -DSKIP_ADAPTIVE=1
+wait
+for b in nobounce bounce samples2 adaptive; do
+    check "$b build links ($(head -c 200 "$out/$b.log"))" test "$(cat "$out/$b.rc")" = 0
+done
+BOUNCE='^(trace_bounces|geom_sphere_exit|geom_box_exit)$'
+SAMPLE='^(render_sample_row|cam_fine)$'
+found=$(syms nobounce | grep -E "$BOUNCE" || true)
+check "no reflective or transparent material links no bounce code (found: $found)" test -z "$found"
+found=$(syms bounce | grep -cE "$BOUNCE")
+check "the bounce build links trace_bounces, geom_sphere_exit and geom_box_exit (control; $found of 3)" test "$found" -eq 3
+found=$(syms nobounce | grep -E "$SAMPLE" || true)
+check "samples 1 links no supersampling code (found: $found)" test -z "$found"
+found=$(syms bounce | grep -E "$SAMPLE" || true)
+check "samples 1 with bounces links no supersampling code (found: $found)" test -z "$found"
+found=$(syms samples2 | grep -cE "$SAMPLE")
+check "samples 2 links render_sample_row and cam_fine (control; $found of 2)" test "$found" -eq 2
+found=$(syms samples2 | grep -E '^world_hit$' || true)
+check "samples 2 without adaptive links no one-sample key pass (found: $found)" test -z "$found"
+check "samples 2 adaptive links the key pass's world_hit (control)" bash -c "arm-none-eabi-nm '$out/adaptive.elf' | grep -qw world_hit"
+for b in nobounce bounce samples2 adaptive; do
+    m=$(arm-none-eabi-nm "$out/$b.elf" | awk '{print $NF}' | grep -E "$LIBM" || true)
+    check "$b: no libm function linked (found: $m)" test -z "$m"
+done
 flat=$(syms flat | grep -E "$LIGHTING" || true)
 check "flat materials link no lighting code (found: $flat)" test -z "$flat"
 noshadow=$(syms noshadow | grep -E "$SHADOW" || true)
@@ -47,7 +91,7 @@ for b in flat noshadow shadow; do
     m=$(arm-none-eabi-nm "$out/$b.elf" | awk '{print $NF}' | grep -E "$LIBM" || true)
     check "$b: no libm function linked (found: $m)" test -z "$m"
 done
-for b in flat noshadow shadow; do
+for b in flat noshadow shadow nobounce bounce samples2 adaptive; do
     echo "$b: text $(arm-none-eabi-size "$out/$b.elf" | awk 'NR == 2 {print $1}') bytes"
 done
 for n in q16 double; do

@@ -1,11 +1,24 @@
 /* A small application for tests/skip.sh: a world with one object of each
- * kind, lit (SKIP_LIT 1) or flat, rendered row by row. Linked for the
+ * kind, lit (SKIP_LIT 1) or flat, rendered row by row. SKIP_BOUNCE 1 makes
+ * the sphere reflective and the box transparent (issue 12; needs
+ * FXRT_MAX_DEPTH > 0); SKIP_SAMPLES N > 1 asks for N x N samples
+ * (FXRT_MAX_SAMPLES >= N), adaptive with SKIP_ADAPTIVE 1. Linked for the
  * Cortex-M0 with --gc-sections, its symbol table shows which parts of the
  * core a configuration pulls in. */
 #include "fxrt.h"
 
 #define P(x, y, z) vec3_make(F16(x), F16(y), F16(z))
 #define COL(r, g, b) color_make(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
+#define FR(r, g, b) color_make(F16(r), F16(g), F16(b)) /* fractions */
+#ifndef SKIP_BOUNCE
+#define SKIP_BOUNCE 0
+#endif
+#ifndef SKIP_SAMPLES
+#define SKIP_SAMPLES 1
+#endif
+#ifndef SKIP_ADAPTIVE
+#define SKIP_ADAPTIVE 0
+#endif
 
 static world_t world;
 static render_t rs;
@@ -28,8 +41,18 @@ int main(void)
         world_set_material(&world, ids[i], &m);
     world_set_ambient(&world, COL(0.1, 0.1, 0.1));
     world_add_light(&world, LIGHT_POINT, P(2, 3, 2), P(0, 0, 0), 0, color_make(FX_ONE, FX_ONE, FX_ONE), true);
+#if SKIP_BOUNCE
+    material_t mr = {.kind = MATERIAL_REFLECTIVE, .exponent = 8, .specular = FR(1, 1, 1), .reflection = FR(0.5, 0.5, 0.5)};
+    world_set_material(&world, ids[1], &mr);
+    material_t mt = {.kind = MATERIAL_TRANSPARENT, .index = F16(1.5), .specular = FR(0, 0, 0), .reflection = FR(0, 0, 0)};
+    world_set_material(&world, ids[2], &mt);
+    world_set_depth(&world, 2);
+#endif
 #else
     (void)ids;
+#endif
+#if SKIP_SAMPLES > 1
+    world_set_samples(&world, SKIP_SAMPLES, SKIP_ADAPTIVE);
 #endif
     fxrt_render_setup(&rs, &world, &cam);
     for (int y = 0; y < 24; y++) {

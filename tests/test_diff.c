@@ -21,7 +21,11 @@
  * (normal), shade_point colours and light masks (shade, also against the
  * formula written out here in long double), numw_pow_int (pow), the spot
  * cone's decision (spot) and world_occluded (shadow), each within its
- * stated bound or band.
+ * stated bound or band. Secondary rays (issue 12): the reflected and
+ * transmitted directions and Schlick's R that core/trace.c makes
+ * (reflect, refract, schlick), Q16.16 and float against double, over
+ * indices 0.01..100 and every incidence, within the bounds stated at
+ * eval_bounce; total internal reflection may differ only in its band.
  *
  * Usage: test_diff [CASES] [--seed N] [--jobs N] [--progress] [--only KIND]
  *        test_diff --replay KIND:INDEX [--seed N]
@@ -295,9 +299,14 @@ static void rq_coord3(double v[3])
 
 /* The lighting kinds (issue 11) come after the others, so that the cases
  * of the first five stay what they were for a given seed. */
-enum { K_PLANE, K_SPHERE, K_TRIANGLE, K_BOX, K_CAMERA, K_NORMAL, K_SHADE, K_POW, K_SPOT, K_SHADOW, K_COUNT };
-static const char *const kind_name[K_COUNT] = {"plane",  "sphere", "triangle", "box",  "camera",
-                                               "normal", "shade",  "pow",      "spot", "shadow"};
+/* The secondary-ray kinds (issue 12) come last for the same reason. */
+enum {
+    K_PLANE, K_SPHERE, K_TRIANGLE, K_BOX, K_CAMERA, K_NORMAL, K_SHADE, K_POW, K_SPOT, K_SHADOW,
+    K_REFLECT, K_REFRACT, K_SCHLICK, K_COUNT
+};
+static const char *const kind_name[K_COUNT] = {"plane",  "sphere", "triangle", "box",     "camera",
+                                               "normal", "shade",  "pow",      "spot",    "shadow",
+                                               "reflect", "refract", "schlick"};
 
 #define SHADOW_OBJS 3
 
@@ -970,6 +979,36 @@ static void gen_pow(rng_t *r, dcase_t *c)
     c->k = irand(r, 4) == 0 ? (unsigned)rand_exponent(r) : 1u + (unsigned)irand(r, 1024);
 }
 
+/* Secondary rays (issue 12): a unit normal n (p[0]), a unit direction d
+ * (ray.d), both rounded to Q16.16, and an index eta (radius) log-uniform
+ * over the whole range 0.01..100, rounded. Modes: 0 entering at any
+ * incidence (often grazing), 1 leaving, 2 near the critical angle (where
+ * total internal reflection starts), 3 eta near 1, 4 normal incidence. */
+static void gen_bounce(rng_t *r, dcase_t *c)
+{
+    double *n = c->p[0], *d = c->ray.d;
+    c->mode = irand(r, 5);
+    double eta = c->mode == 3 ? 1 + rsign(r) * logu(r, 1e-5, 0.1) : logu(r, 0.01, 100);
+    bool leaving = c->mode == 1 || (c->mode >= 2 && irand(r, 2));
+    double q = leaving ? eta : 1 / eta, cs;
+    if (c->mode == 2 && q > 1)
+        cs = fmin(1.0, sqrt(1 - 1 / (q * q)) * (1 + rsign(r) * logu(r, 1e-7, 1e-2)));
+    else if (c->mode == 4)
+        cs = 1;
+    else
+        cs = rand_cos(r);
+    rand_unit(r, n);
+    if (c->mode == 4 && irand(r, 2))
+        set3(n, 0, 0, rsign(r)); /* exact */
+    dir_with_cos(r, n, cs, d);
+    if (leaving)
+        scale3(n, -1); /* d . n > 0: the ray comes from the inside */
+    rq3(n);
+    ray_dir_round(d);
+    c->radius = fmax(rq(eta), 0.01);
+    c->radius = fmin(rq(c->radius), 100);
+}
+
 static void gen_case_rng(int kind, rng_t *r, dcase_t *c)
 {
     memset(c, 0, sizeof *c);
@@ -984,6 +1023,9 @@ static void gen_case_rng(int kind, rng_t *r, dcase_t *c)
     case K_POW: gen_pow(r, c); break;
     case K_SPOT: gen_spot(r, c); break;
     case K_SHADOW: gen_shadow(r, c); break;
+    case K_REFLECT:
+    case K_REFRACT:
+    case K_SCHLICK: gen_bounce(r, c); break;
     default: gen_camera(r, c); break;
     }
 }
@@ -1907,6 +1949,216 @@ static void eval_shadow(const dcase_t *c, dres_t *res)
     agree(res);
 }
 
+/* ---- secondary rays (issue 12): reflected and transmitted directions and
+ * Schlick's R from core/trace.c's trace_children (tests/diffk.c), Q16.16
+ * and float against double from the same rounded d, n and eta.
+ *
+ * Error analysis, in LSB (2^-16), one rounding per operation: rd(v) is
+ * 0.5 in Q16.16 and |v| 2^-24 / 2^-16 in float (|v| the operation's
+ * result); the double build's own rounding (2^-53) is below both. With
+ * ci = |d . n|, q = 1/eta entering (fx_div, correctly rounded) and eta
+ * leaving (exact), s2 = 1 - ci^2:
+ *   ci      dci = rd(1) (the exact wide dot product rounded once; float:
+ *           three products and two sums, 3 rd(1))
+ *   reflected r_i = d_i - 2 (d.n) n_i: rd(r_i) + 2 |n_i| dci
+ *   cos2_t = 1 - q^2 s2: E2 = rd(q^2 s2) + s2 (rd(q^2) + 2 q dq) + q^2
+ *           (rd(s2) + 2 ci dci); total internal reflection (cos2_t < 0)
+ *           may differ when |cos2_t| <= MARGIN E2 (the band)
+ *   cos_t = sqrt(cos2_t): Ect = rd(ct) + the larger change of sqrt over
+ *           cos2_t -+ MARGIN E2 (about E2 / (2 ct) away from the critical
+ *           angle, up to sqrt(MARGIN E2) near it)
+ *   transmitted t_i = q d_i + (q ci - ct) n_i: rd(q d_i) + |d_i| dq +
+ *           rd(k n_i) + |n_i| (rd(q ci) + ci dq + q dci + Ect)
+ *   Schlick R = r0 + (1 - r0) x^5, r0 = ((1 - eta)/(1 + eta))^2, x =
+ *           1 - ci entering, 1 - ct leaving: the rounding of each step
+ *           propagated to first order (bounce_bounds).
+ * The stated bound is MARGIN times that. The double build is also checked
+ * against the issue's formulas written here (1e-9). */
+typedef struct {
+    double refl[3], trans[3], R;
+    int tir, has_t;
+} bres_t;
+
+static double rd_of(bool flt, double v)
+{
+    return flt ? fabs(v) * 0x1p-24 * 65536.0 : 0.5;
+}
+/* A sum or difference: exact in Q16.16, rounded in float. */
+static double rs_of(bool flt, double v)
+{
+    return flt ? rd_of(flt, v) : 0;
+}
+
+typedef struct {
+    double er[3], et[3], eR, e2, cos2t;
+} bbound_t;
+
+static void bounce_bounds(const dcase_t *c, bool flt, bbound_t *b)
+{
+    const double *d = c->ray.d, *n = c->p[0];
+    double eta = c->radius, dn = dot3(d, n), ci = fabs(dn);
+    bool inside = dn > 0;
+    double q = inside ? eta : 1 / eta, dq = inside ? 0 : rd_of(flt, q);
+    double dci = flt ? 3 * rd_of(flt, 1) : 0.5;
+    for (int i = 0; i < 3; i++)
+        b->er[i] = rs_of(flt, d[i] + 2 * ci * n[i]) + rd_of(flt, 2 * ci * n[i]) + 2 * fabs(n[i]) * dci;
+    double s2 = 1 - ci * ci, ds2 = rd_of(flt, ci * ci) + 2 * ci * dci;
+    double dq2 = rd_of(flt, q * q) + 2 * q * dq;
+    ds2 += rs_of(flt, s2);
+    b->e2 = rd_of(flt, q * q * s2) + s2 * dq2 + q * q * ds2;
+    b->cos2t = 1 - q * q * s2;
+    double ct = sqrt(fmax(b->cos2t, 0));
+    /* the root's slope is unbounded at 0: the exact change of sqrt over
+     * cos2_t - MARGIN E2 .. cos2_t (concave: the larger side) */
+    double ect = rd_of(flt, ct) + fmax(ct - sqrt(fmax(0, b->cos2t - MARGIN * b->e2 * LSB)),
+                                       sqrt(fmax(0, b->cos2t) + MARGIN * b->e2 * LSB) - ct) / LSB;
+    double k = q * ci - ct, dk = rd_of(flt, q * ci) + ci * dq + q * dci + ect;
+    for (int i = 0; i < 3; i++)
+        b->et[i] = rd_of(flt, q * d[i]) + fabs(d[i]) * dq + rd_of(flt, k * n[i]) + fabs(n[i]) * dk +
+                   rs_of(flt, q * d[i] + k * n[i]);
+    double r = (1 - eta) / (1 + eta), r0 = r * r;
+    double dr0 = rd_of(flt, r0) + 2 * fabs(r) * (rd_of(flt, r) + (flt ? 2 * rd_of(flt, 1 + eta) / (1 + eta) : 0));
+    double x = 1 - (inside ? ct : ci), dx = (inside ? ect : dci) + rs_of(flt, x);
+    /* x^5 by three products: their roundings, and x's error carried
+     * through exactly (not to first order: near the critical angle dx is
+     * not small) */
+    double x2 = x * x, x4 = x2 * x2, x5 = x4 * x;
+    double dx5 = rd_of(flt, x5) + x * rd_of(flt, x4) + 2 * x * x2 * rd_of(flt, x2) +
+                 (pow(x + dx * LSB, 5) - x5) / LSB;
+    double t = (1 - r0) * x5, dt = rd_of(flt, t) + x5 * dr0 + (1 - r0) * dx5;
+    /* + 1 - (1 - R) when the reflected ray is cut off (diffk_bounce reads
+     * R from the transmitted weight then): exact in Q16.16 */
+    b->eR = dr0 + dt + rs_of(flt, r0 + t) + rs_of(flt, 1);
+}
+
+static void bounce_run(const dcase_t *c, int which, bres_t *o)
+{
+    void (*f)(const double *, const double *, double, double *, int *, double *, int *, double *) =
+        which == 0 ? diffk_bounce_q16 : which == 1 ? diffk_bounce_float : diffk_bounce_double;
+    f(c->ray.d, c->p[0], c->radius, o->refl, &o->tir, o->trans, &o->has_t, &o->R);
+}
+
+/* The issue's formulas in double, for the double build. */
+static void bounce_formula(const dcase_t *c, bres_t *o)
+{
+    const double *d = c->ray.d;
+    double n[3], eta = c->radius;
+    copy3(n, c->p[0]);
+    double dn = dot3(d, n);
+    bool inside = dn > 0;
+    if (inside) {
+        scale3(n, -1);
+        dn = -dn;
+    }
+    for (int i = 0; i < 3; i++)
+        o->refl[i] = d[i] - 2 * dn * n[i];
+    double q = inside ? eta : 1 / eta, ci = -dn, c2 = 1 - q * q * (1 - ci * ci);
+    o->tir = c2 < 0;
+    o->R = 1;
+    o->has_t = 0;
+    if (o->tir)
+        return;
+    double ct = sqrt(c2), r0 = pow((1 - eta) / (1 + eta), 2);
+    for (int i = 0; i < 3; i++)
+        o->trans[i] = q * d[i] + (q * ci - ct) * n[i];
+    o->R = r0 + (1 - r0) * pow(1 - (inside ? ct : ci), 5);
+    o->has_t = 1 - o->R >= 1.0 / 512;
+}
+
+static void eval_bounce(const dcase_t *c, dres_t *res)
+{
+    bres_t b[3], f;
+    for (int w = 0; w < 3; w++)
+        bounce_run(c, w, &b[w]);
+    bounce_formula(c, &f);
+    const bres_t *dd = &b[2];
+    double dn = fabs(dot3(c->ray.d, c->p[0]));
+    /* the double build against the formulas (away from the decisions) */
+    res->sq = res->sd = DIFFK_HIT;
+    res->band_ratio = INFINITY;
+    for (int w = 0; w < 2; w++) {
+        bbound_t bb;
+        bounce_bounds(c, w == 1, &bb);
+        const bres_t *x = &b[w];
+        double ratio_tir = ratio(bb.cos2t, MARGIN * bb.e2 * LSB) * MARGIN;
+        if (w == 0)
+            res->band_ratio = ratio_tir;
+        double err = 0, bound = 0, base = 0;
+        if (c->kind == K_REFLECT) {
+            for (int i = 0; i < 3; i++) {
+                double e = fabs(x->refl[i] - dd->refl[i]) / LSB;
+                err = fmax(err, e);
+                base = fmax(base, bb.er[i]);
+                if (!(e <= MARGIN * bb.er[i]))
+                    res->fail = w ? "float reflected direction beyond its bound" : "q16 reflected direction beyond its bound";
+            }
+            bound = MARGIN * base;
+        } else {
+            if (x->tir != dd->tir) {
+                if (w == 0)
+                    res->disagree = true;
+                /* R rounding to 1 at grazing incidence looks like TIR */
+                if (!(ratio_tir <= MARGIN) && !(dd->R > 1 - 1e-4 || x->R > 1 - 1e-4))
+                    res->fail = w ? "float total internal reflection differs outside the band"
+                                  : "q16 total internal reflection differs outside the band";
+                if (w == 0)
+                    res->band = true;
+                continue;
+            }
+            if (dd->tir)
+                continue;
+            if (c->kind == K_REFRACT) {
+                if (!x->has_t || !dd->has_t)
+                    continue; /* cut off (1 - R < 1/512) */
+                for (int i = 0; i < 3; i++) {
+                    double e = fabs(x->trans[i] - dd->trans[i]) / LSB;
+                    err = fmax(err, e);
+                    base = fmax(base, bb.et[i]);
+                    if (!(e <= MARGIN * bb.et[i] + 1e-9))
+                        res->fail = w ? "float transmitted direction beyond its bound"
+                                      : "q16 transmitted direction beyond its bound";
+                }
+                bound = MARGIN * base;
+            } else {
+                err = fabs(x->R - dd->R) / LSB;
+                base = bb.eR;
+                bound = MARGIN * base;
+                if (!(err <= bound))
+                    res->fail = w ? "float Schlick R beyond its bound" : "q16 Schlick R beyond its bound";
+            }
+        }
+        if (w == 0) {
+            res->compared = bound > 0;
+            res->err = err;
+            res->bound = bound;
+            res->base = base;
+            /* "well conditioned" (the tables' cond <= base): cos2_t >= 0.01,
+             * away from the critical angle */
+            res->cond = c->kind != K_REFLECT && fabs(bb.cos2t) < 0.01 ? 1e3 * base : 0;
+            res->tq = err;
+        } else {
+            res->err2 = err;
+            res->bound2 = bound;
+        }
+    }
+    (void)dn;
+    if (res->fail)
+        return;
+    /* the double build against the formulas written here */
+    double e = 0;
+    if (c->kind == K_REFLECT)
+        e = maxabs3(dd->refl, f.refl);
+    else if (dd->tir != f.tir)
+        e = res->band_ratio <= MARGIN || f.R > 1 - 1e-4 ? 0 : 1; /* R = 1 reads as TIR */
+    else if (!f.tir && c->kind == K_REFRACT && dd->has_t && f.has_t)
+        e = maxabs3(dd->trans, f.trans);
+    else if (!f.tir && c->kind == K_SCHLICK)
+        e = fabs(dd->R - f.R);
+    res->rel = e;
+    if (!(e <= 1e-9))
+        res->fail = "double build differs from the formula";
+}
+
 static void diff_eval(const dcase_t *c, dres_t *res)
 {
     memset(res, 0, sizeof *res);
@@ -1920,6 +2172,9 @@ static void diff_eval(const dcase_t *c, dres_t *res)
     case K_POW: eval_pow(c, res); break;
     case K_SPOT: eval_spot(c, res); break;
     case K_SHADOW: eval_shadow(c, res); break;
+    case K_REFLECT:
+    case K_REFRACT:
+    case K_SCHLICK: eval_bounce(c, res); break;
     default: eval_camera(c, res); break;
     }
 }
@@ -2018,6 +2273,24 @@ static bool result_print_light(FILE *f, const dcase_t *c, const dres_t *r)
 static void case_print(FILE *f, const dcase_t *c, const char *indent)
 {
     const char *k = kind_name[c->kind];
+    if (c->kind >= K_REFLECT) {
+        fprintf(f, "%s%s d %a %a %a n %a %a %a eta %a (%.6g), d.n %.17g\n", indent, k, c->ray.d[0], c->ray.d[1],
+                c->ray.d[2], c->p[0][0], c->p[0][1], c->p[0][2], c->radius, c->radius, dot3(c->ray.d, c->p[0]));
+        if (diff_verbose) {
+            static const char *const nm[3] = {"q16", "float", "double"};
+            for (int w = 0; w < 3; w++) {
+                bres_t b;
+                bounce_run(c, w, &b);
+                fprintf(f, "%s  %-6s refl %.9f %.9f %.9f tir %d trans(%d) %.9f %.9f %.9f R %.9f\n", indent, nm[w],
+                        b.refl[0], b.refl[1], b.refl[2], b.tir, b.has_t, b.trans[0], b.trans[1], b.trans[2], b.R);
+            }
+            bbound_t bb;
+            bounce_bounds(c, false, &bb);
+            fprintf(f, "%s  q16 bounds: refl %.3f %.3f %.3f trans %.3f %.3f %.3f R %.3f; cos2_t %.9g, E2 %.3f LSB\n",
+                    indent, bb.er[0], bb.er[1], bb.er[2], bb.et[0], bb.et[1], bb.et[2], bb.eR, bb.cos2t, bb.e2);
+        }
+        return;
+    }
     if (case_print_light(f, c, indent))
         return;
     if (c->kind == K_CAMERA) {
@@ -2046,6 +2319,13 @@ static void result_print(FILE *f, const dcase_t *c, const dres_t *r)
 {
     if (result_print_light(f, c, r))
         return;
+    if (c->kind >= K_REFLECT) {
+        fprintf(f, "  q16 err %.3f LSB (bound %.3f), float err %.3f LSB (bound %.3f), TIR band ratio %.3g%s\n",
+                r->err, r->bound, r->err2, r->bound2, r->band_ratio, r->disagree ? " (TIR differs)" : "");
+        if (r->fail)
+            fprintf(f, "  FAIL: %s\n", r->fail);
+        return;
+    }
     if (c->kind == K_CAMERA) {
         fprintf(f, "  cam_setup q16 %d, double %d", r->sq, r->sd);
         if (r->compared)
@@ -2165,6 +2445,11 @@ static void stat_add(dstat_t *s, long i, const dcase_t *c, const dres_t *r)
         dmax(&s->base_only, r->err, i);
     if (r->cond > 10 * r->base)
         dmax(&s->cond_use, (r->err - r->base) / r->cond, i);
+    if (c->kind >= K_REFLECT) {
+        dmax(&s->err2, r->err2, i);
+        if (r->bound2 > 0)
+            dmax(&s->ratio2, r->err2 / r->bound2, i);
+    }
     if (c->kind == K_CAMERA) {
         dmax(&s->basis, r->err_basis, i);
         dmax(&s->focal, r->err_focal, i);
@@ -2390,6 +2675,21 @@ static void print_table(dstat_t st[K_COUNT], double secs)
                s->focal.worst);
     }
     print_light_tables(st);
+    if (st[K_REFLECT].cases + st[K_REFRACT].cases + st[K_SCHLICK].cases) {
+        printf("\nsecondary rays (core/trace.c trace_children), Q16.16 and float against double from the same "
+               "rounded d, n, eta (0.01..100); bound = %.2f x the first-order analysis (eval_bounce):\n\n", MARGIN);
+        printf("| quantity | cases | compared | TIR decisions differ (all in the band) | q16 worst err (LSB) | q16 worst "
+               "err, cos2_t >= 0.01 | q16 worst err/bound | float worst err (LSB) | float worst err/bound |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (int k = K_REFLECT; k <= K_SCHLICK; k++) {
+            const dstat_t *b = &st[k];
+            if (b->cases)
+                printf("| %s | %ld | %ld | %ld | %.4g | %.4g | %.3f | %.4g | %.3f |\n",
+                       k == K_REFLECT ? "reflected direction" : k == K_REFRACT ? "transmitted direction" : "Schlick R",
+                       b->cases, b->compared, b->disagree, b->err.worst, b->err_wc.worst, b->ratio.worst,
+                       b->err2.worst, b->ratio2.worst);
+        }
+    }
     printf("\ntightness of the analysis (bound = %.2f x (base + cond); band = %.2f x the rounding's reach):\n\n", MARGIN,
            MARGIN);
     printf("| kind | max err/(base+cond) (case) | max err where cond < base/100 | max (err-base)/cond where cond > 10 "
@@ -2433,6 +2733,9 @@ static bool coverage_ok(int k, const dstat_t *s)
     }
     case K_SPOT: return s->band > 0 && s->disagree > 0 && s->hits_q > s->cases / 10 && s->hits_q < s->cases * 9 / 10;
     case K_SHADOW: return s->band > 0 && s->hits_q > s->cases / 10 && s->hits_q < s->cases * 9 / 10;
+    case K_REFLECT: return s->compared == s->cases;
+    case K_REFRACT:
+    case K_SCHLICK: return s->compared > s->cases / 4 && s->disagree > 0;
     default:
         return s->compared > s->cases / 10 && s->band > 0 && (k != K_PLANE || s->far > 0);
     }
