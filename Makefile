@@ -116,6 +116,7 @@ TEST_PREREQ  :=
 -include tests/trace.mk
 -include tests/qemu_lit.mk
 -include tests/growth.mk
+-include tests/qemu_trace.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)

@@ -163,7 +163,13 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
 color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
                       const shade_k_t *k, uint8_t *mask)
 {
-    return shade_sum(w, world_common(w, kind, index), kind, index, p, n_geo, d, k, mask);
+    const geom_common_t *obj = world_common(w, kind, index);
+    /* Without the caller's constants (the bounce loop, the ray caster), a
+     * lit opaque material goes straight to shade_sum_own, so that one
+     * shade_sum frame, not two, is on the stack (16 KB boards). */
+    if (!k && obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_TRANSPARENT)
+        return shade_sum_own(w, obj, kind, index, p, n_geo, d, mask);
+    return shade_sum(w, obj, kind, index, p, n_geo, d, k, mask);
 }
 
 color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask)

@@ -60,7 +60,7 @@ static bool trace_in_bounds(const world_t *w, const ray_t *ray)
 
 /* Nearest object along a secondary ray, with the self-intersection rule of
  * trace.h. */
-static bool trace_nearest(const world_t *w, const trace_ray_t *tr, trace_hit_t *hit)
+__attribute__((noinline)) static bool trace_nearest(const world_t *w, const trace_ray_t *tr, trace_hit_t *hit)
 {
     bool found = false;
     num_t t;
@@ -105,8 +105,12 @@ static bool trace_nearest(const world_t *w, const trace_ray_t *tr, trace_hit_t *
     return found;
 }
 
-/* The hit point's t and geometric normal (as the kernels give them). */
-static void trace_surface(const world_t *w, const trace_hit_t *h, const ray_t *ray, num_t *t, vec3_t *n)
+/* The hit point's t and geometric normal (as the kernels give them).
+ * trace_nearest, trace_surface and trace_children are kept out of line so
+ * that their temporaries are not all in trace_bounces' frame at once while
+ * it shades (the 2 KB stack of the micro:bit). */
+__attribute__((noinline)) static void trace_surface(const world_t *w, const trace_hit_t *h, const ray_t *ray, num_t *t,
+                                                    vec3_t *n)
 {
     switch (h->kind) {
 #if FXRT_MAX_PLANES > 0
@@ -155,9 +159,9 @@ typedef struct {
     uint8_t bounce;
 } trace_node_t;
 
-/* The children of a node (at most two): their rays, in *out (returns how
- * many, 0..2). */
-static int trace_children(const trace_node_t *nd, trace_ray_t out[2])
+/* The children of a node (at most two): their rays, the first in *out0,
+ * the second in *out1 (returns how many, 0..2). */
+__attribute__((noinline)) static int trace_children(const trace_node_t *nd, trace_ray_t *out0, trace_ray_t *out1)
 {
     const material_t *m = &nd->obj->mat;
     numw_t dnw = vec3_dotw(nd->d, nd->n_geo);
@@ -170,7 +174,7 @@ static int trace_children(const trace_node_t *nd, trace_ray_t out[2])
     if (m->kind == MATERIAL_REFLECTIVE) {
         color_t wr = color_mul(nd->w, m->reflection);
         if (!trace_cut(wr))
-            out[k++] = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
+            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
         return k;
     }
     /* Transparent. */
@@ -182,7 +186,7 @@ static int trace_children(const trace_node_t *nd, trace_ray_t out[2])
     if (cos2_t < NUM_ZERO) {
         /* Total internal reflection: the reflected ray with the full weight. */
         if (!trace_cut(nd->w))
-            out[k++] = (trace_ray_t){{nd->p, r}, nd->w, nd->obj->id, b, inside};
+            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, nd->w, nd->obj->id, b, inside};
         return k;
     }
     num_t cos_t = num_sqrt(cos2_t);
@@ -200,16 +204,16 @@ static int trace_children(const trace_node_t *nd, trace_ray_t out[2])
     color_t tint = color_make(num_div(c.r, k255), num_div(c.g, k255), num_div(c.b, k255));
     color_t wt = color_scale(color_mul(nd->w, tint), num_sub(NUM_ONE, R));
     if (!trace_cut(wr))
-        out[k++] = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
+        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
     if (!trace_cut(wt))
-        out[k++] = (trace_ray_t){{nd->p, td}, wt, nd->obj->id, b, !inside};
+        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, td}, wt, nd->obj->id, b, !inside};
     return k;
 }
 
 color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
                       color_t local)
 {
-    trace_ray_t stack[TRACE_STACK_ENTRIES];
+    trace_ray_t stack[TRACE_STACK_ENTRIES], spare;
     int sp = 0;
     color_t acc = local; /* the primary hit's weight is 1 */
     trace_node_t nd = {world_common(w, kind, index), p, n_geo, ray->d,
@@ -219,14 +223,12 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const 
         trace_ray_t next;
         bool go = false;
         if (have && material_bounces(nd.obj->mat.kind) && nd.bounce < w->depth) {
-            trace_ray_t kids[2];
-            int nk = trace_children(&nd, kids);
-            if (nk > 0) {
-                next = kids[0];
-                go = true;
-            }
+            /* The first child goes to next, the second (if any) onto the
+             * stack: always room (see trace.h); no copy on the stack. */
+            int nk = trace_children(&nd, &next, sp < TRACE_STACK_ENTRIES ? &stack[sp] : &spare);
+            go = nk > 0;
             if (nk > 1 && sp < TRACE_STACK_ENTRIES)
-                stack[sp++] = kids[1]; /* always room: see trace.h */
+                sp++;
         }
         have = false;
         if (!go) {

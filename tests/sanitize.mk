@@ -121,7 +121,8 @@ FUZZ_TIMEOUT  ?= 5
 FUZZ_MAX_LEN  ?= 4096
 FUZZ_SCENE_BIN := $(FUZZ_DIR)/fuzz_scene
 FUZZ_SCENE_CORPUS := $(FUZZ_DIR)/scene-corpus
-FUZZ_SCENE_SEEDS = $(wildcard scenes/*.scene scenes/stress/*.scene tests/bad-scenes/*.scene tests/scenes/*.scene)
+FUZZ_SCENE_SEEDS = $(wildcard scenes/*.scene scenes/stress/*.scene scenes/lit/*.scene scenes/trace/*.scene \
+    tests/bad-scenes/*.scene tests/scenes/*.scene)
 
 $(FUZZ_DIR)/obj/%.o: host/%.c
 	@mkdir -p $(@D)

@@ -12,6 +12,10 @@
 #   - every lit scene (scenes/lit/*.scene, or any scene with a light or
 #     ambient line) rendered by $BUILD/san/fxrt in q16, float and double
 #     with both renderers at SAN_LIT_SIZE (default 160x120);
+#   - every trace scene (scenes/trace/, scenes/stress/trace-*,
+#     tests/scenes/trace-keywords.scene), as written and at samples 2,
+#     samples 2 adaptive and samples 3 adaptive, in q16, float and double
+#     with both renderers at SAN_TRACE_SIZE (default 48x36);
 #   - tests/oracle.sh with $BUILD/san/tests/oracle: every scene file and
 #     SAN_ORACLE_SCENES random scenes (default 300), and the stress
 #     expectations check;
@@ -118,7 +122,8 @@ mutate() { # mutate SEED FILE
         nfov = split("0.001 0.01 1 90 179.999 179.9999999 0.0000152587890625", fov, " ")
         nrad = split("4096 0.0000152587890625 0.001 1000 4095.99999", rad, " ")
         nword = split("image background camera perspective orthographic plane sphere triangle " \
-                      "box point normal center radius a b c min max color eye gaze up fov scale #",
+                      "box point normal center radius a b c min max color eye gaze up fov scale # " \
+                      "material reflective transparent reflection index depth samples adaptive",
                       word, " ")
         byte[1] = "\001"; byte[2] = "\177"; byte[3] = "\200"; byte[4] = "\r"
         byte[5] = "\t"; byte[6] = "\033"; byte[7] = "\303\251"
@@ -251,6 +256,8 @@ lit=()
 for f in scenes/lit/*.scene scenes/*.scene scenes/stress/*.scene scenes/*/*.scene; do
     [ -f "$f" ] || continue
     case " ${lit[*]:-} " in *" $f "*) continue ;; esac
+    # trace scenes: their own section below (small size, samples variants)
+    [[ $f == scenes/trace/* || $f == scenes/stress/trace-* ]] && continue
     if [[ $f == scenes/lit/* || $f == *lit* ]] || grep -qE '^[[:space:]]*(light|ambient)[[:space:]]' "$f"; then
         lit+=("$f")
     fi
@@ -284,6 +291,61 @@ else
     done
     echo "lit scenes: ${#lit[@]} scenes x 3 numbers x 2 renderers at $SAN_LIT_SIZE, $n_lit_bad failed," \
         "$(($(date +%s) - start)) s"
+fi
+
+# --- trace scenes (issue 12) -------------------------------------------------
+# Every scenes/trace/ and scenes/stress/trace-* scene (and
+# tests/scenes/trace-keywords.scene) through the sanitized fxrt in q16,
+# float and double with the fast and reference renderers at SAN_TRACE_SIZE
+# (default 48x36: deep bounces under ASan are slow), each as written and in
+# three variants made here: `samples 2`, `samples 2 adaptive` and
+# `samples 3 adaptive` (the scene's own samples line replaced): exit 0, an
+# image, no sanitizer report.
+SAN_TRACE_SIZE=${SAN_TRACE_SIZE:-48x36}
+trace=()
+for f in scenes/trace/*.scene scenes/stress/trace-*.scene tests/scenes/trace-keywords.scene; do
+    [ -f "$f" ] && trace+=("$f")
+done
+if [ ${#trace[@]} -eq 0 ]; then
+    bad "trace scenes: none found (scenes/trace/*.scene)"
+else
+    progress "sanitize.sh: ${#trace[@]} trace scenes x 4 sample settings"
+    start=$(date +%s)
+    n_tr_bad=0 n_tr=0
+    mkdir -p "$san/tests/trace/scenes"
+    for f in "${trace[@]}"; do
+        base=$(printf '%s' "${f%.scene}" | tr / _)
+        variants=("$f")
+        for v in "samples 2" "samples 2 adaptive" "samples 3 adaptive"; do
+            vf=$san/tests/trace/scenes/$base-$(tr ' ' - <<<"$v").scene
+            { grep -vE '^[[:space:]]*samples[[:space:]]' "$f"; echo "$v"; } >"$vf"
+            variants+=("$vf")
+        done
+        for vf in "${variants[@]}"; do
+            for n in q16 float double; do
+                for rr in fast reference; do
+                    name=trace-$(basename "${vf%.scene}")-$n-$rr
+                    [ "$vf" = "$f" ] && name=trace-$base-$n-$rr
+                    out=$san/tests/trace/$name.png
+                    rm -f "$out"
+                    n_tr=$((n_tr + 1))
+                    (san_env "$logs/$name" &&
+                        exec "$sfxrt" render "$vf" -o "$out" --size "$SAN_TRACE_SIZE" --number $n --renderer $rr) \
+                        >"$logs/$name.log" 2>&1
+                    rc=$?
+                    if [ $rc -eq 0 ] && [ -s "$out" ] && no_reports "$logs/$name" >"$logs/$name.reports"; then
+                        ok
+                    else
+                        n_tr_bad=$((n_tr_bad + 1))
+                        bad "trace scene $vf ($n, $rr): exit $rc$([ -s "$out" ] || echo ', no image') (log $logs/$name.log)"
+                        sed 's/^/    | /' "$logs/$name.reports" | head -n 20
+                    fi
+                done
+            done
+        done
+    done
+    echo "trace scenes: ${#trace[@]} scenes x 4 sample settings x 3 numbers x 2 renderers = $n_tr renders at" \
+        "$SAN_TRACE_SIZE, $n_tr_bad failed, $(($(date +%s) - start)) s"
 fi
 
 # --- fuzz corpora -------------------------------------------------------------
@@ -328,7 +390,7 @@ if [ -d "$corpus" ]; then
 fi
 # Three in four mutants start from a good scene, the rest from a bad one.
 good=()
-for f in scenes/*.scene scenes/stress/*.scene tests/scenes/*.scene; do [ -f "$f" ] && good+=("$f"); done
+for f in scenes/*.scene scenes/stress/*.scene scenes/trace/*.scene tests/scenes/*.scene; do [ -f "$f" ] && good+=("$f"); done
 bads=(tests/bad-scenes/*.scene)
 for ((i = n_corpus + 1; i <= PARTIAL_FILES; i++)); do
     if [ $((i % 4)) -ne 0 ]; then
