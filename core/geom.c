@@ -386,44 +386,6 @@ bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t)
     return geom_box_hit_face(b, ray, t, &face);
 }
 
-/* The outward unit normal of face f (axis f / 2, max side when f is odd). */
-static vec3_t geom_box_normal(uint8_t f)
-{
-    num_t s = (f & 1) ? NUM_ONE : num_neg(NUM_ONE);
-    return vec3_make(f / 2 == 0 ? s : NUM_ZERO, f / 2 == 1 ? s : NUM_ZERO, f / 2 == 2 ? s : NUM_ZERO);
-}
-
-void geom_box_surface(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n)
-{
-    num_t tnear, tfar;
-    uint8_t fn, ff;
-    bool outside;
-    geom_box_slabs(b, ray, &tnear, &tfar, &fn, &ff, &outside);
-    /* A ray that just misses still takes its entry face; a ray from inside
-     * leaves through the far face. */
-    bool in = !outside && !(tnear > NUM_ZERO) && tfar > NUM_ZERO;
-    *t = in ? tfar : tnear;
-    *n = geom_box_normal(in ? ff : fn);
-}
-
-bool geom_box_exit(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n)
-{
-    num_t tnear, tfar;
-    uint8_t fn, ff;
-    bool outside;
-    geom_box_slabs(b, ray, &tnear, &tfar, &fn, &ff, &outside);
-    (void)tnear, (void)fn;
-    if (outside || !(tfar > NUM_ZERO))
-        return false;
-    *t = tfar;
-    *n = geom_box_normal(ff);
-    return true;
-}
-#endif
-
-/* The box occlusion test also serves the bounce loop (core/trace.c: the
- * scene's bounds box for secondary rays), in scenes without boxes too. */
-#if FXRT_MAX_BOXES > 0 || FXRT_MAX_DEPTH > 0
 /* n1 / d1 < n2 / d2 for d1, d2 > 0: exact in Q16.16 (64-bit products). */
 static bool geom_frac_less(num_t n1, num_t d1, num_t n2, num_t d2)
 {
@@ -465,5 +427,39 @@ bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax)
     if (!geom_frac_less(NUM_ZERO, NUM_ONE, hn, hd))
         return false; /* the surface is met at t <= 0 */
     return tmax == NUM_MAX || geom_frac_less(hn, hd, tmax, NUM_ONE);
+}
+
+/* The outward unit normal of face f (axis f / 2, max side when f is odd). */
+static vec3_t geom_box_normal(uint8_t f)
+{
+    num_t s = (f & 1) ? NUM_ONE : num_neg(NUM_ONE);
+    return vec3_make(f / 2 == 0 ? s : NUM_ZERO, f / 2 == 1 ? s : NUM_ZERO, f / 2 == 2 ? s : NUM_ZERO);
+}
+
+void geom_box_surface(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    num_t tnear, tfar;
+    uint8_t fn, ff;
+    bool outside;
+    geom_box_slabs(b, ray, &tnear, &tfar, &fn, &ff, &outside);
+    /* A ray that just misses still takes its entry face; a ray from inside
+     * leaves through the far face. */
+    bool in = !outside && !(tnear > NUM_ZERO) && tfar > NUM_ZERO;
+    *t = in ? tfar : tnear;
+    *n = geom_box_normal(in ? ff : fn);
+}
+
+bool geom_box_exit(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    num_t tnear, tfar;
+    uint8_t fn, ff;
+    bool outside;
+    geom_box_slabs(b, ray, &tnear, &tfar, &fn, &ff, &outside);
+    (void)tnear, (void)fn;
+    if (outside || !(tfar > NUM_ZERO))
+        return false;
+    *t = tfar;
+    *n = geom_box_normal(ff);
+    return true;
 }
 #endif
