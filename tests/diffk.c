@@ -323,14 +323,14 @@ void DIFFK_SYM(diffk_bounce)(const double d[3], const double n[3], double eta, d
     trace_ray_t out[2];
     obj.mat.kind = MATERIAL_REFLECTIVE;
     obj.mat.reflection = color_make(NUM_ONE, NUM_ONE, NUM_ONE);
-    int k = trace_children(&nd, out);
+    int k = trace_children(&nd, &out[0], &out[1]);
     refl[0] = refl[1] = refl[2] = 0;
     if (k == 1)
         diffk_out(out[0].ray.d, refl);
     obj.mat.kind = MATERIAL_TRANSPARENT;
     obj.mat.index = diffk_num(eta);
     bool inside = vec3_dotw(nd.d, nd.n_geo) > 0;
-    k = trace_children(&nd, out);
+    k = trace_children(&nd, &out[0], &out[1]);
     *tir = 0;
     *has_t = 0;
     *R = 0;
