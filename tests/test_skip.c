@@ -257,8 +257,9 @@ static double dbl(num_t x)
 }
 
 /* A reflective plane with three flat spheres on it, depth 1: every plane
- * pixel sends one reflected ray; those that miss the spheres' box (padded
- * by 1/16, core/trace.c) test no sphere, the others all three. */
+ * pixel sends one reflected ray; those that miss the sphere around the
+ * spheres' box (padded by one unit, core/world.c, core/trace.c) test no
+ * sphere, the others all three. */
 static void test_bounds(void)
 {
     cam_t cam;
@@ -285,9 +286,11 @@ static void test_bounds(void)
                       sphere_calls);
             continue;
         }
-        /* the mirrored rays that miss the padded box, in double */
+        /* the mirrored rays that miss the bounds sphere, in double: the
+         * sphere through the corners of the spheres' box [-2, 2] x [0, 1] x
+         * [-0.5, 0.5], its radius padded by one unit (core/world.c) */
         long miss = 0;
-        double pad = 1.0 / 16, lo[3] = {-2 - pad, 0 - pad, -0.5 - pad}, hi[3] = {2 + pad, 1 + pad, 0.5 + pad};
+        const double c[3] = {0, 0.5, 0}, rad = sqrt(2.0 * 2.0 + 0.5 * 0.5 + 0.5 * 0.5) + 1.0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 if ((keys[W * y + x] >> 8) != (uint32_t)pid)
@@ -297,21 +300,13 @@ static void test_bounds(void)
                 double o[3] = {dbl(r.o.x), dbl(r.o.y), dbl(r.o.z)}, d[3] = {dbl(r.d.x), dbl(r.d.y), dbl(r.d.z)};
                 double t = -o[1] / d[1], p[3] = {o[0] + t * d[0], 0, o[2] + t * d[2]};
                 d[1] = -d[1];
-                double tn = 0, tf = INFINITY;
-                for (int a = 0; a < 3; a++) {
-                    double t1 = (lo[a] - p[a]) / d[a], t2 = (hi[a] - p[a]) / d[a];
-                    if (t1 > t2) {
-                        double q = t1;
-                        t1 = t2;
-                        t2 = q;
-                    }
-                    tn = fmax(tn, t1);
-                    tf = fmin(tf, t2);
-                }
-                miss += !(tn <= tf);
+                double oc[3] = {c[0] - p[0], c[1] - p[1], c[2] - p[2]};
+                double oc2 = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2];
+                double b = oc[0] * d[0] + oc[1] * d[1] + oc[2] * d[2];
+                miss += oc2 > rad * rad && (b < 0 || oc2 - b * b > rad * rad);
             }
-        printf("bounds (%s): %ld plane pixels, %lu reflected rays, %lu missed the bounds box (double: %ld), "
-               "%lu sphere kernel calls = 3 x %lu rays inside the box\n",
+        printf("bounds (%s): %ld plane pixels, %lu reflected rays, %lu missed the bounds sphere (double: %ld), "
+               "%lu sphere kernel calls = 3 x %lu rays inside the bounds\n",
                NUM_NAME, plane, sec, skips, miss, sphere_calls, sec - skips);
         CHECK_MSG(sec == (unsigned long)plane, "%lu reflected rays for %ld plane pixels", sec, plane);
         CHECK_MSG(skips > sec / 4 && skips < sec, "%lu of %lu rays skipped", skips, sec);
