@@ -88,7 +88,7 @@ if [[ ${1:-} == --unit ]]; then
     row() { echo "$kind,$base,$smp,$board,$cpu,$number,$loop,$1,$ak,$2" >"$OUT/runs/$id.csv"; }
     rc=0
     $M qemu SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$SIZE" FB="$fb" "${extra[@]}" >"$log" 2>&1 || rc=$?
-    line=$(grep 'stack_used=' "$log" | tail -n 1 || true)
+    line=$(grep 'stack_used=[0-9]' "$log" | tail -n 1 || true)
     su=$(get stack_used "$line") ss=$(get stack_size "$line")
     if [[ $rc -ne 0 ]]; then
         if grep -q "does not fit $board" "$log"; then
