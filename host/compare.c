@@ -135,6 +135,7 @@ int compare_images_keyed(const image_t *a, const image_t *b, const uint32_t *key
 {
     uint8_t heat[256][3];
     uint64_t sq_sum = 0;
+    uint64_t abs_sum = 0;
     long mismatched = 0, edge = 0, interior = 0;
     long within1 = 0, within2 = 0, near_px = 0;
     long near1 = 0, near2 = 0, far1 = 0, far2 = 0;
@@ -175,6 +176,7 @@ int compare_images_keyed(const image_t *a, const image_t *b, const uint32_t *key
                 int d = abs((int)a->rgb[i + (size_t)c] - (int)b->rgb[i + (size_t)c]);
 
                 sq_sum += (uint64_t)(d * d);
+                abs_sum += (uint64_t)d;
                 if (d > pixel_err)
                     pixel_err = d;
             }
@@ -220,6 +222,7 @@ int compare_images_keyed(const image_t *a, const image_t *b, const uint32_t *key
 
         res->psnr = 10.0 * log10(255.0 * 255.0 / mse);
     }
+    res->mae = (double)abs_sum / (3.0 * (double)res->pixels);
     res->edge_mismatched = edge;
     res->interior_mismatched = interior;
     res->within1 = within1;
@@ -293,7 +296,7 @@ void compare_print(FILE *out, const compare_result_t *res)
             "edge_mismatched=%ld interior_mismatched=%ld "
             "within1_pct=%s within2_pct=%s near_pixels=%ld far_pixels=%ld "
             "far_within1_pct=%s far_within2_pct=%s far_max_err=%d near_max_err=%d "
-            "near_within1_pct=%s near_within2_pct=%s\n",
+            "near_within1_pct=%s near_within2_pct=%s mae=%.4f\n",
             res->pixels, res->mismatched, res->mismatched_pct, res->max_err, psnr,
             res->edge_mismatched, res->interior_mismatched,
             compare_pct_floor(w1, sizeof w1, res->within1, res->pixels),
@@ -302,5 +305,5 @@ void compare_print(FILE *out, const compare_result_t *res)
             compare_pct_floor(f2, sizeof f2, res->far_within2, res->far_pixels),
             res->far_max_err, res->near_max_err,
             compare_pct_floor(n1, sizeof n1, res->near_within1, res->near_pixels),
-            compare_pct_floor(n2, sizeof n2, res->near_within2, res->near_pixels));
+            compare_pct_floor(n2, sizeof n2, res->near_within2, res->near_pixels), res->mae);
 }

@@ -27,6 +27,7 @@ typedef struct {
     long near_within1, near_within2, far_within1, far_within2;
     double near_within1_pct, near_within2_pct, far_within1_pct, far_within2_pct;
     int near_max_err, far_max_err;
+    double mae; /* mean absolute error per channel, in 1/255 units (0 when identical) */
 } compare_result_t;
 
 /* Compare A and B (same size required). A pixel of A is an edge pixel when
@@ -72,8 +73,8 @@ int compare_keys_image(const uint32_t *keys, int width, int height, uint32_t mis
 /* One line of key=value pairs, in this order:
  * pixels= mismatched= mismatched_pct= max_err= psnr= edge_mismatched= interior_mismatched=
  * within1_pct= within2_pct= near_pixels= far_pixels= far_within1_pct= far_within2_pct=
- * far_max_err= near_max_err= near_within1_pct= near_within2_pct=
- * mismatched_pct with 4 decimals, psnr with 2 decimals or "inf"; the
+ * far_max_err= near_max_err= near_within1_pct= near_within2_pct= mae=
+ * mismatched_pct and mae with 4 decimals, psnr with 2 decimals or "inf"; the
  * *within*_pct with 4 decimals rounded down, so 100.0000 means every pixel
  * of the set and a threshold check on the printed value is never too kind. */
 void compare_print(FILE *out, const compare_result_t *res);

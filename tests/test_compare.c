@@ -89,6 +89,7 @@ static void test_identical(void)
     CHECK(res.mismatched_pct == 0.0);
     CHECK(res.max_err == 0);
     CHECK_MSG(isinf(res.psnr) && res.psnr > 0, "psnr=%f", res.psnr);
+    CHECK_MSG(res.mae == 0.0, "mae=%f", res.mae);
     CHECK(res.edge_mismatched == 0 && res.interior_mismatched == 0);
     CHECK(diff.width == 8 && diff.height == 6 && diff.rgb != NULL);
     if (diff.rgb != NULL)
@@ -234,6 +235,8 @@ static void test_max_err_and_psnr(void)
     /* By hand: MSE = (200^2 + 3^2) / (3 * 16) = 40009/48,
      * PSNR = 10 log10(65025 * 48 / 40009) = 18.92163901... */
     CHECK_MSG(near(res.psnr, 18.921639016485372), "psnr=%.12f", res.psnr);
+    /* Mean absolute error per channel: (200 + 3) / (3 * 16) = 4.2291666... */
+    CHECK_MSG(near(res.mae, 203.0 / 48.0), "mae=%.12f", res.mae);
 
     /* Worst case: every channel off by 255 gives MSE = 255^2, PSNR 0. */
     image_free(&a);
@@ -242,6 +245,7 @@ static void test_max_err_and_psnr(void)
     make_flat(&b, 3, 2, 255, 255, 255);
     CHECK(compare_images(&a, &b, &res, NULL, err, sizeof err) == 0);
     CHECK_MSG(near(res.psnr, 0.0), "psnr=%f", res.psnr);
+    CHECK_MSG(near(res.mae, 255.0), "mae=%f", res.mae);
     CHECK(res.max_err == 255 && res.mismatched == 6);
     CHECK(near(res.mismatched_pct, 100.0));
 
@@ -514,6 +518,8 @@ static void test_thresholds(void)
     /* Sum of squares 3 + 5 + 8 + 9 + 14 = 39 over 18 channels:
      * PSNR = 10 log10(65025 * 18 / 39) = 44.7718... */
     CHECK_MSG(near(res.psnr, 10.0 * log10(65025.0 * 18.0 / 39.0)), "psnr=%f", res.psnr);
+    /* Absolute errors 3 + 3 + 4 + 3 + 6 = 19 over 18 channels. */
+    CHECK_MSG(near(res.mae, 19.0 / 18.0), "mae=%f", res.mae);
     image_free(&a);
     image_free(&b);
 }
@@ -649,6 +655,7 @@ static void test_print(void)
     res.mismatched_pct = 0.0625;
     res.max_err = 3;
     res.psnr = 48.126;
+    res.mae = 0.041666; /* printed to 4 decimals: 0.0417 */
     res.edge_mismatched = 10;
     res.interior_mismatched = 2;
     res.within1 = 19195;
@@ -671,7 +678,7 @@ static void test_print(void)
                             "psnr=48.13 edge_mismatched=10 interior_mismatched=2 "
                             "within1_pct=99.9739 within2_pct=99.9947 near_pixels=300 far_pixels=18900 "
                             "far_within1_pct=99.9841 far_within2_pct=100.0000 far_max_err=2 near_max_err=3 "
-                            "near_within1_pct=99.3333 near_within2_pct=99.6666\n") == 0,
+                            "near_within1_pct=99.3333 near_within2_pct=99.6666 mae=0.0417\n") == 0,
                   "got \"%s\"", s);
     free(s);
 
@@ -686,7 +693,7 @@ static void test_print(void)
                             "psnr=inf edge_mismatched=0 interior_mismatched=0 "
                             "within1_pct=100.0000 within2_pct=100.0000 near_pixels=0 far_pixels=19200 "
                             "far_within1_pct=100.0000 far_within2_pct=100.0000 far_max_err=0 near_max_err=0 "
-                            "near_within1_pct=100.0000 near_within2_pct=100.0000\n") == 0,
+                            "near_within1_pct=100.0000 near_within2_pct=100.0000 mae=0.0000\n") == 0,
                   "got \"%s\"", s);
     free(s);
 
@@ -702,7 +709,7 @@ static void test_print(void)
                             "psnr=75.74 edge_mismatched=0 interior_mismatched=1 "
                             "within1_pct=99.9947 within2_pct=99.9947 near_pixels=0 far_pixels=19200 "
                             "far_within1_pct=99.9947 far_within2_pct=99.9947 far_max_err=10 near_max_err=0 "
-                            "near_within1_pct=100.0000 near_within2_pct=100.0000\n") == 0,
+                            "near_within1_pct=100.0000 near_within2_pct=100.0000 mae=0.0002\n") == 0,
                   "got \"%s\"", s);
     free(s);
     image_free(&a);
