@@ -348,23 +348,25 @@
 #ifndef FXRT_STACK_MARGIN
 #define FXRT_STACK_MARGIN 512
 #endif
-/* Bytes the boards reserve on top of STACK_SIZE for the bounce loop when
- * it is compiled in (FXRT_MAX_DEPTH > 0): trace_bounces' frame with its
- * FXRT_MAX_DEPTH pending rays (40 B each) and the shading below it.
- * The firmware puts this many bytes in the .stack_extra section, which
- * linker/sections.ld places inside the stack; firmware/fit.sh counts it.
- * Measured on the micro:bit (M0, 2 KB STACK_SIZE): the reflection scene
- * (depth 4, 160x120, samples 2) uses 2,136 B of stack, the parallel
- * mirrors (depth 16) 2,596 B; a scene without bounces is unchanged. */
-#ifndef FXRT_STACK_BOUNCE
+/* Bytes the boards reserve on top of STACK_SIZE for the bounce loop and
+ * the adaptive key pass when they are compiled in: trace_bounces' frame
+ * with its FXRT_MAX_DEPTH pending rays (40 B each) and the shading below
+ * it (FXRT_MAX_DEPTH > 0), and 256 B for the one-sample key pass under the
+ * sampling pass (FXRT_ADAPTIVE). The firmware puts this many bytes in the
+ * .stack_extra section, which linker/sections.ld places inside the stack;
+ * firmware/fit.sh counts it. Measured on the micro:bit (M0, 2 KB
+ * STACK_SIZE): the reflection scene (depth 4, 160x120, samples 2) uses
+ * 2,136 B of stack, the parallel mirrors (depth 16) 2,596 B, a lit scene
+ * at samples 4 adaptive 1,572 B; other scenes are unchanged. */
+#ifndef FXRT_STACK_EXTRA
 #if FXRT_MAX_DEPTH > 0
-#define FXRT_STACK_BOUNCE (1024 + 48 * FXRT_MAX_DEPTH)
+#define FXRT_STACK_EXTRA (1024 + 48 * FXRT_MAX_DEPTH + 256 * FXRT_ADAPTIVE)
 #else
-#define FXRT_STACK_BOUNCE 0
+#define FXRT_STACK_EXTRA (256 * FXRT_ADAPTIVE)
 #endif
 #endif
-#if FXRT_STACK_BOUNCE < 0 || FXRT_STACK_BOUNCE % 8 != 0
-#error "FXRT_STACK_BOUNCE must be a multiple of 8, >= 0"
+#if FXRT_STACK_EXTRA < 0 || FXRT_STACK_EXTRA % 8 != 0
+#error "FXRT_STACK_EXTRA must be a multiple of 8, >= 0"
 #endif
 #if FXRT_FB_MODE == FXRT_FB_STREAM && FXRT_PIXEL != FXRT_RGB888
 #error "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer"

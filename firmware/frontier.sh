@@ -75,14 +75,10 @@ if [[ ${1:-} == --unit ]]; then
     echo "[$id] $kind $base s$smp $cpu $number $loop" >&2
     extra=() tag=""
     [[ $loop == step ]] && { extra+=(FW_EXTRA=-DFXRT_FLOAT_STEP=1); tag=step; }
-    # Core bug worked around (see docs/BENCHMARKS.md): core/trace.c calls
-    # geom_box_occludes, which geom.c only compiles with FXRT_MAX_BOXES > 0,
-    # so a tracing scene without a box does not link. Such a scene gets
-    # FW_ALL_KINDS=1 (scenec --all-kinds).
+    # ak: the run used FW_ALL_KINDS=1 (scenec --all-kinds); no longer
+    # needed (a tracing scene without a box links since core/trace.c has its
+    # own bounds test), kept as a CSV column for older runs.
     ak=0
-    if ! grep -q '^[[:space:]]*box' "$scene"; then
-        ak=1 extra+=(FW_ALL_KINDS=1) tag=${tag:+$tag-}ak
-    fi
     [[ -n $tag ]] && extra+=(FW_TAG="$tag")
     log=$OUT/runs/$id.log
     row() { echo "$kind,$base,$smp,$board,$cpu,$number,$loop,$1,$ak,$2" >"$OUT/runs/$id.csv"; }

@@ -40,10 +40,10 @@
 #define RENDER_ROW(st, row, out) render_row(st, row, out)
 #endif
 
-#if FXRT_STACK_BOUNCE > 0
+#if FXRT_STACK_EXTRA > 0
 /* More stack for the bounce loop: linker/sections.ld puts this section
  * inside the stack, below STACK_SIZE (never referenced, only reserved). */
-static uint8_t stack_bounce[FXRT_STACK_BOUNCE] __attribute__((section(".stack_extra"), used, aligned(8)));
+static uint8_t stack_extra[FXRT_STACK_EXTRA] __attribute__((section(".stack_extra"), used, aligned(8)));
 #endif
 
 static render_t render_state;
