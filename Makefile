@@ -90,7 +90,7 @@ $(BUILD)/tests/%: $(BUILD)/tests/%.o $$($$*_DEPS)
 NUM_TESTS   := test_geom
 NUM_TEST_BIN := $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(BUILD)/tests/$(t)_$(n)))
 define num_test_rules
-$(BUILD)/tests/$(1)_$(2): tests/$(1).c $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(2)/%.o)
+$(BUILD)/tests/$(1)_$(2): tests/$(1).c $(wildcard tests/*.h) $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(2)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(2) $$@"
 	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(2)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
