@@ -211,47 +211,41 @@ bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
     return false;
 }
 
-void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n)
+/* Where the ray meets the sphere's surface and the outward unit normal
+ * there: the near root when far is false and it is at t > 0, else the far
+ * one. As geom_sphere_hit, with the discriminant clamped at 0 (the tangent
+ * point for a ray that just misses). The normal (p - c) / r is formed as
+ * p - c = -q -+ h d, the offset of the hit from the centre without
+ * subtracting two large coordinates (o + t d - c cancels for a far
+ * sphere), and normalised: on the sphere |p - c| = r, so this is
+ * (p - c) / r, with the rounding of p kept out of the direction. */
+static void geom_sphere_at(const geom_sphere_t *s, const ray_t *ray, bool far, num_t *t, vec3_t *n)
 {
-    /* As geom_sphere_hit, with the discriminant clamped at 0 (the tangent
-     * point for a ray that just misses). The normal (p - c) / r is formed
-     * as p - c = -q -+ h d, the offset of the hit from the centre without
-     * subtracting two large coordinates (o + t d - c cancels for a far
-     * sphere), and normalised: on the sphere |p - c| = r, so this is
-     * (p - c) / r, with the rounding of p kept out of the direction. */
     vec3_t oc = vec3_sub(s->center, ray->o);
     num_t b = vec3_dot(oc, ray->d);
     vec3_t q = vec3_sub(oc, vec3_scale(ray->d, b));
     numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
     num_t h = disc > 0 ? numw_sqrt(disc) : NUM_ZERO;
     num_t t0 = num_sub(b, h);
-    bool near = t0 > NUM_ZERO;
+    bool near = !far && t0 > NUM_ZERO;
     *t = near ? t0 : num_add(b, h);
     vec3_t hd = vec3_scale(ray->d, h);
     vec3_t v = near ? vec3_sub(vec3_neg(q), hd) : vec3_add(vec3_neg(q), hd);
     FXRT_COUNT(n_normalised);
     if (!vec3_normalize(&v))
-        v = vec3_neg(ray->d); /* radius below 1 LSB: face the ray */
+        v = far ? ray->d : vec3_neg(ray->d); /* radius below 1 LSB: leave along / face the ray */
     *n = v;
+}
+
+void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    geom_sphere_at(s, ray, false, t, n);
 }
 
 bool geom_sphere_exit(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n)
 {
-    /* As geom_sphere_surface, always the far root b + h: p - c = -q + h d. */
-    vec3_t oc = vec3_sub(s->center, ray->o);
-    num_t b = vec3_dot(oc, ray->d);
-    vec3_t q = vec3_sub(oc, vec3_scale(ray->d, b));
-    numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
-    num_t h = disc > 0 ? numw_sqrt(disc) : NUM_ZERO;
-    *t = num_add(b, h);
-    if (!(*t > NUM_ZERO))
-        return false;
-    vec3_t v = vec3_add(vec3_neg(q), vec3_scale(ray->d, h));
-    FXRT_COUNT(n_normalised);
-    if (!vec3_normalize(&v))
-        v = ray->d; /* radius below 1 LSB: leave along the ray */
-    *n = v;
-    return true;
+    geom_sphere_at(s, ray, true, t, n);
+    return *t > NUM_ZERO;
 }
 #endif
 

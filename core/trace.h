@@ -35,7 +35,8 @@
  * goes into a solid (sphere, box) meets it only where it leaves it
  * (geom_<kind>_exit). Secondary rays use the world-space kernels; bounded
  * objects (spheres, triangles, boxes) are tested only when the ray meets
- * the box around all of them (world_t.bmin, bmax, padded).
+ * the sphere around their box (world_t.bc, br2, padded one unit; a
+ * division-free test, FXRT_NO_BOUNDS turns it off).
  */
 #ifndef FXRT_TRACE_H
 #define FXRT_TRACE_H
