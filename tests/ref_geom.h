@@ -136,4 +136,31 @@ static bool ref_hit(const obj_t *o, const double org[3], const double d[3], doub
     }
 }
 
+/* Build numbers from doubles and back (Q16.16: rounded to 2^-16). */
+static num_t N(double x)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return (num_t)lround(x * 65536.0);
+#else
+    return (num_t)x;
+#endif
+}
+static double D(num_t x)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return (double)x / 65536.0;
+#else
+    return (double)x;
+#endif
+}
+static vec3_t V(const double v[3])
+{
+    return vec3_make(N(v[0]), N(v[1]), N(v[2]));
+}
+/* The colour the scene loader stores: 255 x rounded to Q16.16. */
+static double chan(double x)
+{
+    return round(x * 255.0 * 65536.0) / 65536.0;
+}
+
 #endif

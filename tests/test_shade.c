@@ -32,31 +32,6 @@
 #define H 48
 
 /* A run-time double as num_t (NUM() is for constants only). */
-static num_t N(double x)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    return (num_t)lround(x * 65536.0);
-#else
-    return (num_t)x;
-#endif
-}
-static double D(num_t x)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    return (double)x / 65536.0;
-#else
-    return (double)x;
-#endif
-}
-static vec3_t V(const double v[3])
-{
-    return vec3_make(N(v[0]), N(v[1]), N(v[2]));
-}
-/* The colour the scene loader would store: 255 x rounded to Q16.16. */
-static double chan(double x)
-{
-    return round(x * 255.0 * 65536.0) / 65536.0;
-}
 
 /* ---- the scene, as data ---------------------------------------------------- */
 

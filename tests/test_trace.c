@@ -53,31 +53,8 @@
 #define TOL 1e-6
 #endif
 
-static num_t N(double x)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    return (num_t)lround(x * 65536.0);
-#else
-    return (num_t)x;
-#endif
-}
-static double D(num_t x)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    return (double)x / 65536.0;
-#else
-    return (double)x;
-#endif
-}
-static vec3_t V(const double v[3])
-{
-    return vec3_make(N(v[0]), N(v[1]), N(v[2]));
-}
-/* The colour the scene loader stores: 255 x rounded to Q16.16. */
-static double chan(double x)
-{
-    return round(x * 255.0 * 65536.0) / 65536.0;
-}
+#include "ref_geom.h"
+
 /* A fraction as the build stores it (Q16.16: rounded to 2^-16). */
 static double frac(double x)
 {
@@ -86,7 +63,6 @@ static double frac(double x)
 
 /* ---- the scene, as data ---------------------------------------------------- */
 
-#include "ref_geom.h"
 
 typedef struct {
     double pos[3], color[3];
