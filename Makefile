@@ -101,6 +101,7 @@ TEST_BIN += $(NUM_TEST_BIN)
 # Fragments add suites to SUITES_EXTRA and what they need to TEST_PREREQ.
 SUITES_EXTRA :=
 TEST_PREREQ  :=
+TEST_FULL_PREREQ :=
 -include tests/sanitize.mk
 -include tests/diff.mk
 -include host/version.mk
@@ -121,8 +122,20 @@ TEST_PREREQ  :=
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)
 
-test: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN) $(TEST_PREREQ)
+# make test builds what the suites need with TEST_JOBS parallel jobs (the
+# machine's cores), then runs the suites in two lanes (tests/run.sh). It
+# runs each suite's quick scope; make test-full runs the long sweeps too
+# (FXRT_TEST_FULL=1: every seed scene on every board through the per-scene
+# firmware, every renderer variant on target, the sanitized suites at full
+# size, the kernel fuzzer; docs/TESTING.md lists what each scope runs).
+TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+test-build: $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(TEST_BIN) $(TEST_PREREQ)
+test: deps
+	$(Q)$(MAKE) --no-print-directory -j$(TEST_JOBS) test-build
 	$(Q)BUILD=$(BUILD) tests/run.sh $(SUITES)
+test-full: deps
+	$(Q)$(MAKE) --no-print-directory -j$(TEST_JOBS) test-build $(TEST_FULL_PREREQ)
+	$(Q)BUILD=$(BUILD) FXRT_TEST_FULL=1 tests/run.sh $(SUITES)
 
 # --- firmware (firmware/firmware.mk) ----------------------------------------
 include firmware/firmware.mk
@@ -145,5 +158,5 @@ deps:
 clean:
 	rm -rf $(BUILD)
 
-.PHONY: all test demo size deps clean fuzz
+.PHONY: all test test-build test-full demo size deps clean fuzz
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

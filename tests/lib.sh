@@ -4,6 +4,8 @@ PASSED=0
 FAILED=0
 BUILD=${BUILD:-build}
 FXRT=${FXRT:-$BUILD/fxrt}
+# Firmware built by the tests carries no debug information (firmware.mk).
+export FW_DEBUG=${FW_DEBUG-}
 
 ok() { PASSED=$((PASSED + 1)); }
 bad() {
@@ -26,3 +28,6 @@ report() {
     echo "$1: $PASSED passed, $FAILED failed"
     [ "$FAILED" -eq 0 ]
 }
+# full: true under make test-full (FXRT_TEST_FULL=1). make test runs each
+# suite's quick scope; a suite puts its long sweeps behind `if full`.
+full() { [ "${FXRT_TEST_FULL:-0}" = 1 ]; }

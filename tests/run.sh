@@ -4,9 +4,10 @@
 # non-zero if any check failed or any suite crashed.
 #
 # Two lanes run side by side (the suites are single-threaded): the suites
-# that build and run firmware in build/fw (qemu*, fit, examples, cli,
-# whose make fw runs would race on shared firmware directories) one after
-# another in one lane, every other suite in the other. RUN_LANES=1 runs
+# that build and run firmware in shared build/fw directories (qemu,
+# qemu_lit, fit, examples, cli, whose make fw runs would race) one after
+# another in one lane, every other suite in the other. (qemu_trace.sh
+# builds only ELFs of its own, FW_TAG=trace*, so it balances the lanes.) RUN_LANES=1 runs
 # everything in one lane, in the order given. Each suite's line is printed
 # when it ends; the total comes last.
 #
@@ -64,7 +65,7 @@ firmware=() others=()
 i=0
 for suite in "$@"; do
     case $(basename "$suite") in
-    qemu*.sh | fit.sh | examples.sh | cli.sh) firmware+=("$i:$suite") ;;
+    qemu.sh | qemu_lit.sh | fit.sh | examples.sh | cli.sh) firmware+=("$i:$suite") ;;
     *) others+=("$i:$suite") ;;
     esac
     i=$((i + 1))

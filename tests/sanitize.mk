@@ -105,8 +105,8 @@ $(SAN_DIFF): $$(call san_path,$$(DIFF_OBJ))
 # san-build: everything tests/sanitize.sh runs, and the list of test
 # binaries it runs (so the script need not know the Makefile's names).
 # The fuzz harnesses are sanitized already; sanitize.sh replays their
-# corpora.
-san-build: $$(SAN_BIN) $$(SAN_ORACLE) $$(SAN_DIFF) $$(FUZZ_SCENE_BIN) $$(DIFF_FUZZ_BIN)
+# corpora (the kernel harness, 48 more objects, only under make test-full).
+san-build: $$(SAN_BIN) $$(SAN_ORACLE) $$(SAN_DIFF) $$(FUZZ_SCENE_BIN)
 	$(Q)printf '%s\n' $(SAN_UNIT_BIN) $(SAN_NUM_BIN) $(SAN_EXTRA_BIN) >$(SAN_DIR)/tests.list
 
 sanitize: deps san-build
@@ -180,5 +180,6 @@ fuzz-scene: $(FUZZ_SCENE_BIN) $(FUZZ_DIR)/scene.dict
 # sanitize.sh so the latter can draw inputs from a fresh corpus.
 SUITES_EXTRA += tests/fuzz-short.sh tests/sanitize.sh
 TEST_PREREQ  += san-build $(FUZZ_SCENE_BIN)
+TEST_FULL_PREREQ += $(DIFF_FUZZ_BIN)
 
 .PHONY: sanitize san-build fuzz-scene

@@ -6,22 +6,30 @@
 #     test_image, test_compare, test_scene, test_geom_q16/float/double,
 #     test_shade_q16/float/double: lit worlds built through the API);
 #   - test_diff with SAN_DIFF_CASES cases per kind (default 50000);
-#   - tests/cli.sh, golden.sh, stress_scenes.sh and renderers.sh against
-#     $BUILD/san/fxrt, with their outputs under $BUILD/san/tests/ (the
-#     normal ones are not touched);
+#   - tests/cli.sh against $BUILD/san/fxrt, with its outputs under
+#     $BUILD/san/tests/ (the normal ones are not touched); make test-full
+#     also runs golden.sh, stress_scenes.sh and renderers.sh so; make test
+#     renders every stress scene (but lit and trace ones, below) in q16,
+#     float and double;
+#   Figures below in the form "N (quick M)": make test-full uses N, make
+#   test M (tests/lib.sh: full).
 #   - every lit scene (scenes/lit/*.scene, or any scene with a light or
 #     ambient line) rendered by $BUILD/san/fxrt in q16, float and double
-#     with both renderers at SAN_LIT_SIZE (default 160x120);
+#     with both renderers (quick: the reference one in q16 only) at
+#     SAN_LIT_SIZE (default 160x120, quick 64x48);
 #   - every trace scene (scenes/trace/, scenes/stress/trace-*,
 #     tests/scenes/trace-keywords.scene), as written and at samples 2,
-#     samples 2 adaptive and samples 3 adaptive, in q16, float and double
-#     with both renderers at SAN_TRACE_SIZE (default 48x36);
+#     samples 2 adaptive and samples 3 adaptive (quick: as written and
+#     samples 2 adaptive), in q16, float and double
+#     with both renderers (quick: the reference one in q16 only) at
+#     SAN_TRACE_SIZE (default 48x36);
 #   - tests/oracle.sh with $BUILD/san/tests/oracle: every scene file and
-#     SAN_ORACLE_SCENES random scenes (default 300), and the stress
+#     SAN_ORACLE_SCENES random scenes (default 300, quick 50), and the stress
 #     expectations check;
 #   - the fuzz harnesses (already sanitized) over their corpora and the
-#     scene seeds, and SAN_KERNEL_RUNS fixed-seed kernel inputs;
-#   - "no partial output": 200 scenes (a sample of the fuzzer's corpus
+#     scene seeds, and SAN_KERNEL_RUNS fixed-seed kernel inputs (the kernel
+#     harness: make test-full only);
+#   - "no partial output": 200 (quick 80) scenes (a sample of the fuzzer's corpus
 #     $BUILD/fuzz/scene-corpus when there is one, the rest deterministic
 #     mutations of the seed scenes) through `fxrt render FILE -o OUT.png`:
 #     exit 0 and an image, or exit 2, one "FILE:LINE: message" line on
@@ -37,10 +45,12 @@ san=$BUILD/san
 sfxrt=$san/fxrt
 logs=$san/logs
 partial=$san/partial
-PARTIAL_FILES=${PARTIAL_FILES:-200}
+# make test takes the quick defaults (the second figure), make test-full the first.
+if full; then q=0; else q=1; fi
+PARTIAL_FILES=${PARTIAL_FILES:-$([ $q = 1 ] && echo 80 || echo 200)}
 PARTIAL_SIZE=${PARTIAL_SIZE:-24x16}
 SAN_DIFF_CASES=${SAN_DIFF_CASES:-50000}
-SAN_ORACLE_SCENES=${SAN_ORACLE_SCENES:-300}
+SAN_ORACLE_SCENES=${SAN_ORACLE_SCENES:-$([ $q = 1 ] && echo 50 || echo 300)}
 SAN_KERNEL_RUNS=${SAN_KERNEL_RUNS:-20000}
 
 # san_env DIR: sanitizer options for a run whose reports go to DIR/.
@@ -228,21 +238,60 @@ judge_suite() {
     fi
 }
 
-# The two longest suites (mostly shell work around the sanitized fxrt) run
-# in the background on the second core; they are judged after the rest.
-{
-    run_quiet stress_scenes.sh env BUILD="$san" FXRT="$sfxrt" tests/stress_scenes.sh
-    run_quiet renderers.sh env BUILD="$san" FXRT="$sfxrt" tests/renderers.sh
-} &
-lane=$!
+# make test-full: the two longest suites (mostly shell work around the
+# sanitized fxrt) run in the background on the second core; they are
+# judged after the rest. make test renders every stress scene through the
+# sanitized fxrt instead (section "stress scenes" below); the unsanitized
+# suites check their expectations.
+if full; then
+    {
+        run_quiet stress_scenes.sh env BUILD="$san" FXRT="$sfxrt" tests/stress_scenes.sh
+        run_quiet renderers.sh env BUILD="$san" FXRT="$sfxrt" tests/renderers.sh
+    } &
+    lane=$!
+fi
 while read -r t; do
     [ -n "$t" ] || continue
     run_suite "$(basename "$t")" "$t"
 done <"$san/tests.list"
 run_suite test_diff "$san/tests/test_diff" "$SAN_DIFF_CASES"
 run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
-run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
+full && run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
 run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
+
+# --- stress scenes (make test; make test-full runs stress_scenes.sh above) ---
+# Every stress scene that is not meant to be rejected through the sanitized
+# fxrt in q16, float and double at its own size: exit 0, an image, no
+# sanitizer report. (Rejected ones are refused by cli.sh's checks and the
+# no-partial-output section below.)
+if ! full; then
+    progress "sanitize.sh: stress scenes"
+    start=$(date +%s)
+    n_st=0 n_st_bad=0
+    mkdir -p "$san/tests/stress"
+    for f in scenes/stress/*.scene; do
+        grep -q '^# expect: rejected:' "$f" && continue
+        # lit and trace stress scenes: their own sections below
+        [[ $f == scenes/stress/trace-* || $f == *lit* ]] && continue
+        grep -qE '^[[:space:]]*(light|ambient)[[:space:]]' "$f" && continue
+        for n in q16 float double; do
+            name=stress-$(basename "${f%.scene}")-$n
+            out=$san/tests/stress/$name.png
+            rm -f "$out"
+            n_st=$((n_st + 1))
+            (san_env "$logs/$name" && exec "$sfxrt" render "$f" -o "$out" --number $n) >"$logs/$name.log" 2>&1
+            rc=$?
+            if [ $rc -eq 0 ] && [ -s "$out" ] && no_reports "$logs/$name" >"$logs/$name.reports"; then
+                ok
+            else
+                n_st_bad=$((n_st_bad + 1))
+                bad "stress scene $f ($n): exit $rc$([ -s "$out" ] || echo ', no image') (log $logs/$name.log)"
+                sed 's/^/    | /' "$logs/$name.reports" | head -n 20
+            fi
+        done
+    done
+    echo "stress scenes: $n_st renders (3 numbers), $n_st_bad failed, $(($(date +%s) - start)) s"
+fi
 
 # --- lit scenes (issue 11) ----------------------------------------------------
 # Every lit scene (scenes/lit/, and any scene elsewhere whose name says lit
@@ -251,7 +300,7 @@ run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCEN
 # image, no sanitizer report. (The lighting code itself is also exercised
 # by the sanitized test_shade_* and test_diff binaries above, which build
 # lit worlds through the API, whether or not lit scene files exist yet.)
-SAN_LIT_SIZE=${SAN_LIT_SIZE:-160x120}
+SAN_LIT_SIZE=${SAN_LIT_SIZE:-$([ $q = 1 ] && echo 64x48 || echo 160x120)}
 lit=()
 for f in scenes/lit/*.scene scenes/*.scene scenes/stress/*.scene scenes/*/*.scene; do
     [ -f "$f" ] || continue
@@ -271,6 +320,8 @@ else
     for f in "${lit[@]}"; do
         for n in q16 float double; do
             for rr in fast reference; do
+                # make test: the reference renderer in Q16.16 only
+                [ $q = 1 ] && [ $rr = reference ] && [ $n != q16 ] && continue
                 name=lit-$(printf '%s' "${f%.scene}" | tr / _)-$n-$rr
                 out=$san/tests/lit/$name.png
                 mkdir -p "$san/tests/lit"
@@ -289,7 +340,7 @@ else
             done
         done
     done
-    echo "lit scenes: ${#lit[@]} scenes x 3 numbers x 2 renderers at $SAN_LIT_SIZE, $n_lit_bad failed," \
+    echo "lit scenes: ${#lit[@]} scenes x 3 numbers, fast and reference renderers ($([ $q = 1 ] && echo "reference: q16 only" || echo "both in every number")) at $SAN_LIT_SIZE, $n_lit_bad failed," \
         "$(($(date +%s) - start)) s"
 fi
 
@@ -299,7 +350,8 @@ fi
 # float and double with the fast and reference renderers at SAN_TRACE_SIZE
 # (default 48x36: deep bounces under ASan are slow), each as written and in
 # three variants made here: `samples 2`, `samples 2 adaptive` and
-# `samples 3 adaptive` (the scene's own samples line replaced): exit 0, an
+# `samples 3 adaptive` (make test: only `samples 2 adaptive`; the scene's
+# own samples line replaced): exit 0, an
 # image, no sanitizer report.
 SAN_TRACE_SIZE=${SAN_TRACE_SIZE:-48x36}
 trace=()
@@ -309,14 +361,16 @@ done
 if [ ${#trace[@]} -eq 0 ]; then
     bad "trace scenes: none found (scenes/trace/*.scene)"
 else
-    progress "sanitize.sh: ${#trace[@]} trace scenes x 4 sample settings"
+    nset=$([ $q = 1 ] && echo 2 || echo 4)
+    progress "sanitize.sh: ${#trace[@]} trace scenes x $nset sample settings"
     start=$(date +%s)
     n_tr_bad=0 n_tr=0
     mkdir -p "$san/tests/trace/scenes"
     for f in "${trace[@]}"; do
         base=$(printf '%s' "${f%.scene}" | tr / _)
         variants=("$f")
-        for v in "samples 2" "samples 2 adaptive" "samples 3 adaptive"; do
+        for v in $([ $q = 1 ] && echo "samples@2@adaptive" || echo "samples@2 samples@2@adaptive samples@3@adaptive"); do
+            v=${v//@/ }
             vf=$san/tests/trace/scenes/$base-$(tr ' ' - <<<"$v").scene
             { grep -vE '^[[:space:]]*samples[[:space:]]' "$f"; echo "$v"; } >"$vf"
             variants+=("$vf")
@@ -324,6 +378,7 @@ else
         for vf in "${variants[@]}"; do
             for n in q16 float double; do
                 for rr in fast reference; do
+                    [ $q = 1 ] && [ $rr = reference ] && [ $n != q16 ] && continue
                     name=trace-$(basename "${vf%.scene}")-$n-$rr
                     [ "$vf" = "$f" ] && name=trace-$base-$n-$rr
                     out=$san/tests/trace/$name.png
@@ -344,7 +399,7 @@ else
             done
         done
     done
-    echo "trace scenes: ${#trace[@]} scenes x 4 sample settings x 3 numbers x 2 renderers = $n_tr renders at" \
+    echo "trace scenes: ${#trace[@]} scenes x $nset sample settings x 3 numbers x 2 renderers = $n_tr renders at" \
         "$SAN_TRACE_SIZE, $n_tr_bad failed, $(($(date +%s) - start)) s"
 fi
 
@@ -366,12 +421,16 @@ kernel_dirs=()
 echo "fuzz corpora: scene inputs from ${scene_dirs[*]}; kernel inputs from ${kernel_dirs[*]:-no corpus yet (make fuzz-kernels)} and $SAN_KERNEL_RUNS mutations"
 run_suite fuzz_scene-corpus "$BUILD/fuzz/fuzz_scene" -runs=0 -max_len=4096 -artifact_prefix="$san/fuzz/scene-" \
     "$san/fuzz/scene-new" "${scene_dirs[@]}"
-run_suite fuzz_kernels-corpus "$BUILD/fuzz/fuzz_kernels" -runs="$SAN_KERNEL_RUNS" -seed=1 \
-    -artifact_prefix="$san/fuzz/kernels-" "$san/fuzz/kernels-new" "${kernel_dirs[@]}"
+if full; then
+    run_suite fuzz_kernels-corpus "$BUILD/fuzz/fuzz_kernels" -runs="$SAN_KERNEL_RUNS" -seed=1 \
+        -artifact_prefix="$san/fuzz/kernels-" "$san/fuzz/kernels-new" "${kernel_dirs[@]}"
+fi
 
-wait "$lane"
-judge_suite stress_scenes.sh
-judge_suite renderers.sh
+if full; then
+    wait "$lane"
+    judge_suite stress_scenes.sh
+    judge_suite renderers.sh
+fi
 
 # --- no partial output ------------------------------------------------------
 rm -rf "$partial"
