@@ -259,6 +259,24 @@ run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
 full && run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
 run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
 
+# san_render DESC NAME OUT FXRT-RENDER-ARGS...: one render through the
+# sanitized fxrt (log $logs/NAME.log): ok with exit 0, an image and no
+# sanitizer report; otherwise bad, the reports printed, and status 1.
+san_render() {
+    local desc=$1 name=$2 out=$3 rc
+    shift 3
+    rm -f "$out"
+    (san_env "$logs/$name" && exec "$sfxrt" render "$@" -o "$out") >"$logs/$name.log" 2>&1
+    rc=$?
+    if [ $rc -eq 0 ] && [ -s "$out" ] && no_reports "$logs/$name" >"$logs/$name.reports"; then
+        ok
+        return 0
+    fi
+    bad "$desc: exit $rc$([ -s "$out" ] || echo ', no image') (log $logs/$name.log)"
+    sed 's/^/    | /' "$logs/$name.reports" | head -n 20
+    return 1
+}
+
 # --- stress scenes (make test; make test-full runs stress_scenes.sh above) ---
 # Every stress scene that is not meant to be rejected through the sanitized
 # fxrt in q16, float and double at its own size: exit 0, an image, no
@@ -276,18 +294,9 @@ if ! full; then
         grep -qE '^[[:space:]]*(light|ambient)[[:space:]]' "$f" && continue
         for n in q16 float double; do
             name=stress-$(basename "${f%.scene}")-$n
-            out=$san/tests/stress/$name.png
-            rm -f "$out"
             n_st=$((n_st + 1))
-            (san_env "$logs/$name" && exec "$sfxrt" render "$f" -o "$out" --number $n) >"$logs/$name.log" 2>&1
-            rc=$?
-            if [ $rc -eq 0 ] && [ -s "$out" ] && no_reports "$logs/$name" >"$logs/$name.reports"; then
-                ok
-            else
+            san_render "stress scene $f ($n)" "$name" "$san/tests/stress/$name.png" "$f" --number $n ||
                 n_st_bad=$((n_st_bad + 1))
-                bad "stress scene $f ($n): exit $rc$([ -s "$out" ] || echo ', no image') (log $logs/$name.log)"
-                sed 's/^/    | /' "$logs/$name.reports" | head -n 20
-            fi
         done
     done
     echo "stress scenes: $n_st renders (3 numbers), $n_st_bad failed, $(($(date +%s) - start)) s"
@@ -323,20 +332,9 @@ else
                 # make test: the reference renderer in Q16.16 only
                 [ $q = 1 ] && [ $rr = reference ] && [ $n != q16 ] && continue
                 name=lit-$(printf '%s' "${f%.scene}" | tr / _)-$n-$rr
-                out=$san/tests/lit/$name.png
                 mkdir -p "$san/tests/lit"
-                rm -f "$out"
-                (san_env "$logs/$name" &&
-                    exec "$sfxrt" render "$f" -o "$out" --size "$SAN_LIT_SIZE" --number $n --renderer $rr) \
-                    >"$logs/$name.log" 2>&1
-                rc=$?
-                if [ $rc -eq 0 ] && [ -s "$out" ] && no_reports "$logs/$name" >"$logs/$name.reports"; then
-                    ok
-                else
-                    n_lit_bad=$((n_lit_bad + 1))
-                    bad "lit scene $f ($n, $rr): exit $rc$([ -s "$out" ] || echo ', no image') (log $logs/$name.log)"
-                    sed 's/^/    | /' "$logs/$name.reports" | head -n 20
-                fi
+                san_render "lit scene $f ($n, $rr)" "$name" "$san/tests/lit/$name.png" \
+                    "$f" --size "$SAN_LIT_SIZE" --number $n --renderer $rr || n_lit_bad=$((n_lit_bad + 1))
             done
         done
     done
@@ -381,25 +379,14 @@ else
                     [ $q = 1 ] && [ $rr = reference ] && [ $n != q16 ] && continue
                     name=trace-$(basename "${vf%.scene}")-$n-$rr
                     [ "$vf" = "$f" ] && name=trace-$base-$n-$rr
-                    out=$san/tests/trace/$name.png
-                    rm -f "$out"
                     n_tr=$((n_tr + 1))
-                    (san_env "$logs/$name" &&
-                        exec "$sfxrt" render "$vf" -o "$out" --size "$SAN_TRACE_SIZE" --number $n --renderer $rr) \
-                        >"$logs/$name.log" 2>&1
-                    rc=$?
-                    if [ $rc -eq 0 ] && [ -s "$out" ] && no_reports "$logs/$name" >"$logs/$name.reports"; then
-                        ok
-                    else
-                        n_tr_bad=$((n_tr_bad + 1))
-                        bad "trace scene $vf ($n, $rr): exit $rc$([ -s "$out" ] || echo ', no image') (log $logs/$name.log)"
-                        sed 's/^/    | /' "$logs/$name.reports" | head -n 20
-                    fi
+                    san_render "trace scene $vf ($n, $rr)" "$name" "$san/tests/trace/$name.png" \
+                        "$vf" --size "$SAN_TRACE_SIZE" --number $n --renderer $rr || n_tr_bad=$((n_tr_bad + 1))
                 done
             done
         done
     done
-    echo "trace scenes: ${#trace[@]} scenes x $nset sample settings x 3 numbers x 2 renderers = $n_tr renders at" \
+    echo "trace scenes: ${#trace[@]} scenes x $nset sample settings x 3 numbers, fast and reference renderers$([ $q = 1 ] && echo " (reference: q16 only)") = $n_tr renders at" \
         "$SAN_TRACE_SIZE, $n_tr_bad failed, $(($(date +%s) - start)) s"
 fi
 
