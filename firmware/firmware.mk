@@ -73,6 +73,9 @@ FW_SRC   := $(CORE_NUM:%=core/%.c) core/fx.c firmware/main.c firmware/startup.c 
             firmware/semihost.c firmware/counter.c
 FW_OBJ   := $(patsubst %.c,$(FW_DIR)/%.o,$(FW_SRC))
 
+# This ELF's dependency files only (the top Makefile skips build/fw).
+-include $(wildcard $(FW_OBJ:.o=.d))
+
 $(FW_DIR)/scene_data.h: $(SCENE_DEP) $(BUILD)/fxrt-scenec
 	@mkdir -p $(@D)
 	@echo "  SCENEC  $(SCENE) -> $(@D)"
