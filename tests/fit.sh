@@ -150,7 +150,7 @@ if expect_nofit "$big" "320 objects"; then
         if [ $((ns + 1)) -le 64 ]; then
             mk $((ns + 1)) >"$out/over-spheres.scene"
             # make test: the verdict alone (FIT_QUICK=1, no per-kind probes)
-            FIT_QUICK=$(full && echo 0 || echo 1) expect_nofit "$out/over-spheres.scene" \
+            FIT_QUICK=$(scope 0 1) expect_nofit "$out/over-spheres.scene" \
                 "$((ns + 1)) spheres (one over the stated maximum)" >/dev/null || true
         fi
     else

@@ -31,3 +31,5 @@ report() {
 # full: true under make test-full (FXRT_TEST_FULL=1). make test runs each
 # suite's quick scope; a suite puts its long sweeps behind `if full`.
 full() { [ "${FXRT_TEST_FULL:-0}" = 1 ]; }
+# scope FULL QUICK: prints FULL under make test-full, QUICK under make test.
+scope() { if full; then echo "$1"; else echo "$2"; fi; }

@@ -45,12 +45,11 @@ san=$BUILD/san
 sfxrt=$san/fxrt
 logs=$san/logs
 partial=$san/partial
-# make test takes the quick defaults (the second figure), make test-full the first.
-if full; then q=0; else q=1; fi
-PARTIAL_FILES=${PARTIAL_FILES:-$([ $q = 1 ] && echo 80 || echo 200)}
+# make test takes the quick defaults (scope's second figure), make test-full the first.
+PARTIAL_FILES=${PARTIAL_FILES:-$(scope 200 80)}
 PARTIAL_SIZE=${PARTIAL_SIZE:-24x16}
 SAN_DIFF_CASES=${SAN_DIFF_CASES:-50000}
-SAN_ORACLE_SCENES=${SAN_ORACLE_SCENES:-$([ $q = 1 ] && echo 50 || echo 300)}
+SAN_ORACLE_SCENES=${SAN_ORACLE_SCENES:-$(scope 300 50)}
 SAN_KERNEL_RUNS=${SAN_KERNEL_RUNS:-20000}
 
 # san_env DIR: sanitizer options for a run whose reports go to DIR/.
@@ -259,6 +258,14 @@ run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
 full && run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
 run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
 
+# trace_scene FILE / lit_scene FILE: the scenes of the trace and lit
+# sections below (a trace scene is not also a lit one).
+trace_scene() { [[ $1 == scenes/trace/* || $1 == scenes/stress/trace-* ]]; }
+lit_scene() {
+    ! trace_scene "$1" && { [[ $1 == scenes/lit/* || $1 == *lit* ]] ||
+        grep -qE '^[[:space:]]*(light|ambient)[[:space:]]' "$1"; }
+}
+
 # san_render DESC NAME OUT FXRT-RENDER-ARGS...: one render through the
 # sanitized fxrt (log $logs/NAME.log): ok with exit 0, an image and no
 # sanitizer report; otherwise bad, the reports printed, and status 1.
@@ -290,8 +297,7 @@ if ! full; then
     for f in scenes/stress/*.scene; do
         grep -q '^# expect: rejected:' "$f" && continue
         # lit and trace stress scenes: their own sections below
-        [[ $f == scenes/stress/trace-* || $f == *lit* ]] && continue
-        grep -qE '^[[:space:]]*(light|ambient)[[:space:]]' "$f" && continue
+        trace_scene "$f" || lit_scene "$f" && continue
         for n in q16 float double; do
             name=stress-$(basename "${f%.scene}")-$n
             n_st=$((n_st + 1))
@@ -309,16 +315,13 @@ fi
 # image, no sanitizer report. (The lighting code itself is also exercised
 # by the sanitized test_shade_* and test_diff binaries above, which build
 # lit worlds through the API, whether or not lit scene files exist yet.)
-SAN_LIT_SIZE=${SAN_LIT_SIZE:-$([ $q = 1 ] && echo 64x48 || echo 160x120)}
+SAN_LIT_SIZE=${SAN_LIT_SIZE:-$(scope 160x120 64x48)}
 lit=()
 for f in scenes/lit/*.scene scenes/*.scene scenes/stress/*.scene scenes/*/*.scene; do
     [ -f "$f" ] || continue
     case " ${lit[*]:-} " in *" $f "*) continue ;; esac
-    # trace scenes: their own section below (small size, samples variants)
-    [[ $f == scenes/trace/* || $f == scenes/stress/trace-* ]] && continue
-    if [[ $f == scenes/lit/* || $f == *lit* ]] || grep -qE '^[[:space:]]*(light|ambient)[[:space:]]' "$f"; then
-        lit+=("$f")
-    fi
+    # (trace scenes: their own section below, small size, samples variants)
+    lit_scene "$f" && lit+=("$f")
 done
 if [ ${#lit[@]} -eq 0 ]; then
     echo "lit scenes: none yet (scenes/lit/*.scene); lighting covered by test_shade_* and test_diff only"
@@ -330,7 +333,7 @@ else
         for n in q16 float double; do
             for rr in fast reference; do
                 # make test: the reference renderer in Q16.16 only
-                [ $q = 1 ] && [ $rr = reference ] && [ $n != q16 ] && continue
+                ! full && [ $rr = reference ] && [ $n != q16 ] && continue
                 name=lit-$(printf '%s' "${f%.scene}" | tr / _)-$n-$rr
                 mkdir -p "$san/tests/lit"
                 san_render "lit scene $f ($n, $rr)" "$name" "$san/tests/lit/$name.png" \
@@ -338,7 +341,7 @@ else
             done
         done
     done
-    echo "lit scenes: ${#lit[@]} scenes x 3 numbers, fast and reference renderers ($([ $q = 1 ] && echo "reference: q16 only" || echo "both in every number")) at $SAN_LIT_SIZE, $n_lit_bad failed," \
+    echo "lit scenes: ${#lit[@]} scenes x 3 numbers, fast and reference renderers ($(scope "both in every number" "reference: q16 only")) at $SAN_LIT_SIZE, $n_lit_bad failed," \
         "$(($(date +%s) - start)) s"
 fi
 
@@ -359,7 +362,9 @@ done
 if [ ${#trace[@]} -eq 0 ]; then
     bad "trace scenes: none found (scenes/trace/*.scene)"
 else
-    nset=$([ $q = 1 ] && echo 2 || echo 4)
+    settings=("samples 2 adaptive")
+    full && settings=("samples 2" "samples 2 adaptive" "samples 3 adaptive")
+    nset=$((${#settings[@]} + 1))
     progress "sanitize.sh: ${#trace[@]} trace scenes x $nset sample settings"
     start=$(date +%s)
     n_tr_bad=0 n_tr=0
@@ -367,8 +372,7 @@ else
     for f in "${trace[@]}"; do
         base=$(printf '%s' "${f%.scene}" | tr / _)
         variants=("$f")
-        for v in $([ $q = 1 ] && echo "samples@2@adaptive" || echo "samples@2 samples@2@adaptive samples@3@adaptive"); do
-            v=${v//@/ }
+        for v in "${settings[@]}"; do
             vf=$san/tests/trace/scenes/$base-$(tr ' ' - <<<"$v").scene
             { grep -vE '^[[:space:]]*samples[[:space:]]' "$f"; echo "$v"; } >"$vf"
             variants+=("$vf")
@@ -376,7 +380,7 @@ else
         for vf in "${variants[@]}"; do
             for n in q16 float double; do
                 for rr in fast reference; do
-                    [ $q = 1 ] && [ $rr = reference ] && [ $n != q16 ] && continue
+                    ! full && [ $rr = reference ] && [ $n != q16 ] && continue
                     name=trace-$(basename "${vf%.scene}")-$n-$rr
                     [ "$vf" = "$f" ] && name=trace-$base-$n-$rr
                     n_tr=$((n_tr + 1))
@@ -386,7 +390,7 @@ else
             done
         done
     done
-    echo "trace scenes: ${#trace[@]} scenes x $nset sample settings x 3 numbers, fast and reference renderers$([ $q = 1 ] && echo " (reference: q16 only)") = $n_tr renders at" \
+    echo "trace scenes: ${#trace[@]} scenes x $nset sample settings x 3 numbers, fast and reference renderers$(scope "" " (reference: q16 only)") = $n_tr renders at" \
         "$SAN_TRACE_SIZE, $n_tr_bad failed, $(($(date +%s) - start)) s"
 fi
 
