@@ -61,6 +61,17 @@ done
 onb=$out/onboard
 rm -rf "$onb"
 mkdir -p "$onb/scenes" "$onb/host"
+# onb_prepare SCENE NAME SIZE: the scene compiled for the on-board program
+# ($onb/scenes/NAME) and the host's q16 frame ($onb/host/NAME.ppm); fails
+# with the reason counted.
+onb_prepare() {
+    mkdir -p "$onb/scenes/$2"
+    if ! "$BUILD/fxrt-scenec" "$1" --number q16 --size $3 --out "$onb/scenes/$2" 2>"$onb/scenec.log"; then
+        bad "fxrt-scenec $1: $(cat "$onb/scenec.log")"
+        return 1
+    fi
+    "$FXRT" render "$1" --number q16 --size $3 -o "$onb/host/$2.ppm" || { bad "host render of $1"; return 1; }
+}
 stress=()
 for scene in scenes/stress/*.scene; do
     grep -q '^# expect: rejected:' "$scene" && continue
@@ -69,25 +80,13 @@ for scene in scenes/stress/*.scene; do
     [[ $name == trace-* ]] && continue
     size=$(awk '$1 == "image" { print $2 "x" $3; exit }' "$scene")
     size=${size:-64x48}
-    mkdir -p "$onb/scenes/$name"
-    if "$BUILD/fxrt-scenec" "$scene" --number q16 --size $size --out "$onb/scenes/$name" 2>"$onb/scenec.log"; then
-        stress+=("$name")
-    else
-        bad "fxrt-scenec $scene: $(cat "$onb/scenec.log")"
-    fi
-    "$FXRT" render "$scene" --number q16 --size $size -o "$onb/host/$name.ppm" || bad "host render of $scene"
+    onb_prepare "$scene" "$name" $size && stress+=("$name")
 done
 seeds=()
 if ! full; then
     for scene in scenes/abb*.scene; do
         name=$(basename "$scene" .scene)
-        mkdir -p "$onb/scenes/$name"
-        if "$BUILD/fxrt-scenec" "$scene" --number q16 --size $SIZE --out "$onb/scenes/$name" 2>"$onb/scenec.log" &&
-            "$FXRT" render "$scene" --number q16 --size $SIZE -o "$onb/host/$name.ppm"; then
-            seeds+=("$name")
-        else
-            bad "seed $scene for the on-board batch: $(cat "$onb/scenec.log")"
-        fi
+        onb_prepare "$scene" "$name" $SIZE && seeds+=("$name")
     done
 fi
 cfgv() { sed -nE "s/^#define $2 ([0-9]+)$/\1/p" "$onb/scenes/$1/scene_config.h"; }
