@@ -298,6 +298,18 @@
 #if FXRT_MAX_SAMPLES < 1 || FXRT_MAX_SAMPLES > 16
 #error "FXRT_MAX_SAMPLES must be in 1..16"
 #endif
+/* FXRT_SAMPLE_RUNS: the runs (one owner each) that the fast Q16.16
+ * sampling pass may hold for the N fine rows of one output row when it
+ * works from spans (core/render_sample.c, "run mode": every object on
+ * those rows alone on its row). An output row with more runs, or with
+ * objects that overlap, takes the per-sample pass instead (the same
+ * image). 6 bytes each; default 8 per fine row. */
+#ifndef FXRT_SAMPLE_RUNS
+#define FXRT_SAMPLE_RUNS (8 * FXRT_MAX_SAMPLES)
+#endif
+#if FXRT_SAMPLE_RUNS < 1 || FXRT_SAMPLE_RUNS > 4096
+#error "FXRT_SAMPLE_RUNS must be in 1..4096"
+#endif
 /* FXRT_ADAPTIVE 1 allows 'samples N adaptive' (one ray per pixel where
  * the pixel's 3x3 neighbourhood has one key); 0 compiles it out. */
 #ifndef FXRT_ADAPTIVE

@@ -117,6 +117,20 @@ typedef struct {
  * when some pass reads it. */
 #define RENDER_VIS (FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1)
 
+/* Run mode of the sampling pass (core/render_sample.c): the fast Q16.16
+ * loop, with spans, lone objects and bounds, can describe a fine row as
+ * runs of one owner each instead of one owner per column. */
+#define RENDER_RUNS                                                                                         \
+    (FXRT_MAX_SAMPLES > 1 && FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS && !FXRT_NO_LONE && \
+     !FXRT_NO_BOUNDS)
+#if RENDER_RUNS
+/* Fine columns a..b (inclusive) of one fine row belong to object oi. */
+typedef struct {
+    int16_t a, b;
+    uint16_t oi;
+} render_run_t;
+#endif
+
 /* Output columns with samples > 1 (at most half the fine columns). */
 #define RENDER_OUT_COLS ((FXRT_RENDER_MAX_WIDTH + 1) / 2)
 
@@ -182,7 +196,7 @@ typedef struct {
     render_depth_t tlo, thi;
 #if FXRT_MAX_SAMPLES > 1
     bool flat;          /* its material is flat: the colour is the sample */
-    color_sum_t sum[3]; /* flat: N samples of its colour (color_sum_add), for the sampling pass */
+    color_sum_t one[3]; /* flat: one sample of its colour (color_sum_add), for the sampling pass */
 #endif
     union {
         render_sphere_t *sphere; /* RENDER_SPHERE */
@@ -240,12 +254,38 @@ typedef struct {
      * in acc (Q16.16: raw units, at most 255 * 2^16 * 256 < 2^32). */
     uint8_t samples;
     bool adaptive;
-    color_sum_t bg_sum[3]; /* N samples of the background */
+    color_sum_t bg_one[3]; /* one sample of the background */
     const cam_t *out_cam;
     cam_t fine;
     uint8_t fine_rgb[(FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * FXRT_RENDER_MAX_WIDTH] __attribute__((aligned(4)));
     color_sum_t acc[3 * RENDER_OUT_COLS];
     uint16_t uni[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
+#if RENDER_RUNS && FXRT_MAX_SPHERES > 0
+    /* Run mode, per sphere: the decisive form (c or disc) at its first
+     * column x0 is quadratic in the fine row, exactly in 128 bits. On fine
+     * row vrow: its value v, v(next row) - v, and d1, its first
+     * difference along the row; ddv and dd1, how those two change per
+     * row; d2, its (constant) second difference along the row. plo..phi:
+     * its run of f >= 0 on fine row prow (columns from x0), which guesses
+     * the next row's. */
+    struct {
+        fx128_t v, dvk, d1, ddv, dd1, d2;
+        int32_t vrow, prow;
+        int16_t plo, phi;
+    } srow[FXRT_MAX_SPHERES];
+#endif
+#if RENDER_RUNS
+    /* Run mode: the runs of fine row j of the current output row are
+     * runs[run_at[j] .. run_at[j + 1] - 1], sorted, not overlapping; gaps
+     * are the background. */
+    render_run_t runs[FXRT_SAMPLE_RUNS];
+    uint16_t run_at[FXRT_MAX_SAMPLES + 1];
+    /* run_cap: the runs an output row may use, FXRT_SAMPLE_RUNS after
+     * render_setup (a test may lower it to force the per-sample pass);
+     * run_rows: output rows rendered from runs so far (a statistic). */
+    uint16_t run_cap;
+    uint32_t run_rows;
+#endif
 #if FXRT_ADAPTIVE
     /* Adaptive: keys and colours of output rows at one sample per pixel
      * (a ring of three rows: slot row % 3 holds row arow[row % 3]), and

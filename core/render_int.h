@@ -57,6 +57,21 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
 void render_row_vis(render_t *r, int32_t row, uint8_t *rgb);
 void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb);
 
+/* Fill pixels xa..xb of a row with colour c, in the pixel format. */
+void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c);
+
+#if RENDER_RUNS
+/* Fine row `row` as runs of one owner each, when every object on it is
+ * flat and alone on its row (render_row_vis would fill spans there): into
+ * out[0 .. n-1], sorted, one object's runs merged; returns n, or -1 when
+ * some object is lit or not alone, or there are more than cap runs. */
+int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap);
+#if FXRT_MAX_SPHERES > 0
+/* Per frame, sphere object i: its row series for run mode (r->srow). */
+void render_runs_setup(render_t *r, uint16_t i);
+#endif
+#endif
+
 /* render_sample.c: output row `row` with samples > 1. */
 void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference);
 

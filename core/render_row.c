@@ -75,45 +75,7 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
     if (r->samples > 1)
         return; /* the sampling pass reads vis, not the painted scratch row */
 #endif
-    rgb8_t bg = r->world->background_rgb;
-    typedef uint32_t __attribute__((may_alias)) word_t;
-#if FXRT_PIXEL == FXRT_RGB565
-    uint16_t v = render_565(bg);
-    int32_t n = r->cam->width, i = 0;
-    render_px16_t *p16 = (render_px16_t *)(void *)rgb;
-    if (((uintptr_t)rgb & 3u) == 0) {
-        word_t two = (uint32_t)v * 0x10001u, *p = (word_t *)(void *)rgb;
-        for (; i + 2 <= n; i += 2)
-            *p++ = two;
-    }
-    for (; i < n; i++)
-        p16[i] = v;
-#else
-    uint8_t pat[12];
-    for (int i = 0; i < 4; i++) {
-        pat[3 * i + 0] = bg.r;
-        pat[3 * i + 1] = bg.g;
-        pat[3 * i + 2] = bg.b;
-    }
-    int32_t n = 3 * r->cam->width, i = 0;
-    if (((uintptr_t)rgb & 3u) == 0) {
-        /* Aligned rows (the firmware's framebuffer and bands): three word
-         * stores per four pixels. may_alias: the buffer is bytes. */
-        word_t w[3];
-        __builtin_memcpy(w, pat, 12);
-        word_t *p = (word_t *)(void *)rgb;
-        for (; i + 12 <= n; i += 12, p += 3) {
-            p[0] = w[0];
-            p[1] = w[1];
-            p[2] = w[2];
-        }
-    } else {
-        for (; i + 12 <= n; i += 12)
-            __builtin_memcpy(rgb + i, pat, 12);
-    }
-    for (; i < n; i++)
-        rgb[i] = pat[i % 3];
-#endif
+    render_fill_rgb(rgb, 0, r->cam->width - 1, r->world->background_rgb);
 }
 
 void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
@@ -152,57 +114,90 @@ void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb)
 
 /* ---- spans -------------------------------------------------------------- */
 
-/* Fill columns xa..xb with object oi's colour, with word stores where the
- * row is aligned (RGB888: three words per four pixels; RGB565: one word
- * per two). */
-RENDER_MAYBE_UNUSED static void render_fill(render_t *r, uint16_t oi, int32_t xa, int32_t xb, uint8_t *rgb)
+/* Fill pixels xa..xb of a row with colour c, in the pixel format, with
+ * word stores where the row is aligned (RGB888: three words per four
+ * pixels; RGB565: one word per two). */
+void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
 {
     typedef uint32_t __attribute__((may_alias)) word_t;
     int32_t x = xa;
+#if FXRT_PIXEL == FXRT_RGB565
+    uint16_t v = render_565(c);
+    render_px16_t *p16 = (render_px16_t *)(void *)rgb;
+    if (((uintptr_t)rgb & 3u) == 0) {
+        for (; x <= xb && (x & 1); x++)
+            p16[x] = v;
+        word_t two = (uint32_t)v * 0x10001u, *p = (word_t *)(void *)rgb + x / 2;
+        for (; x + 1 <= xb; x += 2)
+            *p++ = two;
+    }
+    for (; x <= xb; x++)
+        p16[x] = v;
+#else
+    uint8_t pat[12];
+    for (int i = 0; i < 4; i++) {
+        pat[3 * i + 0] = c.r;
+        pat[3 * i + 1] = c.g;
+        pat[3 * i + 2] = c.b;
+    }
+    if (((uintptr_t)rgb & 3u) == 0) {
+        /* Aligned rows (the firmware's framebuffer and bands). may_alias:
+         * the buffer is bytes. */
+        for (; x <= xb && (x & 3); x++)
+            __builtin_memcpy(rgb + 3 * x, pat, 3);
+        word_t w[3], *p = (word_t *)(void *)(rgb + 3 * x);
+        __builtin_memcpy(w, pat, 12);
+        for (; x + 3 <= xb; x += 4, p += 3) {
+            p[0] = w[0];
+            p[1] = w[1];
+            p[2] = w[2];
+        }
+    } else {
+        for (; x + 3 <= xb; x += 4)
+            __builtin_memcpy(rgb + 3 * x, pat, 12);
+    }
+    for (; x <= xb; x++)
+        __builtin_memcpy(rgb + 3 * x, pat, 3);
+#endif
+}
+
+/* Fill columns xa..xb with object oi's colour (and record it in vis). */
+RENDER_MAYBE_UNUSED static void render_fill(render_t *r, uint16_t oi, int32_t xa, int32_t xb, uint8_t *rgb)
+{
 #if RENDER_VIS
     if (render_tracks(r)) /* only the shading and sampling passes read vis */
         for (int32_t k = xa; k <= xb; k++)
             r->vis[k] = oi;
 #endif
-#if FXRT_PIXEL == FXRT_RGB565
-    if (((uintptr_t)rgb & 3u) == 0) {
-        for (; x <= xb && (x & 1); x++)
-            render_paint(r, oi, x, rgb);
-        word_t two = (uint32_t)r->obj[oi].px * 0x10001u, *p = (word_t *)(void *)rgb + x / 2;
-        for (; x + 1 <= xb; x += 2)
-            *p++ = two;
-    }
-#else
-    if (((uintptr_t)rgb & 3u) == 0) {
-        for (; x <= xb && (x & 3); x++)
-            render_paint(r, oi, x, rgb);
-        if (x + 3 <= xb) {
-            rgb8_t c = r->obj[oi].rgb;
-            uint8_t pat[12];
-            for (int i = 0; i < 4; i++) {
-                pat[3 * i + 0] = c.r;
-                pat[3 * i + 1] = c.g;
-                pat[3 * i + 2] = c.b;
-            }
-            word_t w[3], *p = (word_t *)(void *)(rgb + 3 * x);
-            __builtin_memcpy(w, pat, 12);
-            for (; x + 3 <= xb; x += 4, p += 3) {
-                p[0] = w[0];
-                p[1] = w[1];
-                p[2] = w[2];
-            }
-        }
-    }
-#endif
-    for (; x <= xb; x++)
-        render_paint(r, oi, x, rgb);
+    render_fill_rgb(rgb, xa, xb, r->obj[oi].rgb);
 }
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* Columns x0 + k, k in lo..hi (empty when lo > hi). */
 typedef struct {
     int32_t lo, hi;
 } render_iv_t;
+
+/* a * m exactly (mod 2^128, so exact whenever the product fits). */
+RENDER_MAYBE_UNUSED static fx128_t render_mul128_small(fx128_t a, int32_t m)
+{
+    uint32_t um = m < 0 ? 0u - (uint32_t)m : (uint32_t)m;
+    uint64_t p0 = (uint64_t)(uint32_t)a.lo * um, p1 = (a.lo >> 32) * um;
+    fx128_t r;
+    r.lo = p0 + (p1 << 32);
+    r.hi = (int64_t)((uint64_t)a.hi * um + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
+    return m < 0 ? fx128_neg(r) : r;
+}
+
+/* q(k) = v + d1 k + d2 k (k - 1) / 2: the value the forward differences
+ * reach after k steps, evaluated directly (exact). */
+RENDER_MAYBE_UNUSED static fx128_t render_quad_k(fx128_t v, fx128_t d1, fx128_t d2, int32_t k)
+{
+    return fx128_add(fx128_add(v, render_mul128_small(d1, k)), render_mul128_small(d2, (int32_t)((int64_t)k * (k - 1) / 2)));
+}
+#endif
+
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
 
 static render_iv_t render_iv_and(render_iv_t a, render_iv_t b)
 {
@@ -272,24 +267,6 @@ static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x
 }
 
 #if FXRT_SPHERE_SEARCH
-/* a * m exactly (mod 2^128, so exact whenever the product fits). */
-static fx128_t render_mul128_small(fx128_t a, int32_t m)
-{
-    uint32_t um = m < 0 ? 0u - (uint32_t)m : (uint32_t)m;
-    uint64_t p0 = (uint64_t)(uint32_t)a.lo * um, p1 = (a.lo >> 32) * um;
-    fx128_t r;
-    r.lo = p0 + (p1 << 32);
-    r.hi = (int64_t)((uint64_t)a.hi * um + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
-    return m < 0 ? fx128_neg(r) : r;
-}
-
-/* q(k) = v + d1 k + d2 k (k - 1) / 2: the value the forward differences
- * reach after k steps, evaluated directly (exact). */
-static fx128_t render_quad_k(fx128_t v, fx128_t d1, fx128_t d2, int32_t k)
-{
-    return fx128_add(fx128_add(v, render_mul128_small(d1, k)), render_mul128_small(d2, (int32_t)((int64_t)k * (k - 1) / 2)));
-}
-
 /* The columns k in 0..kmax where q(k) >= 0, for d2 < 0 (one run or none):
  * q rises while its step d1 + d2 k is positive, then falls, so the peak
  * and both ends are binary searches on monotone predicates. */
@@ -434,65 +411,113 @@ static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
     }
 }
 
-/* Step a sphere, exactly: c and disc are quadratic along the row, so
- * their 128-bit forward differences (second difference constant) give
- * exactly the values render_sphere_cd computes from scratch. The test
- * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the row:
- * in perspective c is, in orthographic b is, and c < 0 implies disc > 0. */
+/* A sphere's row from column x0 (ix0): c and disc are quadratic along
+ * the row, so their 128-bit forward differences (second difference
+ * constant) give exactly the values render_sphere_cd computes from
+ * scratch. The test c < 0 || (b > 0 && disc >= 0) splits by what is
+ * constant along the row: in perspective c is, in orthographic b is, and
+ * c < 0 implies disc > 0. v, d1, d2: the form that decides (c or disc),
+ * its first difference at x0 and its second. */
+typedef struct {
+    fx128_t v, d1, d2;
+    bool ortho, inside, use_c; /* inside: the eye is (every pixel covered) */
+} render_srow_t;
+
+static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0, int32_t iy, render_srow_t *s)
+{
+    fx128_t c[3], q[3];
+    for (int k = 0; k < 3; k++)
+        render_sphere_cd(o, ix0 + 2 * k, iy, &c[k], &q[k]);
+    s->ortho = render_ortho(r->cam);
+    s->inside = !s->ortho && rsw_neg(c[0]);
+    s->use_c = s->ortho && !(o->u.sphere->b.c > 0);
+    const fx128_t *f = s->use_c ? c : q;
+    s->v = f[0];
+    s->d1 = fx128_sub(f[1], f[0]);
+    s->d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
+}
+
+#if !FXRT_NO_SPANS && FXRT_SPHERE_SEARCH
+/* Where b > 0 (the centre's side of the eye) on columns k = 0..kmax. */
+static render_iv_t render_sphere_front(const render_obj_t *o, int32_t ix0, int32_t iy, int32_t kmax)
+{
+    render_iv_t bi[4];
+    render_signs(rlin_at(&o->u.sphere->b, ix0, iy), 2 * o->u.sphere->b.x, kmax, bi);
+    return bi[0];
+}
+#endif
+
+/* The runs of a sphere over columns x0..x1 (k from x0; the same columns
+ * the per-column test covers). At most two: b > 0 is a half-line and disc
+ * >= 0 one interval (disc concave along the row) or the outside of one
+ * (convex); in orthographic views one interval. */
+static int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int32_t x0, int32_t x1, int32_t ix0,
+                              int32_t iy, render_iv_t run[2])
+{
+    int32_t kmax = x1 - x0;
+    if (s->inside) {
+        run[0].lo = 0;
+        run[0].hi = kmax;
+        return 1;
+    }
+#if !FXRT_NO_SPANS && FXRT_SPHERE_SEARCH
+    if (!s->ortho && s->d2.hi < 0) {
+        /* Perspective, disc concave along the row: its run is located by
+         * exact evaluations (binary searches on the monotone sides of the
+         * quadratic) instead of stepping. */
+        run[0] = render_iv_and(render_sphere_run(s->v, s->d1, s->d2, kmax), render_sphere_front(o, ix0, iy, kmax));
+        return run[0].lo <= run[0].hi;
+    }
+#endif
+    /* Stepping: one run when the covered set is an interval (orthographic,
+     * or perspective with disc concave), then stop after it. */
+    bool one_run = s->ortho || s->d2.hi < 0;
+    fx128_t v = s->v, d1 = s->d1;
+    uint64_t b = s->ortho ? 1 : (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = s->ortho ? 0 : 2 * (uint64_t)o->u.sphere->b.x;
+    int n = 0;
+    int32_t start = -1, k;
+    for (k = 0; k <= kmax; k++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, s->d2)) {
+        bool hit = s->ortho ? (s->use_c ? v.hi < 0 : v.hi >= 0) : ((render_k_t)b > 0 && v.hi >= 0);
+        if (hit) {
+            if (start < 0)
+                start = k;
+        } else if (start >= 0) {
+            run[n].lo = start;
+            run[n++].hi = k - 1;
+            start = -1;
+            if (one_run || n == 2)
+                return n;
+        }
+    }
+    if (start >= 0) {
+        run[n].lo = start;
+        run[n++].hi = kmax;
+    }
+    return n;
+}
+
+/* Step a sphere over columns x0..x1: a lone one fills its runs, others
+ * claim each covered column. */
 static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
-    fx128_t c[3], q[3];
-    for (int k = 0; k < 3; k++)
-        render_sphere_cd(o, ix0 + 2 * k, iy, &c[k], &q[k]);
-    bool ortho = render_ortho(r->cam);
-    if (!ortho && rsw_neg(c[0])) { /* eye inside: every pixel */
-        for (int32_t x = x0; x <= x1; x++)
-            RENDER_HIT(r, oi, x, iy, rgb, lone);
-        return;
-    }
-    bool use_c = ortho && !(o->u.sphere->b.c > 0);
-    fx128_t *f = use_c ? c : q;
-    fx128_t v = f[0], d1 = fx128_sub(f[1], f[0]), d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
-#if !FXRT_NO_SPANS && FXRT_SPHERE_SEARCH
-    if (lone && !ortho && d2.hi < 0) {
-        /* Alone, in perspective, disc concave along the row: its run is
-         * located by exact evaluations (binary searches on the monotone
-         * sides of the quadratic) instead of stepping, then filled. */
-        render_iv_t bi[4];
-        render_signs(rlin_at(&o->u.sphere->b, ix0, iy), 2 * o->u.sphere->b.x, x1 - x0, bi);
-        render_iv_t run = render_sphere_run(v, d1, d2, x1 - x0);
-        run = render_iv_and(run, bi[0]);
-        if (run.lo <= run.hi)
-            render_fill(r, oi, x0 + run.lo, x0 + run.hi, rgb);
-        return;
-    }
-#endif
+    render_srow_t s;
+    render_sphere_row(r, o, ix0, iy, &s);
     if (lone) {
-        /* Alone on the row: find each run by stepping and fill it. The
-         * covered set is one run when it is an interval: orthographic
-         * (c < 0 and disc >= 0 are convex and concave in x), perspective
-         * when disc is concave (d2 < 0) - then stop after it. */
-        bool one_run = ortho || d2.hi < 0;
-        uint64_t b = ortho ? 1 : (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = ortho ? 0 : 2 * (uint64_t)o->u.sphere->b.x;
-        int32_t start = -1, x;
-        for (x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
-            bool hit = ortho ? (use_c ? v.hi < 0 : v.hi >= 0) : ((render_k_t)b > 0 && v.hi >= 0);
-            if (hit) {
-                if (start < 0)
-                    start = x;
-            } else if (start >= 0) {
-                render_fill(r, oi, start, x - 1, rgb);
-                start = -1;
-                if (one_run)
-                    return;
-            }
-        }
-        if (start >= 0)
-            render_fill(r, oi, start, x1, rgb);
+        render_iv_t run[2];
+        int nrun = render_sphere_runs(o, &s, x0, x1, ix0, iy, run);
+        for (int k = 0; k < nrun; k++)
+            render_fill(r, oi, x0 + run[k].lo, x0 + run[k].hi, rgb);
         return;
     }
+    if (s.inside) { /* eye inside: every pixel */
+        for (int32_t x = x0; x <= x1; x++)
+            render_cover(r, oi, x, iy, rgb);
+        return;
+    }
+    bool ortho = s.ortho, use_c = s.use_c;
+    fx128_t v = s.v, d1 = s.d1, d2 = s.d2;
     if (ortho) {
         /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
         fx128_t kr = fx128_add(o->u.sphere->k, o->u.sphere->r2);
@@ -500,12 +525,9 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
         for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
             if (!(use_c ? v.hi < 0 : v.hi >= 0))
                 continue;
-            if (lone)
-                render_paint(r, oi, x, rgb);
-            else
-                RENDER_COVER(r, oi, x, rgb,
-                             render_resolve_sphere(r, cur_, oi, x, iy, b, use_c ? v : fx128_sub(kr, v),
-                                                   use_c ? fx128_sub(kr, v) : v));
+            RENDER_COVER(r, oi, x, rgb,
+                         render_resolve_sphere(r, cur_, oi, x, iy, b, use_c ? v : fx128_sub(kr, v),
+                                               use_c ? fx128_sub(kr, v) : v));
         }
         return;
     }
@@ -514,10 +536,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
         if (!((render_k_t)b > 0 && v.hi >= 0))
             continue;
-        if (lone)
-            render_paint(r, oi, x, rgb);
-        else
-            RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (render_k_t)b, k, v));
+        RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (render_k_t)b, k, v));
     }
 }
 #endif
@@ -611,6 +630,248 @@ static bool render_alone(const render_t *r, uint16_t i, int32_t row)
     }
     return true;
 }
+
+#if RENDER_RUNS
+#if FXRT_MAX_SPHERES > 0
+static int32_t render_iy(const cam_t *cam, int32_t row) { return 2 * (cam->height - 1 - row) - cam->height + 1; }
+
+void render_runs_setup(render_t *r, uint16_t i)
+{
+    r->srow[r->obj[i].index].vrow = r->srow[r->obj[i].index].prow = -2;
+}
+
+/* One fine row down the series of render_sphere_row_at. */
+static inline void render_srow_step(render_t *r, uint16_t si)
+{
+    __typeof__(r->srow[0]) *q = &r->srow[si];
+    q->v = fx128_add(q->v, q->dvk);
+    q->dvk = fx128_add(q->dvk, q->ddv);
+    q->d1 = fx128_add(q->d1, q->dd1);
+    q->vrow++;
+}
+
+/* The series on fine row `row` - 1, from the forms on three rows (on the
+ * screen, where every form fits): their differences give it exactly.
+ * One row's forms at a time (the micro:bit's stack). */
+__attribute__((noinline)) static void render_srow_start(render_t *r, const render_obj_t *o, int32_t row)
+{
+    __typeof__(r->srow[0]) *q = &r->srow[o->index];
+    int32_t h = r->cam->height, b = row + 2 < h ? row : h - 3, ix0 = 2 * o->x0 - r->cam->width + 1;
+    render_srow_t f;
+    render_sphere_row(r, o, ix0, render_iy(r->cam, b), &f);
+    q->v = f.v;
+    q->d1 = f.d1;
+    q->d2 = f.d2;
+    render_sphere_row(r, o, ix0, render_iy(r->cam, b + 1), &f);
+    q->dvk = fx128_sub(f.v, q->v);         /* v(b + 1) - v(b) */
+    q->dd1 = fx128_sub(f.d1, q->d1);
+    render_sphere_row(r, o, ix0, render_iy(r->cam, b + 2), &f);
+    q->ddv = fx128_sub(fx128_sub(fx128_sub(f.v, q->v), q->dvk), q->dvk); /* v(b+2) - 2 v(b+1) + v(b) */
+    /* Row b - 1, then down to row - 1. */
+    q->dvk = fx128_sub(q->dvk, q->ddv);
+    q->v = fx128_sub(q->v, q->dvk);
+    q->d1 = fx128_sub(q->d1, q->dd1);
+    q->vrow = b - 1;
+    while (q->vrow < row - 1)
+        render_srow_step(r, o->index);
+}
+
+/* render_sphere_row on fine row `row`, a fine camera of at least three
+ * rows: three additions after the row before. */
+static void render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row, render_srow_t *s)
+{
+    const __typeof__(r->srow[0]) *q = &r->srow[o->index];
+    if (row != q->vrow + 1)
+        render_srow_start(r, o, row);
+    render_srow_step(r, o->index);
+    s->v = q->v;
+    s->d1 = q->d1;
+    s->d2 = q->d2;
+    s->ortho = render_ortho(r->cam);
+    s->inside = !s->ortho && rsw_neg(o->u.sphere->k); /* c = k in perspective */
+    s->use_c = s->ortho && !(o->u.sphere->b.c > 0);
+}
+
+#if FXRT_SPHERE_SEARCH
+/* From column `from`, where (q(k) >= 0) == want, towards `limit` (dir =
+ * +1 or -1): the last column k before the predicate first fails, or
+ * limit. It must be monotone over from..limit. Steps double from the
+ * last column where it held (galloping), then a binary search between
+ * that column and the first where it failed. */
+static int32_t render_gallop(const render_srow_t *s, int32_t from, int32_t dir, int32_t limit, bool want)
+{
+    int32_t good = from, bad = from, step = 1;
+    while (good != limit) {
+        int32_t k = (limit - good) * dir > step ? good + dir * step : limit;
+        if ((render_quad_k(s->v, s->d1, s->d2, k).hi >= 0) == want) {
+            good = k;
+            step *= 2;
+        } else {
+            bad = k;
+            break;
+        }
+    }
+    if (bad == from)
+        return good; /* held up to limit */
+    while ((bad - good) * dir > 1) {
+        int32_t mid = good + (bad - good) / 2;
+        if ((render_quad_k(s->v, s->d1, s->d2, mid).hi >= 0) == want)
+            good = mid;
+        else
+            bad = mid;
+    }
+    return good;
+}
+
+/* render_sphere_run (disc concave along the row: its run of q >= 0 is
+ * one interval) from a guess g, the run of the row before: each end is
+ * found by galloping from the guess's end, over columns where the
+ * predicate is monotone because the run is an interval. When neither
+ * end nor the middle of the guess is in the run, the full search. */
+static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, render_iv_t g)
+{
+    bool in_lo = render_quad_k(s->v, s->d1, s->d2, g.lo).hi >= 0;
+    bool in_hi = g.hi == g.lo ? in_lo : render_quad_k(s->v, s->d1, s->d2, g.hi).hi >= 0;
+    render_iv_t run;
+    if (!in_lo && !in_hi) {
+        /* The run shrank from both sides (or moved, or went): from its
+         * middle when that is still in it. */
+        int32_t mid = g.lo + (g.hi - g.lo) / 2;
+        if (render_quad_k(s->v, s->d1, s->d2, mid).hi < 0)
+            return render_sphere_run(s->v, s->d1, s->d2, kmax);
+        run.lo = render_gallop(s, g.lo, 1, mid, false) + 1;
+        run.hi = render_gallop(s, g.hi, -1, mid, false) - 1;
+        return run;
+    }
+    run.lo = in_lo ? render_gallop(s, g.lo, -1, 0, true) : render_gallop(s, g.lo, 1, g.hi, false) + 1;
+    run.hi = in_hi ? render_gallop(s, g.hi, 1, kmax, true) : render_gallop(s, g.hi, -1, g.lo, false) - 1;
+    return run;
+}
+#endif
+
+/* A lone sphere's runs on fine row `row` (k from its x0): where the
+ * deciding form is concave along the row, one run, found from the row
+ * before's (render_sphere_run_near); otherwise by stepping. */
+static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row, render_iv_t run[2])
+{
+    int32_t ix0 = 2 * o->x0 - r->cam->width + 1, iy = render_iy(r->cam, row);
+    render_srow_t s;
+    render_sphere_row_at(r, o, row, &s);
+#if FXRT_SPHERE_SEARCH
+    int32_t kmax = o->x1 - o->x0;
+    /* The search wants the form as f >= 0, f concave along the row. In
+     * orthographic views decided by c < 0, f = -c - 1 (integers), which is
+     * ~c in two's complement, concave where c is convex. */
+    fx128_t d2 = s.use_c ? fx128_neg(s.d2) : s.d2;
+    if (!s.inside && d2.hi < 0) {
+        if (s.use_c) {
+            s.v.lo = ~s.v.lo;
+            s.v.hi = ~s.v.hi;
+            s.d1 = fx128_neg(s.d1);
+            s.d2 = d2;
+        }
+        __typeof__(r->srow[0]) *q = &r->srow[o->index];
+        render_iv_t g = {q->plo, q->phi};
+        render_iv_t disc = q->prow == row - 1 && g.lo <= g.hi ? render_sphere_run_near(&s, kmax, g)
+                                                             : render_sphere_run(s.v, s.d1, s.d2, kmax);
+        q->prow = row;
+        q->plo = (int16_t)disc.lo;
+        q->phi = (int16_t)disc.hi;
+        if (disc.lo > disc.hi)
+            return 0;
+        /* Perspective also needs b > 0. b is linear along the row: > 0 at
+         * both ends of the run, > 0 on all of it (no division needed). In
+         * orthographic views f decides alone. */
+        const render_lin_t *b = &o->u.sphere->b;
+        if (s.ortho || (rlin_at(b, ix0 + 2 * disc.lo, iy) > 0 && rlin_at(b, ix0 + 2 * disc.hi, iy) > 0)) {
+            run[0] = disc;
+            return 1;
+        }
+        run[0] = render_iv_and(disc, render_sphere_front(o, ix0, iy, kmax));
+        return run[0].lo <= run[0].hi;
+    }
+#endif
+    return render_sphere_runs(o, &s, o->x0, o->x1, ix0, iy, run);
+}
+#endif
+
+/* Append the non-empty runs iv[0..k-1] (k from x0) of object oi to
+ * out[0..n-1]; -1 when that would pass cap. */
+static int render_runs_push(render_run_t *out, int n, int cap, int32_t x0, const render_iv_t *iv, int k, uint16_t oi)
+{
+    for (int i = 0; i < k && n >= 0; i++) {
+        if (iv[i].lo > iv[i].hi)
+            continue;
+        if (n == cap)
+            return -1;
+        out[n].a = (int16_t)(x0 + iv[i].lo);
+        out[n].b = (int16_t)(x0 + iv[i].hi);
+        out[n++].oi = oi;
+    }
+    return n;
+}
+
+int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
+{
+    int32_t iy = 2 * (r->cam->height - 1 - row) - r->cam->height + 1;
+    int n = 0;
+    if (r->cam->height < 3)
+        return -1; /* the spheres' row series need three rows */
+    for (uint16_t i = 0; i < r->count && n >= 0; i++) {
+        const render_obj_t *o = &r->obj[i];
+        if (row < o->r0 || row > o->r1 || o->x0 > o->x1)
+            continue;
+        if (!o->flat || !render_alone(r, i, row))
+            return -1;
+        render_iv_t iv[4];
+        switch (o->kind) {
+        case RENDER_ALL:
+            iv[0].lo = 0;
+            iv[0].hi = o->x1 - o->x0;
+            n = render_runs_push(out, n, cap, o->x0, iv, 1, i);
+            break;
+#if FXRT_MAX_SPHERES > 0
+        case RENDER_SPHERE:
+            n = render_runs_push(out, n, cap, o->x0, iv, render_sphere_runs_at(r, o, row, iv), i);
+            break;
+#endif
+        case RENDER_FLAT:
+            n = render_runs_push(out, n, cap, o->x0, iv, render_runs_flat(r, o->u.flat, o->x0, o->x1, iy, iv), i);
+            break;
+        case RENDER_BOX:
+            for (int k = 0; k < o->nflat && n >= 0; k++) {
+                const render_face_t *fc = &o->u.face[k];
+                if (row < fc->r0 || row > fc->r1 || fc->x0 > fc->x1)
+                    continue;
+                n = render_runs_push(out, n, cap, fc->x0, iv, render_runs_flat(r, &fc->f, fc->x0, fc->x1, iy, iv), i);
+            }
+            break;
+        }
+    }
+    if (n <= 0)
+        return n;
+    /* In column order (insertion: few runs), one object's overlapping or
+     * touching runs (a box's faces) merged. Lone objects' columns do not
+     * meet, so runs of two objects never overlap. */
+    for (int i = 1; i < n; i++) {
+        render_run_t t = out[i];
+        int j = i;
+        for (; j > 0 && out[j - 1].a > t.a; j--)
+            out[j] = out[j - 1];
+        out[j] = t;
+    }
+    int m = 0;
+    for (int i = 1; i < n; i++) {
+        if (out[i].oi == out[m].oi && out[i].a <= out[m].b + 1) {
+            if (out[i].b > out[m].b)
+                out[m].b = out[i].b;
+        } else {
+            out[++m] = out[i];
+        }
+    }
+    return m + 1;
+}
+#endif
 
 /* The visibility pass of one row: every object's coverage, the nearest
  * owner of each column, flat colours painted (and r->vis recorded for the

@@ -51,6 +51,12 @@ static inline bool render_sample_flat(const render_t *r, uint16_t oi)
     return oi == RENDER_VIS_NONE || r->obj[oi].flat;
 }
 
+/* One sample of a flat owner or the background, clamped, in sum units. */
+static inline const color_sum_t *render_sample_one(const render_t *r, uint16_t oi)
+{
+    return oi == RENDER_VIS_NONE ? r->bg_one : r->obj[oi].one;
+}
+
 /* uni[x] while an output pixel's samples so far all had one flat owner
  * (or the background): that owner; RENDER_UNI_MIXED once they did not (its
  * sum is then in acc). A pixel that stays uniform is that owner's colour,
@@ -87,10 +93,10 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
             if (j == 0) {
                 a[0] = a[1] = a[2] = 0;
             } else {
-                const color_sum_t *c = u == RENDER_VIS_NONE ? r->bg_sum : r->obj[u].sum;
-                a[0] = c[0] * (color_sum_t)j;
-                a[1] = c[1] * (color_sum_t)j;
-                a[2] = c[2] * (color_sum_t)j;
+                const color_sum_t *c = render_sample_one(r, u), nj = (color_sum_t)j;
+                a[0] = c[0] * (color_sum_t)n * nj;
+                a[1] = c[1] * (color_sum_t)n * nj;
+                a[2] = c[2] * (color_sum_t)n * nj;
             }
             r->uni[x] = RENDER_UNI_MIXED;
         }
@@ -99,10 +105,10 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
         for (int32_t i = 1; i < n && one; i++)
             one = v[i] == oi;
         if (one && render_sample_flat(r, oi)) {
-            const color_sum_t *c = oi == RENDER_VIS_NONE ? r->bg_sum : r->obj[oi].sum;
-            a[0] += c[0];
-            a[1] += c[1];
-            a[2] += c[2];
+            const color_sum_t *c = render_sample_one(r, oi);
+            a[0] += c[0] * (color_sum_t)n;
+            a[1] += c[1] * (color_sum_t)n;
+            a[2] += c[2] * (color_sum_t)n;
             continue;
         }
         for (int32_t i = 0; i < n; i++) {
@@ -184,6 +190,88 @@ static bool render_adaptive_need(render_t *r, int32_t row)
 }
 #endif
 
+#if RENDER_RUNS
+/* Run mode (the fast Q16.16 loop, when every object on the N fine rows of
+ * output row `row` is flat and alone on its row): each fine row as runs
+ * of one owner (render_row_runs), no per-column owners. Walking the N
+ * rows' runs together splits the fine columns into intervals on which
+ * every fine row has one owner. An output pixel inside an interval whose
+ * N owners are one object (or the background) is that colour, filled with
+ * word stores; every other pixel sums m times each row's colour for each
+ * interval of m columns it meets. The sums are those of the per-sample
+ * pass, so the image is the same. Returns false (nothing written) when a
+ * fine row cannot be put as runs. Lit objects take the per-sample pass:
+ * their N x N shadings cost far more than the visibility, and that pass
+ * keeps the shading's stack off this one's. */
+__attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t row, uint8_t *rgb, const bool *need)
+{
+    int32_t n = r->samples, W = r->cam->width;
+    int used = 0, cap = r->run_cap < FXRT_SAMPLE_RUNS ? r->run_cap : FXRT_SAMPLE_RUNS;
+    r->run_at[0] = 0;
+    for (int32_t j = 0; j < n; j++) {
+        int k = render_row_runs(r, row * n + j, r->runs + used, cap - used);
+        if (k < 0)
+            return false;
+        used += k;
+        r->run_at[j + 1] = (uint16_t)used;
+    }
+    uint16_t at[FXRT_MAX_SAMPLES], u[FXRT_MAX_SAMPLES];
+    for (int32_t j = 0; j < n; j++)
+        at[j] = r->run_at[j];
+    uint32_t n2 = (uint32_t)(n * n);
+    for (int32_t a = 0, b; a < W; a = b) {
+        /* The interval a..b-1: each row's owner at a, up to the first
+         * change in any row. */
+        b = W;
+        bool one = true;
+        color_sum_t f[3] = {0, 0, 0}; /* one sample of each row's owner, summed */
+        for (int32_t j = 0; j < n; j++) {
+            int32_t end = r->run_at[j + 1];
+            while (at[j] < end && r->runs[at[j]].b < a)
+                at[j]++;
+            const render_run_t *q = at[j] < end ? &r->runs[at[j]] : NULL;
+            if (q && q->a <= a) {
+                u[j] = q->oi;
+                if (q->b + 1 < b)
+                    b = q->b + 1;
+            } else {
+                u[j] = RENDER_VIS_NONE;
+                if (q && q->a < b)
+                    b = q->a;
+            }
+            one = one && u[j] == u[0];
+            const color_sum_t *c = render_sample_one(r, u[j]);
+            f[0] += c[0];
+            f[1] += c[1];
+            f[2] += c[2];
+        }
+        for (int32_t x = a / n, X0 = x * n; X0 < b; x++, X0 += n) {
+            int32_t c0 = a > X0 ? a : X0, c1 = b < X0 + n ? b : X0 + n;
+            if (need && !need[x])
+                continue;
+            if (one && c0 == X0 && c1 == X0 + n) {
+                /* Whole pixels of one owner: x .. xe at once. */
+                int32_t xe = need ? x : b / n - 1;
+                render_fill_rgb(rgb, x, xe, u[0] == RENDER_VIS_NONE ? r->world->background_rgb : r->obj[u[0]].rgb);
+                x = xe;
+                X0 = xe * n;
+                continue;
+            }
+            color_sum_t *s = &r->acc[3 * x], m = (color_sum_t)(c1 - c0);
+            if (c0 == X0)
+                s[0] = s[1] = s[2] = 0;
+            s[0] += f[0] * m;
+            s[1] += f[1] * m;
+            s[2] += f[2] * m;
+            if (c1 == X0 + n)
+                render_sample_put(rgb, x, color_sum_out(s[0], n2), color_sum_out(s[1], n2), color_sum_out(s[2], n2));
+        }
+    }
+    r->run_rows++;
+    return true;
+}
+#endif
+
 void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
 {
     int32_t n = r->samples, w = r->out_cam->width;
@@ -198,6 +286,10 @@ void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
             return;
         need = r->need;
     }
+#endif
+#if RENDER_RUNS
+    if (!reference && render_sample_runs(r, row, rgb, need))
+        return;
 #endif
     for (int32_t j = 0; j < n; j++)
         render_sample_fine(r, row, j, reference, need);

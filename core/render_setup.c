@@ -654,14 +654,13 @@ void render_setup_object(render_t *r, uint16_t i)
 
 /* Register an object of the world in scene-array order. */
 #if FXRT_MAX_SAMPLES > 1
-/* sum = n samples of colour c (the sampling pass adds it for a run of n
- * fine columns with one flat owner). */
-static void render_sum_n(color_sum_t sum[3], color_t c, int32_t n)
+/* One sample of colour c, clamped, in the sampling pass's sum units. */
+static void render_sum_one(color_sum_t one[3], color_t c)
 {
-    sum[0] = sum[1] = sum[2] = 0;
-    color_sum_add(&sum[0], c.r, (uint32_t)n);
-    color_sum_add(&sum[1], c.g, (uint32_t)n);
-    color_sum_add(&sum[2], c.b, (uint32_t)n);
+    one[0] = one[1] = one[2] = 0;
+    color_sum_add(&one[0], c.r, 1);
+    color_sum_add(&one[1], c.g, 1);
+    color_sum_add(&one[2], c.b, 1);
 }
 #endif
 
@@ -683,7 +682,7 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
 #else
     o->flat = true;
 #endif
-    render_sum_n(o->sum, c->color, r->samples);
+    render_sum_one(o->one, c->color);
 #endif
     switch (kind) {
     case GEOM_PLANE:
@@ -708,6 +707,10 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
         break;
     }
     render_setup_object(r, i);
+#if RENDER_RUNS && FXRT_MAX_SPHERES > 0
+    if (kind == GEOM_SPHERE && r->samples > 1)
+        render_runs_setup(r, i);
+#endif
 #if FXRT_MAX_BOXES > 0
     if (kind == GEOM_BOX)
         r->box_used = (uint16_t)(r->box_used + o->nflat);
@@ -732,9 +735,13 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
             return false;
         }
         cam = &r->fine;
-        render_sum_n(r->bg_sum, w->background, r->samples);
+        render_sum_one(r->bg_one, w->background);
 #if FXRT_ADAPTIVE
         r->arow[0] = r->arow[1] = r->arow[2] = -1;
+#endif
+#if RENDER_RUNS
+        r->run_cap = FXRT_SAMPLE_RUNS;
+        r->run_rows = 0;
 #endif
     }
 #endif

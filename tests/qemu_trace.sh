@@ -6,7 +6,9 @@
 #      microbit) holding every scenes/trace/ scene, every
 #      scenes/stress/trace-* scene and two variants made here, the
 #      reflection scene at `samples 2` and the glass scene at
-#      `samples 2 adaptive`, at $SIZE, frames streamed row by row. On the
+#      `samples 2 adaptive`, and seed scenes supersampled (abb9 at
+#      samples 4, abb10 and abb8 at 2, abb7 at 2 adaptive: the sampling
+#      pass from runs), at $SIZE, frames streamed row by row. On the
 #      micro:bit (16 KB) the scenes at samples 3 or more have ELFs of
 #      their own (one per render width); a batch that still overflows has its heaviest scene (the widest
 #      render state, then the deepest) moved to an ELF of its own, which
@@ -45,8 +47,15 @@ variant() { # SCENE SAMPLES-LINE OUT
 }
 variant scenes/trace/reflection.scene "samples 2" "$out/variants/reflection-s2.scene"
 variant scenes/trace/glass.scene "samples 2 adaptive" "$out/variants/glass-s2a.scene"
+# Seed scenes supersampled: every object alone on its rows, so the
+# sampling pass works from runs (spheres in perspective and orthographic
+# views, a box, a triangle; adaptive too).
+variant scenes/abb9-two-spheres.scene "samples 4" "$out/variants/abb9-s4.scene"
+variant scenes/abb10-two-spheres-ortho.scene "samples 2" "$out/variants/abb10-s2.scene"
+variant scenes/abb7-box.scene "samples 2 adaptive" "$out/variants/abb7-s2a.scene"
+variant scenes/abb8-triangle.scene "samples 2" "$out/variants/abb8-s2.scene"
 scenes=(scenes/trace/*.scene scenes/stress/trace-*.scene "$out/variants/reflection-s2.scene"
-    "$out/variants/glass-s2a.scene")
+    "$out/variants/glass-s2a.scene" "$out"/variants/abb*.scene)
 check "scenes/trace/ has the reflection, glass and supersample scenes" \
     test -f scenes/trace/reflection.scene -a -f scenes/trace/glass.scene -a -f scenes/trace/supersample.scene
 check "scenes/stress/ has trace-* scenes, trace-mirrors among them" test -f scenes/stress/trace-mirrors.scene
@@ -184,8 +193,9 @@ for b in $BOARDS; do
     np=$(grep -c "^PASS $b " "$out/onb-$b.txt")
     check "$b: every trace scene ran on board byte-identical to the host q16 render ($np of ${#scenes[@]})" \
         test "$np" -eq "${#scenes[@]}"
-    for n in reflection-s2 glass-s2a; do
-        check "$b: $n (samples 2$([ $n = glass-s2a ] && echo ' adaptive')) on board == host" \
+    check "$b: no batch failed (exit status, stack margin)" test "$(grep -c "^FAIL $b batch" "$out/onb-$b.txt")" -eq 0
+    for n in reflection-s2 glass-s2a abb9-s4 abb10-s2 abb7-s2a abb8-s2; do
+        check "$b: $n ($(tail -n 1 "$out/variants/$n.scene")) on board == host" \
             grep -q "^PASS $b $n " "$out/onb-$b.txt"
     done
 done

@@ -1572,6 +1572,143 @@ static void test_render_eye_on_box(void)
     CHECK_MSG(tally.rows_bad == 0, "%ld rows differ between render_row and render_row_reference", tally.rows_bad);
 }
 
+/* Supersampling from runs (core/render_sample.c, run mode): random worlds
+ * of 1 to 6 objects of every kind spread across the view (so that on most
+ * rows each is alone; some overlap, which takes the per-sample pass), a
+ * plane in some, both camera kinds, the eye inside a sphere in some,
+ * arbitrary colours, output sizes 9..40 x 7..30, samples 2..5, adaptive in
+ * some, and in some frames a run cap of 1..6 (the pass gives up part-way
+ * through a row and the per-sample pass takes it). render_row must equal
+ * render_row_reference byte for byte; an output pixel whose N x N fine
+ * rays and their fine neighbours all see one object through the
+ * world-space kernels (cam_fine rays, no near ties) must show that
+ * object's colour (the background where they see none). In Q16.16 the
+ * run mode must take at least a third of the output rows and the
+ * per-sample pass some. Cap: 0 wrong. */
+static void test_render_runs(void)
+{
+#if FXRT_MAX_SAMPLES > 1
+    uint64_t st = 0x52554e53ull;
+    enum { FW = 5 * OW + 2, FH = 5 * OH + 2 };
+    static int fid[FH][FW]; /* fine ids, with a border of -2 (matches nothing but is skipped) */
+    static bool ftie[FH][FW];
+    static rgb8_t fwant[FH][FW];
+    long rows = 0, rows_bad = 0, interior = 0, interior_bad = 0, objects_px = 0;
+    unsigned long run_rows = 0;
+    for (int it = 0; it < 160; it++) {
+        world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
+        uint16_t id = 0;
+        int nobj = 1 + (int)(check_rng_next(&st) % 6);
+        double spread = orand(&st, 0.7, 1.3); /* below 1: objects more likely to overlap */
+        for (int i = 0; i < nobj; i++) {
+            double x = -3.2 + 6.4 * (i + 0.5) / nobj * spread, y = orand(&st, -1.5, 1.5), z = orand(&st, -8, -4);
+            double s = orand(&st, 0.2, 1.4) * 3 / (nobj + 1);
+            color_t cc = col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1));
+            switch (check_rng_next(&st) % 3) {
+            case 0:
+                if (geom_sphere_make(&world.spheres[world.n_spheres], V3(x, y, z), N(s), cc, id))
+                    world.n_spheres++, id++;
+                break;
+            case 1:
+                if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x - s, y - s, z),
+                                       V3(x + s * orand(&st, -1, 1), y + s, z + orand(&st, -1, 1)),
+                                       V3(x + s, y + s * orand(&st, -1, 1), z + orand(&st, -1, 1)), cc, id))
+                    world.n_triangles++, id++;
+                break;
+            default:
+                if (geom_box_make(&world.boxes[world.n_boxes], V3(x - s, y - s, z - s),
+                                  V3(x + s * orand(&st, 0.2, 1), y + s * orand(&st, 0.2, 1), z + s * orand(&st, 0.2, 1)),
+                                  cc, id))
+                    world.n_boxes++, id++;
+                break;
+            }
+        }
+        if (it % 5 == 4 && geom_plane_make(&world.planes[0], V3(0, orand(&st, -4, -2), 0),
+                                           V3(orand(&st, -0.2, 0.2), 1, orand(&st, -0.2, 0.2)),
+                                           col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+            world.n_planes = 1, id++;
+        bool ortho = it % 4 == 3, inside = it % 11 == 5 && world.n_spheres > 0;
+        vec3_t eye = V3(orand(&st, -0.5, 0.5), orand(&st, -0.5, 0.5), orand(&st, 0, 1));
+        if (inside)
+            eye = world.spheres[0].center;
+        int32_t ow = 9 + (int32_t)(check_rng_next(&st) % (OW - 8)), oh = 7 + (int32_t)(check_rng_next(&st) % (OH - 6));
+        int32_t n = 2 + (int32_t)(check_rng_next(&st) % 4);
+        if (n > FXRT_MAX_SAMPLES)
+            n = FXRT_MAX_SAMPLES;
+        bool adaptive = FXRT_ADAPTIVE && it % 3 == 1;
+        CHECK(world_set_samples(&world, n, adaptive) == FXRT_OK);
+        cam_t c, fine;
+        CHECK(cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, eye, V3(orand(&st, -0.1, 0.1), 0, -1),
+                        V3(0, 1, 0), N(orand(&st, 40, 80)), N(orand(&st, 6, 10)), ow, oh) == CAM_OK);
+        CHECK(cam_fine(&c, n, &fine) == CAM_OK);
+        static render_t state;
+        CHECK(render_setup(&state, &world, &c));
+#if RENDER_RUNS
+        if (it % 7 == 6)
+            state.run_cap = (uint16_t)(1 + check_rng_next(&st) % 6);
+#endif
+        int32_t fw = n * ow, fh = n * oh;
+        for (int32_t Y = -1; Y <= fh; Y++)
+            for (int32_t X = -1; X <= fw; X++) {
+                int *id_out = &fid[Y + 1][X + 1];
+                if (Y < 0 || X < 0 || Y == fh || X == fw) {
+                    *id_out = -2;
+                    continue;
+                }
+                ray_t r;
+                num_t t1, t2;
+                cam_ray(&fine, X, fh - 1 - Y, &r);
+                *id_out = oracle_pixel(&r, &t1, &t2, &fwant[Y + 1][X + 1]);
+                ftie[Y + 1][X + 1] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
+            }
+        for (int32_t row = 0; row < oh; row++) {
+            uint8_t fast[3 * OW], ref[3 * OW];
+            render_row(&state, row, fast);
+            render_row_reference(&state, row, ref);
+            rows++;
+            if (memcmp(fast, ref, 3 * (size_t)ow) != 0) {
+                rows_bad++;
+                CHECK_SWEEP(false, "runs %d (%s, samples %d%s, %dx%d) row %d: fast != reference", it,
+                            ortho ? "ortho" : "persp", (int)n, adaptive ? " adaptive" : "", (int)ow, (int)oh, (int)row);
+            }
+            /* Pixels whose fine rays and their neighbours agree. */
+            for (int32_t x = 0; x < ow; x++) {
+                int k = fid[row * n + 1][x * n + 1];
+                bool same = true;
+                for (int32_t Y = row * n; Y <= row * n + n + 1 && same; Y++)
+                    for (int32_t X = x * n; X <= x * n + n + 1 && same; X++)
+                        same = (fid[Y][X] == k || fid[Y][X] == -2) && !ftie[Y][X];
+                if (!same)
+                    continue;
+                interior++;
+                objects_px += k >= 0;
+                rgb8_t w = fwant[row * n + 1][x * n + 1];
+                const uint8_t *p = &fast[3 * x];
+                if (p[0] != w.r || p[1] != w.g || p[2] != w.b) {
+                    interior_bad++;
+                    CHECK_SWEEP(false, "runs %d row %d x %d: got %d %d %d, want %d %d %d (object %d)", it, (int)row,
+                                (int)x, p[0], p[1], p[2], w.r, w.g, w.b, k);
+                }
+            }
+        }
+#if RENDER_RUNS
+        run_rows += state.run_rows;
+#endif
+    }
+    printf("runs: %ld rows (%lu from runs), %ld interior pixels checked (%ld on objects), %ld wrong, %ld rows fast != "
+           "reference\n",
+           rows, run_rows, interior, objects_px, interior_bad, rows_bad);
+    CHECK_MSG(interior > 20000 && objects_px > 5000, "too few pixels exercised: %ld interior, %ld on objects", interior,
+              objects_px);
+    CHECK_MSG(interior_bad == 0, "%ld interior pixels differ from the kernels' nearest object", interior_bad);
+    CHECK_MSG(rows_bad == 0, "%ld rows differ between render_row and render_row_reference", rows_bad);
+#if RENDER_RUNS
+    CHECK_MSG(run_rows * 3 >= (unsigned long)rows && run_rows < (unsigned long)rows,
+              "run mode took %lu of %ld rows (want at least a third, not all)", run_rows, rows);
+#endif
+#endif
+}
+
 int main(void)
 {
     test_color_rule();
@@ -1596,5 +1733,6 @@ int main(void)
     test_render();
     test_render_overlap();
     test_render_eye_on_box();
+    test_render_runs();
     return check_report("test_geom_" NUM_NAME);
 }
