@@ -105,24 +105,27 @@ typedef struct {
     render_k_t c, x, y, xx, xy, yy;
 } render_quad_t;
 
-/* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
-typedef struct {
-    render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
-    render_lin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
-    uint8_t edges;
-    int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
-} render_flat_t;
-
-/* The per-column owner array of the shading and sampling passes exists
- * when some pass reads it. */
-#define RENDER_VIS (FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1)
-
 /* Run mode of the sampling pass (core/render_sample.c): the fast Q16.16
  * loop, with spans, lone objects and bounds, can describe a fine row as
  * runs of one owner each instead of one owner per column. */
 #define RENDER_RUNS                                                                                         \
     (FXRT_MAX_SAMPLES > 1 && FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS && !FXRT_NO_LONE && \
      !FXRT_NO_BOUNDS)
+/* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
+typedef struct {
+    render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
+    render_lin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
+    uint8_t edges;
+    int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
+#if RENDER_RUNS
+    int16_t hint[6]; /* run mode: where each form (N, D, edges) changed sign on the row before */
+#endif
+} render_flat_t;
+
+/* The per-column owner array of the shading and sampling passes exists
+ * when some pass reads it. */
+#define RENDER_VIS (FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1)
+
 #if RENDER_RUNS
 /* Fine columns a..b (inclusive) of one fine row belong to object oi. */
 typedef struct {

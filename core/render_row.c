@@ -237,21 +237,80 @@ static void render_signs(int64_t a, int64_t b, int32_t kmax, render_iv_t iv[4])
     iv[3] = flip ? nonneg : nonpos;
 }
 
+#if RENDER_RUNS
+/* render_signs without a division: from a guess *g of the first column
+ * where the form, taken increasing (negated when b < 0), is >= 0 (the row
+ * before's, for run mode), by galloping and a binary search on that
+ * monotone predicate, with one multiply-add per evaluation; *g is updated.
+ * Any guess gives the exact answer; a near one takes two evaluations. */
+static void render_signs_near(int64_t a, int64_t b, int32_t kmax, int16_t *g, render_iv_t iv[4])
+{
+    if (b == 0) {
+        render_signs(a, b, kmax, iv);
+        return;
+    }
+    bool flip = b < 0;
+    uint64_t ua = (uint64_t)(flip ? -a : a), ub = (uint64_t)(flip ? -b : b);
+#define RENDER_GE(k) ((int64_t)(ua + ub * (uint64_t)(k)) >= 0) /* k on the row: the value fits */
+    int32_t k = *g < 0 ? 0 : (*g > kmax + 1 ? kmax + 1 : *g), lo, hi, s = 1;
+    if (k <= kmax && !RENDER_GE(k)) { /* the first >= 0 is to the right (kmax + 1: none) */
+        for (lo = k;; lo = hi, s *= 2) {
+            hi = lo + s;
+            if (hi > kmax) {
+                hi = kmax + 1;
+                break;
+            }
+            if (RENDER_GE(hi))
+                break;
+        }
+    } else { /* at k or to its left (-1: none) */
+        for (hi = k;; hi = lo, s *= 2) {
+            lo = hi - s;
+            if (lo < 0) {
+                lo = -1;
+                break;
+            }
+            if (!RENDER_GE(lo))
+                break;
+        }
+    }
+    while (hi - lo > 1) {
+        int32_t mid = lo + (hi - lo) / 2;
+        if (RENDER_GE(mid))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    bool exact = hi <= kmax && ua + ub * (uint64_t)hi == 0;
+#undef RENDER_GE
+    *g = (int16_t)hi;
+    render_iv_t pos = {exact ? hi + 1 : hi, kmax}, nonneg = {hi, kmax}, neg = {0, hi - 1}, nonpos = {0, exact ? hi : hi - 1};
+    iv[0] = flip ? neg : pos;
+    iv[1] = flip ? nonpos : nonneg;
+    iv[2] = flip ? pos : neg;
+    iv[3] = flip ? nonneg : nonpos;
+}
+#define RENDER_SIGNS(a, b, kmax, hint, iv) ((hint) ? render_signs_near(a, b, kmax, hint, iv) : render_signs(a, b, kmax, iv))
+#else
+#define RENDER_SIGNS(a, b, kmax, hint, iv) ((void)(hint), render_signs(a, b, kmax, iv))
+#endif
+
 /* A flat piece's hits on columns x0..x1 as at most four runs (k from
  * x0, possibly overlapping), found exactly from its forms: the same sign
  * tests as the stepping loop (N and D of one strict sign, edges all >= 0
- * or all <= 0). Returns the number of runs. */
+ * or all <= 0). Returns the number of runs. hint (run mode; NULL: none):
+ * per form (N, D, the edges) the guesses of render_signs_near. */
 static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
-                            render_iv_t run[4])
+                            int16_t *hint, render_iv_t run[4])
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0;
     render_iv_t n[4], d[4], e[4], ge = {0, kmax}, le = {0, kmax};
-    render_signs(rlin_at(&f->n, ix0, iy), 2 * f->n.x, kmax, n);
-    render_signs(rlin_at(&f->d, ix0, iy), 2 * f->d.x, kmax, d);
+    RENDER_SIGNS(rlin_at(&f->n, ix0, iy), 2 * f->n.x, kmax, hint, n);
+    RENDER_SIGNS(rlin_at(&f->d, ix0, iy), 2 * f->d.x, kmax, hint ? hint + 1 : NULL, d);
     render_iv_t front[2] = {render_iv_and(n[0], d[0]), render_iv_and(n[2], d[2])};
     for (int k = 0; k < f->edges; k++) {
         const render_lin_t *ek = render_edge_k(f, k);
-        render_signs(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, e);
+        RENDER_SIGNS(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, e);
         ge = render_iv_and(ge, e[1]);
         le = render_iv_and(le, e[3]);
     }
@@ -314,7 +373,7 @@ static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
                              uint8_t *rgb)
 {
     render_iv_t run[4];
-    int nrun = render_runs_flat(r, f, x0, x1, iy, run);
+    int nrun = render_runs_flat(r, f, x0, x1, iy, NULL, run);
     for (int k = 0; k < nrun; k++)
         render_fill(r, oi, x0 + run[k].lo, x0 + run[k].hi, rgb);
 }
@@ -338,7 +397,7 @@ static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
      * column claimed (a depth, where one is needed, from the forms). */
     if (f->edges == 0 && x1 - x0 >= 8) {
         render_iv_t iv[4];
-        int nrun = render_runs_flat(r, f, x0, x1, iy, iv);
+        int nrun = render_runs_flat(r, f, x0, x1, iy, NULL, iv);
         uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
         for (int k = 0; k < nrun; k++) {
             int32_t a = x0 + iv[k].lo, b = x0 + iv[k].hi;
@@ -836,14 +895,15 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
             break;
 #endif
         case RENDER_FLAT:
-            n = render_runs_push(out, n, cap, o->x0, iv, render_runs_flat(r, o->u.flat, o->x0, o->x1, iy, iv), i);
+            n = render_runs_push(out, n, cap, o->x0, iv, render_runs_flat(r, o->u.flat, o->x0, o->x1, iy, o->u.flat->hint, iv), i);
             break;
         case RENDER_BOX:
             for (int k = 0; k < o->nflat && n >= 0; k++) {
-                const render_face_t *fc = &o->u.face[k];
+                render_face_t *fc = &o->u.face[k];
                 if (row < fc->r0 || row > fc->r1 || fc->x0 > fc->x1)
                     continue;
-                n = render_runs_push(out, n, cap, fc->x0, iv, render_runs_flat(r, &fc->f, fc->x0, fc->x1, iy, iv), i);
+                n = render_runs_push(out, n, cap, fc->x0, iv,
+                                     render_runs_flat(r, &fc->f, fc->x0, fc->x1, iy, fc->f.hint, iv), i);
             }
             break;
         }
