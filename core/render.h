@@ -151,6 +151,18 @@ typedef struct {
 } render_depth_t;
 #endif
 
+#if FXRT_NUMBER == FXRT_Q16
+/* A sphere on one row from a column x0 (core/render_row.c): the test
+ * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the
+ * row: in perspective c is, in orthographic b is, and c < 0 implies
+ * disc > 0. v, d1, d2: the form that decides (c, when use_c, or disc) at
+ * x0, its first difference there and its (constant) second difference. */
+typedef struct {
+    fx128_t v, d1, d2;
+    bool ortho, inside, use_c; /* inside: the eye is (every pixel covered) */
+} render_srow_t;
+#endif
+
 /* A sphere's forms. disc = r2 a - (px^2 + py^2 + pz^2) and c: with the
  * eye at o, centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
  * (the same as b^2 - a c, without its cancellation).
@@ -264,15 +276,15 @@ typedef struct {
     color_sum_t acc[3 * RENDER_OUT_COLS];
     uint16_t uni[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
 #if RENDER_RUNS && FXRT_MAX_SPHERES > 0
-    /* Run mode, per sphere: the decisive form (c or disc) at its first
-     * column x0 is quadratic in the fine row, exactly in 128 bits. On fine
-     * row vrow: its value v, v(next row) - v, and d1, its first
-     * difference along the row; ddv and dd1, how those two change per
-     * row; d2, its (constant) second difference along the row. plo..phi:
-     * its run of f >= 0 on fine row prow (columns from x0), which guesses
-     * the next row's. */
+    /* Run mode, per sphere: the deciding form at its first column x0 is
+     * quadratic in the fine row, exactly in 128 bits. cur holds it on
+     * fine row vrow (v, d1, d2 as render_srow_t); dvk = v(next row) - v;
+     * ddv and dd1, how dvk and d1 change per row. plo..phi: its run of
+     * f >= 0 on fine row prow (columns from x0), which guesses the next
+     * row's. */
     struct {
-        fx128_t v, dvk, d1, ddv, dd1, d2;
+        render_srow_t cur; /* v, d1, d2 on fine row vrow */
+        fx128_t dvk, ddv, dd1;
         int32_t vrow, prow;
         int16_t plo, phi;
     } srow[FXRT_MAX_SPHERES];

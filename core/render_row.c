@@ -325,7 +325,7 @@ static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x
     return nrun;
 }
 
-#if FXRT_SPHERE_SEARCH
+#if FXRT_SPHERE_SEARCH || RENDER_RUNS
 /* The columns k in 0..kmax where q(k) >= 0, for d2 < 0 (one run or none):
  * q rises while its step d1 + d2 k is positive, then falls, so the peak
  * and both ends are binary searches on monotone predicates. */
@@ -470,17 +470,10 @@ static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
     }
 }
 
-/* A sphere's row from column x0 (ix0): c and disc are quadratic along
- * the row, so their 128-bit forward differences (second difference
- * constant) give exactly the values render_sphere_cd computes from
- * scratch. The test c < 0 || (b > 0 && disc >= 0) splits by what is
- * constant along the row: in perspective c is, in orthographic b is, and
- * c < 0 implies disc > 0. v, d1, d2: the form that decides (c or disc),
- * its first difference at x0 and its second. */
-typedef struct {
-    fx128_t v, d1, d2;
-    bool ortho, inside, use_c; /* inside: the eye is (every pixel covered) */
-} render_srow_t;
+/* A sphere's row from column x0 (ix0), render_srow_t (render.h): c and
+ * disc are quadratic along the row, so their 128-bit forward differences
+ * (second difference constant) give exactly the values render_sphere_cd
+ * computes from scratch. */
 
 static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0, int32_t iy, render_srow_t *s)
 {
@@ -496,7 +489,7 @@ static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t 
     s->d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
 }
 
-#if !FXRT_NO_SPANS && FXRT_SPHERE_SEARCH
+#if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_RUNS)
 /* Where b > 0 (the centre's side of the eye) on columns k = 0..kmax. */
 static render_iv_t render_sphere_front(const render_obj_t *o, int32_t ix0, int32_t iy, int32_t kmax)
 {
@@ -703,9 +696,9 @@ void render_runs_setup(render_t *r, uint16_t i)
 static inline void render_srow_step(render_t *r, uint16_t si)
 {
     __typeof__(r->srow[0]) *q = &r->srow[si];
-    q->v = fx128_add(q->v, q->dvk);
+    q->cur.v = fx128_add(q->cur.v, q->dvk);
     q->dvk = fx128_add(q->dvk, q->ddv);
-    q->d1 = fx128_add(q->d1, q->dd1);
+    q->cur.d1 = fx128_add(q->cur.d1, q->dd1);
     q->vrow++;
 }
 
@@ -717,41 +710,32 @@ __attribute__((noinline)) static void render_srow_start(render_t *r, const rende
     __typeof__(r->srow[0]) *q = &r->srow[o->index];
     int32_t h = r->cam->height, b = row + 2 < h ? row : h - 3, ix0 = 2 * o->x0 - r->cam->width + 1;
     render_srow_t f;
-    render_sphere_row(r, o, ix0, render_iy(r->cam, b), &f);
-    q->v = f.v;
-    q->d1 = f.d1;
-    q->d2 = f.d2;
+    render_sphere_row(r, o, ix0, render_iy(r->cam, b), &q->cur);
     render_sphere_row(r, o, ix0, render_iy(r->cam, b + 1), &f);
-    q->dvk = fx128_sub(f.v, q->v);         /* v(b + 1) - v(b) */
-    q->dd1 = fx128_sub(f.d1, q->d1);
+    q->dvk = fx128_sub(f.v, q->cur.v); /* v(b + 1) - v(b) */
+    q->dd1 = fx128_sub(f.d1, q->cur.d1);
     render_sphere_row(r, o, ix0, render_iy(r->cam, b + 2), &f);
-    q->ddv = fx128_sub(fx128_sub(fx128_sub(f.v, q->v), q->dvk), q->dvk); /* v(b+2) - 2 v(b+1) + v(b) */
+    q->ddv = fx128_sub(fx128_sub(fx128_sub(f.v, q->cur.v), q->dvk), q->dvk); /* v(b+2) - 2 v(b+1) + v(b) */
     /* Row b - 1, then down to row - 1. */
     q->dvk = fx128_sub(q->dvk, q->ddv);
-    q->v = fx128_sub(q->v, q->dvk);
-    q->d1 = fx128_sub(q->d1, q->dd1);
+    q->cur.v = fx128_sub(q->cur.v, q->dvk);
+    q->cur.d1 = fx128_sub(q->cur.d1, q->dd1);
     q->vrow = b - 1;
     while (q->vrow < row - 1)
         render_srow_step(r, o->index);
 }
 
 /* render_sphere_row on fine row `row`, a fine camera of at least three
- * rows: three additions after the row before. */
-static void render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row, render_srow_t *s)
+ * rows: three additions after the row before. In place (no copies: on
+ * the M0 a copy of 128-bit values is a memcpy call). */
+static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row)
 {
-    const __typeof__(r->srow[0]) *q = &r->srow[o->index];
-    if (row != q->vrow + 1)
+    if (row != r->srow[o->index].vrow + 1)
         render_srow_start(r, o, row);
     render_srow_step(r, o->index);
-    s->v = q->v;
-    s->d1 = q->d1;
-    s->d2 = q->d2;
-    s->ortho = render_ortho(r->cam);
-    s->inside = !s->ortho && rsw_neg(o->u.sphere->k); /* c = k in perspective */
-    s->use_c = s->ortho && !(o->u.sphere->b.c > 0);
+    return &r->srow[o->index].cur;
 }
 
-#if FXRT_SPHERE_SEARCH
 /* From column `from`, where (q(k) >= 0) == want, towards `limit` (dir =
  * +1 or -1): the last column k before the predicate first fails, or
  * limit. It must be monotone over from..limit. Steps double from the
@@ -806,33 +790,37 @@ static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, 
     run.hi = in_hi ? render_gallop(s, g.hi, 1, kmax, true) : render_gallop(s, g.hi, -1, g.lo, false) - 1;
     return run;
 }
-#endif
 
-/* A lone sphere's runs on fine row `row` (k from its x0): where the
- * deciding form is concave along the row, one run, found from the row
- * before's (render_sphere_run_near); otherwise by stepping. */
-static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row, render_iv_t run[2])
+/* A lone sphere's runs on fine row `row` (k from its x0), its forms there
+ * s (render_sphere_row_at): where the deciding form is concave along the
+ * row, one run, found from the row before's (render_sphere_run_near);
+ * otherwise by stepping. */
+__attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row,
+                                                          const render_srow_t *s, render_iv_t run[2])
 {
     int32_t ix0 = 2 * o->x0 - r->cam->width + 1, iy = render_iy(r->cam, row);
-    render_srow_t s;
-    render_sphere_row_at(r, o, row, &s);
-#if FXRT_SPHERE_SEARCH
     int32_t kmax = o->x1 - o->x0;
+    __typeof__(r->srow[0]) *q = &r->srow[o->index];
+    bool guess = q->prow == row - 1 && q->plo <= q->phi;
     /* The search wants the form as f >= 0, f concave along the row. In
      * orthographic views decided by c < 0, f = -c - 1 (integers), which is
-     * ~c in two's complement, concave where c is convex. */
-    fx128_t d2 = s.use_c ? fx128_neg(s.d2) : s.d2;
-    if (!s.inside && d2.hi < 0) {
-        if (s.use_c) {
-            s.v.lo = ~s.v.lo;
-            s.v.hi = ~s.v.hi;
-            s.d1 = fx128_neg(s.d1);
-            s.d2 = d2;
+     * ~c in two's complement, concave where c is convex. Without
+     * FXRT_SPHERE_SEARCH (the M0, where a cold search costs more than
+     * stepping) only from a guess. */
+    fx128_t d2 = s->use_c ? fx128_neg(s->d2) : s->d2;
+    bool concave = !s->inside && d2.hi < 0;
+    if (concave && (FXRT_SPHERE_SEARCH || guess)) {
+        render_srow_t neg;
+        const render_srow_t *f = s;
+        if (s->use_c) {
+            neg.v.lo = ~s->v.lo;
+            neg.v.hi = ~s->v.hi;
+            neg.d1 = fx128_neg(s->d1);
+            neg.d2 = d2;
+            f = &neg;
         }
-        __typeof__(r->srow[0]) *q = &r->srow[o->index];
         render_iv_t g = {q->plo, q->phi};
-        render_iv_t disc = q->prow == row - 1 && g.lo <= g.hi ? render_sphere_run_near(&s, kmax, g)
-                                                             : render_sphere_run(s.v, s.d1, s.d2, kmax);
+        render_iv_t disc = guess ? render_sphere_run_near(f, kmax, g) : render_sphere_run(f->v, f->d1, f->d2, kmax);
         q->prow = row;
         q->plo = (int16_t)disc.lo;
         q->phi = (int16_t)disc.hi;
@@ -842,15 +830,20 @@ static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row
          * both ends of the run, > 0 on all of it (no division needed). In
          * orthographic views f decides alone. */
         const render_lin_t *b = &o->u.sphere->b;
-        if (s.ortho || (rlin_at(b, ix0 + 2 * disc.lo, iy) > 0 && rlin_at(b, ix0 + 2 * disc.hi, iy) > 0)) {
+        if (s->ortho || (rlin_at(b, ix0 + 2 * disc.lo, iy) > 0 && rlin_at(b, ix0 + 2 * disc.hi, iy) > 0)) {
             run[0] = disc;
             return 1;
         }
         run[0] = render_iv_and(disc, render_sphere_front(o, ix0, iy, kmax));
         return run[0].lo <= run[0].hi;
     }
-#endif
-    return render_sphere_runs(o, &s, o->x0, o->x1, ix0, iy, run);
+    int k = render_sphere_runs(o, s, o->x0, o->x1, ix0, iy, run);
+    if (concave) { /* a stepped run guesses the next row's (any guess gives the exact run) */
+        q->prow = row;
+        q->plo = (int16_t)(k ? run[0].lo : 1);
+        q->phi = (int16_t)(k ? run[0].hi : 0);
+    }
+    return k;
 }
 #endif
 
@@ -891,7 +884,9 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
             break;
 #if FXRT_MAX_SPHERES > 0
         case RENDER_SPHERE:
-            n = render_runs_push(out, n, cap, o->x0, iv, render_sphere_runs_at(r, o, row, iv), i);
+            /* The row's forms first, then the search (two frames, not one
+             * on top of the other: the micro:bit's stack). */
+            n = render_runs_push(out, n, cap, o->x0, iv, render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), iv), i);
             break;
 #endif
         case RENDER_FLAT:

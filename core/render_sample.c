@@ -215,35 +215,35 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
         used += k;
         r->run_at[j + 1] = (uint16_t)used;
     }
+    /* Per fine row j: the run at or after the current column (at), the
+     * owner from the current column (u) and the column where that changes
+     * (nb); f sums one sample of each row's owner. */
     uint16_t at[FXRT_MAX_SAMPLES], u[FXRT_MAX_SAMPLES];
-    for (int32_t j = 0; j < n; j++)
+    int32_t nb[FXRT_MAX_SAMPLES];
+    color_sum_t f[3] = {0, 0, 0};
+    for (int32_t j = 0; j < n; j++) {
+        const render_run_t *q = &r->runs[r->run_at[j]];
         at[j] = r->run_at[j];
+        bool in = at[j] < r->run_at[j + 1] && q->a == 0;
+        u[j] = in ? q->oi : RENDER_VIS_NONE;
+        nb[j] = in ? q->b + 1 : (at[j] < r->run_at[j + 1] ? q->a : W);
+        const color_sum_t *c = render_sample_one(r, u[j]);
+        f[0] += c[0];
+        f[1] += c[1];
+        f[2] += c[2];
+    }
     uint32_t n2 = (uint32_t)(n * n);
     for (int32_t a = 0, b; a < W; a = b) {
-        /* The interval a..b-1: each row's owner at a, up to the first
-         * change in any row. */
-        b = W;
-        bool one = true;
-        color_sum_t f[3] = {0, 0, 0}; /* one sample of each row's owner, summed */
-        for (int32_t j = 0; j < n; j++) {
-            int32_t end = r->run_at[j + 1];
-            while (at[j] < end && r->runs[at[j]].b < a)
-                at[j]++;
-            const render_run_t *q = at[j] < end ? &r->runs[at[j]] : NULL;
-            if (q && q->a <= a) {
-                u[j] = q->oi;
-                if (q->b + 1 < b)
-                    b = q->b + 1;
-            } else {
-                u[j] = RENDER_VIS_NONE;
-                if (q && q->a < b)
-                    b = q->a;
-            }
-            one = one && u[j] == u[0];
-            const color_sum_t *c = render_sample_one(r, u[j]);
-            f[0] += c[0];
-            f[1] += c[1];
-            f[2] += c[2];
+        /* The interval a..b-1, up to the first change in any row; whether
+         * its rows have one owner matters only when it holds a whole pixel. */
+        b = nb[0];
+        for (int32_t j = 1; j < n; j++)
+            b = nb[j] < b ? nb[j] : b;
+        bool one = false;
+        if (b - a >= n) {
+            one = true;
+            for (int32_t j = 1; j < n && one; j++)
+                one = u[j] == u[0];
         }
         for (int32_t x = a / n, X0 = x * n; X0 < b; x++, X0 += n) {
             int32_t c0 = a > X0 ? a : X0, c1 = b < X0 + n ? b : X0 + n;
@@ -265,6 +265,31 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
             s[2] += f[2] * m;
             if (c1 == X0 + n)
                 render_sample_put(rgb, x, color_sum_out(s[0], n2), color_sum_out(s[1], n2), color_sum_out(s[2], n2));
+        }
+        /* The rows that change at b: leave a run (to the gap or the next
+         * run, which may start at b) or enter one. */
+        for (int32_t j = 0; j < n && b < W; j++) {
+            if (nb[j] != b)
+                continue;
+            const color_sum_t *c = render_sample_one(r, u[j]);
+            f[0] -= c[0];
+            f[1] -= c[1];
+            f[2] -= c[2];
+            if (u[j] != RENDER_VIS_NONE)
+                at[j]++;
+            const render_run_t *q = &r->runs[at[j]];
+            bool more = at[j] < r->run_at[j + 1];
+            if (more && q->a == b) {
+                u[j] = q->oi;
+                nb[j] = q->b + 1;
+            } else {
+                u[j] = RENDER_VIS_NONE;
+                nb[j] = more ? q->a : W;
+            }
+            c = render_sample_one(r, u[j]);
+            f[0] += c[0];
+            f[1] += c[1];
+            f[2] += c[2];
         }
     }
     r->run_rows++;

@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# make bench-samples (also part of make bench): issue 12's cheap case of
+# supersampling. Each seed scene (scenes/abb*.scene: flat objects, each
+# alone on its rows, no secondary rays) with its samples line set to 1, 2
+# and 4, Q16.16, the fast renderer, at BENCH_SIZE on every board, in QEMU
+# (-icount instructions per output pixel). Every firmware frame must be
+# byte-identical to the host's q16 render of the same copy (the script
+# fails otherwise); a scene that does not fit a board is reported as such.
+#
+# Targets (our reading of "the cheap case costs little more than one
+# sample"; the sampling pass then works from runs, core/render_sample.c):
+#   - per scene, samples N costs at most N times samples 1 per output
+#     pixel (the visibility runs over N fine rows per output row; nothing
+#     is done per sample): ratio <= 2 at N = 2, <= 4 at N = 4;
+#   - geometric mean over the seed scenes <= 1.5x at N = 2, <= 2.5x at N = 4.
+# Before this pass the M3 took 6.6x (N = 2) and 16.5x (N = 4) on abb9.
+#
+# Writes build/bench/samples.csv and samples.md; BENCH_UPDATE_DOCS=1 also
+# replaces the block between <!-- bench:samples --> and <!-- /bench:samples -->
+# in docs/BENCHMARKS.md. Environment: BUILD, BENCH_SIZE (160x120),
+# BENCH_BOARD_INFO ("board:cpu:fb ..."), SAMPLES_SCENES, SAMPLES_JOBS (nproc).
+set -euo pipefail
+BUILD=${BUILD:-build}
+FXRT=${FXRT:-$BUILD/fxrt}
+SIZE=${BENCH_SIZE:-160x120}
+BOARD_INFO=${BENCH_BOARD_INFO:-"mps2-an385:M3:full mps2-an386:M4F:full microbit:M0:stream"}
+SCENES=${SAMPLES_SCENES:-$(ls scenes/abb*.scene)}
+JOBS=${SAMPLES_JOBS:-$(nproc 2>/dev/null || echo 2)}
+OUT=$BUILD/bench/samples
+unset MAKEFLAGS MFLAGS MAKELEVEL
+M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
+rm -rf "$OUT"
+mkdir -p "$OUT/scenes" "$OUT/host" "$OUT/runs"
+start=$(date +%s)
+
+# The copies and their host frames.
+names=()
+for sc in $SCENES; do
+    b=$(basename "$sc" .scene)
+    for n in 1 2 4; do
+        name=$b-s$n
+        { grep -vE '^[[:space:]]*samples[[:space:]]' "$sc"; [ $n -gt 1 ] && echo "samples $n"; } >"$OUT/scenes/$name.scene"
+        "$FXRT" render "$OUT/scenes/$name.scene" --size "$SIZE" --number q16 -o "$OUT/host/$name.ppm"
+        names+=("$name")
+    done
+done
+
+# One run: BOARD NAME -> runs/BOARD-NAME.txt: "ok IPP", "nofit", or "FAIL why".
+run_one() {
+    local b=$1 name=$2 log line ipp fb
+    fb=$(tr ' ' '\n' <<<"$BOARD_INFO" | sed -n "s/^$b:[^:]*:\(.*\)/\1/p")
+    log=$OUT/runs/$b-$name.log
+    if ! $M qemu SCENE="$OUT/scenes/$name.scene" BOARD="$b" SIZE="$SIZE" FB="$fb" >"$log" 2>&1; then
+        if grep -q "does not fit\|region .RAM' overflowed" "$log"; then
+            echo nofit >"$OUT/runs/$b-$name.txt"
+        else
+            echo "FAIL make qemu: $(tail -n 3 "$log" | tr '\n' ' ')" >"$OUT/runs/$b-$name.txt"
+        fi
+        return 0
+    fi
+    line=$(grep -o 'instructions_per_pixel=[0-9.]*' "$log" | tail -n 1)
+    ipp=${line#*=}
+    if ! cmp -s "$BUILD/qemu/$b/$name-q16-$SIZE.ppm" "$OUT/host/$name.ppm"; then
+        echo "FAIL frame differs from the host q16 render" >"$OUT/runs/$b-$name.txt"
+    else
+        echo "ok $ipp" >"$OUT/runs/$b-$name.txt"
+    fi
+}
+export -f run_one
+export OUT M SIZE BUILD BOARD_INFO
+for i in $BOARD_INFO; do
+    for name in "${names[@]}"; do echo "${i%%:*} $name"; done
+done | xargs -P "$JOBS" -n 2 bash -c 'run_one "$0" "$1"'
+
+# Tables and verdicts.
+fails=0
+csv=$OUT/../samples.csv
+md=$OUT/../samples.md
+echo "board,scene,samples,instructions_per_pixel,status" >"$csv"
+{
+    echo "Regenerate with \`make bench-samples BENCH_UPDATE_DOCS=1\` (also part of \`make bench\`). Last run"
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD 2>/dev/null || echo ' (with uncommitted changes)'),"
+    echo "$(( $(date +%s) - start )) s at $SIZE. Q16.16, fast renderer, instructions per output pixel (QEMU \`-icount\`);"
+    echo "every frame byte-identical to the host's q16 render of the same scene copy."
+    echo
+} >"$md"
+for i in $BOARD_INFO; do
+    b=${i%%:*} cpu=$(cut -d: -f2 <<<"$i")
+    {
+        echo "**$b ($cpu)**"
+        echo
+        echo "| scene | samples 1 | samples 2 | samples 4 | samples 2 / 1 | samples 4 / 1 |"
+        echo "|---|---:|---:|---:|---:|---:|"
+    } >>"$md"
+    l2=() l4=() worst2=0 worst4=0
+    for sc in $SCENES; do
+        s=$(basename "$sc" .scene)
+        declare -A v=()
+        for n in 1 2 4; do
+            r=$(cat "$OUT/runs/$b-$s-s$n.txt" 2>/dev/null || echo "FAIL no result")
+            case $r in
+            ok*) v[$n]=${r#ok } ;;
+            nofit) v[$n]=nofit ;;
+            *) v[$n]=FAIL; fails=$((fails + 1)); echo "bench-samples: $b $s samples $n: $r" >&2 ;;
+            esac
+            echo "$b,$s,$n,${v[$n]},$r" | cut -d, -f1-5 >>"$csv"
+        done
+        cell() { case ${v[$1]} in nofit) echo "does not fit" ;; FAIL) echo "FAIL" ;; *) echo "${v[$1]}" ;; esac; }
+        ratio() {
+            case ${v[1]}${v[$1]} in *nofit* | *FAIL*) echo "-" ;; *) awk -v a="${v[$1]}" -v b="${v[1]}" 'BEGIN { printf "%.2fx", a / b }' ;; esac
+        }
+        r2=$(ratio 2) r4=$(ratio 4)
+        echo "| $s | $(cell 1) | $(cell 2) | $(cell 4) | $r2 | $r4 |" >>"$md"
+        [ "$r2" != - ] && l2+=("${r2%x}")
+        [ "$r4" != - ] && l4+=("${r4%x}")
+        unset v
+    done
+    gm() { printf '%s\n' "$@" | awk 'NF { s += log($1); n++ } END { if (n) printf "%.2f", exp(s / n); else printf "-" }'; }
+    mx() { printf '%s\n' "$@" | awk 'NF { if (!n++ || $1 > m) m = $1 } END { if (n) printf "%.2f", m; else printf "-" }'; }
+    g2=$(gm "${l2[@]}") g4=$(gm "${l4[@]}") m2=$(mx "${l2[@]}") m4=$(mx "${l4[@]}")
+    verdict() { awk -v x="$1" -v g="$2" 'BEGIN { if (x == "-") print "- (no scene fits)"; else if (x <= g) print "**PASS**"; else printf "**MISS** (%.2fx over)\n", x / g }'; }
+    x() { [ "$1" = - ] && echo - || echo "$1x"; }
+    {
+        echo
+        echo "| target ($b) | goal | measured | result |"
+        echo "|---|---:|---:|---|"
+        echo "| worst scene, samples 2 / 1 | <= 2x | $(x "$m2") | $(verdict "$m2" 2) |"
+        echo "| worst scene, samples 4 / 1 | <= 4x | $(x "$m4") | $(verdict "$m4" 4) |"
+        echo "| geometric mean, samples 2 / 1 | <= 1.5x | $(x "$g2") (${#l2[@]} scenes) | $(verdict "$g2" 1.5) |"
+        echo "| geometric mean, samples 4 / 1 | <= 2.5x | $(x "$g4") (${#l4[@]} scenes) | $(verdict "$g4" 2.5) |"
+        echo
+    } >>"$md"
+done
+cat "$md"
+if [ "${BENCH_UPDATE_DOCS:-0}" = 1 ]; then
+    doc=docs/BENCHMARKS.md
+    grep -q '<!-- bench:samples -->' "$doc" || { echo "bench-samples: no <!-- bench:samples --> block in $doc" >&2; exit 1; }
+    awk -v f="$md" '
+        /<!-- bench:samples -->/ { print; while ((getline l < f) > 0) print l; skip = 1; next }
+        /<!-- \/bench:samples -->/ { skip = 0 }
+        !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+    echo "bench-samples: updated $doc"
+fi
+[ "$fails" -eq 0 ] || { echo "bench-samples: $fails runs failed (see above)" >&2; exit 1; }
