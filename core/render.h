@@ -281,12 +281,12 @@ typedef struct {
      * fine row vrow (v, d1, d2 as render_srow_t); dvk = v(next row) - v;
      * ddv and dd1, how dvk and d1 change per row. plo..phi: its run of
      * f >= 0 on fine row prow (columns from x0), which guesses the next
-     * row's. */
+     * row's; pk, the column of f's peak last found. */
     struct {
         render_srow_t cur; /* v, d1, d2 on fine row vrow */
         fx128_t dvk, ddv, dd1;
         int32_t vrow, prow;
-        int16_t plo, phi;
+        int16_t plo, phi, pk;
     } srow[FXRT_MAX_SPHERES];
 #endif
 #if RENDER_RUNS

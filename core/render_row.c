@@ -325,7 +325,7 @@ static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x
     return nrun;
 }
 
-#if FXRT_SPHERE_SEARCH || RENDER_RUNS
+#if FXRT_SPHERE_SEARCH
 /* The columns k in 0..kmax where q(k) >= 0, for d2 < 0 (one run or none):
  * q rises while its step d1 + d2 k is positive, then falls, so the peak
  * and both ends are binary searches on monotone predicates. */
@@ -689,7 +689,9 @@ static int32_t render_iy(const cam_t *cam, int32_t row) { return 2 * (cam->heigh
 
 void render_runs_setup(render_t *r, uint16_t i)
 {
-    r->srow[r->obj[i].index].vrow = r->srow[r->obj[i].index].prow = -2;
+    const render_obj_t *o = &r->obj[i];
+    r->srow[o->index].vrow = r->srow[o->index].prow = -2;
+    r->srow[o->index].pk = (int16_t)((o->x1 - o->x0) / 2);
 }
 
 /* One fine row down the series of render_sphere_row_at. */
@@ -771,23 +773,83 @@ static int32_t render_gallop(const render_srow_t *s, int32_t from, int32_t dir, 
  * found by galloping from the guess's end, over columns where the
  * predicate is monotone because the run is an interval. When neither
  * end nor the middle of the guess is in the run, the full search. */
-static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, render_iv_t g)
+/* Is the step q(k + 1) - q(k) = d1 + d2 k <= 0 (k at or past the peak)? */
+static bool render_sphere_down(const render_srow_t *s, int32_t k)
 {
-    bool in_lo = render_quad_k(s->v, s->d1, s->d2, g.lo).hi >= 0;
-    bool in_hi = g.hi == g.lo ? in_lo : render_quad_k(s->v, s->d1, s->d2, g.hi).hi >= 0;
-    render_iv_t run;
-    if (!in_lo && !in_hi) {
-        /* The run shrank from both sides (or moved, or went): from its
-         * middle when that is still in it. */
-        int32_t mid = g.lo + (g.hi - g.lo) / 2;
-        if (render_quad_k(s->v, s->d1, s->d2, mid).hi < 0)
-            return render_sphere_run(s->v, s->d1, s->d2, kmax);
-        run.lo = render_gallop(s, g.lo, 1, mid, false) + 1;
-        run.hi = render_gallop(s, g.hi, -1, mid, false) - 1;
-        return run;
+    fx128_t step = fx128_add(s->d1, render_mul128_small(s->d2, k));
+    return step.hi < 0 || (step.hi == 0 && step.lo == 0);
+}
+
+/* The peak of q on the row (d2 < 0): the first k in 0..kmax - 1 whose
+ * step is <= 0, kmax when none (render_sphere_run's), by galloping from
+ * the guess p on that monotone predicate, then a binary search. */
+static int32_t render_sphere_peak(const render_srow_t *s, int32_t kmax, int32_t p)
+{
+    int32_t lo, hi, st = 1;
+    p = p < 0 ? 0 : (p > kmax ? kmax : p);
+    if (p < kmax && !render_sphere_down(s, p)) {
+        for (lo = p;; lo = hi, st *= 2) {
+            hi = lo + st;
+            if (hi >= kmax) {
+                hi = kmax;
+                break;
+            }
+            if (render_sphere_down(s, hi))
+                break;
+        }
+    } else {
+        for (hi = p;; hi = lo, st *= 2) {
+            lo = hi - st;
+            if (lo < 0) {
+                lo = -1;
+                break;
+            }
+            if (!render_sphere_down(s, lo))
+                break;
+        }
     }
-    run.lo = in_lo ? render_gallop(s, g.lo, -1, 0, true) : render_gallop(s, g.lo, 1, g.hi, false) + 1;
-    run.hi = in_hi ? render_gallop(s, g.hi, 1, kmax, true) : render_gallop(s, g.hi, -1, g.lo, false) - 1;
+    while (hi - lo > 1) {
+        int32_t mid = lo + (hi - lo) / 2;
+        if (mid < kmax && !render_sphere_down(s, mid))
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return hi;
+}
+
+/* render_sphere_run (disc concave along the row: its run of q >= 0 is
+ * one interval, around the peak) from guesses, the row before's run g
+ * (empty when lo > hi) and peak *pk: an end of g still in the run gallops
+ * outwards, an end out of it inwards (q is monotone on either side of the
+ * peak, so any column there is a valid start); when neither end nor the
+ * middle of g is in the run, from the peak (found from *pk, updated). */
+static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, render_iv_t g, int16_t *pk)
+{
+    render_iv_t run, none = {1, 0};
+    if (g.lo <= g.hi) {
+        bool in_lo = render_quad_k(s->v, s->d1, s->d2, g.lo).hi >= 0;
+        bool in_hi = g.hi == g.lo ? in_lo : render_quad_k(s->v, s->d1, s->d2, g.hi).hi >= 0;
+        if (in_lo || in_hi) {
+            run.lo = in_lo ? render_gallop(s, g.lo, -1, 0, true) : render_gallop(s, g.lo, 1, g.hi, false) + 1;
+            run.hi = in_hi ? render_gallop(s, g.hi, 1, kmax, true) : render_gallop(s, g.hi, -1, g.lo, false) - 1;
+            return run;
+        }
+        /* Shrunk from both sides: from its middle when that is still in it. */
+        int32_t mid = g.lo + (g.hi - g.lo) / 2;
+        if (render_quad_k(s->v, s->d1, s->d2, mid).hi >= 0) {
+            run.lo = render_gallop(s, g.lo, 1, mid, false) + 1;
+            run.hi = render_gallop(s, g.hi, -1, mid, false) - 1;
+            return run;
+        }
+    }
+    int32_t peak = render_sphere_peak(s, kmax, *pk);
+    *pk = (int16_t)peak;
+    if (render_quad_k(s->v, s->d1, s->d2, peak).hi < 0)
+        return none;
+    bool glo = g.lo <= g.hi && g.lo < peak, ghi = g.lo <= g.hi && g.hi > peak; /* q < 0 there (tested above) */
+    run.lo = glo ? render_gallop(s, g.lo, 1, peak, false) + 1 : render_gallop(s, peak, -1, 0, true);
+    run.hi = ghi ? render_gallop(s, g.hi, -1, peak, false) - 1 : render_gallop(s, peak, 1, kmax, true);
     return run;
 }
 
@@ -801,15 +863,12 @@ __attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const re
     int32_t ix0 = 2 * o->x0 - r->cam->width + 1, iy = render_iy(r->cam, row);
     int32_t kmax = o->x1 - o->x0;
     __typeof__(r->srow[0]) *q = &r->srow[o->index];
-    bool guess = q->prow == row - 1 && q->plo <= q->phi;
+    bool guess = q->prow == row - 1;
     /* The search wants the form as f >= 0, f concave along the row. In
      * orthographic views decided by c < 0, f = -c - 1 (integers), which is
-     * ~c in two's complement, concave where c is convex. Without
-     * FXRT_SPHERE_SEARCH (the M0, where a cold search costs more than
-     * stepping) only from a guess. */
+     * ~c in two's complement, concave where c is convex. */
     fx128_t d2 = s->use_c ? fx128_neg(s->d2) : s->d2;
-    bool concave = !s->inside && d2.hi < 0;
-    if (concave && (FXRT_SPHERE_SEARCH || guess)) {
+    if (!s->inside && d2.hi < 0) {
         render_srow_t neg;
         const render_srow_t *f = s;
         if (s->use_c) {
@@ -819,8 +878,8 @@ __attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const re
             neg.d2 = d2;
             f = &neg;
         }
-        render_iv_t g = {q->plo, q->phi};
-        render_iv_t disc = guess ? render_sphere_run_near(f, kmax, g) : render_sphere_run(f->v, f->d1, f->d2, kmax);
+        render_iv_t g = {guess ? q->plo : 1, guess ? q->phi : 0};
+        render_iv_t disc = render_sphere_run_near(f, kmax, g, &q->pk);
         q->prow = row;
         q->plo = (int16_t)disc.lo;
         q->phi = (int16_t)disc.hi;
@@ -837,13 +896,7 @@ __attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const re
         run[0] = render_iv_and(disc, render_sphere_front(o, ix0, iy, kmax));
         return run[0].lo <= run[0].hi;
     }
-    int k = render_sphere_runs(o, s, o->x0, o->x1, ix0, iy, run);
-    if (concave) { /* a stepped run guesses the next row's (any guess gives the exact run) */
-        q->prow = row;
-        q->plo = (int16_t)(k ? run[0].lo : 1);
-        q->phi = (int16_t)(k ? run[0].hi : 0);
-    }
-    return k;
+    return render_sphere_runs(o, s, o->x0, o->x1, ix0, iy, run);
 }
 #endif
 
