@@ -111,6 +111,7 @@ typedef struct {
 #define RENDER_RUNS                                                                                         \
     (FXRT_MAX_SAMPLES > 1 && FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS && !FXRT_NO_LONE && \
      !FXRT_NO_BOUNDS)
+
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
     render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */

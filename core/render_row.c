@@ -474,7 +474,6 @@ static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
  * disc are quadratic along the row, so their 128-bit forward differences
  * (second difference constant) give exactly the values render_sphere_cd
  * computes from scratch. */
-
 static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0, int32_t iy, render_srow_t *s)
 {
     fx128_t c[3], q[3];
@@ -684,8 +683,10 @@ static bool render_alone(const render_t *r, uint16_t i, int32_t row)
 }
 
 #if RENDER_RUNS
-#if FXRT_MAX_SPHERES > 0
+/* The ray's row coordinate iy of fine row `row` (0 = top). */
 static int32_t render_iy(const cam_t *cam, int32_t row) { return 2 * (cam->height - 1 - row) - cam->height + 1; }
+
+#if FXRT_MAX_SPHERES > 0
 
 void render_runs_setup(render_t *r, uint16_t i)
 {
@@ -768,11 +769,6 @@ static int32_t render_gallop(const render_srow_t *s, int32_t from, int32_t dir, 
     return good;
 }
 
-/* render_sphere_run (disc concave along the row: its run of q >= 0 is
- * one interval) from a guess g, the run of the row before: each end is
- * found by galloping from the guess's end, over columns where the
- * predicate is monotone because the run is an interval. When neither
- * end nor the middle of the guess is in the run, the full search. */
 /* Is the step q(k + 1) - q(k) = d1 + d2 k <= 0 (k at or past the peak)? */
 static bool render_sphere_down(const render_srow_t *s, int32_t k)
 {
@@ -918,7 +914,7 @@ static int render_runs_push(render_run_t *out, int n, int cap, int32_t x0, const
 
 int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
 {
-    int32_t iy = 2 * (r->cam->height - 1 - row) - r->cam->height + 1;
+    int32_t iy = render_iy(r->cam, row);
     int n = 0;
     if (r->cam->height < 3)
         return -1; /* the spheres' row series need three rows */

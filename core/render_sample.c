@@ -217,23 +217,46 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
     }
     /* Per fine row j: the run at or after the current column (at), the
      * owner from the current column (u) and the column where that changes
-     * (nb); f sums one sample of each row's owner. */
+     * (nb); f sums one sample of each row's owner. Every row starts in a
+     * gap that ends at column 0. */
     uint16_t at[FXRT_MAX_SAMPLES], u[FXRT_MAX_SAMPLES];
     int32_t nb[FXRT_MAX_SAMPLES];
     color_sum_t f[3] = {0, 0, 0};
     for (int32_t j = 0; j < n; j++) {
-        const render_run_t *q = &r->runs[r->run_at[j]];
         at[j] = r->run_at[j];
-        bool in = at[j] < r->run_at[j + 1] && q->a == 0;
-        u[j] = in ? q->oi : RENDER_VIS_NONE;
-        nb[j] = in ? q->b + 1 : (at[j] < r->run_at[j + 1] ? q->a : W);
-        const color_sum_t *c = render_sample_one(r, u[j]);
-        f[0] += c[0];
-        f[1] += c[1];
-        f[2] += c[2];
+        u[j] = RENDER_VIS_NONE;
+        nb[j] = 0;
+        f[0] += r->bg_one[0];
+        f[1] += r->bg_one[1];
+        f[2] += r->bg_one[2];
     }
     uint32_t n2 = (uint32_t)(n * n);
     for (int32_t a = 0, b; a < W; a = b) {
+        /* The rows that change at a: leave a run (to the gap or the next
+         * run, which may start at a) or enter one. */
+        for (int32_t j = 0; j < n; j++) {
+            if (nb[j] != a)
+                continue;
+            const color_sum_t *c = render_sample_one(r, u[j]);
+            f[0] -= c[0];
+            f[1] -= c[1];
+            f[2] -= c[2];
+            if (u[j] != RENDER_VIS_NONE)
+                at[j]++;
+            const render_run_t *q = &r->runs[at[j]];
+            bool more = at[j] < r->run_at[j + 1];
+            if (more && q->a == a) {
+                u[j] = q->oi;
+                nb[j] = q->b + 1;
+            } else {
+                u[j] = RENDER_VIS_NONE;
+                nb[j] = more ? q->a : W;
+            }
+            c = render_sample_one(r, u[j]);
+            f[0] += c[0];
+            f[1] += c[1];
+            f[2] += c[2];
+        }
         /* The interval a..b-1, up to the first change in any row; whether
          * its rows have one owner matters only when it holds a whole pixel. */
         b = nb[0];
@@ -265,31 +288,6 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
             s[2] += f[2] * m;
             if (c1 == X0 + n)
                 render_sample_put(rgb, x, color_sum_out(s[0], n2), color_sum_out(s[1], n2), color_sum_out(s[2], n2));
-        }
-        /* The rows that change at b: leave a run (to the gap or the next
-         * run, which may start at b) or enter one. */
-        for (int32_t j = 0; j < n && b < W; j++) {
-            if (nb[j] != b)
-                continue;
-            const color_sum_t *c = render_sample_one(r, u[j]);
-            f[0] -= c[0];
-            f[1] -= c[1];
-            f[2] -= c[2];
-            if (u[j] != RENDER_VIS_NONE)
-                at[j]++;
-            const render_run_t *q = &r->runs[at[j]];
-            bool more = at[j] < r->run_at[j + 1];
-            if (more && q->a == b) {
-                u[j] = q->oi;
-                nb[j] = q->b + 1;
-            } else {
-                u[j] = RENDER_VIS_NONE;
-                nb[j] = more ? q->a : W;
-            }
-            c = render_sample_one(r, u[j]);
-            f[0] += c[0];
-            f[1] += c[1];
-            f[2] += c[2];
         }
     }
     r->run_rows++;
