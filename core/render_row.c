@@ -490,7 +490,7 @@ static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t 
 
 #if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_RUNS)
 /* Where b > 0 (the centre's side of the eye) on columns k = 0..kmax. */
-static render_iv_t render_sphere_front(const render_obj_t *o, int32_t ix0, int32_t iy, int32_t kmax)
+RENDER_MAYBE_UNUSED static render_iv_t render_sphere_front(const render_obj_t *o, int32_t ix0, int32_t iy, int32_t kmax)
 {
     render_iv_t bi[4];
     render_signs(rlin_at(&o->u.sphere->b, ix0, iy), 2 * o->u.sphere->b.x, kmax, bi);
