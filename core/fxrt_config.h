@@ -301,9 +301,9 @@
 /* FXRT_SAMPLE_RUNS: the runs (one owner each) that the fast Q16.16
  * sampling pass may hold for the N fine rows of one output row when it
  * works from spans (core/render_sample.c, "run mode": every object on
- * those rows alone on its row). An output row with more runs, or with
- * objects that overlap, takes the per-sample pass instead (the same
- * image). 6 bytes each; default 8 per fine row. */
+ * those rows flat and alone on its row). An output row with more runs,
+ * a lit object or objects that overlap takes the per-sample pass instead
+ * (the same image). 6 bytes each; default 8 per fine row. */
 #ifndef FXRT_SAMPLE_RUNS
 #define FXRT_SAMPLE_RUNS (8 * FXRT_MAX_SAMPLES)
 #endif
