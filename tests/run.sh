@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Run test suites (programs or scripts), each of which ends its output with
-# "NAME: N passed, N failed". Sum them and end with the total line; exit
-# non-zero if any check failed or any suite crashed.
+# "NAME: N passed, N failed". Sum them and end with the total line, after
+# a recap of the suites that failed; exit non-zero if any check failed or
+# any suite crashed.
 #
 # Two lanes run side by side (the suites are single-threaded): the suites
 # that build and run firmware in shared build/fw directories (qemu,
@@ -58,7 +59,7 @@ run_one() {
     else
         printf '%-22s %6d passed (%ds)\n' "$name" "$p" "$secs"
     fi
-    echo "$p $f" >"$results/$(printf '%03d' "$2")"
+    echo "$p $f $name" >"$results/$(printf '%03d' "$2")"
 }
 
 firmware=() others=()
@@ -86,12 +87,20 @@ fi
 total_pass=0
 total_fail=0
 n=0
+failed=()
 for r in "$results"/*; do
     [ -f "$r" ] || continue
-    read -r p f <"$r"
+    read -r p f name <"$r"
     total_pass=$((total_pass + p))
     total_fail=$((total_fail + f))
     n=$((n + 1))
+    [ "$f" -eq 0 ] || failed+=("$name")
+done
+# A recap next to the total: a CI page that shows only the end of the
+# output still names what failed and its first failing checks.
+for name in ${failed[@]+"${failed[@]}"}; do
+    echo "FAILED: $name (log $logdir/$name.log)"
+    { grep -E 'FAIL' "$logdir/$name.log" || tail -n 5 "$logdir/$name.log"; } | head -n 5 | sed 's/^/    | /'
 done
 if [ "$n" -ne "$#" ]; then
     echo "FAIL run.sh: $n of $# suites reported"
