@@ -137,6 +137,32 @@
 #error "FXRT_RENDER_BOX_FACES must be at least 1 when boxes are enabled"
 #endif
 
+/* Objects alone on their row (the fast renderer fills their spans without
+ * the per-column owner bookkeeping) are looked for only in worlds of at
+ * most FXRT_LONE_MAX objects: the test looks at every pair of objects on
+ * each row. Default 16. */
+#ifndef FXRT_LONE_MAX
+#define FXRT_LONE_MAX 16
+#endif
+#if FXRT_LONE_MAX < 0 || FXRT_LONE_MAX > 65535
+#error "FXRT_LONE_MAX must be 0..65535"
+#endif
+
+/* Spheres that keep row-coherence state (fast Q16.16 renderer, about
+ * 120 B each; FXRT_NO_COHERENCE below): the spheres with index 0 ..
+ * FXRT_COHERENT_SPHERES - 1; the others find their runs from scratch. A
+ * sphere uses it only when alone on its row, which needs a world of at
+ * most FXRT_LONE_MAX objects, so the default is the smaller of
+ * FXRT_MAX_SPHERES and FXRT_LONE_MAX. fxrt-scenec writes the scene's
+ * sphere count, or 0 (and FXRT_NO_COHERENCE 1) for a scene of more than
+ * FXRT_LONE_MAX objects, where no object is ever alone. */
+#ifndef FXRT_COHERENT_SPHERES
+#define FXRT_COHERENT_SPHERES (FXRT_MAX_SPHERES < FXRT_LONE_MAX ? FXRT_MAX_SPHERES : FXRT_LONE_MAX)
+#endif
+#if FXRT_COHERENT_SPHERES < 0 || FXRT_COHERENT_SPHERES > FXRT_MAX_SPHERES
+#error "FXRT_COHERENT_SPHERES must be 0..FXRT_MAX_SPHERES"
+#endif
+
 /* Ablation switches, for measuring what each optimisation of the fast
  * renderer saves (make bench-ablation); none changes a Q16.16 pixel:
  *   FXRT_NO_BOUNDS  1 = step every object over the whole screen, and test
@@ -147,6 +173,13 @@
  *                   locating its runs on the row and filling them
  *   FXRT_NO_ZRANGE  1 = decide every overlap by computing both depths (no
  *                   depth ranges, no per-row order against planes)
+ *   FXRT_NO_COHERENCE 1 = find a lone object's runs on each row from
+ *                   scratch (a sphere: three 128-bit form evaluations and
+ *                   binary searches, or stepping on Armv6-M; a flat piece:
+ *                   a 64-bit division per form) instead of stepping a
+ *                   sphere's forms down the rows and searching from the
+ *                   row before's runs (RAM: 120 B per coherent sphere, 12 B
+ *                   per flat piece)
  *   FXRT_NO_HOIST   1 = (reference loop) recompute each object's forms at
  *                   every pixel instead of once per frame
  * 0 (default) = the optimisation is on. */
@@ -164,6 +197,9 @@
 #endif
 #ifndef FXRT_NO_SPANS
 #define FXRT_NO_SPANS 0
+#endif
+#ifndef FXRT_NO_COHERENCE
+#define FXRT_NO_COHERENCE 0
 #endif
 #ifndef FXRT_NO_HOIST
 #define FXRT_NO_HOIST 0

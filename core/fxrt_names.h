@@ -67,7 +67,7 @@
 #define render_sample_row FXRT_SYM(render_sample_row)
 #define render_fill_rgb FXRT_SYM(render_fill_rgb)
 #define render_row_runs FXRT_SYM(render_row_runs)
-#define render_runs_setup FXRT_SYM(render_runs_setup)
+#define render_srow_setup FXRT_SYM(render_srow_setup)
 #define geom_sphere_exit FXRT_SYM(geom_sphere_exit)
 #define geom_box_exit FXRT_SYM(geom_box_exit)
 #define trace_bounces FXRT_SYM(trace_bounces)

@@ -105,12 +105,20 @@ typedef struct {
     render_k_t c, x, y, xx, xy, yy;
 } render_quad_t;
 
-/* Run mode of the sampling pass (core/render_sample.c): the fast Q16.16
- * loop, with spans, lone objects and bounds, can describe a fine row as
- * runs of one owner each instead of one owner per column. */
-#define RENDER_RUNS                                                                                         \
-    (FXRT_MAX_SAMPLES > 1 && FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS && !FXRT_NO_LONE && \
-     !FXRT_NO_BOUNDS)
+/* Row coherence (the fast Q16.16 loop, with spans, lone objects and
+ * bounds): a lone sphere's forms step down the rows (r->srow) and its run
+ * on a row is searched from the row before's. */
+#define RENDER_COHERENT                                                                                  \
+    (FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS && !FXRT_NO_LONE && !FXRT_NO_BOUNDS && \
+     !FXRT_NO_COHERENCE)
+
+/* Spheres with row-coherence state (r->srow). */
+#define RENDER_SROWS (RENDER_COHERENT && FXRT_COHERENT_SPHERES > 0)
+
+/* Run mode of the sampling pass (core/render_sample.c): the coherent loop
+ * can describe a fine row as runs of one owner each instead of one owner
+ * per column. */
+#define RENDER_RUNS (FXRT_MAX_SAMPLES > 1 && RENDER_COHERENT)
 
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
@@ -118,8 +126,8 @@ typedef struct {
     render_lin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
     uint8_t edges;
     int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
-#if RENDER_RUNS
-    int16_t hint[6]; /* run mode: where each form (N, D, edges) changed sign on the row before */
+#if RENDER_COHERENT
+    int16_t hint[6]; /* row coherence: where each form (N, D, edges) changed sign on the row before */
 #endif
 } render_flat_t;
 
@@ -263,6 +271,20 @@ typedef struct {
     shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
     uint16_t kind_base[4]; /* obj index of each kind's first object (obj = base + index) */
 #endif
+#if RENDER_SROWS
+    /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the deciding form at its first column x0
+     * is quadratic in the (fine) row, exactly in 128 bits. cur holds it on
+     * fine row vrow (v, d1, d2 as render_srow_t); dvk = v(next row) - v;
+     * ddv and dd1, how dvk and d1 change per row. plo..phi: its run of
+     * f >= 0 on fine row prow (columns from x0), which guesses the next
+     * row's; pk, the column of f's peak last found. */
+    struct {
+        render_srow_t cur; /* v, d1, d2 on fine row vrow */
+        fx128_t dvk, ddv, dd1;
+        int32_t vrow, prow;
+        int16_t plo, phi, pk;
+    } srow[FXRT_COHERENT_SPHERES];
+#endif
 #if FXRT_MAX_SAMPLES > 1
     /* Supersampling (render_sample.c), samples > 1: cam points to `fine`,
      * the camera of the N x N cells (cam_fine), and out_cam to the output
@@ -276,20 +298,6 @@ typedef struct {
     uint8_t fine_rgb[(FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * FXRT_RENDER_MAX_WIDTH] __attribute__((aligned(4)));
     color_sum_t acc[3 * RENDER_OUT_COLS];
     uint16_t uni[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
-#if RENDER_RUNS && FXRT_MAX_SPHERES > 0
-    /* Run mode, per sphere: the deciding form at its first column x0 is
-     * quadratic in the fine row, exactly in 128 bits. cur holds it on
-     * fine row vrow (v, d1, d2 as render_srow_t); dvk = v(next row) - v;
-     * ddv and dd1, how dvk and d1 change per row. plo..phi: its run of
-     * f >= 0 on fine row prow (columns from x0), which guesses the next
-     * row's; pk, the column of f's peak last found. */
-    struct {
-        render_srow_t cur; /* v, d1, d2 on fine row vrow */
-        fx128_t dvk, ddv, dd1;
-        int32_t vrow, prow;
-        int16_t plo, phi, pk;
-    } srow[FXRT_MAX_SPHERES];
-#endif
 #if RENDER_RUNS
     /* Run mode: the runs of fine row j of the current output row are
      * runs[run_at[j] .. run_at[j + 1] - 1], sorted, not overlapping; gaps

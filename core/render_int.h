@@ -66,10 +66,11 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c);
  * out[0 .. n-1], sorted, one object's runs merged; returns n, or -1 when
  * some object is lit or not alone, or there are more than cap runs. */
 int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap);
-#if FXRT_MAX_SPHERES > 0
-/* Per frame, sphere object i: its row series for run mode (r->srow). */
-void render_runs_setup(render_t *r, uint16_t i);
 #endif
+#if RENDER_SROWS
+/* Per frame, sphere object i (index < FXRT_COHERENT_SPHERES): its row
+ * series starts afresh (r->srow). */
+void render_srow_setup(render_t *r, uint16_t i);
 #endif
 
 /* render_sample.c: output row `row` with samples > 1. */

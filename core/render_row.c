@@ -237,10 +237,10 @@ static void render_signs(int64_t a, int64_t b, int32_t kmax, render_iv_t iv[4])
     iv[3] = flip ? nonneg : nonpos;
 }
 
-#if RENDER_RUNS
+#if RENDER_COHERENT
 /* render_signs without a division: from a guess *g of the first column
  * where the form, taken increasing (negated when b < 0), is >= 0 (the row
- * before's, for run mode), by galloping and a binary search on that
+ * before's), by galloping and a binary search on that
  * monotone predicate, with one multiply-add per evaluation; *g is updated.
  * Any guess gives the exact answer; a near one takes two evaluations. */
 static void render_signs_near(int64_t a, int64_t b, int32_t kmax, int16_t *g, render_iv_t iv[4])
@@ -293,6 +293,12 @@ static void render_signs_near(int64_t a, int64_t b, int32_t kmax, int16_t *g, re
 #define RENDER_SIGNS(a, b, kmax, hint, iv) ((hint) ? render_signs_near(a, b, kmax, hint, iv) : render_signs(a, b, kmax, iv))
 #else
 #define RENDER_SIGNS(a, b, kmax, hint, iv) ((void)(hint), render_signs(a, b, kmax, iv))
+#endif
+/* A flat piece's guesses (render_signs_near), where it keeps them. */
+#if RENDER_COHERENT
+#define RENDER_HINT(f) ((f)->hint)
+#else
+#define RENDER_HINT(f) ((int16_t *)NULL)
 #endif
 
 /* A flat piece's hits on columns x0..x1 as at most four runs (k from
@@ -369,11 +375,11 @@ static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t 
 #endif
 
 /* A lone flat piece: its runs filled. */
-static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb)
 {
     render_iv_t run[4];
-    int nrun = render_runs_flat(r, f, x0, x1, iy, NULL, run);
+    int nrun = render_runs_flat(r, f, x0, x1, iy, RENDER_HINT(f), run);
     for (int k = 0; k < nrun; k++)
         render_fill(r, oi, x0 + run[k].lo, x0 + run[k].hi, rgb);
 }
@@ -382,7 +388,7 @@ static void render_span_flat(render_t *r, uint16_t oi, const render_flat_t *f, i
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* Step a flat piece across columns x0..x1: each form is linear, so one
  * exact 64-bit addition per form and pixel. */
-static void render_scan_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb, bool lone)
 {
     bool single = r->obj[oi].kind == RENDER_FLAT;
@@ -488,7 +494,7 @@ static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t 
     s->d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
 }
 
-#if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_RUNS)
+#if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_SROWS)
 /* Where b > 0 (the centre's side of the eye) on columns k = 0..kmax. */
 RENDER_MAYBE_UNUSED static render_iv_t render_sphere_front(const render_obj_t *o, int32_t ix0, int32_t iy, int32_t kmax)
 {
@@ -547,11 +553,38 @@ static int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int
     return n;
 }
 
+#if RENDER_SROWS
+static int32_t render_iy(const cam_t *cam, int32_t row);
+static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row);
+static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row, const render_srow_t *s,
+                                 render_iv_t run[2]);
+
+/* A lone sphere on the row at iy (its bounds x0..x1): its forms stepped
+ * from the row before and its runs searched from the row before's. The
+ * row's forms first, then the search (two frames, not one on top of the
+ * other: the micro:bit's stack). */
+__attribute__((noinline)) static void render_lone_sphere(render_t *r, uint16_t oi, const render_obj_t *o,
+                                                         int32_t iy, uint8_t *rgb)
+{
+    int32_t row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2; /* render_iy's inverse */
+    render_iv_t run[2];
+    int nrun = render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), run);
+    for (int k = 0; k < nrun; k++)
+        render_fill(r, oi, o->x0 + run[k].lo, o->x0 + run[k].hi, rgb);
+}
+#endif
+
 /* Step a sphere over columns x0..x1: a lone one fills its runs, others
  * claim each covered column. */
 static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
+#if RENDER_SROWS
+    if (lone && r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES) { /* the series needs three rows */
+        render_lone_sphere(r, oi, o, iy, rgb);
+        return;
+    }
+#endif
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     render_srow_t s;
     render_sphere_row(r, o, ix0, iy, &s);
@@ -671,7 +704,7 @@ static void render_scan_sphere_f(render_t *r, uint16_t oi, const render_obj_t *o
  * a large one simply takes the owner path.) */
 static bool render_alone(const render_t *r, uint16_t i, int32_t row)
 {
-    if (r->count > 16)
+    if (r->count > FXRT_LONE_MAX)
         return false;
     const render_obj_t *o = &r->obj[i];
     for (uint16_t j = 0; j < r->count; j++) {
@@ -682,13 +715,13 @@ static bool render_alone(const render_t *r, uint16_t i, int32_t row)
     return true;
 }
 
-#if RENDER_RUNS
+#if RENDER_COHERENT
 /* The ray's row coordinate iy of fine row `row` (0 = top). */
-static int32_t render_iy(const cam_t *cam, int32_t row) { return 2 * (cam->height - 1 - row) - cam->height + 1; }
+RENDER_MAYBE_UNUSED static int32_t render_iy(const cam_t *cam, int32_t row) { return 2 * (cam->height - 1 - row) - cam->height + 1; }
 
-#if FXRT_MAX_SPHERES > 0
+#if RENDER_SROWS
 
-void render_runs_setup(render_t *r, uint16_t i)
+void render_srow_setup(render_t *r, uint16_t i)
 {
     const render_obj_t *o = &r->obj[i];
     r->srow[o->index].vrow = r->srow[o->index].prow = -2;
@@ -895,7 +928,9 @@ __attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const re
     return render_sphere_runs(o, s, o->x0, o->x1, ix0, iy, run);
 }
 #endif
+#endif
 
+#if RENDER_RUNS
 /* Append the non-empty runs iv[0..k-1] (k from x0) of object oi to
  * out[0..n-1]; -1 when that would pass cap. */
 static int render_runs_push(render_run_t *out, int n, int cap, int32_t x0, const render_iv_t *iv, int k, uint16_t oi)
@@ -931,13 +966,17 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
             iv[0].hi = o->x1 - o->x0;
             n = render_runs_push(out, n, cap, o->x0, iv, 1, i);
             break;
-#if FXRT_MAX_SPHERES > 0
         case RENDER_SPHERE:
-            /* The row's forms first, then the search (two frames, not one
-             * on top of the other: the micro:bit's stack). */
-            n = render_runs_push(out, n, cap, o->x0, iv, render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), iv), i);
-            break;
+#if RENDER_SROWS
+            if (o->index < FXRT_COHERENT_SPHERES) {
+                /* The row's forms first, then the search (two frames, not
+                 * one on top of the other: the micro:bit's stack). */
+                n = render_runs_push(out, n, cap, o->x0, iv,
+                                     render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), iv), i);
+                break;
+            }
 #endif
+            return -1; /* no row series: the per-sample pass */
         case RENDER_FLAT:
             n = render_runs_push(out, n, cap, o->x0, iv, render_runs_flat(r, o->u.flat, o->x0, o->x1, iy, o->u.flat->hint, iv), i);
             break;
@@ -1022,7 +1061,7 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
         case RENDER_FLAT:
         case RENDER_BOX:
             for (int k = 0; k < o->nflat; k++) {
-                const render_flat_t *f = render_face(o, k);
+                render_flat_t *f = render_face(o, k);
                 if (FXRT_NO_BOUNDS || o->kind == RENDER_FLAT)
                     RENDER_SCAN_FLAT(r, i, f, x0, x1, iy, rgb, lone); /* a plane's or triangle's bounds are its object's */
                 else if (row >= o->u.face[k].r0 && row <= o->u.face[k].r1)

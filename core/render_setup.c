@@ -707,12 +707,12 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
         break;
     }
     render_setup_object(r, i);
-#if RENDER_RUNS
-#if FXRT_MAX_SPHERES > 0
-    if (kind == GEOM_SPHERE && r->samples > 1)
-        render_runs_setup(r, i);
+#if RENDER_SROWS
+    if (kind == GEOM_SPHERE && index < FXRT_COHERENT_SPHERES)
+        render_srow_setup(r, i);
 #endif
-    if (o->kind == RENDER_FLAT || o->kind == RENDER_BOX) /* run mode's guesses: a fixed start each frame */
+#if RENDER_COHERENT
+    if (o->kind == RENDER_FLAT || o->kind == RENDER_BOX) /* row coherence's guesses: a fixed start each frame */
         for (int k = 0; k < o->nflat; k++)
             for (int j = 0; j < 6; j++)
                 render_face(o, k)->hint[j] = 0;

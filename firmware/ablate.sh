@@ -11,6 +11,9 @@
 #   fast, no spans          lone flat pieces stepped pixel by pixel
 #   fast, no depth ranges   every overlap decided by computing both depths
 #                           (no z ranges, no per-row order against planes)
+#   fast, no row coherence  a lone object's runs found from scratch on each
+#                           row (no sphere forms stepped down the rows, no
+#                           search from the row before's runs)
 #   fast                    the default build
 # Scenes: the seed scenes and, when present, scenes/bench/ (ABLATE_SCENES
 # overrides the list).
@@ -28,6 +31,7 @@ variants=(
     "fast, no lone painting|ablnolone|-DFXRT_NO_LONE=1"
     "fast, no spans|ablnospans|-DFXRT_NO_SPANS=1"
     "fast, no depth ranges|ablnozrange|-DFXRT_NO_ZRANGE=1"
+    "fast, no row coherence|ablnocoh|-DFXRT_NO_COHERENCE=1"
     "fast||"
 )
 if [ -n "${ABLATE_SCENES:-}" ]; then

@@ -18,7 +18,11 @@
 #    flash needed is the end of .text plus the .data image.
 #  - per object: the same sources compiled again with one kind's capacity
 #    (FXRT_MAX_<KIND> in scene_config.h) raised by 32 objects and linked the
-#    same way; RAM per object = the difference / 32, rounded up.
+#    same way; RAM per object = the difference / 32, rounded up, from a
+#    probe with the scene's own capacities. Probes are compiled without row
+#    coherence (a scene of more than FXRT_LONE_MAX objects has none), so
+#    the figures are those of large scenes; a small scene's coherence state
+#    counts in the part "without objects".
 # So the figures follow whatever the core's records take today.
 #
 # link mode reads what make wrote into DIR: fit-cflags (FW_CFLAGS), fit-src
@@ -75,12 +79,15 @@ trial_link() {
 }
 
 # probe KIND CAP: compile every firmware source with FXRT_MAX_<KIND> = CAP
-# into $WORK/KIND-CAP/, link it; prints "RAM FLASH".
+# (KIND base: the scene's capacities) into $WORK/KIND-CAP/, link it; prints
+# "RAM FLASH". A probe is a scene of many objects, so it has no row
+# coherence (FXRT_NO_COHERENCE 1), as the scene compiler would emit for it.
 probe() {
     local kind=$1 cap=$2 pdir=$WORK/$1-$2 s flags=() pids=()
     mkdir -p "$pdir"
-    sed -E "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
-        "$DIR/scene_config.h" >"$pdir/scene_config.h"
+    sed -E -e "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
+        -e '/^#define FXRT_(COHERENT_SPHERES|NO_COHERENCE) /d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
+    printf '#define FXRT_COHERENT_SPHERES 0\n#define FXRT_NO_COHERENCE 1\n' >>"$pdir/scene_config.h"
     # A box brings its faces: when the scene compiler sized the face pool
     # (FXRT_RENDER_BOX_FACES, the faces this camera needs), the extra boxes
     # get as many faces as the scene's boxes have on average, so the per-box
@@ -109,7 +116,8 @@ probe() {
 # analyse: sets PER_<kind> (RAM bytes per object), FLASHPER_<kind>, COUNT_<kind>,
 # FIXED (RAM for everything but the objects) from the scene in DIR.
 analyse() {
-    local k m n ra fa sum=0
+    local k m n ra fa rb fb sum=0
+    read -r rb fb < <(probe base 0) # the differences are taken without row coherence
     for k in $KINDS; do
         m=$(macro "$k")
         n=$(sed -nE "s/^#define FXRT_MAX_$m ([0-9]+).*/\1/p" "$DIR/scene_config.h")
@@ -117,8 +125,8 @@ analyse() {
         read -r ra fa < <(probe "$k" $((n + 32)))
         printf -v "COUNT_$k" '%s' "$n"
         # rounded up: a kind the scene lacks also brings its array's alignment
-        printf -v "PER_$k" '%s' "$(((ra - NEED_RAM + 31) / 32))"
-        printf -v "FLASHPER_$k" '%s' "$(((fa - NEED_FLASH + 31) / 32))"
+        printf -v "PER_$k" '%s' "$(((ra - rb + 31) / 32))"
+        printf -v "FLASHPER_$k" '%s' "$(((fa - fb + 31) / 32))"
         local per_var=PER_$k
         sum=$((sum + n * ${!per_var}))
     done

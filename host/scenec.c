@@ -31,7 +31,9 @@ static const char usage[] =
     "1 only if an object is phong or reflective; FXRT_MAX_DEPTH is the scene's\n"
     "depth if an object is reflective or transparent, else 0; FXRT_MAX_SAMPLES is\n"
     "the scene's samples N (FXRT_RENDER_MAX_WIDTH N x width); FXRT_ADAPTIVE 1 only\n"
-    "for 'samples N adaptive'.\n"
+    "for 'samples N adaptive'. FXRT_COHERENT_SPHERES is the scene's spheres, or 0\n"
+    "with FXRT_NO_COHERENCE 1 when the scene has more than FXRT_LONE_MAX objects\n"
+    "(none is ever alone on its row, so no row-coherence state).\n"
     "--all-kinds keeps every primitive kind compiled in (capacity >= 1), to\n"
     "measure what stripping the unused ones saves.\n";
 

@@ -1572,6 +1572,154 @@ static void test_render_eye_on_box(void)
     CHECK_MSG(tally.rows_bad == 0, "%ld rows differ between render_row and render_row_reference", tally.rows_bad);
 }
 
+/* A random world for the row tests: 1 to 6 objects of every kind spread
+ * across the view (so that on most rows each is alone; some overlap),
+ * arbitrary colours, a plane in every fifth (it % 5 == 4). */
+static void spread_world(uint64_t *st, int it)
+{
+    world_init(&world, col(orand(st, 0, 1), orand(st, 0, 1), orand(st, 0, 1)));
+    uint16_t id = 0;
+    int nobj = 1 + (int)(check_rng_next(st) % 6);
+    double spread = orand(st, 0.7, 1.3); /* below 1: objects more likely to overlap */
+    for (int i = 0; i < nobj; i++) {
+        double x = -3.2 + 6.4 * (i + 0.5) / nobj * spread, y = orand(st, -1.5, 1.5), z = orand(st, -8, -4);
+        double s = orand(st, 0.2, 1.4) * 3 / (nobj + 1);
+        color_t cc = col(orand(st, 0, 1), orand(st, 0, 1), orand(st, 0, 1));
+        switch (check_rng_next(st) % 3) {
+        case 0:
+            if (geom_sphere_make(&world.spheres[world.n_spheres], V3(x, y, z), N(s), cc, id))
+                world.n_spheres++, id++;
+            break;
+        case 1:
+            if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x - s, y - s, z),
+                                   V3(x + s * orand(st, -1, 1), y + s, z + orand(st, -1, 1)),
+                                   V3(x + s, y + s * orand(st, -1, 1), z + orand(st, -1, 1)), cc, id))
+                world.n_triangles++, id++;
+            break;
+        default:
+            if (geom_box_make(&world.boxes[world.n_boxes], V3(x - s, y - s, z - s),
+                              V3(x + s * orand(st, 0.2, 1), y + s * orand(st, 0.2, 1), z + s * orand(st, 0.2, 1)),
+                              cc, id))
+                world.n_boxes++, id++;
+            break;
+        }
+    }
+    if (it % 5 == 4 && geom_plane_make(&world.planes[0], V3(0, orand(st, -4, -2), 0),
+                                       V3(orand(st, -0.2, 0.2), 1, orand(st, -0.2, 0.2)),
+                                       col(orand(st, 0, 1), orand(st, 0, 1), orand(st, 0, 1)), id))
+        world.n_planes = 1, id++;
+}
+
+/* Row coherence (RENDER_COHERENT: a lone sphere's forms stepped down the
+ * rows and its run searched from the row before's; a flat piece's sign
+ * changes searched from the row before's): random worlds (spread_world),
+ * both camera kinds, the eye inside a sphere in some, sizes 1..40 x
+ * 1..30, one sample per pixel, and the rows asked for in every order a
+ * caller may use: top down, bottom up, shuffled, random rows with
+ * repeats, and a second top-down pass over the same set-up (the guesses
+ * then come from the frame before). Each row must equal
+ * render_row_reference byte for byte, and each pixel away from
+ * silhouettes and near ties must show the nearest object of the
+ * world-space kernels. In Q16.16 the coherent search must run in at
+ * least a quarter of the frames with a sphere (the others: no sphere
+ * alone on a row, the eye inside, or a row where disc is convex). Cap: 0
+ * wrong. */
+static void test_render_coherent(void)
+{
+    uint64_t st = 0xc04e7e17ull;
+    static int ids[OH][OW];
+    static bool tie[OH][OW];
+    static rgb8_t want[OH][OW];
+    long rows = 0, rows_bad = 0, interior = 0, interior_bad = 0, objects_px = 0;
+    int sphere_frames = 0, coherent_frames = 0;
+    for (int it = 0; it < 240; it++) {
+        spread_world(&st, it);
+        bool ortho = it % 4 == 3, inside = it % 13 == 5 && world.n_spheres > 0;
+        vec3_t eye = V3(orand(&st, -0.5, 0.5), orand(&st, -0.5, 0.5), orand(&st, 0, 1));
+        if (inside)
+            eye = world.spheres[0].center;
+        int32_t w = 1 + (int32_t)(check_rng_next(&st) % OW), h = 1 + (int32_t)(check_rng_next(&st) % OH);
+        if (it % 3 != 0) { /* mostly frames of useful size, some tiny */
+            w = w < 8 ? w + 8 : w;
+            h = h < 6 ? h + 6 : h;
+        }
+        cam_t c;
+        CHECK(cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, eye, V3(orand(&st, -0.1, 0.1), 0, -1),
+                        V3(0, 1, 0), N(orand(&st, 40, 80)), N(orand(&st, 6, 10)), w, h) == CAM_OK);
+        static render_t state;
+        CHECK(render_setup(&state, &world, &c));
+        for (int32_t row = 0; row < h; row++)
+            for (int32_t x = 0; x < w; x++) {
+                ray_t r;
+                num_t t1, t2;
+                cam_ray(&c, x, h - 1 - row, &r);
+                ids[row][x] = oracle_pixel(&r, &t1, &t2, &want[row][x]);
+                tie[row][x] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
+            }
+        int order = it % 5, n_ask = order == 3 ? 2 * h : (order == 4 ? 2 * h : h);
+        int32_t perm[OH];
+        for (int32_t i = 0; i < h; i++)
+            perm[i] = i;
+        if (order == 2)
+            for (int32_t i = h - 1; i > 0; i--) {
+                int32_t j = (int32_t)(check_rng_next(&st) % (uint64_t)(i + 1)), t = perm[i];
+                perm[i] = perm[j];
+                perm[j] = t;
+            }
+        for (int k = 0; k < n_ask; k++) {
+            int32_t row = order == 0 || order == 4 ? k % h
+                          : order == 1 ? h - 1 - k
+                          : order == 2 ? perm[k]
+                                       : (int32_t)(check_rng_next(&st) % (uint64_t)h);
+            uint8_t fast[3 * OW], ref[3 * OW];
+            render_row(&state, row, fast);
+            render_row_reference(&state, row, ref);
+            rows++;
+            if (memcmp(fast, ref, 3 * (size_t)w) != 0) {
+                rows_bad++;
+                CHECK_SWEEP(false, "coherent %d (%s, %dx%d, order %d) row %d: fast != reference", it,
+                            ortho ? "ortho" : "persp", (int)w, (int)h, order, (int)row);
+            }
+            for (int32_t x = 0; x < w; x++) {
+                bool same = !tie[row][x];
+                for (int32_t y = row - 1; y <= row + 1 && same; y++)
+                    for (int32_t xx = x - 1; xx <= x + 1 && same; xx++)
+                        if (y >= 0 && y < h && xx >= 0 && xx < w)
+                            same = ids[y][xx] == ids[row][x] && !tie[y][xx];
+                if (!same)
+                    continue;
+                interior++;
+                objects_px += ids[row][x] >= 0;
+                const uint8_t *p = &fast[3 * x];
+                rgb8_t wt = want[row][x];
+                if (p[0] != wt.r || p[1] != wt.g || p[2] != wt.b) {
+                    interior_bad++;
+                    CHECK_SWEEP(false, "coherent %d row %d x %d: got %d %d %d, want %d %d %d (object %d)", it,
+                                (int)row, (int)x, p[0], p[1], p[2], wt.r, wt.g, wt.b, ids[row][x]);
+                }
+            }
+        }
+        sphere_frames += world.n_spheres > 0;
+#if RENDER_SROWS
+        bool searched = false; /* some sphere's run was searched from a row before's */
+        for (uint16_t i = 0; i < world.n_spheres && i < FXRT_COHERENT_SPHERES; i++)
+            searched |= state.srow[i].prow >= 0;
+        coherent_frames += searched;
+#endif
+    }
+    printf("coherent: %ld rows, %ld interior pixels checked (%ld on objects), %ld wrong, %ld rows fast != reference; "
+           "%d of %d frames with a sphere searched from the row before\n",
+           rows, interior, objects_px, interior_bad, rows_bad, coherent_frames, sphere_frames);
+    CHECK_MSG(interior > 40000 && objects_px > 8000, "too few pixels exercised: %ld interior, %ld on objects", interior,
+              objects_px);
+    CHECK_MSG(interior_bad == 0, "%ld interior pixels differ from the kernels' nearest object", interior_bad);
+    CHECK_MSG(rows_bad == 0, "%ld rows differ between render_row and render_row_reference", rows_bad);
+#if RENDER_SROWS
+    CHECK_MSG(coherent_frames * 4 >= sphere_frames, "the coherent path ran in %d of %d frames with a sphere",
+              coherent_frames, sphere_frames);
+#endif
+}
+
 /* Supersampling from runs (core/render_sample.c, run mode): random worlds
  * of 1 to 6 objects of every kind spread across the view (so that on most
  * rows each is alone; some overlap, which takes the per-sample pass), a
@@ -1596,37 +1744,7 @@ static void test_render_runs(void)
     long rows = 0, rows_bad = 0, interior = 0, interior_bad = 0, objects_px = 0;
     unsigned long run_rows = 0;
     for (int it = 0; it < 160; it++) {
-        world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
-        uint16_t id = 0;
-        int nobj = 1 + (int)(check_rng_next(&st) % 6);
-        double spread = orand(&st, 0.7, 1.3); /* below 1: objects more likely to overlap */
-        for (int i = 0; i < nobj; i++) {
-            double x = -3.2 + 6.4 * (i + 0.5) / nobj * spread, y = orand(&st, -1.5, 1.5), z = orand(&st, -8, -4);
-            double s = orand(&st, 0.2, 1.4) * 3 / (nobj + 1);
-            color_t cc = col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1));
-            switch (check_rng_next(&st) % 3) {
-            case 0:
-                if (geom_sphere_make(&world.spheres[world.n_spheres], V3(x, y, z), N(s), cc, id))
-                    world.n_spheres++, id++;
-                break;
-            case 1:
-                if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x - s, y - s, z),
-                                       V3(x + s * orand(&st, -1, 1), y + s, z + orand(&st, -1, 1)),
-                                       V3(x + s, y + s * orand(&st, -1, 1), z + orand(&st, -1, 1)), cc, id))
-                    world.n_triangles++, id++;
-                break;
-            default:
-                if (geom_box_make(&world.boxes[world.n_boxes], V3(x - s, y - s, z - s),
-                                  V3(x + s * orand(&st, 0.2, 1), y + s * orand(&st, 0.2, 1), z + s * orand(&st, 0.2, 1)),
-                                  cc, id))
-                    world.n_boxes++, id++;
-                break;
-            }
-        }
-        if (it % 5 == 4 && geom_plane_make(&world.planes[0], V3(0, orand(&st, -4, -2), 0),
-                                           V3(orand(&st, -0.2, 0.2), 1, orand(&st, -0.2, 0.2)),
-                                           col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
-            world.n_planes = 1, id++;
+        spread_world(&st, it);
         bool ortho = it % 4 == 3, inside = it % 11 == 5 && world.n_spheres > 0;
         vec3_t eye = V3(orand(&st, -0.5, 0.5), orand(&st, -0.5, 0.5), orand(&st, 0, 1));
         if (inside)
@@ -1733,6 +1851,7 @@ int main(void)
     test_render();
     test_render_overlap();
     test_render_eye_on_box();
+    test_render_coherent();
     test_render_runs();
     return check_report("test_geom_" NUM_NAME);
 }
