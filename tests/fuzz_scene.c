@@ -78,7 +78,9 @@ static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, lo
 {
     static const char *const kw[] = {"plane", "sphere",  "triangle", "box",    "camera",
                                      "light", "ambient", "depth",    "samples"};
-    size_t i = 0;
+    /* scene_parse skips a UTF-8 byte-order mark at the start of the text
+     * (line 1's keyword follows it); so does this. */
+    size_t i = n >= 3 && memcmp(d, "\xef\xbb\xbf", 3) == 0 ? 3 : 0;
     long l;
 
     for (l = 1; l <= lines; l++) {
