@@ -1387,6 +1387,36 @@ static int oracle_pixel(const ray_t *ray, num_t *t1, num_t *t2, rgb8_t *rgb)
     return best;
 }
 
+/* Row `row` of state by render_row into fast[] (w pixels, at most OW)
+ * and by render_row_reference beside it: byte for byte the same? */
+static bool row_vs_reference(render_t *state, int32_t row, int32_t w, uint8_t fast[3 * OW])
+{
+    uint8_t ref[3 * OW];
+    render_row(state, row, fast);
+    render_row_reference(state, row, ref);
+    return memcmp(fast, ref, 3 * (size_t)w) == 0;
+}
+
+/* The kernels' view of a w x h frame of camera c (at most OW x OH): per
+ * pixel the nearest object's id (-1: none), its colour, and whether a
+ * second hit is a near tie (within 1/1000). Returns the pixels with a
+ * second hit. */
+static long oracle_frame(const cam_t *c, int32_t w, int32_t h, int ids[OH][OW], rgb8_t want[OH][OW],
+                         bool tie[OH][OW])
+{
+    long overlaps = 0;
+    for (int32_t row = 0; row < h; row++)
+        for (int32_t x = 0; x < w; x++) {
+            ray_t r;
+            num_t t1, t2;
+            cam_ray(c, x, h - 1 - row, &r);
+            ids[row][x] = oracle_pixel(&r, &t1, &t2, &want[row][x]);
+            tie[row][x] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
+            overlaps += t2 != NUM_MAX;
+        }
+    return overlaps;
+}
+
 /* One OW x OH frame of state against the kernels: render_row must equal
  * render_row_reference byte for byte, and every pixel off the border, not
  * marked in skip (may be NULL) and whose 8 neighbours see the same object
@@ -1399,10 +1429,8 @@ static void check_frame(render_t *state, int ids[OH][OW], rgb8_t want[OH][OW], b
                         const char *what, frame_tally_t *t)
 {
     for (int32_t row = 0; row < OH; row++) {
-        uint8_t fast[3 * OW], ref[3 * OW];
-        render_row(state, row, fast);
-        render_row_reference(state, row, ref);
-        if (memcmp(fast, ref, sizeof fast) != 0) {
+        uint8_t fast[3 * OW];
+        if (!row_vs_reference(state, row, OW, fast)) {
             t->rows_bad++;
             CHECK_SWEEP(false, "%s row %d: fast != reference", what, (int)row);
         }
@@ -1482,15 +1510,7 @@ static void test_render_overlap(void)
                         N(orand(&st, 30, 90)), N(orand(&st, 4, 10)), OW, OH) == CAM_OK);
         static render_t state;
         CHECK(render_setup(&state, &world, &c));
-        for (int32_t row = 0; row < OH; row++)
-            for (int32_t x = 0; x < OW; x++) {
-                ray_t r;
-                num_t t1, t2;
-                cam_ray(&c, x, OH - 1 - row, &r);
-                ids[row][x] = oracle_pixel(&r, &t1, &t2, &want[row][x]);
-                tie[row][x] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
-                overlaps += t2 != NUM_MAX;
-            }
+        overlaps += oracle_frame(&c, OW, OH, ids, want, tie);
         char what[64];
         snprintf(what, sizeof what, "scene %d (%s)", it, ortho ? "ortho" : "persp");
         check_frame(&state, ids, want, tie, what, &tally);
@@ -1610,6 +1630,14 @@ static void spread_world(uint64_t *st, int it)
         world.n_planes = 1, id++;
 }
 
+/* An eye for spread_world's world: near the origin, or at the centre of
+ * its first sphere when `inside` and it has one. */
+static vec3_t spread_eye(uint64_t *st, bool inside)
+{
+    vec3_t eye = V3(orand(st, -0.5, 0.5), orand(st, -0.5, 0.5), orand(st, 0, 1));
+    return inside && world.n_spheres > 0 ? world.spheres[0].center : eye;
+}
+
 /* Row coherence (RENDER_COHERENT: a lone sphere's forms stepped down the
  * rows and its run searched from the row before's; a flat piece's sign
  * changes searched from the row before's): random worlds (spread_world),
@@ -1634,10 +1662,8 @@ static void test_render_coherent(void)
     int sphere_frames = 0, coherent_frames = 0;
     for (int it = 0; it < 240; it++) {
         spread_world(&st, it);
-        bool ortho = it % 4 == 3, inside = it % 13 == 5 && world.n_spheres > 0;
-        vec3_t eye = V3(orand(&st, -0.5, 0.5), orand(&st, -0.5, 0.5), orand(&st, 0, 1));
-        if (inside)
-            eye = world.spheres[0].center;
+        bool ortho = it % 4 == 3;
+        vec3_t eye = spread_eye(&st, it % 13 == 5);
         int32_t w = 1 + (int32_t)(check_rng_next(&st) % OW), h = 1 + (int32_t)(check_rng_next(&st) % OH);
         if (it % 3 != 0) { /* mostly frames of useful size, some tiny */
             w = w < 8 ? w + 8 : w;
@@ -1648,14 +1674,7 @@ static void test_render_coherent(void)
                         V3(0, 1, 0), N(orand(&st, 40, 80)), N(orand(&st, 6, 10)), w, h) == CAM_OK);
         static render_t state;
         CHECK(render_setup(&state, &world, &c));
-        for (int32_t row = 0; row < h; row++)
-            for (int32_t x = 0; x < w; x++) {
-                ray_t r;
-                num_t t1, t2;
-                cam_ray(&c, x, h - 1 - row, &r);
-                ids[row][x] = oracle_pixel(&r, &t1, &t2, &want[row][x]);
-                tie[row][x] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
-            }
+        oracle_frame(&c, w, h, ids, want, tie);
         int order = it % 5, n_ask = order == 3 ? 2 * h : (order == 4 ? 2 * h : h);
         int32_t perm[OH];
         for (int32_t i = 0; i < h; i++)
@@ -1671,11 +1690,9 @@ static void test_render_coherent(void)
                           : order == 1 ? h - 1 - k
                           : order == 2 ? perm[k]
                                        : (int32_t)(check_rng_next(&st) % (uint64_t)h);
-            uint8_t fast[3 * OW], ref[3 * OW];
-            render_row(&state, row, fast);
-            render_row_reference(&state, row, ref);
+            uint8_t fast[3 * OW];
             rows++;
-            if (memcmp(fast, ref, 3 * (size_t)w) != 0) {
+            if (!row_vs_reference(&state, row, w, fast)) {
                 rows_bad++;
                 CHECK_SWEEP(false, "coherent %d (%s, %dx%d, order %d) row %d: fast != reference", it,
                             ortho ? "ortho" : "persp", (int)w, (int)h, order, (int)row);
@@ -1745,10 +1762,8 @@ static void test_render_runs(void)
     unsigned long run_rows = 0;
     for (int it = 0; it < 160; it++) {
         spread_world(&st, it);
-        bool ortho = it % 4 == 3, inside = it % 11 == 5 && world.n_spheres > 0;
-        vec3_t eye = V3(orand(&st, -0.5, 0.5), orand(&st, -0.5, 0.5), orand(&st, 0, 1));
-        if (inside)
-            eye = world.spheres[0].center;
+        bool ortho = it % 4 == 3;
+        vec3_t eye = spread_eye(&st, it % 11 == 5);
         int32_t ow = 9 + (int32_t)(check_rng_next(&st) % (OW - 8)), oh = 7 + (int32_t)(check_rng_next(&st) % (OH - 6));
         int32_t n = 2 + (int32_t)(check_rng_next(&st) % 4);
         if (n > FXRT_MAX_SAMPLES)
@@ -1780,11 +1795,9 @@ static void test_render_runs(void)
                 ftie[Y + 1][X + 1] = t2 != NUM_MAX && D(t2) - D(t1) <= 1e-3 * D(t1) + 1e-4;
             }
         for (int32_t row = 0; row < oh; row++) {
-            uint8_t fast[3 * OW], ref[3 * OW];
-            render_row(&state, row, fast);
-            render_row_reference(&state, row, ref);
+            uint8_t fast[3 * OW];
             rows++;
-            if (memcmp(fast, ref, 3 * (size_t)ow) != 0) {
+            if (!row_vs_reference(&state, row, ow, fast)) {
                 rows_bad++;
                 CHECK_SWEEP(false, "runs %d (%s, samples %d%s, %dx%d) row %d: fast != reference", it,
                             ortho ? "ortho" : "persp", (int)n, adaptive ? " adaptive" : "", (int)ow, (int)oh, (int)row);
