@@ -31,10 +31,12 @@ bench: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(if $(BENCH_SETS),$(if $(filter frontier,$(BENCH_SETS)),$(frontier_cmd)),$(frontier_cmd))
 	$(if $(BENCH_SETS),$(if $(filter samples,$(BENCH_SETS)),$(samples_cmd)),$(samples_cmd))
 
-# Issue 12's cheap case (firmware/bench-samples.sh): the seed scenes at
-# samples 1, 2 and 4, q16, every board, at BENCH_SIZE; targets: samples N
-# at most N times samples 1 per scene, geometric mean <= 1.5x (N = 2) and
-# <= 2.5x (N = 4). make bench-samples [BENCH_UPDATE_DOCS=1]. Not in make test.
+# Issue 12's cheap case (firmware/bench-samples.sh): scenes/samples/ (one
+# object fills the view: every pixel is the cheap case) and, for
+# information, the seed scenes, at samples 1, 2 and 4, q16, every board, at
+# BENCH_SIZE; targets on scenes/samples/: samples N at most N times samples
+# 1 per scene, geometric mean <= 1.5x (N = 2) and <= 2.5x (N = 4).
+# make bench-samples [BENCH_UPDATE_DOCS=1]. Not in make test.
 samples_cmd = $(Q)BUILD=$(BUILD) BENCH_SIZE=$(BENCH_SIZE) BENCH_BOARD_INFO='$(BENCH_BOARD_INFO)' \
 	  BENCH_UPDATE_DOCS=$(BENCH_UPDATE_DOCS) firmware/bench-samples.sh
 bench-samples: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
