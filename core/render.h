@@ -272,12 +272,13 @@ typedef struct {
     uint16_t kind_base[4]; /* obj index of each kind's first object (obj = base + index) */
 #endif
 #if RENDER_SROWS
-    /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the deciding form at its first column x0
-     * is quadratic in the (fine) row, exactly in 128 bits. cur holds it on
-     * fine row vrow (v, d1, d2 as render_srow_t); dvk = v(next row) - v;
-     * ddv and dd1, how dvk and d1 change per row. plo..phi: its run of
-     * f >= 0 on fine row prow (columns from x0), which guesses the next
-     * row's; pk, the column of f's peak last found. */
+    /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the
+     * deciding form at its first column x0 is quadratic in the (fine) row,
+     * exactly in 128 bits. cur holds it on fine row vrow (v, d1, d2 as
+     * render_srow_t); dvk = v(next row) - v; ddv and dd1, how dvk and d1
+     * change per row. plo..phi: its run of f >= 0 on fine row prow
+     * (columns from x0), which guesses the next row's; pk, the column of
+     * f's peak last found. */
     struct {
         render_srow_t cur; /* v, d1, d2 on fine row vrow */
         fx128_t dvk, ddv, dd1;

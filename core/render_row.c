@@ -717,7 +717,10 @@ static bool render_alone(const render_t *r, uint16_t i, int32_t row)
 
 #if RENDER_COHERENT
 /* The ray's row coordinate iy of fine row `row` (0 = top). */
-RENDER_MAYBE_UNUSED static int32_t render_iy(const cam_t *cam, int32_t row) { return 2 * (cam->height - 1 - row) - cam->height + 1; }
+RENDER_MAYBE_UNUSED static int32_t render_iy(const cam_t *cam, int32_t row)
+{
+    return 2 * (cam->height - 1 - row) - cam->height + 1;
+}
 
 #if RENDER_SROWS
 
