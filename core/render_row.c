@@ -554,21 +554,16 @@ static int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int
 }
 
 #if RENDER_SROWS
-static int32_t render_iy(const cam_t *cam, int32_t row);
-static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row);
-static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row, const render_srow_t *s,
-                                 render_iv_t run[2]);
+static inline int render_sphere_row_runs(render_t *r, const render_obj_t *o, int32_t row, render_iv_t run[2]);
 
 /* A lone sphere on the row at iy (its bounds x0..x1): its forms stepped
- * from the row before and its runs searched from the row before's. The
- * row's forms first, then the search (two frames, not one on top of the
- * other: the micro:bit's stack). */
+ * from the row before and its runs searched from the row before's. */
 __attribute__((noinline)) static void render_lone_sphere(render_t *r, uint16_t oi, const render_obj_t *o,
                                                          int32_t iy, uint8_t *rgb)
 {
     int32_t row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2; /* render_iy's inverse */
     render_iv_t run[2];
-    int nrun = render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), run);
+    int nrun = render_sphere_row_runs(r, o, row, run);
     for (int k = 0; k < nrun; k++)
         render_fill(r, oi, o->x0 + run[k].lo, o->x0 + run[k].hi, rgb);
 }
@@ -930,6 +925,15 @@ __attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const re
     }
     return render_sphere_runs(o, s, o->x0, o->x1, ix0, iy, run);
 }
+
+/* A lone sphere's runs on fine row `row` (k from its x0), from the row
+ * before's. The row's forms first, then the search (two frames, not one
+ * on top of the other: the micro:bit's stack). */
+static inline __attribute__((always_inline)) int render_sphere_row_runs(render_t *r, const render_obj_t *o, int32_t row,
+                                                                    render_iv_t run[2])
+{
+    return render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), run);
+}
 #endif
 #endif
 
@@ -972,10 +976,7 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
         case RENDER_SPHERE:
 #if RENDER_SROWS
             if (o->index < FXRT_COHERENT_SPHERES) {
-                /* The row's forms first, then the search (two frames, not
-                 * one on top of the other: the micro:bit's stack). */
-                n = render_runs_push(out, n, cap, o->x0, iv,
-                                     render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), iv), i);
+                n = render_runs_push(out, n, cap, o->x0, iv, render_sphere_row_runs(r, o, row, iv), i);
                 break;
             }
 #endif
