@@ -116,6 +116,9 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
     vec3_t n = inside ? vec3_neg(n_geo) : n_geo;
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
+#if !FXRT_SHADOWS
+    (void)kind, (void)index; /* only shadow rays need to know the object */
+#endif
     for (uint8_t i = 0; i < w->n_lights; i++) {
         const light_t *L = &w->lights[i];
         vec3_t l;

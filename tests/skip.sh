@@ -4,7 +4,10 @@
 #   flat        FXRT_MAX_LIGHTS 0: no shading, shadow or key code at all
 #   lit, no shadows   FXRT_SHADOWS 0: shading, but no shadow-ray code
 #   lit, shadows      both (the control: the symbols exist and are found)
-# and none of them links a libm function (pow, acos, cos, sqrt, ...).
+# and none of them links a libm function (pow, acos, cos, sqrt, ...). They
+# are compiled with the firmware's warnings as errors: a lit scene whose
+# lights all have "shadows off" once failed to build its firmware
+# (an unused parameter with FXRT_SHADOWS 0).
 # Issue 12, with the configuration the scene compiler emits for each case:
 #   lit, no bounce    FXRT_MAX_DEPTH 0 (no reflective or transparent
 #                     material), samples 1: no bounce code (trace_bounces,
@@ -34,7 +37,7 @@ build() { # NAME FLAGS...
     shift
     local srcs=()
     for f in $CORE; do srcs+=(core/$f.c); done
-    arm-none-eabi-gcc -std=c11 -O2 -mcpu=cortex-m0 -mthumb -ffreestanding -ffunction-sections -fdata-sections \
+    arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Werror -O2 -mcpu=cortex-m0 -mthumb -ffreestanding -ffunction-sections -fdata-sections \
         -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=1 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 \
         -DFXRT_RENDER_MAX_WIDTH=32 "$@" -Icore tests/skip_app.c "${srcs[@]}" \
         -nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Wl,-e,main \
