@@ -36,8 +36,13 @@ run_one() {
     # The notice's sleep does not hold stdout, so killing the subshell ends it.
     (sleep "$notice_secs" >/dev/null 2>&1 && echo "$name: running (over ${notice_secs}s; log $log)") &
     notice=$!
-    "$suite" >"$log" 2>&1
+    # CPU seconds (user + system, the suite and its children) as well as
+    # wall time: make test's budget is two cores, and a lane's wall time
+    # hides what the other lane takes from it.
+    local TIMEFORMAT='%U %S' cpu
+    cpu=$({ time "$suite" >"$log" 2>&1; } 2>&1)
     rc=$?
+    cpu=$(awk '{printf "%d", $1 + $2 + 0.5}' <<<"$cpu")
     kill "$notice" 2>/dev/null
     wait "$notice" 2>/dev/null
     secs=$(($(date +%s) - start))
@@ -54,12 +59,12 @@ run_one() {
     fi
     if [ "$f" -ne 0 ]; then
         # one block per suite, so that the other lane's lines do not interleave
-        { printf '%-22s %6d passed %4d FAILED (%ds)\n' "$name" "$p" "$f" "$secs"
+        { printf '%-22s %6d passed %4d FAILED (%ds, CPU %ss)\n' "$name" "$p" "$f" "$secs" "$cpu"
           tail -n 30 "$log" | sed 's/^/    | /'; } | cat
     else
-        printf '%-22s %6d passed (%ds)\n' "$name" "$p" "$secs"
+        printf '%-22s %6d passed (%ds, CPU %ss)\n' "$name" "$p" "$secs" "$cpu"
     fi
-    echo "$p $f $name" >"$results/$(printf '%03d' "$2")"
+    echo "$p $f $name $cpu" >"$results/$(printf '%03d' "$2")"
 }
 
 firmware=() others=()
@@ -86,11 +91,13 @@ else
 fi
 total_pass=0
 total_fail=0
+total_cpu=0
 n=0
 failed=()
 for r in "$results"/*; do
     [ -f "$r" ] || continue
-    read -r p f name <"$r"
+    read -r p f name cpu <"$r"
+    total_cpu=$((total_cpu + cpu))
     total_pass=$((total_pass + p))
     total_fail=$((total_fail + f))
     n=$((n + 1))
@@ -106,5 +113,6 @@ if [ "$n" -ne "$#" ]; then
     echo "FAIL run.sh: $n of $# suites reported"
     total_fail=$((total_fail + 1))
 fi
+echo "suites: $n, CPU ${total_cpu}s (user + system)"
 echo "total: $total_pass passed, $total_fail failed"
 [ "$total_fail" -eq 0 ]
