@@ -184,6 +184,10 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     return CAM_OK;
 }
 
+/* Pixel offsets ix, iy lie in [-FXRT_MAX_DIM, FXRT_MAX_DIM]: small factors
+ * for fx_smul_small. */
+_Static_assert(FXRT_MAX_DIM < (1 << 15), "FXRT_MAX_DIM: pixel offsets must stay below 2^15");
+
 void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
 {
     int32_t ix = 2 * x - cam->width + 1;
@@ -193,9 +197,9 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
         /* |r| may exceed the Q16.16 range (up to sqrt(32767^2 + 2 * 4095^2)):
          * form it in 64 bits and halve it when needed (only the direction
          * matters). */
-        int64_t c[3] = {(int64_t)cam->fwd.x + (int64_t)cam->u.x * ix + (int64_t)cam->v.x * iy,
-                        (int64_t)cam->fwd.y + (int64_t)cam->u.y * ix + (int64_t)cam->v.y * iy,
-                        (int64_t)cam->fwd.z + (int64_t)cam->u.z * ix + (int64_t)cam->v.z * iy};
+        int64_t c[3] = {(int64_t)cam->fwd.x + fx_smul_small(cam->u.x, ix) + fx_smul_small(cam->v.x, iy),
+                        (int64_t)cam->fwd.y + fx_smul_small(cam->u.y, ix) + fx_smul_small(cam->v.y, iy),
+                        (int64_t)cam->fwd.z + fx_smul_small(cam->u.z, ix) + fx_smul_small(cam->v.z, iy)};
         bool big = false;
         for (int i = 0; i < 3; i++)
             big |= c[i] > INT32_MAX || c[i] < -INT32_MAX;

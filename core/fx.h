@@ -124,6 +124,19 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
     return (int64_t)(((uint64_t)hi << 32) | (uint32_t)p);
 #endif
 }
+/* a * i for a small factor, |i| < 2^15 (pixel offsets): exact. On the M0
+ * two 32-bit products of a's halves (each below 2^31 in magnitude) instead
+ * of four 16-bit ones. */
+static inline int64_t fx_smul_small(int32_t a, int32_t i)
+{
+#if FX_HAVE_UMULL
+    return (int64_t)a * i;
+#else
+    int32_t hi = a >> 16; /* arithmetic shift: a = hi 2^16 + lo */
+    int32_t lo = (int32_t)((uint32_t)a & 0xffffu);
+    return (int64_t)((uint64_t)(int64_t)(hi * i) << 16) + lo * i;
+#endif
+}
 
 /* a * b, |error| <= 0.5 LSB, ties toward +infinity (-0.5 LSB -> 0),
  * saturating. The 64-bit product is exact. */

@@ -13,14 +13,16 @@
 FX_NOHW_FLAGS := -DFX_HAVE_UDIV=0 -DFX_HAVE_CLZ=0 -DFX_HAVE_UMULL=0
 FX_JOBS ?= 2
 
-$(BUILD)/tests/fx-nohw.o: core/fx.c
+$(BUILD)/tests/fx-nohw.o: core/fx.c core/fx.h core/fxrt_config.h
 	@mkdir -p $(@D)
 	@echo "  CC nohw $<"
 	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -c $< -o $@
 
-$(BUILD)/tests/test_fx_nohw: tests/test_fx.c tests/check.h $(BUILD)/tests/fx-nohw.o
+# The test itself is compiled with the same flags: fx.h's inline products
+# (fx_umul32, fx_smul32, fx_smul_small) then take their M0 paths too.
+$(BUILD)/tests/test_fx_nohw: tests/test_fx.c tests/check.h core/fx.h core/fxrt_config.h $(BUILD)/tests/fx-nohw.o
 	@echo "  CC/LD   $@"
-	$(Q)$(CC) $(CFLAGS_H) -DTEST_FX_NAME='"test_fx_nohw"' -Icore -o $@ tests/test_fx.c $(BUILD)/tests/fx-nohw.o -lm
+	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DTEST_FX_NAME='"test_fx_nohw"' -Icore -o $@ tests/test_fx.c $(BUILD)/tests/fx-nohw.o -lm
 
 $(BUILD)/tests/fx_exhaustive: tests/fx_exhaustive.c tests/check.h $(BUILD)/host/fx.o
 	@mkdir -p $(@D)

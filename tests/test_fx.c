@@ -164,6 +164,21 @@ static void check_wsqrt(fxw_t w)
                 (unsigned long long)want);
 }
 
+/* fx_isqrt64 against floor(sqrt(n)) from long double and exact integer
+ * squares in unsigned __int128 (not the estimate and correction that
+ * fx_isqrt64 uses). */
+static void check_isqrt64(uint64_t n)
+{
+    u128_t w = n, r = (u128_t)sqrtl((long double)n);
+    while (r * r > w)
+        r--;
+    while ((r + 1) * (r + 1) <= w)
+        r++;
+    uint32_t got = fx_isqrt64(n);
+    CHECK_SWEEP(got == (uint32_t)r, "fx_isqrt64(%llu) = %u, want %llu", (unsigned long long)n, got,
+                (unsigned long long)r);
+}
+
 static void check_wdiv(fxw_t a, fxw_t b)
 {
     fx_t q = fxw_div(a, b);
@@ -388,6 +403,21 @@ int main(int argc, char **argv)
                 if (base[t] + (uint64_t)dd <= (uint64_t)INT64_MAX)
                     check_wsqrt((fxw_t)(base[t] + (uint64_t)dd));
     }
+    /* fx_isqrt64 at q^2 - 1, q^2 and q^2 + 2q = (q + 1)^2 - 1 for roots of
+     * every size up to 2^32 - 1, and the ends of the range. */
+    for (long i = 0; i < n_random / 10 + 1000; i++) {
+        uint64_t q = (rng() >> 32) >> (rng() % 32);
+        uint64_t sq = q * q;
+        check_isqrt64(sq);
+        check_isqrt64(sq + 2 * q);
+        if (sq)
+            check_isqrt64(sq - 1);
+    }
+    static const uint64_t isq_hard[] = {0, 1, 2, 3, 4, UINT64_MAX, UINT64_MAX - 1, (uint64_t)1 << 63, ((uint64_t)1 << 63) - 1,
+                                        (uint64_t)1 << 62, ((uint64_t)1 << 48) - 1, (uint64_t)1 << 48, ((uint64_t)1 << 32) - 1,
+                                        (uint64_t)1 << 32, 0xFFFFFFFE00000001ull, 0xFFFFFFFE00000000ull};
+    for (int i = 0; i < (int)(sizeof isq_hard / sizeof isq_hard[0]); i++)
+        check_isqrt64(isq_hard[i]);
     check_wsqrt(INT64_MAX);
     check_wsqrt(INT64_MAX - 1);
     check_wsqrt((fxw_t)1 << 62);
@@ -397,6 +427,13 @@ int main(int argc, char **argv)
         check_div(a, b);
         check_sqrt(a);
         check_wsqrt((fxw_t)(rng() >> 1) >> (rng() % 63));
+        check_isqrt64(rng() >> (rng() % 64));
+        {
+            /* fx_smul_small over its whole domain (|i| < 2^15), against the
+             * plain 64-bit product. */
+            int32_t k = (int32_t)(rng() % 65535) - 32767;
+            CHECK_SWEEP(fx_smul_small(a, k) == (int64_t)a * k, "fx_smul_small(%d, %d)", a, k);
+        }
         check_wdiv(((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
                    (fxw_t)(rng() >> 1) >> (rng() % 63));
         check_norm(rand_fx(), rand_fx(), rand_fx());
