@@ -124,6 +124,20 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
     return (int64_t)(((uint64_t)hi << 32) | (uint32_t)p);
 #endif
 }
+/* a * i modulo 2^64 for a small factor, |i| < 2^15 (pixel offsets): the
+ * scanline forms' evaluation. On the M0 three 32-bit products (a's low word
+ * in 16-bit halves, its high word modulo 2^32) instead of __aeabi_lmul. */
+static inline uint64_t fx_umul64_small(uint64_t a, int32_t i)
+{
+#if FX_HAVE_UMULL
+    return a * (uint64_t)(int64_t)i;
+#else
+    uint32_t al = (uint32_t)a, ah = (uint32_t)(a >> 32);
+    int32_t a1 = (int32_t)(al >> 16), a0 = (int32_t)(al & 0xffffu);
+    uint64_t lo = ((uint64_t)(int64_t)(a1 * i) << 16) + (uint64_t)(int64_t)(a0 * i); /* al * i */
+    return lo + ((uint64_t)(ah * (uint32_t)i) << 32);
+#endif
+}
 /* a * i for a small factor, |i| < 2^15 (pixel offsets): exact. On the M0
  * two 32-bit products of a's halves (each below 2^31 in magnitude) instead
  * of four 16-bit ones. */

@@ -147,13 +147,12 @@ typedef struct {
 #define RENDER_OUT_COLS ((FXRT_RENDER_MAX_WIDTH + 1) / 2)
 
 /* A depth (ray parameter along the camera-space ray): Q16.16 keeps
- * t = n / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes. */
+ * t = n / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes:
+ * n in bits 0-23, e (signed) in bits 24-31, d in bits 32-55 (render_vis.c
+ * packs and reads them). An integer rather than a struct: the M0's
+ * compiler copies an 8-byte struct with a memcpy call. */
 #if FXRT_NUMBER == FXRT_Q16
-typedef struct {
-    unsigned int n : 24;
-    signed int e : 8;
-    unsigned int d : 24;
-} render_depth_t;
+typedef uint64_t render_depth_t;
 #else
 typedef struct {
     num_t t;
@@ -205,6 +204,7 @@ typedef struct {
 typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_ALL } render_kind_t;
 
 typedef struct {
+    render_depth_t tlo, thi; /* first: 8-byte aligned in Q16.16, no padding before them */
     uint8_t kind;      /* render_kind_t */
     uint8_t geom;      /* geom_kind_t: which world array */
     uint8_t nflat;     /* RENDER_FLAT: 1, RENDER_BOX and RENDER_ALL: faces */
@@ -217,7 +217,6 @@ typedef struct {
 #endif
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
-    render_depth_t tlo, thi;
 #if FXRT_MAX_SAMPLES > 1
     bool flat;          /* its material is flat: the colour is the sample */
     color_sum_t one[3]; /* flat: one sample of its colour (color_sum_add), for the sampling pass */

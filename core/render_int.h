@@ -82,15 +82,26 @@ static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTH
  * Q16.16: in uint64, so that no intermediate can be signed overflow; every
  * final value is known to fit int64 (the scales above guarantee it). */
 #if FXRT_NUMBER == FXRT_Q16
-static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
+/* ix and iy are pixel offsets (|.| <= FXRT_MAX_DIM + 4): small factors for
+ * fx_umul64_small. The quadratic in Horner form, c + x (fx + fxx x + fxy
+ * y) + y (fy + fyy y): five such products, the same value modulo 2^64. */
+_Static_assert(FXRT_MAX_DIM <= 16384, "FXRT_MAX_DIM: pixel offsets must stay below 2^15");
+#if FX_HAVE_UMULL
+#define RENDER_EVAL static inline
+#else
+/* On the M0 the products are a dozen instructions each: out of line, so
+ * that the callers' frames (16 KB boards) do not grow with them. */
+#define RENDER_EVAL RENDER_MAYBE_UNUSED __attribute__((noinline)) static
+#endif
+RENDER_EVAL render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
 {
-    return (render_k_t)((uint64_t)f->c + (uint64_t)f->x * (uint64_t)(int64_t)ix + (uint64_t)f->y * (uint64_t)(int64_t)iy);
+    return (render_k_t)((uint64_t)f->c + fx_umul64_small((uint64_t)f->x, ix) + fx_umul64_small((uint64_t)f->y, iy));
 }
-static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
+RENDER_EVAL render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
 {
-    uint64_t x = (uint64_t)(int64_t)ix, y = (uint64_t)(int64_t)iy;
-    return (render_k_t)((uint64_t)f->c + (uint64_t)f->x * x + (uint64_t)f->y * y + (uint64_t)f->xx * x * x +
-                  (uint64_t)f->xy * x * y + (uint64_t)f->yy * y * y);
+    uint64_t gx = (uint64_t)f->x + fx_umul64_small((uint64_t)f->xx, ix) + fx_umul64_small((uint64_t)f->xy, iy);
+    uint64_t gy = (uint64_t)f->y + fx_umul64_small((uint64_t)f->yy, iy);
+    return (render_k_t)((uint64_t)f->c + fx_umul64_small(gx, ix) + fx_umul64_small(gy, iy));
 }
 #else
 static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)

@@ -31,14 +31,15 @@ static uint32_t render_top24(uint64_t hi, uint64_t lo, int *e)
 #define RENDER_DEPTH_ONE (1u << 23)
 #define RENDER_DEPTH_EMAX 126 /* exponents clamp to +-126 (t beyond 2^+-126) */
 
+#define RENDER_DEPTH(n, d, e) ((uint64_t)(d) << 32 | (uint64_t)(uint8_t)(int8_t)(e) << 24 | (uint64_t)(n))
+static inline uint32_t render_depth_n(render_depth_t t) { return (uint32_t)t & 0xffffffu; }
+static inline int render_depth_e(render_depth_t t) { return (int8_t)(uint8_t)((uint32_t)t >> 24); }
+static inline uint32_t render_depth_d(render_depth_t t) { return (uint32_t)(t >> 32); }
+
 static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
 {
-    render_depth_t t;
     e = e > RENDER_DEPTH_EMAX ? RENDER_DEPTH_EMAX : (e < -RENDER_DEPTH_EMAX ? -RENDER_DEPTH_EMAX : e);
-    t.n = n;
-    t.d = d;
-    t.e = e;
-    return t;
+    return RENDER_DEPTH(n, d, e);
 }
 
 /* t = n / d * 2^e for n >= 0 and d > 0 (d = 0 cannot occur at a covered
@@ -58,14 +59,15 @@ render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e
  * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
 static bool render_depth_less(render_depth_t a, render_depth_t b)
 {
-    if (a.n == 0 || b.n == 0)
-        return a.n == 0 && b.n != 0;
-    int32_t de = (int32_t)a.e - (int32_t)b.e;
+    uint32_t an = render_depth_n(a), bn = render_depth_n(b);
+    if (an == 0 || bn == 0)
+        return an == 0 && bn != 0;
+    int32_t de = (int32_t)render_depth_e(a) - (int32_t)render_depth_e(b);
     if (de >= 2)
         return false;
     if (de <= -2)
         return true;
-    uint64_t l = (uint64_t)a.n * b.d, g = (uint64_t)b.n * a.d;
+    uint64_t l = fx_umul32(an, render_depth_d(b)), g = fx_umul32(bn, render_depth_d(a));
     if (de == 1)
         l <<= 1;
     else if (de == -1)
@@ -73,7 +75,7 @@ static bool render_depth_less(render_depth_t a, render_depth_t b)
     return l < g;
 }
 
-static const render_depth_t render_depth_far = {RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX, RENDER_DEPTH_ONE};
+static const render_depth_t render_depth_far = RENDER_DEPTH(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
 
 static uint64_t render_uabs(render_k_t v) { return v < 0 ? 0 - (uint64_t)v : (uint64_t)v; }
 
@@ -270,8 +272,8 @@ bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, in
 static render_depth_t render_depth_widen(render_depth_t t, bool up)
 {
 #if FXRT_NUMBER == FXRT_Q16
-    uint32_t n = t.n;
-    int e = t.e;
+    uint32_t n = render_depth_n(t);
+    int e = render_depth_e(t);
     if (n == 0)
         return t;
     if (up) {
@@ -287,7 +289,7 @@ static render_depth_t render_depth_widen(render_depth_t t, bool up)
             e--;
         }
     }
-    return render_depth_pack(n, t.d, e);
+    return render_depth_pack(n, render_depth_d(t), e);
 #else
     t.t = up ? t.t * NUM(1.0001) : t.t * NUM(0.9999);
     return t;

@@ -433,6 +433,9 @@ int main(int argc, char **argv)
              * plain 64-bit product. */
             int32_t k = (int32_t)(rng() % 65535) - 32767;
             CHECK_SWEEP(fx_smul_small(a, k) == (int64_t)a * k, "fx_smul_small(%d, %d)", a, k);
+            uint64_t w = rng() >> (rng() % 64);
+            CHECK_SWEEP(fx_umul64_small(w, k) == w * (uint64_t)(int64_t)k, "fx_umul64_small(%llu, %d)",
+                        (unsigned long long)w, k);
         }
         check_wdiv(((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
                    (fxw_t)(rng() >> 1) >> (rng() % 63));
