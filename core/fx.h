@@ -291,6 +291,7 @@ static inline fx128_t fx128_sub(fx128_t a, fx128_t b)
 }
 /* a * b, exact. */
 fx128_t fx128_mul(int64_t a, int64_t b);
+fx128_t fx128_sqr(int64_t a); /* a * a */
 /* a * 2^s for 0 <= s < 128, exact when the result fits. */
 fx128_t fx128_shl(fx128_t a, int s);
 /* round(a / 2^s) for 0 <= s < 127, ties away from zero, saturated to the

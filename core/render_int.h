@@ -160,7 +160,7 @@ static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t i
          pz = rlin_at(&o->u.sphere->pz, ix, iy);
     bool ortho = o->u.sphere->ortho;
 #if FXRT_NUMBER == FXRT_Q16
-    fx128_t sq = fx128_add(fx128_add(fx128_mul(px, px), fx128_mul(py, py)), fx128_mul(pz, pz));
+    fx128_t sq = fx128_add(fx128_add(fx128_sqr(px), fx128_sqr(py)), fx128_sqr(pz));
     /* Orthographic: a = 1 exactly and r2 may use all 128 bits. */
     fx128_t r2a = ortho ? o->u.sphere->r2 : fx128_mul(a, fx128_shr_round(o->u.sphere->r2, 0));
     *disc_out = fx128_sub(r2a, sq);

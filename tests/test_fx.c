@@ -142,6 +142,7 @@ static void check_recip(fx_t a)
 /* round(sqrt(w)) exactly (no ties for an integer w): long double, then
  * integer squares in unsigned __int128. */
 __extension__ typedef unsigned __int128 u128_t;
+__extension__ typedef __int128 s128_t;
 static uint64_t oracle_wsqrt(uint64_t w)
 {
     u128_t n = w, r = (u128_t)sqrtl((long double)w);
@@ -418,6 +419,16 @@ int main(int argc, char **argv)
                                         (uint64_t)1 << 32, 0xFFFFFFFE00000001ull, 0xFFFFFFFE00000000ull};
     for (int i = 0; i < (int)(sizeof isq_hard / sizeof isq_hard[0]); i++)
         check_isqrt64(isq_hard[i]);
+    {
+        static const int64_t sq_hard[] = {INT64_MIN, INT64_MIN + 1, INT64_MAX, -1, 0, 1, (int64_t)1 << 32, -((int64_t)1 << 32),
+                                          ((int64_t)1 << 32) - 1, (int64_t)0xFFFFFFFF80000000ll};
+        for (int i = 0; i < (int)(sizeof sq_hard / sizeof sq_hard[0]); i++) {
+            s128_t want = (s128_t)sq_hard[i] * sq_hard[i];
+            fx128_t q = fx128_sqr(sq_hard[i]), m = fx128_mul(sq_hard[i], sq_hard[i]);
+            CHECK_MSG(q.lo == (uint64_t)want && q.hi == (int64_t)(want >> 64), "fx128_sqr(%lld)", (long long)sq_hard[i]);
+            CHECK_MSG(m.lo == (uint64_t)want && m.hi == (int64_t)(want >> 64), "fx128_mul(%lld, same)", (long long)sq_hard[i]);
+        }
+    }
     check_wsqrt(INT64_MAX);
     check_wsqrt(INT64_MAX - 1);
     check_wsqrt((fxw_t)1 << 62);
@@ -433,6 +444,13 @@ int main(int argc, char **argv)
              * plain 64-bit product. */
             int32_t k = (int32_t)(rng() % 65535) - 32767;
             CHECK_SWEEP(fx_smul_small(a, k) == (int64_t)a * k, "fx_smul_small(%d, %d)", a, k);
+            /* fx128_mul and fx128_sqr against the compiler's __int128. */
+            int64_t x = (int64_t)rng() >> (rng() % 64), y = (int64_t)rng() >> (rng() % 64);
+            s128_t px = (s128_t)x * y, sx = (s128_t)x * x;
+            fx128_t m = fx128_mul(x, y), q = fx128_sqr(x);
+            CHECK_SWEEP(m.lo == (uint64_t)px && m.hi == (int64_t)(px >> 64), "fx128_mul(%lld, %lld)", (long long)x,
+                        (long long)y);
+            CHECK_SWEEP(q.lo == (uint64_t)sx && q.hi == (int64_t)(sx >> 64), "fx128_sqr(%lld)", (long long)x);
             uint64_t w = rng() >> (rng() % 64);
             CHECK_SWEEP(fx_umul64_small(w, k) == w * (uint64_t)(int64_t)k, "fx_umul64_small(%llu, %d)",
                         (unsigned long long)w, k);
