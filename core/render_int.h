@@ -216,8 +216,8 @@ bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t i
 #if RENDER_STEPPED
 bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                          render_k_t n, render_k_t d);
-bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, rsw_t c,
-                           rsw_t disc);
+bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
+                           const rsw_t *disc);
 #endif
 
 /* render_vis.c: object i's depth order against the planes on row iy over

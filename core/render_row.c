@@ -569,6 +569,15 @@ __attribute__((noinline)) static void render_lone_sphere(render_t *r, uint16_t o
 }
 #endif
 
+/* Orthographic sphere: c + disc = k + r2 (kr) along every ray, and v is
+ * the one of them that was stepped (c when use_c). */
+static bool render_resolve_ortho(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b,
+                                 const fx128_t *kr, const fx128_t *v, bool use_c)
+{
+    fx128_t other = fx128_sub(*kr, *v);
+    return render_resolve_sphere(r, cur, oi, x, iy, b, use_c ? v : &other, use_c ? &other : v);
+}
+
 /* Step a sphere over columns x0..x1: a lone one fills its runs, others
  * claim each covered column. */
 static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
@@ -604,9 +613,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
         for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
             if (!(use_c ? v.hi < 0 : v.hi >= 0))
                 continue;
-            RENDER_COVER(r, oi, x, rgb,
-                         render_resolve_sphere(r, cur_, oi, x, iy, b, use_c ? v : fx128_sub(kr, v),
-                                               use_c ? fx128_sub(kr, v) : v));
+            RENDER_COVER(r, oi, x, rgb, render_resolve_ortho(r, cur_, oi, x, iy, b, &kr, &v, use_c));
         }
         return;
     }
@@ -615,7 +622,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
         if (!((render_k_t)b > 0 && v.hi >= 0))
             continue;
-        RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (render_k_t)b, k, v));
+        RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (render_k_t)b, &k, &v));
     }
 }
 #endif
@@ -672,7 +679,7 @@ static void render_scan_sphere_f(render_t *r, uint16_t oi, const render_obj_t *o
             if (lone)
                 render_paint(r, oi, x, rgb);
             else
-                RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, b, c, disc));
+                RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, b, &c, &disc));
         }
         b += sb;
         px += spx;

@@ -98,13 +98,16 @@ static uint64_t render_sqrt128(fx128_t v)
     return (uint64_t)fx_isqrt64(top) << (s / 2);
 }
 
-static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, rsw_t c, rsw_t disc)
+/* c and disc by pointer: the M0 copies a 16-byte value with memcpy. */
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const rsw_t *cp,
+                                          const rsw_t *discp)
 {
-    uint64_t s = render_sqrt128(disc);
-    if (!rsw_neg(c)) /* outside: the near root, b > 0 */
-        return render_depth_make((uint64_t)c.hi, c.lo, (uint64_t)b + s, o->u.sphere->tc);
+    uint64_t s = render_sqrt128(*discp);
+    const fx128_t *c = cp;
+    if (!rsw_neg(*c)) /* outside: the near root, b > 0 */
+        return render_depth_make((uint64_t)c->hi, c->lo, (uint64_t)b + s, o->u.sphere->tc);
     if (b < 0) { /* inside, looking away from the centre: (-c) / (s - b) */
-        fx128_t nc = fx128_neg(c);
+        fx128_t nc = fx128_neg(*c);
         return render_depth_make((uint64_t)nc.hi, nc.lo, s + (0 - (uint64_t)b), o->u.sphere->tc);
     }
     render_k_t a = o->u.sphere->ortho ? 1 : rquad_at(o->u.sphere->a, ix, iy);
@@ -119,9 +122,11 @@ static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, re
     render_depth_t t = {num_div(n, d)};
     return t;
 }
-static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, rsw_t c, rsw_t disc)
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const rsw_t *cp,
+                                          const rsw_t *discp)
 {
-    num_t s = num_sqrt(disc);
+    rsw_t c = *cp;
+    num_t s = num_sqrt(*discp);
     render_depth_t t;
     if (!(c < 0))
         t.t = num_div(c, b + s);
@@ -139,7 +144,7 @@ static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t
     if (o->kind == RENDER_SPHERE) {
         rsw_t c, disc;
         render_sphere_cd(o, ix, iy, &c, &disc);
-        return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), c, disc);
+        return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &c, &disc);
     }
     /* Flat pieces: the nearest face that covers the pixel. */
     render_depth_t best = render_depth_far;
@@ -162,7 +167,7 @@ typedef struct {
     enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_SPHERE } how;
     const render_flat_t *f;
     render_k_t n, d, b;
-    rsw_t c, disc;
+    const rsw_t *c, *disc;
 } render_raw_t;
 
 static render_depth_t render_raw_depth(const render_obj_t *o, int32_t ix, int32_t iy, const render_raw_t *raw)
@@ -255,13 +260,13 @@ bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int3
     raw.d = d;
     return render_settle(r, cur, oi, x, iy, &raw);
 }
-bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, rsw_t c,
-                                  rsw_t disc)
+bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
+                           const rsw_t *disc)
 {
     render_raw_t raw;
     raw.how = RENDER_RAW_SPHERE;
     raw.b = b;
-    raw.c = c;
+    raw.c = c; /* pointers: valid for the call */
     raw.disc = disc;
     return render_settle(r, cur, oi, x, iy, &raw);
 }
