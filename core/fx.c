@@ -251,18 +251,12 @@ static int fx_clz64(uint64_t v)
     return __builtin_clzll(v);
 }
 
-/* floor(sqrt(n)), exact. The same estimate as fxw_sqrt: the top 32 bits m
- * of n (even shift, sqrt(n) ~ sqrt(m) 2^k) give a 24-bit root R ~ 256
- * sqrt(m); for n >= 2^48 one Newton step on the exact residual. Then
- * d = n - q^2, exact modulo 2^64 because q is within a few units of the
- * root, and q steps until 0 <= d <= 2q, i.e. q^2 <= n < (q + 1)^2. q is
- * kept below 2^32, so q^2 never wraps. About 60 instructions on the
- * Cortex-M3 (the digit-by-digit loop this replaces took about 500);
- * tests/test_fx.c checks it against that loop on 10^6 inputs. */
-uint32_t fx_isqrt64(uint64_t n)
+/* An estimate of sqrt(n), n > 0, within a few units: the top 32 bits m
+ * of n (taken with an even shift, so sqrt(n) ~ sqrt(m) 2^k) give a 24-bit
+ * root R ~ 256 sqrt(m) as in fx_sqrt; for n >= 2^48 one more Newton step
+ * on the exact 64-bit residual. At most 2^32 (q^2 may wrap only there). */
+static inline uint64_t fx_root64_est(uint64_t n)
 {
-    if (n == 0)
-        return 0;
     int e = fx_clz64(n) & ~1;
     uint32_t m = e >= 32 ? (uint32_t)(n << (e - 32)) : (uint32_t)(n >> (32 - e));
     int k = 16 - (e >> 1); /* sqrt(n) ~ sqrt(m) 2^k, k in [-15, 16] */
@@ -270,17 +264,28 @@ uint32_t fx_isqrt64(uint64_t n)
     fx_sqrt_est(m, &s, &y);
     int32_t r = (int32_t)(m - (uint32_t)s * (uint32_t)s);
     uint32_t R = (uint32_t)(((int32_t)((uint32_t)s << 8)) + (((r >> 5) * y) >> 18));
-    uint64_t q;
     if (k <= 8) {
-        q = R >> (8 - k);
-    } else {
-        q = (uint64_t)R << (k - 8); /* within 2^(k-7) + 2 */
-        int64_t d = (int64_t)(n - fx_umul32((uint32_t)q, (uint32_t)q));
-        q = (uint64_t)((int64_t)q + ((d * y) >> (31 + k)));
+        int sh = 8 - k;
+        return sh ? (R + (1u << (sh - 1))) >> sh : R;
     }
-    if (q > UINT32_MAX)
-        q = UINT32_MAX;
-    uint32_t q32 = (uint32_t)q;
+    uint64_t q = (uint64_t)R << (k - 8); /* within 2^(k-7) + 2, below 2^32 */
+    int64_t d = (int64_t)(n - fx_umul32((uint32_t)q, (uint32_t)q));
+    /* d / (2q) with 1 / (2 sqrt(n)) ~ y 2^-31 2^-k. */
+    return (uint64_t)((int64_t)q + ((d * y) >> (31 + k)));
+}
+
+/* floor(sqrt(n)), exact: the estimate, then d = n - q^2 (exact modulo 2^64
+ * because q is within a few units of the root) and q steps until
+ * 0 <= d <= 2q, i.e. q^2 <= n < (q + 1)^2. q is kept below 2^32, so q^2
+ * never wraps. About 60 instructions on the Cortex-M3 (the digit-by-digit
+ * loop it replaces took about 500); tests/test_fx.c checks it against a
+ * long double and __int128 oracle. */
+uint32_t fx_isqrt64(uint64_t n)
+{
+    if (n == 0)
+        return 0;
+    uint64_t q = fx_root64_est(n);
+    uint32_t q32 = q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
     int64_t d = (int64_t)(n - fx_umul32(q32, q32));
     while (d < 0) { /* q^2 > n */
         q32--;
@@ -296,31 +301,13 @@ uint32_t fx_isqrt64(uint64_t n)
 fx_t fxw_sqrt(fxw_t w)
 {
     /* sqrt(w * 2^-32) * 2^16 = sqrt(w): the Q32.32 integer's rounded root
-     * is the Q16.16 result. As in fx_sqrt: the top 32 bits m of w (taken
-     * with an even shift, so sqrt(w) ~ sqrt(m) 2^k) give a 24-bit root
-     * R ~ 256 sqrt(m); for w >= 2^48 one more Newton step on the exact
-     * 64-bit residual; then the exact test on d = w - q^2 (exact mod 2^64
-     * because it is small), stepping q until -q < d <= q. */
+     * is the Q16.16 result. The estimate, then the exact test on
+     * d = w - q^2 (exact mod 2^64 because it is small), stepping q until
+     * -q < d <= q. */
     if (w <= 0)
         return 0;
     uint64_t n = (uint64_t)w;
-    int e = fx_clz64(n) & ~1;
-    uint32_t m = e >= 32 ? (uint32_t)(n << (e - 32)) : (uint32_t)(n >> (32 - e));
-    int k = 16 - (e >> 1); /* sqrt(n) ~ sqrt(m) 2^k, k in [-15, 16] */
-    int32_t s, y;
-    fx_sqrt_est(m, &s, &y);
-    int32_t r = (int32_t)(m - (uint32_t)s * (uint32_t)s);
-    uint32_t R = (uint32_t)(((int32_t)((uint32_t)s << 8)) + (((r >> 5) * y) >> 18));
-    uint64_t q;
-    if (k <= 8) {
-        int sh = 8 - k;
-        q = sh ? (R + (1u << (sh - 1))) >> sh : R;
-    } else {
-        q = (uint64_t)R << (k - 8); /* within 2^(k-7) + 2 */
-        int64_t d = (int64_t)(n - q * q);
-        /* d / (2q) with 1 / (2 sqrt(n)) ~ y 2^-31 2^-k. */
-        q = (uint64_t)((int64_t)q + ((d * y) >> (31 + k)));
-    }
+    uint64_t q = fx_root64_est(n); /* below 2^32: n < 2^63 */
     int64_t d = (int64_t)(n - q * q);
     while (d > (int64_t)q) {
         d -= (int64_t)(2 * q + 1);

@@ -139,18 +139,25 @@ static void check_recip(fx_t a)
     CHECK_SWEEP(r == div_exact(FX_ONE, a), "fx_recip(%d) = %d, want %d", a, r, div_exact(FX_ONE, a));
 }
 
-/* round(sqrt(w)) exactly (no ties for an integer w): long double, then
- * integer squares in unsigned __int128. */
+/* floor(sqrt(w)) exactly: long double, then integer squares in unsigned
+ * __int128 (not the estimate and correction the library uses). */
 __extension__ typedef unsigned __int128 u128_t;
 __extension__ typedef __int128 s128_t;
-static uint64_t oracle_wsqrt(uint64_t w)
+static uint64_t oracle_floor_sqrt(uint64_t w)
 {
     u128_t n = w, r = (u128_t)sqrtl((long double)w);
     while (r * r > n)
         r--;
     while ((r + 1) * (r + 1) <= n)
         r++;
-    return (uint64_t)(n > r * r + r ? r + 1 : r);
+    return (uint64_t)r;
+}
+
+/* round(sqrt(w)) exactly (no ties for an integer w). */
+static uint64_t oracle_wsqrt(uint64_t w)
+{
+    u128_t r = oracle_floor_sqrt(w);
+    return (uint64_t)(w > r * r + r ? r + 1 : r);
 }
 
 static void check_wsqrt(fxw_t w)
@@ -165,16 +172,9 @@ static void check_wsqrt(fxw_t w)
                 (unsigned long long)want);
 }
 
-/* fx_isqrt64 against floor(sqrt(n)) from long double and exact integer
- * squares in unsigned __int128 (not the estimate and correction that
- * fx_isqrt64 uses). */
 static void check_isqrt64(uint64_t n)
 {
-    u128_t w = n, r = (u128_t)sqrtl((long double)n);
-    while (r * r > w)
-        r--;
-    while ((r + 1) * (r + 1) <= w)
-        r++;
+    uint64_t r = oracle_floor_sqrt(n);
     uint32_t got = fx_isqrt64(n);
     CHECK_SWEEP(got == (uint32_t)r, "fx_isqrt64(%llu) = %u, want %llu", (unsigned long long)n, got,
                 (unsigned long long)r);
