@@ -184,10 +184,6 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     return CAM_OK;
 }
 
-/* Pixel offsets ix, iy lie in [-FXRT_MAX_DIM, FXRT_MAX_DIM]: small factors
- * for fx_smul_small. */
-_Static_assert(FXRT_MAX_DIM < (1 << 15), "FXRT_MAX_DIM: pixel offsets must stay below 2^15");
-
 void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
 {
     int32_t ix = 2 * x - cam->width + 1;

@@ -74,9 +74,12 @@
  * int16. Objects are counted and identified with uint16_t (world_t's
  * n_<kind>, scene ids, render_t's object indices), and 0xFFFF is the
  * "no object" sentinel (RAYCAST_MISS, the renderer's RO_NONE), so the
- * total capacity must stay below it. */
-#if FXRT_MAX_DIM < 1 || FXRT_MAX_DIM > 32767
-#error "FXRT_MAX_DIM must be in 1..32767: pixel indices are int16_t"
+ * total capacity must stay below it. An image side of at most 16384
+ * keeps every pixel offset (|ix| <= width + 4) below 2^15, the domain of
+ * fx.h's small-factor products (fx_smul_small, fx_umul64_small: cam_ray
+ * and the scanline forms' evaluation on the M0). */
+#if FXRT_MAX_DIM < 1 || FXRT_MAX_DIM > 16384
+#error "FXRT_MAX_DIM must be in 1..16384: pixel offsets must stay below 2^15"
 #endif
 #if FXRT_MAX_PLANES < 0 || FXRT_MAX_SPHERES < 0 || FXRT_MAX_TRIANGLES < 0 || FXRT_MAX_BOXES < 0
 #error "FXRT_MAX_<KIND> capacities must be >= 0"

@@ -82,10 +82,10 @@ static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTH
  * Q16.16: in uint64, so that no intermediate can be signed overflow; every
  * final value is known to fit int64 (the scales above guarantee it). */
 #if FXRT_NUMBER == FXRT_Q16
-/* ix and iy are pixel offsets (|.| <= FXRT_MAX_DIM + 4): small factors for
- * fx_umul64_small. The quadratic in Horner form, c + x (fx + fxx x + fxy
- * y) + y (fy + fyy y): five such products, the same value modulo 2^64. */
-_Static_assert(FXRT_MAX_DIM <= 16384, "FXRT_MAX_DIM: pixel offsets must stay below 2^15");
+/* ix and iy are pixel offsets, below 2^15 (fxrt_config.h bounds
+ * FXRT_MAX_DIM): small factors for fx_umul64_small. The quadratic in
+ * Horner form, c + x (fx + fxx x + fxy y) + y (fy + fyy y): five such
+ * products, the same value modulo 2^64. */
 #if FX_HAVE_UMULL
 #define RENDER_EVAL static inline
 #else

@@ -99,11 +99,10 @@ static uint64_t render_sqrt128(fx128_t v)
 }
 
 /* c and disc by pointer: the M0 copies a 16-byte value with memcpy. */
-static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const rsw_t *cp,
-                                          const rsw_t *discp)
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const rsw_t *c,
+                                          const rsw_t *disc)
 {
-    uint64_t s = render_sqrt128(*discp);
-    const fx128_t *c = cp;
+    uint64_t s = render_sqrt128(*disc);
     if (!rsw_neg(*c)) /* outside: the near root, b > 0 */
         return render_depth_make((uint64_t)c->hi, c->lo, (uint64_t)b + s, o->u.sphere->tc);
     if (b < 0) { /* inside, looking away from the centre: (-c) / (s - b) */
