@@ -8,6 +8,12 @@ static uint64_t fx_uabs64(int64_t v)
     return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
 }
 
+/* Magnitude of an int32 as uint32, defined for INT32_MIN too. */
+static inline uint32_t fx_uabs32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
 /* Apply a sign to a rounded magnitude and saturate to the fx_t range. */
 static fx_t fx_signed_sat(uint64_t mag, bool negative)
 {
@@ -558,11 +564,13 @@ bool fx_unit30(const fx_t v[3], int32_t out[3])
     return true;
 }
 
-bool fx_normalize3(fx_t v[3])
+/* fx_normalize3 and fx_normalize3_len: with_len is a constant in each. */
+static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], fx_t *len, bool with_len)
 {
-    uint32_t m = 0;
-    for (int i = 0; i < 3; i++)
-        m |= v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
+    /* Straight-line code, constant 64-bit shifts only (a variable one is
+     * a dozen instructions on the M3 and more on the M0). */
+    uint32_t s0 = fx_uabs32(v[0]), s1 = fx_uabs32(v[1]), s2 = fx_uabs32(v[2]);
+    uint32_t m = s0 | s1 | s2;
     if (m == 0)
         return false;
     /* Scale by a power of two so the largest magnitude lies in [2^29, 2^30):
@@ -570,27 +578,56 @@ bool fx_normalize3(fx_t v[3])
      * relative change below 2^-29), the squared length lies in
      * [2^58, 3 * 2^60), and the length keeps 30 significant bits. */
     int shift = fx_clz32(m) - 2;
-    uint32_t s[3];
-    bool neg[3];
-    uint64_t len2 = 0;
-    for (int i = 0; i < 3; i++) {
-        neg[i] = v[i] < 0;
-        uint32_t u = neg[i] ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
-        s[i] = shift >= 0 ? u << shift : u >> -shift;
-        len2 += fx_umul32(s[i], s[i]);
+    if (shift >= 0) {
+        s0 <<= shift;
+        s1 <<= shift;
+        s2 <<= shift;
+    } else {
+        s0 >>= -shift;
+        s1 >>= -shift;
+        s2 >>= -shift;
     }
-    /* Top 32 bits of len2 with an even shift: len2 ~ m2 2^(2k), so
+    uint64_t len2 = fx_umul32(s0, s0) + fx_umul32(s1, s1) + fx_umul32(s2, s2);
+    /* The top 32 bits of len2 with an even shift: len2 ~ top 2^(32 - e)
+     * with top in [2^30, 2^32), so |s| ~ sqrt(top) 2^k with k = 16 - e/2,
      * 1 / |s| ~ Y 2^-46 / 2^k, and each component in Q16.16 is
      * s Y / 2^(30 + k), rounded once. Dropping len2's low bits costs at
-     * most 2^-30 relative. */
-    int e = fx_clz_even((uint32_t)(len2 >> 32)); /* 2 or 4 */
-    int k = 16 - (e >> 1);
-    uint32_t Y = fx_rsqrt_q46((uint32_t)(len2 >> (32 - e)));
-    for (int i = 0; i < 3; i++) {
-        fx_t c = (fx_t)((fx_umul32(s[i], Y) + ((uint64_t)1 << (29 + k))) >> (30 + k));
-        v[i] = neg[i] ? -c : c;
+     * most 2^-30 relative. len2 >> 32 lies in [2^26, 3 * 2^28): e is 2
+     * (k = 15) or 4 (k = 14). The rounding bit 2^(29 + k) lies in the
+     * product's high word, so the rounded quotient is
+     * (high word + 2^(k - 3)) >> (k - 2): the low word cannot carry into
+     * it. */
+    bool big = (uint32_t)(len2 >> 32) >= ((uint32_t)1 << 28);
+    uint32_t top = big ? (uint32_t)(len2 >> 30) : (uint32_t)(len2 >> 28);
+    uint32_t Y = fx_rsqrt_q46(top);
+    int sh = big ? 13 : 12;
+    uint32_t half = (uint32_t)1 << (sh - 1);
+    fx_t c0 = (fx_t)(((uint32_t)(fx_umul32(s0, Y) >> 32) + half) >> sh);
+    fx_t c1 = (fx_t)(((uint32_t)(fx_umul32(s1, Y) >> 32) + half) >> sh);
+    fx_t c2 = (fx_t)(((uint32_t)(fx_umul32(s2, Y) >> 32) + half) >> sh);
+    if (with_len) {
+        /* |v| = |s| 2^-shift = sqrt(top) 2^(k - shift) = top Y 2^(k - 46 - shift),
+         * a shift by 31 + shift (k = 15) or 32 + shift (k = 14), which lies
+         * in [29, 61]; rounded once, saturated like fxw_sqrt. */
+        int q = (big ? 31 : 32) + shift;
+        uint64_t r = (fx_umul32(top, Y) + ((uint64_t)1 << (q - 1))) >> q;
+        *len = r > (uint64_t)FX_MAX ? FX_MAX : (fx_t)r;
     }
+    v[0] = v[0] < 0 ? -c0 : c0;
+    v[1] = v[1] < 0 ? -c1 : c1;
+    v[2] = v[2] < 0 ? -c2 : c2;
     return true;
+}
+
+bool fx_normalize3(fx_t v[3])
+{
+    fx_t unused;
+    return fx_normalize3_impl(v, &unused, false);
+}
+
+bool fx_normalize3_len(fx_t v[3], fx_t *len)
+{
+    return fx_normalize3_impl(v, len, true);
 }
 
 fx128_t fx128_mul(int64_t a, int64_t b)

@@ -310,5 +310,10 @@ int fx128_bits(fx128_t a);
  * Newton steps on the top 32 bits of the squared length.
  * Returns false and leaves the vector unchanged when it is zero. */
 bool fx_normalize3(fx_t v[3]);
+/* The same, and *len = |(x, y, z)| (saturated at FX_MAX) from the same
+ * inverse square root: within 2^-24 relative plus 0.5 LSB (the inverse
+ * root's error, not a correctly rounded fxw_sqrt), for shading's light
+ * distance. *len is not written when the vector is zero. */
+bool fx_normalize3_len(fx_t v[3], fx_t *len);
 
 #endif

@@ -127,15 +127,13 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
             l = L->dir; /* normalised once, in world_add_light */
         } else {
             vec3_t v = vec3_sub(L->position, p);
-            dist = vec3_len(v);
+            FXRT_COUNT(l_normalised);
+            if (!vec3_unit_len(v, &l, &dist))
+                continue; /* the light is at p: no direction, no light */
             /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
              * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
             if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))
                 continue; /* outside the cone */
-            l = v;
-            FXRT_COUNT(l_normalised);
-            if (!vec3_normalize(&l))
-                continue; /* the light is at p: no direction, no light */
         }
         numw_t ndlw = vec3_dotw(n, l);
         if (ndlw <= 0)

@@ -60,7 +60,7 @@ static inline num_t vec3_len(vec3_t a)
     return numw_sqrt(vec3_dotw(a, a));
 }
 /* a / |a|: each component within 0.504 LSB in Q16.16 (fx_normalize3: no
- * division, no 64-bit root; about 200 instructions on the Cortex-M3, 590 on
+ * division, no 64-bit root; about 100 instructions on the Cortex-M3, 375 on
  * the M0, make bench-fx). Returns false (and leaves *a unchanged) for the
  * zero vector. */
 static inline bool vec3_normalize(vec3_t *a)
@@ -77,6 +77,29 @@ static inline bool vec3_normalize(vec3_t *a)
         return false;
     num_t inv = num_div(NUM_ONE, len);
     *a = vec3_scale(*a, inv);
+    return true;
+#endif
+}
+
+/* *u = a / |a| and *len = |a| in one go, or false (nothing written) for
+ * the zero vector: a point light's direction and distance. Float and
+ * double take one square root (the values of vec3_len and
+ * vec3_normalize); Q16.16 takes the length from fx_normalize3's inverse
+ * root (fx_normalize3_len: within 2^-24 relative, no second root). */
+static inline bool vec3_unit_len(vec3_t a, vec3_t *u, num_t *len)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    fx_t v[3] = {a.x, a.y, a.z};
+    if (!fx_normalize3_len(v, len))
+        return false;
+    *u = vec3_make(v[0], v[1], v[2]);
+    return true;
+#else
+    num_t l = vec3_len(a);
+    if (l == 0)
+        return false;
+    *u = vec3_scale(a, num_div(NUM_ONE, l));
+    *len = l;
     return true;
 #endif
 }

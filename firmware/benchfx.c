@@ -151,6 +151,13 @@ static NOINLINE void v_normalize(vec3_t *out, const vec3_t *a, const vec3_t *b)
     *out = *a;
     vec3_normalize(out);
 }
+static NOINLINE void v_unit_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    (void)b;
+    num_t len = 0;
+    vec3_unit_len(*a, out, &len);
+    out->x += len;
+}
 static NOINLINE void v_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
 {
     (void)b;
@@ -254,6 +261,7 @@ int main(void)
     report("vec3_cross", time_v(v_cross, in_va, in_vb), ev);
     report("vec3_len", time_v(v_len, in_va, in_vb), ev);
     report("vec3_normalize", time_v(v_normalize, in_va, in_vb), ev);
+    report("vec3_unit_len", time_v(v_unit_len, in_va, in_vb), ev);
     report("old_fx_div", time_2(w_old_fx_div, in_a, in_b), e2);
     report("old_fx_sqrt", time_1(w_old_fx_sqrt, in_pos), e1);
     semihost_puts("ticks=0 done\n");

@@ -50,6 +50,7 @@ for spec in $BENCHFX_TICKS; do
             vec3_cross) group="v_cross" ;;
             vec3_len) group="v_len fxw_sqrt fx_rsqrt_tab" ;;
             vec3_normalize) group="v_normalize fx_normalize3 fx_rsqrt_q46 fx_rsqrt_tab" ;;
+            vec3_unit_len) group="v_unit_len fx_normalize3_len fx_rsqrt_q46 fx_rsqrt_tab" ;;
             old_fx_div) group="w_old_fx_div" ;;
             old_fx_sqrt) group="w_old_fx_sqrt" ;;
             *) group=$fn ;;

@@ -1420,8 +1420,9 @@ static void diff_eval(const dcase_t *c, dres_t *res);
  *  - POW_CAP: numw_pow_int against the exact x^k of its Q32.32 argument;
  *  - the spot cone's margin m = (-v) . s - cos(angle) |v| (scene units)
  *    changes sign in Q16.16 only when |m| <= |v|_1 SPOT_AXIS + |v|
- *    SPOT_COS + 0.5 LSB cos(angle) (axis and cosine in Q2.30, |v| rounded
- *    once). */
+ *    (SPOT_COS + SPOT_LEN cos(angle)) + 0.5 LSB cos(angle) (axis and
+ *    cosine in Q2.30, |v| from fx_normalize3_len: within 0.5 LSB + 2^-24
+ *    relative). */
 #define NORM_Q 0.504
 #define NL_ERR (1.7321 * NORM_Q + 0.5)
 #define R_ERR (0.5 + NORM_Q)
@@ -1433,6 +1434,7 @@ static void diff_eval(const dcase_t *c, dres_t *res);
 #define POW_CAP POW_CAP_K(1024)
 #define SPOT_AXIS (1.0 / 536870912.0)             /* 2^-29 */
 #define SPOT_COS (1.0 / 1073741824.0 + 1e-8)      /* 2^-30 + 1e-8 */
+#define SPOT_LEN (1.0 / 16777216.0)               /* 2^-24: fx_normalize3_len */
 /* Stated caps for one light in 1/255 units: the per-case bound below never
  * exceeds MARGIN (SHADE_A + SHADE_B k) per light that reaches p (and
  * MARGIN 0.5 LSB for the ambient term). */
@@ -1683,7 +1685,7 @@ static void shade_oracle(const dcase_t *c, oracle_t *O)
             }
             m -= cs * len;
             O->spot_m[j] = (double)m;
-            O->spot_t[j] = (double)(v1 * SPOT_AXIS + len * SPOT_COS + 0.5 * LSB * cs);
+            O->spot_t[j] = (double)(v1 * SPOT_AXIS + len * (SPOT_COS + SPOT_LEN * cs) + 0.5 * LSB * cs);
             if (m < 0)
                 continue; /* outside the cone */
         }
@@ -2627,7 +2629,7 @@ static void print_light_tables(dstat_t st[K_COUNT])
     }
     if (sp->cases)
         printf("\nspot cone: %ld cases, %ld lit in Q16.16, %ld within the threshold |m| <= %.1f x (|v|_1 2^-29 + |v| "
-               "(2^-30 + 1e-8) + 0.5 LSB cos), %ld decisions differ, %ld outside it; largest |m|/threshold where they "
+               "(2^-30 + 1e-8 + 2^-24 cos) + 0.5 LSB cos), %ld decisions differ, %ld outside it; largest |m|/threshold where they "
                "differ: %.3f\n",
                sp->cases, sp->hits_q, sp->band, MARGIN, sp->disagree, sp->disagree_out, sp->band_use.worst);
     if (sd->cases)

@@ -39,7 +39,7 @@ static const fx_t hard[] = {
 #define N_HARD ((int)(sizeof hard / sizeof hard[0]))
 
 static double max_err_mul, max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv, max_err_cot,
-    max_err_norm, max_err_dot, max_err_cross,
+    max_err_norm, max_err_norm_len, max_err_dot, max_err_cross,
     max_err_sin, max_err_cos, max_err_rsqrt, max_err_recip;
 
 /* Saturate an exact value (in LSB) to the fx_t range. */
@@ -235,6 +235,7 @@ static void check_sincos(fx_t deg)
 }
 
 #define NORM_BOUND 0.504L /* fx.h */
+#define NORM_LEN_REL 0x1p-24L /* fx.h: fx_normalize3_len */
 static void check_norm(fx_t x, fx_t y, fx_t z)
 {
     fx_t v[3] = {x, y, z};
@@ -251,6 +252,16 @@ static void check_norm(fx_t x, fx_t y, fx_t z)
         CHECK_SWEEP(ok && e <= NORM_BOUND, "fx_normalize3(%d,%d,%d)[%d] = %d, exact %.3Lf", x, y, z, i, v[i],
                   in[i] / len * 65536.0L);
     }
+    /* fx_normalize3_len: the same direction, and the length within 2^-24
+     * relative + 0.5 LSB (fx.h), saturated at FX_MAX. */
+    fx_t u[3] = {x, y, z}, l = -1;
+    bool okl = fx_normalize3_len(u, &l);
+    CHECK_SWEEP(okl && u[0] == v[0] && u[1] == v[1] && u[2] == v[2], "fx_normalize3_len(%d,%d,%d): direction", x, y,
+                z);
+    long double want = len > (long double)FX_MAX ? (long double)FX_MAX : len;
+    long double el = fabsl((long double)l - want), bound = NORM_LEN_REL * len + 0.5L;
+    track(&max_err_norm_len, el / bound);
+    CHECK_SWEEP(el <= bound, "fx_normalize3_len(%d,%d,%d) length %d, exact %.3Lf", x, y, z, l, len);
 }
 
 /* Random vector components inside the renderer's domain (|c| <= 2 *
@@ -472,6 +483,7 @@ int main(int argc, char **argv)
            max_err_norm, max_err_dot, max_err_cross, max_err_cot);
     printf("  fx_sin_deg %.4f  fx_cos_deg %.4f  fx_rsqrt %.4f  fx_recip %.3f\n", max_err_sin, max_err_cos,
            max_err_rsqrt, max_err_recip);
+    printf("  fx_normalize3_len: length error %.3f of its bound (2^-24 relative + 0.5 LSB)\n", max_err_norm_len);
     /* Machine-readable worst errors for make bench-fx (firmware/benchfx.sh). */
     printf("ERR fx_mul %.3f\nERR fx_div %.3f\nERR fx_recip %.3f\nERR fx_sqrt %.3f\nERR fxw_sqrt %.3f\n", max_err_mul,
            max_err_div, max_err_recip, max_err_sqrt, max_err_wsqrt);
@@ -480,6 +492,9 @@ int main(int argc, char **argv)
     printf("ERR fx_cot_deg %.3f_of_(1+1e-7|x|)\nERR vec3_dot %.3f\nERR vec3_cross %.3f\nERR vec3_normalize %.3f\n",
            max_err_cot, max_err_dot, max_err_cross, max_err_norm);
     printf("ERR vec3_len %.3f\n", max_err_wsqrt); /* the Q32.32 root of an exact dot product */
+    /* The direction is fx_normalize3's; the length, as a fraction of its bound. */
+    printf("ERR vec3_unit_len %.3f (direction; length %.3f of 0.5 LSB + 2^-24 |v|)\n", max_err_norm,
+           max_err_norm_len);
     /* One check per function on the sweep's worst case (the sweep itself
      * has already counted every single failure). */
     CHECK(max_err_mul <= 0.5);
@@ -488,6 +503,7 @@ int main(int argc, char **argv)
     CHECK(max_err_wsqrt <= 0.5);
     CHECK(max_err_wdiv <= 1.0);
     CHECK(max_err_norm <= NORM_BOUND);
+    CHECK(max_err_norm_len <= 1.0);
     CHECK(max_err_dot <= 0.5);
     CHECK(max_err_cross <= 0.5);
     CHECK(max_err_cot <= 1.0);
