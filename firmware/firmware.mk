@@ -76,7 +76,15 @@ FW_OBJ   := $(patsubst %.c,$(FW_DIR)/%.o,$(FW_SRC))
 # This ELF's dependency files only (the top Makefile skips build/fw).
 -include $(wildcard $(FW_OBJ:.o=.d))
 
-$(FW_DIR)/scene_data.h: $(SCENE_DEP) $(BUILD)/fxrt-scenec
+# The directory is named after the scene file's base name: scenes/lit/room
+# and scenes/bench/room share one. The scene's path (and --all-kinds) is
+# recorded, so that switching between them rebuilds instead of running the
+# other scene's firmware.
+$(FW_DIR)/scene-path: FORCE
+	@mkdir -p $(@D)
+	@echo '$(SCENE) $(FW_ALL_KINDS)' | cmp -s - $@ || echo '$(SCENE) $(FW_ALL_KINDS)' > $@
+
+$(FW_DIR)/scene_data.h: $(SCENE_DEP) $(BUILD)/fxrt-scenec $(FW_DIR)/scene-path
 	@mkdir -p $(@D)
 	@echo "  SCENEC  $(SCENE) -> $(@D)"
 	$(Q)$(BUILD)/fxrt-scenec '$(SCENE)' --number $(NUMBER) --size $(SIZE) --out $(@D) $(if $(FW_ALL_KINDS),--all-kinds)

@@ -212,6 +212,15 @@ fi
 check "SIZE= overrides the scene's size" run_fw SCENE="$out/with space/tri angle.scene" SIZE=20x10
 check "SIZE= frame identical to fxrt render --size" \
     cmp -s "$out/space-host-20.ppm" "$BUILD/qemu/mps2-an385/tri_angle-q16-20x10.ppm"
+# Another scene whose name maps to the same build directory (tri_angle,
+# as scenes/lit/room and scenes/bench/room share one): the firmware is
+# rebuilt for it, not the previous scene's reused.
+mkdir -p "$out/other"
+cp scenes/abb6-sphere.scene "$out/other/tri_angle.scene"
+"$FXRT" render "$out/other/tri_angle.scene" --size 20x10 -o "$out/other-host-20.ppm"
+check "a scene with the same build name runs" run_fw SCENE="$out/other/tri_angle.scene" SIZE=20x10
+check "a scene with the same build name: its own frame, not the previous scene's" \
+    cmp -s "$out/other-host-20.ppm" "$BUILD/qemu/mps2-an385/tri_angle-q16-20x10.ppm"
 
 # Float and double builds on target (the float frame is IEEE-exact too).
 NUMBER_RUNS="mps2-an385:double mps2-an386:float microbit:float"
