@@ -106,10 +106,12 @@ $(SAN_DIFF): $$(call san_path,$$(DIFF_OBJ))
 # binaries it runs (so the script need not know the Makefile's names).
 # The fuzz harnesses are sanitized already; sanitize.sh replays their
 # corpora (the kernel harness, 48 more objects, only under make test-full).
-san-build: $$(SAN_BIN) $$(SAN_ORACLE) $$(SAN_DIFF) $$(FUZZ_SCENE_BIN)
+# The sanitized oracle runs in the full scope only (sanitize.sh): make
+# test-full and make sanitize build it.
+san-build: $$(SAN_BIN) $$(SAN_DIFF) $$(FUZZ_SCENE_BIN)
 	$(Q)printf '%s\n' $(SAN_UNIT_BIN) $(SAN_NUM_BIN) $(SAN_EXTRA_BIN) >$(SAN_DIR)/tests.list
 
-sanitize: deps san-build
+sanitize: deps san-build $$(SAN_ORACLE)
 	$(Q)BUILD=$(BUILD) tests/sanitize.sh
 
 # --- libFuzzer ------------------------------------------------------------
@@ -180,6 +182,6 @@ fuzz-scene: $(FUZZ_SCENE_BIN) $(FUZZ_DIR)/scene.dict
 # sanitize.sh so the latter can draw inputs from a fresh corpus.
 SUITES_EXTRA += tests/fuzz-short.sh tests/sanitize.sh
 TEST_PREREQ  += san-build $(FUZZ_SCENE_BIN)
-TEST_FULL_PREREQ += $(DIFF_FUZZ_BIN)
+TEST_FULL_PREREQ += $(DIFF_FUZZ_BIN) $(SAN_ORACLE)
 
 .PHONY: sanitize san-build fuzz-scene

@@ -23,8 +23,9 @@
 #     samples 2 adaptive), in q16, float and double
 #     with both renderers (quick: the reference one in q16 only) at
 #     SAN_TRACE_SIZE (default 48x36);
-#   - tests/oracle.sh with $BUILD/san/tests/oracle: every scene file and
-#     SAN_ORACLE_SCENES random scenes (default 300, quick 50), and the stress
+#   - tests/oracle.sh with $BUILD/san/tests/oracle (make test-full only: the
+#     oracle is test code, which make test runs unsanitized): every scene
+#     file and SAN_ORACLE_SCENES random scenes (default 300), and the stress
 #     expectations check;
 #   - the fuzz harnesses (already sanitized) over their corpora and the
 #     scene seeds, and SAN_KERNEL_RUNS fixed-seed kernel inputs (the kernel
@@ -49,7 +50,7 @@ partial=$san/partial
 PARTIAL_FILES=${PARTIAL_FILES:-$(scope 200 80)}
 PARTIAL_SIZE=${PARTIAL_SIZE:-24x16}
 SAN_DIFF_CASES=${SAN_DIFF_CASES:-50000}
-SAN_ORACLE_SCENES=${SAN_ORACLE_SCENES:-$(scope 300 50)}
+SAN_ORACLE_SCENES=${SAN_ORACLE_SCENES:-300}
 SAN_KERNEL_RUNS=${SAN_KERNEL_RUNS:-20000}
 
 # san_env DIR: sanitizer options for a run whose reports go to DIR/.
@@ -256,7 +257,9 @@ done <"$san/tests.list"
 run_suite test_diff "$san/tests/test_diff" "$SAN_DIFF_CASES"
 run_suite cli.sh env BUILD="$san" FXRT="$sfxrt" tests/cli.sh
 full && run_suite golden.sh env BUILD="$san" FXRT="$sfxrt" tests/golden.sh
-run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
+# The oracle is test code, run unsanitized by make test (oracle.sh): its
+# sanitized run is part of the full scope.
+full && run_suite oracle.sh env BUILD="$san" ORACLE="$san/tests/oracle" ORACLE_TEST_SCENES="$SAN_ORACLE_SCENES" tests/oracle.sh
 
 # trace_scene FILE / lit_scene FILE: the scenes of the trace and lit
 # sections below (a trace scene is not also a lit one).
