@@ -25,9 +25,10 @@ while [ $i -lt ${#args[@]} ]; do
     case $a in
     -o) out=${args[$((i + 1))]}; i=$((i + 2)); continue ;;
     -MMD | -MP) deps=1 ;;
-    -include | -I | -D)
+    -include | -I | -D | -U)
         pre+=("$a" "${args[$((i + 1))]}"); i=$((i + 2)); continue ;;
-    -I* | -D*) pre+=("$a") ;;
+    -I* | -D* | -U*) pre+=("$a") ;; # in their order: -D X -U X -D X=1
+
     -c) ;;
     *.c) src=$a ;;
     -g*) debug=1; keep+=("$a") ;;
