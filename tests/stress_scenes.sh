@@ -47,14 +47,27 @@ mkdir -p "$out"
 metric() { sed -nE "s/.*(^| )$1=([^ ]+).*/\2/p" <<<"$2"; }
 
 # cmp_num A OP B: numeric comparison (decimals allowed); OP "in" takes
-# B = LO..HI
+# B = LO..HI. Integers (pixel counts, most conditions) are compared in
+# bash; decimals in awk.
 cmp_num() {
-    awk -v a="$1" -v op="$2" -v b="$3" 'BEGIN {
-        if (op == "in") {
-            if (a !~ /^[0-9]+$/ || b !~ /^[0-9]+\.\.[0-9]+$/) exit 2
-            split(b, r, /\.\./)
-            exit !(a + 0 >= r[1] + 0 && a + 0 <= r[2] + 0)
-        }
+    local a=$1 op=$2 b=$3 int='^-?[0-9]+$'
+    if [ "$op" = in ]; then
+        [[ $a =~ ^[0-9]+$ && $b =~ ^([0-9]+)\.\.([0-9]+)$ ]] || return 2
+        ((a >= BASH_REMATCH[1] && a <= BASH_REMATCH[2]))
+        return
+    fi
+    if [[ $a =~ $int && $b =~ $int ]]; then
+        case $op in
+        ==) ((a == b)) ;;
+        "<=") ((a <= b)) ;;
+        ">=") ((a >= b)) ;;
+        "<") ((a < b)) ;;
+        ">") ((a > b)) ;;
+        *) return 2 ;;
+        esac
+        return
+    fi
+    awk -v a="$a" -v op="$op" -v b="$b" 'BEGIN {
         if (a !~ /^-?[0-9]+(\.[0-9]+)?$/ || b !~ /^-?[0-9]+(\.[0-9]+)?$/) exit 2
         a += 0; b += 0
         if (op == "==") exit !(a == b)
@@ -118,16 +131,22 @@ pixel_stats() {
 }
 
 # stat_of STATS WHAT: the count of WHAT ("background", "holes", "pixels",
-# or "color R G B": every colour within 1 per channel of R G B)
+# or "color R G B": every colour within 1 per channel of R G B), read in
+# bash (no process per query).
 stat_of() {
-    awk -v what="$2" '
-        function near(a, b) { return a - b <= 1 && b - a <= 1 }
-        BEGIN { nw = split(what, w, " ") }
-        w[1] == "color" && $1 == "color" && nw == 4 {
-            if (near($2, w[2]) && near($3, w[3]) && near($4, w[4])) sum += $5
-            next }
-        { v = $NF; $NF = ""; sub(/ $/, "") } $0 == what { sum = v }
-        END { print sum + 0 }' "$1"
+    local k r g b c sum=0
+    local -a w
+    read -ra w <<<"$2"
+    while read -r k r g b c; do
+        if [ "${w[0]}" = color ] && [ ${#w[@]} -eq 4 ]; then
+            [ "$k" = color ] || continue
+            ((r - w[1] <= 1 && w[1] - r <= 1 && g - w[2] <= 1 && w[2] - g <= 1 &&
+                b - w[3] <= 1 && w[3] - b <= 1)) && sum=$((sum + c))
+        elif [ "$k" = "$2" ]; then
+            sum=$r
+        fi
+    done <"$1"
+    echo "$sum"
 }
 
 # numbers_of SPEC: "all" -> "double q16 float", "q16,float" -> "q16 float"
