@@ -114,10 +114,10 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
 /* Where the ray meets the plane through a with normal n: t = (a - o) . n /
  * (d . n). Both dot products stay wide, so the sign tests are exact and the
  * quotient is rounded once. Planes and triangles share it. */
-__attribute__((unused)) static bool geom_flat_t(vec3_t a, vec3_t n, const ray_t *ray, num_t *t)
+__attribute__((unused)) static bool geom_flat_t(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t *t)
 {
-    numw_t den = vec3_dotw(ray->d, n);
-    numw_t num = vec3_dotw(vec3_sub(a, ray->o), n);
+    numw_t den = vec3_dotw(ray->d, *n);
+    numw_t num = vec3_dotw(vec3_sub(*a, ray->o), *n);
     if (den == 0 || num == 0 || (num < 0) != (den < 0))
         return false;
     num_t tt = numw_div(num, den);
@@ -130,10 +130,10 @@ __attribute__((unused)) static bool geom_flat_t(vec3_t a, vec3_t n, const ray_t 
 /* Shadow rays (any hit with 0 < t < tmax; tmax NUM_MAX: any t > 0)
  * without a division: t = num / den is in range when num and den have one
  * strict sign and |num| < tmax |den| (numw_lt_mul: exact in Q16.16). */
-__attribute__((unused)) static bool geom_flat_occludes(vec3_t a, vec3_t n, const ray_t *ray, num_t tmax)
+__attribute__((unused)) static bool geom_flat_occludes(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t tmax)
 {
-    numw_t den = vec3_dotw(ray->d, n);
-    numw_t num = vec3_dotw(vec3_sub(a, ray->o), n);
+    numw_t den = vec3_dotw(ray->d, *n);
+    numw_t num = vec3_dotw(vec3_sub(*a, ray->o), *n);
     if (den == 0 || num == 0 || (num < 0) != (den < 0))
         return false;
     if (tmax == NUM_MAX)
@@ -144,9 +144,9 @@ __attribute__((unused)) static bool geom_flat_occludes(vec3_t a, vec3_t n, const
 
 /* The plane's t for any ray (no side or sign test): shading's hit point
  * on a flat piece the renderer found the ray to cover. */
-__attribute__((unused)) static num_t geom_flat_surface_t(vec3_t a, vec3_t n, const ray_t *ray)
+__attribute__((unused)) static num_t geom_flat_surface_t(const vec3_t *a, const vec3_t *n, const ray_t *ray)
 {
-    return numw_div(vec3_dotw(vec3_sub(a, ray->o), n), vec3_dotw(ray->d, n));
+    return numw_div(vec3_dotw(vec3_sub(*a, ray->o), *n), vec3_dotw(ray->d, *n));
 }
 
 #if FXRT_MAX_PLANES > 0
@@ -160,17 +160,17 @@ bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color
 
 bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t)
 {
-    return geom_flat_t(p->a, p->n, ray, t);
+    return geom_flat_t(&p->a, &p->n, ray, t);
 }
 
 bool geom_plane_occludes(const geom_plane_t *p, const ray_t *ray, num_t tmax)
 {
-    return geom_flat_occludes(p->a, p->n, ray, tmax);
+    return geom_flat_occludes(&p->a, &p->n, ray, tmax);
 }
 
 void geom_plane_surface(const geom_plane_t *p, const ray_t *ray, num_t *t, vec3_t *n)
 {
-    *t = geom_flat_surface_t(p->a, p->n, ray);
+    *t = geom_flat_surface_t(&p->a, &p->n, ray);
     *n = p->n;
 }
 #endif
@@ -290,19 +290,19 @@ bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t)
 {
     if (tr->degenerate || !geom_triangle_inside(tr, ray))
         return false;
-    return geom_flat_t(tr->a, tr->n, ray, t);
+    return geom_flat_t(&tr->a, &tr->n, ray, t);
 }
 
 bool geom_triangle_occludes(const geom_triangle_t *tr, const ray_t *ray, num_t tmax)
 {
     /* The plane first (two dot products): most shadow rays do not cross
      * it in (0, tmax), and then the edges are not needed. */
-    return !tr->degenerate && geom_flat_occludes(tr->a, tr->n, ray, tmax) && geom_triangle_inside(tr, ray);
+    return !tr->degenerate && geom_flat_occludes(&tr->a, &tr->n, ray, tmax) && geom_triangle_inside(tr, ray);
 }
 
 void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n)
 {
-    *t = geom_flat_surface_t(tr->a, tr->n, ray);
+    *t = geom_flat_surface_t(&tr->a, &tr->n, ray);
     *n = tr->n;
 }
 #endif

@@ -78,11 +78,15 @@ static inline numw_t numw_mul_int(numw_t w, int32_t i)
 }
 
 /* a < t * b for wide a, b and a scalar t, exactly: a * 2^16 < t * b in
- * 128-bit integers (shadow rays' "t < tmax" without a division). */
+ * 128-bit integers (shadow rays' "t < tmax" without a division), compared
+ * word by word (a * 2^16 needs no call: its words are a >> 48 and
+ * a << 16). */
 static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b)
 {
-    fx128_t d = fx128_sub(fx128_shl(fx128_from64(a), 16), fx128_mul(t, b));
-    return d.hi < 0;
+    fx128_t m = fx128_mul(t, b);
+    int64_t hi = a >> 48; /* arithmetic shift: gcc and clang */
+    uint64_t lo = (uint64_t)a << 16;
+    return hi < m.hi || (hi == m.hi && lo < m.lo);
 }
 
 /* x^k for x in [0, 1] (given wide, clamped to [0, 1]) and an integer k

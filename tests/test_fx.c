@@ -465,6 +465,16 @@ int main(int argc, char **argv)
             uint64_t w = rng() >> (rng() % 64);
             CHECK_SWEEP(fx_umul64_small(w, k) == w * (uint64_t)(int64_t)k, "fx_umul64_small(%llu, %d)",
                         (unsigned long long)w, k);
+            /* numw_lt_mul (shadow rays' t < tmax): a 2^16 < t b, exactly;
+             * y also made equal to a multiple of t to hit the ties. */
+            fx_t t = (fx_t)(rng() >> (rng() % 33));
+            int64_t tie = t ? (int64_t)(((s128_t)x * 65536) / t) : y;
+            for (int j = 0; j < 2; j++) {
+                int64_t bb = j ? tie : y;
+                bool want_lt = (s128_t)x * 65536 < (s128_t)t * bb;
+                CHECK_SWEEP(numw_lt_mul(x, t, bb) == want_lt, "numw_lt_mul(%lld, %d, %lld)", (long long)x, t,
+                            (long long)bb);
+            }
         }
         check_wdiv(((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
                    (fxw_t)(rng() >> 1) >> (rng() % 63));
