@@ -25,10 +25,9 @@ while [ $i -lt ${#args[@]} ]; do
     case $a in
     -o) out=${args[$((i + 1))]}; i=$((i + 2)); continue ;;
     -MMD | -MP) deps=1 ;;
-    -include | -I | -D | -U)
+    -include | -I | -D)
         pre+=("$a" "${args[$((i + 1))]}"); i=$((i + 2)); continue ;;
-    -I* | -D* | -U*) pre+=("$a") ;; # in their order: -D X -U X -D X=1
-
+    -I* | -D*) pre+=("$a") ;;
     -c) ;;
     *.c) src=$a ;;
     -g*) debug=1; keep+=("$a") ;;

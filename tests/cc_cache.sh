@@ -46,9 +46,6 @@ check "changed -include content compiles" cached "$out/b" "$out/b/geom3.o"
 check "changed -include content: a miss" test "$(nobj)" -eq 2
 check "a -D flag compiles" cached "$out/a" "$out/a/geomd.o" -DFXRT_NUMBER=2
 check "a -D flag: a miss" test "$(nobj)" -eq 3
-check "-U between two -D of one macro keeps their order" \
-    cached "$out/a" "$out/a/geomu.o" -DFXRT_NUMBER=2 -UFXRT_NUMBER -DFXRT_NUMBER=2
-check "the same definitions: a hit" test "$(nobj)" -eq 3
 check "-O1 compiles" cached "$out/a" "$out/a/geomo1.o" -O1
 check "-O1: a miss" test "$(nobj)" -eq 4
 $CC "${base[@]}" -include "$out/a/cfg.h" -O1 -c core/geom.c -o "$out/fresh-o1.o"

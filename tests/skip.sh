@@ -32,27 +32,16 @@ LIGHTING='^(shade_point|shade_point_k|shade_object|shade_object_k|shade_consts|r
 SHADOW='^(shadow_blocked|world_occluded)$'
 LIBM='^(pow|powf|acos|acosf|cos|cosf|sin|sinf|sqrt|sqrtf|exp|log)$'
 
-# Each source compiles to its own object through the firmware object cache
-# (firmware/cc-cache.sh; FW_CACHE, tests/lib.sh): the builds differ in a
-# few -D flags, so most of their objects are the same.
-CC_SKIP=arm-none-eabi-gcc
-[ "${FW_CACHE:-}" = 1 ] && CC_SKIP="firmware/cc-cache.sh $BUILD/fwcache arm-none-eabi-gcc"
 build() { # NAME FLAGS...
     local name=$1
     shift
-    local f objs=()
-    mkdir -p "$out/$name"
-    : >"$out/$name.log"
-    for f in tests/skip_app.c $(for c in $CORE; do echo core/$c.c; done); do
-        # shellcheck disable=SC2086
-        $CC_SKIP -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Werror -O2 -mcpu=cortex-m0 -mthumb -ffreestanding \
-            -ffunction-sections -fdata-sections -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=1 \
-            -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=32 "$@" -Icore -c "$f" \
-            -o "$out/$name/$(basename "$f" .c).o" 2>>"$out/$name.log" || return 1
-        objs+=("$out/$name/$(basename "$f" .c).o")
-    done
-    arm-none-eabi-gcc -mcpu=cortex-m0 -mthumb "${objs[@]}" -nostartfiles --specs=nano.specs --specs=nosys.specs \
-        -Wl,--gc-sections -Wl,-e,main -o "$out/$name.elf" 2>>"$out/$name.log"
+    local srcs=()
+    for f in $CORE; do srcs+=(core/$f.c); done
+    arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Werror -O2 -mcpu=cortex-m0 -mthumb -ffreestanding -ffunction-sections -fdata-sections \
+        -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=1 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 \
+        -DFXRT_RENDER_MAX_WIDTH=32 "$@" -Icore tests/skip_app.c "${srcs[@]}" \
+        -nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Wl,-e,main \
+        -o "$out/$name.elf" 2>"$out/$name.log"
 }
 syms() { arm-none-eabi-nm "$out/$1.elf" | awk '$2 ~ /^[TtWw]$/ {print $3}' | sort -u; }
 
