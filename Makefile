@@ -119,7 +119,7 @@ TEST_FULL_PREREQ :=
 -include tests/growth.mk
 -include tests/qemu_trace.mk
 
-SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/cc_cache.sh tests/qemu.sh \
+SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)
 
 # make test builds what the suites need with TEST_JOBS parallel jobs (the

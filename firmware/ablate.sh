@@ -23,9 +23,6 @@ BUILD=${BUILD:-build}
 BOARD=${BOARD:-mps2-an385}
 SIZE=${ABLATE_SIZE:-160x120}
 M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
-# No debug information (the code is the same) and the object cache
-# (firmware/cc-cache.sh): most objects of two runs' ELFs are the same.
-export FW_DEBUG= FW_CACHE=${FW_CACHE-1}
 variants=(
     "reference, no hoisting|ablnohoist|-DFXRT_RENDERER=2 -DFXRT_NO_HOIST=1"
     "reference|ablref|-DFXRT_RENDERER=2"

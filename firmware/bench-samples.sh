@@ -39,9 +39,6 @@ JOBS=${SAMPLES_JOBS:-$(nproc 2>/dev/null || echo 2)}
 OUT=$BUILD/bench/samples
 unset MAKEFLAGS MFLAGS MAKELEVEL
 M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
-# No debug information (the code is the same) and the object cache
-# (firmware/cc-cache.sh): most objects of two runs' ELFs are the same.
-export FW_DEBUG= FW_CACHE=${FW_CACHE-1}
 rm -rf "$OUT"
 mkdir -p "$OUT/scenes" "$OUT/host" "$OUT/runs"
 start=$(date +%s)

@@ -62,9 +62,6 @@ export FIT_QUICK=1
 # -o: the scene compiler was built before the runs; parallel sub-makes must
 # not relink it (a source edited during the run would make them race).
 M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
-# No debug information (the code is the same) and the object cache
-# (firmware/cc-cache.sh): most objects of two runs' ELFs are the same.
-export FW_DEBUG= FW_CACHE=${FW_CACHE-1}
 
 die() { echo "bench: $*" >&2; exit 1; }
 board_field() { # BOARD FIELD(2=cpu 3=fb)

@@ -95,17 +95,10 @@ $(FW_DIR)/cflags: FORCE
 	@mkdir -p $(@D)
 	@echo '$(FW_CFLAGS)' | cmp -s - $@ || echo '$(FW_CFLAGS)' > $@
 
-# FW_CACHE=1 (the test suites and make bench set it): objects whose
-# preprocessed source and flags were compiled before are copied from
-# $(BUILD)/fwcache (firmware/cc-cache.sh); most objects of two ELFs are the
-# same. Builds with -g compile as without it.
-FW_CACHE ?=
-FW_CC := $(if $(filter 1,$(FW_CACHE)),firmware/cc-cache.sh $(BUILD)/fwcache )$(ARM_CC)
-
-$(FW_DIR)/%.o: %.c $(FW_DIR)/scene_data.h $(FW_DIR)/cflags firmware/cc-cache.sh
+$(FW_DIR)/%.o: %.c $(FW_DIR)/scene_data.h $(FW_DIR)/cflags
 	@mkdir -p $(@D)
 	@echo "  ARMCC   $<"
-	$(Q)$(FW_CC) $(FW_CFLAGS) -MMD -MP -c $< -o $@
+	$(Q)$(ARM_CC) $(FW_CFLAGS) -MMD -MP -c $< -o $@
 
 # The link goes through firmware/fit.sh: a scene too big for the board fails
 # with what fits (kinds and counts), not a linker overflow, and leaves no ELF.

@@ -49,9 +49,6 @@ OUT=$BUILD/frontier
 unset MAKEFLAGS MFLAGS MAKELEVEL
 export FIT_QUICK=1
 M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
-# No debug information (the code is the same) and the object cache
-# (firmware/cc-cache.sh): most objects of two runs' ELFs are the same.
-export FW_DEBUG= FW_CACHE=${FW_CACHE-1}
 
 die() { echo "frontier: $*" >&2; exit 1; }
 board_field() {

@@ -67,17 +67,11 @@ TEST_PREREQ  += $(TEST_FXRT_BIN) $(EX_HOST)/orbit $(EX_MB)/orbit.elf
 ONB_DIR ?= $(BUILD)/onboard
 ONB_SRC = $(CORE_NUM:%=core/%.c) core/fx.c tests/onboard_main.c firmware/startup.c firmware/semihost.c \
           firmware/counter.c
-# Each source compiles to its own object through $(FW_CC) (FW_CACHE=1: most
-# objects of two batches are the same), then one link.
 onboard:
 	@echo "  ARMCC   $(ONB_DIR)/onboard.elf"
-	$(Q)set -e; objs=; for src in $(ONB_SRC); do \
-	  obj=$(ONB_DIR)/obj/$$(basename $$src .c).o; mkdir -p $(ONB_DIR)/obj; \
-	  $(FW_CC) $(WARN) -O2 $(CPU_$(BOARD)) -ffreestanding -ffunction-sections -fdata-sections \
-	    -DFXRT_NUMBER=1 -include $(ONB_DIR)/scene_config.h -I$(ONB_DIR) -Icore -Ifirmware -c $$src -o $$obj; \
-	  objs="$$objs $$obj"; done; \
-	$(ARM_CC) $(CPU_$(BOARD)) $$objs -nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections \
-	  -Llinker -Tlinker/$(BOARD).ld -o $(ONB_DIR)/onboard.elf
+	$(Q)$(ARM_CC) $(WARN) -O2 $(CPU_$(BOARD)) -ffreestanding -ffunction-sections -fdata-sections -DFXRT_NUMBER=1 \
+	  -include $(ONB_DIR)/scene_config.h -I$(ONB_DIR) -Icore -Ifirmware $(ONB_SRC) -nostartfiles \
+	  --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Llinker -Tlinker/$(BOARD).ld -o $(ONB_DIR)/onboard.elf
 .PHONY: onboard
 # Sanitized too (tests/sanitize.mk's number-generic rule).
 NUM_TESTS += test_fxrt

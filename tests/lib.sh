@@ -4,10 +4,8 @@ PASSED=0
 FAILED=0
 BUILD=${BUILD:-build}
 FXRT=${FXRT:-$BUILD/fxrt}
-# Firmware built by the tests carries no debug information, and objects
-# compiled before are reused from $BUILD/fwcache (firmware.mk, FW_CACHE).
+# Firmware built by the tests carries no debug information (firmware.mk).
 export FW_DEBUG=${FW_DEBUG-}
-export FW_CACHE=${FW_CACHE-1}
 
 ok() { PASSED=$((PASSED + 1)); }
 bad() {
