@@ -127,13 +127,25 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
             l = L->dir; /* normalised once, in world_add_light */
         } else {
             vec3_t v = vec3_sub(L->position, p);
+            /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
+             * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
+#if FXRT_NUMBER == FXRT_Q16
+            /* One inverse square root gives l and |v| (fx_normalize3_len). */
             FXRT_COUNT(l_normalised);
             if (!vec3_unit_len(v, &l, &dist))
                 continue; /* the light is at p: no direction, no light */
-            /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
-             * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
             if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))
                 continue; /* outside the cone */
+#else
+            /* |v| first: a point outside a spot's cone costs no division. */
+            dist = vec3_len(v);
+            if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))
+                continue; /* outside the cone */
+            FXRT_COUNT(l_normalised);
+            if (dist == NUM_ZERO)
+                continue; /* the light is at p: no direction, no light */
+            l = vec3_scale(v, num_div(NUM_ONE, dist)); /* vec3_normalize's value, without its second root */
+#endif
         }
         numw_t ndlw = vec3_dotw(n, l);
         if (ndlw <= 0)
