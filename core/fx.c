@@ -1,5 +1,7 @@
 /* fx: Q16.16 operations that are too large to inline. See fx.h for formats,
  * rounding and the overflow policy. */
+#include <stddef.h>
+
 #include "fx.h"
 
 /* Magnitude of an int64 as uint64, defined for INT64_MIN too. */
@@ -168,8 +170,7 @@ fx_t fx_div(fx_t a, fx_t b)
     if (b == 0)
         return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
     bool neg = (a < 0) != (b < 0);
-    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
-    uint32_t ub = b < 0 ? 0u - (uint32_t)b : (uint32_t)b;
+    uint32_t ua = fx_uabs32(a), ub = fx_uabs32(b);
     if ((ua >> 15) >= ub)
         return neg ? FX_MIN : FX_MAX;
     int s = fx_clz32(ub);
@@ -595,7 +596,7 @@ bool fx_unit30(const fx_t v[3], int32_t out[3])
 {
     uint32_t m = 0;
     for (int i = 0; i < 3; i++)
-        m |= v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
+        m |= fx_uabs32(v[i]);
     if (m == 0)
         return false;
     /* Scale the largest magnitude into [2^29, 2^30): the root of the
@@ -621,8 +622,9 @@ bool fx_unit30(const fx_t v[3], int32_t out[3])
     return true;
 }
 
-/* fx_normalize3 and fx_normalize3_len: with_len is a constant in each. */
-static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], fx_t *len, bool with_len)
+/* fx_normalize3 (len NULL) and fx_normalize3_len: inlined into each, so
+ * the length's code is only in the second. */
+static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], fx_t *len)
 {
     /* Straight-line code, constant 64-bit shifts only (a variable one is
      * a dozen instructions on the M3 and more on the M0). */
@@ -662,7 +664,7 @@ static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], 
     fx_t c0 = (fx_t)(((uint32_t)(fx_umul32(s0, Y) >> 32) + half) >> sh);
     fx_t c1 = (fx_t)(((uint32_t)(fx_umul32(s1, Y) >> 32) + half) >> sh);
     fx_t c2 = (fx_t)(((uint32_t)(fx_umul32(s2, Y) >> 32) + half) >> sh);
-    if (with_len) {
+    if (len) {
         /* |v| = |s| 2^-shift = sqrt(top) 2^(k - shift) = top Y 2^(k - 46 - shift),
          * a shift by 31 + shift (k = 15) or 32 + shift (k = 14), which lies
          * in [29, 61]; rounded once, saturated like fxw_sqrt. */
@@ -678,13 +680,12 @@ static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], 
 
 bool fx_normalize3(fx_t v[3])
 {
-    fx_t unused;
-    return fx_normalize3_impl(v, &unused, false);
+    return fx_normalize3_impl(v, NULL);
 }
 
 bool fx_normalize3_len(fx_t v[3], fx_t *len)
 {
-    return fx_normalize3_impl(v, len, true);
+    return fx_normalize3_impl(v, len);
 }
 
 fx128_t fx128_mul(int64_t a, int64_t b)

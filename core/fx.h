@@ -313,7 +313,8 @@ bool fx_normalize3(fx_t v[3]);
 /* The same, and *len = |(x, y, z)| (saturated at FX_MAX) from the same
  * inverse square root: within 2^-24 relative plus 0.5 LSB (the inverse
  * root's error, not a correctly rounded fxw_sqrt), for shading's light
- * distance. *len is not written when the vector is zero. */
-bool fx_normalize3_len(fx_t v[3], fx_t *len);
+ * distance. len must not be NULL; *len is not written when the vector is
+ * zero. */
+bool fx_normalize3_len(fx_t v[3], fx_t *len) __attribute__((nonnull));
 
 #endif
