@@ -64,6 +64,33 @@ static bool shade_in_cone(const light_t *L, vec3_t v, num_t dist)
 #endif
 }
 
+#if FXRT_NUMBER == FXRT_Q16
+/* A point or spot light can be farther from a hit point than Q16.16
+ * holds: the point up to 32767 from the origin (a plane seen far away),
+ * the light up to FXRT_COORD_LIMIT. Then v = pos - p saturates (a
+ * component beyond 32767) or fx_normalize3_len saturates its length, and
+ * neither l nor the distance is right. Any such case has a computed
+ * distance of at least SHADE_FAR_DIST (shade.h), and so does a light just
+ * inside the range, for which this path is right too. shade_light_far
+ * recomputes l from a quarter of the exact 64-bit difference (|v| / 4 <
+ * 17,737: it fits) and makes a spot's cone test with that quarter and
+ * its length; it returns l, or the zero vector when the spot does not
+ * reach p. The caller then passes the distance SHADE_FAR_DIST, and
+ * shadow_blocked casts the shadow ray from the light's end of the
+ * segment (core/shadow.c). Rare, so out of line. */
+static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, vec3_t p)
+{
+    vec3_t pos = L->position, l = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3_t v = vec3_make((fx_t)(((int64_t)pos.x - p.x) / 4), (fx_t)(((int64_t)pos.y - p.y) / 4),
+                         (fx_t)(((int64_t)pos.z - p.z) / 4));
+    num_t len;
+    (void)vec3_unit_len(v, &l, &len); /* |v| > 8191: not zero */
+    if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, len))
+        return vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    return l;
+}
+#endif
+
 color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
                     uint8_t *mask)
 {
@@ -126,17 +153,24 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
         if (L->kind == LIGHT_DIRECTIONAL) {
             l = L->dir; /* normalised once, in world_add_light */
         } else {
-            vec3_t v = vec3_sub(L->position, p);
             /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
              * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
 #if FXRT_NUMBER == FXRT_Q16
             /* One inverse square root gives l and |v| (fx_normalize3_len). */
             FXRT_COUNT(l_normalised);
+            vec3_t v = vec3_sub(L->position, p);
             if (!vec3_unit_len(v, &l, &dist))
                 continue; /* the light is at p: no direction, no light */
-            if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))
+            if (__builtin_expect(dist >= SHADE_FAR_DIST, 0)) {
+                l = shade_light_far(L, p);
+                if (l.x == NUM_ZERO && l.y == NUM_ZERO && l.z == NUM_ZERO)
+                    continue; /* outside the cone */
+                dist = SHADE_FAR_DIST;
+            } else if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist)) {
                 continue; /* outside the cone */
+            }
 #else
+            vec3_t v = vec3_sub(L->position, p);
             /* |v| first: a point outside a spot's cone costs no division. */
             dist = vec3_len(v);
             if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))

@@ -71,4 +71,15 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, vec3_t p, const light_t *l,
                     vec3_t ldir, num_t dist);
 
+#if FXRT_NUMBER == FXRT_Q16
+/* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST
+ * from p may lie beyond the range (shade_lights computes |v| within 0.5
+ * LSB + 2^-24 relative, so |v| >= 32768 gives at least 129 LSB below
+ * NUM_MAX). shadow_blocked then casts the ray from the light towards p,
+ * t in (0, NUM_MAX - 1): every bounded object is within 32,474 of a light
+ * in the domain, so no occluder between them is missed but a plane met
+ * beyond 32767 from the light (a far hit, docs/ACCURACY.md). */
+#define SHADE_FAR_DIST (NUM_MAX - 256)
+#endif
+
 #endif

@@ -42,6 +42,15 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool ins
     if (inside && solid && SHADOW_CASTS(*world_common(w, kind, index)) && !shadow_light_inside(w, kind, index, l))
         return true;
     ray_t ray = {p, ldir};
+#if FXRT_NUMBER == FXRT_Q16
+    if (dist >= SHADE_FAR_DIST && l->kind != LIGHT_DIRECTIONAL) {
+        /* The light may be beyond the range from p (shade.h): the same
+         * segment from the light's end. */
+        ray.o = l->position;
+        ray.d = vec3_neg(ldir);
+        dist = NUM_MAX - 1;
+    }
+#endif
     return world_occluded(w, &ray, dist, world_common(w, kind, index)->id);
 }
 

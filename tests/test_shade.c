@@ -379,5 +379,25 @@ int main(void)
     set3(x.light[0].pos, 0, 0, 1);
     set3(e3, c * 1.1, c * 1.1, c * 1.1);
     check_centre("inside a box, light inside", &x, e3);
+    /* A point light farther from the lit point than Q16.16 holds: the eye
+     * 8000 above a lambert floor looks at (26666.7, 0, 0) (t = 27,841),
+     * the light is at (-8000, 4000, 0), 34,897 away (n . l = 4000 /
+     * 34897). A wall behind the light (x = -8100) is not between them; a
+     * small sphere on the segment is. */
+    scene_t f = b;
+    set3(f.eye, 0, 8000, 0);
+    set3(f.gaze, 1, -0.3, 0);
+    f.obj[0] = (obj_t){GEOM_PLANE, {{0, 0, 0}, {0, 1, 0}}, 0, {0.5, 0.5, 0.5}, MATERIAL_LAMBERT, {0, 0, 0}, 0, {0, 0, 0}, 0};
+    f.obj[1] = (obj_t){GEOM_PLANE, {{-8100, 0, 0}, {1, 0, 0}}, 0, {1, 1, 1}, MATERIAL_FLAT, {0, 0, 0}, 0, {0, 0, 0}, 0};
+    f.n_obj = 2;
+    f.light[0] = (lgt_t){LIGHT_POINT, {-8000, 4000, 0}, {0, 0, 0}, 0, {1, 1, 1}, true};
+    double far_ndl = 4000 / sqrt(pow(8000 + 8000 / 0.3, 2) + 4000.0 * 4000.0);
+    set3(e3, c * (0.1 + far_ndl), c * (0.1 + far_ndl), c * (0.1 + far_ndl));
+    check_centre("point light 34,897 away, a wall behind it", &f, e3);
+    f.obj[2] = (obj_t){GEOM_SPHERE, {{8000, 4000 * (1 - 16000 / (8000 + 8000 / 0.3)), 0}}, 100, {1, 1, 1}, MATERIAL_FLAT,
+                       {0, 0, 0}, 0, {0, 0, 0}, 0};
+    f.n_obj = 3;
+    set3(e3, c * 0.1, c * 0.1, c * 0.1);
+    check_centre("point light 34,897 away, a sphere between", &f, e3);
     return check_report("test_shade_" NUM_NAME);
 }
