@@ -338,7 +338,12 @@ static void geom_box_slabs(const geom_box_t *b, const ray_t *ray, num_t *tnear_o
         num_t t1 = num_div(num_sub(lo, o), d);
         num_t t2 = num_div(num_sub(hi, o), d);
         uint8_t f1 = (uint8_t)(2 * i), f2 = (uint8_t)(2 * i + 1);
-        if (t1 > t2) {
+        /* Entering through the min face when d > 0 and the max face when
+         * d < 0 (then t1 >= t2: the rounding is monotone). By d's sign,
+         * not by t1 > t2: a flat box (lo == hi) has t1 == t2 and would
+         * otherwise always be entered through its min face, its normal
+         * facing away from a ray coming from above, as if from inside. */
+        if (d < NUM_ZERO) {
             num_t tmp = t1;
             t1 = t2;
             t2 = tmp;

@@ -109,7 +109,7 @@ static bool ref_hit(const obj_t *o, const double org[3], const double d[3], doub
             }
             double t1 = (o->p[0][i] - org[i]) / d[i], t2 = (o->p[1][i] - org[i]) / d[i];
             int f1 = 2 * i, f2 = 2 * i + 1;
-            if (t1 > t2) {
+            if (d[i] < 0) { /* by d's sign: a flat box has t1 == t2 */
                 double x = t1;
                 t1 = t2;
                 t2 = x;

@@ -379,6 +379,23 @@ int main(void)
     set3(x.light[0].pos, 0, 0, 1);
     set3(e3, c * 1.1, c * 1.1, c * 1.1);
     check_centre("inside a box, light inside", &x, e3);
+    /* A flat box (min y == max y) lit from above, shadows on: seen from
+     * above its top side is lit (n . l = 1), seen from below its underside
+     * is not. Both builds once entered a flat box through its min face
+     * whatever the ray's direction, so from above the hit looked like the
+     * inside of a solid and the box shadowed itself. */
+    scene_t fb = b;
+    set3(fb.eye, 0, 3, 0);
+    set3(fb.gaze, 0, -1, 0);
+    set3(fb.up, 0, 0, -1);
+    fb.obj[0] = (obj_t){GEOM_BOX, {{-1, 0, -1}, {1, 0, 1}}, 0, {0.5, 0.5, 0.5}, MATERIAL_LAMBERT, {0, 0, 0}, 0, {0, 0, 0}, 0};
+    fb.light[0] = (lgt_t){LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, 0, {1, 1, 1}, true};
+    set3(e3, c * 1.1, c * 1.1, c * 1.1);
+    check_centre("flat box lit from above, seen from above", &fb, e3);
+    set3(fb.eye, 0, -3, 0);
+    set3(fb.gaze, 0, 1, 0);
+    set3(e3, c * 0.1, c * 0.1, c * 0.1);
+    check_centre("flat box lit from above, seen from below", &fb, e3);
     /* A point light farther from the lit point than Q16.16 holds: the eye
      * 8000 above a lambert floor looks at (26666.7, 0, 0) (t = 27,841),
      * the light is at (-8000, 4000, 0), 34,897 away (n . l = 4000 /
