@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <png.h>
 #include <setjmp.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -510,15 +511,44 @@ static int image_write_ppm(FILE *fp, const image_t *img, char *msg, size_t msgle
     return 0;
 }
 
-int image_write(const char *path, const image_t *img, char *err, size_t errlen)
+/* Temporary files not yet renamed into place, for image_cleanup_signals:
+ * fixed buffers, so that the handler only reads memory and calls unlink
+ * (async-signal-safe). A slot is busy while its first byte is not 0. */
+#define IMAGE_PENDING_MAX 4
+#define IMAGE_TMP_MAX 4096
+static char image_pending[IMAGE_PENDING_MAX][IMAGE_TMP_MAX];
+
+static void image_pending_drop(const char *tmp)
+{
+    for (int i = 0; i < IMAGE_PENDING_MAX; i++)
+        if (image_pending[i][0] && !strcmp(image_pending[i], tmp))
+            image_pending[i][0] = '\0';
+}
+
+static void image_on_signal(int sig)
+{
+    for (int i = 0; i < IMAGE_PENDING_MAX; i++)
+        if (image_pending[i][0])
+            unlink(image_pending[i]);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+void image_cleanup_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++)
+        signal(sigs[i], image_on_signal);
+}
+
+int image_write_tmp(const char *path, const image_t *img, char *tmp, size_t tmplen, char *err, size_t errlen)
 {
     char msg[IMAGE_PNG_MSG_LEN + 32];
     image_format_t fmt = image_format_from_path(path);
-    size_t tmplen;
-    char *tmp;
     FILE *fp;
-    int rc, saved;
+    int rc, slot = -1;
 
+    tmp[0] = '\0';
     if (fmt == IMAGE_FMT_UNKNOWN) {
         image_path_err(err, errlen, path, "unknown image extension (use .png or .ppm)");
         return -1;
@@ -528,21 +558,30 @@ int image_write(const char *path, const image_t *img, char *err, size_t errlen)
         image_path_err(err, errlen, path, "refusing to write an empty or invalid image");
         return -1;
     }
-
     /* The PID keeps concurrent writers (parallel test runs) from sharing a
      * temporary file; the same directory keeps rename() atomic. */
-    tmplen = strlen(path) + 32;
-    tmp = malloc(tmplen);
-    if (tmp == NULL) {
-        image_path_err(err, errlen, path, "out of memory");
+    int n = snprintf(tmp, tmplen, "%s.tmp.%ld", path, (long)getpid());
+    if (n < 0 || (size_t)n >= tmplen || n >= IMAGE_TMP_MAX) {
+        tmp[0] = '\0';
+        image_path_err(err, errlen, path, "path too long");
         return -1;
     }
-    snprintf(tmp, tmplen, "%s.tmp.%ld", path, (long)getpid());
-
+    for (int i = 0; i < IMAGE_PENDING_MAX && slot < 0; i++)
+        if (!image_pending[i][0])
+            slot = i;
+    if (slot < 0) {
+        tmp[0] = '\0';
+        image_path_err(err, errlen, path, "too many images being written at once");
+        return -1;
+    }
+    /* Registered before the file exists: a signal in between unlinks
+     * nothing that matters. */
+    memcpy(image_pending[slot], tmp, strlen(tmp) + 1);
     fp = fopen(tmp, "wb");
     if (fp == NULL) {
         image_path_err(err, errlen, path, "cannot open for writing: %s", strerror(errno));
-        free(tmp);
+        image_pending[slot][0] = '\0';
+        tmp[0] = '\0';
         return -1;
     }
 
@@ -562,18 +601,54 @@ int image_write(const char *path, const image_t *img, char *err, size_t errlen)
         snprintf(msg, sizeof msg, "write error: %s", strerror(errno));
         rc = -1;
     }
-    if (rc == 0 && rename(tmp, path) != 0) {
-        saved = errno;
-        snprintf(msg, sizeof msg, "cannot rename temporary file into place: %s",
-                 strerror(saved));
-        rc = -1;
-    }
     if (rc != 0) {
-        remove(tmp);
+        image_write_abort(tmp);
         image_path_err(err, errlen, path, "%s", msg);
+        return rc;
     }
-    free(tmp);
-    return rc;
+    /* Test hook (tests/cli.sh): an interrupt while the file is pending. */
+    if (getenv("FXRT_TEST_SIGINT_PENDING"))
+        raise(SIGINT);
+    return 0;
+}
+
+int image_write_commit(char *tmp, const char *path, char *err, size_t errlen)
+{
+    if (rename(tmp, path) != 0) {
+        int saved = errno;
+        image_write_abort(tmp);
+        image_path_err(err, errlen, path, "cannot rename temporary file into place: %s", strerror(saved));
+        return -1;
+    }
+    image_pending_drop(tmp);
+    tmp[0] = '\0';
+    return 0;
+}
+
+void image_write_abort(char *tmp)
+{
+    if (!tmp[0])
+        return;
+    remove(tmp);
+    image_pending_drop(tmp);
+    tmp[0] = '\0';
+}
+
+int image_write(const char *path, const image_t *img, char *err, size_t errlen)
+{
+    char tmp[IMAGE_TMP_MAX];
+    if (image_write_tmp(path, img, tmp, sizeof tmp, err, errlen))
+        return -1;
+    return image_write_commit(tmp, path, err, errlen);
+}
+
+int image_check_path(const char *path, char *err, size_t errlen)
+{
+    if (image_format_from_path(path) == IMAGE_FMT_UNKNOWN) {
+        image_path_err(err, errlen, path, "unknown image extension (use .png or .ppm)");
+        return -1;
+    }
+    return 0;
 }
 
 /* ------------------------------------------------------------------ */

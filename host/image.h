@@ -29,6 +29,25 @@ int image_read(const char *path, image_t *img, char *err, size_t errlen);
  * file at PATH. Returns 0, or -1 with a message in err. */
 int image_write(const char *path, const image_t *img, char *err, size_t errlen);
 
+/* image_write in two steps, for a command that writes several files and
+ * must leave none when one fails: image_write_tmp writes PATH.tmp.PID
+ * (its name in tmp, tmplen >= 4096 is enough) with image_write's checks;
+ * image_write_commit renames it to PATH; image_write_abort removes it (a
+ * no-op for an empty tmp). Each returns 0, or -1 with a message in err
+ * and the temporary file removed. */
+int image_write_tmp(const char *path, const image_t *img, char *tmp, size_t tmplen, char *err, size_t errlen);
+int image_write_commit(char *tmp, const char *path, char *err, size_t errlen);
+void image_write_abort(char *tmp);
+
+/* 0 when PATH names a format image_write can write (.png, .ppm), else -1
+ * with image_write's message: for checking outputs before the work. */
+int image_check_path(const char *path, char *err, size_t errlen);
+
+/* SIGINT, SIGTERM and SIGHUP remove the temporary files being written,
+ * then end the process as the signal would: an interrupted command leaves
+ * no PATH.tmp.PID behind. */
+void image_cleanup_signals(void);
+
 void image_free(image_t *img);
 
 /* Text in a built-in 5x8 bitmap font (printable ASCII; any other byte is

@@ -287,6 +287,11 @@ static int cmd_render(int argc, char **argv)
         return usage_error(cmd, "--keys '%s' is the scene file itself", keys_path);
     if (keys_path && same_file(keys_path, out))
         return usage_error(cmd, "--keys '%s' is the output image too", keys_path);
+    /* Output names that cannot be written fail before the render. */
+    if (image_check_path(out, err, sizeof err) || (keys_path && image_check_path(keys_path, err, sizeof err))) {
+        fprintf(stderr, "fxrt: render: %s\n", err);
+        return 2;
+    }
     image_t img = {0}, kimg = {0};
     uint32_t *keys = NULL;
     if (image_alloc(&img, w, h, err, sizeof err)) {
@@ -298,12 +303,19 @@ static int cmd_render(int argc, char **argv)
         image_free(&img);
         return 2;
     }
-    /* The key picture is made before either file is written, so a failure
-     * leaves neither. */
+    /* The key picture is made before either file is written, and both
+     * are written to temporary files before either is renamed into place,
+     * so a failure leaves neither. */
     int rc = 0;
+    static char tmp_out[4096], tmp_keys[4096];
     if (engine_render(num, scene_path, &scene, w, h, renderer, img.rgb, keys, err, sizeof err) ||
         (keys && compare_keys_image(keys, w, h, ENGINE_KEY_MISS, &kimg, err, sizeof err)) ||
-        image_write(out, &img, err, sizeof err) || (keys && image_write(keys_path, &kimg, err, sizeof err))) {
+        image_write_tmp(out, &img, tmp_out, sizeof tmp_out, err, sizeof err) ||
+        (keys && image_write_tmp(keys_path, &kimg, tmp_keys, sizeof tmp_keys, err, sizeof err)) ||
+        image_write_commit(tmp_out, out, err, sizeof err) ||
+        (keys && image_write_commit(tmp_keys, keys_path, err, sizeof err))) {
+        image_write_abort(tmp_out);
+        image_write_abort(tmp_keys);
         fprintf(stderr, "%s\n", err);
         rc = 2;
     }
@@ -601,6 +613,7 @@ static int cmd_size(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    image_cleanup_signals();
     if (argc < 2)
         return usage_error(NULL, "missing command (render, compare, sheet or size)");
     const char *cmd = argv[1];

@@ -302,6 +302,22 @@ rm -f "$out/kbad.png" "$out/kbad-keys.png"
 "$FXRT" render $badsc -o "$out/kbad.png" --keys "$out/kbad-keys.png" 2>/dev/null
 check "render --keys of a bad scene: exit 2, neither file" \
     bash -c "test $? -eq 2 && test ! -e '$out/kbad.png' && test ! -e '$out/kbad-keys.png'"
+# A --keys file that cannot be written (bad extension, missing directory)
+# leaves no image either: both are written to temporary files first.
+for kb in "$out/kbad.jpg" "$out/no/such/dir/k.png"; do
+    rm -f "$out/kgood.png"
+    "$FXRT" render $sc --size 16x12 -o "$out/kgood.png" --keys "$kb" 2>"$out/stderr.txt"
+    check "render --keys $kb: exit 2, no image, no temporary file" \
+        bash -c "test $? -eq 2 && test ! -e '$out/kgood.png' && ! ls '$out' | grep -q 'kgood.*tmp'"
+done
+# An interrupted render leaves no temporary file: SIGINT removes the files
+# being written (FXRT_TEST_SIGINT_PENDING raises it once the image's
+# temporary file is written, before its rename).
+rm -f "$out/kint.png" "$out"/kint.png.tmp.*
+FXRT_TEST_SIGINT_PENDING=1 "$FXRT" render $sc --size 16x12 -o "$out/kint.png" 2>/dev/null
+rc=$?
+check "render interrupted by SIGINT: ends by it (exit $rc), no image, no temporary file" \
+    bash -c "test $rc -eq 130 && test ! -e '$out/kint.png' && ! ls '$out' | grep -q 'kint.*tmp'"
 usage_err "render --keys = -o" "fxrt: render: --keys '$out/kk.png' is the output image too" \
     "$FXRT" render $sc -o "$out/kk.png" --keys "$out/kk.png"
 check "compare --scene --diff writes the heat map" \
