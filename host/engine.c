@@ -262,6 +262,21 @@ static void engine_pass(render_t *state, const world_t *world, const cam_t *cam,
     state->keys = NULL; /* state outlives the caller's buffer */
 }
 
+/* render_setup refused the frame: say why, with the samples line when
+ * the scene's samples are what made it too wide (samples x width). */
+static int engine_setup_error(fxrt_err_t e, const render_t *state, const char *path, const scene_t *sc, int width,
+                              int32_t samples, char *err, size_t errlen)
+{
+    if (e == FXRT_ERR_RENDER && samples > 1 && sc->samples_line > 0)
+        snprintf(err, errlen, "%s:%d: samples %d at width %d: %s (%d)", path, sc->samples_line, (int)samples, width,
+                 state->error ? state->error : fxrt_strerror(e), FXRT_RENDER_MAX_WIDTH);
+    else if (e == FXRT_ERR_RENDER && state->error)
+        snprintf(err, errlen, "%s: %s", path, state->error);
+    else
+        snprintf(err, errlen, "%s: %s (%d)", path, fxrt_strerror(e), FXRT_RENDER_MAX_WIDTH);
+    return -1;
+}
+
 int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, int height,
                               engine_renderer_t renderer, uint8_t *rgb, uint32_t *keys, char *err,
                               size_t errlen)
@@ -280,11 +295,13 @@ int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, in
          * whatever the samples: a pass at one sample per pixel writes the
          * keys, its colours are thrown away, and the image is rendered
          * after it with the scene's samples and no keys. */
-        if (world_set_samples(&world, 1, false) != FXRT_OK ||
-            fxrt_render_setup(&state, &world, &cam) != FXRT_OK) {
-            snprintf(err, errlen, "%s: image wider than %d pixels", path, FXRT_RENDER_MAX_WIDTH);
+        if (world_set_samples(&world, 1, false) != FXRT_OK) {
+            snprintf(err, errlen, "%s:%d: samples 1 cannot be set in %s", path, sc->samples_line, NUM_NAME);
             return -1;
         }
+        fxrt_err_t e = fxrt_render_setup(&state, &world, &cam);
+        if (e != FXRT_OK)
+            return engine_setup_error(e, &state, path, sc, width, 1, err, errlen);
         engine_pass(&state, &world, &cam, width, height, renderer, NULL, keys);
         keys = NULL;
         if (world_set_samples(&world, samples, adaptive) != FXRT_OK) {
@@ -293,10 +310,9 @@ int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, in
             return -1;
         }
     }
-    if (fxrt_render_setup(&state, &world, &cam) != FXRT_OK) {
-        snprintf(err, errlen, "%s: image wider than %d pixels", path, FXRT_RENDER_MAX_WIDTH);
-        return -1;
-    }
+    fxrt_err_t e = fxrt_render_setup(&state, &world, &cam);
+    if (e != FXRT_OK)
+        return engine_setup_error(e, &state, path, sc, width, samples, err, errlen);
     engine_pass(&state, &world, &cam, width, height, renderer, rgb, keys);
     return 0;
 }

@@ -57,6 +57,15 @@ check "no file from failed renders" bash -c "! ls '$out' | grep -qE '^x\\.|tmp'"
 check "camera too narrow for the size" fails "$FXRT" render tests/scenes/narrow-fov.scene --size 64x4096 -o "$out/x.png"
 check "narrow camera message has FILE:LINE" grep -q "tests/scenes/narrow-fov.scene:3: " "$out/stderr.txt"
 
+# samples x width beyond the row buffer: refused at set-up, with the
+# samples line and the reason (not "image wider than", which it is not).
+{ grep -v '^samples' scenes/trace/glass.scene; echo "samples 7"; } >"$out/samples7.scene"
+s7line=$(grep -n '^samples' "$out/samples7.scene" | cut -d: -f1)
+check "samples 7 at 640 wide: refused" fails "$FXRT" render "$out/samples7.scene" -o "$out/s7.png"
+check "samples 7 at 640 wide: FILE:LINE: and the reason ($(head -c 200 "$out/stderr.txt"))" \
+    grep -q "^$out/samples7.scene:$s7line: samples 7 at width 640: samples x width wider than" "$out/stderr.txt"
+check "samples 7 at 640 wide: no image" test ! -e "$out/s7.png"
+check "samples 7 at 580 wide renders" "$FXRT" render "$out/samples7.scene" --size 580x20 -o "$out/s7.png"
 check "--help" bash -c "'$FXRT' --help | grep -q 'render SCENE'"
 check "render --help lists options" bash -c "'$FXRT' render --help | grep -q -- '--number'"
 check "compare --help lists options" bash -c "'$FXRT' compare --help | grep -q -- '--diff'"
