@@ -40,8 +40,13 @@ ifneq ($(words $(FB))$(filter $(FB),$(FB_MODES)),1$(strip $(FB)))
 $(error unknown FB '$(FB)' (one of: $(FB_MODES); default for $(BOARD): $(FB_$(BOARD))))
 endif
 ifneq ($(origin SIZE),undefined)
-ifneq ($(words $(SIZE)):$(findstring x,$(SIZE)),1:x)
-$(error bad SIZE '$(SIZE)' (want WxH, e.g. 160x120; without SIZE= the scene's own size is used))
+# W and H plain decimal integers in 1..4096 (FXRT_MAX_DIM), checked before
+# anything is built.
+SIZE_OK := $(shell awk -v s="$(subst ",,$(SIZE))" 'BEGIN { n = split(s, a, "x"); \
+    print (n == 2 && a[1] ~ /^[0-9]+$$/ && a[2] ~ /^[0-9]+$$/ && a[1] + 0 >= 1 && a[2] + 0 >= 1 && \
+           a[1] + 0 <= 4096 && a[2] + 0 <= 4096) ? "ok" : "bad" }')
+ifneq ($(words $(SIZE)):$(SIZE_OK),1:ok)
+$(error bad SIZE '$(SIZE)' (want WxH, each 1..4096, e.g. 160x120; without SIZE= the scene's own size is used))
 endif
 endif
 ifneq ($(findstring ',$(SCENE))$(findstring ",$(SCENE))$(findstring $$,$(SCENE)),)

@@ -389,6 +389,10 @@ $MK fw SIZE= >/dev/null 2>"$out/stderr.txt"
 check "make fw SIZE= (empty) fails clearly" grep -q "bad SIZE '' (want WxH" "$out/stderr.txt"
 $MK fw SIZE=160 >/dev/null 2>"$out/stderr.txt"
 check "make fw SIZE=160 fails clearly" grep -q "bad SIZE '160' (want WxH" "$out/stderr.txt"
+for sz in 0x5 4097x1 10x 12x12x3; do
+    $MK fw SIZE=$sz >/dev/null 2>"$out/stderr.txt"
+    check "make fw SIZE=$sz fails before building" grep -q "bad SIZE '$sz' (want WxH, each 1..4096" "$out/stderr.txt"
+done
 $MK fw BOARD=nrf99 >/dev/null 2>"$out/stderr.txt"
 check "make fw BOARD=nrf99 fails clearly" grep -q "unknown BOARD 'nrf99'" "$out/stderr.txt"
 $MK fw SCENE="it's.scene" >/dev/null 2>"$out/stderr.txt"
