@@ -191,7 +191,7 @@ fx_t fx_div(fx_t a, fx_t b)
     return q > (uint32_t)INT32_MAX ? FX_MAX : (fx_t)q;
 }
 
-/* round(n / d), ties up, for n < 2^63 and 0 < d < 2^63, when the floor
+/* round(n / d), ties up, for n < 2^63 and 0 < d <= 2^63, when the floor
  * of the quotient is below 2^31; 2^31 when it is not (the caller
  * saturates), for targets without a divide instruction (the M0: libgcc's
  * __udivmoddi4 costs about 300 instructions there). A divisor below 2^32 is
@@ -378,7 +378,7 @@ fx_t fxw_sqrt(fxw_t w)
     return q > (uint64_t)INT32_MAX ? FX_MAX : (fx_t)q;
 }
 
-/* Y ~ 2^46 / sqrt(m) for m in [2^30, 2^32), Y in (2^30, 2^31], within
+/* Y ~ 2^46 / sqrt(m) for m in [2^30, 2^32), Y in [2^30, 2^31], within
  * 2^-25 relative: fx_sqrt_est's 14-bit y1, then one Newton step for the
  * inverse square root, Y' = Y (3 - m Y^2 / 2^92) / 2, in 64-bit products. */
 static uint32_t fx_rsqrt_q46(uint32_t m)
@@ -420,7 +420,10 @@ fx_t fxw_div(fxw_t a, fxw_t b)
     if (k > FX_FRAC_BITS)
         k = FX_FRAC_BITS;
     int dshift = FX_FRAC_BITS - k;
-    n <<= k;
+    if (k < 0)
+        n >>= 1; /* n = 2^63 (a = INT64_MIN): exact, and d loses 17 bits */
+    else
+        n <<= k;
     if (dshift > 0) {
         uint64_t dr = (d + ((uint64_t)1 << (dshift - 1))) >> dshift;
         if (dr == 0)

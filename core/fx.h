@@ -210,7 +210,7 @@ fx_t fx_sqrt(fx_t a);
  * every input, make fx-exhaustive). Not always correctly rounded: the
  * result is the rounding (ties toward +infinity) of a value within 2^-25
  * relative, so a near-tie may round either way; exact ties cannot occur.
- * a <= 0 gives FX_MAX. Results lie in [363, 2^24]. The same table and
+ * a <= 0 gives FX_MAX. Results lie in [362, 2^24] (362 for FX_MAX). The same table and
  * Newton steps as fx_sqrt plus one Newton step in three 32x32->64-bit
  * products; no division. */
 fx_t fx_rsqrt(fx_t a);

@@ -385,6 +385,15 @@ int main(int argc, char **argv)
             check_norm(hard[i], hard[j], hard[(i + j) % N_HARD]);
         }
     }
+    /* fxw_div at the ends of the 64-bit range (INT64_MIN's magnitude is
+     * 2^63, one more than any positive value). */
+    {
+        static const fxw_t wide[] = {INT64_MIN, INT64_MIN + 1, INT64_MAX, -1, 1, (fxw_t)1 << 40, -((fxw_t)1 << 40),
+                                     (fxw_t)1 << 62, -((fxw_t)1 << 62), 3, -65536};
+        for (size_t i = 0; i < sizeof wide / sizeof wide[0]; i++)
+            for (size_t j = 0; j < sizeof wide / sizeof wide[0]; j++)
+                check_wdiv(wide[i], wide[j]);
+    }
     /* Every cot in steps of 1/16 degree, plus the smallest angles. */
     for (fx_t d = 1; d < F16(90); d += 4096)
         check_cot(d);
