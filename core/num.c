@@ -3,9 +3,13 @@
 
 #if FXRT_NUMBER != FXRT_Q16
 /* cot(deg degrees) from sine and cosine Taylor series in num_t, the same
- * method as the Q16.16 fx_cot_deg; for deg in (0, 90). */
+ * method as the Q16.16 fx_cot_deg; for deg in (0, 90]. At 90 the series
+ * leave a few ulp (float: -4e-8), which made a 90-degree camera one pixel
+ * high "too wide" in float alone; cot 90 = 0 exactly, as in Q16.16. */
 num_t num_cot_deg(num_t deg)
 {
+    if (deg == NUM(90))
+        return NUM_ZERO;
     num_t x = deg * NUM(3.14159265358979323846 / 180.0);
     num_t x2 = x * x;
     num_t s = NUM_ZERO, c = NUM_ZERO, ts = x, tc = NUM_ONE;

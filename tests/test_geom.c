@@ -429,6 +429,7 @@ static void test_cam_errors(void)
     /* H cot(fov/2) >= 1: at one pixel high fov <= 90 degrees, at 120
      * pixels fov <= 179.045 degrees. */
     CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(89.99), NUM_ZERO, 1, 1) == CAM_OK);
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(90), NUM_ZERO, 1, 1) == CAM_OK); /* the limit itself */
     CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(90.01), NUM_ZERO, 1, 1) == CAM_ERR_WIDE);
     CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(179.04), NUM_ZERO, 160, 120) == CAM_OK);
     CHECK(cam_setup(&c, CAM_PERSPECTIVE, o, g, up, NUM(179.05), NUM_ZERO, 160, 120) == CAM_ERR_WIDE);
