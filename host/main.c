@@ -178,6 +178,10 @@ static const char *opt_value(const char *cmd, int argc, char **argv, int *i, con
         usage_error(cmd, "%s needs a value", name);
         return NULL;
     }
+    if (!argv[*i + 1][0]) {
+        usage_error(cmd, "%s needs a non-empty value", name);
+        return NULL;
+    }
     *seen = name;
     return argv[++*i];
 }
@@ -412,8 +416,9 @@ static int cmd_compare(int argc, char **argv)
                     a.width, a.height, FXRT_MAX_DIM, FXRT_MAX_DIM);
             goto done;
         }
+        /* Scene errors as `render` prints them: FILE:LINE: first. */
         if (scene_load(scene_path, &scene, err, sizeof err)) {
-            fprintf(stderr, "fxrt: compare: %s\n", err);
+            fprintf(stderr, "%s\n", err);
             goto done;
         }
         keys = malloc(sizeof *keys * (size_t)a.width * (size_t)a.height);
@@ -423,7 +428,7 @@ static int cmd_compare(int argc, char **argv)
         }
         if (engine_render(ENGINE_DOUBLE, scene_path, &scene, a.width, a.height, ENGINE_FAST, ref.rgb, keys, err,
                           sizeof err)) {
-            fprintf(stderr, "fxrt: compare: %s\n", err);
+            fprintf(stderr, "%s\n", err);
             goto done;
         }
     }
@@ -622,6 +627,8 @@ int main(int argc, char **argv)
         return 0;
     }
     if (!strcmp(cmd, "--version")) {
+        if (argc > 2)
+            return usage_error(NULL, "unexpected argument '%s' after --version", argv[2]);
 #ifdef FXRT_GIT_DESCRIBE
         printf("fxrt %s (git %s)\n", FXRT_VERSION, FXRT_GIT_DESCRIBE);
 #else
