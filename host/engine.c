@@ -303,6 +303,8 @@ int ENGINE_SYM(engine_render)(const char *path, const scene_t *sc, int width, in
         if (e != FXRT_OK)
             return engine_setup_error(e, &state, path, sc, width, 1, err, errlen);
         engine_pass(&state, &world, &cam, width, height, renderer, NULL, keys);
+        if (rgb == NULL)
+            return 0; /* the keys were all the caller wanted */
         keys = NULL;
         if (world_set_samples(&world, samples, adaptive) != FXRT_OK) {
             snprintf(err, errlen, "%s:%d: samples %d cannot be set in %s", path, sc->samples_line, (int)samples,

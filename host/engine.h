@@ -34,7 +34,8 @@ const char *engine_number_name(engine_number_t n);
  * render.h render_key: object id << 8 | mask of the lights that reach the
  * hit point, ENGINE_KEY_MISS for the background). The ray
  * caster (ENGINE_RAYCAST) writes no keys: its pixels stay ENGINE_KEY_MISS.
- * Returns 0, or -1 with "PATH: ..." in err (for example a camera that the
+ * With rgb NULL (and keys not) only the keys are made, at one sample per
+ * pixel, so the scene's samples x width need not fit. Returns 0, or -1 with "PATH: ..." in err (for example a camera that the
  * number type cannot represent at this size). */
 int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height, engine_renderer_t renderer,
                   uint8_t *rgb, uint32_t *keys, char *err, size_t errlen);

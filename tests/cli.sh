@@ -66,6 +66,15 @@ check "samples 7 at 640 wide: FILE:LINE: and the reason ($(head -c 200 "$out/std
     grep -q "^$out/samples7.scene:$s7line: samples 7 at width 640: samples x width wider than" "$out/stderr.txt"
 check "samples 7 at 640 wide: no image" test ! -e "$out/s7.png"
 check "samples 7 at 580 wide renders" "$FXRT" render "$out/samples7.scene" --size 580x20 -o "$out/s7.png"
+# compare --scene needs only the keys (one sample per pixel): it works where
+# the scene's samples x width is too wide to render.
+"$FXRT" render "$out/samples7.scene" --size 640x8 --number q16 -o "$out/s7q.ppm" 2>/dev/null
+check "samples 7 at 640 wide: no render at that width" test ! -e "$out/s7q.ppm"
+{ grep -v '^samples' "$out/samples7.scene"; } >"$out/samples1.scene"
+"$FXRT" render "$out/samples1.scene" --size 640x8 --number q16 -o "$out/s1q.ppm"
+"$FXRT" render "$out/samples1.scene" --size 640x8 --number double -o "$out/s1d.ppm"
+check "compare --scene with samples 7 at 640 wide: the keys' split" \
+    bash -c "'$FXRT' compare '$out/s1d.ppm' '$out/s1q.ppm' --scene '$out/samples7.scene' | grep -q 'near_pixels=[1-9]'"
 check "--help" bash -c "'$FXRT' --help | grep -q 'render SCENE'"
 check "render --help lists options" bash -c "'$FXRT' render --help | grep -q -- '--number'"
 check "compare --help lists options" bash -c "'$FXRT' compare --help | grep -q -- '--diff'"
