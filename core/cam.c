@@ -111,6 +111,25 @@ static bool cam_in_domain(vec3_t a)
     return num_abs(a.x) <= lim && num_abs(a.y) <= lim && num_abs(a.z) <= lim;
 }
 
+/* cam_t.small for a perspective camera's fwd, u, v and size. */
+static bool cam_grid_small(const cam_t *cam)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    const fx_t *f = &cam->fwd.x, *u = &cam->u.x, *v = &cam->v.x;
+    for (int i = 0; i < 3; i++) {
+        int64_t af = f[i] < 0 ? -(int64_t)f[i] : f[i], au = u[i] < 0 ? -(int64_t)u[i] : u[i];
+        int64_t av = v[i] < 0 ? -(int64_t)v[i] : v[i];
+        int64_t reach = af + au * (cam->width - 1) + av * (cam->height - 1);
+        if (reach > INT32_MAX)
+            return false;
+    }
+    return true;
+#else
+    (void)cam;
+    return false;
+#endif
+}
+
 cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t up,
                     num_t fov_deg, num_t scale, int32_t width, int32_t height)
 {
@@ -132,6 +151,7 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     cam->w = w;
     cam->fwd = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     cam->focal = NUM_ONE;
+    cam->small = false;
     cam->step_u = numw_from(NUM_ZERO);
     cam->step_v = numw_from(NUM_ZERO);
 
@@ -159,6 +179,7 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
             return CAM_ERR_WIDE;
         cam->focal = focal;
         cam->fwd = vec3_scale(w, num_neg(cam->focal));
+        cam->small = cam_grid_small(cam);
     } else {
         if (!(scale > NUM_ZERO))
             return CAM_ERR_SCALE;
@@ -190,6 +211,13 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
     int32_t iy = 2 * y - cam->height + 1;
     if (cam->kind == CAM_PERSPECTIVE) {
 #if FXRT_NUMBER == FXRT_Q16
+        if (cam->small) { /* the same values in 32-bit arithmetic */
+            ray->o = cam->e;
+            ray->d = vec3_make(cam->fwd.x + cam->u.x * ix + cam->v.x * iy, cam->fwd.y + cam->u.y * ix + cam->v.y * iy,
+                               cam->fwd.z + cam->u.z * ix + cam->v.z * iy);
+            vec3_normalize(&ray->d);
+            return;
+        }
         /* |r| may exceed the Q16.16 range (up to sqrt(32767^2 + 2 * 4095^2)):
          * form it in 64 bits and halve it when needed (only the direction
          * matters). */
@@ -227,6 +255,7 @@ cam_err_t cam_fine(const cam_t *cam, int32_t n, cam_t *fine)
             return CAM_ERR_NARROW;
         fine->focal = num_mul_int(cam->focal, n);
         fine->fwd = vec3_scale_int(cam->fwd, n);
+        fine->small = cam_grid_small(fine);
     } else {
 #if FXRT_NUMBER == FXRT_Q16
         int64_t h = n / 2;

@@ -54,6 +54,10 @@ typedef struct {
      * integer multiples of u and v add no rounding). */
     vec3_t fwd;
     num_t focal; /* |fwd| = H cot(fov/2): the distance of the pixel grid in half pixels */
+    /* Q16.16: every r(x, y) of the grid, and every partial sum of it, fits
+     * int32 (per axis |fwd| + (W - 1) |u| + (H - 1) |v| < 2^31), so cam_ray
+     * forms it in 32-bit arithmetic; else in 64 bits, halved when needed. */
+    bool small;
     /* Orthographic: per-pixel offsets along u and v are (2x - W + 1) *
      * step_u and (2y - H + 1) * step_v, kept wide so that no rounding
      * builds up across the image. */

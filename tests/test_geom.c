@@ -304,6 +304,57 @@ static void test_cam_pixels(void)
         check_cam_case(&cases[i]);
 }
 
+/* Q16.16: cam_ray's 32-bit path (cam_t.small) gives the rays of its
+ * 64-bit one, pixel for pixel, on cameras at and near the bound; the
+ * bound is what cam_setup says it is. */
+static void test_cam_small(void)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    static const struct {
+        double fov;
+        int32_t w, h;
+        double gx, gy, gz;
+    } cases[] = {
+        {45, 160, 120, -1, -1, -1}, {90, 640, 480, 0, 0, -1}, {1, 4096, 64, 0.3, -0.2, -1},
+        {0.23, 4096, 64, 0, 0, -1}, {0.3, 2048, 64, 1, 2, 3}, {179, 4096, 4096, -0.5, 0.7, 0.1}, {60, 1, 1, 0, 1, 0.01},
+        {14.3, 4096, 4096, 0.125, 0.125, -1}, {14.3, 4096, 4096, 0.1, -0.15, -1},
+    };
+    int small = 0, big = 0;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        cam_t c;
+        cam_err_t err = cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(cases[i].gx, cases[i].gy, cases[i].gz),
+                                  V3(0, 1, 0), N(cases[i].fov), NUM_ZERO, cases[i].w, cases[i].h);
+        if (err != CAM_OK)
+            continue;
+        int64_t reach = 0;
+        const fx_t *f = &c.fwd.x, *u = &c.u.x, *v = &c.v.x;
+        for (int k = 0; k < 3; k++) {
+            int64_t r = llabs((int64_t)f[k]) + llabs((int64_t)u[k]) * (c.width - 1) + llabs((int64_t)v[k]) * (c.height - 1);
+            reach = r > reach ? r : reach;
+        }
+        CHECK_MSG(c.small == (reach <= INT32_MAX), "camera %zu: small %d, widest reach %lld", i, (int)c.small,
+                  (long long)reach);
+        if (!c.small) {
+            big++;
+            continue;
+        }
+        small++;
+        cam_t wide = c;
+        wide.small = false;
+        int bad = 0;
+        for (int32_t y = 0; y < c.height; y += (c.height > 64 ? 7 : 1))
+            for (int32_t x = 0; x < c.width; x += (c.width > 64 ? 5 : 1)) {
+                ray_t a, b;
+                cam_ray(&c, x, y, &a);
+                cam_ray(&wide, x, y, &b);
+                bad += memcmp(&a, &b, sizeof a) != 0;
+            }
+        CHECK_MSG(bad == 0, "camera %zu: %d rays differ between the 32- and 64-bit paths", i, bad);
+    }
+    CHECK_MSG(small >= 3 && big >= 1, "the cases reach both paths (%d small, %d not)", small, big);
+#endif
+}
+
 /* Angles of the perspective rays, row order, mirror symmetry. */
 static void test_cam_perspective_angles(void)
 {
@@ -1848,6 +1899,7 @@ int main(void)
     test_cam_basis_fig7();
     test_cam_pixels();
     test_cam_perspective_angles();
+    test_cam_small();
     test_cam_orthographic();
     test_cam_errors();
     test_cam_wide_fov();
