@@ -45,7 +45,7 @@ ifneq ($(origin SIZE),undefined)
 SIZE_OK := $(shell awk -v s="$(subst ",,$(SIZE))" 'BEGIN { n = split(s, a, "x"); \
     print (n == 2 && a[1] ~ /^[0-9]+$$/ && a[2] ~ /^[0-9]+$$/ && a[1] + 0 >= 1 && a[2] + 0 >= 1 && \
            a[1] + 0 <= 4096 && a[2] + 0 <= 4096) ? "ok" : "bad" }')
-ifneq ($(words $(SIZE)):$(SIZE_OK),1:ok)
+ifneq ($(words $(SIZE)):$(SIZE_OK):$(findstring ",$(SIZE))$(findstring ',$(SIZE)),1:ok:)
 $(error bad SIZE '$(SIZE)' (want WxH, each 1..4096, e.g. 160x120; without SIZE= the scene's own size is used))
 endif
 endif

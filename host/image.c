@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #if defined(__GNUC__)
@@ -513,22 +514,25 @@ static int image_write_ppm(FILE *fp, const image_t *img, char *msg, size_t msgle
 
 /* Temporary files not yet renamed into place, for image_cleanup_signals:
  * fixed buffers, so that the handler only reads memory and calls unlink
- * (async-signal-safe). A slot is busy while its first byte is not 0. */
+ * (async-signal-safe). A slot's name is complete before its busy flag is
+ * set and stays until the flag is cleared, so the handler never sees a
+ * half-copied name (which could be the output's own name). */
 #define IMAGE_PENDING_MAX 4
 #define IMAGE_TMP_MAX 4096
 static char image_pending[IMAGE_PENDING_MAX][IMAGE_TMP_MAX];
+static volatile sig_atomic_t image_pending_busy[IMAGE_PENDING_MAX];
 
 static void image_pending_drop(const char *tmp)
 {
     for (int i = 0; i < IMAGE_PENDING_MAX; i++)
-        if (image_pending[i][0] && !strcmp(image_pending[i], tmp))
-            image_pending[i][0] = '\0';
+        if (image_pending_busy[i] && !strcmp(image_pending[i], tmp))
+            image_pending_busy[i] = 0;
 }
 
 static void image_on_signal(int sig)
 {
     for (int i = 0; i < IMAGE_PENDING_MAX; i++)
-        if (image_pending[i][0])
+        if (image_pending_busy[i])
             unlink(image_pending[i]);
     signal(sig, SIG_DFL);
     raise(sig);
@@ -537,8 +541,18 @@ static void image_on_signal(int sig)
 void image_cleanup_signals(void)
 {
     static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
-    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++)
-        signal(sigs[i], image_on_signal);
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
+        /* A signal the parent ignores (nohup, a background job of a
+         * non-interactive shell) stays ignored. */
+        struct sigaction old;
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = image_on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[i], &sa, NULL);
+    }
 }
 
 int image_write_tmp(const char *path, const image_t *img, char *tmp, size_t tmplen, char *err, size_t errlen)
@@ -567,7 +581,7 @@ int image_write_tmp(const char *path, const image_t *img, char *tmp, size_t tmpl
         return -1;
     }
     for (int i = 0; i < IMAGE_PENDING_MAX && slot < 0; i++)
-        if (!image_pending[i][0])
+        if (!image_pending_busy[i])
             slot = i;
     if (slot < 0) {
         tmp[0] = '\0';
@@ -577,10 +591,11 @@ int image_write_tmp(const char *path, const image_t *img, char *tmp, size_t tmpl
     /* Registered before the file exists: a signal in between unlinks
      * nothing that matters. */
     memcpy(image_pending[slot], tmp, strlen(tmp) + 1);
+    image_pending_busy[slot] = 1;
     fp = fopen(tmp, "wb");
     if (fp == NULL) {
         image_path_err(err, errlen, path, "cannot open for writing: %s", strerror(errno));
-        image_pending[slot][0] = '\0';
+        image_pending_busy[slot] = 0;
         tmp[0] = '\0';
         return -1;
     }
@@ -644,8 +659,14 @@ int image_write(const char *path, const image_t *img, char *err, size_t errlen)
 
 int image_check_path(const char *path, char *err, size_t errlen)
 {
+    struct stat st;
     if (image_format_from_path(path) == IMAGE_FMT_UNKNOWN) {
         image_path_err(err, errlen, path, "unknown image extension (use .png or .ppm)");
+        return -1;
+    }
+    /* The one rename that would fail after the files are written. */
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        image_path_err(err, errlen, path, "is a directory");
         return -1;
     }
     return 0;

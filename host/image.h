@@ -39,13 +39,15 @@ int image_write_tmp(const char *path, const image_t *img, char *tmp, size_t tmpl
 int image_write_commit(char *tmp, const char *path, char *err, size_t errlen);
 void image_write_abort(char *tmp);
 
-/* 0 when PATH names a format image_write can write (.png, .ppm), else -1
- * with image_write's message: for checking outputs before the work. */
+/* 0 when PATH names a format image_write can write (.png, .ppm) and is
+ * not an existing directory, else -1 with a message: for checking outputs
+ * before the work. */
 int image_check_path(const char *path, char *err, size_t errlen);
 
 /* SIGINT, SIGTERM and SIGHUP remove the temporary files being written,
  * then end the process as the signal would: an interrupted command leaves
- * no PATH.tmp.PID behind. */
+ * no PATH.tmp.PID behind. A signal ignored when the process starts (nohup)
+ * stays ignored. */
 void image_cleanup_signals(void);
 
 void image_free(image_t *img);

@@ -66,6 +66,9 @@ check "samples 7 at 640 wide: FILE:LINE: and the reason ($(head -c 200 "$out/std
     grep -q "^$out/samples7.scene:$s7line: samples 7 at width 640: samples x width wider than" "$out/stderr.txt"
 check "samples 7 at 640 wide: no image" test ! -e "$out/s7.png"
 check "samples 7 at 580 wide renders" "$FXRT" render "$out/samples7.scene" --size 580x20 -o "$out/s7.png"
+check "samples 7 at 600 high: refused" fails "$FXRT" render "$out/samples7.scene" --size 100x600 -o "$out/s7h.png"
+check "samples 7 at 600 high: the samples line and the height reason ($(head -c 200 "$out/stderr.txt"))" \
+    grep -q "^$out/samples7.scene:$s7line: samples 7: samples x height beyond" "$out/stderr.txt"
 # compare --scene needs only the keys (one sample per pixel): it works where
 # the scene's samples x width is too wide to render.
 "$FXRT" render "$out/samples7.scene" --size 640x8 --number q16 -o "$out/s7q.ppm" 2>/dev/null
@@ -327,7 +330,8 @@ check "render --keys of a bad scene: exit 2, neither file" \
     bash -c "test $? -eq 2 && test ! -e '$out/kbad.png' && test ! -e '$out/kbad-keys.png'"
 # A --keys file that cannot be written (bad extension, missing directory)
 # leaves no image either: both are written to temporary files first.
-for kb in "$out/kbad.jpg" "$out/no/such/dir/k.png"; do
+mkdir -p "$out/kdir.png"
+for kb in "$out/kbad.jpg" "$out/no/such/dir/k.png" "$out/kdir.png"; do
     rm -f "$out/kgood.png"
     "$FXRT" render $sc --size 16x12 -o "$out/kgood.png" --keys "$kb" 2>"$out/stderr.txt"
     check "render --keys $kb: exit 2, no image, no temporary file" \
@@ -341,6 +345,11 @@ FXRT_TEST_SIGINT_PENDING=1 "$FXRT" render $sc --size 16x12 -o "$out/kint.png" 2>
 rc=$?
 check "render interrupted by SIGINT: ends by it (exit $rc), no image, no temporary file" \
     bash -c "test $rc -eq 130 && test ! -e '$out/kint.png' && ! ls '$out' | grep -q 'kint.*tmp'"
+# A signal ignored by the parent (nohup, trap '' INT) stays ignored.
+(trap '' INT; FXRT_TEST_SIGINT_PENDING=1 "$FXRT" render $sc --size 16x12 -o "$out/kign.png" 2>/dev/null)
+rc=$?
+check "render with SIGINT ignored by its parent: not ended by it (exit $rc), image written" \
+    bash -c "test $rc -eq 0 && test -s '$out/kign.png'"
 usage_err "render --keys = -o" "fxrt: render: --keys '$out/kk.png' is the output image too" \
     "$FXRT" render $sc -o "$out/kk.png" --keys "$out/kk.png"
 check "compare --scene --diff writes the heat map" \
@@ -403,7 +412,7 @@ $MK fw SIZE= >/dev/null 2>"$out/stderr.txt"
 check "make fw SIZE= (empty) fails clearly" grep -q "bad SIZE '' (want WxH" "$out/stderr.txt"
 $MK fw SIZE=160 >/dev/null 2>"$out/stderr.txt"
 check "make fw SIZE=160 fails clearly" grep -q "bad SIZE '160' (want WxH" "$out/stderr.txt"
-for sz in 0x5 4097x1 10x 12x12x3; do
+for sz in 0x5 4097x1 10x 12x12x3 '1x1"'; do
     $MK fw SIZE=$sz >/dev/null 2>"$out/stderr.txt"
     check "make fw SIZE=$sz fails before building" grep -q "bad SIZE '$sz' (want WxH, each 1..4096" "$out/stderr.txt"
 done

@@ -416,5 +416,22 @@ int main(void)
     f.n_obj = 3;
     set3(e3, c * 0.1, c * 0.1, c * 0.1);
     check_centre("point light 34,897 away, a sphere between", &f, e3);
+    /* The same far light as a spot (its cone test takes the far path's
+     * quarter vector): aimed at p with a 5-degree cone it lights p, aimed
+     * 5.1 degrees away it does not, 4.9 degrees away it does. */
+    f.n_obj = 2;
+    double lp[3] = {-8000, 4000, 0}, pp[3] = {8000 / 0.3, 0, 0}, ax[3];
+    for (int i = 0; i < 3; i++)
+        ax[i] = pp[i] - lp[i];
+    double axl = sqrt(ax[0] * ax[0] + ax[1] * ax[1]);
+    for (int k = 0; k < 3; k++) {
+        double off = (double[]){0, 5.1, 4.9}[k] * 3.14159265358979323846 / 180; /* turn the axis in the x-y plane */
+        double dx = (ax[0] * cos(off) - ax[1] * sin(off)) / axl, dy = (ax[0] * sin(off) + ax[1] * cos(off)) / axl;
+        f.light[0] = (lgt_t){LIGHT_SPOT, {-8000, 4000, 0}, {dx, dy, 0}, 5, {1, 1, 1}, true};
+        double lit = k == 1 ? 0 : far_ndl;
+        set3(e3, c * (0.1 + lit), c * (0.1 + lit), c * (0.1 + lit));
+        check_centre((const char *[]){"far spot aimed at p", "far spot 5.1 degrees off", "far spot 4.9 degrees off"}[k],
+                     &f, e3);
+    }
     return check_report("test_shade_" NUM_NAME);
 }
