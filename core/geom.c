@@ -116,8 +116,8 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
  * quotient is rounded once. Planes and triangles share it. */
 __attribute__((unused)) static bool geom_flat_t(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t *t)
 {
-    numw_t den = vec3_dotw(ray->d, *n);
-    numw_t num = vec3_dotw(vec3_sub(*a, ray->o), *n);
+    numw_t den = vec3_dotw_unit(ray->d, *n);
+    numw_t num = vec3_dotw_unit(vec3_sub(*a, ray->o), *n);
     if (den == 0 || num == 0 || (num < 0) != (den < 0))
         return false;
     num_t tt = numw_div(num, den);
@@ -132,8 +132,8 @@ __attribute__((unused)) static bool geom_flat_t(const vec3_t *a, const vec3_t *n
  * strict sign and |num| < tmax |den| (numw_lt_mul: exact in Q16.16). */
 __attribute__((unused)) static bool geom_flat_occludes(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t tmax)
 {
-    numw_t den = vec3_dotw(ray->d, *n);
-    numw_t num = vec3_dotw(vec3_sub(*a, ray->o), *n);
+    numw_t den = vec3_dotw_unit(ray->d, *n);
+    numw_t num = vec3_dotw_unit(vec3_sub(*a, ray->o), *n);
     if (den == 0 || num == 0 || (num < 0) != (den < 0))
         return false;
     if (tmax == NUM_MAX)
@@ -146,7 +146,7 @@ __attribute__((unused)) static bool geom_flat_occludes(const vec3_t *a, const ve
  * on a flat piece the renderer found the ray to cover. */
 __attribute__((unused)) static num_t geom_flat_surface_t(const vec3_t *a, const vec3_t *n, const ray_t *ray)
 {
-    return numw_div(vec3_dotw(vec3_sub(*a, ray->o), *n), vec3_dotw(ray->d, *n));
+    return numw_div(vec3_dotw_unit(vec3_sub(*a, ray->o), *n), vec3_dotw_unit(ray->d, *n));
 }
 
 #if FXRT_MAX_PLANES > 0
@@ -192,8 +192,8 @@ bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
      * centre, and the half chord is sqrt(r^2 - |q|^2). This avoids b^2 - ac,
      * whose two large terms cancel for distant spheres. */
     vec3_t oc = vec3_sub(s->center, ray->o);
-    num_t b = vec3_dot(oc, ray->d);
-    vec3_t q = vec3_sub(oc, vec3_scale(ray->d, b));
+    num_t b = numw_round(vec3_dotw_unit(oc, ray->d));
+    vec3_t q = vec3_sub(oc, vec3_scale_unit(ray->d, b));
     numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
     if (disc < 0)
         return false;
@@ -222,14 +222,14 @@ bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
 static void geom_sphere_at(const geom_sphere_t *s, const ray_t *ray, bool far, num_t *t, vec3_t *n)
 {
     vec3_t oc = vec3_sub(s->center, ray->o);
-    num_t b = vec3_dot(oc, ray->d);
-    vec3_t q = vec3_sub(oc, vec3_scale(ray->d, b));
+    num_t b = numw_round(vec3_dotw_unit(oc, ray->d));
+    vec3_t q = vec3_sub(oc, vec3_scale_unit(ray->d, b));
     numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
     num_t h = disc > 0 ? numw_sqrt(disc) : NUM_ZERO;
     num_t t0 = num_sub(b, h);
     bool near = !far && t0 > NUM_ZERO;
     *t = near ? t0 : num_add(b, h);
-    vec3_t hd = vec3_scale(ray->d, h);
+    vec3_t hd = vec3_scale_unit(ray->d, h);
     vec3_t v = near ? vec3_sub(vec3_neg(q), hd) : vec3_add(vec3_neg(q), hd);
     FXRT_COUNT(n_normalised);
     if (!vec3_normalize(&v))
@@ -269,7 +269,7 @@ static numw_t geom_edge(vec3_t p, vec3_t q, const ray_t *ray)
 {
     bool swap = geom_point_less(q, p);
     vec3_t first = swap ? q : p, second = swap ? p : q;
-    numw_t e = vec3_dotw(vec3_sub(first, ray->o), vec3_cross(vec3_sub(second, ray->o), ray->d));
+    numw_t e = vec3_dotw(vec3_sub(first, ray->o), vec3_cross_unit(vec3_sub(second, ray->o), ray->d));
     return swap ? numw_sub(numw_from(NUM_ZERO), e) : e;
 }
 
@@ -385,10 +385,11 @@ bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t)
     return geom_box_hit_face(b, ray, t, &face);
 }
 
-/* n1 / d1 < n2 / d2 for d1, d2 > 0: exact in Q16.16 (64-bit products). */
+/* n1 / d1 < n2 / d2 for d1, d2 > 0: exact in Q16.16 (64-bit products).
+ * The denominators are a ray direction's components (or 1). */
 static bool geom_frac_less(num_t n1, num_t d1, num_t n2, num_t d2)
 {
-    return numw_mul(n1, d2) < numw_mul(n2, d1);
+    return numw_mul_unit(n1, d2) < numw_mul_unit(n2, d1);
 }
 
 bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax)

@@ -54,6 +54,9 @@ static inline num_t num_cos_deg(num_t deg)
 }
 
 static inline numw_t numw_mul(num_t a, num_t b) { return fx_smul32(a, b); }
+/* numw_mul with u a unit vector's component (the same value; faster on
+ * the M0: fx_smul_unit). */
+static inline numw_t numw_mul_unit(num_t a, num_t u) { return fx_smul_unit(a, u); }
 static inline numw_t numw_add(numw_t a, numw_t b) { return fxw_add(a, b); }
 static inline numw_t numw_sub(numw_t a, numw_t b) { return fxw_add(a, b == INT64_MIN ? INT64_MAX : -b); }
 static inline numw_t numw_from(num_t a) { return fxw_from_fx(a); }
@@ -153,6 +156,7 @@ num_t num_cot_deg(num_t deg);
 num_t num_cos_deg(num_t deg); /* deg in [0, 90] */
 
 static inline numw_t numw_mul(num_t a, num_t b) { return a * b; }
+static inline numw_t numw_mul_unit(num_t a, num_t u) { return a * u; }
 static inline numw_t numw_add(numw_t a, numw_t b) { return a + b; }
 static inline numw_t numw_sub(numw_t a, numw_t b) { return a - b; }
 static inline numw_t numw_from(num_t a) { return a; }

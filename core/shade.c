@@ -181,7 +181,7 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
             l = vec3_scale(v, num_div(NUM_ONE, dist)); /* vec3_normalize's value, without its second root */
 #endif
         }
-        numw_t ndlw = vec3_dotw(n, l);
+        numw_t ndlw = vec3_dotw_unit(n, l);
         if (ndlw <= 0)
             continue; /* behind the surface: no shadow ray either */
 #if FXRT_SHADOWS

@@ -32,6 +32,13 @@ static inline vec3_t vec3_scale(vec3_t a, num_t s)
 {
     return vec3_make(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s));
 }
+/* u * s for u a unit vector: the value of vec3_scale (the same rounding
+ * and saturation), with numw_mul_unit's products. */
+static inline vec3_t vec3_scale_unit(vec3_t u, num_t s)
+{
+    return vec3_make(numw_round(numw_mul_unit(s, u.x)), numw_round(numw_mul_unit(s, u.y)),
+                     numw_round(numw_mul_unit(s, u.z)));
+}
 /* a * i for an integer i, exact in Q16.16. */
 static inline vec3_t vec3_scale_int(vec3_t a, int32_t i)
 {
@@ -41,6 +48,12 @@ static inline vec3_t vec3_scale_int(vec3_t a, int32_t i)
 static inline numw_t vec3_dotw(vec3_t a, vec3_t b)
 {
     return numw_add(numw_add(numw_mul(a.x, b.x), numw_mul(a.y, b.y)), numw_mul(a.z, b.z));
+}
+/* a . u for u a unit vector (|components| <= 1: normals, directions): the
+ * value of vec3_dotw, with numw_mul_unit's products. */
+static inline numw_t vec3_dotw_unit(vec3_t a, vec3_t u)
+{
+    return numw_add(numw_add(numw_mul_unit(a.x, u.x), numw_mul_unit(a.y, u.y)), numw_mul_unit(a.z, u.z));
 }
 /* a . b rounded once. */
 static inline num_t vec3_dot(vec3_t a, vec3_t b)
@@ -53,6 +66,13 @@ static inline vec3_t vec3_cross(vec3_t a, vec3_t b)
     return vec3_make(numw_round(numw_sub(numw_mul(a.y, b.z), numw_mul(a.z, b.y))),
                      numw_round(numw_sub(numw_mul(a.z, b.x), numw_mul(a.x, b.z))),
                      numw_round(numw_sub(numw_mul(a.x, b.y), numw_mul(a.y, b.x))));
+}
+/* a x u for u a unit vector: the value of vec3_cross, with numw_mul_unit. */
+static inline vec3_t vec3_cross_unit(vec3_t a, vec3_t u)
+{
+    return vec3_make(numw_round(numw_sub(numw_mul_unit(a.y, u.z), numw_mul_unit(a.z, u.y))),
+                     numw_round(numw_sub(numw_mul_unit(a.z, u.x), numw_mul_unit(a.x, u.z))),
+                     numw_round(numw_sub(numw_mul_unit(a.x, u.y), numw_mul_unit(a.y, u.x))));
 }
 /* |a|, within 0.5 LSB (the squared length is exact before the root). */
 static inline num_t vec3_len(vec3_t a)

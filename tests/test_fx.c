@@ -415,6 +415,26 @@ int main(int argc, char **argv)
         check_sincos(d);
 
     check_div_ties(n_random / 10 + 1000);
+    /* fx_smul_unit: the exact product for every a and a unit vector's
+     * component u (|u| <= 2^16: the two-product path and, at 2^16, the
+     * fallback), and for u outside that range (the fallback). */
+    {
+        static const int32_t ua[] = {INT32_MIN, INT32_MIN + 1, INT32_MAX, -1, 0, 1, 65535, 65536, -65536, -65537,
+                                     0x7fff0000, -0x7fff0000, 0x12345678};
+        static const int32_t uu[] = {-65536, -65535, -1, 0, 1, 32768, 65535, 65536, 65537, -65537, INT32_MIN, INT32_MAX};
+        long bad = 0;
+        for (size_t i = 0; i < sizeof ua / sizeof ua[0]; i++)
+            for (size_t j = 0; j < sizeof uu / sizeof uu[0]; j++)
+                bad += fx_smul_unit(ua[i], uu[j]) != (int64_t)ua[i] * uu[j];
+        for (long i = 0; i < n_random; i++) {
+            int32_t a = (int32_t)(uint32_t)rng();
+            int32_t u = (int32_t)(rng() % 131073) - 65536;
+            if (i & 1)
+                a >>= rng() % 31; /* every magnitude */
+            bad += fx_smul_unit(a, u) != (int64_t)a * u;
+        }
+        CHECK_MSG(bad == 0, "fx_smul_unit: %ld products differ from the exact one", bad);
+    }
     /* fxw_sqrt next to exact squares and rounding boundaries, all sizes. */
     for (long i = 0; i < n_random / 10 + 1000; i++) {
         uint64_t r = (rng() >> 32) >> (rng() % 32);
