@@ -12,7 +12,7 @@ typedef struct {
 /* The point o + t d. */
 static inline vec3_t ray_at(const ray_t *r, num_t t)
 {
-    return vec3_add(r->o, vec3_scale(r->d, t));
+    return vec3_add(r->o, vec3_scale_unit(r->d, t));
 }
 
 /* The t at which the ray is closest to p: (p - o) . d (d is unit length). */

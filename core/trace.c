@@ -164,11 +164,11 @@ typedef struct {
 __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trace_ray_t *out0, trace_ray_t *out1)
 {
     const material_t *m = &nd->obj->mat;
-    numw_t dnw = vec3_dotw(nd->d, nd->n_geo);
+    numw_t dnw = vec3_dotw_unit(nd->d, nd->n_geo);
     bool inside = dnw > 0;                 /* the ray comes from the solid's inside */
     vec3_t n = inside ? vec3_neg(nd->n_geo) : nd->n_geo; /* faces the incoming ray */
     num_t dn = numw_round(inside ? -dnw : dnw);          /* d . n <= 0 */
-    vec3_t r = vec3_sub(nd->d, vec3_scale(n, num_mul_int(dn, 2)));
+    vec3_t r = vec3_sub(nd->d, vec3_scale_unit(n, num_mul_int(dn, 2)));
     uint8_t b = (uint8_t)(nd->bounce + 1);
     int k = 0;
     if (m->kind == MATERIAL_REFLECTIVE) {
@@ -190,7 +190,7 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
         return k;
     }
     num_t cos_t = num_sqrt(cos2_t);
-    vec3_t td = vec3_add(vec3_scale(nd->d, q), vec3_scale(n, num_sub(num_mul(q, cos_i), cos_t)));
+    vec3_t td = vec3_add(vec3_scale_unit(nd->d, q), vec3_scale_unit(n, num_sub(num_mul(q, cos_i), cos_t)));
     num_t r0 = num_div(num_sub(NUM_ONE, eta), num_add(NUM_ONE, eta));
     r0 = num_mul(r0, r0);
     num_t x = num_sub(NUM_ONE, inside ? cos_t : cos_i);
