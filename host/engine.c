@@ -267,15 +267,18 @@ static void engine_pass(render_t *state, const world_t *world, const cam_t *cam,
 static int engine_setup_error(fxrt_err_t e, const render_t *state, const char *path, const scene_t *sc, int width,
                               int32_t samples, char *err, size_t errlen)
 {
-    if (e == FXRT_ERR_RENDER && samples > 1 && sc->samples_line > 0 && (int64_t)samples * width > FXRT_RENDER_MAX_WIDTH)
-        snprintf(err, errlen, "%s:%d: samples %d at width %d: %s (%d)", path, sc->samples_line, (int)samples, width,
-                 state->error ? state->error : fxrt_strerror(e), FXRT_RENDER_MAX_WIDTH);
-    else if (e == FXRT_ERR_RENDER && samples > 1 && sc->samples_line > 0 && state->error)
-        snprintf(err, errlen, "%s:%d: samples %d: %s", path, sc->samples_line, (int)samples, state->error);
-    else if (e == FXRT_ERR_RENDER && state->error)
-        snprintf(err, errlen, "%s: %s", path, state->error);
-    else
-        snprintf(err, errlen, "%s: %s (%d)", path, fxrt_strerror(e), FXRT_RENDER_MAX_WIDTH);
+    const char *why = e == FXRT_ERR_RENDER && state->error ? state->error : fxrt_strerror(e);
+    if (e == FXRT_ERR_RENDER && samples > 1 && sc->samples_line > 0) {
+        if ((int64_t)samples * width > FXRT_RENDER_MAX_WIDTH)
+            snprintf(err, errlen, "%s:%d: samples %d at width %d: %s (%d)", path, sc->samples_line, (int)samples,
+                     width, why, FXRT_RENDER_MAX_WIDTH);
+        else
+            snprintf(err, errlen, "%s:%d: samples %d: %s", path, sc->samples_line, (int)samples, why);
+    } else if (e == FXRT_ERR_RENDER) {
+        snprintf(err, errlen, "%s: %s", path, why);
+    } else {
+        snprintf(err, errlen, "%s: %s (%d)", path, why, FXRT_RENDER_MAX_WIDTH);
+    }
     return -1;
 }
 

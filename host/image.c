@@ -518,7 +518,6 @@ static int image_write_ppm(FILE *fp, const image_t *img, char *msg, size_t msgle
  * set and stays until the flag is cleared, so the handler never sees a
  * half-copied name (which could be the output's own name). */
 #define IMAGE_PENDING_MAX 4
-#define IMAGE_TMP_MAX 4096
 static char image_pending[IMAGE_PENDING_MAX][IMAGE_TMP_MAX];
 static volatile sig_atomic_t image_pending_busy[IMAGE_PENDING_MAX];
 

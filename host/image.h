@@ -31,10 +31,11 @@ int image_write(const char *path, const image_t *img, char *err, size_t errlen);
 
 /* image_write in two steps, for a command that writes several files and
  * must leave none when one fails: image_write_tmp writes PATH.tmp.PID
- * (its name in tmp, tmplen >= 4096 is enough) with image_write's checks;
+ * (its name in tmp, IMAGE_TMP_MAX bytes are enough) with image_write's checks;
  * image_write_commit renames it to PATH; image_write_abort removes it (a
  * no-op for an empty tmp). Each returns 0, or -1 with a message in err
  * and the temporary file removed. */
+#define IMAGE_TMP_MAX 4096
 int image_write_tmp(const char *path, const image_t *img, char *tmp, size_t tmplen, char *err, size_t errlen);
 int image_write_commit(char *tmp, const char *path, char *err, size_t errlen);
 void image_write_abort(char *tmp);

@@ -311,7 +311,7 @@ static int cmd_render(int argc, char **argv)
      * are written to temporary files before either is renamed into place,
      * so a failure leaves neither. */
     int rc = 0;
-    static char tmp_out[4096], tmp_keys[4096];
+    static char tmp_out[IMAGE_TMP_MAX], tmp_keys[IMAGE_TMP_MAX];
     if (engine_render(num, scene_path, &scene, w, h, renderer, img.rgb, keys, err, sizeof err) ||
         (keys && compare_keys_image(keys, w, h, ENGINE_KEY_MISS, &kimg, err, sizeof err)) ||
         image_write_tmp(out, &img, tmp_out, sizeof tmp_out, err, sizeof err) ||
