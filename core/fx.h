@@ -112,7 +112,11 @@ static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
  * b 2^32 when a < 0 and a 2^32 when b < 0 (modulo 2^64). */
 static inline int64_t fx_smul32(int32_t a, int32_t b)
 {
-#if FX_HAVE_UMULL
+#if FX_HAVE_UMULL && defined(__thumb2__) && defined(__GNUC__)
+    int32_t lo, hi;
+    __asm__("smull %0, %1, %2, %3" : "=&r"(lo), "=&r"(hi) : "r"(a), "r"(b));
+    return (int64_t)(((uint64_t)(uint32_t)hi << 32) | (uint32_t)lo);
+#elif FX_HAVE_UMULL
     return (int64_t)a * b;
 #else
     uint64_t p = fx_umul32((uint32_t)a, (uint32_t)b);
@@ -124,6 +128,18 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
     return (int64_t)(((uint64_t)hi << 32) | (uint32_t)p);
 #endif
 }
+/* acc + a b, where the caller has shown that the sum fits int64 (modulo
+ * 2^64 otherwise, never undefined): one SMLAL on Thumb-2. */
+static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)
+{
+#if FX_HAVE_UMULL && defined(__thumb2__) && defined(__GNUC__)
+    uint32_t lo = (uint32_t)acc, hi = (uint32_t)((uint64_t)acc >> 32);
+    __asm__("smlal %0, %1, %2, %3" : "+r"(lo), "+r"(hi) : "r"(a), "r"(b));
+    return (int64_t)(((uint64_t)hi << 32) | lo);
+#else
+    return (int64_t)((uint64_t)acc + (uint64_t)fx_smul32(a, b));
+#endif
+}
 /* a * u, exact, for any a and u; fastest when |u| <= 2^16 - 1, a
  * component of a unit vector (normals, ray and light directions): on the
  * M0 two 16 x 16 -> 32-bit products (a's halves times |u|) instead of
@@ -131,7 +147,7 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
 static inline int64_t fx_smul_unit(int32_t a, int32_t u)
 {
 #if FX_HAVE_UMULL
-    return (int64_t)a * u;
+    return fx_smul32(a, u);
 #else
     uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
     uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;

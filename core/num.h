@@ -59,8 +59,30 @@ static inline numw_t numw_mul(num_t a, num_t b) { return fx_smul32(a, b); }
 static inline numw_t numw_mul_unit(num_t a, num_t u) { return fx_smul_unit(a, u); }
 static inline numw_t numw_add(numw_t a, numw_t b) { return fxw_add(a, b); }
 static inline numw_t numw_sub(numw_t a, numw_t b) { return fxw_add(a, b == INT64_MIN ? INT64_MAX : -b); }
+/* a + b and a - b where the caller has shown that the exact result fits
+ * numw_t (the bound is stated at each call): numw_add's and numw_sub's
+ * value without their saturation tests. Modulo 2^64, never undefined. */
+static inline numw_t numw_add_exact(numw_t a, numw_t b) { return (numw_t)((uint64_t)a + (uint64_t)b); }
+static inline numw_t numw_sub_exact(numw_t a, numw_t b) { return (numw_t)((uint64_t)a - (uint64_t)b); }
+/* acc + a u (numw_mul_unit's product), where the caller has shown that the
+ * sum fits numw_t: no saturation test (numw_add_exact's rule). */
+static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u)
+{
+#if FX_HAVE_UMULL
+    return fx_smlal32(acc, a, u);
+#else
+    return numw_add_exact(acc, fx_smul_unit(a, u));
+#endif
+}
 static inline numw_t numw_from(num_t a) { return fxw_from_fx(a); }
 static inline num_t numw_round(numw_t w) { return fxw_round(w); }
+/* numw_round for a value whose rounding the caller has shown to fit
+ * num_t: the same value without the saturation tests. */
+static inline num_t numw_round_fits(numw_t w) { return (fx_t)((w + FX_HALF) >> FX_FRAC_BITS); }
+/* -a for a != the most negative num_t: num_neg's value, no test. */
+static inline num_t num_neg_fits(num_t a) { return (fx_t)(0u - (uint32_t)a); }
+/* -w for w > INT64_MIN: numw_sub(0, w) without its tests. */
+static inline numw_t numw_neg_fits(numw_t w) { return numw_sub_exact(0, w); }
 static inline num_t numw_sqrt(numw_t w) { return fxw_sqrt(w); }
 static inline num_t numw_div(numw_t a, numw_t b) { return fxw_div(a, b); }
 /* a * m / d kept wide (Q32.32, |error| <= 0.5 LSB of Q32.32), d > 0. Used
@@ -157,10 +179,16 @@ num_t num_cos_deg(num_t deg); /* deg in [0, 90] */
 
 static inline numw_t numw_mul(num_t a, num_t b) { return a * b; }
 static inline numw_t numw_mul_unit(num_t a, num_t u) { return a * u; }
+static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u) { return acc + a * u; }
 static inline numw_t numw_add(numw_t a, numw_t b) { return a + b; }
 static inline numw_t numw_sub(numw_t a, numw_t b) { return a - b; }
+static inline numw_t numw_add_exact(numw_t a, numw_t b) { return a + b; }
+static inline numw_t numw_sub_exact(numw_t a, numw_t b) { return a - b; }
 static inline numw_t numw_from(num_t a) { return a; }
 static inline num_t numw_round(numw_t w) { return w; }
+static inline num_t numw_round_fits(numw_t w) { return w; }
+static inline num_t num_neg_fits(num_t a) { return -a; }
+static inline numw_t numw_neg_fits(numw_t w) { return -w; }
 static inline num_t numw_sqrt(numw_t w) { return num_sqrt(w); }
 static inline num_t numw_div(numw_t a, numw_t b) { return num_div(a, b); }
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d) { return a * (num_t)m / (num_t)d; }

@@ -140,7 +140,7 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
     bool clear = m->kind == MATERIAL_TRANSPARENT;
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw_unit(d, n_geo) > 0;
-    vec3_t n = inside ? vec3_neg(n_geo) : n_geo;
+    vec3_t n = inside ? vec3_neg_unit(n_geo) : n_geo;
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
 #if !FXRT_SHADOWS
@@ -195,8 +195,9 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
         c = shade_madd(c, k->kd[i], ndl);
 #if FXRT_PHONG
         if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) {
-            vec3_t r = vec3_sub(vec3_scale_unit(n, num_mul_int(ndl, 2)), l);
-            numw_t rde = vec3_dotw_unit(r, vec3_neg(d)); /* r . e, e = -d */
+            /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
+            vec3_t r = vec3_sub(vec3_scale_unit_small(n, num_add(ndl, ndl)), l);
+            numw_t rde = numw_neg_fits(vec3_dotw_unit(r, d)); /* r . e = -(r . d), e = -d */
             if (rde > 0)
                 c = shade_madd(c, k->ks[i], numw_pow_int(rde, m->exponent));
         }

@@ -166,9 +166,10 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     const material_t *m = &nd->obj->mat;
     numw_t dnw = vec3_dotw_unit(nd->d, nd->n_geo);
     bool inside = dnw > 0;                 /* the ray comes from the solid's inside */
-    vec3_t n = inside ? vec3_neg(nd->n_geo) : nd->n_geo; /* faces the incoming ray */
-    num_t dn = numw_round(inside ? -dnw : dnw);          /* d . n <= 0 */
-    vec3_t r = vec3_sub(nd->d, vec3_scale_unit(n, num_mul_int(dn, 2)));
+    vec3_t n = inside ? vec3_neg_unit(nd->n_geo) : nd->n_geo; /* faces the incoming ray */
+    num_t dn = numw_round(inside ? -dnw : dnw);               /* d . n <= 0 */
+    /* |d . n| <= 1 (unit d and n): 2 (d . n) n fits without saturation. */
+    vec3_t r = vec3_sub(nd->d, vec3_scale_unit_small(n, num_add(dn, dn)));
     uint8_t b = (uint8_t)(nd->bounce + 1);
     int k = 0;
     if (m->kind == MATERIAL_REFLECTIVE) {
@@ -190,7 +191,9 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
         return k;
     }
     num_t cos_t = num_sqrt(cos2_t);
-    vec3_t td = vec3_add(vec3_scale_unit(nd->d, q), vec3_scale_unit(n, num_sub(num_mul(q, cos_i), cos_t)));
+    /* q <= 1 / FXRT_INDEX_MIN = 100 and |q cos_i - cos_t| <= q + 1: small
+     * factors, no saturation. */
+    vec3_t td = vec3_add(vec3_scale_unit_small(nd->d, q), vec3_scale_unit_small(n, num_sub(num_mul(q, cos_i), cos_t)));
     num_t r0 = num_div(num_sub(NUM_ONE, eta), num_add(NUM_ONE, eta));
     r0 = num_mul(r0, r0);
     num_t x = num_sub(NUM_ONE, inside ? cos_t : cos_i);

@@ -39,6 +39,20 @@ static inline vec3_t vec3_scale_unit(vec3_t u, num_t s)
     return vec3_make(numw_round(numw_mul_unit(s, u.x)), numw_round(numw_mul_unit(s, u.y)),
                      numw_round(numw_mul_unit(s, u.z)));
 }
+/* u * s for u a unit vector (|u_i| <= 1.25) and |s| < 16384 (2^30 LSB in
+ * Q16.16): vec3_scale_unit's value, which then always fits, without its
+ * saturation tests (reflected and refracted directions, Phong's r). */
+static inline vec3_t vec3_scale_unit_small(vec3_t u, num_t s)
+{
+    return vec3_make(numw_round_fits(numw_mul_unit(s, u.x)), numw_round_fits(numw_mul_unit(s, u.y)),
+                     numw_round_fits(numw_mul_unit(s, u.z)));
+}
+/* -u for u a unit vector (no component is the most negative num_t):
+ * vec3_neg's value without its saturation tests. */
+static inline vec3_t vec3_neg_unit(vec3_t u)
+{
+    return vec3_make(num_neg_fits(u.x), num_neg_fits(u.y), num_neg_fits(u.z));
+}
 /* a * i for an integer i, exact in Q16.16. */
 static inline vec3_t vec3_scale_int(vec3_t a, int32_t i)
 {
@@ -50,29 +64,38 @@ static inline numw_t vec3_dotw(vec3_t a, vec3_t b)
     return numw_add(numw_add(numw_mul(a.x, b.x), numw_mul(a.y, b.y)), numw_mul(a.z, b.z));
 }
 /* a . u for u a unit vector (|components| <= 1: normals, directions): the
- * value of vec3_dotw, with numw_mul_unit's products. */
+ * value of vec3_dotw, with numw_mul_unit's products. Any |u_i| < 2^30 LSB
+ * (16384.0) keeps each product below 2^61 and the sum below 2^63: the
+ * additions cannot overflow and need no saturation test. */
 static inline numw_t vec3_dotw_unit(vec3_t a, vec3_t u)
 {
-    return numw_add(numw_add(numw_mul_unit(a.x, u.x), numw_mul_unit(a.y, u.y)), numw_mul_unit(a.z, u.z));
+    return numw_mla_unit(numw_mla_unit(numw_mul_unit(a.x, u.x), a.y, u.y), a.z, u.z);
 }
 /* a . b rounded once. */
 static inline num_t vec3_dot(vec3_t a, vec3_t b)
 {
     return numw_round(vec3_dotw(a, b));
 }
+/* p q - r s for 32-bit factors, exact: each product lies in
+ * [-2^62 + 2^31, 2^62], so the difference is below 2^63 in magnitude and
+ * needs no saturation test. */
+static inline numw_t vec3_det2w(num_t p, num_t q, num_t r, num_t s)
+{
+    return numw_sub_exact(numw_mul(p, q), numw_mul(r, s));
+}
 /* a x b, each component rounded once. */
 static inline vec3_t vec3_cross(vec3_t a, vec3_t b)
 {
-    return vec3_make(numw_round(numw_sub(numw_mul(a.y, b.z), numw_mul(a.z, b.y))),
-                     numw_round(numw_sub(numw_mul(a.z, b.x), numw_mul(a.x, b.z))),
-                     numw_round(numw_sub(numw_mul(a.x, b.y), numw_mul(a.y, b.x))));
+    return vec3_make(numw_round(vec3_det2w(a.y, b.z, a.z, b.y)), numw_round(vec3_det2w(a.z, b.x, a.x, b.z)),
+                     numw_round(vec3_det2w(a.x, b.y, a.y, b.x)));
 }
-/* a x u for u a unit vector: the value of vec3_cross, with numw_mul_unit. */
+/* a x u for u a unit vector: the value of vec3_cross, with numw_mul_unit
+ * (its products are vec3_det2w's, so the same bound holds). */
 static inline vec3_t vec3_cross_unit(vec3_t a, vec3_t u)
 {
-    return vec3_make(numw_round(numw_sub(numw_mul_unit(a.y, u.z), numw_mul_unit(a.z, u.y))),
-                     numw_round(numw_sub(numw_mul_unit(a.z, u.x), numw_mul_unit(a.x, u.z))),
-                     numw_round(numw_sub(numw_mul_unit(a.x, u.y), numw_mul_unit(a.y, u.x))));
+    return vec3_make(numw_round(numw_sub_exact(numw_mul_unit(a.y, u.z), numw_mul_unit(a.z, u.y))),
+                     numw_round(numw_sub_exact(numw_mul_unit(a.z, u.x), numw_mul_unit(a.x, u.z))),
+                     numw_round(numw_sub_exact(numw_mul_unit(a.x, u.y), numw_mul_unit(a.y, u.x))));
 }
 /* |a|, within 0.5 LSB (the squared length is exact before the root). */
 static inline num_t vec3_len(vec3_t a)
@@ -132,9 +155,7 @@ static inline bool vec3_unit_len(vec3_t a, vec3_t *u, num_t *len)
 static inline bool vec3_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
 {
 #if FXRT_NUMBER == FXRT_Q16
-    numw_t c[3] = {numw_sub(numw_mul(a.y, b.z), numw_mul(a.z, b.y)),
-                   numw_sub(numw_mul(a.z, b.x), numw_mul(a.x, b.z)),
-                   numw_sub(numw_mul(a.x, b.y), numw_mul(a.y, b.x))};
+    numw_t c[3] = {vec3_det2w(a.y, b.z, a.z, b.y), vec3_det2w(a.z, b.x, a.x, b.z), vec3_det2w(a.x, b.y, a.y, b.x)};
     uint64_t m = 0;
     for (int i = 0; i < 3; i++)
         m |= c[i] < 0 ? (uint64_t)0 - (uint64_t)c[i] : (uint64_t)c[i];

@@ -435,6 +435,56 @@ int main(int argc, char **argv)
         }
         CHECK_MSG(bad == 0, "fx_smul_unit: %ld products differ from the exact one", bad);
     }
+    /* The unsaturated helpers: within their stated ranges each equals the
+     * saturating operation it replaces (and the exact value), at the range
+     * ends and for random operands of every magnitude. */
+    {
+        long bad = 0;
+        static const int32_t ea[] = {INT32_MIN, INT32_MIN + 1, INT32_MAX, -1, 0, 1, 65536, -65536, 0x12345678};
+        for (size_t i = 0; i < sizeof ea / sizeof ea[0]; i++)
+            for (size_t j = 0; j < sizeof ea / sizeof ea[0]; j++) {
+                int64_t p = (int64_t)ea[i] * ea[j];
+                bad += fx_smul32(ea[i], ea[j]) != p;
+                /* acc + a b for accumulators that keep the sum in range */
+                int64_t acc = p >= 0 ? -((int64_t)1 << 62) : ((int64_t)1 << 62) - 1;
+                bad += fx_smlal32(acc, ea[i], ea[j]) != acc + p;
+                /* p q - r s: every product pair, the extremes included */
+                for (size_t k = 0; k < sizeof ea / sizeof ea[0]; k++)
+                    bad += vec3_det2w(ea[i], ea[j], ea[k], ea[i]) != p - (int64_t)ea[k] * ea[i];
+            }
+        for (long i = 0; i < n_random; i++) {
+            int32_t a = (int32_t)(uint32_t)rng() >> (rng() % 31), b = (int32_t)(uint32_t)rng() >> (rng() % 31);
+            int32_t c = (int32_t)(uint32_t)rng() >> (rng() % 31);
+            int32_t u = (int32_t)(rng() % 131073) - 65536; /* a unit vector's component */
+            int64_t acc = (int64_t)(rng() >> 2) - ((int64_t)1 << 61);
+            bad += fx_smlal32(acc, a, b) != acc + (int64_t)a * b;
+            bad += numw_mla_unit(acc, a, u) != acc + (int64_t)a * u;
+            bad += numw_add_exact(acc, (int64_t)a * b) != numw_add(acc, (int64_t)a * b);
+            bad += numw_sub_exact(acc, (int64_t)a * b) != numw_sub(acc, (int64_t)a * b);
+            bad += vec3_det2w(a, b, c, u) != numw_sub(numw_mul(a, b), numw_mul(c, u));
+            /* a . u and the unsaturated negation against the saturating forms */
+            vec3_t va = vec3_make(a, b, c), vu = vec3_make(u, -u / 2, (u / 3) | 1);
+            numw_t dsat = numw_add(numw_add(numw_mul(a, vu.x), numw_mul(b, vu.y)), numw_mul(c, vu.z));
+            bad += vec3_dotw_unit(va, vu) != dsat;
+            bad += numw_neg_fits(dsat) != numw_sub(0, dsat);
+            vec3_t n1 = vec3_neg_unit(vu), n2 = vec3_neg(vu);
+            bad += n1.x != n2.x || n1.y != n2.y || n1.z != n2.z;
+            /* |s| < 2^30 LSB: the rounding fits, as vec3_scale_unit's */
+            fx_t s = (fx_t)((int32_t)(uint32_t)rng() >> (1 + rng() % 31));
+            vec3_t r1 = vec3_scale_unit_small(vu, s), r2 = vec3_scale_unit(vu, s);
+            bad += r1.x != r2.x || r1.y != r2.y || r1.z != r2.z;
+            bad += numw_round_fits((int64_t)s * u) != numw_round((int64_t)s * u);
+        }
+        /* the ends of vec3_scale_unit_small's range: |s| just below 2^30 LSB, |u| = 1.25 */
+        static const fx_t es[] = {(1 << 30) - 1, -(1 << 30) + 1, 1, -1, 0};
+        static const fx_t eu[] = {81920, -81920, 65536, -65536, 1, -1, 0};
+        for (size_t i = 0; i < sizeof es / sizeof es[0]; i++)
+            for (size_t j = 0; j < sizeof eu / sizeof eu[0]; j++) {
+                vec3_t u = vec3_make(eu[j], eu[j], eu[j]);
+                bad += vec3_scale_unit_small(u, es[i]).x != vec3_scale_unit(u, es[i]).x;
+            }
+        CHECK_MSG(bad == 0, "unsaturated helpers: %ld results differ from the saturating ones", bad);
+    }
     /* fxw_sqrt next to exact squares and rounding boundaries, all sizes. */
     for (long i = 0; i < n_random / 10 + 1000; i++) {
         uint64_t r = (rng() >> 32) >> (rng() % 32);
