@@ -58,11 +58,14 @@ static inline fx_t fx_from_int(int32_t i)
 /* Clamp a 64-bit intermediate to the fx_t range. */
 static inline fx_t fx_sat64(int64_t v)
 {
-    if (v > INT32_MAX)
-        return FX_MAX;
-    if (v < INT32_MIN)
-        return FX_MIN;
-    return (fx_t)v;
+    /* In range when the high word is the low word's sign extension (one
+     * compare on ARM, where two 64-bit range compares took six
+     * instructions). The narrowing keeps the low 32 bits, as gcc and
+     * clang define it. */
+    fx_t lo = (fx_t)(uint32_t)(uint64_t)v;
+    if ((int64_t)lo == v)
+        return lo;
+    return v < 0 ? FX_MIN : FX_MAX;
 }
 
 /* a + b, a - b, -a: exact, saturating. */
@@ -207,9 +210,9 @@ static inline fx_t fx_mul_int(fx_t a, int32_t i)
 /* Q32.32 -> Q16.16, |error| <= 0.5 LSB, ties toward +infinity, saturating. */
 static inline fx_t fxw_round(fxw_t w)
 {
-    if (w > INT64_MAX - FX_HALF)
-        return FX_MAX;
-    return fx_sat64((w + FX_HALF) >> FX_FRAC_BITS);
+    /* floor((w + 1/2 LSB) / 2^16) without the addition's overflow: the
+     * floor of w / 2^16 plus w's bit 15 (the fraction is >= 1/2). */
+    return fx_sat64((w >> FX_FRAC_BITS) + ((w >> (FX_FRAC_BITS - 1)) & 1));
 }
 
 /* Q16.16 -> Q32.32, exact. */
