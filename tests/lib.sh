@@ -33,3 +33,21 @@ report() {
 full() { [ "${FXRT_TEST_FULL:-0}" = 1 ]; }
 # scope FULL QUICK: prints FULL under make test-full, QUICK under make test.
 scope() { if full; then echo "$1"; else echo "$2"; fi; }
+# cfg_read FILE: each "#define NAME N" line of a generated header (N a
+# decimal integer) becomes the variable CFG_NAME; earlier CFG_ variables
+# are unset first. Bash builtins only: process start-up is the dearest
+# part of these scripts (a sed per value cost qemu.sh thousands of them).
+cfg_read() {
+    local def k v
+    unset "${!CFG_@}"
+    while read -r def k v; do
+        if [[ $def == "#define" && $v =~ ^[0-9]+$ ]]; then printf -v "CFG_$k" '%s' "$v"; fi
+    done <"$1"
+    return 0
+}
+# cfg_value FILE NAME: prints CFG_NAME of FILE (empty when not defined).
+cfg_value() {
+    cfg_read "$1"
+    local v=CFG_$2
+    echo "${!v:-}"
+}

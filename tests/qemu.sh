@@ -89,7 +89,9 @@ if ! full; then
         onb_prepare "$scene" "$name" $SIZE && seeds+=("$name")
     done
 fi
-cfgv() { sed -nE "s/^#define $2 ([0-9]+)$/\1/p" "$onb/scenes/$1/scene_config.h"; }
+# cfgv NAME MACRO: a value of the scene's compiled configuration (no
+# process: tests/lib.sh cfg_read).
+cfgv() { cfg_value "$onb/scenes/$1/scene_config.h" "$2"; }
 . "$(dirname "$0")/onboard_lib.sh"
 : >"$onb/verdicts.txt"
 # The two MPS2 batches build and run side by side (two cores). make test
@@ -134,8 +136,9 @@ flush_mb() {
     batch=() bp=0 bs=0 bt=0 bb=0 bw=0
 }
 for n in "${stress[@]}"; do
-    p=$(cfgv $n FXRT_MAX_PLANES) s=$(cfgv $n FXRT_MAX_SPHERES) t=$(cfgv $n FXRT_MAX_TRIANGLES)
-    bx=$(cfgv $n FXRT_MAX_BOXES) w=$(cfgv $n FXRT_RENDER_MAX_WIDTH)
+    cfg_read "$onb/scenes/$n/scene_config.h"
+    p=${CFG_FXRT_MAX_PLANES:-} s=${CFG_FXRT_MAX_SPHERES:-} t=${CFG_FXRT_MAX_TRIANGLES:-}
+    bx=${CFG_FXRT_MAX_BOXES:-} w=${CFG_FXRT_RENDER_MAX_WIDTH:-}
     np=$((p > bp ? p : bp)) ns=$((s > bs ? s : bs)) nt=$((t > bt ? t : bt)) nb=$((bx > bb ? bx : bb))
     nw=$((w > bw ? w : bw))
     if [ ${#batch[@]} -gt 0 ] && [ $(((np + ns + nt + nb) * 1100 + 7 * nw)) -gt $ONB_MB_BUDGET ]; then

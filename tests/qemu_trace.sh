@@ -74,7 +74,7 @@ for scene in "${scenes[@]}"; do
         bad "$scene: fxrt-scenec or host render failed: $(cat "$out/scenec.log")"
     fi
 done
-cfg() { sed -nE "s/^#define $2 ([0-9]+)$/\1/p" "$onb/scenes/$1/scene_config.h"; }
+cfg() { cfg_value "$onb/scenes/$1/scene_config.h" "$2"; }
 for n in reflection-s2 glass-s2a supersample; do
     check "$n: compiled with FXRT_MAX_SAMPLES > 1" test "$(cfg $n FXRT_MAX_SAMPLES)" -gt 1
 done
