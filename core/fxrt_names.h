@@ -56,6 +56,7 @@
 #define shade_point_k FXRT_SYM(shade_point_k)
 #define shade_object_k FXRT_SYM(shade_object_k)
 #define shade_consts FXRT_SYM(shade_consts)
+#define shade_spot_surely_out FXRT_SYM(shade_spot_surely_out)
 #define render_shade_setup FXRT_SYM(render_shade_setup)
 #define shadow_blocked FXRT_SYM(shadow_blocked)
 #define world_occluded FXRT_SYM(world_occluded)

@@ -80,6 +80,12 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool ins
  * in the domain, so no occluder between them is missed but a plane met
  * beyond 32767 from the light (a far hit, docs/ACCURACY.md). */
 #define SHADE_FAR_DIST (NUM_MAX - 256)
+/* Is the point p surely outside spot light L's cone (v = L's position -
+ * p)? A cheap exact test that the light loop makes before normalising v:
+ * true only where the cone test with v's normalised length would reject
+ * p too, so it changes no frame (tests/test_shade.c checks this near the
+ * cone's edge). False for |v_i| >= 16384 (the full test decides). */
+bool shade_spot_surely_out(const light_t *L, vec3_t v);
 #endif
 
 #endif

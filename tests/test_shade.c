@@ -31,8 +31,6 @@
 #define W 64
 #define H 48
 
-/* A run-time double as num_t (NUM() is for constants only). */
-
 /* ---- the scene, as data ---------------------------------------------------- */
 
 #include "ref_geom.h"
@@ -312,9 +310,110 @@ static scene_t course(int material)
     return s;
 }
 
+#if FXRT_NUMBER == FXRT_Q16
+#include "../core/shade.h"
+/* shade_spot_surely_out, the light loop's cheap early test for a spot's
+ * cone, against the cone test it stands in front of: (-v) . s >= cos |v|
+ * with |v| from fx_normalize3_len and s, cos in Q2.30, as shade_lights
+ * makes it. Random spots (every direction, half-angles from 0.05 to 90
+ * degrees) and points both anywhere and within 0.01 degree of the cone's
+ * edge at every distance; the early test must never say "out" where the
+ * full one says "in", and must catch the points well outside. */
+static uint64_t spot_rng_state = 0x9e3779b97f4a7c15u;
+static double spot_rand(void)
+{
+    spot_rng_state = spot_rng_state * 6364136223846793005u + 1442695040888963407u;
+    return (double)(spot_rng_state >> 11) / 9007199254740992.0; /* [0, 1) */
+}
+static void spot_unit(double u[3])
+{
+    double n;
+    do {
+        for (int i = 0; i < 3; i++)
+            u[i] = 2 * spot_rand() - 1;
+        n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    } while (n < 0.1 || n > 1);
+    for (int i = 0; i < 3; i++)
+        u[i] /= n;
+}
+static void test_spot_early_out(void)
+{
+    long wrong = 0, far_out = 0, far_caught = 0, edge = 0, edge_out = 0;
+    for (int k = 0; k < 200000; k++) {
+        double pos[3], s[3], q[3], pp[3];
+        double scale = k % 3 == 0 ? 8000 : k % 3 == 1 ? 100 : 2;
+        for (int i = 0; i < 3; i++)
+            pos[i] = (2 * spot_rand() - 1) * scale;
+        spot_unit(s);
+        double angle = k % 10 == 0 ? 90 : 0.05 + 89.95 * spot_rand();
+        static world_t w;
+        fxrt_world_init(&w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+        double dir[3] = {s[0] * 1000, s[1] * 1000, s[2] * 1000};
+        int32_t li = world_add_light(&w, LIGHT_SPOT, V(pos), V(dir), N(angle), color_make(NUM_ONE, NUM_ONE, NUM_ONE),
+                                     false);
+        if (li < 0) {
+            wrong++;
+            continue;
+        }
+        const light_t *L = &w.lights[li];
+        /* a point near the edge (theta = angle +- 0.01 degree) or anywhere */
+        bool near_edge = k % 2 == 0;
+        double dist = exp(log(1e-3) + spot_rand() * (log(20000.0) - log(1e-3)));
+        if (near_edge) {
+            spot_unit(q); /* q - (q . s) s: a direction across the axis */
+            double qs = q[0] * s[0] + q[1] * s[1] + q[2] * s[2], n = 0;
+            for (int i = 0; i < 3; i++)
+                q[i] -= qs * s[i], n += q[i] * q[i];
+            n = sqrt(n);
+            double th = (angle + (2 * spot_rand() - 1) * 0.01) * (3.14159265358979323846 / 180);
+            for (int i = 0; i < 3; i++)
+                pp[i] = pos[i] + dist * (cos(th) * s[i] + sin(th) * q[i] / n);
+        } else {
+            spot_unit(q);
+            for (int i = 0; i < 3; i++)
+                pp[i] = pos[i] + dist * q[i];
+        }
+        if (fabs(pp[0]) > 32000 || fabs(pp[1]) > 32000 || fabs(pp[2]) > 32000)
+            continue;
+        vec3_t p = V(pp);
+        vec3_t v = vec3_sub(L->position, p);
+        bool early = shade_spot_surely_out(L, v);
+        fx_t u[3] = {v.x, v.y, v.z}, len;
+        if (!fx_normalize3_len(u, &len))
+            continue;
+        int64_t lhs = -((int64_t)v.x * L->axis30[0] + (int64_t)v.y * L->axis30[1] + (int64_t)v.z * L->axis30[2]);
+        bool in = len < SHADE_FAR_DIST && lhs >= (int64_t)len * L->cos30;
+        wrong += early && in;
+        /* the exact angle of the point off the axis, in double */
+        double vv[3] = {pp[0] - pos[0], pp[1] - pos[1], pp[2] - pos[2]};
+        double vn = sqrt(vv[0] * vv[0] + vv[1] * vv[1] + vv[2] * vv[2]);
+        double cosang = (vv[0] * s[0] + vv[1] * s[1] + vv[2] * s[2]) / vn;
+        double off = acos(cosang > 1 ? 1 : cosang < -1 ? -1 : cosang) * (180 / 3.14159265358979323846);
+        if (!near_edge && off > angle + 1 && vn > 0.05 && vn < 16000) {
+            far_out++;
+            far_caught += early;
+        }
+        if (near_edge) {
+            edge++;
+            edge_out += early;
+        }
+    }
+    printf("spot early test: %ld of %ld points over 1 degree outside caught, %ld of %ld points within 0.01 degree "
+           "of the edge (the full test decides the rest), %ld wrong\n",
+           far_caught, far_out, edge_out, edge, wrong);
+    CHECK_MSG(wrong == 0, "spot early test: %ld points it puts outside are inside the cone", wrong);
+    CHECK_MSG(far_out > 10000 && far_caught == far_out, "spot early test caught %ld of %ld points over 1 degree outside",
+              far_caught, far_out);
+    CHECK_MSG(edge > 10000 && edge_out > 0 && edge_out < edge, "spot early test: %ld of %ld edge points out", edge_out, edge);
+}
+#endif
+
 int main(void)
 {
     probe_material_reset();
+#if FXRT_NUMBER == FXRT_Q16
+    test_spot_early_out();
+#endif
     scene_t s = course(MATERIAL_LAMBERT);
     check_frame("course, lambert", &s);
     s = course(MATERIAL_PHONG);

@@ -106,13 +106,16 @@ static void test_behind(void)
 }
 
 /* A scene of every kind: directional lights need no per-pixel
- * normalisation of l; point lights one per shaded pixel. Flat pieces
- * normalise no normal; spheres one per shaded pixel. */
+ * normalisation of l; point lights one per shaded pixel; a narrow spot
+ * light only near its cone (float and double test the cone on |v| before
+ * normalising; Q16.16 first rules out what is clearly outside with
+ * shade_spot_surely_out, on cores with UMULL). Flat pieces normalise no
+ * normal; spheres one per shaded pixel. */
 static void test_normalisations(void)
 {
     cam_t cam;
     camera(&cam);
-    for (int kind = 0; kind < 2; kind++) {
+    for (int kind = 0; kind < 3; kind++) {
         for (int with_sphere = 0; with_sphere < 2; with_sphere++) {
             fxrt_world_init(&world, COL(0.1, 0.2, 0.3));
             world_set_ambient(&world, FRAC(0.2, 0.1, 0.05));
@@ -127,8 +130,10 @@ static void test_normalisations(void)
             }
             if (kind == 0)
                 world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(-1, -2, -1.5), V(0), FRAC(1, 0.9, 0.8), true);
-            else
+            else if (kind == 1)
                 world_add_light(&world, LIGHT_POINT, P(2, 3, 2), P(0, 0, 0), V(0), FRAC(1, 0.9, 0.8), true);
+            else
+                world_add_light(&world, LIGHT_SPOT, P(0, 4, 0), P(0, -1, 0), V(10), FRAC(1, 0.9, 0.8), true);
             render(&cam, true);
             long covered = W * H - count_id(0xFFFF);
             CHECK_MSG(fxrt_stats.shaded == (uint32_t)covered, "shaded %u of %ld covered pixels",
@@ -136,9 +141,13 @@ static void test_normalisations(void)
             if (kind == 0)
                 CHECK_MSG(fxrt_stats.l_normalised == 0, "directional: %u normalisations of l",
                           (unsigned)fxrt_stats.l_normalised);
-            else
+            else if (kind == 1)
                 CHECK_MSG(fxrt_stats.l_normalised == (uint32_t)covered, "point: %u normalisations of l for %ld",
                           (unsigned)fxrt_stats.l_normalised, covered);
+            else
+                CHECK_MSG(fxrt_stats.l_normalised > 0 && fxrt_stats.l_normalised < (uint32_t)covered / 4,
+                          "spot, 10 degrees: %u normalisations of l for %ld pixels", (unsigned)fxrt_stats.l_normalised,
+                          covered);
             long spheres = sid >= 0 ? count_id((uint16_t)sid) : 0;
             CHECK_MSG(fxrt_stats.n_normalised == (uint32_t)spheres, "%u normal normalisations, %ld sphere pixels",
                       (unsigned)fxrt_stats.n_normalised, spheres);
