@@ -151,6 +151,24 @@ static bool trace_cut(color_t wt)
 #endif
 }
 
+/* Can a bounce ray with direction v be traced? Q16.16: the kernels'
+ * products with a ray's direction (vec3_dotw_unit, ray.h) need |v_i| <
+ * 2^30 LSB (16384.0). A refracted direction is not renormalised and its
+ * length error grows by about q^2 per refraction, so at extreme index
+ * contrasts it can reach that (a direction 16384 times too long: nothing
+ * left of the ray); such a ray is not traced. Float and double trace
+ * every ray, as the model says. */
+static bool trace_dir_ok(vec3_t v)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    const fx_t lim = (fx_t)1 << 30;
+    return v.x < lim && v.x > -lim && v.y < lim && v.y > -lim && v.z < lim && v.z > -lim;
+#else
+    (void)v;
+    return true;
+#endif
+}
+
 /* One node of the tree: a hit and the ray that reached it. */
 typedef struct {
     const geom_common_t *obj;
@@ -168,13 +186,15 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     bool inside = dnw > 0;                 /* the ray comes from the solid's inside */
     vec3_t n = inside ? vec3_neg_unit(nd->n_geo) : nd->n_geo; /* faces the incoming ray */
     num_t dn = numw_round(inside ? -dnw : dnw);               /* d . n <= 0 */
-    /* |d . n| <= 1 (unit d and n): 2 (d . n) n fits without saturation. */
-    vec3_t r = vec3_sub(nd->d, vec3_scale_unit_small(n, num_add(dn, dn)));
+    /* Saturating products: a refracted d is not renormalised, and in
+     * Q16.16 its length error grows by about q^2 at each refraction, so d
+     * . n and q d are not bounded here (trace_dir_ok cuts the worst). */
+    vec3_t r = vec3_sub(nd->d, vec3_scale_unit(n, num_mul_int(dn, 2)));
     uint8_t b = (uint8_t)(nd->bounce + 1);
     int k = 0;
     if (m->kind == MATERIAL_REFLECTIVE) {
         color_t wr = color_mul(nd->w, m->reflection);
-        if (!trace_cut(wr))
+        if (!trace_cut(wr) && trace_dir_ok(r))
             *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
         return k;
     }
@@ -186,14 +206,12 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     num_t cos2_t = num_sub(NUM_ONE, num_mul(num_mul(q, q), sin2_i));
     if (cos2_t < NUM_ZERO) {
         /* Total internal reflection: the reflected ray with the full weight. */
-        if (!trace_cut(nd->w))
+        if (!trace_cut(nd->w) && trace_dir_ok(r))
             *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, nd->w, nd->obj->id, b, inside};
         return k;
     }
     num_t cos_t = num_sqrt(cos2_t);
-    /* q <= 1 / FXRT_INDEX_MIN = 100 and |q cos_i - cos_t| <= q + 1: small
-     * factors, no saturation. */
-    vec3_t td = vec3_add(vec3_scale_unit_small(nd->d, q), vec3_scale_unit_small(n, num_sub(num_mul(q, cos_i), cos_t)));
+    vec3_t td = vec3_add(vec3_scale_unit(nd->d, q), vec3_scale_unit(n, num_sub(num_mul(q, cos_i), cos_t)));
     num_t r0 = num_div(num_sub(NUM_ONE, eta), num_add(NUM_ONE, eta));
     r0 = num_mul(r0, r0);
     num_t x = num_sub(NUM_ONE, inside ? cos_t : cos_i);
@@ -206,9 +224,9 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     color_t c = nd->obj->color;
     color_t tint = color_make(num_div(c.r, k255), num_div(c.g, k255), num_div(c.b, k255));
     color_t wt = color_scale(color_mul(nd->w, tint), num_sub(NUM_ONE, R));
-    if (!trace_cut(wr))
+    if (!trace_cut(wr) && trace_dir_ok(r))
         *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
-    if (!trace_cut(wt))
+    if (!trace_cut(wt) && trace_dir_ok(td))
         *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, td}, wt, nd->obj->id, b, !inside};
     return k;
 }
