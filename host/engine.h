@@ -35,8 +35,9 @@ const char *engine_number_name(engine_number_t n);
  * hit point, ENGINE_KEY_MISS for the background). The ray
  * caster (ENGINE_RAYCAST) writes no keys: its pixels stay ENGINE_KEY_MISS.
  * With rgb NULL (and keys not) only the keys are made, at one sample per
- * pixel, so the scene's samples x width need not fit. Returns 0, or -1 with "PATH: ..." in err (for example a camera that the
- * number type cannot represent at this size). */
+ * pixel, so the scene's samples x width need not fit. Returns 0, or -1
+ * with "PATH: ..." in err (for example a camera that the number type
+ * cannot represent at this size). */
 int engine_render(engine_number_t n, const char *path, const scene_t *sc, int width, int height, engine_renderer_t renderer,
                   uint8_t *rgb, uint32_t *keys, char *err, size_t errlen);
 
