@@ -285,6 +285,18 @@
 #if FXRT_PHONG != 0 && FXRT_PHONG != 1
 #error "FXRT_PHONG must be 0 or 1"
 #endif
+/* FXRT_SHADOW_CULL 1 (default) gives each point and spot light, once per
+ * frame, a cone around every bounded object (sphere, triangle, box) as
+ * seen from the light, with a margin for every rounding: a shadow ray
+ * outside the cone, or ending before the object, skips that object's
+ * exact test (core/shadow.c; docs/ACCURACY.md, "Shadow-ray culling"). It
+ * changes no frame; 0 compiles it out (tests and the ablation bench). */
+#ifndef FXRT_SHADOW_CULL
+#define FXRT_SHADOW_CULL 1
+#endif
+#if FXRT_SHADOW_CULL != 0 && FXRT_SHADOW_CULL != 1
+#error "FXRT_SHADOW_CULL must be 0 or 1"
+#endif
 #if FXRT_MAX_LIGHTS == 0 && (FXRT_SHADOWS || FXRT_PHONG)
 #error "FXRT_SHADOWS and FXRT_PHONG need FXRT_MAX_LIGHTS > 0"
 #endif

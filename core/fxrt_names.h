@@ -59,6 +59,7 @@
 #define shade_spot_surely_out FXRT_SYM(shade_spot_surely_out)
 #define render_shade_setup FXRT_SYM(render_shade_setup)
 #define shadow_blocked FXRT_SYM(shadow_blocked)
+#define shadow_cull_setup FXRT_SYM(shadow_cull_setup)
 #define world_occluded FXRT_SYM(world_occluded)
 #define world_find FXRT_SYM(world_find)
 #define world_common FXRT_SYM(world_common)

@@ -268,6 +268,10 @@ typedef struct {
     bool any_lit;
     /* Per object (index into obj): its shading constants, once per frame. */
     shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
+#if SHADOW_CULL
+    /* Shadow-ray culling, per light and bounded object (core/shadow.c). */
+    shadow_cull_t shadow_cull[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
+#endif
     uint16_t kind_base[4]; /* obj index of each kind's first object (obj = base + index) */
 #endif
 #if RENDER_SROWS

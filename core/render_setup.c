@@ -804,10 +804,18 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
         for (uint16_t i = 0; i < r->count; i++)
             base = (uint16_t)(base + (r->obj[i].geom == k));
     }
+#if SHADOW_CULL
+    if (r->any_lit)
+        shadow_cull_setup(w, r->shadow_cull);
+#endif
     for (uint16_t i = 0; r->any_lit && i < r->count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->obj[i].geom, r->obj[i].index);
-        if (c->mat.kind != MATERIAL_FLAT)
+        if (c->mat.kind != MATERIAL_FLAT) {
             shade_consts(w, c, &r->shade_k[i]);
+#if SHADOW_CULL
+            r->shade_k[i].cull = r->shadow_cull;
+#endif
+        }
     }
 #endif
     return r->error == NULL;

@@ -40,6 +40,9 @@ static inline color_t shade_madd(color_t c, color_t a, num_t s)
 void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k)
 {
     k->ambient = shade_filter(obj->color, w->ambient);
+#if SHADOW_CULL
+    k->cull = NULL;
+#endif
     for (uint8_t i = 0; i < w->n_lights; i++) {
         k->kd[i] = shade_filter(obj->color, w->lights[i].color);
 #if FXRT_PHONG
@@ -181,6 +184,28 @@ static SHADE_SUM_INLINE color_t shade_sum(const world_t *w, const geom_common_t 
     return shade_lights(w, obj, kind, index, p, n_geo, d, k, mask);
 }
 
+#if FXRT_PHONG
+/* c plus Phong's term c_s (.) c_l (ks) max(0, r . e)^k for the light at l.
+ * Out of line on the M0 only: there its temporaries, inlined, made
+ * shade_lights' frame (the deepest on the shading path) larger than the
+ * 16 KB boards' stack margin allows with shadow-ray culling. */
+#if FX_HAVE_UMULL
+#define SHADE_SPEC_INLINE inline __attribute__((always_inline))
+#else
+#define SHADE_SPEC_INLINE __attribute__((noinline))
+#endif
+static SHADE_SPEC_INLINE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
+                                                const color_t *ks, uint16_t exponent)
+{
+    /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
+    vec3_t r = vec3_sub(vec3_scale_unit_small(*n, num_add(ndl, ndl)), *l);
+    numw_t rde = numw_neg_fits(vec3_dotw_unit(r, *d)); /* r . e = -(r . d), e = -d */
+    if (rde > 0)
+        c = shade_madd(c, *ks, numw_pow_int(rde, exponent));
+    return c;
+}
+#endif
+
 /* The light loop of shade_sum (k not NULL when the material is lit and
  * not transparent). */
 static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
@@ -244,7 +269,12 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
         if (ndlw <= 0)
             continue; /* behind the surface: no shadow ray either */
 #if FXRT_SHADOWS
-        if (L->shadows && shadow_blocked(w, kind, index, inside, p, L, l, dist))
+#if SHADOW_CULL
+        const shadow_cull_t *cull = k && k->cull ? k->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
+#else
+        const shadow_cull_row_t *cull = NULL;
+#endif
+        if (L->shadows && shadow_blocked(w, kind, index, inside, &p, L, &l, dist, cull))
             continue;
 #endif
         bits = (uint8_t)(bits | (1u << i));
@@ -253,13 +283,8 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
         num_t ndl = numw_round(ndlw);
         c = shade_madd(c, k->kd[i], ndl);
 #if FXRT_PHONG
-        if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) {
-            /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
-            vec3_t r = vec3_sub(vec3_scale_unit_small(n, num_add(ndl, ndl)), l);
-            numw_t rde = numw_neg_fits(vec3_dotw_unit(r, d)); /* r . e = -(r . d), e = -d */
-            if (rde > 0)
-                c = shade_madd(c, k->ks[i], numw_pow_int(rde, m->exponent));
-        }
+        if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE)
+            c = shade_specular(c, &n, &l, &d, ndl, &k->ks[i], m->exponent);
 #endif
     }
     if (mask)

@@ -24,6 +24,36 @@
 
 #include "world.h"
 
+/* Shadow-ray culling (FXRT_SHADOW_CULL; core/shadow.c): for each point or
+ * spot light and each bounded object (slot: spheres, then triangles, then
+ * boxes, by index), the cone from the light that holds every shadow ray
+ * the object's exact test could find blocked. A ray towards the light
+ * along ldir (unit) from a point at distance dist skips the object when
+ * dist <= d_cap and either dist <= d_near (the object lies beyond the
+ * point, seen from the light) or ldir . u > lim (outside the cone). An
+ * entry with d_cap < 0 culls nothing. For a directional light the rays
+ * are parallel: an object is skipped when the point's projection along
+ * ldir falls outside the object's (two exact cross-product forms). */
+#define SHADOW_CULL_SLOTS (FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
+#define SHADOW_CULL (FXRT_SHADOWS && FXRT_SHADOW_CULL && SHADOW_CULL_SLOTS > 0)
+#if SHADOW_CULL
+typedef union {
+    struct {
+        vec3_t u;     /* unit vector from the light towards the bounding sphere's centre */
+        num_t lim;    /* -cos of the cone's half-angle, minus the margins */
+        num_t d_near; /* no blocking hit for dist <= d_near */
+        num_t d_cap;  /* the entry holds for dist <= d_cap (< 0: never) */
+    } pt;             /* point and spot lights */
+    struct {
+        numw_t c1, c2; /* the centre's projections (shadow.c, shadow_proj) */
+        num_t r;       /* bounding radius with margins */
+    } dir;             /* directional lights */
+} shadow_cull_t;
+/* Fill table[light * SHADOW_CULL_SLOTS + slot] for world w (every light;
+ * directional lights' rows cull nothing). Once per frame. */
+void shadow_cull_setup(const world_t *w, shadow_cull_t *table);
+#endif
+
 /* What the light sum needs of one object that does not change within a
  * frame, computed once per frame and object (render_setup) instead of at
  * every pixel: the ambient term c_d (.) c_a and, per light, the diffuse
@@ -34,9 +64,12 @@ typedef struct {
 #if FXRT_PHONG
     color_t ks[FXRT_MAX_LIGHTS];
 #endif
+#if SHADOW_CULL
+    const shadow_cull_t *cull; /* the frame's cull table (NULL: none) */
+#endif
 } shade_k_t;
 
-/* Fill k for object obj of world w. */
+/* Fill k for object obj of world w (k->cull: NULL). */
 void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k);
 
 /* The colour (1/255 units, unclamped) of object `index` of `kind` seen
@@ -68,8 +101,14 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
  * blocks the light exactly when the light is outside it (always for a
  * directional light). Every other object is tested with the world-space
  * kernels, t limited to (0, dist), stopping at the first hit. */
-bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, vec3_t p, const light_t *l,
-                    vec3_t ldir, num_t dist);
+#if SHADOW_CULL
+typedef shadow_cull_t shadow_cull_row_t;
+#else
+typedef void shadow_cull_row_t;
+#endif
+/* cull: the light's row of the cull table, or NULL (no culling). */
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, const vec3_t *p,
+                    const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
 
 #if FXRT_NUMBER == FXRT_Q16
 /* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST

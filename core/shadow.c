@@ -34,28 +34,192 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
     return false;
 }
 
-bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, vec3_t p, const light_t *l,
-                    vec3_t ldir, num_t dist)
-{
-    FXRT_COUNT(shadow_rays);
-    bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
-    if (inside && solid && SHADOW_CASTS(*world_common(w, kind, index)) && !shadow_light_inside(w, kind, index, l))
-        return true;
-    ray_t ray = {p, ldir};
+#if SHADOW_CULL
+/* Shadow-ray culling (shade.h; docs/ACCURACY.md, "Shadow-ray culling",
+ * derives the margins). The shadow ray from p along ldir (unit, rounded)
+ * with t in (0, dist) ends at L' = p + dist ldir, within eps(dist) of the
+ * light's position L: eps <= 2^-15 + dist 2^-13 in every build (Q16.16:
+ * |ldir - v/|v||_2 <= 0.9 LSB = 2^-16.2 and |dist - |v|| <= 0.5 LSB +
+ * 2^-24 |v|; float and double: a few ulp). A point x of the ray lies on
+ * L' + s (-ldir), 0 < s < dist, so the ray from L along -ldir passes
+ * within eps of x. If the exact test finds the object at x, x is within
+ * R' of the bounding sphere's centre c, and the ray from L passes within
+ * rho = R' + eps of c: the angle between -ldir and c - L is at most
+ * asin(rho / |c - L|), and s + eps >= |x - L| >= |c - L| - R'. R' is the
+ * bounding radius plus a margin for the kernels' own rounding (Q16.16: a
+ * few LSB; float and double: a few ulp of the coordinates, CULL_REL).
+ * Each entry holds for dist <= d_cap, where eps(dist) <= eps_cap. */
 #if FXRT_NUMBER == FXRT_Q16
-    if (dist >= SHADE_FAR_DIST && l->kind != LIGHT_DIRECTIONAL) {
-        /* The light may be beyond the range from p (shade.h): the same
-         * segment from the light's end. */
-        ray.o = l->position;
-        ray.d = vec3_neg(ldir);
-        dist = NUM_MAX - 1;
-    }
+#define CULL_REL NUM_ZERO
+#elif FXRT_NUMBER == FXRT_FLOAT
+#define CULL_REL NUM(1.0 / 262144) /* 2^-18: 64 ulp of float */
+#else
+#define CULL_REL NUM(1.0 / 1099511627776.0) /* 2^-40 */
 #endif
-    return world_occluded(w, &ray, dist, world_common(w, kind, index)->id);
+
+static num_t shadow_l1(vec3_t v)
+{
+    return num_add(num_add(num_abs(v.x), num_abs(v.y)), num_abs(v.z));
 }
 
-bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
+/* Directional lights: v . (ldir x e_k) for the axis e_k, k = 0..2,
+ * as one 2x2 determinant. ldir . (ldir x e_k) is exactly zero (the same
+ * two products), so every point p + t ldir of a shadow ray has p's value:
+ * an object whose bounding sphere (c, R') it meets has |value(p) -
+ * value(c)| <= R' |ldir x e_k| <= R'. In Q16.16 vec3_det2w is exact. */
+static numw_t shadow_proj(vec3_t v, vec3_t l, int k)
 {
+    return k == 0 ? vec3_det2w(v.y, l.z, v.z, l.y) : k == 1 ? vec3_det2w(v.z, l.x, v.x, l.z)
+                                                           : vec3_det2w(v.x, l.y, v.y, l.x);
+}
+
+/* The two axes whose forms above are largest (|ldir x e_k|^2 = 1 - l_k^2):
+ * all but the one along ldir's largest component. */
+static void shadow_axes(vec3_t l, int *k1, int *k2)
+{
+    num_t ax = num_abs(l.x), ay = num_abs(l.y), az = num_abs(l.z);
+    int big = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+    *k1 = big == 0 ? 1 : 0;
+    *k2 = big == 2 ? 1 : 2;
+}
+
+/* The entry for an object with bounding sphere (c, r) seen from L. */
+static void shadow_cull_entry(shadow_cull_t *e, const light_t *L, vec3_t c, num_t r)
+{
+    /* R' = r (1 + 2^-8) + 2^-10 + CULL_REL (|c|_1 + |L|_1). */
+    num_t rr = num_add(num_add(r, num_mul(r, NUM(1.0 / 256))), NUM(1.0 / 1024));
+    rr = num_add(rr, num_mul(CULL_REL, num_add(shadow_l1(c), shadow_l1(L->position))));
+    if (L->kind == LIGHT_DIRECTIONAL) {
+        int k1, k2;
+        shadow_axes(L->dir, &k1, &k2);
+        e->dir.c1 = shadow_proj(c, L->dir, k1);
+        e->dir.c2 = shadow_proj(c, L->dir, k2);
+        e->dir.r = rr;
+        return;
+    }
+    e->pt.u = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    e->pt.lim = NUM_ZERO;
+    e->pt.d_near = e->pt.d_cap = NUM(-1); /* culls nothing */
+    vec3_t u;
+    num_t len;
+    if (!vec3_unit_len(vec3_sub(c, L->position), &u, &len))
+        return; /* the light at the centre */
+    num_t eps_cap = num_add(num_mul(rr, NUM(0.25)), num_mul(len, NUM(1.0 / 1024)));
+    num_t rho = num_add(rr, eps_cap);
+    if (rho >= len)
+        return; /* the light is inside or near the bound */
+    num_t ratio = num_div(rho, len);
+    num_t s2 = num_mul(ratio, ratio);
+    if (s2 > NUM(1.0 - 1.0 / 128))
+        return; /* a cone of almost a half-space: no use */
+    /* cos(asin(rho / |c - L|)) within a few LSB (the root's slope is at
+     * most 8 here), less 2^-11 for that, u's and ldir's rounding and
+     * |ldir| != 1. */
+    num_t cosv = num_sub(num_sqrt(num_sub(NUM_ONE, s2)), NUM(1.0 / 2048));
+    /* eps(dist) <= eps_cap for dist <= (eps_cap - 2^-15) 2^13. */
+    num_t cap = num_mul_int(num_sub(eps_cap, NUM(1.0 / 32768)), 8192);
+#if FXRT_NUMBER == FXRT_Q16
+    if (cap >= SHADE_FAR_DIST)
+        cap = SHADE_FAR_DIST - 1; /* the far path (shade.h) is never culled */
+#endif
+    /* s + eps >= |c - L| - R' with s < dist |ldir| <= dist (1 + 2^-12). */
+    num_t near = num_sub(num_mul(num_sub(len, rho), NUM(1.0 - 1.0 / 4096)), NUM(1.0 / 32768));
+    e->pt.u = u;
+    e->pt.lim = num_neg(cosv);
+    e->pt.d_cap = cap;
+    e->pt.d_near = num_min(near, cap);
+}
+
+void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
+{
+    for (uint8_t li = 0; li < w->n_lights; li++) {
+        const light_t *L = &w->lights[li];
+        shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
+#if FXRT_MAX_SPHERES > 0
+        for (uint16_t i = 0; i < w->n_spheres; i++)
+            shadow_cull_entry(&row[i], L, w->spheres[i].center, w->spheres[i].radius);
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+        for (uint16_t i = 0; i < w->n_triangles; i++) {
+            const geom_triangle_t *t = &w->triangles[i];
+            vec3_t lo = vec3_make(num_min(num_min(t->a.x, t->b.x), t->c.x), num_min(num_min(t->a.y, t->b.y), t->c.y),
+                                  num_min(num_min(t->a.z, t->b.z), t->c.z));
+            vec3_t hi = vec3_make(num_max(num_max(t->a.x, t->b.x), t->c.x), num_max(num_max(t->a.y, t->b.y), t->c.y),
+                                  num_max(num_max(t->a.z, t->b.z), t->c.z));
+            vec3_t c = vec3_make(num_half(num_add(lo.x, hi.x)), num_half(num_add(lo.y, hi.y)), num_half(num_add(lo.z, hi.z)));
+            num_t r = num_max(num_max(vec3_len(vec3_sub(t->a, c)), vec3_len(vec3_sub(t->b, c))), vec3_len(vec3_sub(t->c, c)));
+            shadow_cull_entry(&row[FXRT_MAX_SPHERES + i], L, c, r);
+        }
+#endif
+#if FXRT_MAX_BOXES > 0
+        for (uint16_t i = 0; i < w->n_boxes; i++) {
+            const geom_box_t *b = &w->boxes[i];
+            vec3_t c = vec3_make(num_half(num_add(b->min.x, b->max.x)), num_half(num_add(b->min.y, b->max.y)),
+                                 num_half(num_add(b->min.z, b->max.z)));
+            num_t r = num_max(vec3_len(vec3_sub(b->max, c)), vec3_len(vec3_sub(c, b->min)));
+            shadow_cull_entry(&row[FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + i], L, c, r);
+        }
+#endif
+    }
+}
+
+/* One shadow ray's view of the cull row: the light's row, the ray's ldir
+ * and dist, and for a directional light the point's projections (with,
+ * in float and double, a margin for their rounding: CULL_REL |p|_1). */
+typedef struct {
+    const shadow_cull_t *row;
+    const vec3_t *ldir;
+    num_t dist;
+    bool directional;
+    numw_t p1, p2;
+#if FXRT_NUMBER != FXRT_Q16
+    numw_t slack;
+#endif
+} shadow_ray_cull_t;
+
+/* A directional light's part of rc (out of line: shadow_blocked's frame
+ * stays small on the M0). */
+static __attribute__((noinline)) void shadow_ray_dir(shadow_ray_cull_t *rc, const vec3_t *p)
+{
+    int k1, k2;
+    shadow_axes(*rc->ldir, &k1, &k2);
+    rc->p1 = shadow_proj(*p, *rc->ldir, k1);
+    rc->p2 = shadow_proj(*p, *rc->ldir, k2);
+#if FXRT_NUMBER != FXRT_Q16
+    rc->slack = num_mul(CULL_REL, shadow_l1(*p));
+#endif
+}
+
+/* Can the object in slot `slot` not block the ray? Out of line: inlined
+ * three times into shadow_occluded, its products took that frame from 40
+ * to 312 bytes on the M0 (16 KB boards). */
+static __attribute__((noinline)) bool shadow_culled(const shadow_ray_cull_t *rc, uint16_t slot)
+{
+    const shadow_cull_t *e = &rc->row[slot];
+    if (rc->directional) {
+#if FXRT_NUMBER != FXRT_Q16
+        numw_t lim = numw_add(numw_from(e->dir.r), rc->slack);
+#else
+        numw_t lim = numw_from(e->dir.r);
+#endif
+        numw_t d1 = numw_sub_exact(rc->p1, e->dir.c1), d2 = numw_sub_exact(rc->p2, e->dir.c2);
+        return d1 > lim || d1 < numw_neg_fits(lim) || d2 > lim || d2 < numw_neg_fits(lim);
+    }
+    if (rc->dist > e->pt.d_cap)
+        return false;
+    return rc->dist <= e->pt.d_near || vec3_dotw_unit(*rc->ldir, e->pt.u) > numw_from(e->pt.lim);
+}
+#define SHADOW_SKIP(slot) (cull && shadow_culled(cull, (uint16_t)(slot)))
+#else
+typedef void shadow_ray_cull_t;
+#define SHADOW_SKIP(slot) false
+#endif
+
+/* world_occluded, skipping what cull (or NULL) rules out. */
+static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
+                            const shadow_ray_cull_t *cull)
+{
+    (void)cull;
 #if FXRT_MAX_PLANES > 0
     for (uint16_t i = 0; i < w->n_planes; i++)
         if (w->planes[i].obj.id != skip_id && SHADOW_CASTS(w->planes[i].obj) && geom_plane_occludes(&w->planes[i], ray, tmax))
@@ -64,23 +228,65 @@ bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t ski
 #if FXRT_MAX_SPHERES > 0
     for (uint16_t i = 0; i < w->n_spheres; i++) {
         num_t t;
-        if (w->spheres[i].obj.id != skip_id && SHADOW_CASTS(w->spheres[i].obj) && geom_sphere_hit(&w->spheres[i], ray, &t) &&
-            (t < tmax || tmax == NUM_MAX))
+        if (w->spheres[i].obj.id != skip_id && SHADOW_CASTS(w->spheres[i].obj) && !SHADOW_SKIP(i) &&
+            geom_sphere_hit(&w->spheres[i], ray, &t) && (t < tmax || tmax == NUM_MAX))
             return true;
     }
 #endif
 #if FXRT_MAX_TRIANGLES > 0
     for (uint16_t i = 0; i < w->n_triangles; i++)
         if (w->triangles[i].obj.id != skip_id && SHADOW_CASTS(w->triangles[i].obj) &&
-            geom_triangle_occludes(&w->triangles[i], ray, tmax))
+            !SHADOW_SKIP(FXRT_MAX_SPHERES + i) && geom_triangle_occludes(&w->triangles[i], ray, tmax))
             return true;
 #endif
 #if FXRT_MAX_BOXES > 0
     for (uint16_t i = 0; i < w->n_boxes; i++)
-        if (w->boxes[i].obj.id != skip_id && SHADOW_CASTS(w->boxes[i].obj) && geom_box_occludes(&w->boxes[i], ray, tmax))
+        if (w->boxes[i].obj.id != skip_id && SHADOW_CASTS(w->boxes[i].obj) &&
+            !SHADOW_SKIP(FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + i) && geom_box_occludes(&w->boxes[i], ray, tmax))
             return true;
 #endif
     return false;
+}
+
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, const vec3_t *p,
+                    const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
+{
+    FXRT_COUNT(shadow_rays);
+    bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
+    if (inside && solid && SHADOW_CASTS(*world_common(w, kind, index)) && !shadow_light_inside(w, kind, index, l))
+        return true;
+    ray_t ray = {*p, *ldir};
+    num_t tmax = dist;
+#if FXRT_NUMBER == FXRT_Q16
+    if (dist >= SHADE_FAR_DIST && l->kind != LIGHT_DIRECTIONAL) {
+        /* The light may be beyond the range from p (shade.h): the same
+         * segment from the light's end (never culled: d_cap is below). */
+        ray.o = l->position;
+        ray.d = vec3_neg(*ldir);
+        tmax = NUM_MAX - 1;
+    }
+#endif
+    uint16_t id = world_common(w, kind, index)->id;
+#if SHADOW_CULL
+    if (cull) {
+        shadow_ray_cull_t rc;
+        rc.row = cull;
+        rc.ldir = ldir;
+        rc.dist = dist;
+        rc.directional = l->kind == LIGHT_DIRECTIONAL;
+        if (rc.directional)
+            shadow_ray_dir(&rc, p);
+        return shadow_occluded(w, &ray, tmax, id, &rc);
+    }
+#else
+    (void)cull;
+#endif
+    return shadow_occluded(w, &ray, tmax, id, NULL);
+}
+
+bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
+{
+    return shadow_occluded(w, ray, tmax, skip_id, NULL);
 }
 
 #endif

@@ -310,15 +310,9 @@ static scene_t course(int material)
     return s;
 }
 
-#if FXRT_NUMBER == FXRT_Q16
 #include "../core/shade.h"
-/* shade_spot_surely_out, the light loop's cheap early test for a spot's
- * cone, against the cone test it stands in front of: (-v) . s >= cos |v|
- * with |v| from fx_normalize3_len and s, cos in Q2.30, as shade_lights
- * makes it. Random spots (every direction, half-angles from 0.05 to 90
- * degrees) and points both anywhere and within 0.01 degree of the cone's
- * edge at every distance; the early test must never say "out" where the
- * full one says "in", and must catch the points well outside. */
+
+/* Random numbers for the sweeps below (deterministic). */
 static uint64_t spot_rng_state = 0x9e3779b97f4a7c15u;
 static double spot_rand(void)
 {
@@ -336,6 +330,14 @@ static void spot_unit(double u[3])
     for (int i = 0; i < 3; i++)
         u[i] /= n;
 }
+#if FXRT_NUMBER == FXRT_Q16
+/* shade_spot_surely_out, the light loop's cheap early test for a spot's
+ * cone, against the cone test it stands in front of: (-v) . s >= cos |v|
+ * with |v| from fx_normalize3_len and s, cos in Q2.30, as shade_lights
+ * makes it. Random spots (every direction, half-angles from 0.05 to 90
+ * degrees) and points both anywhere and within 0.01 degree of the cone's
+ * edge at every distance; the early test must never say "out" where the
+ * full one says "in", and must catch the points well outside. */
 static void test_spot_early_out(void)
 {
     long wrong = 0, far_out = 0, far_caught = 0, edge = 0, edge_out = 0;
@@ -408,11 +410,172 @@ static void test_spot_early_out(void)
 }
 #endif
 
+#if SHADOW_CULL
+/* Shadow-ray culling (core/shadow.c) must change no decision: for random
+ * occluders (a sphere, a triangle and a box at scales 2, 64 and 8000),
+ * lights of every kind and points both anywhere and placed so that the
+ * shadow ray grazes an occluder's surface (within a few LSB of Q16.16),
+ * shadow_blocked with the frame's cull row gives the answer it gives
+ * without one. l and the distance are formed as shade_lights forms them.
+ * The culling must also do its job: it must skip most exact tests of the
+ * random points, and the grazing points must be blocked often enough
+ * (both ways) for the check to mean something. */
+static double cull_pick(double lo, double hi) { return lo + (hi - lo) * spot_rand(); }
+static void test_shadow_cull(long cases)
+{
+    static world_t w;
+    static shadow_cull_t table[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
+    long differ = 0, blocked = 0, graze = 0, graze_blocked = 0, tests = 0, skipped = 0;
+    long per_world = 200;
+    for (long k = 0; k < cases; k += per_world) {
+        double scale = (k / per_world) % 3 == 0 ? 2 : (k / per_world) % 3 == 1 ? 64 : 8000;
+        double lim = scale > 2000 ? 8000 : scale;
+        fxrt_world_init(&w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+        /* the receiver: a plane (never culled, never its own occluder) */
+        double pa[3] = {0, -lim, 0}, pn[3] = {0, 1, 0};
+        world_add_plane(&w, V(pa), V(pn), color_make(NUM_ONE, NUM_ONE, NUM_ONE));
+        double c[3][3], r[3];
+        for (int o = 0; o < 3; o++) {
+            r[o] = scale * exp(cull_pick(log(1e-3), log(0.25)));
+            for (int i = 0; i < 3; i++)
+                c[o][i] = cull_pick(-lim + r[o], lim - r[o]);
+        }
+        world_add_sphere(&w, V(c[0]), N(r[0]), color_make(NUM_ONE, NUM_ONE, NUM_ONE));
+        double ta[3], tb[3], tc[3], bmin[3], bmax[3];
+        for (int i = 0; i < 3; i++) {
+            ta[i] = c[1][i] + cull_pick(-r[1], r[1]);
+            tb[i] = c[1][i] + cull_pick(-r[1], r[1]);
+            tc[i] = c[1][i] + cull_pick(-r[1], r[1]);
+            double h = r[2] * cull_pick(0.05, 1);
+            bmin[i] = c[2][i] - h;
+            bmax[i] = c[2][i] + h;
+        }
+        world_add_triangle(&w, V(ta), V(tb), V(tc), color_make(NUM_ONE, NUM_ONE, NUM_ONE));
+        world_add_box(&w, V(bmin), V(bmax), color_make(NUM_ONE, NUM_ONE, NUM_ONE));
+        for (int li = 0; li < 3; li++) {
+            double pos[3], dir[3];
+            for (int i = 0; i < 3; i++)
+                pos[i] = cull_pick(-lim, lim);
+            spot_unit(dir);
+            light_kind_t kind = li == 0 ? LIGHT_POINT : li == 1 ? LIGHT_DIRECTIONAL : LIGHT_SPOT;
+            world_add_light(&w, kind, V(pos), V(dir), N(90), color_make(NUM_ONE, NUM_ONE, NUM_ONE), true);
+        }
+        shadow_cull_setup(&w, table);
+        for (long j = 0; j < per_world && k + j < cases; j++) {
+            int li = (int)(j % 3);
+            const light_t *L = &w.lights[li];
+            bool grazing = j % 2 == 0;
+            double pp[3];
+            if (grazing) {
+                /* a point x on an occluder's outline as seen from the
+                 * light (a sphere's tangent circle, a triangle's edge, a
+                 * box's edge), moved by up to 2^-14 (a few LSB at most,
+                 * often less), and p beyond it as seen from the light */
+                int o = (int)((j / 2) % 3);
+                double x[3], g[3], gn = 0;
+                for (int i = 0; i < 3; i++)
+                    g[i] = L->kind == LIGHT_DIRECTIONAL ? -D(geom_axis(L->dir, i))
+                                                        : c[o][i] - D(geom_axis(L->position, i));
+                if (o == 0) {
+                    double u[3], ug = 0, un = 0, gg = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+                    spot_unit(u);
+                    for (int i = 0; i < 3; i++)
+                        ug += u[i] * g[i];
+                    for (int i = 0; i < 3; i++)
+                        u[i] -= ug / gg * g[i], un += u[i] * u[i];
+                    for (int i = 0; i < 3; i++)
+                        x[i] = c[0][i] + u[i] / sqrt(un) * r[0];
+                } else if (o == 1) {
+                    const double *vs[3] = {ta, tb, tc};
+                    int e = (int)(spot_rand() * 3) % 3;
+                    double a = spot_rand();
+                    for (int i = 0; i < 3; i++)
+                        x[i] = vs[e][i] + a * (vs[(e + 1) % 3][i] - vs[e][i]);
+                } else {
+                    int ax = (int)(spot_rand() * 3) % 3;
+                    for (int i = 0; i < 3; i++)
+                        x[i] = i == ax ? cull_pick(bmin[i], bmax[i]) : spot_rand() < 0.5 ? bmin[i] : bmax[i];
+                }
+                double nudge = ldexp(1, -14 - (int)(spot_rand() * 12));
+                for (int i = 0; i < 3; i++)
+                    x[i] += cull_pick(-1, 1) * nudge;
+                for (int i = 0; i < 3; i++) {
+                    g[i] = L->kind == LIGHT_DIRECTIONAL ? -D(geom_axis(L->dir, i)) : x[i] - D(geom_axis(L->position, i));
+                    gn += g[i] * g[i];
+                }
+                gn = sqrt(gn);
+                double along = scale * exp(cull_pick(log(1e-4), log(4.0)));
+                for (int i = 0; i < 3; i++)
+                    pp[i] = x[i] + g[i] / gn * along;
+            } else {
+                for (int i = 0; i < 3; i++)
+                    pp[i] = cull_pick(-2 * lim, 2 * lim);
+            }
+            if (fabs(pp[0]) > 30000 || fabs(pp[1]) > 30000 || fabs(pp[2]) > 30000)
+                continue;
+            vec3_t p = V(pp), l;
+            num_t dist = NUM_MAX;
+            if (L->kind == LIGHT_DIRECTIONAL) {
+                l = L->dir;
+            } else {
+                vec3_t v = vec3_sub(L->position, p);
+#if FXRT_NUMBER == FXRT_Q16
+                if (!vec3_unit_len(v, &l, &dist) || dist >= SHADE_FAR_DIST)
+                    continue;
+#else
+                dist = vec3_len(v);
+                if (dist == NUM_ZERO)
+                    continue;
+                l = vec3_scale(v, num_div(NUM_ONE, dist));
+#endif
+            }
+            const shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
+            bool full = shadow_blocked(&w, GEOM_PLANE, 0, false, &p, L, &l, dist, NULL);
+            bool culled = shadow_blocked(&w, GEOM_PLANE, 0, false, &p, L, &l, dist, row);
+            tests++;
+            if (full != culled) {
+                differ++;
+                CHECK_SWEEP(full == culled, "light kind %d at scale %g, p (%.9g, %.9g, %.9g): blocked %d, culled %d",
+                            L->kind, scale, pp[0], pp[1], pp[2], full, culled);
+            }
+            blocked += full;
+            graze += grazing;
+            graze_blocked += grazing && full;
+            /* how many of the random points' exact tests the row skips */
+            if (!grazing) {
+                uint16_t slots[3] = {0, FXRT_MAX_SPHERES, FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES};
+                for (int o = 0; o < 3; o++) {
+                    const shadow_cull_t *e = &row[slots[o]];
+                    bool skip;
+                    if (L->kind == LIGHT_DIRECTIONAL)
+                        skip = false; /* counted for point and spot lights only */
+                    else
+                        skip = dist <= e->pt.d_cap &&
+                               (dist <= e->pt.d_near || vec3_dotw_unit(l, e->pt.u) > numw_from(e->pt.lim));
+                    skipped += skip;
+                }
+            }
+        }
+    }
+    long random_pt = (tests - graze) * 2 / 3; /* random points with a point or spot light, about */
+    printf("shadow culling: %ld shadow rays (%ld grazing an occluder, %ld of them blocked; %ld blocked in all), %ld "
+           "with another answer when culled; %ld of about %ld exact tests of random points skipped (point and spot)\n",
+           tests, graze, graze_blocked, blocked, differ, skipped, 3 * random_pt);
+    CHECK_MSG(differ == 0, "shadow culling changed %ld of %ld decisions", differ, tests);
+    CHECK_MSG(graze_blocked > graze / 10 && graze_blocked < graze * 9 / 10,
+              "grazing rays: %ld of %ld blocked (the check needs both answers often)", graze_blocked, graze);
+    CHECK_MSG(skipped > 3 * random_pt / 2, "culling skipped only %ld of about %ld exact tests", skipped, 3 * random_pt);
+}
+#endif
+
 int main(void)
 {
     probe_material_reset();
 #if FXRT_NUMBER == FXRT_Q16
     test_spot_early_out();
+#endif
+#if SHADOW_CULL
+    test_shadow_cull(getenv("FXRT_TEST_FULL") ? 3000000 : 300000);
 #endif
     scene_t s = course(MATERIAL_LAMBERT);
     check_frame("course, lambert", &s);

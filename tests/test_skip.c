@@ -6,7 +6,9 @@
  *   - flat pieces' normals are constant (no per-pixel normalisation);
  *   - the Phong power takes O(log k) products (repeated squaring);
  *   - a spot light's cosine is computed once, at set-up;
- *   - flat materials cost no lighting at all.
+ *   - flat materials cost no lighting at all;
+ *   - a shadow ray tests a sphere's exact kernel only near the sphere's
+ *     shadow (culling, core/shadow.c).
  * Issue 12 (secondary rays and supersampling):
  *   - secondary rays use the world-space kernels and the scene's bounds:
  *     reflected rays that miss the box around the bounded objects test no
@@ -325,6 +327,34 @@ static void test_bounds(void)
     }
 }
 
+/* Shadow-ray culling (core/shadow.c): a sphere above a plane, a point
+ * light above both. The sphere's exact kernel must run for every plane
+ * pixel in its shadow (the light's bit clear in the key: those rays are
+ * blocked, so they were tested) and, with the light's cone around the
+ * sphere only a little wider than the shadow, for not many more: at most
+ * twice as many plus a border, where without culling every lit-facing
+ * plane pixel would test it (most of the frame). */
+static void test_shadow_cull(void)
+{
+    cam_t cam;
+    camera(&cam);
+    fxrt_world_init(&world, COL(0, 0, 0));
+    int32_t pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.7, 0.3, 0.2));
+    lit(pid, MATERIAL_LAMBERT, 0);
+    lit(world_add_sphere(&world, P(0.3, 1.3, -0.4), V(0.7), COL(0.2, 0.5, 0.3)), MATERIAL_LAMBERT, 0);
+    CHECK(world_add_light(&world, LIGHT_POINT, P(-0.4, 4.5, 0.6), P(0, 0, 0), V(0), FRAC(1, 1, 1), true) == 0);
+    sphere_calls = 0;
+    render(&cam, true);
+    long plane = count_id((uint16_t)pid), shadow = 0;
+    for (int i = 0; i < W * H; i++)
+        shadow += (keys[i] >> 8) == (uint32_t)pid && !(keys[i] & 1u);
+    printf("shadow culling (%s): %ld plane pixels, %ld in the sphere's shadow, %lu sphere kernel calls\n", NUM_NAME,
+           plane, shadow, sphere_calls);
+    CHECK_MSG(shadow > 40 && plane > 8 * shadow, "%ld plane pixels, %ld shadowed", plane, shadow);
+    CHECK_MSG(sphere_calls >= (unsigned long)shadow && sphere_calls <= (unsigned long)(2 * shadow + 2 * W),
+              "%lu sphere kernel calls for %ld shadowed plane pixels", sphere_calls, shadow);
+}
+
 static double cpu_s(void)
 {
     struct timespec ts;
@@ -379,6 +409,7 @@ int main(void)
     test_samples();
     test_reuse();
     test_behind();
+    test_shadow_cull();
     test_normalisations();
     test_pow();
     test_spot();
