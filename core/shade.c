@@ -16,6 +16,14 @@ fxrt_stats_t fxrt_stats;
 #if FXRT_NUMBER == FXRT_Q16
 static inline num_t shade_mul(num_t a, num_t b)
 {
+#if !FX_HAVE_UMULL
+    /* The M0: a colour (a >= 0) times a fraction 0 <= b <= 1, the light
+     * sum's usual product, in two 32-bit products: (a_hi b) 2^16 + a_lo b
+     * with a_hi < 2^15 and a_lo b <= (2^16 - 1) 2^16, so a_lo b + 2^15
+     * fits 32 bits and the rounding is fx_smul32's. */
+    if (a >= 0 && (uint32_t)b <= 0x10000u)
+        return (fx_t)(((uint32_t)a >> 16) * (uint32_t)b + (((uint32_t)a & 0xffffu) * (uint32_t)b + 0x8000u) / 0x10000u);
+#endif
     return (fx_t)((fx_smul32(a, b) + FX_HALF) >> FX_FRAC_BITS);
 }
 static inline num_t shade_add(num_t a, num_t b)
@@ -274,7 +282,7 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
 #else
         const shadow_cull_row_t *cull = NULL;
 #endif
-        if (L->shadows && shadow_blocked(w, kind, index, inside, &p, L, &l, dist, cull))
+        if (L->shadows && shadow_blocked(w, kind, index, obj, inside, &p, L, &l, dist, cull))
             continue;
 #endif
         bits = (uint8_t)(bits | (1u << i));

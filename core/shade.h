@@ -52,6 +52,20 @@ typedef union {
 /* Fill table[light * SHADOW_CULL_SLOTS + slot] for world w (every light;
  * directional lights' rows cull nothing). Once per frame. */
 void shadow_cull_setup(const world_t *w, shadow_cull_t *table);
+#if FXRT_NUMBER == FXRT_Q16
+/* A point or spot light's cone test, ldir . u > lim, in 32-bit products
+ * (the M0's form, core/shadow.c; true only where the exact dot is above
+ * lim too, which tests/test_shade.c checks on the host): ldir . u from
+ * components >> 2 (|.| <= 2^14), three products in Q4.28 (each at most
+ * 2^28). With x = 4a + r, y = 4b + s (0 <= r, s <= 3), |xy - 16ab| = 4as
+ * + 4br + rs <= 393,225 2^-32, so the three move the dot by at most
+ * 73,730 in Q4.28 (2.7e-4); the test adds 2^17 (2^-11). */
+static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
+{
+    int32_t dot = (l->x >> 2) * (e->pt.u.x >> 2) + (l->y >> 2) * (e->pt.u.y >> 2) + (l->z >> 2) * (e->pt.u.z >> 2);
+    return dot > (int32_t)((uint32_t)e->pt.lim << 12) + (1 << 17);
+}
+#endif
 #endif
 
 /* What the light sum needs of one object that does not change within a
@@ -106,9 +120,10 @@ typedef shadow_cull_t shadow_cull_row_t;
 #else
 typedef void shadow_cull_row_t;
 #endif
-/* cull: the light's row of the cull table, or NULL (no culling). */
-bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, const vec3_t *p,
-                    const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
+/* obj: world_common(w, kind, index). cull: the light's row of the cull
+ * table, or NULL (no culling). */
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
+                    const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
 
 #if FXRT_NUMBER == FXRT_Q16
 /* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST

@@ -49,6 +49,13 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
  * bounding radius plus a margin for the kernels' own rounding (Q16.16: a
  * few LSB; float and double: a few ulp of the coordinates, CULL_REL).
  * Each entry holds for dist <= d_cap, where eps(dist) <= eps_cap. */
+/* The M0 (no 32x32->64 multiply) makes the cone test in 32-bit products
+ * (shadow_culled); tests/test_shade.c also builds it on the host. */
+#if FXRT_NUMBER == FXRT_Q16 && !defined(SHADOW_CULL_DOT16)
+#define SHADOW_CULL_DOT16 (!FX_HAVE_UMULL)
+#elif !defined(SHADOW_CULL_DOT16)
+#define SHADOW_CULL_DOT16 0
+#endif
 #if FXRT_NUMBER == FXRT_Q16
 #define CULL_REL NUM_ZERO
 #elif FXRT_NUMBER == FXRT_FLOAT
@@ -190,10 +197,16 @@ static __attribute__((noinline)) void shadow_ray_dir(shadow_ray_cull_t *rc, cons
 #endif
 }
 
-/* Can the object in slot `slot` not block the ray? Out of line: inlined
- * three times into shadow_occluded, its products took that frame from 40
- * to 312 bytes on the M0 (16 KB boards). */
-static __attribute__((noinline)) bool shadow_culled(const shadow_ray_cull_t *rc, uint16_t slot)
+/* Can the object in slot `slot` not block the ray? Inlined where products
+ * are cheap (32x32->64 in one instruction, or floating point); out of line
+ * on the M0, where inlined three times into shadow_occluded its products
+ * took that frame from 40 to 312 bytes (16 KB boards). */
+#if FX_HAVE_UMULL || FXRT_NUMBER != FXRT_Q16
+#define SHADOW_CULLED_INLINE inline __attribute__((always_inline))
+#else
+#define SHADOW_CULLED_INLINE __attribute__((noinline))
+#endif
+static SHADOW_CULLED_INLINE bool shadow_culled(const shadow_ray_cull_t *rc, uint16_t slot)
 {
     const shadow_cull_t *e = &rc->row[slot];
     if (rc->directional) {
@@ -207,7 +220,13 @@ static __attribute__((noinline)) bool shadow_culled(const shadow_ray_cull_t *rc,
     }
     if (rc->dist > e->pt.d_cap)
         return false;
-    return rc->dist <= e->pt.d_near || vec3_dotw_unit(*rc->ldir, e->pt.u) > numw_from(e->pt.lim);
+    if (rc->dist <= e->pt.d_near)
+        return true;
+#if SHADOW_CULL_DOT16
+    return shadow_cone_out16(e, rc->ldir);
+#else
+    return vec3_dotw_unit(*rc->ldir, e->pt.u) > numw_from(e->pt.lim);
+#endif
 }
 #define SHADOW_SKIP(slot) (cull && shadow_culled(cull, (uint16_t)(slot)))
 #else
@@ -248,12 +267,12 @@ static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint
     return false;
 }
 
-bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool inside, const vec3_t *p,
-                    const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
+                    const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
 {
     FXRT_COUNT(shadow_rays);
     bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
-    if (inside && solid && SHADOW_CASTS(*world_common(w, kind, index)) && !shadow_light_inside(w, kind, index, l))
+    if (inside && solid && SHADOW_CASTS(*obj) && !shadow_light_inside(w, kind, index, l))
         return true;
     ray_t ray = {*p, *ldir};
     num_t tmax = dist;
@@ -266,7 +285,7 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, bool ins
         tmax = NUM_MAX - 1;
     }
 #endif
-    uint16_t id = world_common(w, kind, index)->id;
+    uint16_t id = obj->id;
 #if SHADOW_CULL
     if (cull) {
         shadow_ray_cull_t rc;

@@ -426,6 +426,7 @@ static void test_shadow_cull(long cases)
     static world_t w;
     static shadow_cull_t table[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
     long differ = 0, blocked = 0, graze = 0, graze_blocked = 0, tests = 0, skipped = 0;
+    long dot16_out = 0, dot16_exact = 0, dot16_wrong = 0;
     long per_world = 200;
     for (long k = 0; k < cases; k += per_world) {
         double scale = (k / per_world) % 3 == 0 ? 2 : (k / per_world) % 3 == 1 ? 64 : 8000;
@@ -530,8 +531,8 @@ static void test_shadow_cull(long cases)
 #endif
             }
             const shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
-            bool full = shadow_blocked(&w, GEOM_PLANE, 0, false, &p, L, &l, dist, NULL);
-            bool culled = shadow_blocked(&w, GEOM_PLANE, 0, false, &p, L, &l, dist, row);
+            bool full = shadow_blocked(&w, GEOM_PLANE, 0, &w.planes[0].obj, false, &p, L, &l, dist, NULL);
+            bool culled = shadow_blocked(&w, GEOM_PLANE, 0, &w.planes[0].obj, false, &p, L, &l, dist, row);
             tests++;
             if (full != culled) {
                 differ++;
@@ -555,6 +556,24 @@ static void test_shadow_cull(long cases)
                     skipped += skip;
                 }
             }
+#if FXRT_NUMBER == FXRT_Q16
+            /* The M0's 32-bit cone test: out only where the exact one is. */
+            if (L->kind != LIGHT_DIRECTIONAL) {
+                uint16_t slots[3] = {0, FXRT_MAX_SPHERES, FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES};
+                for (int o = 0; o < 3; o++) {
+                    const shadow_cull_t *e = &row[slots[o]];
+                    bool exact = vec3_dotw_unit(l, e->pt.u) > numw_from(e->pt.lim);
+                    bool out16 = shadow_cone_out16(e, &l);
+                    dot16_out += out16;
+                    if (out16 && !exact) {
+                        dot16_wrong++;
+                        CHECK_SWEEP(!out16 || exact, "32-bit cone test out, exact test in (p %.9g %.9g %.9g)", pp[0],
+                                    pp[1], pp[2]);
+                    }
+                    dot16_exact += exact;
+                }
+            }
+#endif
         }
     }
     long random_pt = (tests - graze) * 2 / 3; /* random points with a point or spot light, about */
@@ -562,6 +581,14 @@ static void test_shadow_cull(long cases)
            "with another answer when culled; %ld of about %ld exact tests of random points skipped (point and spot)\n",
            tests, graze, graze_blocked, blocked, differ, skipped, 3 * random_pt);
     CHECK_MSG(differ == 0, "shadow culling changed %ld of %ld decisions", differ, tests);
+#if FXRT_NUMBER == FXRT_Q16
+    printf("shadow culling, the M0's 32-bit cone test: %ld cones ruled out, the exact test %ld, %ld wrongly\n",
+           dot16_out, dot16_exact, dot16_wrong);
+    CHECK_MSG(dot16_wrong == 0 && dot16_out > dot16_exact * 9 / 10, "32-bit cone test: %ld out (exact %ld), %ld wrong",
+              dot16_out, dot16_exact, dot16_wrong);
+#else
+    (void)dot16_out, (void)dot16_exact, (void)dot16_wrong;
+#endif
     CHECK_MSG(graze_blocked > graze / 10 && graze_blocked < graze * 9 / 10,
               "grazing rays: %ld of %ld blocked (the check needs both answers often)", graze_blocked, graze);
     CHECK_MSG(skipped > 3 * random_pt / 2, "culling skipped only %ld of about %ld exact tests", skipped, 3 * random_pt);
