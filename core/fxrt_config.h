@@ -290,7 +290,8 @@
  * seen from the light, with a margin for every rounding: a shadow ray
  * outside the cone, or ending before the object, skips that object's
  * exact test (core/shadow.c; docs/ACCURACY.md, "Shadow-ray culling"). It
- * changes no frame; 0 compiles it out (tests and the ablation bench). */
+ * changes no decision of an exact kernel that is right (and skips some
+ * that are not); 0 compiles it out. */
 #ifndef FXRT_SHADOW_CULL
 #define FXRT_SHADOW_CULL 1
 #endif

@@ -48,6 +48,7 @@
 #define geom_box_surface FXRT_SYM(geom_box_surface)
 #define geom_box_hit_face FXRT_SYM(geom_box_hit_face)
 #define geom_plane_occludes FXRT_SYM(geom_plane_occludes)
+#define geom_sphere_occludes FXRT_SYM(geom_sphere_occludes)
 #define geom_triangle_occludes FXRT_SYM(geom_triangle_occludes)
 #define geom_box_occludes FXRT_SYM(geom_box_occludes)
 #define shade_color FXRT_SYM(shade_color)

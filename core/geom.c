@@ -211,6 +211,37 @@ bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
     return false;
 }
 
+/* Shadow rays: a hit with 0 < t < tmax (tmax NUM_MAX: any t > 0). In
+ * Q16.16 a shadow ray can start up to 32767 from the origin (a far floor)
+ * and so more than 2^30 LSB (16384) from a centre along an axis; then
+ * c - o and (c - o) . d would saturate (and the kernel see the sphere
+ * moved towards o), so the test runs at a quarter of the scale: (c - o) /
+ * 4 < 2^29.4 per axis, its length and b below 2^31, r^2 / 16 exact. Rays
+ * from the eye (|c - o| <= 16384 per axis in the domain) take
+ * geom_sphere_hit's own path. */
+bool geom_sphere_occludes(const geom_sphere_t *s, const ray_t *ray, num_t tmax)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    int64_t dx = (int64_t)s->center.x - ray->o.x, dy = (int64_t)s->center.y - ray->o.y,
+            dz = (int64_t)s->center.z - ray->o.z;
+    const int64_t lim = (int64_t)1 << 30;
+    if (dx > lim || dx < -lim || dy > lim || dy < -lim || dz > lim || dz < -lim) {
+        vec3_t oc = vec3_make((fx_t)(dx >> 2), (fx_t)(dy >> 2), (fx_t)(dz >> 2));
+        num_t b = numw_round(vec3_dotw_unit(oc, ray->d));
+        vec3_t q = vec3_sub(oc, vec3_scale_unit(ray->d, b));
+        numw_t disc = numw_sub(s->radius2 >> 4, vec3_dotw(q, q));
+        if (disc < 0)
+            return false;
+        num_t h = numw_sqrt(disc);
+        num_t t0 = num_sub(b, h);
+        num_t t = t0 > NUM_ZERO ? t0 : num_add(b, h); /* quarter scale */
+        return t > NUM_ZERO && (tmax == NUM_MAX || 4 * (int64_t)t < tmax);
+    }
+#endif
+    num_t t;
+    return geom_sphere_hit(s, ray, &t) && (t < tmax || tmax == NUM_MAX);
+}
+
 /* Where the ray meets the sphere's surface and the outward unit normal
  * there: the near root when far is false and it is at t > 0, else the far
  * one. As geom_sphere_hit, with the discriminant clamped at 0 (the tangent

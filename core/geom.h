@@ -157,6 +157,7 @@ bool geom_box_hit_face(const geom_box_t *b, const ray_t *ray, num_t *t, uint8_t 
  * bounds are compared as fractions, exactly in Q16.16 (a sphere's own
  * kernel has no division, world_occluded uses it). */
 bool geom_plane_occludes(const geom_plane_t *p, const ray_t *ray, num_t tmax);
+bool geom_sphere_occludes(const geom_sphere_t *s, const ray_t *ray, num_t tmax);
 bool geom_triangle_occludes(const geom_triangle_t *tr, const ray_t *ray, num_t tmax);
 bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax);
 

@@ -245,12 +245,10 @@ static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint
             return true;
 #endif
 #if FXRT_MAX_SPHERES > 0
-    for (uint16_t i = 0; i < w->n_spheres; i++) {
-        num_t t;
+    for (uint16_t i = 0; i < w->n_spheres; i++)
         if (w->spheres[i].obj.id != skip_id && SHADOW_CASTS(w->spheres[i].obj) && !SHADOW_SKIP(i) &&
-            geom_sphere_hit(&w->spheres[i], ray, &t) && (t < tmax || tmax == NUM_MAX))
+            geom_sphere_occludes(&w->spheres[i], ray, tmax))
             return true;
-    }
 #endif
 #if FXRT_MAX_TRIANGLES > 0
     for (uint16_t i = 0; i < w->n_triangles; i++)

@@ -12,7 +12,8 @@
  * Issue 12 (secondary rays and supersampling):
  *   - secondary rays use the world-space kernels and the scene's bounds:
  *     reflected rays that miss the box around the bounded objects test no
- *     sphere (geom_sphere_hit is wrapped at link time, -Wl,--wrap, and
+ *     sphere (geom_sphere_hit and geom_sphere_occludes are wrapped at
+ *     link time, -Wl,--wrap, and
  *     counted), the others test every sphere; the number of skips equals
  *     the number of mirrored rays that miss the padded box, computed here
  *     in double; primary rays never call the sphere kernel;
@@ -251,6 +252,15 @@ bool __wrap_geom_sphere_hit(const geom_sphere_t *sp, const ray_t *ray, num_t *t)
 {
     sphere_calls++;
     return __real_geom_sphere_hit(sp, ray, t);
+}
+/* Shadow rays' sphere kernel (it calls geom_sphere_hit inside geom.c,
+ * which the wrap does not see: each shadow test counts once). */
+bool __real_geom_sphere_occludes(const geom_sphere_t *sp, const ray_t *ray, num_t tmax);
+bool __wrap_geom_sphere_occludes(const geom_sphere_t *sp, const ray_t *ray, num_t tmax);
+bool __wrap_geom_sphere_occludes(const geom_sphere_t *sp, const ray_t *ray, num_t tmax)
+{
+    sphere_calls++;
+    return __real_geom_sphere_occludes(sp, ray, tmax);
 }
 bool __wrap_render_setup(render_t *r, const world_t *w, const cam_t *c)
 {
