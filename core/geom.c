@@ -185,16 +185,25 @@ bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t col
     return geom_sphere_check(center, radius, color) == FXRT_OK;
 }
 
+/* The sphere test's core for oc = c - o and unit d: b = oc . d (rounded),
+ * the offset q = oc - b d of the closest point from the centre, and the
+ * squared half chord r^2 - |q|^2 (returned; negative: the line misses). */
+static inline numw_t geom_sphere_disc(vec3_t oc, vec3_t d, numw_t r2, num_t *b_out)
+{
+    num_t b = numw_round(vec3_dotw_unit(oc, d));
+    vec3_t q = vec3_sub(oc, vec3_scale_unit(d, b));
+    *b_out = b;
+    return numw_sub(r2, vec3_dotw(q, q));
+}
+
 bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t)
 {
     /* Numerically stable form: b = (c - o) . d is the t of the point on the
      * ray closest to the centre, q = (c - o) - b d its offset from the
      * centre, and the half chord is sqrt(r^2 - |q|^2). This avoids b^2 - ac,
      * whose two large terms cancel for distant spheres. */
-    vec3_t oc = vec3_sub(s->center, ray->o);
-    num_t b = numw_round(vec3_dotw_unit(oc, ray->d));
-    vec3_t q = vec3_sub(oc, vec3_scale_unit(ray->d, b));
-    numw_t disc = numw_sub(s->radius2, vec3_dotw(q, q));
+    num_t b;
+    numw_t disc = geom_sphere_disc(vec3_sub(s->center, ray->o), ray->d, s->radius2, &b);
     if (disc < 0)
         return false;
     num_t h = numw_sqrt(disc);
@@ -226,10 +235,9 @@ bool geom_sphere_occludes(const geom_sphere_t *s, const ray_t *ray, num_t tmax)
             dz = (int64_t)s->center.z - ray->o.z;
     const int64_t lim = (int64_t)1 << 30;
     if (dx > lim || dx < -lim || dy > lim || dy < -lim || dz > lim || dz < -lim) {
-        vec3_t oc = vec3_make((fx_t)(dx >> 2), (fx_t)(dy >> 2), (fx_t)(dz >> 2));
-        num_t b = numw_round(vec3_dotw_unit(oc, ray->d));
-        vec3_t q = vec3_sub(oc, vec3_scale_unit(ray->d, b));
-        numw_t disc = numw_sub(s->radius2 >> 4, vec3_dotw(q, q));
+        num_t b;
+        numw_t disc = geom_sphere_disc(vec3_make((fx_t)(dx >> 2), (fx_t)(dy >> 2), (fx_t)(dz >> 2)), ray->d,
+                                       s->radius2 >> 4, &b);
         if (disc < 0)
             return false;
         num_t h = numw_sqrt(disc);

@@ -50,12 +50,8 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
  * few LSB; float and double: a few ulp of the coordinates, CULL_REL).
  * Each entry holds for dist <= d_cap, where eps(dist) <= eps_cap. */
 /* The M0 (no 32x32->64 multiply) makes the cone test in 32-bit products
- * (shadow_culled); tests/test_shade.c also builds it on the host. */
-#if FXRT_NUMBER == FXRT_Q16 && !defined(SHADOW_CULL_DOT16)
-#define SHADOW_CULL_DOT16 (!FX_HAVE_UMULL)
-#elif !defined(SHADOW_CULL_DOT16)
-#define SHADOW_CULL_DOT16 0
-#endif
+ * (shadow_cone_out16, shade.h; tests/test_shade.c checks it on the host). */
+#define SHADOW_CULL_DOT16 (FXRT_NUMBER == FXRT_Q16 && !FX_HAVE_UMULL)
 #if FXRT_NUMBER == FXRT_Q16
 #define CULL_REL NUM_ZERO
 #elif FXRT_NUMBER == FXRT_FLOAT
