@@ -39,8 +39,8 @@
 #if SHADOW_CULL
 typedef union {
     struct {
-        vec3_t u;     /* unit vector from the light towards the bounding sphere's centre */
-        num_t lim;    /* -cos of the cone's half-angle, minus the margins */
+        vec3_t u;     /* unit vector from the light towards the bounding sphere's centre (Q16.16: in Q2.30) */
+        num_t lim;    /* -cos of the cone's half-angle, minus the margins (Q16.16: in Q18.14, rounded up) */
         num_t d_near; /* no blocking hit for dist <= d_near */
         num_t d_cap;  /* the entry holds for dist <= d_cap (< 0: never) */
     } pt;             /* point and spot lights */
@@ -53,17 +53,28 @@ typedef union {
  * directional lights' rows cull nothing). Once per frame. */
 void shadow_cull_setup(const world_t *w, shadow_cull_t *table);
 #if FXRT_NUMBER == FXRT_Q16
-/* A point or spot light's cone test, ldir . u > lim, in 32-bit products
- * (the M0's form, core/shadow.c; true only where the exact dot is above
- * lim too, which tests/test_shade.c checks on the host): ldir . u from
- * components >> 2 (|.| <= 2^14), three products in Q4.28 (each at most
- * 2^28). With x = 4a + r, y = 4b + s (0 <= r, s <= 3), |xy - 16ab| = 4as
- * + 4br + rs <= 393,225 2^-32, so the three move the dot by at most
- * 73,730 in Q4.28 (2.7e-4); the test adds 2^17 (2^-11). */
+/* A point or spot light's cone test, ldir . u > lim (shadow_culled_pt,
+ * core/shadow.c). Q16.16 keeps u in Q2.30 and lim in Q18.14 rounded up,
+ * so that the test needs only the high word of the Q18.46 dot: with S =
+ * ldir . u 2^46 exact in int64, floor(S / 2^32) > lim14 gives S / 2^46 >=
+ * (lim14 + 1) 2^-14 > lim. (lim14 rounded up culls at most 2^-14 less
+ * than lim itself would; the margins are 2^-11.) */
+static inline bool shadow_cone_out64(const shadow_cull_t *e, const vec3_t *l)
+{
+    int64_t S = fx_smlal32(fx_smlal32(fx_smul32(l->x, e->pt.u.x), l->y, e->pt.u.y), l->z, e->pt.u.z);
+    return (int32_t)(S >> 32) > e->pt.lim;
+}
+/* The same in 32-bit products (the M0's form; true only where the exact
+ * dot is above lim14 too, which tests/test_shade.c checks on the host):
+ * ldir . u from components in Q2.14 (ldir >> 2, u >> 16; |.| <= 2^14),
+ * three products in Q4.28 (each at most 2^28). With x = 4a + r, y = 4b +
+ * s (0 <= r, s <= 3), |xy - 16ab| = 4as + 4br + rs <= 393,225 2^-32, so
+ * the three move the dot by at most 73,730 in Q4.28 (2.7e-4); the test
+ * adds 2^17 (2^-11). */
 static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
 {
-    int32_t dot = (l->x >> 2) * (e->pt.u.x >> 2) + (l->y >> 2) * (e->pt.u.y >> 2) + (l->z >> 2) * (e->pt.u.z >> 2);
-    return dot > (int32_t)((uint32_t)e->pt.lim << 12) + (1 << 17);
+    int32_t dot = (l->x >> 2) * (e->pt.u.x >> 16) + (l->y >> 2) * (e->pt.u.y >> 16) + (l->z >> 2) * (e->pt.u.z >> 16);
+    return dot > (int32_t)((uint32_t)e->pt.lim << 14) + (1 << 17);
 }
 #endif
 #endif

@@ -127,8 +127,14 @@ static void shadow_cull_entry(shadow_cull_t *e, const light_t *L, vec3_t c, num_
 #endif
     /* s + eps >= |c - L| - R' with s < dist |ldir| <= dist (1 + 2^-12). */
     num_t near = num_sub(num_mul(num_sub(len, rho), NUM(1.0 - 1.0 / 4096)), NUM(1.0 / 32768));
+#if FXRT_NUMBER == FXRT_Q16
+    /* u in Q2.30 (exact) and lim in Q18.14, rounded up (shade.h). */
+    e->pt.u = vec3_make(u.x * (1 << 14), u.y * (1 << 14), u.z * (1 << 14));
+    e->pt.lim = (num_neg(cosv) + 3) >> 2;
+#else
     e->pt.u = u;
     e->pt.lim = num_neg(cosv);
+#endif
     e->pt.d_cap = cap;
     e->pt.d_near = num_min(near, cap);
 }
@@ -171,95 +177,152 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
  * in float and double, a margin for their rounding: CULL_REL |p|_1). */
 typedef struct {
     const shadow_cull_t *row;
-    const vec3_t *ldir;
+    vec3_t ldir;
     num_t dist;
-    bool directional;
     numw_t p1, p2;
 #if FXRT_NUMBER != FXRT_Q16
     numw_t slack;
 #endif
 } shadow_ray_cull_t;
 
-/* A directional light's part of rc (out of line: shadow_blocked's frame
- * stays small on the M0). */
-static __attribute__((noinline)) void shadow_ray_dir(shadow_ray_cull_t *rc, const vec3_t *p)
-{
-    int k1, k2;
-    shadow_axes(*rc->ldir, &k1, &k2);
-    rc->p1 = shadow_proj(*p, *rc->ldir, k1);
-    rc->p2 = shadow_proj(*p, *rc->ldir, k2);
-#if FXRT_NUMBER != FXRT_Q16
-    rc->slack = num_mul(CULL_REL, shadow_l1(*p));
-#endif
-}
-
-/* Can the object in slot `slot` not block the ray? Inlined where products
- * are cheap (32x32->64 in one instruction, or floating point); out of line
- * on the M0, where inlined three times into shadow_occluded its products
- * took that frame from 40 to 312 bytes (16 KB boards). */
+/* Can the object of cull entry e not block the ray? One test per kind of
+ * light, each inlined where products are cheap (32x32->64 in one
+ * instruction, or floating point); out of line on the M0, where inlined
+ * three times into the loop their products took its frame from 40 to 312
+ * bytes (16 KB boards). */
 #if FX_HAVE_UMULL || FXRT_NUMBER != FXRT_Q16
 #define SHADOW_CULLED_INLINE inline __attribute__((always_inline))
 #else
 #define SHADOW_CULLED_INLINE __attribute__((noinline))
 #endif
-static SHADOW_CULLED_INLINE bool shadow_culled(const shadow_ray_cull_t *rc, uint16_t slot)
+/* A point or spot light: the cone and the distances. */
+static SHADOW_CULLED_INLINE bool shadow_culled_pt(const shadow_ray_cull_t *rc, const shadow_cull_t *e)
 {
-    const shadow_cull_t *e = &rc->row[slot];
-    if (rc->directional) {
-#if FXRT_NUMBER != FXRT_Q16
-        numw_t lim = numw_add(numw_from(e->dir.r), rc->slack);
-#else
-        numw_t lim = numw_from(e->dir.r);
-#endif
-        numw_t d1 = numw_sub_exact(rc->p1, e->dir.c1), d2 = numw_sub_exact(rc->p2, e->dir.c2);
-        return d1 > lim || d1 < numw_neg_fits(lim) || d2 > lim || d2 < numw_neg_fits(lim);
-    }
     if (rc->dist > e->pt.d_cap)
         return false;
     if (rc->dist <= e->pt.d_near)
         return true;
 #if SHADOW_CULL_DOT16
-    return shadow_cone_out16(e, rc->ldir);
+    return shadow_cone_out16(e, &rc->ldir);
+#elif FXRT_NUMBER == FXRT_Q16
+    return shadow_cone_out64(e, &rc->ldir);
 #else
-    return vec3_dotw_unit(*rc->ldir, e->pt.u) > numw_from(e->pt.lim);
+    return vec3_dotw_unit(rc->ldir, e->pt.u) > numw_from(e->pt.lim);
 #endif
 }
-#define SHADOW_SKIP(slot) (cull && shadow_culled(cull, (uint16_t)(slot)))
+/* A directional light: the point's projections against the object's. */
+static SHADOW_CULLED_INLINE bool shadow_culled_dir(const shadow_ray_cull_t *rc, const shadow_cull_t *e)
+{
+#if FXRT_NUMBER != FXRT_Q16
+    numw_t lim = numw_add(numw_from(e->dir.r), rc->slack);
+#else
+    numw_t lim = numw_from(e->dir.r);
+#endif
+    numw_t d1 = numw_sub_exact(rc->p1, e->dir.c1), d2 = numw_sub_exact(rc->p2, e->dir.c2);
+    return d1 > lim || d1 < numw_neg_fits(lim) || d2 > lim || d2 < numw_neg_fits(lim);
+}
 #else
 typedef void shadow_ray_cull_t;
-#define SHADOW_SKIP(slot) false
+typedef char shadow_cull_t; /* a placeholder: no table */
 #endif
 
-/* world_occluded, skipping what cull (or NULL) rules out. */
-static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
-                            const shadow_ray_cull_t *cull)
+/* Which culling a loop makes: a constant in each instance of
+ * shadow_occluded_loop, so that each has its test inlined and no test of
+ * the light's kind or of a missing table per object. */
+enum { SHADOW_CULL_NONE, SHADOW_CULL_PT, SHADOW_CULL_DIR };
+#if SHADOW_CULL
+#define SHADOW_ROW(base) (mode != SHADOW_CULL_NONE ? rc->row + (base) : NULL)
+#define SHADOW_SKIP(e)                                                                                                 \
+    (mode == SHADOW_CULL_PT ? shadow_culled_pt(rc, e) : mode == SHADOW_CULL_DIR ? shadow_culled_dir(rc, e) : false)
+#else
+#define SHADOW_ROW(base) NULL
+#define SHADOW_SKIP(e) false
+#endif
+/* The next object's cull entry. */
+#define SHADOW_NEXT(e) ((e) = mode != SHADOW_CULL_NONE ? (e) + 1 : (e))
+
+/* world_occluded, skipping what rc rules out (mode: how). An object's cull
+ * entry is read before the object (the table is small and contiguous);
+ * the object itself is skipped by its id when its entry did not cull it. */
+static inline __attribute__((always_inline)) bool shadow_occluded_loop(const world_t *w, const ray_t *ray, num_t tmax,
+                                                                      uint16_t skip_id, const shadow_ray_cull_t *rc,
+                                                                      int mode)
 {
-    (void)cull;
+    (void)rc, (void)mode;
 #if FXRT_MAX_PLANES > 0
     for (uint16_t i = 0; i < w->n_planes; i++)
         if (w->planes[i].obj.id != skip_id && SHADOW_CASTS(w->planes[i].obj) && geom_plane_occludes(&w->planes[i], ray, tmax))
             return true;
 #endif
 #if FXRT_MAX_SPHERES > 0
-    for (uint16_t i = 0; i < w->n_spheres; i++)
-        if (w->spheres[i].obj.id != skip_id && SHADOW_CASTS(w->spheres[i].obj) && !SHADOW_SKIP(i) &&
-            geom_sphere_occludes(&w->spheres[i], ray, tmax))
-            return true;
+    {
+        const shadow_cull_t *e = SHADOW_ROW(0);
+        const geom_sphere_t *o = w->spheres;
+        for (uint16_t n = w->n_spheres; n > 0; n--, o++) {
+            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_sphere_occludes(o, ray, tmax))
+                return true;
+            SHADOW_NEXT(e);
+        }
+    }
 #endif
 #if FXRT_MAX_TRIANGLES > 0
-    for (uint16_t i = 0; i < w->n_triangles; i++)
-        if (w->triangles[i].obj.id != skip_id && SHADOW_CASTS(w->triangles[i].obj) &&
-            !SHADOW_SKIP(FXRT_MAX_SPHERES + i) && geom_triangle_occludes(&w->triangles[i], ray, tmax))
-            return true;
+    {
+        const shadow_cull_t *e = SHADOW_ROW(FXRT_MAX_SPHERES);
+        const geom_triangle_t *o = w->triangles;
+        for (uint16_t n = w->n_triangles; n > 0; n--, o++) {
+            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_triangle_occludes(o, ray, tmax))
+                return true;
+            SHADOW_NEXT(e);
+        }
+    }
 #endif
 #if FXRT_MAX_BOXES > 0
-    for (uint16_t i = 0; i < w->n_boxes; i++)
-        if (w->boxes[i].obj.id != skip_id && SHADOW_CASTS(w->boxes[i].obj) &&
-            !SHADOW_SKIP(FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + i) && geom_box_occludes(&w->boxes[i], ray, tmax))
-            return true;
+    {
+        const shadow_cull_t *e = SHADOW_ROW(FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES);
+        const geom_box_t *o = w->boxes;
+        for (uint16_t n = w->n_boxes; n > 0; n--, o++) {
+            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_box_occludes(o, ray, tmax))
+                return true;
+            SHADOW_NEXT(e);
+        }
+    }
 #endif
     return false;
 }
+
+/* The loop without culling (world_occluded, and shadow rays without a
+ * table) and, with SHADOW_CULL, one instance per kind of light. */
+static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
+{
+    return shadow_occluded_loop(w, ray, tmax, skip_id, NULL, SHADOW_CULL_NONE);
+}
+#if SHADOW_CULL
+static bool shadow_occluded_pt(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
+                               const shadow_ray_cull_t *rc)
+{
+    return shadow_occluded_loop(w, ray, tmax, skip_id, rc, SHADOW_CULL_PT);
+}
+static bool shadow_occluded_dir(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
+                                const shadow_ray_cull_t *rc)
+{
+    return shadow_occluded_loop(w, ray, tmax, skip_id, rc, SHADOW_CULL_DIR);
+}
+
+/* A directional light's ray: its projections (out of line: shadow_blocked's
+ * frame stays small on the M0). */
+static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const ray_t *ray, num_t tmax,
+                                                        uint16_t skip_id, shadow_ray_cull_t *rc, const vec3_t *p)
+{
+    int k1, k2;
+    shadow_axes(rc->ldir, &k1, &k2);
+    rc->p1 = shadow_proj(*p, rc->ldir, k1);
+    rc->p2 = shadow_proj(*p, rc->ldir, k2);
+#if FXRT_NUMBER != FXRT_Q16
+    rc->slack = num_mul(CULL_REL, shadow_l1(*p));
+#endif
+    return shadow_occluded_dir(w, ray, tmax, skip_id, rc);
+}
+#endif
 
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
                     const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
@@ -284,22 +347,21 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const ge
     if (cull) {
         shadow_ray_cull_t rc;
         rc.row = cull;
-        rc.ldir = ldir;
+        rc.ldir = *ldir;
         rc.dist = dist;
-        rc.directional = l->kind == LIGHT_DIRECTIONAL;
-        if (rc.directional)
-            shadow_ray_dir(&rc, p);
-        return shadow_occluded(w, &ray, tmax, id, &rc);
+        if (l->kind == LIGHT_DIRECTIONAL)
+            return shadow_blocked_dir(w, &ray, tmax, id, &rc, p);
+        return shadow_occluded_pt(w, &ray, tmax, id, &rc);
     }
 #else
     (void)cull;
 #endif
-    return shadow_occluded(w, &ray, tmax, id, NULL);
+    return shadow_occluded(w, &ray, tmax, id);
 }
 
 bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
 {
-    return shadow_occluded(w, ray, tmax, skip_id, NULL);
+    return shadow_occluded(w, ray, tmax, skip_id);
 }
 
 #endif

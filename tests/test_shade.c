@@ -425,6 +425,15 @@ static void test_spot_early_out(void)
  * random points, and the grazing points must be blocked often enough
  * (both ways) for the check to mean something. */
 static double cull_pick(double lo, double hi) { return lo + (hi - lo) * spot_rand(); }
+/* The cone test of core/shadow.c as the host build makes it. */
+static bool cone_out(const shadow_cull_t *e, const vec3_t *l)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return shadow_cone_out64(e, l);
+#else
+    return vec3_dotw_unit(*l, e->pt.u) > numw_from(e->pt.lim);
+#endif
+}
 static void test_shadow_cull(long cases)
 {
     static world_t w;
@@ -623,8 +632,7 @@ static void test_shadow_cull(long cases)
                     if (L->kind == LIGHT_DIRECTIONAL)
                         skip = false; /* counted for point and spot lights only */
                     else
-                        skip = dist <= e->pt.d_cap &&
-                               (dist <= e->pt.d_near || vec3_dotw_unit(l, e->pt.u) > numw_from(e->pt.lim));
+                        skip = dist <= e->pt.d_cap && (dist <= e->pt.d_near || cone_out(e, &l));
                     skipped += skip;
                 }
             }
@@ -634,8 +642,12 @@ static void test_shadow_cull(long cases)
                 uint16_t slots[3] = {0, FXRT_MAX_SPHERES, FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES};
                 for (int o = 0; o < 3; o++) {
                     const shadow_cull_t *e = &row[slots[o]];
-                    bool exact = vec3_dotw_unit(l, e->pt.u) > numw_from(e->pt.lim);
+                    /* ldir . u > lim14 2^-14, exactly: u in Q2.30, lim in Q18.14 */
+                    int64_t S = (int64_t)l.x * e->pt.u.x + (int64_t)l.y * e->pt.u.y + (int64_t)l.z * e->pt.u.z;
+                    bool exact = S > (int64_t)e->pt.lim * ((int64_t)1 << 32);
                     bool out16 = shadow_cone_out16(e, &l);
+                    CHECK_SWEEP(!shadow_cone_out64(e, &l) || exact, "64-bit cone test out, exact test in (p %.9g %.9g %.9g)",
+                                pp[0], pp[1], pp[2]);
                     dot16_out += out16;
                     if (out16 && !exact) {
                         dot16_wrong++;
