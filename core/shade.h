@@ -46,7 +46,7 @@ typedef union {
     } pt;             /* point and spot lights */
     struct {
         numw_t c1, c2; /* the centre's projections (shadow.c, shadow_proj) */
-        num_t r;       /* bounding radius with margins */
+        numw_t r;      /* bounding radius with margins */
     } dir;             /* directional lights */
 } shadow_cull_t;
 /* Fill table[light * SHADOW_CULL_SLOTS + slot] for world w (every light;

@@ -380,6 +380,8 @@ int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t d
     l->dir = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     l->cos_angle = NUM_ZERO;
     l->color = color;
+    l->axes[0] = 0;
+    l->axes[1] = 0;
     if (kind != LIGHT_POINT) {
         /* The direction is normalised once, here: a directional light's l
          * (towards the light) is -direction / |direction| at every pixel. */
@@ -387,6 +389,7 @@ int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t d
         if (!vec3_normalize(&d))
             return FXRT_ERR_DIRECTION;
         l->dir = d;
+        light_dir_axes(d, l->axes);
     }
     if (kind == LIGHT_SPOT) {
         l->cos_angle = num_cos_deg(angle_deg);
