@@ -212,13 +212,13 @@ typedef struct {
     uint16_t index;    /* index there */
     uint16_t id;       /* scene order, for ties */
     rgb8_t rgb;
+    bool flat;         /* its material is flat: rgb is every sample (no light sum) */
 #if FXRT_PIXEL == FXRT_RGB565
     uint16_t px;       /* rgb as an RGB565 pixel */
 #endif
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
 #if FXRT_MAX_SAMPLES > 1
-    bool flat;          /* its material is flat: the colour is the sample */
     color_sum_t one[3]; /* flat: one sample of its colour (color_sum_add), for the sampling pass */
 #endif
     union {

@@ -676,12 +676,12 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
     o->px = render_565(c->rgb);
 #endif
     o->ranged = false;
-#if FXRT_MAX_SAMPLES > 1
 #if FXRT_MAX_LIGHTS > 0
     o->flat = c->mat.kind == MATERIAL_FLAT;
 #else
     o->flat = true;
 #endif
+#if FXRT_MAX_SAMPLES > 1
     render_sum_one(o->one, c->color);
 #endif
     switch (kind) {

@@ -21,8 +21,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
             continue;
         }
         const render_obj_t *o = &r->obj[oi];
-        const geom_common_t *obj = world_common(r->world, (geom_kind_t)o->geom, o->index);
-        bool lit = obj->mat.kind != MATERIAL_FLAT;
+        bool lit = !o->flat;
         if (!lit && !r->keys)
             continue;
         ray_t ray;
@@ -31,7 +30,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         color_t c = shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade_k[oi] : NULL,
                                    r->keys ? &mask : NULL);
         if (r->keys)
-            r->keys[x] = render_key(obj->id, mask);
+            r->keys[x] = render_key(o->id, mask);
         if (!lit)
             continue;
         rgb8_t p = color_to_rgb8(c);

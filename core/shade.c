@@ -151,15 +151,16 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
     return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
 }
 
-static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
-                            vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask);
+static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+                            const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
 
 /* shade_sum without per-frame constants (the ray caster, arbitrary rays):
  * they are computed here, off the renderer's stack path. It calls
  * shade_lights, not shade_sum: no cycle in the call graph
  * (tests/norecurse.sh). */
 static __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
-                                                      uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d, uint8_t *mask)
+                                                      uint16_t index, const vec3_t *p, const vec3_t *n_geo,
+                                                      const vec3_t *d, uint8_t *mask)
 {
     shade_k_t own;
     shade_consts(w, obj, &own);
@@ -176,8 +177,9 @@ static __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const g
 #else
 #define SHADE_SUM_INLINE
 #endif
-static SHADE_SUM_INLINE color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
-                         vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask)
+static SHADE_SUM_INLINE color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+                                          const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k,
+                                          uint8_t *mask)
 {
     const material_t *m = &obj->mat;
     FXRT_COUNT(shaded);
@@ -216,9 +218,11 @@ static SHADE_SPEC_INLINE color_t shade_specular(color_t c, const vec3_t *n, cons
 
 /* The light loop of shade_sum (k not NULL when the material is lit and
  * not transparent). */
-static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, vec3_t p,
-                            vec3_t n_geo, vec3_t d, const shade_k_t *k, uint8_t *mask)
+static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+                            const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
+                            uint8_t *mask)
 {
+    vec3_t p = *pp, n_geo = *n_geo_p, d = *dp;
     const material_t *m = &obj->mat;
     bool lit = m->kind != MATERIAL_FLAT;
     bool clear = m->kind == MATERIAL_TRANSPARENT;
@@ -308,8 +312,8 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
      * lit opaque material goes straight to shade_sum_own, so that one
      * shade_sum frame, not two, is on the stack (16 KB boards). */
     if (!k && obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_TRANSPARENT)
-        return shade_sum_own(w, obj, kind, index, p, n_geo, d, mask);
-    return shade_sum(w, obj, kind, index, p, n_geo, d, k, mask);
+        return shade_sum_own(w, obj, kind, index, &p, &n_geo, &d, mask);
+    return shade_sum(w, obj, kind, index, &p, &n_geo, &d, k, mask);
 }
 
 color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask)
@@ -341,7 +345,7 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
     default: break;
     }
     vec3_t p = ray_at(ray, t);
-    color_t c = shade_sum(w, obj, kind, index, p, n, ray->d, k, mask);
+    color_t c = shade_sum(w, obj, kind, index, &p, &n, &ray->d, k, mask);
 #if FXRT_MAX_DEPTH > 0
     if (material_bounces(obj->mat.kind))
         c = trace_bounces(w, kind, index, ray, p, n, c);
