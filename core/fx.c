@@ -672,8 +672,19 @@ static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], 
          * a shift by 31 + shift (k = 15) or 32 + shift (k = 14), which lies
          * in [29, 61]; rounded once, saturated like fxw_sqrt. */
         int q = (big ? 31 : 32) + shift;
-        uint64_t r = (fx_umul32(top, Y) + ((uint64_t)1 << (q - 1))) >> q;
-        *len = r > (uint64_t)FX_MAX ? FX_MAX : (fx_t)r;
+        uint64_t prod = fx_umul32(top, Y); /* < 2^63 */
+        if (q >= 33) {
+            /* The usual case (v below 2^29 LSB): the rounding bit 2^(q-1)
+             * lies in the high word, so the low word cannot carry into
+             * the rounded quotient (as for c0..c2 above), and the
+             * quotient, below 2^31 / 2, fits: 32-bit operations only,
+             * without the 64-bit variable shift. The same value. */
+            uint32_t hi = (uint32_t)(prod >> 32);
+            *len = (fx_t)((hi + ((uint32_t)1 << (q - 33))) >> (q - 32));
+        } else {
+            uint64_t r = (prod + ((uint64_t)1 << (q - 1))) >> q;
+            *len = r > (uint64_t)FX_MAX ? FX_MAX : (fx_t)r;
+        }
     }
     v[0] = v[0] < 0 ? -c0 : c0;
     v[1] = v[1] < 0 ? -c1 : c1;
