@@ -169,8 +169,8 @@ static __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const g
 
 /* The light sum for object obj (= world_common(w, kind, index)), looked
  * up once by the caller. Inlined into its two callers where the core has
- * 32x32->64-bit multiplies (the M3 and M4F: one call and its copies of
- * three vectors fewer per pixel, about -1 % on the lit scenes); the M0
+ * 32x32->64-bit multiplies (the M3 and M4F: one call fewer per pixel,
+ * about -1 % on the lit scenes when it was measured); the M0
  * keeps the call (inlined, its callers' register pressure cost it +1 %). */
 #if FX_HAVE_UMULL
 #define SHADE_SUM_INLINE inline __attribute__((always_inline))
@@ -292,7 +292,7 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
         bits = (uint8_t)(bits | (1u << i));
         if (!lit || clear)
             continue;
-        num_t ndl = numw_round(ndlw);
+        num_t ndl = numw_round_fits(ndlw); /* n, l unit: |n . l| < 2, no saturation */
         c = shade_madd(c, k->kd[i], ndl);
 #if FXRT_PHONG
         if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE)

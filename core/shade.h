@@ -49,16 +49,18 @@ typedef union {
         numw_t r;      /* bounding radius with margins */
     } dir;             /* directional lights */
 } shadow_cull_t;
-/* Fill table[light * SHADOW_CULL_SLOTS + slot] for world w (every light;
- * directional lights' rows cull nothing). Once per frame. */
+/* Fill table[light * SHADOW_CULL_SLOTS + slot] for world w (every light:
+ * a point or spot light's row holds cones, a directional light's the
+ * objects' projections). Once per frame. */
 void shadow_cull_setup(const world_t *w, shadow_cull_t *table);
 #if FXRT_NUMBER == FXRT_Q16
 /* A point or spot light's cone test, ldir . u > lim (shadow_culled_pt,
  * core/shadow.c). Q16.16 keeps u in Q2.30 and lim in Q18.14 rounded up,
  * so that the test needs only the high word of the Q18.46 dot: with S =
  * ldir . u 2^46 exact in int64, floor(S / 2^32) > lim14 gives S / 2^46 >=
- * (lim14 + 1) 2^-14 > lim. (lim14 rounded up culls at most 2^-14 less
- * than lim itself would; the margins are 2^-11.) */
+ * (lim14 + 1) 2^-14 > lim. (Rounding lim up, by at most 3 2^-16, and
+ * reading only the high word, at most 2^-14, cull a little less than the
+ * exact test with lim would, never more; the margins are 2^-11.) */
 static inline bool shadow_cone_out64(const shadow_cull_t *e, const vec3_t *l)
 {
     int64_t S = fx_smlal32(fx_smlal32(fx_smul32(l->x, e->pt.u.x), l->y, e->pt.u.y), l->z, e->pt.u.z);
