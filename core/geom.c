@@ -188,7 +188,7 @@ bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t col
 /* The sphere test's core for oc = c - o and unit d: b = oc . d (rounded),
  * the offset q = oc - b d of the closest point from the centre, and the
  * squared half chord r^2 - |q|^2 (returned; negative: the line misses). */
-static inline numw_t geom_sphere_disc(vec3_t oc, vec3_t d, numw_t r2, num_t *b_out)
+static inline __attribute__((always_inline)) numw_t geom_sphere_disc(vec3_t oc, vec3_t d, numw_t r2, num_t *b_out)
 {
     num_t b = numw_round(vec3_dotw_unit(oc, d));
     vec3_t q = vec3_sub(oc, vec3_scale_unit(d, b));
