@@ -788,9 +788,41 @@ static void test_sphere_occludes(long cases)
 }
 #endif
 
+#if SHADOW_CULL && FXRT_NUMBER == FXRT_Q16
+/* The cone tests at their boundary (core/shade.h): with u along x in
+ * Q2.30 and l = (x, 0, 0), ldir . u = x 2^-16 exactly, and the limit is
+ * lim14 2^-14. The high-word test culls only when the dot is strictly
+ * above the limit by at least 2^-14, so never at equality; the 32-bit
+ * test also keeps its 2^-11 margin. */
+static void test_cone_boundary(void)
+{
+    shadow_cull_t e;
+    memset(&e, 0, sizeof e);
+    e.pt.u = vec3_make((fx_t)1 << 30, 0, 0);
+    long wrong = 0, n = 0;
+    for (int32_t lim14 = -16384; lim14 <= 16000; lim14 += 37) {
+        e.pt.lim = lim14;
+        for (int32_t dx = -8; dx <= 8 + 4 * 8; dx++) {
+            int32_t x = 4 * lim14 + dx; /* l.x in Q16.16: the dot is x 2^-16 */
+            vec3_t l = vec3_make(x, 0, 0);
+            bool want64 = x >= 4 * lim14 + 4; /* floor(x / 4) > lim14 */
+            bool out64 = shadow_cone_out64(&e, &l), out16 = shadow_cone_out16(&e, &l);
+            wrong += out64 != want64;
+            wrong += out16 && x <= 4 * lim14 + 32; /* within the 2^-11 margin: never out */
+            n++;
+        }
+    }
+    printf("cone test boundary: %ld cases, %ld wrong\n", n, wrong);
+    CHECK_MSG(wrong == 0, "cone test boundary: %ld of %ld wrong", wrong, n);
+}
+#endif
+
 int main(void)
 {
     probe_material_reset();
+#if SHADOW_CULL && FXRT_NUMBER == FXRT_Q16
+    test_cone_boundary();
+#endif
 #if FXRT_NUMBER == FXRT_Q16
     test_spot_early_out();
 #endif
