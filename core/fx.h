@@ -143,9 +143,10 @@ static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)
     return (int64_t)((uint64_t)acc + (uint64_t)fx_smul32(a, b));
 #endif
 }
-/* a * u, exact, for any a and u; fastest when |u| <= 2^16 - 1, a
- * component of a unit vector (normals, ray and light directions): on the
- * M0 two 16 x 16 -> 32-bit products (a's halves times |u|) instead of
+/* a * u, exact, for any a and u; fastest when |u| <= 2^16 = 1.0, a
+ * component of a unit vector (normals, ray and light directions, 1.0
+ * included: an axis-aligned plane's or box face's normal): on the M0 two
+ * 16 x 16 -> 32-bit products (a's halves times |u|) instead of
  * fx_smul32's four and its sign corrections. Any other u takes fx_smul32. */
 static inline int64_t fx_smul_unit(int32_t a, int32_t u)
 {
@@ -154,10 +155,30 @@ static inline int64_t fx_smul_unit(int32_t a, int32_t u)
 #else
     uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
     uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;
-    if (uu > 0xffffu)
+    if (uu > 0x10000u)
         return fx_smul32(a, u);
-    /* (ua >> 16) uu < 2^15 2^16 and (ua & 0xffff) uu < 2^32: no overflow. */
+    /* (ua >> 16) uu <= 2^15 2^16 and (ua & 0xffff) uu <= (2^16 - 1) 2^16:
+     * both fit 32 bits, no overflow. */
     uint64_t p = ((uint64_t)((ua >> 16) * uu) << 16) + (uint64_t)((ua & 0xffffu) * uu);
+    return (a < 0) != (u < 0) ? -(int64_t)p : (int64_t)p;
+#endif
+}
+
+/* a * u, exact, for any a and u; fastest when both are components of unit
+ * vectors, |a|, |u| <= 2^16 (n . l, d . n): on the M0 one 32-bit product,
+ * |a| |u| <= 2^32 whose only carry out of 32 bits is the case
+ * |a| = |u| = 2^16 (bit 16 set in both), instead of fx_smul_unit's two
+ * and its shifts. Anything larger takes fx_smul_unit. */
+static inline int64_t fx_smul_units(int32_t a, int32_t u)
+{
+#if FX_HAVE_UMULL
+    return fx_smul32(a, u);
+#else
+    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;
+    if (ua > 0x10000u || uu > 0x10000u)
+        return fx_smul_unit(a, u);
+    uint64_t p = ((uint64_t)((ua & uu) >> 16) << 32) | (ua * uu);
     return (a < 0) != (u < 0) ? -(int64_t)p : (int64_t)p;
 #endif
 }

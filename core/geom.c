@@ -116,7 +116,7 @@ static void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
  * quotient is rounded once. Planes and triangles share it. */
 __attribute__((unused)) static bool geom_flat_t(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t *t)
 {
-    numw_t den = vec3_dotw_unit(ray->d, *n);
+    numw_t den = vec3_dotw_units(ray->d, *n);
     numw_t num = vec3_dotw_unit(vec3_sub(*a, ray->o), *n);
     if (den == 0 || num == 0 || (num < 0) != (den < 0))
         return false;
@@ -132,7 +132,7 @@ __attribute__((unused)) static bool geom_flat_t(const vec3_t *a, const vec3_t *n
  * strict sign and |num| < tmax |den| (numw_lt_mul: exact in Q16.16). */
 __attribute__((unused)) static bool geom_flat_occludes(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t tmax)
 {
-    numw_t den = vec3_dotw_unit(ray->d, *n);
+    numw_t den = vec3_dotw_units(ray->d, *n);
     numw_t num = vec3_dotw_unit(vec3_sub(*a, ray->o), *n);
     if (den == 0 || num == 0 || (num < 0) != (den < 0))
         return false;
@@ -146,7 +146,7 @@ __attribute__((unused)) static bool geom_flat_occludes(const vec3_t *a, const ve
  * on a flat piece the renderer found the ray to cover. */
 __attribute__((unused)) static num_t geom_flat_surface_t(const vec3_t *a, const vec3_t *n, const ray_t *ray)
 {
-    return numw_div(vec3_dotw_unit(vec3_sub(*a, ray->o), *n), vec3_dotw_unit(ray->d, *n));
+    return numw_div(vec3_dotw_unit(vec3_sub(*a, ray->o), *n), vec3_dotw_units(ray->d, *n));
 }
 
 #if FXRT_MAX_PLANES > 0

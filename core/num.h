@@ -74,6 +74,17 @@ static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u)
     return numw_add_exact(acc, fx_smul_unit(a, u));
 #endif
 }
+/* a u and acc + a u for a and u components of unit vectors (any values
+ * are exact; |a|, |u| <= 1 are fastest on the M0: fx_smul_units). */
+static inline numw_t numw_mul_units(num_t a, num_t u) { return fx_smul_units(a, u); }
+static inline numw_t numw_mla_units(numw_t acc, num_t a, num_t u)
+{
+#if FX_HAVE_UMULL
+    return fx_smlal32(acc, a, u);
+#else
+    return numw_add_exact(acc, fx_smul_units(a, u));
+#endif
+}
 static inline numw_t numw_from(num_t a) { return fxw_from_fx(a); }
 static inline num_t numw_round(numw_t w) { return fxw_round(w); }
 /* numw_round for a value whose rounding the caller has shown to fit
@@ -180,6 +191,8 @@ num_t num_cos_deg(num_t deg); /* deg in [0, 90] */
 static inline numw_t numw_mul(num_t a, num_t b) { return a * b; }
 static inline numw_t numw_mul_unit(num_t a, num_t u) { return a * u; }
 static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u) { return acc + a * u; }
+static inline numw_t numw_mul_units(num_t a, num_t u) { return a * u; }
+static inline numw_t numw_mla_units(numw_t acc, num_t a, num_t u) { return acc + a * u; }
 static inline numw_t numw_add(numw_t a, numw_t b) { return a + b; }
 static inline numw_t numw_sub(numw_t a, numw_t b) { return a - b; }
 static inline numw_t numw_add_exact(numw_t a, numw_t b) { return a + b; }

@@ -209,7 +209,7 @@ static SHADE_SPEC_INLINE color_t shade_specular(color_t c, const vec3_t *n, cons
 {
     /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
     vec3_t r = vec3_sub(vec3_scale_unit_small(*n, num_add(ndl, ndl)), *l);
-    numw_t rde = numw_neg_fits(vec3_dotw_unit(r, *d)); /* r . e = -(r . d), e = -d */
+    numw_t rde = numw_neg_fits(vec3_dotw_units(r, *d)); /* r . e = -(r . d), e = -d */
     if (rde > 0)
         c = shade_madd(c, *ks, numw_pow_int(rde, exponent));
     return c;
@@ -227,7 +227,7 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
     bool lit = m->kind != MATERIAL_FLAT;
     bool clear = m->kind == MATERIAL_TRANSPARENT;
     /* Two-sided: n faces the incoming ray. */
-    bool inside = vec3_dotw_unit(d, n_geo) > 0;
+    bool inside = vec3_dotw_units(d, n_geo) > 0;
     vec3_t n = inside ? vec3_neg_unit(n_geo) : n_geo;
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
@@ -277,7 +277,7 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
             l = vec3_scale(v, num_div(NUM_ONE, dist)); /* vec3_normalize's value, without its second root */
 #endif
         }
-        numw_t ndlw = vec3_dotw_unit(n, l);
+        numw_t ndlw = vec3_dotw_units(n, l);
         if (ndlw <= 0)
             continue; /* behind the surface: no shadow ray either */
 #if FXRT_SHADOWS

@@ -182,7 +182,7 @@ typedef struct {
 __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trace_ray_t *out0, trace_ray_t *out1)
 {
     const material_t *m = &nd->obj->mat;
-    numw_t dnw = vec3_dotw_unit(nd->d, nd->n_geo);
+    numw_t dnw = vec3_dotw_units(nd->d, nd->n_geo);
     bool inside = dnw > 0;                 /* the ray comes from the solid's inside */
     vec3_t n = inside ? vec3_neg_unit(nd->n_geo) : nd->n_geo; /* faces the incoming ray */
     num_t dn = numw_round(inside ? -dnw : dnw);               /* d . n <= 0 */
