@@ -183,6 +183,28 @@ static inline int64_t fx_smul_units(int32_t a, int32_t u)
 #endif
 }
 
+/* a * u rounded as fx_mul rounds (ties toward +infinity), for a result
+ * the caller has shown to fit (no saturation test); fastest for |u| <=
+ * 2^16, a unit vector's component: on the M0 the rounding is folded into
+ * fx_smul_unit's two 32-bit products, A = (|a| >> 16) |u| and
+ * B = (|a| & 0xffff) |u| (|a u| = A 2^16 + B, B + 2^15 < 2^32): the
+ * magnitude rounds to A + (B + 2^15) / 2^16, or A + (B + 2^15 - 1) / 2^16
+ * when the product is negative (then ties go toward zero in magnitude),
+ * without 64-bit additions and shifts. */
+static inline fx_t fx_mul_unit_fits(fx_t a, fx_t u)
+{
+#if !FX_HAVE_UMULL
+    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;
+    if (uu <= 0x10000u) {
+        uint32_t neg = (a < 0) != (u < 0) ? 1u : 0u;
+        uint32_t q = (ua >> 16) * uu + (((ua & 0xffffu) * uu + 0x8000u - neg) >> 16);
+        return (fx_t)(neg ? 0u - q : q);
+    }
+#endif
+    return (fx_t)((fx_smul32(a, u) + FX_HALF) >> FX_FRAC_BITS);
+}
+
 /* a * i modulo 2^64 for a small factor, |i| < 2^15 (pixel offsets): the
  * scanline forms' evaluation. On the M0 three 32-bit products (a's low word
  * in 16-bit halves, its high word modulo 2^32) instead of __aeabi_lmul. */

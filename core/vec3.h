@@ -45,8 +45,7 @@ static inline vec3_t vec3_scale_unit(vec3_t u, num_t s)
  * directions: a refracted one is not renormalised (core/trace.c). */
 static inline vec3_t vec3_scale_unit_small(vec3_t u, num_t s)
 {
-    return vec3_make(numw_round_fits(numw_mul_unit(s, u.x)), numw_round_fits(numw_mul_unit(s, u.y)),
-                     numw_round_fits(numw_mul_unit(s, u.z)));
+    return vec3_make(num_mul_unit_fits(s, u.x), num_mul_unit_fits(s, u.y), num_mul_unit_fits(s, u.z));
 }
 /* -u for u a unit vector (no component is the most negative num_t):
  * vec3_neg's value without its saturation tests. */

@@ -455,6 +455,35 @@ int main(int argc, char **argv)
         }
         CHECK_MSG(bad == 0, "fx_smul_units: %ld products differ from the exact one", bad);
     }
+    /* fx_mul_unit_fits: fx_mul's rounding of a u (floor((a u + 2^15) /
+     * 2^16), ties toward +infinity) wherever the result fits: |u| <= 2^16
+     * (the M0's folded rounding, both signs, ties included) and larger u. */
+    {
+        static const int32_t av[] = {INT32_MIN + 1, -0x40000000, -98304, -32768, -32769, -1, 0, 1, 32767, 32768, 98304,
+                                     0x7fff8000, INT32_MAX};
+        static const int32_t uvv[] = {-65536, -65535, -32768, -2, -1, 0, 1, 2, 32768, 65535, 65536, 65537, -98304};
+        long bad = 0, n = 0;
+        for (size_t i = 0; i < sizeof av / sizeof av[0]; i++)
+            for (size_t j = 0; j < sizeof uvv / sizeof uvv[0]; j++) {
+                int64_t w = ((int64_t)av[i] * uvv[j] + 32768) >> 16;
+                if (w < INT32_MIN || w > INT32_MAX)
+                    continue;
+                n++;
+                bad += fx_mul_unit_fits(av[i], uvv[j]) != (fx_t)w;
+            }
+        for (long i = 0; i < n_random; i++) {
+            int32_t a = (int32_t)(uint32_t)rng() >> (rng() % 31);
+            int32_t u = (int32_t)(rng() % 131073) - 65536;
+            if (i % 4 == 3)
+                a = (a & ~0xffff) | 0x8000 | (int32_t)(rng() % 2); /* ties and their neighbours */
+            int64_t w = ((int64_t)a * u + 32768) >> 16;
+            if (w < INT32_MIN || w > INT32_MAX)
+                continue;
+            n++;
+            bad += fx_mul_unit_fits(a, u) != (fx_t)w;
+        }
+        CHECK_MSG(bad == 0 && n > n_random / 2, "fx_mul_unit_fits: %ld of %ld products rounded differently", bad, n);
+    }
     /* The unsaturated helpers: within their stated ranges each equals the
      * saturating operation it replaces (and the exact value), at the range
      * ends and for random operands of every magnitude. */
