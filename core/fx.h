@@ -191,18 +191,33 @@ static inline int64_t fx_smul_units(int32_t a, int32_t u)
  * magnitude rounds to A + (B + 2^15) / 2^16, or A + (B + 2^15 - 1) / 2^16
  * when the product is negative (then ties go toward zero in magnitude),
  * without 64-bit additions and shifts. */
-static inline fx_t fx_mul_unit_fits(fx_t a, fx_t u)
+static inline __attribute__((always_inline)) fx_t fx_mul_unit_impl(fx_t a, fx_t u, bool sat)
 {
 #if !FX_HAVE_UMULL
     uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
     uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;
     if (uu <= 0x10000u) {
         uint32_t neg = (a < 0) != (u < 0) ? 1u : 0u;
+        /* A <= 2^31 and the fraction's carry < 2^16: q < 2^32. */
         uint32_t q = (ua >> 16) * uu + (((ua & 0xffffu) * uu + 0x8000u - neg) >> 16);
+        if (sat && q > (uint32_t)INT32_MAX)
+            return neg ? FX_MIN : FX_MAX; /* -2^31 itself is FX_MIN: no exception */
         return (fx_t)(neg ? 0u - q : q);
     }
 #endif
-    return (fx_t)((fx_smul32(a, u) + FX_HALF) >> FX_FRAC_BITS);
+    int64_t w = (fx_smul32(a, u) + FX_HALF) >> FX_FRAC_BITS;
+    return sat ? fx_sat64(w) : (fx_t)w;
+}
+static inline fx_t fx_mul_unit_fits(fx_t a, fx_t u)
+{
+    return fx_mul_unit_impl(a, u, false);
+}
+/* a * u rounded and saturated as fx_mul, for any a and u; fastest for
+ * |u| <= 2^16 (fx_mul_unit_fits' folded rounding, then the saturation
+ * test on the magnitude). */
+static inline fx_t fx_mul_unit(fx_t a, fx_t u)
+{
+    return fx_mul_unit_impl(a, u, true);
 }
 
 /* a * i modulo 2^64 for a small factor, |i| < 2^15 (pixel offsets): the

@@ -92,6 +92,8 @@ static inline num_t numw_round(numw_t w) { return fxw_round(w); }
 static inline num_t numw_round_fits(numw_t w) { return (fx_t)((w + FX_HALF) >> FX_FRAC_BITS); }
 /* numw_round_fits(numw_mul_unit(a, u)), the same value (fx_mul_unit_fits). */
 static inline num_t num_mul_unit_fits(num_t a, num_t u) { return fx_mul_unit_fits(a, u); }
+/* numw_round(numw_mul_unit(a, u)), the same value (fx_mul_unit). */
+static inline num_t num_mul_unit(num_t a, num_t u) { return fx_mul_unit(a, u); }
 /* -a for a != the most negative num_t: num_neg's value, no test. */
 static inline num_t num_neg_fits(num_t a) { return (fx_t)(0u - (uint32_t)a); }
 /* -w for w > INT64_MIN: numw_sub(0, w) without its tests. */
@@ -203,6 +205,7 @@ static inline numw_t numw_from(num_t a) { return a; }
 static inline num_t numw_round(numw_t w) { return w; }
 static inline num_t numw_round_fits(numw_t w) { return w; }
 static inline num_t num_mul_unit_fits(num_t a, num_t u) { return a * u; }
+static inline num_t num_mul_unit(num_t a, num_t u) { return a * u; }
 static inline num_t num_neg_fits(num_t a) { return -a; }
 static inline numw_t numw_neg_fits(numw_t w) { return -w; }
 static inline num_t numw_sqrt(numw_t w) { return num_sqrt(w); }

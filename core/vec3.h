@@ -36,8 +36,7 @@ static inline vec3_t vec3_scale(vec3_t a, num_t s)
  * and saturation), with numw_mul_unit's products. */
 static inline vec3_t vec3_scale_unit(vec3_t u, num_t s)
 {
-    return vec3_make(numw_round(numw_mul_unit(s, u.x)), numw_round(numw_mul_unit(s, u.y)),
-                     numw_round(numw_mul_unit(s, u.z)));
+    return vec3_make(num_mul_unit(s, u.x), num_mul_unit(s, u.y), num_mul_unit(s, u.z));
 }
 /* u * s for u a unit vector (|u_i| <= 1.25) and |s| < 16384 (2^30 LSB in
  * Q16.16): vec3_scale_unit's value, which then always fits, without its

@@ -484,6 +484,23 @@ int main(int argc, char **argv)
         }
         CHECK_MSG(bad == 0 && n > n_random / 2, "fx_mul_unit_fits: %ld of %ld products rounded differently", bad, n);
     }
+    /* fx_mul_unit: fx_mul's value (rounded, saturated) for every a and u,
+     * the saturating ends included (2^31 after rounding, both signs). */
+    {
+        static const int32_t av[] = {INT32_MIN, INT32_MIN + 1, -0x7fff8000, -0x7fff7fff, -98304, -32769, -1, 0, 1,
+                                     32768, 0x7fff7fff, 0x7fff8000, INT32_MAX};
+        static const int32_t uvv[] = {-65537, -65536, -65535, -32768, -1, 0, 1, 32768, 65535, 65536, 65537, INT32_MAX};
+        long bad = 0;
+        for (size_t i = 0; i < sizeof av / sizeof av[0]; i++)
+            for (size_t j = 0; j < sizeof uvv / sizeof uvv[0]; j++)
+                bad += fx_mul_unit(av[i], uvv[j]) != fx_mul(av[i], uvv[j]);
+        for (long i = 0; i < n_random; i++) {
+            int32_t a = (int32_t)(uint32_t)rng() >> (rng() % 31);
+            int32_t u = i % 8 == 7 ? (int32_t)(uint32_t)rng() : (int32_t)(rng() % 131073) - 65536;
+            bad += fx_mul_unit(a, u) != fx_mul(a, u);
+        }
+        CHECK_MSG(bad == 0, "fx_mul_unit: %ld products differ from fx_mul's", bad);
+    }
     /* The unsaturated helpers: within their stated ranges each equals the
      * saturating operation it replaces (and the exact value), at the range
      * ends and for random operands of every magnitude. */
