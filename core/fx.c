@@ -10,12 +10,6 @@ static uint64_t fx_uabs64(int64_t v)
     return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
 }
 
-/* Magnitude of an int32 as uint32, defined for INT32_MIN too. */
-static inline uint32_t fx_uabs32(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-}
-
 /* Apply a sign to a rounded magnitude and saturate to the fx_t range. */
 static fx_t fx_signed_sat(uint64_t mag, bool negative)
 {

@@ -97,6 +97,11 @@ static inline fx_t fx_abs(fx_t a)
  * 64 x 64 bits behind a call; four 16-bit products inline are cheaper.
  * FX_HAVE_UMULL (core/fxrt_config.h) selects the path.
  * Both are exact. */
+/* Magnitude of an int32 as uint32, defined for INT32_MIN too. */
+static inline uint32_t fx_uabs32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
 static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
 {
 #if FX_HAVE_UMULL
@@ -143,81 +148,39 @@ static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)
     return (int64_t)((uint64_t)acc + (uint64_t)fx_smul32(a, b));
 #endif
 }
-/* a * u, exact, for any a and u; fastest when |u| <= 2^16 = 1.0, a
- * component of a unit vector (normals, ray and light directions, 1.0
- * included: an axis-aligned plane's or box face's normal): on the M0 two
- * 16 x 16 -> 32-bit products (a's halves times |u|) instead of
- * fx_smul32's four and its sign corrections. Any other u takes fx_smul32. */
-static inline int64_t fx_smul_unit(int32_t a, int32_t u)
+/* a * u, exact, for any a and u. fx_smul_unit is fastest when |u| <= 2^16
+ * = 1.0, a component of a unit vector (normals, ray and light directions,
+ * 1.0 included: an axis-aligned plane's or box face's normal): on the M0
+ * two 16 x 16 -> 32-bit products (a's halves times |u|) instead of
+ * fx_smul32's four and its sign corrections. fx_smul_units is fastest
+ * when both are such components, |a|, |u| <= 2^16 (n . l, d . n): one
+ * 32-bit product, |a| |u| <= 2^32, whose only carry out of 32 bits is
+ * the case |a| = |u| = 2^16 (bit 16 set in both). Anything larger takes
+ * the slower path. */
+static inline __attribute__((always_inline)) int64_t fx_smul_unit_impl(int32_t a, int32_t u, bool both)
 {
 #if FX_HAVE_UMULL
+    (void)both;
     return fx_smul32(a, u);
 #else
-    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
-    uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;
+    uint32_t ua = fx_uabs32(a), uu = fx_uabs32(u);
     if (uu > 0x10000u)
         return fx_smul32(a, u);
-    /* (ua >> 16) uu <= 2^15 2^16 and (ua & 0xffff) uu <= (2^16 - 1) 2^16:
-     * both fit 32 bits, no overflow. */
-    uint64_t p = ((uint64_t)((ua >> 16) * uu) << 16) + (uint64_t)((ua & 0xffffu) * uu);
+    uint64_t p;
+    if (both && ua <= 0x10000u)
+        p = ((uint64_t)((ua & uu) >> 16) << 32) | (ua * uu);
+    else /* (ua >> 16) uu <= 2^15 2^16, (ua & 0xffff) uu <= (2^16 - 1) 2^16 */
+        p = ((uint64_t)((ua >> 16) * uu) << 16) + (uint64_t)((ua & 0xffffu) * uu);
     return (a < 0) != (u < 0) ? -(int64_t)p : (int64_t)p;
 #endif
 }
-
-/* a * u, exact, for any a and u; fastest when both are components of unit
- * vectors, |a|, |u| <= 2^16 (n . l, d . n): on the M0 one 32-bit product,
- * |a| |u| <= 2^32 whose only carry out of 32 bits is the case
- * |a| = |u| = 2^16 (bit 16 set in both), instead of fx_smul_unit's two
- * and its shifts. Anything larger takes fx_smul_unit. */
+static inline int64_t fx_smul_unit(int32_t a, int32_t u)
+{
+    return fx_smul_unit_impl(a, u, false);
+}
 static inline int64_t fx_smul_units(int32_t a, int32_t u)
 {
-#if FX_HAVE_UMULL
-    return fx_smul32(a, u);
-#else
-    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
-    uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;
-    if (ua > 0x10000u || uu > 0x10000u)
-        return fx_smul_unit(a, u);
-    uint64_t p = ((uint64_t)((ua & uu) >> 16) << 32) | (ua * uu);
-    return (a < 0) != (u < 0) ? -(int64_t)p : (int64_t)p;
-#endif
-}
-
-/* a * u rounded as fx_mul rounds (ties toward +infinity), for a result
- * the caller has shown to fit (no saturation test); fastest for |u| <=
- * 2^16, a unit vector's component: on the M0 the rounding is folded into
- * fx_smul_unit's two 32-bit products, A = (|a| >> 16) |u| and
- * B = (|a| & 0xffff) |u| (|a u| = A 2^16 + B, B + 2^15 < 2^32): the
- * magnitude rounds to A + (B + 2^15) / 2^16, or A + (B + 2^15 - 1) / 2^16
- * when the product is negative (then ties go toward zero in magnitude),
- * without 64-bit additions and shifts. */
-static inline __attribute__((always_inline)) fx_t fx_mul_unit_impl(fx_t a, fx_t u, bool sat)
-{
-#if !FX_HAVE_UMULL
-    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
-    uint32_t uu = u < 0 ? 0u - (uint32_t)u : (uint32_t)u;
-    if (uu <= 0x10000u) {
-        uint32_t neg = (a < 0) != (u < 0) ? 1u : 0u;
-        /* A <= 2^31 and the fraction's carry < 2^16: q < 2^32. */
-        uint32_t q = (ua >> 16) * uu + (((ua & 0xffffu) * uu + 0x8000u - neg) >> 16);
-        if (sat && q > (uint32_t)INT32_MAX)
-            return neg ? FX_MIN : FX_MAX; /* -2^31 itself is FX_MIN: no exception */
-        return (fx_t)(neg ? 0u - q : q);
-    }
-#endif
-    int64_t w = (fx_smul32(a, u) + FX_HALF) >> FX_FRAC_BITS;
-    return sat ? fx_sat64(w) : (fx_t)w;
-}
-static inline fx_t fx_mul_unit_fits(fx_t a, fx_t u)
-{
-    return fx_mul_unit_impl(a, u, false);
-}
-/* a * u rounded and saturated as fx_mul, for any a and u; fastest for
- * |u| <= 2^16 (fx_mul_unit_fits' folded rounding, then the saturation
- * test on the magnitude). */
-static inline fx_t fx_mul_unit(fx_t a, fx_t u)
-{
-    return fx_mul_unit_impl(a, u, true);
+    return fx_smul_unit_impl(a, u, true);
 }
 
 /* a * i modulo 2^64 for a small factor, |i| < 2^15 (pixel offsets): the
@@ -271,6 +234,42 @@ static inline fx_t fxw_round(fxw_t w)
     /* floor((w + 1/2 LSB) / 2^16) without the addition's overflow: the
      * floor of w / 2^16 plus w's bit 15 (the fraction is >= 1/2). */
     return fx_sat64((w >> FX_FRAC_BITS) + ((w >> (FX_FRAC_BITS - 1)) & 1));
+}
+
+/* a * u rounded as fx_mul rounds (ties toward +infinity), for a result
+ * the caller has shown to fit (no saturation test); fastest for |u| <=
+ * 2^16, a unit vector's component: on the M0 the rounding is folded into
+ * fx_smul_unit's two 32-bit products, A = (|a| >> 16) |u| and
+ * B = (|a| & 0xffff) |u| (|a u| = A 2^16 + B, B + 2^15 < 2^32): the
+ * magnitude rounds to A + (B + 2^15) / 2^16, or A + (B + 2^15 - 1) / 2^16
+ * when the product is negative (then ties go toward zero in magnitude),
+ * without 64-bit additions and shifts. */
+static inline __attribute__((always_inline)) fx_t fx_mul_unit_impl(fx_t a, fx_t u, bool sat)
+{
+#if !FX_HAVE_UMULL
+    uint32_t ua = fx_uabs32(a), uu = fx_uabs32(u);
+    if (uu <= 0x10000u) {
+        uint32_t neg = (a < 0) != (u < 0) ? 1u : 0u;
+        /* A <= 2^31 and the fraction's carry < 2^16: q < 2^32. */
+        uint32_t q = (ua >> 16) * uu + (((ua & 0xffffu) * uu + 0x8000u - neg) >> 16);
+        if (sat && q > (uint32_t)INT32_MAX)
+            return neg ? FX_MIN : FX_MAX; /* -2^31 itself is FX_MIN: no exception */
+        return (fx_t)(neg ? 0u - q : q);
+    }
+#endif
+    int64_t w = fx_smul32(a, u);
+    return sat ? fxw_round(w) : (fx_t)((w + FX_HALF) >> FX_FRAC_BITS);
+}
+static inline fx_t fx_mul_unit_fits(fx_t a, fx_t u)
+{
+    return fx_mul_unit_impl(a, u, false);
+}
+/* a * u rounded and saturated as fx_mul, for any a and u; fastest for
+ * |u| <= 2^16 (fx_mul_unit_fits' folded rounding, then the saturation
+ * test on the magnitude). */
+static inline fx_t fx_mul_unit(fx_t a, fx_t u)
+{
+    return fx_mul_unit_impl(a, u, true);
 }
 
 /* Q16.16 -> Q32.32, exact. */

@@ -66,25 +66,20 @@ static inline numw_t numw_add_exact(numw_t a, numw_t b) { return (numw_t)((uint6
 static inline numw_t numw_sub_exact(numw_t a, numw_t b) { return (numw_t)((uint64_t)a - (uint64_t)b); }
 /* acc + a u (numw_mul_unit's product), where the caller has shown that the
  * sum fits numw_t: no saturation test (numw_add_exact's rule). */
-static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u)
+static inline numw_t numw_mla_with(numw_t acc, num_t a, num_t u, bool units)
 {
 #if FX_HAVE_UMULL
+    (void)units;
     return fx_smlal32(acc, a, u);
 #else
-    return numw_add_exact(acc, fx_smul_unit(a, u));
+    return numw_add_exact(acc, units ? fx_smul_units(a, u) : fx_smul_unit(a, u));
 #endif
 }
+static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u) { return numw_mla_with(acc, a, u, false); }
 /* a u and acc + a u for a and u components of unit vectors (any values
  * are exact; |a|, |u| <= 1 are fastest on the M0: fx_smul_units). */
 static inline numw_t numw_mul_units(num_t a, num_t u) { return fx_smul_units(a, u); }
-static inline numw_t numw_mla_units(numw_t acc, num_t a, num_t u)
-{
-#if FX_HAVE_UMULL
-    return fx_smlal32(acc, a, u);
-#else
-    return numw_add_exact(acc, fx_smul_units(a, u));
-#endif
-}
+static inline numw_t numw_mla_units(numw_t acc, num_t a, num_t u) { return numw_mla_with(acc, a, u, true); }
 static inline numw_t numw_from(num_t a) { return fxw_from_fx(a); }
 static inline num_t numw_round(numw_t w) { return fxw_round(w); }
 /* numw_round for a value whose rounding the caller has shown to fit
