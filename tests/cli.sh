@@ -339,9 +339,11 @@ for kb in "$out/kbad.jpg" "$out/no/such/dir/k.png" "$out/kdir.png"; do
 done
 # An interrupted render leaves no temporary file: SIGINT removes the files
 # being written (FXRT_TEST_SIGINT_PENDING raises it once the image's
-# temporary file is written, before its rename).
+# temporary file is written, before its rename). SIGINT's default action
+# is restored first: a shell starts background jobs (make test &, some CI
+# runners) with it ignored, and an ignored SIGINT stays ignored (below).
 rm -f "$out/kint.png" "$out"/kint.png.tmp.*
-FXRT_TEST_SIGINT_PENDING=1 "$FXRT" render $sc --size 16x12 -o "$out/kint.png" 2>/dev/null
+FXRT_TEST_SIGINT_PENDING=1 env --default-signal=INT "$FXRT" render $sc --size 16x12 -o "$out/kint.png" 2>/dev/null
 rc=$?
 check "render interrupted by SIGINT: ends by it (exit $rc), no image, no temporary file" \
     bash -c "test $rc -eq 130 && test ! -e '$out/kint.png' && ! ls '$out' | grep -q 'kint.*tmp'"
