@@ -183,6 +183,48 @@ static inline int64_t fx_smul_units(int32_t a, int32_t u)
     return fx_smul_unit_impl(a, u, true);
 }
 
+/* a . u for two vectors whose components lie in [-2^18, 2^18) (unit
+ * vectors': normals, ray and light directions, Phong's r), exact, from
+ * 32-bit products only, with no sign handling: a_i = h_i 2^8 + l_i with
+ * h_i = a_i >> 8 (arithmetic, |h_i| <= 2^10) and l_i = a_i & 0xff, so
+ * a . u = 2^8 sum h_i u_i + sum l_i u_i, the sums below 3 2^28 and
+ * 3 2^26 in magnitude. The M0's unit dot products (six multiplies instead of three
+ * products with their signs and 64-bit sums). */
+static inline int64_t fx_dot3_small(int32_t a0, int32_t a1, int32_t a2, int32_t u0, int32_t u1, int32_t u2)
+{
+    int32_t hs = (a0 >> 8) * u0 + (a1 >> 8) * u1 + (a2 >> 8) * u2;
+    int32_t ls = (a0 & 0xff) * u0 + (a1 & 0xff) * u1 + (a2 & 0xff) * u2;
+    return (int64_t)((uint64_t)(int64_t)hs << 8) + ls;
+}
+/* Do a0..a2 and u0..u2 all lie in [-2^18, 2^18) (fx_dot3_small's range)?
+ * x + 2^18 lies in [0, 2^19) exactly then, modulo 2^32; so does the OR of
+ * six such values exactly when each does. */
+static inline bool fx_dot3_small_ok(int32_t a0, int32_t a1, int32_t a2, int32_t u0, int32_t u1, int32_t u2)
+{
+    const uint32_t k = (uint32_t)1 << 18;
+    return (((uint32_t)a0 + k) | ((uint32_t)a1 + k) | ((uint32_t)a2 + k) | ((uint32_t)u0 + k) | ((uint32_t)u1 + k) |
+            ((uint32_t)u2 + k)) < 2 * k;
+}
+
+/* a . u for |a_i| < 2^28 (4096.0: a scene's differences of points) and
+ * u_i in [-2^17, 2^17) (a unit vector), exact, from 32-bit products: as
+ * fx_dot3_small with a_i = h_i 2^16 + m_i 2^8 + l_i (h_i = a_i >> 16,
+ * |h_i| < 2^12; m_i, l_i bytes), three sums below 3 2^29 in magnitude. */
+static inline int64_t fx_dot3_wide(int32_t a0, int32_t a1, int32_t a2, int32_t u0, int32_t u1, int32_t u2)
+{
+    int32_t hs = (a0 >> 16) * u0 + (a1 >> 16) * u1 + (a2 >> 16) * u2;
+    int32_t ms = ((a0 >> 8) & 0xff) * u0 + ((a1 >> 8) & 0xff) * u1 + ((a2 >> 8) & 0xff) * u2;
+    int32_t ls = (a0 & 0xff) * u0 + (a1 & 0xff) * u1 + (a2 & 0xff) * u2;
+    return (int64_t)((uint64_t)(int64_t)hs << 16) + (int64_t)((uint64_t)(int64_t)ms << 8) + ls;
+}
+/* fx_dot3_wide's range: |a_i| < 2^28 and u_i in [-2^17, 2^17). */
+static inline bool fx_dot3_wide_ok(int32_t a0, int32_t a1, int32_t a2, int32_t u0, int32_t u1, int32_t u2)
+{
+    const uint32_t ka = (uint32_t)1 << 28, ku = (uint32_t)1 << 17;
+    return (((uint32_t)a0 + ka) | ((uint32_t)a1 + ka) | ((uint32_t)a2 + ka)) < 2 * ka &&
+           (((uint32_t)u0 + ku) | ((uint32_t)u1 + ku) | ((uint32_t)u2 + ku)) < 2 * ku;
+}
+
 /* a * i modulo 2^64 for a small factor, |i| < 2^15 (pixel offsets): the
  * scanline forms' evaluation. On the M0 three 32-bit products (a's low word
  * in 16-bit halves, its high word modulo 2^32) instead of __aeabi_lmul. */

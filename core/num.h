@@ -76,10 +76,32 @@ static inline numw_t numw_mla_with(numw_t acc, num_t a, num_t u, bool units)
 #endif
 }
 static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u) { return numw_mla_with(acc, a, u, false); }
-/* a u and acc + a u for a and u components of unit vectors (any values
+/* a u for a and u components of unit vectors (any values
  * are exact; |a|, |u| <= 1 are fastest on the M0: fx_smul_units). */
 static inline numw_t numw_mul_units(num_t a, num_t u) { return fx_smul_units(a, u); }
-static inline numw_t numw_mla_units(numw_t acc, num_t a, num_t u) { return numw_mla_with(acc, a, u, true); }
+/* a . u for a unit vector u, given by components: numw_dot3_unit
+ * (vec3_dotw_unit, any a) and numw_dot3_units (vec3_dotw_units, a unit
+ * too). On the M0 a within |a_i| < 2^28 (fx_dot3_wide), or both within
+ * [-2^18, 2^18) (fx_dot3_small), take 32-bit products with no signs: the
+ * same exact value. */
+static inline __attribute__((always_inline)) numw_t numw_dot3_with(num_t ax, num_t ay, num_t az, num_t ux, num_t uy,
+                                                                   num_t uz, bool units)
+{
+#if !FX_HAVE_UMULL
+    if (units ? fx_dot3_small_ok(ax, ay, az, ux, uy, uz) : fx_dot3_wide_ok(ax, ay, az, ux, uy, uz))
+        return units ? fx_dot3_small(ax, ay, az, ux, uy, uz) : fx_dot3_wide(ax, ay, az, ux, uy, uz);
+#endif
+    numw_t p = units ? numw_mul_units(ax, ux) : numw_mul_unit(ax, ux);
+    return numw_mla_with(numw_mla_with(p, ay, uy, units), az, uz, units);
+}
+static inline numw_t numw_dot3_unit(num_t ax, num_t ay, num_t az, num_t ux, num_t uy, num_t uz)
+{
+    return numw_dot3_with(ax, ay, az, ux, uy, uz, false);
+}
+static inline numw_t numw_dot3_units(num_t ax, num_t ay, num_t az, num_t ux, num_t uy, num_t uz)
+{
+    return numw_dot3_with(ax, ay, az, ux, uy, uz, true);
+}
 static inline numw_t numw_from(num_t a) { return fxw_from_fx(a); }
 static inline num_t numw_round(numw_t w) { return fxw_round(w); }
 /* numw_round for a value whose rounding the caller has shown to fit
@@ -190,8 +212,14 @@ num_t num_cos_deg(num_t deg); /* deg in [0, 90] */
 static inline numw_t numw_mul(num_t a, num_t b) { return a * b; }
 static inline numw_t numw_mul_unit(num_t a, num_t u) { return a * u; }
 static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u) { return acc + a * u; }
-static inline numw_t numw_mul_units(num_t a, num_t u) { return a * u; }
-static inline numw_t numw_mla_units(numw_t acc, num_t a, num_t u) { return acc + a * u; }
+static inline numw_t numw_dot3_unit(num_t ax, num_t ay, num_t az, num_t ux, num_t uy, num_t uz)
+{
+    return ax * ux + ay * uy + az * uz;
+}
+static inline numw_t numw_dot3_units(num_t ax, num_t ay, num_t az, num_t ux, num_t uy, num_t uz)
+{
+    return numw_dot3_unit(ax, ay, az, ux, uy, uz);
+}
 static inline numw_t numw_add(numw_t a, numw_t b) { return a + b; }
 static inline numw_t numw_sub(numw_t a, numw_t b) { return a - b; }
 static inline numw_t numw_add_exact(numw_t a, numw_t b) { return a + b; }

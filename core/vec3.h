@@ -68,13 +68,13 @@ static inline numw_t vec3_dotw(vec3_t a, vec3_t b)
  * additions cannot overflow and need no saturation test. */
 static inline numw_t vec3_dotw_unit(vec3_t a, vec3_t u)
 {
-    return numw_mla_unit(numw_mla_unit(numw_mul_unit(a.x, u.x), a.y, u.y), a.z, u.z);
+    return numw_dot3_unit(a.x, a.y, a.z, u.x, u.y, u.z);
 }
 /* u . v for two unit vectors (n . l, d . n): vec3_dotw_unit's value, with
- * numw_mul_units' products (one 32-bit product each on the M0). */
+ * exact products (on the M0 six 32-bit products: numw_dot3_units). */
 static inline numw_t vec3_dotw_units(vec3_t u, vec3_t v)
 {
-    return numw_mla_units(numw_mla_units(numw_mul_units(u.x, v.x), u.y, v.y), u.z, v.z);
+    return numw_dot3_units(u.x, u.y, u.z, v.x, v.y, v.z);
 }
 /* a . b rounded once. */
 static inline num_t vec3_dot(vec3_t a, vec3_t b)

@@ -455,6 +455,67 @@ int main(int argc, char **argv)
         }
         CHECK_MSG(bad == 0, "fx_smul_units: %ld products differ from the exact one", bad);
     }
+    /* numw_dot3_units (the M0: fx_dot3_small within [-2^18, 2^18), the
+     * product sum outside): the exact a . u for unit vectors' components,
+     * the range's ends, and components beyond it in either vector. */
+    {
+        static const int32_t ev[] = {-131072, -131071, -65536, -65535, -256, -255, -1, 0, 1, 255, 256, 65535, 65536,
+                                     131071, 131072, -131073, -262144, 262143, INT32_MAX, INT32_MIN + 1};
+        const size_t ne = sizeof ev / sizeof ev[0];
+        long bad = 0, small = 0;
+        for (long i = 0; i < n_random + (long)(3 * ne * ne * ne); i++) {
+            int32_t c[6];
+            if (i < (long)(3 * ne * ne * ne)) {
+                /* every triple of ends in a, against three choices of u */
+                size_t x = (size_t)i / 3 % ne, y = (size_t)i / 3 / ne % ne, z = (size_t)i / 3 / ne / ne, v = (size_t)i % 3;
+                c[0] = ev[x], c[1] = ev[y], c[2] = ev[z];
+                c[3] = ev[(x + y + v) % ne], c[4] = ev[(y + z + 2 * v) % ne], c[5] = ev[(x + z + 3 * v) % ne];
+            } else {
+                /* mostly within 2^17; one in 16 with all six up to 2^19
+                 * (partly outside the range), one in 16 with one of any
+                 * magnitude */
+                for (int k = 0; k < 6; k++)
+                    c[k] = i % 16 == 15 && k == (int)(i / 16 % 6) ? (int32_t)(uint32_t)rng() >> (rng() % 31)
+                           : i % 16 == 14                          ? (int32_t)(rng() % 1048576) - 524288
+                                                                   : (int32_t)(rng() % 262144) - 131072;
+            }
+            s128_t want = (s128_t)c[0] * c[3] + (s128_t)c[1] * c[4] + (s128_t)c[2] * c[5];
+            if (want > INT64_MAX || want < INT64_MIN)
+                continue;
+            small += fx_dot3_small_ok(c[0], c[1], c[2], c[3], c[4], c[5]);
+            bad += numw_dot3_units(c[0], c[1], c[2], c[3], c[4], c[5]) != (int64_t)want;
+        }
+        CHECK_MSG(bad == 0 && small > n_random / 2, "numw_dot3_units: %ld wrong (%ld in the small range)", bad, small);
+        /* numw_dot3_unit (the M0: fx_dot3_wide for |a_i| < 2^28): a of
+         * every magnitude, the ends 2^28 - 1 and -2^28 against u at its
+         * range's ends, and u beyond it */
+        static const int32_t ea[] = {-(1 << 29), -(1 << 28) - 1, -(1 << 28), -(1 << 28) + 1, -65536, -255, 0, 255,
+                                     65535, (1 << 28) - 1, 1 << 28, (1 << 29) - 1, INT32_MAX, INT32_MIN};
+        const size_t na = sizeof ea / sizeof ea[0];
+        long wide = 0;
+        bad = 0;
+        for (long i = 0; i < n_random + (long)(na * na * na * ne); i++) {
+            int32_t a[3], u[3];
+            if (i < (long)(na * na * na * ne)) {
+                size_t q = (size_t)i;
+                a[0] = ea[q % na], a[1] = ea[q / na % na], a[2] = ea[q / na / na % na];
+                u[0] = ev[q / na / na / na], u[1] = ev[(q + 5) % ne], u[2] = ev[(q / 7 + 11) % ne];
+                if (q < na * ne) /* equal components: every product at once at its extreme */
+                    a[0] = a[1] = a[2] = ea[q % na], u[0] = u[1] = u[2] = ev[q / na];
+            } else {
+                for (int k = 0; k < 3; k++) {
+                    a[k] = (int32_t)(uint32_t)rng() >> (rng() % 31);
+                    u[k] = i % 16 == 15 ? (int32_t)(rng() % 1048576) - 524288 : (int32_t)(rng() % 262144) - 131072;
+                }
+            }
+            s128_t want = (s128_t)a[0] * u[0] + (s128_t)a[1] * u[1] + (s128_t)a[2] * u[2];
+            if (want > INT64_MAX || want < INT64_MIN)
+                continue;
+            wide += fx_dot3_wide_ok(a[0], a[1], a[2], u[0], u[1], u[2]);
+            bad += numw_dot3_unit(a[0], a[1], a[2], u[0], u[1], u[2]) != (int64_t)want;
+        }
+        CHECK_MSG(bad == 0 && wide > n_random / 8, "numw_dot3_unit: %ld wrong (%ld in the wide range)", bad, wide);
+    }
     /* fx_mul_unit_fits: fx_mul's rounding of a u (floor((a u + 2^15) /
      * 2^16), ties toward +infinity) wherever the result fits: |u| <= 2^16
      * (the M0's folded rounding, both signs, ties included) and larger u. */
