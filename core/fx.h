@@ -91,17 +91,17 @@ static inline fx_t fx_abs(fx_t a)
 {
     return a < 0 ? fx_neg(a) : a;
 }
+/* Magnitude of an int32 as uint32, defined for INT32_MIN too. */
+static inline uint32_t fx_uabs32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
 
 /* 32 x 32 -> 64-bit products. The Cortex-M0 has no UMULL/SMULL, and
  * libgcc's __aeabi_lmul (what `(int64_t)a * b` becomes there) multiplies
  * 64 x 64 bits behind a call; four 16-bit products inline are cheaper.
  * FX_HAVE_UMULL (core/fxrt_config.h) selects the path.
  * Both are exact. */
-/* Magnitude of an int32 as uint32, defined for INT32_MIN too. */
-static inline uint32_t fx_uabs32(int32_t v)
-{
-    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
-}
 static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
 {
 #if FX_HAVE_UMULL
@@ -188,8 +188,8 @@ static inline int64_t fx_smul_units(int32_t a, int32_t u)
  * 32-bit products only, with no sign handling: a_i = h_i 2^8 + l_i with
  * h_i = a_i >> 8 (arithmetic, |h_i| <= 2^10) and l_i = a_i & 0xff, so
  * a . u = 2^8 sum h_i u_i + sum l_i u_i, the sums below 3 2^28 and
- * 3 2^26 in magnitude. The M0's unit dot products (six multiplies instead of three
- * products with their signs and 64-bit sums). */
+ * 3 2^26 in magnitude. The M0's unit dot products: six multiplies
+ * instead of three products with their signs and 64-bit sums. */
 static inline int64_t fx_dot3_small(int32_t a0, int32_t a1, int32_t a2, int32_t u0, int32_t u1, int32_t u2)
 {
     int32_t hs = (a0 >> 8) * u0 + (a1 >> 8) * u1 + (a2 >> 8) * u2;

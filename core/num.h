@@ -64,8 +64,9 @@ static inline numw_t numw_sub(numw_t a, numw_t b) { return fxw_add(a, b == INT64
  * value without their saturation tests. Modulo 2^64, never undefined. */
 static inline numw_t numw_add_exact(numw_t a, numw_t b) { return (numw_t)((uint64_t)a + (uint64_t)b); }
 static inline numw_t numw_sub_exact(numw_t a, numw_t b) { return (numw_t)((uint64_t)a - (uint64_t)b); }
-/* acc + a u (numw_mul_unit's product), where the caller has shown that the
- * sum fits numw_t: no saturation test (numw_add_exact's rule). */
+/* acc + a u (numw_mul_unit's product, numw_mul_units' when units), where
+ * the caller has shown that the sum fits numw_t: no saturation test
+ * (numw_add_exact's rule). */
 static inline numw_t numw_mla_with(numw_t acc, num_t a, num_t u, bool units)
 {
 #if FX_HAVE_UMULL
@@ -76,8 +77,8 @@ static inline numw_t numw_mla_with(numw_t acc, num_t a, num_t u, bool units)
 #endif
 }
 static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u) { return numw_mla_with(acc, a, u, false); }
-/* a u for a and u components of unit vectors (any values
- * are exact; |a|, |u| <= 1 are fastest on the M0: fx_smul_units). */
+/* a u for a and u components of unit vectors (any values are exact;
+ * |a|, |u| <= 1 are fastest on the M0: fx_smul_units). */
 static inline numw_t numw_mul_units(num_t a, num_t u) { return fx_smul_units(a, u); }
 /* a . u for a unit vector u, given by components: numw_dot3_unit
  * (vec3_dotw_unit, any a) and numw_dot3_units (vec3_dotw_units, a unit
