@@ -365,6 +365,23 @@ static void check_fixed_cases(void)
     CHECK(fx_normalize3(unit) && unit[0] == 0 && unit[1] == -FX_ONE && unit[2] == 0);
 }
 
+/* One case of numw_dot3_units (units) or numw_dot3_unit against the exact
+ * sum in __int128: 1 when it differs. Counts the cases inside the M0's
+ * 32-bit range (fx_dot3_small, fx_dot3_wide) in *in_range; a sum beyond
+ * int64 (no dot product of the renderer's) is skipped. */
+static long check_dot3(const int32_t a[3], const int32_t u[3], bool units, long *in_range)
+{
+    s128_t want = (s128_t)a[0] * u[0] + (s128_t)a[1] * u[1] + (s128_t)a[2] * u[2];
+    if (want > INT64_MAX || want < INT64_MIN)
+        return 0;
+    if (units) {
+        *in_range += fx_dot3_small_ok(a[0], a[1], a[2], u[0], u[1], u[2]);
+        return numw_dot3_units(a[0], a[1], a[2], u[0], u[1], u[2]) != (int64_t)want;
+    }
+    *in_range += fx_dot3_wide_ok(a[0], a[1], a[2], u[0], u[1], u[2]);
+    return numw_dot3_unit(a[0], a[1], a[2], u[0], u[1], u[2]) != (int64_t)want;
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1)
@@ -479,11 +496,7 @@ int main(int argc, char **argv)
                            : i % 16 == 14                          ? (int32_t)(rng() % 1048576) - 524288
                                                                    : (int32_t)(rng() % 262144) - 131072;
             }
-            s128_t want = (s128_t)c[0] * c[3] + (s128_t)c[1] * c[4] + (s128_t)c[2] * c[5];
-            if (want > INT64_MAX || want < INT64_MIN)
-                continue;
-            small += fx_dot3_small_ok(c[0], c[1], c[2], c[3], c[4], c[5]);
-            bad += numw_dot3_units(c[0], c[1], c[2], c[3], c[4], c[5]) != (int64_t)want;
+            bad += check_dot3(c, c + 3, true, &small);
         }
         CHECK_MSG(bad == 0 && small > n_random / 2, "numw_dot3_units: %ld wrong (%ld in the small range)", bad, small);
         /* numw_dot3_unit (the M0: fx_dot3_wide for |a_i| < 2^28): a of
@@ -508,11 +521,7 @@ int main(int argc, char **argv)
                     u[k] = i % 16 == 15 ? (int32_t)(rng() % 1048576) - 524288 : (int32_t)(rng() % 262144) - 131072;
                 }
             }
-            s128_t want = (s128_t)a[0] * u[0] + (s128_t)a[1] * u[1] + (s128_t)a[2] * u[2];
-            if (want > INT64_MAX || want < INT64_MIN)
-                continue;
-            wide += fx_dot3_wide_ok(a[0], a[1], a[2], u[0], u[1], u[2]);
-            bad += numw_dot3_unit(a[0], a[1], a[2], u[0], u[1], u[2]) != (int64_t)want;
+            bad += check_dot3(a, u, false, &wide);
         }
         CHECK_MSG(bad == 0 && wide > n_random / 8, "numw_dot3_unit: %ld wrong (%ld in the wide range)", bad, wide);
     }
