@@ -148,39 +148,24 @@ static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)
     return (int64_t)((uint64_t)acc + (uint64_t)fx_smul32(a, b));
 #endif
 }
-/* a * u, exact, for any a and u. fx_smul_unit is fastest when |u| <= 2^16
- * = 1.0, a component of a unit vector (normals, ray and light directions,
- * 1.0 included: an axis-aligned plane's or box face's normal): on the M0
- * two 16 x 16 -> 32-bit products (a's halves times |u|) instead of
- * fx_smul32's four and its sign corrections. fx_smul_units is fastest
- * when both are such components, |a|, |u| <= 2^16 (n . l, d . n): one
- * 32-bit product, |a| |u| <= 2^32, whose only carry out of 32 bits is
- * the case |a| = |u| = 2^16 (bit 16 set in both). Anything larger takes
- * the slower path. */
-static inline __attribute__((always_inline)) int64_t fx_smul_unit_impl(int32_t a, int32_t u, bool both)
+/* a * u, exact, for any a and u; fastest when |u| <= 2^16 = 1.0, a
+ * component of a unit vector (normals, ray and light directions, 1.0
+ * included: an axis-aligned plane's or box face's normal): on the M0 two
+ * 16 x 16 -> 32-bit products (a's halves times |u|) instead of
+ * fx_smul32's four and its sign corrections. Any other u takes fx_smul32. */
+static inline int64_t fx_smul_unit(int32_t a, int32_t u)
 {
 #if FX_HAVE_UMULL
-    (void)both;
     return fx_smul32(a, u);
 #else
     uint32_t ua = fx_uabs32(a), uu = fx_uabs32(u);
     if (uu > 0x10000u)
         return fx_smul32(a, u);
-    uint64_t p;
-    if (both && ua <= 0x10000u)
-        p = ((uint64_t)((ua & uu) >> 16) << 32) | (ua * uu);
-    else /* (ua >> 16) uu <= 2^15 2^16, (ua & 0xffff) uu <= (2^16 - 1) 2^16 */
-        p = ((uint64_t)((ua >> 16) * uu) << 16) + (uint64_t)((ua & 0xffffu) * uu);
+    /* (ua >> 16) uu <= 2^15 2^16 and (ua & 0xffff) uu <= (2^16 - 1) 2^16:
+     * both fit 32 bits, no overflow. */
+    uint64_t p = ((uint64_t)((ua >> 16) * uu) << 16) + (uint64_t)((ua & 0xffffu) * uu);
     return (a < 0) != (u < 0) ? -(int64_t)p : (int64_t)p;
 #endif
-}
-static inline int64_t fx_smul_unit(int32_t a, int32_t u)
-{
-    return fx_smul_unit_impl(a, u, false);
-}
-static inline int64_t fx_smul_units(int32_t a, int32_t u)
-{
-    return fx_smul_unit_impl(a, u, true);
 }
 
 /* a . u for two vectors whose components lie in [-2^18, 2^18) (unit

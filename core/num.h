@@ -64,36 +64,31 @@ static inline numw_t numw_sub(numw_t a, numw_t b) { return fxw_add(a, b == INT64
  * value without their saturation tests. Modulo 2^64, never undefined. */
 static inline numw_t numw_add_exact(numw_t a, numw_t b) { return (numw_t)((uint64_t)a + (uint64_t)b); }
 static inline numw_t numw_sub_exact(numw_t a, numw_t b) { return (numw_t)((uint64_t)a - (uint64_t)b); }
-/* acc + a u (numw_mul_unit's product, numw_mul_units' when units), where
- * the caller has shown that the sum fits numw_t: no saturation test
- * (numw_add_exact's rule). */
-static inline numw_t numw_mla_with(numw_t acc, num_t a, num_t u, bool units)
+/* acc + a u (numw_mul_unit's product), where the caller has shown that the
+ * sum fits numw_t: no saturation test (numw_add_exact's rule). */
+static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u)
 {
 #if FX_HAVE_UMULL
-    (void)units;
     return fx_smlal32(acc, a, u);
 #else
-    return numw_add_exact(acc, units ? fx_smul_units(a, u) : fx_smul_unit(a, u));
+    return numw_add_exact(acc, fx_smul_unit(a, u));
 #endif
 }
-static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u) { return numw_mla_with(acc, a, u, false); }
-/* a u for a and u components of unit vectors (any values are exact;
- * |a|, |u| <= 1 are fastest on the M0: fx_smul_units). */
-static inline numw_t numw_mul_units(num_t a, num_t u) { return fx_smul_units(a, u); }
 /* a . u for a unit vector u, given by components: numw_dot3_unit
  * (vec3_dotw_unit, any a) and numw_dot3_units (vec3_dotw_units, a unit
  * too). On the M0 a within |a_i| < 2^28 (fx_dot3_wide), or both within
  * [-2^18, 2^18) (fx_dot3_small), take 32-bit products with no signs: the
- * same exact value. */
+ * same exact value. Anything else takes numw_mul_unit's products. */
 static inline __attribute__((always_inline)) numw_t numw_dot3_with(num_t ax, num_t ay, num_t az, num_t ux, num_t uy,
                                                                    num_t uz, bool units)
 {
 #if !FX_HAVE_UMULL
     if (units ? fx_dot3_small_ok(ax, ay, az, ux, uy, uz) : fx_dot3_wide_ok(ax, ay, az, ux, uy, uz))
         return units ? fx_dot3_small(ax, ay, az, ux, uy, uz) : fx_dot3_wide(ax, ay, az, ux, uy, uz);
+#else
+    (void)units;
 #endif
-    numw_t p = units ? numw_mul_units(ax, ux) : numw_mul_unit(ax, ux);
-    return numw_mla_with(numw_mla_with(p, ay, uy, units), az, uz, units);
+    return numw_mla_unit(numw_mla_unit(numw_mul_unit(ax, ux), ay, uy), az, uz);
 }
 static inline numw_t numw_dot3_unit(num_t ax, num_t ay, num_t az, num_t ux, num_t uy, num_t uz)
 {

@@ -452,26 +452,6 @@ int main(int argc, char **argv)
         }
         CHECK_MSG(bad == 0, "fx_smul_unit: %ld products differ from the exact one", bad);
     }
-    /* fx_smul_units: the exact product for two unit vectors' components
-     * (|a|, |u| <= 2^16: the one-product path, 2^16 x 2^16 = 2^32 its one
-     * carry out of 32 bits) and for anything larger in either factor (the
-     * fallbacks). */
-    {
-        static const int32_t uv[] = {-65537, -65536, -65535, -32768, -1, 0, 1, 255, 32767, 65535, 65536, 65537,
-                                     INT32_MIN, INT32_MAX, 0x12345678, -0x7fff0000};
-        long bad = 0;
-        for (size_t i = 0; i < sizeof uv / sizeof uv[0]; i++)
-            for (size_t j = 0; j < sizeof uv / sizeof uv[0]; j++)
-                bad += fx_smul_units(uv[i], uv[j]) != (int64_t)uv[i] * uv[j];
-        for (long i = 0; i < n_random; i++) {
-            int32_t a = (int32_t)(rng() % 131073) - 65536;
-            int32_t u = (int32_t)(rng() % 131073) - 65536;
-            if (i % 8 == 7)
-                a = (int32_t)(uint32_t)rng() >> (rng() % 31); /* every magnitude: the fallback */
-            bad += fx_smul_units(a, u) != (int64_t)a * u;
-        }
-        CHECK_MSG(bad == 0, "fx_smul_units: %ld products differ from the exact one", bad);
-    }
     /* numw_dot3_units (the M0: fx_dot3_small within [-2^18, 2^18), the
      * product sum outside): the exact a . u for unit vectors' components,
      * the range's ends, and components beyond it in either vector. */
