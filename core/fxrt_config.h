@@ -157,7 +157,7 @@
  * sphere uses it only when alone on its row, which needs a world of at
  * most FXRT_LONE_MAX objects, so the default is the smaller of
  * FXRT_MAX_SPHERES and FXRT_LONE_MAX. fxrt-scenec writes the scene's
- * sphere count, or 0 (and FXRT_NO_COHERENCE 1) for a scene of more than
+ * sphere count, or 0 for a scene of more than
  * FXRT_LONE_MAX objects, where no object is ever alone. */
 #ifndef FXRT_COHERENT_SPHERES
 #define FXRT_COHERENT_SPHERES (FXRT_MAX_SPHERES < FXRT_LONE_MAX ? FXRT_MAX_SPHERES : FXRT_LONE_MAX)
@@ -176,10 +176,10 @@
  *                   locating its runs on the row and filling them
  *   FXRT_NO_ZRANGE  1 = decide every overlap by computing both depths (no
  *                   depth ranges, no per-row order against planes)
- *   FXRT_NO_COHERENCE 1 = find a lone object's runs on each row from
- *                   scratch (a sphere: three 128-bit form evaluations and
- *                   binary searches, or stepping on Armv6-M; a flat piece:
- *                   a 64-bit division per form) instead of stepping a
+ *   FXRT_NO_COHERENCE 1 = find runs on each row from scratch (a lone
+ *                   sphere: three 128-bit form evaluations and binary
+ *                   searches, or stepping on Armv6-M; a flat piece: a
+ *                   64-bit division per form) instead of stepping a
  *                   sphere's forms down the rows and searching from the
  *                   row before's runs (RAM: 120 B per coherent sphere, 12 B
  *                   per flat piece)

@@ -385,6 +385,49 @@ static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 }
 #endif
 
+/* A flat piece among others locates its runs from this many columns on (0
+ * to 16 measured alike on the bench set; below, stepping is as cheap). */
+#define RENDER_CLAIM_MIN 8
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
+/* Columns a..b of flat piece f of object oi, all covered by it (located
+ * exactly): columns no object has reached yet on this row (outside
+ * r->dirty_lo..dirty_hi) are claimed and filled without looking; each of
+ * the rest settles its owner, with f's depth from N and D stepped along
+ * the run (single: f is its object's only piece; a box's depth is the
+ * nearest of its faces there, from render_resolve). */
+static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
+                             uint8_t *rgb, bool single)
+{
+    uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
+    int32_t fb = b < r->dirty_lo ? b : r->dirty_lo - 1;
+    if (a <= fb) {
+        for (int32_t x = a; x <= fb; x++)
+            r->owner[x] = tag;
+        render_fill(r, oi, a, fb, rgb);
+        a = fb + 1;
+    }
+    int32_t fa = a > r->dirty_hi + 1 ? a : r->dirty_hi + 1;
+    if (fa <= b) {
+        for (int32_t x = fa; x <= b; x++)
+            r->owner[x] = tag;
+        render_fill(r, oi, fa, b, rgb);
+        b = fa - 1;
+    }
+    if (a > b)
+        return;
+    if (!single) {
+        for (int32_t x = a; x <= b; x++)
+            render_cover(r, oi, x, iy, rgb);
+        return;
+    }
+    int32_t ix = 2 * a - r->cam->width + 1;
+    uint64_t n = (uint64_t)rlin_at(&f->n, ix, iy), d = (uint64_t)rlin_at(&f->d, ix, iy);
+    uint64_t sn = 2 * (uint64_t)f->n.x, sd = 2 * (uint64_t)f->d.x;
+    for (int32_t x = a; x <= b; x++, n += sn, d += sd)
+        RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
+}
+#endif
+
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* Step a flat piece across columns x0..x1: each form is linear, so one
  * exact 64-bit addition per form and pixel. */
@@ -399,33 +442,13 @@ static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
         render_span_flat(r, oi, f, x0, x1, iy, rgb);
         return;
     }
-    /* A plane among others: its run located the same way, then each
-     * column claimed (a depth, where one is needed, from the forms). */
-    if (f->edges == 0 && x1 - x0 >= 8) {
+    /* Among others and wide: its runs located the same way, then each
+     * covered column claimed (render_claim_run). */
+    if (x1 - x0 >= RENDER_CLAIM_MIN) {
         render_iv_t iv[4];
-        int nrun = render_runs_flat(r, f, x0, x1, iy, NULL, iv);
-        uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
-        for (int k = 0; k < nrun; k++) {
-            int32_t a = x0 + iv[k].lo, b = x0 + iv[k].hi;
-            /* Columns no object has reached yet on this row: claimed and
-             * filled without looking. */
-            int32_t fa = a, fb = b < r->dirty_lo ? b : r->dirty_lo - 1;
-            if (fa <= fb) {
-                for (int32_t x = fa; x <= fb; x++)
-                    r->owner[x] = tag;
-                render_fill(r, oi, fa, fb, rgb);
-                a = fb + 1;
-            }
-            fa = a > r->dirty_hi + 1 ? a : r->dirty_hi + 1;
-            if (fa <= b) {
-                for (int32_t x = fa; x <= b; x++)
-                    r->owner[x] = tag;
-                render_fill(r, oi, fa, b, rgb);
-                b = fa - 1;
-            }
-            for (int32_t x = a; x <= b; x++)
-                RENDER_COVER(r, oi, x, rgb, render_resolve(r, cur_, oi, x, iy));
-        }
+        int nrun = render_runs_flat(r, f, x0, x1, iy, RENDER_HINT(f), iv);
+        for (int k = 0; k < nrun; k++)
+            render_claim_run(r, oi, f, x0 + iv[k].lo, x0 + iv[k].hi, iy, rgb, single);
         return;
     }
 #endif

@@ -19,10 +19,10 @@
 #  - per object: the same sources compiled again with one kind's capacity
 #    (FXRT_MAX_<KIND> in scene_config.h) raised by 32 objects and linked the
 #    same way; RAM per object = the difference / 32, rounded up, from a
-#    probe with the scene's own capacities. Probes are compiled without row
-#    coherence (a scene of more than FXRT_LONE_MAX objects has none), so
-#    the figures are those of large scenes; a small scene's coherence state
-#    counts in the part "without objects".
+#    probe with the scene's own capacities. Probes are compiled without the
+#    spheres' row-coherence state (a scene of more than FXRT_LONE_MAX
+#    objects has none), so the figures are those of large scenes; a small
+#    scene's sphere state counts in the part "without objects".
 # So the figures follow whatever the core's records take today.
 #
 # link mode reads what make wrote into DIR: fit-cflags (FW_CFLAGS), fit-src
@@ -80,14 +80,15 @@ trial_link() {
 
 # probe KIND CAP: compile every firmware source with FXRT_MAX_<KIND> = CAP
 # (KIND base: the scene's capacities) into $WORK/KIND-CAP/, link it; prints
-# "RAM FLASH". A probe is a scene of many objects, so it has no row
-# coherence (FXRT_NO_COHERENCE 1), as the scene compiler would emit for it.
+# "RAM FLASH". A probe is a scene of many objects, so its spheres keep no
+# row-coherence state (FXRT_COHERENT_SPHERES 0), as the scene compiler
+# would emit for it; its flat pieces keep their guesses.
 probe() {
     local kind=$1 cap=$2 pdir=$WORK/$1-$2 s flags=() pids=()
     mkdir -p "$pdir"
     sed -E -e "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
         -e '/^#define FXRT_(COHERENT_SPHERES|NO_COHERENCE) /d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
-    printf '#define FXRT_COHERENT_SPHERES 0\n#define FXRT_NO_COHERENCE 1\n' >>"$pdir/scene_config.h"
+    printf '#define FXRT_COHERENT_SPHERES 0\n' >>"$pdir/scene_config.h"
     # A box brings its faces: when the scene compiler sized the face pool
     # (FXRT_RENDER_BOX_FACES, the faces this camera needs), the extra boxes
     # get as many faces as the scene's boxes have on average, so the per-box
@@ -117,7 +118,7 @@ probe() {
 # FIXED (RAM for everything but the objects) from the scene in DIR.
 analyse() {
     local k m n ra fa rb fb sum=0
-    read -r rb fb < <(probe base 0) # the differences are taken without row coherence
+    read -r rb fb < <(probe base 0) # the differences are taken without the spheres' row coherence
     for k in $KINDS; do
         m=$(macro "$k")
         n=$(sed -nE "s/^#define FXRT_MAX_$m ([0-9]+).*/\1/p" "$DIR/scene_config.h")

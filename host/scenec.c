@@ -32,8 +32,8 @@ static const char usage[] =
     "depth if an object is reflective or transparent, else 0; FXRT_MAX_SAMPLES is\n"
     "the scene's samples N (FXRT_RENDER_MAX_WIDTH N x width); FXRT_ADAPTIVE 1 only\n"
     "for 'samples N adaptive'. FXRT_COHERENT_SPHERES is the scene's spheres, or 0\n"
-    "with FXRT_NO_COHERENCE 1 when the scene has more than FXRT_LONE_MAX objects\n"
-    "(none is ever alone on its row, so no row-coherence state).\n"
+    "when the scene has more than FXRT_LONE_MAX objects (none is ever alone on\n"
+    "its row, so the spheres keep no row-coherence state).\n"
     "--all-kinds keeps every primitive kind compiled in (capacity >= 1), to\n"
     "measure what stripping the unused ones saves.\n";
 

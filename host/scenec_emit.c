@@ -99,11 +99,11 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
             scenec_cap(w.n_triangles, all_kinds), scenec_cap(w.n_boxes, all_kinds));
     fprintf(cfg, "#define SCENE_WIDTH %d\n#define SCENE_HEIGHT %d\n", width, height);
     fprintf(cfg, "#define SCENE_OBJECTS %d\n", d.count);
-    /* Row coherence pays only where an object can be alone on its row:
-     * in a world of at most FXRT_LONE_MAX objects. A larger scene gets
-     * neither its per-sphere state nor the flat pieces' guesses. */
+    /* A sphere's row-coherence state pays only where it can be alone on
+     * its row: in a world of at most FXRT_LONE_MAX objects. The flat
+     * pieces' guesses serve every flat piece that locates its runs. */
     if (d.count > FXRT_LONE_MAX)
-        fprintf(cfg, "#define FXRT_COHERENT_SPHERES 0\n#define FXRT_NO_COHERENCE 1\n");
+        fprintf(cfg, "#define FXRT_COHERENT_SPHERES 0\n");
     else
         fprintf(cfg, "#define FXRT_COHERENT_SPHERES %u\n", (unsigned)w.n_spheres);
     /* Supersampling runs the visibility pass on a camera N times as wide
