@@ -41,6 +41,7 @@
 #define render_resolve_flat FXRT_SYM(render_resolve_flat)
 #define render_resolve_sphere FXRT_SYM(render_resolve_sphere)
 #define render_row_order FXRT_SYM(render_row_order)
+#define render_range_check FXRT_SYM(render_range_check)
 #define raycast_row FXRT_SYM(raycast_row)
 #define geom_plane_surface FXRT_SYM(geom_plane_surface)
 #define geom_sphere_surface FXRT_SYM(geom_sphere_surface)

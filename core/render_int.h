@@ -208,6 +208,11 @@ void render_setup_object(render_t *r, uint16_t i);
 render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
 #endif
 
+/* render_vis.c, for tests: 1 when object i covers column x of row `row`
+ * with a depth inside its range [tlo, thi], 0 when outside, -1 when it
+ * does not cover the pixel or has no range. */
+int render_range_check(const render_t *r, uint16_t i, int32_t x, int32_t row);
+
 /* render_vis.c: object oi also covers column x, owned so far by the owner
  * entry cur; returns true when oi is nearer (or ties with a lower id) and
  * has taken the column. The newcomer's depth comes from its forms at the

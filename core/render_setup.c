@@ -414,6 +414,35 @@ __attribute__((noinline)) static void render_sphere_scale(render_t *r, rext_t ex
 }
 #endif
 
+/* From an eye outside, every hit is a near root, on the cap of the sphere
+ * that faces the eye: the points c + R m (m a unit vector) with
+ * m.w >= R / L, where L = |c| and w = -c / L. Over that cap m_z lies
+ * within rho w_z -+ sqrt(1 - rho^2) sqrt(1 - w_z^2) (rho = R / L; the top,
+ * m_z = 1, where w_z >= rho), a tighter depth range than the bounding
+ * box's z (the far half of the sphere is never seen). Only for a clear
+ * margin outside (rho <= 1 - 2^-6), and widened by R / 2048 for the
+ * rounding of these few operations (m_z within about 2^-13). */
+static void render_sphere_cap(const cam_t *cam, vec3_t c, num_t rad, render_obj_t *o)
+{
+    vec3_t u;
+    num_t len;
+    if (render_ortho(cam) || !o->ranged || !vec3_unit_len(c, &u, &len))
+        return;
+    num_t rho = num_div(rad, len);
+    if (rho > NUM_ONE - NUM(1.0 / 64))
+        return;
+    num_t wz = num_neg(u.z);
+    num_t s1 = num_sqrt(num_mul(num_sub(NUM_ONE, rho), num_add(NUM_ONE, rho)));
+    num_t s2 = num_sqrt(num_add(num_mul(u.x, u.x), num_mul(u.y, u.y))); /* sqrt(1 - w_z^2) */
+    num_t mid = num_mul(rho, wz), half = num_mul(s1, s2);
+    num_t mlo = num_sub(mid, half), mhi = wz >= rho ? NUM_ONE : num_add(mid, half);
+    num_t slack = num_add(num_mul(rad, NUM(1.0 / 2048)), NUM(4.0 / 65536));
+    vec3_t p[2];
+    p[0] = vec3_make(NUM_ZERO, NUM_ZERO, num_min(num_add(c.z, rad), num_add(num_add(c.z, num_mul(rad, mhi)), slack)));
+    p[1] = vec3_make(NUM_ZERO, NUM_ZERO, num_max(num_sub(c.z, rad), num_sub(num_add(c.z, num_mul(rad, mlo)), slack)));
+    render_set_zrange(cam, p, 2, o);
+}
+
 __attribute__((noinline)) static void render_sphere_bounds(const cam_t *cam, vec3_t c, num_t rad, rc_t cc,
                                                            render_obj_t *o)
 {
@@ -431,6 +460,7 @@ __attribute__((noinline)) static void render_sphere_bounds(const cam_t *cam, vec
                               (i & 2) ? num_add(c.y, rad) : num_sub(c.y, rad),
                               (i & 4) ? num_add(c.z, rad) : num_sub(c.z, rad));
     render_points_bounds(cam, corner, 8, o);
+    render_sphere_cap(cam, c, rad, o);
 }
 
 __attribute__((noinline)) static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
@@ -559,6 +589,7 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
     }
     o->kind = RENDER_BOX;
     o->nflat = 0;
+    unsigned used = 0; /* bit i: corner i belongs to a face set up */
     for (int axis = 0; axis < 3; axis++) {
         int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
         /* A face of zero area (a flat box seen from its side) covers
@@ -585,8 +616,10 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
             int base = side << axis;
             int idx[4] = {base, base | (1 << a1), base | (1 << a1) | (1 << a2), base | (1 << a2)};
             vec3_t q[4];
-            for (int k = 0; k < 4; k++)
+            for (int k = 0; k < 4; k++) {
                 q[k] = corner[idx[k]];
+                used |= 1u << idx[k];
+            }
             if (o->u.face + o->nflat >= r->box_faces + FXRT_RENDER_BOX_FACES) {
                 r->error = "more box faces than FXRT_RENDER_BOX_FACES";
                 continue;
@@ -615,7 +648,14 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
         render_set_empty(o);
         return;
     }
-    render_points_bounds(cam, corner, 8, o);
+    /* Bounds and depth range of the faces set up: from outside in
+     * perspective the front faces, whose corners leave out the far ones. */
+    vec3_t p[8];
+    int n = 0;
+    for (int i = 0; i < 8; i++)
+        if (used & (1u << i))
+            p[n++] = corner[i];
+    render_points_bounds(cam, p, n, o);
 }
 #endif
 

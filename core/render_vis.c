@@ -159,6 +159,20 @@ static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t
 }
 
 
+/* Test hook: does object i cover column x of row `row`, and is its depth
+ * there inside its depth range [tlo, thi]? -1: not covered or no range;
+ * 1: inside; 0: outside (a range that would let render_settle decide an
+ * overlap wrongly). */
+int render_range_check(const render_t *r, uint16_t i, int32_t x, int32_t row)
+{
+    const render_obj_t *o = &r->obj[i];
+    int32_t ix = 2 * x - r->cam->width + 1, iy = 2 * (r->cam->height - 1 - row) - r->cam->height + 1;
+    if (!o->ranged || !render_covers(o, ix, iy))
+        return -1;
+    render_depth_t t = render_depth_at(o, ix, iy);
+    return !render_depth_less(t, o->tlo) && !render_depth_less(o->thi, t);
+}
+
 /* How to get a newcomer's depth when it is needed: from the values the
  * scanline loop stepped (a flat piece's N and D, a sphere's b, c, disc) or
  * from its forms evaluated at the pixel. */

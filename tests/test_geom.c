@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include "../core/render.h"
+#include "../core/render_int.h"
 #include "check.h"
 
 #if FXRT_NUMBER == FXRT_Q16
@@ -1644,6 +1645,129 @@ static void test_render_eye_on_box(void)
     CHECK_MSG(tally.rows_bad == 0, "%ld rows differ between render_row and render_row_reference", tally.rows_bad);
 }
 
+/* Depth ranges (render_setup: from the camera-space z of an object's
+ * points; a sphere seen from outside, from the cap that faces the eye; a
+ * box, from the corners of the faces set up): render_settle decides an
+ * overlap from them without a depth, so every depth the forms give must
+ * lie inside. Random spheres from far away to just outside (R / L up to
+ * 0.999, where the cap is nearly a point) and around the view, tiny and
+ * large ones, boxes with the eye outside on every side, triangles, both
+ * camera kinds: every covered pixel of every object checked
+ * (render_range_check). Cap: 0 outside. */
+static void test_render_ranges(void)
+{
+    uint64_t st = 0x7a4e9e5ull;
+    long checked = 0, outside = 0, spheres_near = 0, zoomed_px = 0;
+    for (int it = 0; it < 400; it++) {
+        world_init(&world, col(0, 0, 0));
+        uint16_t id = 0;
+        bool ortho = it % 4 == 3;
+        vec3_t eye = V3(orand(&st, -2, 2), orand(&st, -2, 2), orand(&st, -2, 2));
+        for (int i = 0; i < 4; i++) {
+            /* Direction from the eye within about 40 degrees of the gaze
+             * (-z), distance L = R / rho. */
+            double dx = orand(&st, -0.8, 0.8), dy = orand(&st, -0.6, 0.6), dl = sqrt(dx * dx + dy * dy + 1);
+            double rad = exp(orand(&st, log(0.01), log(20)));
+            double rho = it % 2 ? orand(&st, 0.9, 0.999) : orand(&st, 0.01, 0.9);
+            double l = rad / rho;
+            if (l > 3000)
+                continue;
+            spheres_near += rho > 0.98;
+            if (geom_sphere_make(&world.spheres[world.n_spheres],
+                                 V3(D(eye.x) + l * dx / dl, D(eye.y) + l * dy / dl,
+                                    D(eye.z) - l / dl),
+                                 N(rad), col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_spheres++, id++;
+        }
+        for (int i = 0; i < 2; i++) {
+            double bx = orand(&st, -4, 4), by = orand(&st, -4, 4), bz = orand(&st, -8, 1);
+            if (geom_box_make(&world.boxes[world.n_boxes], V3(bx, by, bz),
+                              V3(bx + orand(&st, 0.1, 4), by + orand(&st, 0.1, 4), bz + orand(&st, 0.1, 4)),
+                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_boxes++, id++;
+        }
+        double x = orand(&st, -3, 3), y = orand(&st, -3, 3), z = orand(&st, -9, -1);
+        if (geom_triangle_make(&world.triangles[0], V3(x, y, z),
+                               V3(x + orand(&st, -3, 3), y + orand(&st, 0.5, 3), z + orand(&st, -3, 3)),
+                               V3(x + orand(&st, 0.5, 3), y + orand(&st, -3, 3), z + orand(&st, -3, 3)),
+                               col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+            world.n_triangles = 1, id++;
+        cam_t c;
+        vec3_t gaze = V3(orand(&st, -0.1, 0.1), orand(&st, -0.1, 0.1), -1);
+        if (cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, eye, gaze, V3(0, 1, 0),
+                      N(orand(&st, 20, 100)), N(orand(&st, 2, 20)), OW, OH) != CAM_OK)
+            continue;
+        static render_t state;
+        if (!render_setup(&state, &world, &c))
+            continue;
+        for (uint16_t i = 0; i < state.count; i++)
+            for (int32_t row = 0; row < OH; row++)
+                for (int32_t px = 0; px < OW; px++) {
+                    int k = render_range_check(&state, i, px, row);
+                    checked += k >= 0;
+                    if (k == 0) {
+                        outside++;
+                        CHECK_SWEEP(false, "scene %d (%s) object %d: depth at column %d row %d outside its range",
+                                    it, ortho ? "ortho" : "persp", (int)i, (int)px, (int)row);
+                    }
+                }
+    }
+    /* The cap's deepest point is a silhouette point: a camera zoomed in
+     * (fov 0.2 to 5 degrees) on a random tangent point q = c + R m,
+     * m = rho w + sqrt(1 - rho^2) v (v a random unit vector normal to w),
+     * gazing just inside it, puts pixel centres within a small fraction of
+     * a pixel of q, where the depth is within a hair of the range's end. */
+    for (int it = 0; it < 300; it++) {
+        world_init(&world, col(0, 0, 0));
+        double e[3] = {orand(&st, -5, 5), orand(&st, -5, 5), orand(&st, -5, 5)};
+        double rad = exp(orand(&st, log(0.01), log(20))), rho = orand(&st, 0.01, 0.999), l = rad / rho;
+        double w[3] = {orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1)}, a[3] = {0, 0, 0};
+        double wl = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        if (wl < 0.1 || l > 3000)
+            continue;
+        for (int k = 0; k < 3; k++)
+            w[k] /= wl; /* from the centre towards the eye */
+        a[fabs(w[0]) < 0.5 ? 0 : 2] = 1; /* v: a unit vector normal to w */
+        double v[3] = {w[1] * a[2] - w[2] * a[1], w[2] * a[0] - w[0] * a[2], w[0] * a[1] - w[1] * a[0]};
+        double vl = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), ang = orand(&st, 0, 2 * PI);
+        double u[3] = {w[1] * v[2] - w[2] * v[1], w[2] * v[0] - w[0] * v[2], w[0] * v[1] - w[1] * v[0]};
+        double cc[3], g[3];
+        for (int k = 0; k < 3; k++) {
+            double vk = (cos(ang) * v[k] + sin(ang) * u[k]) / vl;
+            cc[k] = e[k] - l * w[k];
+            g[k] = cc[k] + 0.99999 * rad * (rho * w[k] + sqrt(1 - rho * rho) * vk) - e[k];
+        }
+        if (!geom_sphere_make(&world.spheres[0], V3(cc[0], cc[1], cc[2]), N(rad), col(0.5, 0.25, 0.75), 0))
+            continue;
+        world.n_spheres = 1;
+        cam_t c;
+        if (cam_setup(&c, CAM_PERSPECTIVE, V3(e[0], e[1], e[2]), V3(g[0], g[1], g[2]),
+                      fabs(g[1]) < 0.9 * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) ? V3(0, 1, 0) : V3(1, 0, 0),
+                      N(orand(&st, 0.2, 5)), NUM_ZERO, OW, OH) != CAM_OK)
+            continue;
+        static render_t zoomed;
+        if (!render_setup(&zoomed, &world, &c))
+            continue;
+        for (int32_t row = 0; row < OH; row++)
+            for (int32_t px = 0; px < OW; px++) {
+                int k = render_range_check(&zoomed, 0, px, row);
+                checked += k >= 0;
+                zoomed_px += k >= 0;
+                if (k == 0) {
+                    outside++;
+                    CHECK_SWEEP(false, "zoomed scene %d: depth at column %d row %d outside the sphere's range", it,
+                                (int)px, (int)row);
+                }
+            }
+    }
+    printf("ranges: %ld covered pixels checked (%ld spheres with R / L > 0.98, %ld pixels zoomed in on a "
+           "silhouette), %ld outside their object's range\n",
+           checked, spheres_near, zoomed_px, outside);
+    CHECK_MSG(checked > 100000 && spheres_near > 50 && zoomed_px > 50000,
+              "too few pixels exercised: %ld, %ld near spheres, %ld zoomed", checked, spheres_near, zoomed_px);
+    CHECK_MSG(outside == 0, "%ld depths outside their object's range", outside);
+}
+
 /* A random world for the row tests: 1 to 6 objects of every kind spread
  * across the view (so that on most rows each is alone; some overlap),
  * arbitrary colours, a plane in every fifth (it % 5 == 4). */
@@ -1916,6 +2040,7 @@ int main(void)
     test_world();
     test_render();
     test_render_overlap();
+    test_render_ranges();
     test_render_eye_on_box();
     test_render_coherent();
     test_render_runs();
