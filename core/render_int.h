@@ -208,10 +208,9 @@ void render_setup_object(render_t *r, uint16_t i);
 render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
 #endif
 
-/* render_vis.c, for tests: 1 when object i covers column x of row `row`
- * with a depth inside its range [tlo, thi], 0 when outside, -1 when it
- * does not cover the pixel or has no range. */
-int render_range_check(const render_t *r, uint16_t i, int32_t x, int32_t row);
+/* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
+ * which it covers (render_covers), inside its range (or has it none)? */
+bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy);
 
 /* render_vis.c: object oi also covers column x, owned so far by the owner
  * entry cur; returns true when oi is nearer (or ties with a lower id) and

@@ -3,15 +3,18 @@
 #include "render_int.h"
 #include "shade.h"
 
-/* Claim column x for object oi: free columns are taken at once, a column
- * owned by another object goes to the nearer (RESOLVE, which may use cur_),
- * and the pixel is painted when oi wins. */
+/* Claim column x for object oi: free columns are taken at once, so are
+ * columns owned by a plane that oi is nearer than all along this row
+ * (r->row_win, render_row_order), a column owned by another object goes
+ * to the nearer (RESOLVE, which may use cur_), and the pixel is painted
+ * when oi wins. */
 #define RENDER_COVER(r, oi, x, rgb, RESOLVE)                                         \
     do {                                                                         \
         uint32_t tag_ = (uint32_t)(r)->stamp << RENDER_STAMP_SHIFT, cur_ = (r)->owner[x]; \
-        if ((cur_ & ~0x1FFFFu) != tag_)                                          \
+        uint16_t ci_ = (uint16_t)cur_;                                           \
+        if ((cur_ & ~0x1FFFFu) != tag_ || (ci_ < 32 && ((r)->row_win >> ci_) & 1u)) \
             (r)->owner[x] = tag_ | (oi);                                         \
-        else if ((uint16_t)cur_ == (oi) || !(RESOLVE))                           \
+        else if (ci_ == (oi) || !(RESOLVE))                                      \
             break;                                                               \
         render_paint(r, oi, x, rgb);                                             \
     } while (0)

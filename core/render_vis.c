@@ -57,7 +57,7 @@ render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e
 
 /* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
  * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
-static bool render_depth_less(render_depth_t a, render_depth_t b)
+static inline __attribute__((always_inline)) bool render_depth_less(render_depth_t a, render_depth_t b)
 {
     uint32_t an = render_depth_n(a), bn = render_depth_n(b);
     if (an == 0 || bn == 0)
@@ -145,7 +145,12 @@ static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t
         render_sphere_cd(o, ix, iy, &c, &disc);
         return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &c, &disc);
     }
-    /* Flat pieces: the nearest face that covers the pixel. */
+    /* A plane or triangle covers the pixel (every caller asks about an
+     * object there); a box: the nearest face that covers it. */
+    if (o->kind == RENDER_FLAT) {
+        const render_flat_t *f = render_face(o, 0);
+        return render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
+    }
     render_depth_t best = render_depth_far;
     for (int i = 0; i < o->nflat; i++) {
         const render_flat_t *f = render_face(o, i);
@@ -159,18 +164,14 @@ static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t
 }
 
 
-/* Test hook: does object i cover column x of row `row`, and is its depth
- * there inside its depth range [tlo, thi]? -1: not covered or no range;
- * 1: inside; 0: outside (a range that would let render_settle decide an
- * overlap wrongly). */
-int render_range_check(const render_t *r, uint16_t i, int32_t x, int32_t row)
+/* Test hook: is object i's depth at pixel offsets (ix, iy), which it
+ * covers, inside its depth range [tlo, thi]? (A depth outside would let
+ * render_settle decide an overlap wrongly.) */
+bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy)
 {
     const render_obj_t *o = &r->obj[i];
-    int32_t ix = 2 * x - r->cam->width + 1, iy = 2 * (r->cam->height - 1 - row) - r->cam->height + 1;
-    if (!o->ranged || !render_covers(o, ix, iy))
-        return -1;
     render_depth_t t = render_depth_at(o, ix, iy);
-    return !render_depth_less(t, o->tlo) && !render_depth_less(o->thi, t);
+    return !o->ranged || (!render_depth_less(t, o->tlo) && !render_depth_less(o->thi, t));
 }
 
 /* How to get a newcomer's depth when it is needed: from the values the
@@ -208,10 +209,6 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
     const render_obj_t *a = &r->obj[ci], *b = &r->obj[oi];
     int32_t ix = 2 * x - r->cam->width + 1;
     uint32_t stamp = cur & ~0x1FFFFu;
-    if (ci < 32 && ((r->row_win >> ci) & 1u)) { /* oi is nearer than plane ci all along this row */
-        r->owner[x] = stamp | oi;
-        return true;
-    }
     bool known = (cur & RENDER_DEPTH_KNOWN) != 0;
     if (!FXRT_NO_ZRANGE && !known && a->ranged && b->ranged) {
         if (render_depth_less(a->thi, b->tlo))
