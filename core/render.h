@@ -169,6 +169,16 @@ typedef struct {
     fx128_t v, d1, d2;
     bool ortho, inside, use_c; /* inside: the eye is (every pixel covered) */
 } render_srow_t;
+
+/* The row forms of the sphere scanned last among others on the current
+ * row (object oi, from pixel offset ix0 on row iy): a depth the sphere's
+ * owner columns need later (render_depth_at) comes from them by a direct
+ * evaluation at the column instead of from the sphere's forms. */
+typedef struct {
+    render_srow_t s;
+    int32_t ix0, iy;
+    uint16_t oi;
+} render_scache_t;
 #endif
 
 /* A sphere's forms. disc = r2 a - (px^2 + py^2 + pz^2) and c: with the
@@ -256,6 +266,9 @@ typedef struct {
     uint16_t stamp;
     uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
     uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
+#if FXRT_NUMBER == FXRT_Q16
+    render_scache_t *scache; /* during render_row_vis: on its stack (else NULL) */
+#endif
 #if RENDER_VIS
     /* Shading and sampling passes: per column of the current row, the
      * object (index into obj) painted last, RENDER_VIS_NONE where none,

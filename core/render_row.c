@@ -180,24 +180,6 @@ RENDER_MAYBE_UNUSED static void render_fill(render_t *r, uint16_t oi, int32_t xa
 typedef struct {
     int32_t lo, hi;
 } render_iv_t;
-
-/* a * m exactly (mod 2^128, so exact whenever the product fits). */
-RENDER_MAYBE_UNUSED static fx128_t render_mul128_small(fx128_t a, int32_t m)
-{
-    uint32_t um = m < 0 ? 0u - (uint32_t)m : (uint32_t)m;
-    uint64_t p0 = (uint64_t)(uint32_t)a.lo * um, p1 = (a.lo >> 32) * um;
-    fx128_t r;
-    r.lo = p0 + (p1 << 32);
-    r.hi = (int64_t)((uint64_t)a.hi * um + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
-    return m < 0 ? fx128_neg(r) : r;
-}
-
-/* q(k) = v + d1 k + d2 k (k - 1) / 2: the value the forward differences
- * reach after k steps, evaluated directly (exact). */
-RENDER_MAYBE_UNUSED static fx128_t render_quad_k(fx128_t v, fx128_t d1, fx128_t d2, int32_t k)
-{
-    return fx128_add(fx128_add(v, render_mul128_small(d1, k)), render_mul128_small(d2, (int32_t)((int64_t)k * (k - 1) / 2)));
-}
 #endif
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
@@ -616,22 +598,28 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     }
 #endif
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
-    render_srow_t s;
-    render_sphere_row(r, o, ix0, iy, &s);
+    render_srow_t local, *sp = &local;
+    if (!lone && r->scache) { /* the row's forms kept for render_depth_at, while this row lasts */
+        sp = &r->scache->s;
+        r->scache->ix0 = ix0;
+        r->scache->iy = iy;
+        r->scache->oi = oi;
+    }
+    render_sphere_row(r, o, ix0, iy, sp);
     if (lone) {
         render_iv_t run[2];
-        int nrun = render_sphere_runs(o, &s, x0, x1, ix0, iy, run);
+        int nrun = render_sphere_runs(o, sp, x0, x1, ix0, iy, run);
         for (int k = 0; k < nrun; k++)
             render_fill(r, oi, x0 + run[k].lo, x0 + run[k].hi, rgb);
         return;
     }
-    if (s.inside) { /* eye inside: every pixel */
+    if (sp->inside) { /* eye inside: every pixel */
         for (int32_t x = x0; x <= x1; x++)
             render_cover(r, oi, x, iy, rgb);
         return;
     }
-    bool ortho = s.ortho, use_c = s.use_c;
-    fx128_t v = s.v, d1 = s.d1, d2 = s.d2;
+    bool ortho = sp->ortho, use_c = sp->use_c;
+    fx128_t v = sp->v, d1 = sp->d1, d2 = sp->d2;
     if (ortho) {
         /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
         fx128_t kr = fx128_add(o->u.sphere->k, o->u.sphere->r2);
@@ -1062,6 +1050,11 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
     const cam_t *cam = r->cam;
     int32_t w = cam->width, y = cam->height - 1 - row;
     int32_t iy = 2 * y - cam->height + 1;
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+    render_scache_t scache;
+    scache.oi = RENDER_VIS_NONE;
+    r->scache = &scache;
+#endif
     render_begin_row(r, rgb);
     r->dirty_lo = (int16_t)w;
     r->dirty_hi = -1;
@@ -1118,6 +1111,9 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
         r->dirty_lo = x0 < dlo ? x0 : dlo;
         r->dirty_hi = x1 > dhi ? x1 : dhi;
     }
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+    r->scache = NULL;
+#endif
 }
 
 void render_row(render_t *r, int32_t row, uint8_t *rgb)

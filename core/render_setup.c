@@ -802,6 +802,9 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     r->cam = cam;
     r->count = 0;
     r->row_win = 0;
+#if FXRT_NUMBER == FXRT_Q16
+    r->scache = NULL;
+#endif
     r->keys = NULL;
 #if FXRT_MAX_LIGHTS > 0
     r->any_lit = w->n_lit > 0;

@@ -137,11 +137,22 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
 }
 #endif
 
-/* Depth of object o at a pixel it covers, from its forms evaluated there. */
-static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t iy)
+/* Depth of object oi at a pixel it covers, from its forms evaluated there
+ * (a sphere scanned among others on this row: its disc from the row's
+ * forward differences, r->scache, the same value). */
+static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix, int32_t iy)
 {
+    const render_obj_t *o = &r->obj[oi];
     if (o->kind == RENDER_SPHERE) {
         rsw_t c, disc;
+#if FXRT_NUMBER == FXRT_Q16
+        const render_scache_t *sc = r->scache;
+        if (sc && sc->oi == oi && sc->iy == iy && !sc->s.ortho && !sc->s.inside) {
+            /* perspective: c is the constant k, v is disc */
+            disc = render_quad_k(sc->s.v, sc->s.d1, sc->s.d2, (ix - sc->ix0) / 2);
+            return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &o->u.sphere->k, &disc);
+        }
+#endif
         render_sphere_cd(o, ix, iy, &c, &disc);
         return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &c, &disc);
     }
@@ -151,10 +162,13 @@ static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t
         const render_flat_t *f = render_face(o, 0);
         return render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
     }
+    /* (A box face's pixel rectangle rules most faces out at once.) */
+    int32_t x = (ix + r->cam->width - 1) / 2, row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2;
     render_depth_t best = render_depth_far;
     for (int i = 0; i < o->nflat; i++) {
-        const render_flat_t *f = render_face(o, i);
-        if (!render_flat_at(f, ix, iy))
+        const render_face_t *fc = &o->u.face[i];
+        const render_flat_t *f = &fc->f;
+        if (x < fc->x0 || x > fc->x1 || row < fc->r0 || row > fc->r1 || !render_flat_at(f, ix, iy))
             continue;
         render_depth_t t = render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
         if (render_depth_less(t, best))
@@ -170,7 +184,7 @@ static render_depth_t render_depth_at(const render_obj_t *o, int32_t ix, int32_t
 bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy)
 {
     const render_obj_t *o = &r->obj[i];
-    render_depth_t t = render_depth_at(o, ix, iy);
+    render_depth_t t = render_depth_at(r, i, ix, iy);
     return !o->ranged || (!render_depth_less(t, o->tlo) && !render_depth_less(o->thi, t));
 }
 
@@ -184,17 +198,17 @@ typedef struct {
     const rsw_t *c, *disc;
 } render_raw_t;
 
-static render_depth_t render_raw_depth(const render_obj_t *o, int32_t ix, int32_t iy, const render_raw_t *raw)
+static render_depth_t render_raw_depth(const render_t *r, uint16_t oi, int32_t ix, int32_t iy, const render_raw_t *raw)
 {
 #if RENDER_STEPPED
     if (raw->how == RENDER_RAW_FLAT)
         return render_flat_depth(raw->f, raw->n, raw->d);
     if (raw->how == RENDER_RAW_SPHERE)
-        return render_sphere_depth(o, ix, iy, raw->b, raw->c, raw->disc);
+        return render_sphere_depth(&r->obj[oi], ix, iy, raw->b, raw->c, raw->disc);
 #else
     (void)raw;
 #endif
-    return render_depth_at(o, ix, iy);
+    return render_depth_at(r, oi, ix, iy);
 }
 
 /* Object oi also covers column x, owned so far by the entry cur: the
@@ -220,7 +234,7 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
     }
     render_depth_t ta, tb;
     if (known || FXRT_NO_ZRANGE || !a->ranged) {
-        ta = known ? r->depth[x] : render_depth_at(a, ix, iy);
+        ta = known ? r->depth[x] : render_depth_at(r, ci, ix, iy);
         if (!FXRT_NO_ZRANGE && b->ranged) {
             if (render_depth_less(ta, b->tlo)) {
                 r->depth[x] = ta;
@@ -232,9 +246,9 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
                 return true;
             }
         }
-        tb = render_raw_depth(b, ix, iy, raw);
+        tb = render_raw_depth(r, oi, ix, iy, raw);
     } else {
-        tb = render_raw_depth(b, ix, iy, raw);
+        tb = render_raw_depth(r, oi, ix, iy, raw);
         if (render_depth_less(a->thi, tb))
             return false;
         if (render_depth_less(tb, a->tlo)) {
@@ -242,7 +256,7 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
             r->owner[x] = stamp | RENDER_DEPTH_KNOWN | oi;
             return true;
         }
-        ta = render_depth_at(a, ix, iy);
+        ta = render_depth_at(r, ci, ix, iy);
     }
     bool win = render_depth_less(tb, ta) || (!render_depth_less(ta, tb) && b->id < a->id);
     r->depth[x] = win ? tb : ta;
