@@ -563,6 +563,7 @@ static int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int
 
 #if RENDER_SROWS
 static inline int render_sphere_row_runs(render_t *r, const render_obj_t *o, int32_t row, render_iv_t run[2]);
+static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row);
 
 /* A lone sphere on the row at iy (its bounds x0..x1): its forms stepped
  * from the row before and its runs searched from the row before's. */
@@ -598,14 +599,18 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     }
 #endif
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
-    render_srow_t local, *sp = &local;
-    if (!lone && r->scache) { /* the row's forms kept for render_depth_at, while this row lasts */
-        sp = &r->scache->s;
-        r->scache->ix0 = ix0;
-        r->scache->iy = iy;
-        r->scache->oi = oi;
-    }
-    render_sphere_row(r, o, ix0, iy, sp);
+    /* The row's forms, in r->scache (render_row_vis's): kept for
+     * render_depth_at while this row lasts (a lone sphere owns no column). */
+    render_srow_t *sp = &r->scache->s;
+    r->scache->ix0 = ix0;
+    r->scache->iy = iy;
+    r->scache->oi = lone ? RENDER_VIS_NONE : oi;
+#if RENDER_SROWS
+    if (!lone && r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES) /* stepped from the row before */
+        *sp = *render_sphere_row_at(r, o, r->cam->height - 1 - (iy + r->cam->height - 1) / 2);
+    else
+#endif
+        render_sphere_row(r, o, ix0, iy, sp);
     if (lone) {
         render_iv_t run[2];
         int nrun = render_sphere_runs(o, sp, x0, x1, ix0, iy, run);

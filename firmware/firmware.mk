@@ -27,6 +27,12 @@ FB_mps2-an385 := full
 FB_mps2-an386 := full
 FB_microbit   := stream
 FB ?= $(FB_$(BOARD))
+# Boards with RAM to spare (4 MB) keep every sphere's row-coherence state
+# (fxrt-scenec --sphere-rows, 120 B a sphere); the micro:bit's 16 KB keep
+# it only in scenes of at most FXRT_LONE_MAX objects.
+SCENEC_OPTS_mps2-an385 := --sphere-rows
+SCENEC_OPTS_mps2-an386 := --sphere-rows
+SCENEC_OPTS_microbit   :=
 
 FB_MODES := full stream
 
@@ -92,7 +98,7 @@ $(FW_DIR)/scene-path: FORCE
 $(FW_DIR)/scene_data.h: $(SCENE_DEP) $(BUILD)/fxrt-scenec $(FW_DIR)/scene-path
 	@mkdir -p $(@D)
 	@echo "  SCENEC  $(SCENE) -> $(@D)"
-	$(Q)$(BUILD)/fxrt-scenec '$(SCENE)' --number $(NUMBER) --size $(SIZE) --out $(@D) $(if $(FW_ALL_KINDS),--all-kinds)
+	$(Q)$(BUILD)/fxrt-scenec '$(SCENE)' --number $(NUMBER) --size $(SIZE) --out $(@D) $(if $(FW_ALL_KINDS),--all-kinds) $(SCENEC_OPTS_$(BOARD))
 $(FW_DIR)/scene_config.h: $(FW_DIR)/scene_data.h
 
 # Rebuild when the flags change (the directory name does not encode them all).

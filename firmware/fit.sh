@@ -82,13 +82,16 @@ trial_link() {
 # (KIND base: the scene's capacities) into $WORK/KIND-CAP/, link it; prints
 # "RAM FLASH". A probe is a scene of many objects, so its spheres keep no
 # row-coherence state (FXRT_COHERENT_SPHERES 0), as the scene compiler
-# would emit for it; its flat pieces keep their guesses.
+# would emit for it, unless the scene keeps it for every sphere
+# (--sphere-rows: FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES, which the probe
+# keeps); its flat pieces keep their guesses.
 probe() {
     local kind=$1 cap=$2 pdir=$WORK/$1-$2 s flags=() pids=()
     mkdir -p "$pdir"
     sed -E -e "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
-        -e '/^#define FXRT_(COHERENT_SPHERES|NO_COHERENCE) /d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
-    printf '#define FXRT_COHERENT_SPHERES 0\n' >>"$pdir/scene_config.h"
+        -e '/^#define FXRT_(COHERENT_SPHERES [0-9]|NO_COHERENCE )/d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
+    grep -q '^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES' "$pdir/scene_config.h" ||
+        printf '#define FXRT_COHERENT_SPHERES 0\n' >>"$pdir/scene_config.h"
     # A box brings its faces: when the scene compiler sized the face pool
     # (FXRT_RENDER_BOX_FACES, the faces this camera needs), the extra boxes
     # get as many faces as the scene's boxes have on average, so the per-box

@@ -18,6 +18,7 @@
 
 static const char usage[] =
     "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR [--all-kinds]\n"
+    "                   [--sphere-rows]\n"
     "\n"
     "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT/OBJECTS/LIGHTS,\n"
     "FXRT_SHADOWS, FXRT_PHONG, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES, FXRT_ADAPTIVE) and\n"
@@ -33,9 +34,12 @@ static const char usage[] =
     "the scene's samples N (FXRT_RENDER_MAX_WIDTH N x width); FXRT_ADAPTIVE 1 only\n"
     "for 'samples N adaptive'. FXRT_COHERENT_SPHERES is the scene's spheres, or 0\n"
     "when the scene has more than FXRT_LONE_MAX objects (none is ever alone on\n"
-    "its row, so the spheres keep no row-coherence state).\n"
+    "its row, so the spheres keep no row-coherence state, 120 B each).\n"
     "--all-kinds keeps every primitive kind compiled in (capacity >= 1), to\n"
-    "measure what stripping the unused ones saves.\n";
+    "measure what stripping the unused ones saves.\n"
+    "--sphere-rows keeps every sphere's row-coherence state whatever the scene's\n"
+    "size (FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES), for boards with RAM to spare:\n"
+    "a sphere among other objects then steps its row forms down the rows.\n";
 
 static int fail(const char *msg, const char *arg)
 {
@@ -48,7 +52,7 @@ int main(int argc, char **argv)
     const char *path = NULL, *out = NULL;
     engine_number_t num = ENGINE_Q16;
     int w = 0, h = 0;
-    bool all_kinds = false;
+    unsigned opts = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -66,7 +70,9 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--out")) {
             out = argv[++i];
         } else if (!strcmp(a, "--all-kinds")) {
-            all_kinds = true;
+            opts |= SCENEC_ALL_KINDS;
+        } else if (!strcmp(a, "--sphere-rows")) {
+            opts |= SCENEC_SPHERE_ROWS;
         } else if (a[0] == '-') {
             return fail("unknown option ", a);
         } else if (!path) {
@@ -99,9 +105,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "fxrt-scenec: cannot write into %s\n", out);
         rc = 2;
     } else {
-        int e = num == ENGINE_Q16     ? scenec_emit_q16(cfg, data, path, &sc, w, h, all_kinds, err, sizeof err)
-                : num == ENGINE_FLOAT ? scenec_emit_float(cfg, data, path, &sc, w, h, all_kinds, err, sizeof err)
-                                      : scenec_emit_double(cfg, data, path, &sc, w, h, all_kinds, err, sizeof err);
+        int e = num == ENGINE_Q16     ? scenec_emit_q16(cfg, data, path, &sc, w, h, opts, err, sizeof err)
+                : num == ENGINE_FLOAT ? scenec_emit_float(cfg, data, path, &sc, w, h, opts, err, sizeof err)
+                                      : scenec_emit_double(cfg, data, path, &sc, w, h, opts, err, sizeof err);
         if (e) {
             fprintf(stderr, "%s\n", err);
             rc = 2;

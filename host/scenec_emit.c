@@ -80,8 +80,9 @@ static unsigned scenec_cap(unsigned n, bool all_kinds)
 }
 
 int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene_t *sc, int width,
-                            int height, bool all_kinds, char *err, size_t errlen)
+                            int height, unsigned opts, char *err, size_t errlen)
 {
+    bool all_kinds = (opts & SCENEC_ALL_KINDS) != 0;
     /* Build once here as the host does, so that a scene the core refuses
      * fails now, with its line, and to count the objects per kind. */
     static world_t w;
@@ -99,10 +100,13 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
             scenec_cap(w.n_triangles, all_kinds), scenec_cap(w.n_boxes, all_kinds));
     fprintf(cfg, "#define SCENE_WIDTH %d\n#define SCENE_HEIGHT %d\n", width, height);
     fprintf(cfg, "#define SCENE_OBJECTS %d\n", d.count);
-    /* A sphere's row-coherence state pays only where it can be alone on
-     * its row: in a world of at most FXRT_LONE_MAX objects. The flat
-     * pieces' guesses serve every flat piece that locates its runs. */
-    if (d.count > FXRT_LONE_MAX)
+    /* A sphere's row-coherence state (120 B) steps its row forms down the
+     * rows; where RAM is short, only in a world of at most FXRT_LONE_MAX
+     * objects, where a sphere can be alone on its row and gain most. The
+     * flat pieces' guesses serve every flat piece that locates its runs. */
+    if (opts & SCENEC_SPHERE_ROWS)
+        fprintf(cfg, "#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES\n");
+    else if (d.count > FXRT_LONE_MAX)
         fprintf(cfg, "#define FXRT_COHERENT_SPHERES 0\n");
     else
         fprintf(cfg, "#define FXRT_COHERENT_SPHERES %u\n", (unsigned)w.n_spheres);
