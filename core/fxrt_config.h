@@ -140,6 +140,20 @@
 #error "FXRT_RENDER_BOX_FACES must be at least 1 when boxes are enabled"
 #endif
 
+/* Back faces of closed meshes (core/render_setup.c, render_cull_meshes):
+ * in worlds of 4 to FXRT_MESH_MAX triangles (at most 255), the triangles
+ * are matched edge to edge once per frame set-up (about T^2 / 2 vertex
+ * compares), and a closed, consistently wound, convex set of them seen in
+ * perspective from outside its bounding box leaves out its triangles that
+ * face away from the eye. 2 B of RAM per triangle of FXRT_MAX_TRIANGLES
+ * (render_t); 0 turns it off. Default 128. */
+#ifndef FXRT_MESH_MAX
+#define FXRT_MESH_MAX 128
+#endif
+#if FXRT_MESH_MAX < 0 || FXRT_MESH_MAX > 255
+#error "FXRT_MESH_MAX must be 0..255"
+#endif
+
 /* Objects alone on their row (the fast renderer fills their spans without
  * the per-column owner bookkeeping) are looked for only in worlds of at
  * most FXRT_LONE_MAX objects: the test looks at every pair of objects on

@@ -120,6 +120,13 @@ typedef struct {
  * per column. */
 #define RENDER_RUNS (FXRT_MAX_SAMPLES > 1 && RENDER_COHERENT)
 
+/* Back-face culling of closed meshes (render_cull_meshes): scratch for
+ * every triangle (2 B each, so that RAM grows with the capacity alone),
+ * used in worlds of 4 to FXRT_MESH_MAX of them. */
+#define RENDER_MESH (FXRT_MESH_MAX >= 4 && FXRT_MAX_TRIANGLES >= 4)
+#define RENDER_MESH_CAP FXRT_MAX_TRIANGLES
+#define RENDER_MESH_CULLED 0x40u /* mesh_bits: a back face this frame */
+
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
     render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
@@ -268,6 +275,12 @@ typedef struct {
     uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
 #if FXRT_NUMBER == FXRT_Q16
     render_scache_t *scache; /* during render_row_vis: on its stack (else NULL) */
+#endif
+#if RENDER_MESH
+    /* Per triangle: union-find parent and matched edges, flags, culled
+     * (render_cull_meshes; render_setup_object keeps a culled one out). */
+    uint8_t mesh_up[RENDER_MESH_CAP];
+    uint8_t mesh_bits[RENDER_MESH_CAP];
 #endif
 #if RENDER_VIS
     /* Shading and sampling passes: per column of the current row, the

@@ -1778,6 +1778,117 @@ static void test_render_ranges(void)
     CHECK_MSG(outside == 0, "%ld depths outside their object's range", outside);
 }
 
+/* Closed meshes (render_cull_meshes): an octahedron, an icosahedron and a
+ * cube of 12 triangles, randomly scaled, turned and placed, wound outward
+ * or inward, in front of a plane; some with one triangle dropped (open),
+ * one triangle's winding flipped (inconsistent) or the octahedron's top
+ * pushed below its waist (closed but not convex); the eye outside the
+ * mesh's box, or at its centre; both camera kinds. render_row must equal
+ * render_row_reference byte for byte and every pixel away from silhouettes
+ * and near ties must show the kernels' nearest object (which never leave
+ * a triangle out). Culling must happen exactly where the rule allows it:
+ * some back faces in every closed convex mesh seen in perspective from
+ * outside its box, none anywhere else. Cap: 0 wrong. */
+static void test_render_meshes(void)
+{
+    static const double ico_v[12][3] = {
+        {-1, 1.618, 0}, {1, 1.618, 0}, {-1, -1.618, 0}, {1, -1.618, 0}, {0, -1, 1.618}, {0, 1, 1.618},
+        {0, -1, -1.618}, {0, 1, -1.618}, {1.618, 0, -1}, {1.618, 0, 1}, {-1.618, 0, -1}, {-1.618, 0, 1}};
+    static const uint8_t ico_f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                         {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                         {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                         {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7}, {9, 8, 1}};
+    static const double oct_v[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const uint8_t oct_f[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                        {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    static const double cube_v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                        {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    static const uint8_t cube_f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                                          {2, 3, 7}, {2, 7, 6}, {1, 2, 6}, {1, 6, 5}, {0, 4, 7}, {0, 7, 3}};
+    uint64_t st = 0x3e5ec0117ull;
+    static int ids[OH][OW];
+    static rgb8_t want[OH][OW];
+    static bool tie[OH][OW];
+    frame_tally_t tally = {0, 0, 0, 0};
+    long culled_ok = 0, culled_bad = 0, convex_views = 0;
+    for (int it = 0; it < 240; it++) {
+        int shape = it % 3, variant = (it / 3) % 5; /* 0, 1: closed; 2 open; 3 inconsistent; 4 not convex */
+        const double(*v)[3] = shape == 0 ? oct_v : (shape == 1 ? ico_v : cube_v);
+        const uint8_t(*f)[3] = shape == 0 ? oct_f : (shape == 1 ? ico_f : cube_f);
+        int nv = shape == 0 ? 6 : (shape == 1 ? 12 : 8), nf = shape == 0 ? 8 : (shape == 1 ? 20 : 12);
+        if (variant == 4 && shape != 0)
+            variant = 0;
+        double scale = orand(&st, 0.5, 2), cx = orand(&st, -1, 1), cy = orand(&st, -1, 1), cz = orand(&st, -9, -5);
+        double ang = orand(&st, 0, 2 * PI), tilt = orand(&st, -1, 1);
+        vec3_t pv[12];
+        for (int k = 0; k < nv; k++) {
+            double x = v[k][0], y = v[k][1], z = v[k][2];
+            if (variant == 4 && k == 4)
+                z = -0.5; /* the top below the waist: a closed bowl */
+            double x1 = x * cos(ang) - z * sin(ang), z1 = x * sin(ang) + z * cos(ang);
+            double y1 = y * cos(tilt) - z1 * sin(tilt), z2 = y * sin(tilt) + z1 * cos(tilt);
+            pv[k] = V3(cx + scale * x1, cy + scale * y1, cz + scale * z2); /* shared vertices: the same numbers */
+        }
+        world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
+        uint16_t id = 0;
+        if (geom_plane_make(&world.planes[0], V3(0, 0, -20), V3(0, 0.2, 1), col(0.3, 0.4, 0.5), id))
+            world.n_planes = 1, id++;
+        bool inward = check_rng_next(&st) % 2;
+        int drop = variant == 2 ? (int)(check_rng_next(&st) % (uint64_t)nf) : -1;
+        int flip = variant == 3 ? (int)(check_rng_next(&st) % (uint64_t)nf) : -1;
+        for (int k = 0; k < nf; k++) {
+            if (k == drop)
+                continue;
+            bool rev = inward != (k == flip);
+            vec3_t a = pv[f[k][0]], b = pv[f[k][rev ? 2 : 1]], c = pv[f[k][rev ? 1 : 2]];
+            if (geom_triangle_make(&world.triangles[world.n_triangles], a, b, c,
+                                   col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_triangles++, id++;
+        }
+        bool ortho = it % 7 == 6, eye_in = it % 11 == 10;
+        vec3_t eye = eye_in ? V3(cx, cy, cz) : V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, 0, 2));
+        vec3_t gaze = eye_in ? V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1))
+                             : V3(cx - D(eye.x), cy - D(eye.y), cz - D(eye.z));
+        cam_t c;
+        if (cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, eye, gaze, V3(0, 1, 0), N(orand(&st, 30, 70)),
+                      N(orand(&st, 4, 8)), OW, OH) != CAM_OK)
+            continue;
+        static render_t state;
+        CHECK(render_setup(&state, &world, &c));
+        int culled = 0;
+#if RENDER_MESH
+        for (int k = 0; k < world.n_triangles; k++)
+            culled += (state.mesh_bits[k] & RENDER_MESH_CULLED) != 0;
+#endif
+        bool may = variant <= 1 && !ortho && !eye_in; /* closed, convex, seen from outside its box */
+        if (may) {
+            convex_views++;
+            culled_ok += culled > 0;
+        }
+        if (!may && culled) {
+            culled_bad++;
+            CHECK_SWEEP(false, "mesh %d (shape %d, variant %d, %s%s): %d triangles culled, none allowed", it, shape,
+                        variant, ortho ? "ortho" : "persp", eye_in ? ", eye inside" : "", culled);
+        }
+        oracle_frame(&c, OW, OH, ids, want, tie);
+        char what[64];
+        snprintf(what, sizeof what, "mesh %d (shape %d, variant %d)", it, shape, variant);
+        check_frame(&state, ids, want, tie, what, &tally);
+    }
+    printf("meshes: %ld closed convex views from outside, %ld with back faces culled; %ld other meshes culled; "
+           "%ld interior pixels checked, %ld wrong, %ld rows fast != reference\n",
+           convex_views, culled_ok, culled_bad, tally.interior, tally.interior_bad, tally.rows_bad);
+#if RENDER_MESH
+    CHECK_MSG(convex_views > 50 && culled_ok == convex_views, "back faces culled in %ld of %ld closed convex views",
+              culled_ok, convex_views);
+#endif
+    CHECK_MSG(culled_bad == 0, "%ld meshes culled that the rule excludes", culled_bad);
+    CHECK_MSG(tally.interior > 20000, "too few pixels exercised: %ld", tally.interior);
+    CHECK_MSG(tally.interior_bad == 0, "%ld interior pixels differ from the kernels' nearest object",
+              tally.interior_bad);
+    CHECK_MSG(tally.rows_bad == 0, "%ld rows differ between render_row and render_row_reference", tally.rows_bad);
+}
+
 /* A random world for the row tests: 1 to 6 objects of every kind spread
  * across the view (so that on most rows each is alone; some overlap),
  * arbitrary colours, a plane in every fifth (it % 5 == 4). */
@@ -2051,6 +2162,7 @@ int main(void)
     test_render();
     test_render_overlap();
     test_render_ranges();
+    test_render_meshes();
     test_render_eye_on_box();
     test_render_coherent();
     test_render_runs();
