@@ -124,7 +124,6 @@ typedef struct {
  * every triangle (2 B each, so that RAM grows with the capacity alone),
  * used in worlds of 4 to FXRT_MESH_MAX of them. */
 #define RENDER_MESH (FXRT_MESH_MAX >= 4 && FXRT_MAX_TRIANGLES >= 4)
-#define RENDER_MESH_CAP FXRT_MAX_TRIANGLES
 #define RENDER_MESH_CULLED 0x40u /* mesh_bits: a back face this frame */
 
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
@@ -279,8 +278,8 @@ typedef struct {
 #if RENDER_MESH
     /* Per triangle: union-find parent and matched edges, flags, culled
      * (render_cull_meshes; render_setup_object keeps a culled one out). */
-    uint8_t mesh_up[RENDER_MESH_CAP];
-    uint8_t mesh_bits[RENDER_MESH_CAP];
+    uint8_t mesh_up[FXRT_MAX_TRIANGLES];
+    uint8_t mesh_bits[FXRT_MAX_TRIANGLES];
 #endif
 #if RENDER_VIS
     /* Shading and sampling passes: per column of the current row, the

@@ -559,7 +559,7 @@ __attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t 
     if (!render_flat_eye(cam, t->a, t->n, f))
         render_set_empty(o); /* the eye in the triangle's plane */
 #if RENDER_MESH
-    if (o->index < RENDER_MESH_CAP && (r->mesh_bits[o->index] & RENDER_MESH_CULLED)) {
+    if (r->mesh_bits[o->index] & RENDER_MESH_CULLED) {
         o->nflat = 0; /* a back face of a closed mesh (render_cull_meshes) */
         render_set_empty(o);
     }
@@ -1028,7 +1028,7 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
         r->owner[x] = 0;
     r->stamp = 0;
 #if RENDER_MESH
-    for (uint16_t i = 0; i < RENDER_MESH_CAP; i++)
+    for (uint16_t i = 0; i < FXRT_MAX_TRIANGLES; i++)
         r->mesh_bits[i] = 0; /* nothing culled while the objects are set up */
 #endif
 #if FXRT_MAX_PLANES > 0
