@@ -741,6 +741,34 @@ static int render_mesh_side(vec3_t a, vec3_t b, vec3_t c, vec3_t p, render_vol_t
 
 static bool render_mesh_eq(vec3_t p, vec3_t q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
 
+/* A key that equal vertices share (and unequal ones rarely): one number
+ * from the three coordinates. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef uint32_t render_mesh_key_t;
+static inline render_mesh_key_t render_mesh_key(const vec3_t *p)
+{
+    return (uint32_t)p->x + ((uint32_t)p->y << 3) + ((uint32_t)p->z << 6);
+}
+#else
+typedef num_t render_mesh_key_t; /* (+0 and -0 give one key, as they compare equal) */
+static inline render_mesh_key_t render_mesh_key(const vec3_t *p) { return p->x + NUM(3.0) * p->y + NUM(7.0) * p->z; }
+#endif
+
+/* The first of the triangles t..end-1 whose a or b has one of the keys
+ * of a triangle's vertices (a pair with fewer has fewer than two vertices
+ * in common), else end. Its own loop: few registers. */
+static const geom_triangle_t *render_mesh_next(const geom_triangle_t *t, const geom_triangle_t *end,
+                                               const render_mesh_key_t key[3])
+{
+    render_mesh_key_t x0 = key[0], x1 = key[1], x2 = key[2];
+    for (; t < end; t++) {
+        render_mesh_key_t y0 = render_mesh_key(&t->a), y1 = render_mesh_key(&t->b);
+        if (y0 == x0 || y0 == x1 || y0 == x2 || y1 == x0 || y1 == x1 || y1 == x2)
+            return t;
+    }
+    return end;
+}
+
 static uint8_t render_mesh_root(uint8_t *up, uint8_t i)
 {
     while (up[i] != i) {
@@ -772,17 +800,17 @@ __attribute__((noinline)) static void render_cull_meshes(render_t *r)
     }
     /* Edges: matched pairs join their triangles; the far vertex of each
      * neighbour tells the side of the dihedral angle. A pair shares an
-     * edge only where two of their vertices are equal: the 3 x 3 vertex
-     * equalities first (most fail at x). */
+     * edge only where two of their vertices are equal: the vertices'
+     * keys first (most pairs share none), then the 3 x 3 vertex
+     * equalities. */
     for (uint16_t i = 0; i < n; i++) {
         const geom_triangle_t *ti = &w->triangles[i];
         const vec3_t *vi[3] = {&ti->a, &ti->b, &ti->c};
-        num_t x0 = ti->a.x, x1 = ti->b.x, x2 = ti->c.x;
-        for (uint16_t j = (uint16_t)(i + 1); j < n; j++) {
-            const geom_triangle_t *tj = &w->triangles[j];
-            num_t y0 = tj->a.x, y1 = tj->b.x;
-            if (!(y0 == x0 || y0 == x1 || y0 == x2) && !(y1 == x0 || y1 == x1 || y1 == x2))
-                continue; /* neither a nor b of j is a vertex of i: fewer than two shared */
+        render_mesh_key_t key[3] = {render_mesh_key(&ti->a), render_mesh_key(&ti->b), render_mesh_key(&ti->c)};
+        const geom_triangle_t *end = w->triangles + n;
+        for (const geom_triangle_t *tj = render_mesh_next(ti + 1, end, key); tj < end;
+             tj = render_mesh_next(tj + 1, end, key)) {
+            uint16_t j = (uint16_t)(tj - w->triangles);
             const vec3_t *vj[3] = {&tj->a, &tj->b, &tj->c};
             unsigned eq = 0, neq = 0; /* bit 3 ei + ej: vertex ei of i is vertex ej of j */
             for (int ei = 0; ei < 3; ei++)
