@@ -168,11 +168,12 @@
 /* Spheres that keep row-coherence state (fast Q16.16 renderer, about
  * 120 B each; FXRT_NO_COHERENCE below): the spheres with index 0 ..
  * FXRT_COHERENT_SPHERES - 1; the others find their runs from scratch. A
- * sphere uses it only when alone on its row, which needs a world of at
- * most FXRT_LONE_MAX objects, so the default is the smaller of
+ * sphere alone on its row fills its runs from it; among others it takes
+ * its row forms and runs from it too. Objects are alone only in worlds of
+ * at most FXRT_LONE_MAX objects, so the default is the smaller of
  * FXRT_MAX_SPHERES and FXRT_LONE_MAX. fxrt-scenec writes the scene's
- * sphere count, or 0 for a scene of more than
- * FXRT_LONE_MAX objects, where no object is ever alone. */
+ * sphere count, or 0 for a scene of more than FXRT_LONE_MAX objects
+ * (all of them with --sphere-rows, which the MPS2 firmware uses). */
 #ifndef FXRT_COHERENT_SPHERES
 #define FXRT_COHERENT_SPHERES (FXRT_MAX_SPHERES < FXRT_LONE_MAX ? FXRT_MAX_SPHERES : FXRT_LONE_MAX)
 #endif

@@ -39,6 +39,7 @@
 #define render_depth_make FXRT_SYM(render_depth_make)
 #define render_resolve FXRT_SYM(render_resolve)
 #define render_resolve_flat FXRT_SYM(render_resolve_flat)
+#define render_resolve_box FXRT_SYM(render_resolve_box)
 #define render_resolve_sphere FXRT_SYM(render_resolve_sphere)
 #define render_row_order FXRT_SYM(render_row_order)
 #define render_range_check FXRT_SYM(render_range_check)

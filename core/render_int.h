@@ -226,7 +226,64 @@ void render_setup_object(render_t *r, uint16_t i);
 /* render_vis.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
  * and a denominator d > 0, truncated to 24 bits each. */
 render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
+
+#define RENDER_DEPTH_ONE (1u << 23)
+#define RENDER_DEPTH_EMAX 126 /* exponents clamp to +-126 (t beyond 2^+-126) */
+
+#define RENDER_DEPTH(n, d, e) ((uint64_t)(d) << 32 | (uint64_t)(uint8_t)(int8_t)(e) << 24 | (uint64_t)(n))
+static inline uint32_t render_depth_n(render_depth_t t) { return (uint32_t)t & 0xffffffu; }
+static inline int render_depth_e(render_depth_t t) { return (int8_t)(uint8_t)((uint32_t)t >> 24); }
+static inline uint32_t render_depth_d(render_depth_t t) { return (uint32_t)(t >> 32); }
+
+/* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
+ * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
+static inline __attribute__((always_inline)) bool render_depth_less(render_depth_t a, render_depth_t b)
+{
+    uint32_t an = render_depth_n(a), bn = render_depth_n(b);
+    if (an == 0 || bn == 0)
+        return an == 0 && bn != 0;
+    int32_t de = (int32_t)render_depth_e(a) - (int32_t)render_depth_e(b);
+    if (de >= 2)
+        return false;
+    if (de <= -2)
+        return true;
+    uint64_t l = fx_umul32(an, render_depth_d(b)), g = fx_umul32(bn, render_depth_d(a));
+    if (de == 1)
+        l <<= 1;
+    else if (de == -1)
+        g <<= 1;
+    return l < g;
+}
+#else
+static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
 #endif
+
+/* The depth ranges' part of render_settle (render_vis.c), inline in the
+ * render_resolve functions ahead of its set-up: object oi also covers
+ * column x, owned by the entry cur.
+ * Returns 1 when oi's range lies wholly in front of the owner's (range,
+ * or depth when it is known) and oi has taken the column, 0 when wholly
+ * behind, -1 when the ranges do not decide. */
+static inline __attribute__((always_inline)) int render_settle_quick(render_t *r, uint32_t cur, uint16_t oi, int32_t x)
+{
+    const render_obj_t *a = &r->obj[(uint16_t)cur], *b = &r->obj[oi];
+    if (FXRT_NO_ZRANGE || !b->ranged)
+        return -1;
+    render_depth_t alo, ahi;
+    if (cur & RENDER_DEPTH_KNOWN)
+        alo = ahi = r->depth[x];
+    else if (a->ranged)
+        alo = a->tlo, ahi = a->thi;
+    else
+        return -1;
+    if (render_depth_less(ahi, b->tlo))
+        return 0;
+    if (render_depth_less(b->thi, alo)) {
+        r->owner[x] = (cur & ~0x1FFFFu) | oi;
+        return 1;
+    }
+    return -1;
+}
 
 /* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */
@@ -240,6 +297,9 @@ bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t i
 #if RENDER_STEPPED
 bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                          render_k_t n, render_k_t d);
+/* A box, found covering the pixel by its face f, with f's N and D there. */
+bool render_resolve_box(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+                        render_k_t n, render_k_t d);
 bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
                            const rsw_t *disc);
 #endif

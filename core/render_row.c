@@ -370,20 +370,14 @@ static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 }
 #endif
 
-/* A flat piece among others locates its runs from this many columns on (0
- * to 16 measured alike on the bench set; below, stepping is as cheap). */
-#define RENDER_CLAIM_MIN 8
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
-/* Columns a..b of flat piece f of object oi, all covered by it (located
- * exactly): columns no object has reached yet on this row (outside
- * r->dirty_lo..dirty_hi) are claimed and filled without looking; each of
- * the rest settles its owner, with f's depth from N and D stepped along
- * the run (single: f is its object's only piece; a box's depth is the
- * nearest of its faces there, from render_resolve). */
-static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
-                             uint8_t *rgb, bool single)
+/* Columns *a..*b, all covered by object oi: those no object has reached
+ * yet on this row (outside r->dirty_lo..dirty_hi) are claimed and filled
+ * without looking; *a..*b becomes the rest (false when empty). */
+static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb, uint8_t *rgb)
 {
     uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
+    int32_t a = *pa, b = *pb;
     int32_t fb = b < r->dirty_lo ? b : r->dirty_lo - 1;
     if (a <= fb) {
         for (int32_t x = a; x <= fb; x++)
@@ -398,18 +392,36 @@ static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, i
         render_fill(r, oi, fa, b, rgb);
         b = fa - 1;
     }
-    if (a > b)
+    *pa = a;
+    *pb = b;
+    return a <= b;
+}
+#endif
+
+/* A flat piece among others locates its runs from this many columns on (0
+ * to 16 measured alike on the bench set; below, stepping is as cheap). */
+#define RENDER_CLAIM_MIN 8
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
+/* Columns a..b of flat piece f of object oi, all covered by it (located
+ * exactly): columns no object has reached yet are claimed and filled
+ * without looking (render_claim_free); each of the rest settles its owner, with f's depth from N and D stepped along
+ * the run (single: f is its object's only piece; a box's depth is the
+ * nearest of its faces there, f's among them: render_resolve_box). */
+static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
+                             uint8_t *rgb, bool single)
+{
+    if (!render_claim_free(r, oi, &a, &b, rgb))
         return;
-    if (!single) {
-        for (int32_t x = a; x <= b; x++)
-            render_cover(r, oi, x, iy, rgb);
-        return;
-    }
     int32_t ix = 2 * a - r->cam->width + 1;
     uint64_t n = (uint64_t)rlin_at(&f->n, ix, iy), d = (uint64_t)rlin_at(&f->d, ix, iy);
     uint64_t sn = 2 * (uint64_t)f->n.x, sd = 2 * (uint64_t)f->d.x;
-    for (int32_t x = a; x <= b; x++, n += sn, d += sd)
-        RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
+    if (single) {
+        for (int32_t x = a; x <= b; x++, n += sn, d += sd)
+            RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
+    } else {
+        for (int32_t x = a; x <= b; x++, n += sn, d += sd)
+            RENDER_COVER(r, oi, x, rgb, render_resolve_box(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
+    }
 }
 #endif
 
@@ -470,10 +482,10 @@ static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
         if (in && (((render_k_t)n > 0 && (render_k_t)d > 0) || ((render_k_t)n < 0 && (render_k_t)d < 0))) {
             if (lone)
                 render_paint(r, oi, x, rgb);
-            else if (single) /* a box's depth is the nearest of its faces there */
+            else if (single)
                 RENDER_COVER(r, oi, x, rgb, render_resolve_flat(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
-            else
-                render_cover(r, oi, x, iy, rgb);
+            else /* a box's depth is the nearest of its faces there */
+                RENDER_COVER(r, oi, x, rgb, render_resolve_box(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
         }
         n += sn;
         d += sd;
@@ -564,6 +576,8 @@ static int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int
 #if RENDER_SROWS
 static inline int render_sphere_row_runs(render_t *r, const render_obj_t *o, int32_t row, render_iv_t run[2]);
 static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row);
+static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row, const render_srow_t *s,
+                                 render_iv_t run[2]);
 
 /* A lone sphere on the row at iy (its bounds x0..x1): its forms stepped
  * from the row before and its runs searched from the row before's. */
@@ -623,6 +637,33 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
             render_cover(r, oi, x, iy, rgb);
         return;
     }
+#if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_SROWS)
+#if RENDER_SROWS
+    bool located = r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES;
+#else
+    bool located = true;
+#endif
+    if (!sp->ortho && located) {
+        /* Perspective: its runs located exactly (from the row before's
+         * where it keeps row state), then claimed like a flat piece's;
+         * a depth, where an owner needs one, comes from r->scache. */
+        render_iv_t run[2];
+        int nrun;
+#if RENDER_SROWS
+        if (located)
+            nrun = render_sphere_runs_at(r, o, r->cam->height - 1 - (iy + r->cam->height - 1) / 2, sp, run);
+        else
+#endif
+            nrun = render_sphere_runs(o, sp, x0, x1, ix0, iy, run);
+        for (int k = 0; k < nrun; k++) {
+            int32_t a = x0 + run[k].lo, b = x0 + run[k].hi;
+            if (render_claim_free(r, oi, &a, &b, rgb))
+                for (int32_t x = a; x <= b; x++)
+                    render_cover(r, oi, x, iy, rgb);
+        }
+        return;
+    }
+#endif
     bool ortho = sp->ortho, use_c = sp->use_c;
     fx128_t v = sp->v, d1 = sp->d1, d2 = sp->d2;
     if (ortho) {

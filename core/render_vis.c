@@ -28,14 +28,6 @@ static uint32_t render_top24(uint64_t hi, uint64_t lo, int *e)
     return (uint32_t)((lo >> s) | (hi << 1 << (63 - s)));
 }
 
-#define RENDER_DEPTH_ONE (1u << 23)
-#define RENDER_DEPTH_EMAX 126 /* exponents clamp to +-126 (t beyond 2^+-126) */
-
-#define RENDER_DEPTH(n, d, e) ((uint64_t)(d) << 32 | (uint64_t)(uint8_t)(int8_t)(e) << 24 | (uint64_t)(n))
-static inline uint32_t render_depth_n(render_depth_t t) { return (uint32_t)t & 0xffffffu; }
-static inline int render_depth_e(render_depth_t t) { return (int8_t)(uint8_t)((uint32_t)t >> 24); }
-static inline uint32_t render_depth_d(render_depth_t t) { return (uint32_t)(t >> 32); }
-
 static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
 {
     e = e > RENDER_DEPTH_EMAX ? RENDER_DEPTH_EMAX : (e < -RENDER_DEPTH_EMAX ? -RENDER_DEPTH_EMAX : e);
@@ -53,26 +45,6 @@ render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e
     if (tn == 0)
         return render_depth_pack(0, RENDER_DEPTH_ONE, 0);
     return render_depth_pack(tn, td, e + en - ed);
-}
-
-/* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
- * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
-static inline __attribute__((always_inline)) bool render_depth_less(render_depth_t a, render_depth_t b)
-{
-    uint32_t an = render_depth_n(a), bn = render_depth_n(b);
-    if (an == 0 || bn == 0)
-        return an == 0 && bn != 0;
-    int32_t de = (int32_t)render_depth_e(a) - (int32_t)render_depth_e(b);
-    if (de >= 2)
-        return false;
-    if (de <= -2)
-        return true;
-    uint64_t l = fx_umul32(an, render_depth_d(b)), g = fx_umul32(bn, render_depth_d(a));
-    if (de == 1)
-        l <<= 1;
-    else if (de == -1)
-        g <<= 1;
-    return l < g;
 }
 
 static const render_depth_t render_depth_far = RENDER_DEPTH(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
@@ -113,7 +85,6 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
     return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere->ta);
 }
 #else
-static bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
 static const render_depth_t render_depth_far = {NUM_MAX};
 static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, render_k_t d)
 {
@@ -136,6 +107,43 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
     return t;
 }
 #endif
+
+/* Depth of box (or RENDER_ALL) o at a pixel it covers: the nearest of
+ * its faces that cover it. known: a face known to cover it, with its N
+ * and D there (NULL: none). A face's pixel rectangle rules most faces out
+ * at once; since the box covers the pixel, when neither known nor an
+ * earlier candidate face does, the last candidate must: its coverage is
+ * not tested (a RENDER_ALL box's always is). */
+static render_depth_t render_box_depth(const render_t *r, const render_obj_t *o, int32_t ix, int32_t iy,
+                                       const render_flat_t *known, render_k_t kn, render_k_t kd)
+{
+    int32_t x = (ix + r->cam->width - 1) / 2, row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2;
+    const render_face_t *cand[6];
+    int nc = 0;
+    for (int i = 0; i < o->nflat && nc < 6; i++) {
+        const render_face_t *fc = &o->u.face[i];
+        if (&fc->f != known && x >= fc->x0 && x <= fc->x1 && row >= fc->r0 && row <= fc->r1)
+            cand[nc++] = fc;
+    }
+    render_depth_t best = known ? render_flat_depth(known, kn, kd) : render_depth_far;
+    bool any = known != NULL;
+    for (int k = 0; k < nc; k++) {
+        const render_flat_t *f = &cand[k]->f;
+        render_k_t n = rlin_at(&f->n, ix, iy), d = rlin_at(&f->d, ix, iy);
+        if (any || k < nc - 1 || o->kind == RENDER_ALL) {
+            render_k_t e[4];
+            for (int i = 0; i < f->edges; i++)
+                e[i] = rlin_at(render_edge_k(f, i), ix, iy);
+            if (!render_flat_vals(n, d, e, f->edges))
+                continue;
+        }
+        any = true;
+        render_depth_t t = render_flat_depth(f, n, d);
+        if (render_depth_less(t, best))
+            best = t;
+    }
+    return best;
+}
 
 /* Depth of object oi at a pixel it covers, from its forms evaluated there
  * (a sphere scanned among others on this row: its disc from the row's
@@ -162,19 +170,7 @@ static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix
         const render_flat_t *f = render_face(o, 0);
         return render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
     }
-    /* (A box face's pixel rectangle rules most faces out at once.) */
-    int32_t x = (ix + r->cam->width - 1) / 2, row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2;
-    render_depth_t best = render_depth_far;
-    for (int i = 0; i < o->nflat; i++) {
-        const render_face_t *fc = &o->u.face[i];
-        const render_flat_t *f = &fc->f;
-        if (x < fc->x0 || x > fc->x1 || row < fc->r0 || row > fc->r1 || !render_flat_at(f, ix, iy))
-            continue;
-        render_depth_t t = render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
-        if (render_depth_less(t, best))
-            best = t;
-    }
-    return best;
+    return render_box_depth(r, o, ix, iy, NULL, 0, 0);
 }
 
 
@@ -192,7 +188,7 @@ bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy)
  * scanline loop stepped (a flat piece's N and D, a sphere's b, c, disc) or
  * from its forms evaluated at the pixel. */
 typedef struct {
-    enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_SPHERE } how;
+    enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_BOX, RENDER_RAW_SPHERE } how;
     const render_flat_t *f;
     render_k_t n, d, b;
     const rsw_t *c, *disc;
@@ -203,6 +199,8 @@ static render_depth_t render_raw_depth(const render_t *r, uint16_t oi, int32_t i
 #if RENDER_STEPPED
     if (raw->how == RENDER_RAW_FLAT)
         return render_flat_depth(raw->f, raw->n, raw->d);
+    if (raw->how == RENDER_RAW_BOX)
+        return render_box_depth(r, &r->obj[oi], ix, iy, raw->f, raw->n, raw->d);
     if (raw->how == RENDER_RAW_SPHERE)
         return render_sphere_depth(&r->obj[oi], ix, iy, raw->b, raw->c, raw->disc);
 #else
@@ -215,7 +213,9 @@ static render_depth_t render_raw_depth(const render_t *r, uint16_t oi, int32_t i
  * nearer keeps it (ties: lower scene id). A depth, once computed, is kept
  * next to the owner. Depths are only computed when the objects' depth
  * ranges (render_setup: from their camera-space z, with a margin) do not
- * already decide. Returns true when oi wins. */
+ * already decide; render_settle_quick (render_int.h, inline in the scan
+ * loops) has already tried the ranges against the owner's range or known
+ * depth. Returns true when oi wins. */
 static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy,
                                                     const render_raw_t *raw)
 {
@@ -224,18 +224,10 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
     int32_t ix = 2 * x - r->cam->width + 1;
     uint32_t stamp = cur & ~0x1FFFFu;
     bool known = (cur & RENDER_DEPTH_KNOWN) != 0;
-    if (!FXRT_NO_ZRANGE && !known && a->ranged && b->ranged) {
-        if (render_depth_less(a->thi, b->tlo))
-            return false;
-        if (render_depth_less(b->thi, a->tlo)) {
-            r->owner[x] = stamp | oi;
-            return true;
-        }
-    }
     render_depth_t ta, tb;
     if (known || FXRT_NO_ZRANGE || !a->ranged) {
         ta = known ? r->depth[x] : render_depth_at(r, ci, ix, iy);
-        if (!FXRT_NO_ZRANGE && b->ranged) {
+        if (!FXRT_NO_ZRANGE && !known && b->ranged) { /* (known: render_settle_quick has compared) */
             if (render_depth_less(ta, b->tlo)) {
                 r->depth[x] = ta;
                 r->owner[x] = stamp | RENDER_DEPTH_KNOWN | ci;
@@ -267,6 +259,9 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
 /* The newcomer's depth from its forms evaluated at the pixel. */
 bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
 {
+    int q = render_settle_quick(r, cur, oi, x);
+    if (q >= 0)
+        return q != 0;
     render_raw_t raw;
     raw.how = RENDER_RAW_AT;
     return render_settle(r, cur, oi, x, iy, &raw);
@@ -277,8 +272,24 @@ bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t i
 bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                                 render_k_t n, render_k_t d)
 {
+    int q = render_settle_quick(r, cur, oi, x);
+    if (q >= 0)
+        return q != 0;
     render_raw_t raw;
     raw.how = RENDER_RAW_FLAT;
+    raw.f = f;
+    raw.n = n;
+    raw.d = d;
+    return render_settle(r, cur, oi, x, iy, &raw);
+}
+bool render_resolve_box(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+                        render_k_t n, render_k_t d)
+{
+    int q = render_settle_quick(r, cur, oi, x);
+    if (q >= 0)
+        return q != 0;
+    render_raw_t raw;
+    raw.how = RENDER_RAW_BOX;
     raw.f = f;
     raw.n = n;
     raw.d = d;
@@ -287,6 +298,9 @@ bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int3
 bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
                            const rsw_t *disc)
 {
+    int q = render_settle_quick(r, cur, oi, x);
+    if (q >= 0)
+        return q != 0;
     render_raw_t raw;
     raw.how = RENDER_RAW_SPHERE;
     raw.b = b;
