@@ -258,32 +258,6 @@ static inline __attribute__((always_inline)) bool render_depth_less(render_depth
 static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
 #endif
 
-/* The depth ranges' part of render_settle (render_vis.c), inline in the
- * render_resolve functions ahead of its set-up: object oi also covers
- * column x, owned by the entry cur.
- * Returns 1 when oi's range lies wholly in front of the owner's (range,
- * or depth when it is known) and oi has taken the column, 0 when wholly
- * behind, -1 when the ranges do not decide. */
-static inline __attribute__((always_inline)) int render_settle_quick(render_t *r, uint32_t cur, uint16_t oi, int32_t x)
-{
-    const render_obj_t *a = &r->obj[(uint16_t)cur], *b = &r->obj[oi];
-    if (FXRT_NO_ZRANGE || !b->ranged)
-        return -1;
-    render_depth_t alo, ahi;
-    if (cur & RENDER_DEPTH_KNOWN)
-        alo = ahi = r->depth[x];
-    else if (a->ranged)
-        alo = a->tlo, ahi = a->thi;
-    else
-        return -1;
-    if (render_depth_less(ahi, b->tlo))
-        return 0;
-    if (render_depth_less(b->thi, alo)) {
-        r->owner[x] = (cur & ~0x1FFFFu) | oi;
-        return 1;
-    }
-    return -1;
-}
 
 /* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */
@@ -304,8 +278,17 @@ bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, in
                            const rsw_t *disc);
 #endif
 
+/* The first planes' depth ranges over the whole of the current row, each
+ * worked out once, when render_row_order first needs it (render_row_vis
+ * keeps them on its stack and clears state at each row). */
+#define RENDER_ROW_PLANES 4
+typedef struct {
+    render_depth_t lo[RENDER_ROW_PLANES], hi[RENDER_ROW_PLANES];
+    uint8_t state[RENDER_ROW_PLANES]; /* 0: not yet; 1: lo, hi hold; 2: the plane does not cover the row with one sign */
+} render_prow_t;
+
 /* render_vis.c: object i's depth order against the planes on row iy over
  * columns x0..x1 (sets r->row_win); false when a plane hides it there. */
-bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy);
+bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy, render_prow_t *pr);
 
 #endif

@@ -1101,6 +1101,9 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
     scache.oi = RENDER_VIS_NONE;
     r->scache = &scache;
 #endif
+    render_prow_t prow;
+    for (int j = 0; j < RENDER_ROW_PLANES; j++)
+        prow.state[j] = 0;
     render_begin_row(r, rgb);
     r->dirty_lo = (int16_t)w;
     r->dirty_hi = -1;
@@ -1120,7 +1123,7 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
         }
         bool lone = !FXRT_NO_LONE && render_alone(r, i, row);
         r->row_win = 0;
-        if (!FXRT_NO_ZRANGE && !lone && r->nplanes && !render_row_order(r, i, x0, x1, iy))
+        if (!FXRT_NO_ZRANGE && !lone && r->nplanes && !render_row_order(r, i, x0, x1, iy, &prow))
             continue;
         /* After this object, columns x0..x1 may be claimed (the hull of
          * every object's columns so far on this row). */

@@ -114,7 +114,7 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
  * at once; since the box covers the pixel, when neither known nor an
  * earlier candidate face does, the last candidate must: its coverage is
  * not tested (a RENDER_ALL box's always is). */
-static render_depth_t render_box_depth(const render_t *r, const render_obj_t *o, int32_t ix, int32_t iy,
+__attribute__((noinline)) static render_depth_t render_box_depth(const render_t *r, const render_obj_t *o, int32_t ix, int32_t iy,
                                        const render_flat_t *known, render_k_t kn, render_k_t kd)
 {
     int32_t x = (ix + r->cam->width - 1) / 2, row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2;
@@ -148,22 +148,41 @@ static render_depth_t render_box_depth(const render_t *r, const render_obj_t *o,
 /* Depth of object oi at a pixel it covers, from its forms evaluated there
  * (a sphere scanned among others on this row: its disc from the row's
  * forward differences, r->scache, the same value). */
+/* A sphere's c and disc at a pixel (a sphere scanned among others on
+ * this row: disc from the row's forward differences, r->scache, the same
+ * value), in a frame of its own that is gone before the depth's. */
+__attribute__((noinline)) static void render_sphere_cd_at(const render_t *r, uint16_t oi, int32_t ix, int32_t iy,
+                                                          rsw_t *c, rsw_t *disc)
+{
+    const render_obj_t *o = &r->obj[oi];
+#if FXRT_NUMBER == FXRT_Q16
+    const render_scache_t *sc = r->scache;
+    if (sc && sc->oi == oi && sc->iy == iy && !sc->s.ortho && !sc->s.inside) {
+        /* perspective: c is the constant k, v is disc */
+        *disc = render_quad_k(sc->s.v, sc->s.d1, sc->s.d2, (ix - sc->ix0) / 2);
+        *c = o->u.sphere->k;
+        return;
+    }
+#endif
+    render_sphere_cd(o, ix, iy, c, disc);
+}
+
+/* A sphere's depth at a pixel it covers (the 128-bit forms in frames of
+ * their own, off the stack of the other kinds' paths). */
+__attribute__((noinline)) static render_depth_t render_sphere_depth_at(const render_t *r, uint16_t oi, int32_t ix,
+                                                                       int32_t iy)
+{
+    const render_obj_t *o = &r->obj[oi];
+    rsw_t c, disc;
+    render_sphere_cd_at(r, oi, ix, iy, &c, &disc);
+    return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &c, &disc);
+}
+
 static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix, int32_t iy)
 {
     const render_obj_t *o = &r->obj[oi];
-    if (o->kind == RENDER_SPHERE) {
-        rsw_t c, disc;
-#if FXRT_NUMBER == FXRT_Q16
-        const render_scache_t *sc = r->scache;
-        if (sc && sc->oi == oi && sc->iy == iy && !sc->s.ortho && !sc->s.inside) {
-            /* perspective: c is the constant k, v is disc */
-            disc = render_quad_k(sc->s.v, sc->s.d1, sc->s.d2, (ix - sc->ix0) / 2);
-            return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &o->u.sphere->k, &disc);
-        }
-#endif
-        render_sphere_cd(o, ix, iy, &c, &disc);
-        return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &c, &disc);
-    }
+    if (o->kind == RENDER_SPHERE)
+        return render_sphere_depth_at(r, oi, ix, iy);
     /* A plane or triangle covers the pixel (every caller asks about an
      * object there); a box: the nearest face that covers it. */
     if (o->kind == RENDER_FLAT) {
@@ -209,13 +228,47 @@ static render_depth_t render_raw_depth(const render_t *r, uint16_t oi, int32_t i
     return render_depth_at(r, oi, ix, iy);
 }
 
+/* The depth ranges' part of render_settle, which the render_resolve
+ * functions try first, ahead of render_settle's set-up: object oi also
+ * covers column x, owned by the entry cur.
+ * Returns 1 when oi's range lies wholly in front of the owner's (range,
+ * or depth when it is known) and oi has taken the column, 0 when wholly
+ * behind, -1 when the ranges do not decide. */
+/* Inline in each of them; on Armv6-M a frame of its own, gone before
+ * render_settle's (their frames with it inline would stack under it: the
+ * micro:bit's 2 KB stack). */
+#if defined(__ARM_ARCH_6M__)
+#define RENDER_QUICK_INLINE __attribute__((noinline))
+#else
+#define RENDER_QUICK_INLINE inline __attribute__((always_inline))
+#endif
+static RENDER_QUICK_INLINE int render_settle_quick(render_t *r, uint32_t cur, uint16_t oi, int32_t x)
+{
+    const render_obj_t *a = &r->obj[(uint16_t)cur], *b = &r->obj[oi];
+    if (FXRT_NO_ZRANGE || !b->ranged)
+        return -1;
+    render_depth_t alo, ahi;
+    if (cur & RENDER_DEPTH_KNOWN)
+        alo = ahi = r->depth[x];
+    else if (a->ranged)
+        alo = a->tlo, ahi = a->thi;
+    else
+        return -1;
+    if (render_depth_less(ahi, b->tlo))
+        return 0;
+    if (render_depth_less(b->thi, alo)) {
+        r->owner[x] = (cur & ~0x1FFFFu) | oi;
+        return 1;
+    }
+    return -1;
+}
+
 /* Object oi also covers column x, owned so far by the entry cur: the
  * nearer keeps it (ties: lower scene id). A depth, once computed, is kept
  * next to the owner. Depths are only computed when the objects' depth
  * ranges (render_setup: from their camera-space z, with a margin) do not
- * already decide; render_settle_quick (render_int.h, inline in the scan
- * loops) has already tried the ranges against the owner's range or known
- * depth. Returns true when oi wins. */
+ * already decide; render_settle_quick has already tried the ranges
+ * against the owner's range or known depth. Returns true when oi wins. */
 static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy,
                                                     const render_raw_t *raw)
 {
@@ -364,7 +417,7 @@ static bool render_is_plane(const render_obj_t *o) { return o->kind == RENDER_FL
  * columns x0..x1: r->row_win gets bit j when i is nearer than plane j
  * wherever both cover (no depth needed there); returns false when a plane
  * covers the whole segment nearer than i (i is hidden on this row). */
-bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy)
+bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy, render_prow_t *pr)
 {
     const render_obj_t *o = &r->obj[i];
     render_depth_t blo, bhi;
@@ -379,7 +432,24 @@ bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t i
     for (uint16_t j = 0; j < n; j++) {
         render_depth_t plo, phi;
         const render_obj_t *p = &r->obj[j];
-        if (j == i || p->r0 > p->r1 || !render_plane_range(r, p, x0, x1, iy, &plo, &phi))
+        if (j == i || p->r0 > p->r1)
+            continue;
+        if (j < RENDER_ROW_PLANES) {
+            /* Its range over the whole row, when it covers all of it, is
+             * wider than over x0..x1, but found once per row, and mostly
+             * decides alone. */
+            if (pr->state[j] == 0)
+                pr->state[j] = render_plane_range(r, p, 0, r->cam->width - 1, iy, &pr->lo[j], &pr->hi[j]) ? 1 : 2;
+            if (pr->state[j] == 1) {
+                if (render_depth_less(bhi, pr->lo[j])) {
+                    r->row_win |= 1u << j;
+                    continue;
+                }
+                if (render_depth_less(pr->hi[j], blo))
+                    return false;
+            }
+        }
+        if (!render_plane_range(r, p, x0, x1, iy, &plo, &phi))
             continue;
         if (render_depth_less(bhi, plo))
             r->row_win |= 1u << j;
