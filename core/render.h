@@ -184,6 +184,14 @@ typedef struct {
     render_srow_t s;
     int32_t ix0, iy;
     uint16_t oi;
+    /* The last disc so computed for a sphere among others on this row
+     * (render_vis.c; loi is reset at each row): sphere loi's q(lk) and,
+     * when lstepped, its step q(lk + 1) - q(lk), so the next column's is
+     * two additions. */
+    uint16_t loi;
+    bool lstepped;
+    int32_t lk;
+    fx128_t lq, lstep;
 } render_scache_t;
 #endif
 

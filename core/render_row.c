@@ -499,8 +499,9 @@ static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 /* A sphere's row from column x0 (ix0), render_srow_t (render.h): c and
  * disc are quadratic along the row, so their 128-bit forward differences
  * (second difference constant) give exactly the values render_sphere_cd
- * computes from scratch. */
-static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0, int32_t iy, render_srow_t *s)
+ * computes from scratch. (A frame of its own, not render_row_vis's.) */
+__attribute__((noinline)) static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0, int32_t iy,
+                                                        render_srow_t *s)
 {
     fx128_t c[3], q[3];
     for (int k = 0; k < 3; k++)
@@ -1098,7 +1099,7 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
     int32_t iy = 2 * y - cam->height + 1;
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
     render_scache_t scache;
-    scache.oi = RENDER_VIS_NONE;
+    scache.oi = scache.loi = RENDER_VIS_NONE;
     r->scache = &scache;
 #endif
     render_prow_t prow;

@@ -148,33 +148,73 @@ __attribute__((noinline)) static render_depth_t render_box_depth(const render_t 
 /* Depth of object oi at a pixel it covers, from its forms evaluated there
  * (a sphere scanned among others on this row: its disc from the row's
  * forward differences, r->scache, the same value). */
-/* A sphere's c and disc at a pixel (a sphere scanned among others on
- * this row: disc from the row's forward differences, r->scache, the same
- * value), in a frame of its own that is gone before the depth's. */
-__attribute__((noinline)) static void render_sphere_cd_at(const render_t *r, uint16_t oi, int32_t ix, int32_t iy,
-                                                          rsw_t *c, rsw_t *disc)
+/* render_sphere_cd in a frame of its own. */
+__attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c,
+                                                            rsw_t *disc)
 {
-    const render_obj_t *o = &r->obj[oi];
-#if FXRT_NUMBER == FXRT_Q16
-    const render_scache_t *sc = r->scache;
-    if (sc && sc->oi == oi && sc->iy == iy && !sc->s.ortho && !sc->s.inside) {
-        /* perspective: c is the constant k, v is disc */
-        *disc = render_quad_k(sc->s.v, sc->s.d1, sc->s.d2, (ix - sc->ix0) / 2);
-        *c = o->u.sphere->k;
-        return;
-    }
-#endif
     render_sphere_cd(o, ix, iy, c, disc);
 }
 
-/* A sphere's depth at a pixel it covers (the 128-bit forms in frames of
- * their own, off the stack of the other kinds' paths). */
+#if FXRT_NUMBER == FXRT_Q16
+/* A sphere's disc at a pixel from its forms on this row, when it has them
+ * (perspective; c is then the constant k): from r->scache (the sphere
+ * scanned last among others on this row) or, with row state, from its
+ * own (it was scanned on this row, as it covers the pixel). Owners are
+ * asked about column after column, so the last column's value and step
+ * give the next by two additions. False: no row forms. */
+__attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, uint16_t oi, int32_t ix, int32_t iy,
+                                                             rsw_t *disc)
+{
+    render_scache_t *sc = r->scache;
+    const render_srow_t *q = NULL;
+    int32_t k = 0;
+    if (!sc)
+        return false;
+    if (sc->oi == oi && sc->iy == iy) {
+        q = &sc->s;
+        k = (ix - sc->ix0) / 2;
+    }
+#if RENDER_SROWS
+    const render_obj_t *o = &r->obj[oi];
+    int32_t h = r->cam->height;
+    if (!q && o->index < FXRT_COHERENT_SPHERES && h >= 3 && r->srow[o->index].vrow == h - 1 - (iy + h - 1) / 2) {
+        q = &r->srow[o->index].cur;
+        k = (ix - (2 * o->x0 - r->cam->width + 1)) / 2;
+    }
+#endif
+    if (!q || q->ortho || q->inside)
+        return false;
+    if (sc->loi == oi && k == sc->lk + 1) {
+        if (!sc->lstepped) /* the step at lk, once a second column follows */
+            sc->lstep = fx128_add(q->d1, render_mul128_small(q->d2, sc->lk));
+        sc->lq = fx128_add(sc->lq, sc->lstep);
+        sc->lstep = fx128_add(sc->lstep, q->d2);
+        sc->lstepped = true;
+    } else if (!(sc->loi == oi && k == sc->lk)) {
+        sc->lq = render_quad_k(q->v, q->d1, q->d2, k);
+        sc->loi = oi;
+        sc->lstepped = false;
+    }
+    sc->lk = k;
+    *disc = sc->lq;
+    return true;
+}
+#endif
+
+/* A sphere's depth at a pixel it covers. Its 128-bit forms in frames of
+ * their own, one after the other: off the stack of the other kinds'
+ * paths, and not on top of each other (the micro:bit's stack). */
 __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const render_t *r, uint16_t oi, int32_t ix,
                                                                        int32_t iy)
 {
     const render_obj_t *o = &r->obj[oi];
     rsw_t c, disc;
-    render_sphere_cd_at(r, oi, ix, iy, &c, &disc);
+#if FXRT_NUMBER == FXRT_Q16
+    if (render_sphere_disc_row(r, oi, ix, iy, &disc))
+        c = o->u.sphere->k;
+    else
+#endif
+        render_sphere_cd_full(o, ix, iy, &c, &disc);
     return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &c, &disc);
 }
 
