@@ -1088,6 +1088,19 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
 }
 #endif
 
+/* The first object from i on whose rows include row (r->count: none); a
+ * loop of its own, with few registers, as most objects of a large world
+ * are off most rows. */
+__attribute__((noinline)) static uint16_t render_next_on_row(const render_t *r, uint16_t i, int32_t row)
+{
+    if (FXRT_NO_BOUNDS)
+        return i;
+    const render_obj_t *o = &r->obj[i], *end = &r->obj[r->count];
+    while (o < end && (row < o->r0 || row > o->r1))
+        o++;
+    return (uint16_t)(o - r->obj);
+}
+
 /* The visibility pass of one row: every object's coverage, the nearest
  * owner of each column, flat colours painted (and r->vis recorded for the
  * shading pass). Out of line so that its frame is gone before the shading
@@ -1108,10 +1121,8 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
     render_begin_row(r, rgb);
     r->dirty_lo = (int16_t)w;
     r->dirty_hi = -1;
-    for (uint16_t i = 0; i < r->count; i++) {
+    for (uint16_t i = render_next_on_row(r, 0, row); i < r->count; i = render_next_on_row(r, i + 1, row)) {
         const render_obj_t *o = &r->obj[i];
-        if (!FXRT_NO_BOUNDS && (row < o->r0 || row > o->r1))
-            continue;
         int32_t x0 = FXRT_NO_BOUNDS ? 0 : o->x0, x1 = FXRT_NO_BOUNDS ? w - 1 : o->x1;
         if (x0 > x1)
             continue;
