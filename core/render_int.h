@@ -247,6 +247,27 @@ static inline __attribute__((always_inline)) bool render_depth_less(render_depth
         return false;
     if (de <= -2)
         return true;
+#if !FX_HAVE_UMULL
+    /* No 32 x 32 -> 64 multiply (Armv6-M): first the top 15 bits of each
+     * factor, whose products fit 32 bits; they bound the exact products
+     * (l / 2^18 in [l1, l2), g / 2^18 in [g1, g2)) and decide unless the
+     * two intervals meet. */
+    {
+        uint32_t a9 = an >> 9, b9 = bn >> 9, ad9 = render_depth_d(a) >> 9, bd9 = render_depth_d(b) >> 9;
+        uint32_t l1 = a9 * bd9, g1 = b9 * ad9, l2 = l1 + a9 + bd9 + 1, g2 = g1 + b9 + ad9 + 1; /* < 2^30 */
+        if (de == 1) {
+            l1 <<= 1;
+            l2 <<= 1;
+        } else if (de == -1) {
+            g1 <<= 1;
+            g2 <<= 1;
+        }
+        if (l2 <= g1)
+            return true;
+        if (l1 >= g2)
+            return false;
+    }
+#endif
     uint64_t l = fx_umul32(an, render_depth_d(b)), g = fx_umul32(bn, render_depth_d(a));
     if (de == 1)
         l <<= 1;

@@ -33,6 +33,23 @@ $(BUILD)/tests/fx_exhaustive_nohw: tests/fx_exhaustive.c tests/check.h $(BUILD)/
 	@echo "  CC/LD   $@"
 	$(Q)$(CC) $(CFLAGS_H) -Icore -o $@ tests/fx_exhaustive.c $(BUILD)/tests/fx-nohw.o -lm
 
+# test_geom (renderers against the kernels and each other) on the Q16.16
+# core built with the same flags: the visibility pass's M0 paths (depth
+# compares from 15-bit products first, render_depth_less) on the host.
+$(BUILD)/host/q16-nohw/%.o: core/%.c
+	@mkdir -p $(@D)
+	@echo "  CC nohw $<"
+	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DFXRT_MULTI -DFXRT_NUMBER=1 -c $< -o $@
+
+$(BUILD)/tests/test_geom_q16_nohw: tests/test_geom.c $(wildcard tests/*.h) $(BUILD)/tests/fx-nohw.o \
+    $(CORE_NUM:%=$(BUILD)/host/q16-nohw/%.o)
+	@echo "  CC/LD nohw $@"
+	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DFXRT_MULTI -DFXRT_NUMBER=1 -DTEST_GEOM_NAME='"test_geom_q16_nohw"' \
+	    -Icore -Ihost -o $@ $(filter %.c %.o,$^) $(LDLIBS_H)
+
+SUITES_EXTRA += $(BUILD)/tests/test_geom_q16_nohw
+TEST_PREREQ  += $(BUILD)/tests/test_geom_q16_nohw
+
 FX_EXH_BIN := $(BUILD)/tests/fx_exhaustive $(BUILD)/tests/fx_exhaustive_nohw
 
 fx-exhaustive: $(FX_EXH_BIN)

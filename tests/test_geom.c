@@ -1655,6 +1655,132 @@ static int range_check(const render_t *r, uint16_t i, int32_t x, int32_t row)
     return render_range_check(r, i, ix, iy);
 }
 
+#if FXRT_NUMBER == FXRT_Q16
+/* render_depth_less (render_int.h), the strict order of two packed depths
+ * n / d * 2^e, against the exact order of the rationals in 128-bit
+ * integers (cross-multiplied, shifted by the exponent difference). This
+ * binary's build decides which code path is checked: test_geom_q16 the
+ * 64-bit products, test_geom_q16_nohw the Cortex-M0's (15-bit products
+ * first, then the exact ones). Inputs: every field from its full range,
+ * and near ties (b from a by a few units of n or d, or with n and d
+ * scaled alike to within a unit, at the edges of the M0 path's
+ * first bounds, across exponent boundaries, equal values in another
+ * representation), 10^6 pairs. */
+static int depth_exact_cmp(render_depth_t a, render_depth_t b)
+{
+    uint32_t an = (uint32_t)a & 0xffffffu, bn = (uint32_t)b & 0xffffffu;
+    int ea = (int8_t)(uint8_t)((uint32_t)a >> 24), eb = (int8_t)(uint8_t)((uint32_t)b >> 24);
+    uint32_t ad = (uint32_t)(a >> 32), bd = (uint32_t)(b >> 32);
+    if (an == 0 || bn == 0)
+        return an == bn ? 0 : (an == 0 ? -1 : 1);
+    /* a vs b: an bd 2^ea vs bn ad 2^eb; the ratios lie in (1/2, 2) */
+    if (ea - eb > 8)
+        return 1;
+    if (eb - ea > 8)
+        return -1;
+    __extension__ typedef unsigned __int128 u128;
+    u128 l = (u128)an * bd, g = (u128)bn * ad;
+    if (ea > eb)
+        l <<= ea - eb;
+    else
+        g <<= eb - ea;
+    return l < g ? -1 : (l > g ? 1 : 0);
+}
+
+static render_depth_t depth_pack(uint32_t n, uint32_t d, int e)
+{
+    return (uint64_t)d << 32 | (uint64_t)(uint8_t)(int8_t)e << 24 | (uint64_t)n;
+}
+
+static void test_render_depth_less(void)
+{
+    uint64_t st = 0x5eed0000ull + 77;
+    long pairs = 0, ties = 0, wrong = 0;
+    for (long k = 0; k < 1000000; k++) {
+        uint64_t r1 = check_rng_next(&st), r2 = check_rng_next(&st);
+        uint32_t an = (uint32_t)(1u << 23 | (r1 & 0x7fffffu)), ad = (uint32_t)(1u << 23 | ((r1 >> 23) & 0x7fffffu));
+        int ea = (int)((r1 >> 46) % 253) - 126;
+        uint32_t bn, bd;
+        int eb;
+        switch (k % 6) {
+        case 0: /* independent */
+            bn = (uint32_t)(1u << 23 | (r2 & 0x7fffffu));
+            bd = (uint32_t)(1u << 23 | ((r2 >> 23) & 0x7fffffu));
+            eb = ea + (int)((r2 >> 46) % 5) - 2;
+            break;
+        case 1: { /* a few units away in n or d */
+            int dn = (int)(r2 % 33) - 16, dd = (int)((r2 >> 8) % 33) - 16;
+            bn = an + (uint32_t)dn;
+            bd = ad + (uint32_t)dd;
+            bn = bn < (1u << 23) ? (1u << 23) : (bn >= (1u << 24) ? (1u << 24) - 1 : bn);
+            bd = bd < (1u << 23) ? (1u << 23) : (bd >= (1u << 24) ? (1u << 24) - 1 : bd);
+            eb = ea;
+            break;
+        }
+        case 2: { /* across an exponent boundary: n / d near 1 against 2 n' / d' near 2 */
+            bn = (uint32_t)(1u << 23 | (r2 & 0x7fffffu));
+            bd = (uint32_t)(1u << 23 | (r2 & 0x7fffffu)) + (uint32_t)((r2 >> 30) % 9) - 4;
+            bd = bd < (1u << 23) ? (1u << 23) : (bd >= (1u << 24) ? (1u << 24) - 1 : bd);
+            an = (1u << 24) - 1 - (uint32_t)((r2 >> 40) % 64);
+            ad = 1u << 23 | (uint32_t)((r2 >> 50) % 64);
+            eb = ea + ((r2 >> 60) & 1 ? 1 : -1);
+            break;
+        }
+        case 3: { /* nearly the same value: d scaled with n, then a unit or two off */
+            bn = an + (uint32_t)((int)(r2 % 2001) - 1000);
+            bn = bn < (1u << 23) ? (1u << 23) : (bn >= (1u << 24) ? (1u << 24) - 1 : bn);
+            uint64_t q = ((uint64_t)ad * bn + an / 2) / an;
+            bd = (uint32_t)q + (uint32_t)((r2 >> 16) % 5) - 2;
+            bd = bd < (1u << 23) ? (1u << 23) : (bd >= (1u << 24) ? (1u << 24) - 1 : bd);
+            eb = ea;
+            break;
+        }
+        case 4: { /* at the edges of the top-15-bit bounds: a's products at the top of theirs, b's at the bottom */
+            uint32_t a9 = an >> 9, ad9 = ad >> 9, bd9 = (uint32_t)(1u << 14 | (r2 & 0x3fffu));
+            uint64_t target = (uint64_t)a9 * bd9 + a9 + bd9 + 1 + (uint64_t)((r2 >> 14) % 2049) - 1024;
+            uint32_t b9 = (uint32_t)(target / ad9);
+            b9 = b9 < (1u << 14) ? (1u << 14) : (b9 >= (1u << 15) ? (1u << 15) - 1 : b9);
+            an = a9 << 9 | 511;
+            bd = bd9 << 9 | 511;
+            bn = b9 << 9;
+            ad = ad9 << 9 | (uint32_t)((r2 >> 30) & 1);
+            eb = ea;
+            break;
+        }
+        default: { /* the same value as another fraction: p s / q s against p t / q t */
+            uint32_t p = 2048 + (uint32_t)(r2 % 848), q = 2048 + (uint32_t)((r2 >> 10) % 848);
+            uint32_t s1 = 4096 + (uint32_t)((r2 >> 20) % 1696), t1 = 4096 + (uint32_t)((r2 >> 32) % 1696);
+            an = p * s1;
+            ad = q * s1;
+            bn = p * t1;
+            bd = q * t1;
+            eb = ea;
+            break;
+        }
+        }
+        if (ea < -126 || ea > 126)
+            ea = 0;
+        eb = eb < -126 ? -126 : (eb > 126 ? 126 : eb);
+        render_depth_t a = depth_pack(an, ad, ea), b = depth_pack(bn, bd, eb);
+        if (k % 1000 == 0)
+            a = depth_pack(0, ad, 0); /* t = 0 */
+        int c = depth_exact_cmp(a, b);
+        bool lt = render_depth_less(a, b), gt = render_depth_less(b, a);
+        pairs++;
+        ties += c == 0;
+        if (lt != (c < 0) || gt != (c > 0)) {
+            wrong++;
+            CHECK_SWEEP(false, "n %u d %u e %d against n %u d %u e %d: less %d/%d, exact %d", (unsigned)(a & 0xffffff),
+                        (unsigned)(a >> 32), (int)(int8_t)(a >> 24), bn, bd, eb, lt, gt, c);
+        }
+    }
+    printf("render_depth_less: %ld pairs (%ld exact ties), %ld wrong\n", pairs, ties, wrong);
+    CHECK_MSG(wrong == 0 && ties > 1000, "%ld wrong of %ld, %ld ties", wrong, pairs, ties);
+}
+#else
+static void test_render_depth_less(void) {}
+#endif
+
 /* Depth ranges (render_setup: from the camera-space z of an object's
  * points; a sphere seen from outside, from the cap that faces the eye; a
  * box, from the corners of the faces set up): render_settle decides an
@@ -2161,10 +2287,15 @@ int main(void)
     test_world();
     test_render();
     test_render_overlap();
+    test_render_depth_less();
     test_render_ranges();
     test_render_meshes();
     test_render_eye_on_box();
     test_render_coherent();
     test_render_runs();
+#ifdef TEST_GEOM_NAME
+    return check_report(TEST_GEOM_NAME);
+#else
     return check_report("test_geom_" NUM_NAME);
+#endif
 }
