@@ -56,17 +56,21 @@ static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, re
     return render_depth_make(0, render_uabs(n), render_uabs(d), f->te);
 }
 
-/* floor(sqrt(v)) to about 32 significant bits, v >= 0 (v < 2^127). */
-static uint64_t render_sqrt128(fx128_t v)
+/* floor(sqrt(v)) to about 32 significant bits, v >= 0 (v < 2^127). By
+ * pointer, its halves read as integers: the M0 copies a 16-byte value
+ * with memcpy. */
+static uint64_t render_sqrt128(const fx128_t *vp)
 {
-    if (v.hi < 0)
+    int64_t hi = vp->hi;
+    uint64_t lo = vp->lo;
+    if (hi < 0)
         return 0;
-    int b = fx128_bits(v);
+    int b = hi ? 128 - __builtin_clzll((uint64_t)hi) : (lo ? 64 - __builtin_clzll(lo) : 0);
     if (b <= 64)
-        return fx_isqrt64(v.lo);
+        return fx_isqrt64(lo);
     int s = (b - 63) & ~1; /* even */
     s = s < b - 64 ? s + 2 : s;
-    uint64_t top = s >= 64 ? (uint64_t)v.hi >> (s - 64) : (v.lo >> s) | ((uint64_t)v.hi << (64 - s));
+    uint64_t top = s >= 64 ? (uint64_t)hi >> (s - 64) : (lo >> s) | ((uint64_t)hi << (64 - s));
     return (uint64_t)fx_isqrt64(top) << (s / 2);
 }
 
@@ -74,7 +78,7 @@ static uint64_t render_sqrt128(fx128_t v)
 static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const rsw_t *c,
                                           const rsw_t *disc)
 {
-    uint64_t s = render_sqrt128(*disc);
+    uint64_t s = render_sqrt128(disc);
     if (!rsw_neg(*c)) /* outside: the near root, b > 0 */
         return render_depth_make((uint64_t)c->hi, c->lo, (uint64_t)b + s, o->u.sphere->tc);
     if (b < 0) { /* inside, looking away from the centre: (-c) / (s - b) */
@@ -196,7 +200,8 @@ __attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, 
         sc->lstepped = false;
     }
     sc->lk = k;
-    *disc = sc->lq;
+    disc->lo = sc->lq.lo; /* (halves: a struct copy is a memcpy call on the M0) */
+    disc->hi = sc->lq.hi;
     return true;
 }
 #endif
@@ -209,13 +214,14 @@ __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const ren
 {
     const render_obj_t *o = &r->obj[oi];
     rsw_t c, disc;
+    const rsw_t *cp = &c;
 #if FXRT_NUMBER == FXRT_Q16
     if (render_sphere_disc_row(r, oi, ix, iy, &disc))
-        c = o->u.sphere->k;
+        cp = &o->u.sphere->k;
     else
 #endif
         render_sphere_cd_full(o, ix, iy, &c, &disc);
-    return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), &c, &disc);
+    return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), cp, &disc);
 }
 
 static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix, int32_t iy)
