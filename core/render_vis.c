@@ -367,32 +367,31 @@ bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t i
 }
 
 #if RENDER_STEPPED
-/* The newcomer's depth from the values the scanline loop stepped. */
-bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
-                                render_k_t n, render_k_t d)
+/* The newcomer's depth from the values the scanline loop stepped: a flat
+ * piece's N and D (its own piece, or the face f of a box). */
+static inline __attribute__((always_inline)) bool render_resolve_nd(render_t *r, uint32_t cur, uint16_t oi, int32_t x,
+                                                                    int32_t iy, const render_flat_t *f, render_k_t n,
+                                                                    render_k_t d, bool box)
 {
     int q = render_settle_quick(r, cur, oi, x);
     if (q >= 0)
         return q != 0;
     render_raw_t raw;
-    raw.how = RENDER_RAW_FLAT;
+    raw.how = box ? RENDER_RAW_BOX : RENDER_RAW_FLAT;
     raw.f = f;
     raw.n = n;
     raw.d = d;
     return render_settle(r, cur, oi, x, iy, &raw);
 }
+bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+                         render_k_t n, render_k_t d)
+{
+    return render_resolve_nd(r, cur, oi, x, iy, f, n, d, false);
+}
 bool render_resolve_box(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                         render_k_t n, render_k_t d)
 {
-    int q = render_settle_quick(r, cur, oi, x);
-    if (q >= 0)
-        return q != 0;
-    render_raw_t raw;
-    raw.how = RENDER_RAW_BOX;
-    raw.f = f;
-    raw.n = n;
-    raw.d = d;
-    return render_settle(r, cur, oi, x, iy, &raw);
+    return render_resolve_nd(r, cur, oi, x, iy, f, n, d, true);
 }
 bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
                            const rsw_t *disc)
