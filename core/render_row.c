@@ -404,9 +404,10 @@ static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
 /* Columns a..b of flat piece f of object oi, all covered by it (located
  * exactly): columns no object has reached yet are claimed and filled
- * without looking (render_claim_free); each of the rest settles its owner, with f's depth from N and D stepped along
- * the run (single: f is its object's only piece; a box's depth is the
- * nearest of its faces there, f's among them: render_resolve_box). */
+ * without looking (render_claim_free); each of the rest settles its
+ * owner, with f's depth from N and D stepped along the run (single: f is
+ * its object's only piece; a box's depth is the nearest of its faces
+ * there, f's among them: render_resolve_box). */
 static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
                              uint8_t *rgb, bool single)
 {
@@ -640,18 +641,19 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     }
 #if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_SROWS)
 #if RENDER_SROWS
-    bool located = r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES;
+    bool rows = r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES;
 #else
-    bool located = true;
+    bool rows = false;
 #endif
-    if (!sp->ortho && located) {
+    if (!sp->ortho && (rows || FXRT_SPHERE_SEARCH)) {
         /* Perspective: its runs located exactly (from the row before's
-         * where it keeps row state), then claimed like a flat piece's;
-         * a depth, where an owner needs one, comes from r->scache. */
+         * where it keeps row state, else by render_sphere_runs' search),
+         * then claimed like a flat piece's; a depth, where an owner needs
+         * one, comes from r->scache. */
         render_iv_t run[2];
         int nrun;
 #if RENDER_SROWS
-        if (located)
+        if (rows)
             nrun = render_sphere_runs_at(r, o, r->cam->height - 1 - (iy + r->cam->height - 1) / 2, sp, run);
         else
 #endif
