@@ -192,6 +192,13 @@ static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t i
 #endif
 }
 
+/* The output row (0 = top) of the pixel-offset row iy (ray rows are
+ * iy = 2 y - height + 1, y from the bottom). */
+static inline int32_t render_row_of(const cam_t *cam, int32_t iy)
+{
+    return cam->height - 1 - (iy + cam->height - 1) / 2;
+}
+
 /* Does object o cover the pixel? Every form evaluated from scratch. */
 static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 {
@@ -278,7 +285,6 @@ static inline __attribute__((always_inline)) bool render_depth_less(render_depth
 #else
 static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
 #endif
-
 
 /* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */

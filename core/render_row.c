@@ -501,8 +501,8 @@ static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
  * disc are quadratic along the row, so their 128-bit forward differences
  * (second difference constant) give exactly the values render_sphere_cd
  * computes from scratch. (A frame of its own, not render_row_vis's.) */
-__attribute__((noinline)) static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0, int32_t iy,
-                                                        render_srow_t *s)
+__attribute__((noinline)) static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0,
+                                                        int32_t iy, render_srow_t *s)
 {
     fx128_t c[3], q[3];
     for (int k = 0; k < 3; k++)
@@ -586,7 +586,7 @@ static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row
 __attribute__((noinline)) static void render_lone_sphere(render_t *r, uint16_t oi, const render_obj_t *o,
                                                          int32_t iy, uint8_t *rgb)
 {
-    int32_t row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2; /* render_iy's inverse */
+    int32_t row = render_row_of(r->cam, iy);
     render_iv_t run[2];
     int nrun = render_sphere_row_runs(r, o, row, run);
     for (int k = 0; k < nrun; k++)
@@ -623,7 +623,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     r->scache->oi = lone ? RENDER_VIS_NONE : oi;
 #if RENDER_SROWS
     if (!lone && r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES) /* stepped from the row before */
-        *sp = *render_sphere_row_at(r, o, r->cam->height - 1 - (iy + r->cam->height - 1) / 2);
+        *sp = *render_sphere_row_at(r, o, render_row_of(r->cam, iy));
     else
 #endif
         render_sphere_row(r, o, ix0, iy, sp);
@@ -654,7 +654,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
         int nrun;
 #if RENDER_SROWS
         if (rows)
-            nrun = render_sphere_runs_at(r, o, r->cam->height - 1 - (iy + r->cam->height - 1) / 2, sp, run);
+            nrun = render_sphere_runs_at(r, o, render_row_of(r->cam, iy), sp, run);
         else
 #endif
             nrun = render_sphere_runs(o, sp, x0, x1, ix0, iy, run);

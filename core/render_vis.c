@@ -57,8 +57,8 @@ static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, re
 }
 
 /* floor(sqrt(v)) to about 32 significant bits, v >= 0 (v < 2^127). By
- * pointer, its halves read as integers: the M0 copies a 16-byte value
- * with memcpy. */
+ * pointer, its halves read as integers, and its bit length (fx128_bits')
+ * inline: the M0 copies a 16-byte value passed by value with memcpy. */
 static uint64_t render_sqrt128(const fx128_t *vp)
 {
     int64_t hi = vp->hi;
@@ -118,13 +118,15 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
  * at once; since the box covers the pixel, when neither known nor an
  * earlier candidate face does, the last candidate must: its coverage is
  * not tested (a RENDER_ALL box's always is). */
-__attribute__((noinline)) static render_depth_t render_box_depth(const render_t *r, const render_obj_t *o, int32_t ix, int32_t iy,
-                                       const render_flat_t *known, render_k_t kn, render_k_t kd)
+#define RENDER_BOX_SIDES 6 /* faces a box can have set up */
+__attribute__((noinline)) static render_depth_t render_box_depth(const render_t *r, const render_obj_t *o, int32_t ix,
+                                                                 int32_t iy, const render_flat_t *known, render_k_t kn,
+                                                                 render_k_t kd)
 {
-    int32_t x = (ix + r->cam->width - 1) / 2, row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2;
-    const render_face_t *cand[6];
+    int32_t x = (ix + r->cam->width - 1) / 2, row = render_row_of(r->cam, iy);
+    const render_face_t *cand[RENDER_BOX_SIDES];
     int nc = 0;
-    for (int i = 0; i < o->nflat && nc < 6; i++) {
+    for (int i = 0; i < o->nflat && nc < RENDER_BOX_SIDES; i++) {
         const render_face_t *fc = &o->u.face[i];
         if (&fc->f != known && x >= fc->x0 && x <= fc->x1 && row >= fc->r0 && row <= fc->r1)
             cand[nc++] = fc;
@@ -149,9 +151,6 @@ __attribute__((noinline)) static render_depth_t render_box_depth(const render_t 
     return best;
 }
 
-/* Depth of object oi at a pixel it covers, from its forms evaluated there
- * (a sphere scanned among others on this row: its disc from the row's
- * forward differences, r->scache, the same value). */
 /* render_sphere_cd in a frame of its own. */
 __attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c,
                                                             rsw_t *disc)
@@ -180,8 +179,8 @@ __attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, 
     }
 #if RENDER_SROWS
     const render_obj_t *o = &r->obj[oi];
-    int32_t h = r->cam->height;
-    if (!q && o->index < FXRT_COHERENT_SPHERES && h >= 3 && r->srow[o->index].vrow == h - 1 - (iy + h - 1) / 2) {
+    if (!q && o->index < FXRT_COHERENT_SPHERES && r->cam->height >= 3 &&
+        r->srow[o->index].vrow == render_row_of(r->cam, iy)) {
         q = &r->srow[o->index].cur;
         k = (ix - (2 * o->x0 - r->cam->width + 1)) / 2;
     }
@@ -224,6 +223,8 @@ __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const ren
     return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), cp, &disc);
 }
 
+/* Depth of object oi at a pixel it covers, from its forms evaluated there
+ * (a sphere's from its row forms where it has them: the same value). */
 static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix, int32_t iy)
 {
     const render_obj_t *o = &r->obj[oi];
@@ -276,13 +277,12 @@ static render_depth_t render_raw_depth(const render_t *r, uint16_t oi, int32_t i
 
 /* The depth ranges' part of render_settle, which the render_resolve
  * functions try first, ahead of render_settle's set-up: object oi also
- * covers column x, owned by the entry cur.
- * Returns 1 when oi's range lies wholly in front of the owner's (range,
- * or depth when it is known) and oi has taken the column, 0 when wholly
- * behind, -1 when the ranges do not decide. */
-/* Inline in each of them; on Armv6-M a frame of its own, gone before
- * render_settle's (their frames with it inline would stack under it: the
- * micro:bit's 2 KB stack). */
+ * covers column x, owned by the entry cur. Returns 1 when oi's range lies
+ * wholly in front of the owner's (range, or depth when it is known) and
+ * oi has taken the column, 0 when wholly behind, -1 when the ranges do
+ * not decide. Inline in each of them; on Armv6-M a frame of its own, gone
+ * before render_settle's (their frames with it inline would stack under
+ * it: the micro:bit's 2 KB stack). */
 #if defined(__ARM_ARCH_6M__)
 #define RENDER_QUICK_INLINE __attribute__((noinline))
 #else

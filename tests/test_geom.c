@@ -1687,10 +1687,8 @@ static int depth_exact_cmp(render_depth_t a, render_depth_t b)
     return l < g ? -1 : (l > g ? 1 : 0);
 }
 
-static render_depth_t depth_pack(uint32_t n, uint32_t d, int e)
-{
-    return (uint64_t)d << 32 | (uint64_t)(uint8_t)(int8_t)e << 24 | (uint64_t)n;
-}
+/* v clamped to a packed depth's n or d range, [2^23, 2^24). */
+static uint32_t depth_part(uint32_t v) { return v < (1u << 23) ? (1u << 23) : (v >= (1u << 24) ? (1u << 24) - 1 : v); }
 
 static void test_render_depth_less(void)
 {
@@ -1712,15 +1710,15 @@ static void test_render_depth_less(void)
             int dn = (int)(r2 % 33) - 16, dd = (int)((r2 >> 8) % 33) - 16;
             bn = an + (uint32_t)dn;
             bd = ad + (uint32_t)dd;
-            bn = bn < (1u << 23) ? (1u << 23) : (bn >= (1u << 24) ? (1u << 24) - 1 : bn);
-            bd = bd < (1u << 23) ? (1u << 23) : (bd >= (1u << 24) ? (1u << 24) - 1 : bd);
+            bn = depth_part(bn);
+            bd = depth_part(bd);
             eb = ea;
             break;
         }
         case 2: { /* across an exponent boundary: n / d near 1 against 2 n' / d' near 2 */
             bn = (uint32_t)(1u << 23 | (r2 & 0x7fffffu));
             bd = (uint32_t)(1u << 23 | (r2 & 0x7fffffu)) + (uint32_t)((r2 >> 30) % 9) - 4;
-            bd = bd < (1u << 23) ? (1u << 23) : (bd >= (1u << 24) ? (1u << 24) - 1 : bd);
+            bd = depth_part(bd);
             an = (1u << 24) - 1 - (uint32_t)((r2 >> 40) % 64);
             ad = 1u << 23 | (uint32_t)((r2 >> 50) % 64);
             eb = ea + ((r2 >> 60) & 1 ? 1 : -1);
@@ -1728,10 +1726,10 @@ static void test_render_depth_less(void)
         }
         case 3: { /* nearly the same value: d scaled with n, then a unit or two off */
             bn = an + (uint32_t)((int)(r2 % 2001) - 1000);
-            bn = bn < (1u << 23) ? (1u << 23) : (bn >= (1u << 24) ? (1u << 24) - 1 : bn);
+            bn = depth_part(bn);
             uint64_t q = ((uint64_t)ad * bn + an / 2) / an;
             bd = (uint32_t)q + (uint32_t)((r2 >> 16) % 5) - 2;
-            bd = bd < (1u << 23) ? (1u << 23) : (bd >= (1u << 24) ? (1u << 24) - 1 : bd);
+            bd = depth_part(bd);
             eb = ea;
             break;
         }
@@ -1761,9 +1759,9 @@ static void test_render_depth_less(void)
         if (ea < -126 || ea > 126)
             ea = 0;
         eb = eb < -126 ? -126 : (eb > 126 ? 126 : eb);
-        render_depth_t a = depth_pack(an, ad, ea), b = depth_pack(bn, bd, eb);
+        render_depth_t a = RENDER_DEPTH(an, ad, ea), b = RENDER_DEPTH(bn, bd, eb);
         if (k % 1000 == 0)
-            a = depth_pack(0, ad, 0); /* t = 0 */
+            a = RENDER_DEPTH(0, ad, 0); /* t = 0 */
         int c = depth_exact_cmp(a, b);
         bool lt = render_depth_less(a, b), gt = render_depth_less(b, a);
         pairs++;
