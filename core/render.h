@@ -132,6 +132,8 @@ typedef struct {
     render_lin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
     uint8_t edges;
     int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
+    bool front;   /* Q16.16: N and D share one strict sign at every pixel of its bounds, so
+                   * the edges alone decide its coverage there (render_setup_object) */
 #if RENDER_COHERENT
     int16_t hint[6]; /* row coherence: where each form (N, D, edges) changed sign on the row before */
 #endif

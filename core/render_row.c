@@ -295,10 +295,14 @@ static int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x
                             int16_t *hint, render_iv_t run[4])
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0;
-    render_iv_t n[4], d[4], e[4], ge = {0, kmax}, le = {0, kmax};
-    RENDER_SIGNS(rlin_at(&f->n, ix0, iy), 2 * f->n.x, kmax, hint, n);
-    RENDER_SIGNS(rlin_at(&f->d, ix0, iy), 2 * f->d.x, kmax, hint ? hint + 1 : NULL, d);
-    render_iv_t front[2] = {render_iv_and(n[0], d[0]), render_iv_and(n[2], d[2])};
+    render_iv_t e[4], ge = {0, kmax}, le = {0, kmax}, front[2] = {{0, kmax}, {1, 0}};
+    if (!f->front) { /* (front: N and D share a sign all over its bounds) */
+        render_iv_t n[4], d[4];
+        RENDER_SIGNS(rlin_at(&f->n, ix0, iy), 2 * f->n.x, kmax, hint, n);
+        RENDER_SIGNS(rlin_at(&f->d, ix0, iy), 2 * f->d.x, kmax, hint ? hint + 1 : NULL, d);
+        front[0] = render_iv_and(n[0], d[0]);
+        front[1] = render_iv_and(n[2], d[2]);
+    }
     for (int k = 0; k < f->edges; k++) {
         const render_lin_t *ek = render_edge_k(f, k);
         RENDER_SIGNS(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, e);

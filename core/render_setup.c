@@ -891,6 +891,26 @@ __attribute__((noinline)) static void render_cull_meshes(render_t *r)
 }
 #endif
 
+#if FXRT_NUMBER == FXRT_Q16
+/* Do N and D share one strict sign over columns x0..x1 of output rows
+ * r0..r1? Both are linear in the pixel offsets, so their signs at the
+ * rectangle's four corners (exact integer values) decide for every pixel
+ * inside it. */
+static bool render_flat_front(const cam_t *cam, const render_flat_t *f, int32_t x0, int32_t x1, int32_t r0, int32_t r1)
+{
+    if (FXRT_NO_BOUNDS || x0 > x1 || r0 > r1)
+        return false; /* (without bounds every pixel is scanned) */
+    int pos = 0, neg = 0;
+    for (int k = 0; k < 4; k++) {
+        int32_t ix = 2 * ((k & 1) ? x1 : x0) - cam->width + 1, iy = cam->height - 1 - 2 * ((k & 2) ? r1 : r0);
+        render_k_t n = rlin_at(&f->n, ix, iy), d = rlin_at(&f->d, ix, iy);
+        pos += n > 0 && d > 0;
+        neg += n < 0 && d < 0;
+    }
+    return pos == 4 || neg == 4;
+}
+#endif
+
 /* (Re)compute object i's forms and bounds from its world object. */
 void render_setup_object(render_t *r, uint16_t i)
 {
@@ -921,6 +941,16 @@ void render_setup_object(render_t *r, uint16_t i)
         render_setup_box(r, ext, &w->boxes[o->index], o);
 #endif
         break;
+    }
+    for (int k = 0; k < o->nflat && (o->kind == RENDER_FLAT || o->kind == RENDER_BOX); k++) {
+        render_flat_t *f = render_face(o, k);
+        f->front = false;
+#if FXRT_NUMBER == FXRT_Q16
+        if (o->kind == RENDER_FLAT)
+            f->front = render_flat_front(cam, f, o->x0, o->x1, o->r0, o->r1);
+        else
+            f->front = render_flat_front(cam, f, o->u.face[k].x0, o->u.face[k].x1, o->u.face[k].r0, o->u.face[k].r1);
+#endif
     }
 }
 

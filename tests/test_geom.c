@@ -1902,6 +1902,85 @@ static void test_render_ranges(void)
     CHECK_MSG(outside == 0, "%ld depths outside their object's range", outside);
 }
 
+#if FXRT_NUMBER == FXRT_Q16
+/* A flat piece marked front (render_setup_object: N and D of one strict
+ * sign at the four corners of its pixel bounds) has its coverage decided
+ * by its edges alone (render_runs_flat skips N and D). Checked at every
+ * pixel of its bounds, not just the corners: triangles and boxes anywhere
+ * around the eye, straddling its plane, nearly edge-on, tiny and huge,
+ * and a plane in every direction, both camera kinds. Also that the flag
+ * is set often enough to matter and not always. */
+static void test_render_front(void)
+{
+    uint64_t st = 0xf407e11ull;
+    long pieces = 0, front = 0, pixels = 0, wrong = 0;
+    for (int it = 0; it < 600; it++) {
+        world_init(&world, col(0, 0, 0));
+        uint16_t id = 0;
+        bool ortho = it % 4 == 3;
+        double size = exp(orand(&st, log(0.05), log(50)));
+        for (int i = 0; i < 2; i++) {
+            double x = orand(&st, -6, 6), y = orand(&st, -6, 6), z = orand(&st, -12, 3), sk = it % 5 == 0 ? 0.02 : 1;
+            if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x, y, z),
+                                   V3(x + size * orand(&st, -1, 1), y + size * orand(&st, -1, 1), z + sk * size * orand(&st, -1, 1)),
+                                   V3(x + size * orand(&st, -1, 1), y + size * orand(&st, -1, 1), z + sk * size * orand(&st, -1, 1)),
+                                   col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_triangles++, id++;
+        }
+        double bx = orand(&st, -6, 6), by = orand(&st, -6, 6), bz = orand(&st, -12, 3);
+        if (geom_box_make(&world.boxes[0], V3(bx, by, bz),
+                          V3(bx + size * orand(&st, 0.01, 1), by + size * orand(&st, 0.01, 1), bz + size * orand(&st, 0.01, 1)),
+                          col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+            world.n_boxes = 1, id++;
+        if (geom_plane_make(&world.planes[0], V3(orand(&st, -5, 5), orand(&st, -5, 5), orand(&st, -5, 5)),
+                            V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1)),
+                            col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+            world.n_planes = 1, id++;
+        cam_t c;
+        vec3_t gaze = V3(orand(&st, -0.3, 0.3), orand(&st, -0.3, 0.3), -1);
+        if (cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, V3(0, 0, 0), gaze, V3(0, 1, 0),
+                      N(orand(&st, 20, 120)), N(orand(&st, 2, 20)), OW, OH) != CAM_OK)
+            continue;
+        static render_t state;
+        if (!render_setup(&state, &world, &c))
+            continue;
+        for (uint16_t i = 0; i < state.count; i++) {
+            const render_obj_t *o = &state.obj[i];
+            if (o->kind != RENDER_FLAT && o->kind != RENDER_BOX)
+                continue;
+            for (int k = 0; k < o->nflat; k++) {
+                const render_flat_t *f = render_face(o, k);
+                bool box = o->kind == RENDER_BOX;
+                int32_t x0 = box ? o->u.face[k].x0 : o->x0, x1 = box ? o->u.face[k].x1 : o->x1;
+                int32_t r0 = box ? o->u.face[k].r0 : o->r0, r1 = box ? o->u.face[k].r1 : o->r1;
+                pieces++;
+                if (!f->front)
+                    continue;
+                front++;
+                for (int32_t row = r0; row <= r1; row++)
+                    for (int32_t x = x0; x <= x1; x++) {
+                        int32_t ix = 2 * x - OW + 1, iy = OH - 1 - 2 * row;
+                        render_k_t n = rlin_at(&f->n, ix, iy), d = rlin_at(&f->d, ix, iy);
+                        pixels++;
+                        if (!((n > 0 && d > 0) || (n < 0 && d < 0))) {
+                            wrong++;
+                            CHECK_SWEEP(false, "scene %d object %d piece %d: front, but N %lld D %lld at column %d row %d",
+                                        it, (int)i, k, (long long)n, (long long)d, (int)x, (int)row);
+                        }
+                    }
+            }
+        }
+    }
+    printf("front pieces: %ld of %ld flat pieces, %ld pixels of their bounds checked, %ld without one sign of N and D\n",
+           front, pieces, pixels, wrong);
+    CHECK_MSG(front > pieces / 5 && front < pieces - pieces / 10 && pixels > 100000,
+              "too little exercised: %ld front of %ld, %ld pixels", front, pieces, pixels);
+    CHECK_MSG(wrong == 0, "%ld pixels of front pieces without one strict sign of N and D", wrong);
+}
+#else
+static void test_render_front(void) {}
+#endif
+
 /* Closed meshes (render_cull_meshes): an octahedron, an icosahedron and a
  * cube of 12 triangles, randomly scaled, turned and placed, wound outward
  * or inward, in front of a plane; some with one triangle dropped (open),
@@ -2287,6 +2366,7 @@ int main(void)
     test_render_overlap();
     test_render_depth_less();
     test_render_ranges();
+    test_render_front();
     test_render_meshes();
     test_render_eye_on_box();
     test_render_coherent();
