@@ -60,6 +60,10 @@
  * each object's range is compared with each plane's range over the
  * object's columns (t = N / D is monotone along a row), which decides "in
  * front of that plane on this whole row" or hides the object on the row.
+ * Where a newcomer crosses a stretch of columns of one other owner, the
+ * two objects' depth ranges over the stretch (flat: N / D at its ends;
+ * sphere: t at its ends above, below from a bound on disc; box: its
+ * faces') settle the whole stretch when they do not meet.
  * These shortcuts only skip computations whose result they already know,
  * so the image is what the per-pixel compare gives (FXRT_NO_ZRANGE turns
  * them off; the frames are byte-identical).

@@ -286,6 +286,10 @@ static inline __attribute__((always_inline)) bool render_depth_less(render_depth
 static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
 #endif
 
+/* render_vis.c, for tests: object i's depth at pixel offsets (ix, iy),
+ * which it covers. */
+render_depth_t render_depth_test(const render_t *r, uint16_t i, int32_t ix, int32_t iy);
+
 /* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */
 bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy);
@@ -303,6 +307,14 @@ bool render_resolve_box(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32
                         render_k_t n, render_k_t d);
 bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
                            const rsw_t *disc);
+#endif
+
+#if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
+/* render_vis.c: bounds lo, hi on object oi's depth at every column p..q of
+ * row iy, all of which it covers (planes, triangles, spheres with row
+ * forms); false when it has none. */
+bool render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
+                       render_depth_t *hi);
 #endif
 
 /* The first planes' depth ranges over the whole of the current row, each

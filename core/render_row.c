@@ -3,6 +3,15 @@
 #include "render_int.h"
 #include "shade.h"
 
+/* Is a column with owner entry cur (tag: this row's stamp) free for any
+ * newcomer: not reached yet on this row, or owned by a plane that the
+ * newcomer is nearer than all along it (render_row_order)? */
+static inline bool render_free(const render_t *r, uint32_t tag, uint32_t cur)
+{
+    uint16_t ci = (uint16_t)cur;
+    return (cur & ~0x1FFFFu) != tag || (ci < 32 && (r->row_win >> ci) & 1u);
+}
+
 /* Claim column x for object oi: free columns are taken at once, so are
  * columns owned by a plane that oi is nearer than all along this row
  * (r->row_win, render_row_order), a column owned by another object goes
@@ -11,10 +20,9 @@
 #define RENDER_COVER(r, oi, x, rgb, RESOLVE)                                         \
     do {                                                                         \
         uint32_t tag_ = (uint32_t)(r)->stamp << RENDER_STAMP_SHIFT, cur_ = (r)->owner[x]; \
-        uint16_t ci_ = (uint16_t)cur_;                                           \
-        if ((cur_ & ~0x1FFFFu) != tag_ || (ci_ < 32 && ((r)->row_win >> ci_) & 1u)) \
+        if (render_free(r, tag_, cur_))                                          \
             (r)->owner[x] = tag_ | (oi);                                         \
-        else if (ci_ == (oi) || !(RESOLVE))                                      \
+        else if ((uint16_t)cur_ == (oi) || !(RESOLVE))                           \
             break;                                                               \
         render_paint(r, oi, x, rgb);                                             \
     } while (0)
@@ -375,25 +383,29 @@ static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 #endif
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
+/* Columns a..b go to object oi. */
+static void render_claim_all(render_t *r, uint16_t oi, int32_t a, int32_t b, uint8_t *rgb)
+{
+    uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
+    for (int32_t x = a; x <= b; x++)
+        r->owner[x] = tag;
+    render_fill(r, oi, a, b, rgb);
+}
+
 /* Columns *a..*b, all covered by object oi: those no object has reached
  * yet on this row (outside r->dirty_lo..dirty_hi) are claimed and filled
  * without looking; *a..*b becomes the rest (false when empty). */
 static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb, uint8_t *rgb)
 {
-    uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
     int32_t a = *pa, b = *pb;
     int32_t fb = b < r->dirty_lo ? b : r->dirty_lo - 1;
     if (a <= fb) {
-        for (int32_t x = a; x <= fb; x++)
-            r->owner[x] = tag;
-        render_fill(r, oi, a, fb, rgb);
+        render_claim_all(r, oi, a, fb, rgb);
         a = fb + 1;
     }
     int32_t fa = a > r->dirty_hi + 1 ? a : r->dirty_hi + 1;
     if (fa <= b) {
-        for (int32_t x = fa; x <= b; x++)
-            r->owner[x] = tag;
-        render_fill(r, oi, fa, b, rgb);
+        render_claim_all(r, oi, fa, b, rgb);
         b = fa - 1;
     }
     *pa = a;
@@ -405,18 +417,29 @@ static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb
 /* A flat piece among others locates its runs from this many columns on (0
  * to 16 measured alike on the bench set; below, stepping is as cheap). */
 #define RENDER_CLAIM_MIN 8
+/* Columns of one other owner, this many or more in a row, are settled by
+ * the two objects' depth ranges over stretches of them (render_claim_span),
+ * which stop halving below RENDER_SPAN_LEAF columns (4 to 16 measured on
+ * the bench set: 6 and 12 take the fewest instructions on the M3). */
+#ifndef RENDER_SPAN_MIN
+#define RENDER_SPAN_MIN 6
+#endif
+#ifndef RENDER_SPAN_LEAF
+#define RENDER_SPAN_LEAF (2 * RENDER_SPAN_MIN)
+#endif
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
-/* Columns a..b of flat piece f of object oi, all covered by it (located
- * exactly): columns no object has reached yet are claimed and filled
- * without looking (render_claim_free); each of the rest settles its
- * owner, with f's depth from N and D stepped along the run (single: f is
- * its object's only piece; a box's depth is the nearest of its faces
- * there, f's among them: render_resolve_box). */
-static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
-                             uint8_t *rgb, bool single)
+/* Columns a..b, all covered by object oi, each settled on its own: a flat
+ * piece f's depth from N and D stepped along them (single: f is its
+ * object's only piece; a box's depth is the nearest of its faces there,
+ * f's among them: render_resolve_box), a sphere's (f NULL) from its forms. */
+__attribute__((noinline)) static void render_claim_px(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a,
+                                                      int32_t b, int32_t iy, uint8_t *rgb, bool single)
 {
-    if (!render_claim_free(r, oi, &a, &b, rgb))
+    if (!f) {
+        for (int32_t x = a; x <= b; x++)
+            render_cover(r, oi, x, iy, rgb);
         return;
+    }
     int32_t ix = 2 * a - r->cam->width + 1;
     uint64_t n = (uint64_t)rlin_at(&f->n, ix, iy), d = (uint64_t)rlin_at(&f->d, ix, iy);
     uint64_t sn = 2 * (uint64_t)f->n.x, sd = 2 * (uint64_t)f->d.x;
@@ -428,12 +451,119 @@ static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, i
             RENDER_COVER(r, oi, x, rgb, render_resolve_box(r, cur_, oi, x, iy, f, (render_k_t)n, (render_k_t)d));
     }
 }
+
+/* Columns a..b, all covered by object oi (a plane, triangle, sphere, or a
+ * box by one of its faces) and all owned by object ci: first the objects'
+ * own depth ranges, then, from column a, stretches of *len columns (the
+ * last one's length, doubled after a decision, halved after none) are
+ * settled by the two objects' depth ranges over them (render_span_range)
+ * where these do not meet: the whole stretch goes to one object. The
+ * ranges bound every depth of the stretch, so each column goes where
+ * render_settle would send it. Returns how many columns from a were
+ * settled; where it stops before b (an object without ranges, or a
+ * stretch shorter than RENDER_SPAN_LEAF undecided), the caller settles
+ * the next *len columns one by one. (A frame of its own, gone before the
+ * columns' own settling: the micro:bit's stack.) */
+__attribute__((noinline)) static int32_t render_claim_span(render_t *r, uint16_t oi, uint16_t ci, int32_t a, int32_t b,
+                                                           int32_t iy, int32_t *len, uint8_t *rgb)
+{
+    const render_obj_t *no = &r->obj[oi], *co = &r->obj[ci];
+    if (!FXRT_NO_ZRANGE && no->ranged && co->ranged) { /* the objects' own ranges first */
+        if (render_depth_less(co->thi, no->tlo))
+            return b - a + 1;
+        if (render_depth_less(no->thi, co->tlo)) {
+            render_claim_all(r, oi, a, b, rgb);
+            return b - a + 1;
+        }
+    }
+    int32_t x = a, n = *len;
+    while (x <= b) {
+        int32_t q = x + n - 1 > b ? b : x + n - 1;
+        render_depth_t nlo, nhi, olo, ohi;
+        if (!render_span_range(r, oi, x, q, iy, &nlo, &nhi) || !render_span_range(r, ci, x, q, iy, &olo, &ohi)) {
+            *len = b - x + 1;
+            break;
+        }
+        if (render_depth_less(nhi, olo)) { /* oi nearer all along */
+            render_claim_all(r, oi, x, q, rgb);
+        } else if (!render_depth_less(ohi, nlo)) { /* not behind all along either */
+            if (q - x + 1 < RENDER_SPAN_LEAF) {
+                *len = q - x + 1;
+                break;
+            }
+            n = (q - x + 2) / 2;
+            continue;
+        }
+        x = q + 1;
+        n *= 2;
+        *len = n;
+    }
+    return x - a;
+}
+
+/* Columns a..b of object oi, all covered by it (located exactly; f: the
+ * flat piece, NULL for a sphere): columns no object has reached yet are
+ * claimed and filled without looking (render_claim_free); of the rest,
+ * stretches of one other owner settle by ranges (render_claim_span), and
+ * other columns on their own (render_claim_px). */
+static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
+                             uint8_t *rgb, bool single)
+{
+    if (!render_claim_free(r, oi, &a, &b, rgb))
+        return;
+    if (b - a + 1 < RENDER_SPAN_MIN) {
+        render_claim_px(r, oi, f, a, b, iy, rgb, single);
+        return;
+    }
+    /* One stretch at a time: columns free on this row (or owned by a plane
+     * that oi is nearer than all along it) are taken, stretches of one
+     * other owner settled, oi's own (a box's other face) kept. */
+    uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT;
+    for (int32_t x = a; x <= b;) {
+        uint32_t cur = r->owner[x] & ~RENDER_DEPTH_KNOWN;
+        uint16_t ci = (uint16_t)cur;
+        int32_t y = x;
+        if (render_free(r, tag, cur)) {
+            while (y < b && render_free(r, tag, r->owner[y + 1]))
+                y++;
+            render_claim_all(r, oi, x, y, rgb);
+        } else {
+            while (y < b && (r->owner[y + 1] & ~RENDER_DEPTH_KNOWN) == cur)
+                y++;
+            if (ci == oi) {
+                x = y + 1;
+                continue;
+            }
+            if (y - x + 1 < RENDER_SPAN_MIN) {
+                render_claim_px(r, oi, f, x, y, iy, rgb, single);
+                x = y + 1;
+                continue;
+            }
+            /* Settled by ranges where they decide, else column by column. */
+            for (int32_t len = y - x + 1; x <= y;) {
+                x += render_claim_span(r, oi, ci, x, y, iy, &len, rgb);
+                if (x <= y) {
+                    int32_t e = x + len - 1;
+                    render_claim_px(r, oi, f, x, e, iy, rgb, single);
+                    x = e + 1;
+                    len = RENDER_SPAN_MIN; /* then ranges again from a short stretch */
+                }
+            }
+            continue;
+        }
+        x = y + 1;
+    }
+}
 #endif
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
-/* Step a flat piece across columns x0..x1: each form is linear, so one
- * exact 64-bit addition per form and pixel. */
-static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+__attribute__((noinline)) static void render_step_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0,
+                                                       int32_t x1, int32_t iy, uint8_t *rgb, bool lone, bool single);
+
+/* A flat piece across columns x0..x1, by spans where it is wide enough
+ * (true); false: the caller steps it (render_step_flat), each form linear,
+ * so one exact 64-bit addition per form and pixel. */
+static bool render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb, bool lone)
 {
     bool single = r->obj[oi].kind == RENDER_FLAT;
@@ -442,7 +572,7 @@ static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
      * (a division per form pays off from about 4 columns per form on the M3). */
     if (lone && x1 - x0 >= 4 * (1 + f->edges)) {
         render_span_flat(r, oi, f, x0, x1, iy, rgb);
-        return;
+        return true;
     }
     /* Among others and wide: its runs located the same way, then each
      * covered column claimed (render_claim_run). */
@@ -451,9 +581,19 @@ static void render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
         int nrun = render_runs_flat(r, f, x0, x1, iy, RENDER_HINT(f), iv);
         for (int k = 0; k < nrun; k++)
             render_claim_run(r, oi, f, x0 + iv[k].lo, x0 + iv[k].hi, iy, rgb, single);
-        return;
+        return true;
     }
+#else
+    (void)single;
 #endif
+    return false;
+}
+
+/* Narrow: every column stepped and tested. (A frame of its own, apart
+ * from the claiming path's: the micro:bit's stack.) */
+__attribute__((noinline)) static void render_step_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0,
+                                                       int32_t x1, int32_t iy, uint8_t *rgb, bool lone, bool single)
+{
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     uint64_t n = (uint64_t)rlin_at(&f->n, ix0, iy), d = (uint64_t)rlin_at(&f->d, ix0, iy);
     uint64_t sn = 2 * (uint64_t)f->n.x, sd = 2 * (uint64_t)f->d.x;
@@ -662,12 +802,8 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
         else
 #endif
             nrun = render_sphere_runs(o, sp, x0, x1, ix0, iy, run);
-        for (int k = 0; k < nrun; k++) {
-            int32_t a = x0 + run[k].lo, b = x0 + run[k].hi;
-            if (render_claim_free(r, oi, &a, &b, rgb))
-                for (int32_t x = a; x <= b; x++)
-                    render_cover(r, oi, x, iy, rgb);
-        }
+        for (int k = 0; k < nrun; k++)
+            render_claim_run(r, oi, NULL, x0 + run[k].lo, x0 + run[k].hi, iy, rgb, true);
         return;
     }
 #endif
@@ -762,7 +898,9 @@ static void render_scan_sphere_f(render_t *r, uint16_t oi, const render_obj_t *o
  * the float programmer's restarted forward differences otherwise. */
 #if FXRT_NUMBER == FXRT_Q16
 #define RENDER_SCAN_SPHERE render_scan_sphere
-#define RENDER_SCAN_FLAT render_scan_flat
+#define RENDER_SCAN_FLAT(r, oi, f, x0, x1, iy, rgb, lone)                                                            \
+    ((void)(render_scan_flat(r, oi, f, x0, x1, iy, rgb, lone) ||                                                   \
+            (render_step_flat(r, oi, f, x0, x1, iy, rgb, lone, (r)->obj[oi].kind == RENDER_FLAT), false)))
 #else
 #define RENDER_SCAN_SPHERE render_scan_sphere_f
 #define RENDER_SCAN_FLAT render_scan_flat_f

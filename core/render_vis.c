@@ -165,28 +165,40 @@ __attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *
  * own (it was scanned on this row, as it covers the pixel). Owners are
  * asked about column after column, so the last column's value and step
  * give the next by two additions. False: no row forms. */
-__attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, uint16_t oi, int32_t ix, int32_t iy,
-                                                             rsw_t *disc)
+/* Sphere oi's forms on row iy where the row has them (r->scache: the
+ * sphere scanned last among others; r->srow: its row state), with the
+ * pixel offset *ix0 of their column k = 0; NULL when it has none, or they
+ * are not the perspective disc from outside. */
+static const render_srow_t *render_sphere_rowforms(const render_t *r, uint16_t oi, int32_t iy, int32_t *ix0)
 {
-    render_scache_t *sc = r->scache;
+    const render_scache_t *sc = r->scache;
     const render_srow_t *q = NULL;
-    int32_t k = 0;
     if (!sc)
-        return false;
+        return NULL;
     if (sc->oi == oi && sc->iy == iy) {
         q = &sc->s;
-        k = (ix - sc->ix0) / 2;
+        *ix0 = sc->ix0;
     }
 #if RENDER_SROWS
     const render_obj_t *o = &r->obj[oi];
     if (!q && o->index < FXRT_COHERENT_SPHERES && r->cam->height >= 3 &&
         r->srow[o->index].vrow == render_row_of(r->cam, iy)) {
         q = &r->srow[o->index].cur;
-        k = (ix - (2 * o->x0 - r->cam->width + 1)) / 2;
+        *ix0 = 2 * o->x0 - r->cam->width + 1;
     }
 #endif
-    if (!q || q->ortho || q->inside)
+    return q && !q->ortho && !q->inside ? q : NULL;
+}
+
+__attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, uint16_t oi, int32_t ix, int32_t iy,
+                                                             rsw_t *disc)
+{
+    render_scache_t *sc = r->scache;
+    int32_t ix0 = 0;
+    const render_srow_t *q = render_sphere_rowforms(r, oi, iy, &ix0);
+    if (!q)
         return false;
+    int32_t k = (ix - ix0) / 2;
     if (sc->loi == oi && k == sc->lk + 1) {
         if (!sc->lstepped) /* the step at lk, once a second column follows */
             sc->lstep = fx128_add(q->d1, render_mul128_small(q->d2, sc->lk));
@@ -239,6 +251,12 @@ static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix
     return render_box_depth(r, o, ix, iy, NULL, 0, 0);
 }
 
+
+/* Test hook: object i's depth at pixel offsets (ix, iy), which it covers. */
+render_depth_t render_depth_test(const render_t *r, uint16_t i, int32_t ix, int32_t iy)
+{
+    return render_depth_at(r, i, ix, iy);
+}
 
 /* Test hook: is object i's depth at pixel offsets (ix, iy), which it
  * covers, inside its depth range [tlo, thi]? (A depth outside would let
@@ -437,24 +455,117 @@ static render_depth_t render_depth_widen(render_depth_t t, bool up)
 #endif
 }
 
+/* Depth range of flat piece f over columns x0..x1 of row iy: 1 when it
+ * is in front at both ends (N and D of one strict sign), so all along
+ * (both are linear), where t = N / D is monotone; 0 when it is behind at
+ * both ends (opposite strict signs, so all along); -1 otherwise. */
+static int render_flat_range(const render_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+                             render_depth_t *lo, render_depth_t *hi)
+{
+    int32_t w = r->cam->width;
+    render_k_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
+    render_k_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
+    if (!((na > 0 && da > 0 && nb > 0 && db > 0) || (na < 0 && da < 0 && nb < 0 && db < 0)))
+        return (na > 0 && da < 0 && nb > 0 && db < 0) || (na < 0 && da > 0 && nb < 0 && db > 0) ? 0 : -1;
+    render_depth_t ta = render_flat_depth(f, na, da), tb = render_flat_depth(f, nb, db);
+    bool a_first = render_depth_less(ta, tb);
+    *lo = render_depth_widen(a_first ? ta : tb, false);
+    *hi = render_depth_widen(a_first ? tb : ta, true);
+    return 1;
+}
+
 /* Depth range of plane p over columns x0..x1 of row iy when it covers both
  * ends with one sign of N and D: then it covers the whole segment and its
  * t = N / D is monotone there. */
 static bool render_plane_range(const render_t *r, const render_obj_t *p, int32_t x0, int32_t x1, int32_t iy,
                                render_depth_t *lo, render_depth_t *hi)
 {
-    const render_flat_t *f = render_face(p, 0);
-    int32_t w = r->cam->width;
-    render_k_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
-    render_k_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
-    if (!((na > 0 && da > 0 && nb > 0 && db > 0) || (na < 0 && da < 0 && nb < 0 && db < 0)))
+    return render_flat_range(r, render_face(p, 0), x0, x1, iy, lo, hi) == 1;
+}
+
+#if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
+/* Depth range of sphere oi over columns p..q of row iy, all of which it
+ * covers, from its row forms (perspective, eye outside, disc concave
+ * along the row). There t = k / g with g = b + sqrt(disc) concave (b
+ * linear, disc concave): t is largest at an end, and smallest where g is,
+ * which is at most max(b) + sqrt of a bound on disc: each tangent line of
+ * the concave disc lies above it, so disc(p + j) <= disc(p) + j * step(p)
+ * and disc(q - j) <= disc(q) - j * step(q - 1) (a step counted only where
+ * it rises). Both ends widened by render_depth_widen: the keys' 24-bit
+ * truncations and sqrt's 32 bits stay far inside that. */
+__attribute__((noinline)) static bool render_sphere_span(const render_t *r, uint16_t oi, int32_t p, int32_t q,
+                                                         int32_t iy, render_depth_t *lo, render_depth_t *hi)
+{
+    const render_obj_t *o = &r->obj[oi];
+    const render_sphere_t *sp = o->u.sphere;
+    int32_t ix0 = 0;
+    const render_srow_t *s = render_sphere_rowforms(r, oi, iy, &ix0);
+    if (!s || s->d2.hi >= 0 || sp->k.hi < 0 || (sp->k.hi == 0 && sp->k.lo == 0))
         return false;
-    render_depth_t ta = render_flat_depth(f, na, da), tb = render_flat_depth(f, nb, db);
-    bool a_first = render_depth_less(ta, tb);
-    *lo = render_depth_widen(a_first ? ta : tb, false);
-    *hi = render_depth_widen(a_first ? tb : ta, true);
+    int32_t ixp = 2 * p - r->cam->width + 1, ixq = 2 * q - r->cam->width + 1;
+    int32_t kp = (ixp - ix0) / 2, kq = (ixq - ix0) / 2, len = kq - kp;
+    fx128_t dp = render_quad_k(s->v, s->d1, s->d2, kp), dq = render_quad_k(s->v, s->d1, s->d2, kq);
+    fx128_t up = fx128_add(s->d1, render_mul128_small(s->d2, kp));            /* disc(p + 1) - disc(p) */
+    fx128_t down = fx128_neg(fx128_add(s->d1, render_mul128_small(s->d2, kq - 1))); /* disc(q - 1) - disc(q) */
+    fx128_t u1 = up.hi < 0 ? dp : fx128_add(dp, render_mul128_small(up, len));
+    fx128_t u2 = down.hi < 0 ? dq : fx128_add(dq, render_mul128_small(down, len));
+    fx128_t ub = fx128_sub(u1, u2).hi < 0 ? u1 : u2;
+    if (dp.hi < 0 || dq.hi < 0 || ub.hi >= (int64_t)1 << 60)
+        return false; /* (not covered at an end; or too large a bound to add b to) */
+    uint64_t bp = (uint64_t)rlin_at(&sp->b, ixp, iy), bq = (uint64_t)rlin_at(&sp->b, ixq, iy);
+    render_depth_t tp = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bp + render_sqrt128(&dp), sp->tc);
+    render_depth_t tq = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bq + render_sqrt128(&dq), sp->tc);
+    uint64_t bmax = (int64_t)bp > (int64_t)bq ? bp : bq;
+    *hi = render_depth_widen(render_depth_less(tp, tq) ? tq : tp, true);
+    *lo = render_depth_widen(render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bmax + render_sqrt128(&ub), sp->tc), false);
     return true;
 }
+
+/* Depth range of box o over columns p..q of row iy, all of which it
+ * covers: its depth at a column is that of a face covering it there, and
+ * every face that can (its pixel bounds reach the column) has a range on
+ * its part of p..q, or is behind all along it. */
+__attribute__((noinline)) static bool render_box_span(const render_t *r, const render_obj_t *o, int32_t p, int32_t q,
+                                                      int32_t iy, render_depth_t *lo, render_depth_t *hi)
+{
+    int32_t row = render_row_of(r->cam, iy);
+    bool any = false;
+    for (int i = 0; i < o->nflat; i++) {
+        const render_face_t *fc = &o->u.face[i];
+        int32_t a = p > fc->x0 ? p : fc->x0, b = q < fc->x1 ? q : fc->x1;
+        render_depth_t flo, fhi;
+        if (row < fc->r0 || row > fc->r1 || a > b)
+            continue;
+        int k = render_flat_range(r, &fc->f, a, b, iy, &flo, &fhi);
+        if (k < 0)
+            return false;
+        if (k == 0)
+            continue;
+        if (!any || render_depth_less(flo, *lo))
+            *lo = flo;
+        if (!any || render_depth_less(*hi, fhi))
+            *hi = fhi;
+        any = true;
+    }
+    return any;
+}
+
+/* Bounds on object oi's depth over columns p..q of row iy, all of which
+ * it covers (a plane or triangle: N / D is monotone there; a sphere:
+ * render_sphere_span; a box: render_box_span); false where it has none. */
+bool render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
+                       render_depth_t *hi)
+{
+    const render_obj_t *o = &r->obj[oi];
+    if (o->kind == RENDER_FLAT)
+        return render_plane_range(r, o, p, q, iy, lo, hi);
+    if (o->kind == RENDER_SPHERE)
+        return render_sphere_span(r, oi, p, q, iy, lo, hi);
+    if (o->kind == RENDER_BOX)
+        return render_box_span(r, o, p, q, iy, lo, hi);
+    return false;
+}
+#endif
 
 static bool render_is_plane(const render_obj_t *o) { return o->kind == RENDER_FLAT && render_face(o, 0)->edges == 0; }
 

@@ -1981,6 +1981,117 @@ static void test_render_front(void)
 static void test_render_front(void) {}
 #endif
 
+#if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
+/* Depth ranges over stretches of a row (render_span_range: render_row's
+ * claiming settles a whole stretch of one owner from them): every column
+ * of a stretch that the object covers must have its depth (from its forms
+ * at the pixel) inside the range. Random scenes of spheres (tiny to
+ * large, from far to nearly touching the eye), boxes, triangles and a
+ * plane; every row rendered first (a sphere's range needs the row forms
+ * render_row leaves), then every covered run of every object on it,
+ * whole and as random stretches, checked column by column. */
+static void test_render_span_ranges(void)
+{
+    uint64_t st = 0x5b4ae11ull;
+    long ranged[4] = {0, 0, 0, 0}, cols = 0, wrong = 0;
+    static uint8_t rgb[OW * 3];
+    for (int it = 0; it < 150; it++) {
+        world_init(&world, col(0, 0, 0));
+        uint16_t id = 0;
+        bool ortho = it % 5 == 4;
+        bool axis = it % 3 == 0; /* the first sphere straight ahead: b constant along the rows */
+        for (int i = 0; i < 5; i++) {
+            double rad = exp(orand(&st, log(0.05), log(6)));
+            if (geom_sphere_make(&world.spheres[world.n_spheres],
+                                 V3(axis && i == 0 ? 0 : orand(&st, -4, 4), orand(&st, -3, 3),
+                                    orand(&st, -14, -1 - rad * (it % 2 ? 1.02 : 3))),
+                                 N(rad), col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_spheres++, id++;
+        }
+        for (int i = 0; i < 2; i++) {
+            /* The second box mostly beside the eye, reaching behind it:
+             * faces seen at grazing angles, their planes' horizons on screen. */
+            bool beside = i == 1 && it % 2;
+            double bx = beside ? orand(&st, 0.5, 3) * (it % 4 == 1 ? -1 : 1) : orand(&st, -5, 4), by = orand(&st, -4, 3);
+            double bz = beside ? orand(&st, -6, -1) : orand(&st, -12, -2), dz = beside ? orand(&st, 1.5, 8) : orand(&st, 0.1, 5);
+            if (it % 4 == 1 && beside)
+                bx -= 5;
+            if (geom_box_make(&world.boxes[world.n_boxes], V3(bx, by, bz),
+                              V3(bx + orand(&st, 0.1, 5), by + orand(&st, 0.1, 5), bz + dz),
+                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_boxes++, id++;
+            double x = orand(&st, -5, 5), y = orand(&st, -4, 4), z = orand(&st, -12, -1);
+            if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x, y, z),
+                                   V3(x + orand(&st, -6, 6), y + orand(&st, 0.5, 6), z + orand(&st, -4, 4)),
+                                   V3(x + orand(&st, 0.5, 6), y + orand(&st, -6, 6), z + orand(&st, -4, 4)),
+                                   col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_triangles++, id++;
+        }
+        if (geom_plane_make(&world.planes[0], V3(0, orand(&st, -4, -1), 0),
+                            V3(orand(&st, -0.3, 0.3), 1, orand(&st, -0.3, 0.3)), col(orand(&st, 0, 1), 0.5, 0.5), id))
+            world.n_planes = 1, id++;
+        cam_t c;
+        double gx = orand(&st, -0.2, 0.2), gy = orand(&st, -0.2, 0.2);
+        if (cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, V3(0, 0, 0),
+                      V3(axis ? 0 : gx, axis ? 0 : gy, -1), V3(0, 1, 0), N(orand(&st, 30, 100)),
+                      N(orand(&st, 5, 20)), OW, OH) != CAM_OK)
+            continue;
+        static render_t state;
+        if (!render_setup(&state, &world, &c))
+            continue;
+        for (int32_t row = 0; row < OH; row++) {
+            render_row(&state, row, rgb);
+            render_scache_t sc; /* none: the spheres' ranges come from their row state */
+            sc.oi = sc.loi = RENDER_VIS_NONE;
+            state.scache = &sc;
+            int32_t iy = OH - 1 - 2 * row;
+            for (uint16_t i = 0; i < state.count; i++) {
+                const render_obj_t *o = &state.obj[i];
+                int kind = o->kind == RENDER_SPHERE ? 0 : o->kind == RENDER_BOX ? 1 : render_face(o, 0)->edges ? 2 : 3;
+                for (int32_t a = 0; a < OW;) {
+                    if (!render_covers(o, 2 * a - OW + 1, iy)) {
+                        a++;
+                        continue;
+                    }
+                    int32_t b = a;
+                    while (b + 1 < OW && render_covers(o, 2 * (b + 1) - OW + 1, iy))
+                        b++;
+                    for (int k = 0; k < 6; k++) { /* the run, its halves, its last quarter, random stretches */
+                        int32_t p = k == 1 || k == 3 ? a + (b - a) * (k == 1 ? 2 : 3) / 4 : a, q = k == 2 ? a + (b - a) / 2 : b;
+                        if (k > 3) {
+                            p = a + (int32_t)orand(&st, 0, b - a + 0.999);
+                            q = p + (int32_t)orand(&st, 0, b - p + 0.999);
+                        }
+                        render_depth_t lo, hi;
+                        if (!render_span_range(&state, i, p, q, iy, &lo, &hi))
+                            continue;
+                        ranged[kind]++;
+                        for (int32_t x = p; x <= q; x++) {
+                            render_depth_t t = render_depth_test(&state, i, 2 * x - OW + 1, iy);
+                            cols++;
+                            if (render_depth_less(t, lo) || render_depth_less(hi, t)) {
+                                wrong++;
+                                CHECK_SWEEP(false, "scene %d object %d row %d: depth at column %d outside the range of "
+                                            "columns %d..%d", it, (int)i, (int)row, (int)x, (int)p, (int)q);
+                            }
+                        }
+                    }
+                    a = b + 1;
+                }
+            }
+            state.scache = NULL;
+        }
+    }
+    printf("stretch ranges: %ld spheres, %ld boxes, %ld triangles, %ld planes; %ld columns checked, %ld outside\n",
+           ranged[0], ranged[1], ranged[2], ranged[3], cols, wrong);
+    CHECK_MSG(ranged[0] > 2000 && ranged[1] > 2000 && ranged[2] > 2000 && ranged[3] > 500,
+              "too few stretches ranged: %ld %ld %ld %ld", ranged[0], ranged[1], ranged[2], ranged[3]);
+    CHECK_MSG(wrong == 0, "%ld depths outside their stretch's range", wrong);
+}
+#else
+static void test_render_span_ranges(void) {}
+#endif
+
 /* Closed meshes (render_cull_meshes): an octahedron, an icosahedron and a
  * cube of 12 triangles, randomly scaled, turned and placed, wound outward
  * or inward, in front of a plane; some with one triangle dropped (open),
@@ -2367,6 +2478,7 @@ int main(void)
     test_render_depth_less();
     test_render_ranges();
     test_render_front();
+    test_render_span_ranges();
     test_render_meshes();
     test_render_eye_on_box();
     test_render_coherent();
