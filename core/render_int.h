@@ -311,10 +311,12 @@ bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, in
 
 #if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
 /* render_vis.c: bounds lo, hi on object oi's depth at every column p..q of
- * row iy, all of which it covers (planes, triangles, spheres with row
- * forms); false when it has none. */
-bool render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
-                       render_depth_t *hi);
+ * row iy, all of which it covers (planes, triangles, boxes, spheres with
+ * row forms): 1 both bounds, 2 (a sphere) only hi, with lo its smaller
+ * end (its bound below, from low, lies lower), 0 none; with low, a
+ * sphere's bound below alone, into lo (1) or none (0). */
+int render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
+                      render_depth_t *hi, bool low);
 #endif
 
 /* The first planes' depth ranges over the whole of the current row, each

@@ -480,13 +480,20 @@ __attribute__((noinline)) static int32_t render_claim_span(render_t *r, uint16_t
     while (x <= b) {
         int32_t q = x + n - 1 > b ? b : x + n - 1;
         render_depth_t nlo, nhi, olo, ohi;
-        if (!render_span_range(r, oi, x, q, iy, &nlo, &nhi) || !render_span_range(r, ci, x, q, iy, &olo, &ohi)) {
+        int kn = render_span_range(r, oi, x, q, iy, &nlo, &nhi, false);
+        int ko = kn ? render_span_range(r, ci, x, q, iy, &olo, &ohi, false) : 0;
+        if (!kn || !ko) {
             *len = b - x + 1;
             break;
         }
-        if (render_depth_less(nhi, olo)) { /* oi nearer all along */
-            render_claim_all(r, oi, x, q, rgb);
-        } else if (!render_depth_less(ohi, nlo)) { /* not behind all along either */
+        /* (A sphere's bound below is worked out only where its smaller end
+         * says it could decide: it lies below that end.) */
+        if (render_depth_less(nhi, olo) &&
+            (ko == 1 || (render_span_range(r, ci, x, q, iy, &olo, &ohi, true) && render_depth_less(nhi, olo)))) {
+            render_claim_all(r, oi, x, q, rgb); /* oi nearer all along */
+        } else if (!(render_depth_less(ohi, nlo) &&
+                     (kn == 1 || (render_span_range(r, oi, x, q, iy, &nlo, &nhi, true) && render_depth_less(ohi, nlo))))) {
+            /* not behind all along either */
             if (q - x + 1 < RENDER_SPAN_LEAF) {
                 *len = q - x + 1;
                 break;

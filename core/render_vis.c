@@ -487,38 +487,47 @@ static bool render_plane_range(const render_t *r, const render_obj_t *p, int32_t
 /* Depth range of sphere oi over columns p..q of row iy, all of which it
  * covers, from its row forms (perspective, eye outside, disc concave
  * along the row). There t = k / g with g = b + sqrt(disc) concave (b
- * linear, disc concave): t is largest at an end, and smallest where g is,
- * which is at most max(b) + sqrt of a bound on disc: each tangent line of
- * the concave disc lies above it, so disc(p + j) <= disc(p) + j * step(p)
- * and disc(q - j) <= disc(q) - j * step(q - 1) (a step counted only where
- * it rises). Both ends widened by render_depth_widen: the keys' 24-bit
- * truncations and sqrt's 32 bits stay far inside that. */
-__attribute__((noinline)) static bool render_sphere_span(const render_t *r, uint16_t oi, int32_t p, int32_t q,
-                                                         int32_t iy, render_depth_t *lo, render_depth_t *hi)
+ * linear, disc concave): t is largest at an end (!low: *hi, and *lo the
+ * smaller end, returning 2: not a bound), and smallest where g is, which
+ * is at most max(b) + sqrt of a bound on disc (low: *lo alone, returning
+ * 1): each tangent line of the concave disc lies above it, so
+ * disc(p + j) <= disc(p) + j * step(p) and disc(q - j) <= disc(q) - j *
+ * step(q - 1) (a step counted only where it rises). Both ends widened by
+ * render_depth_widen: the keys' 24-bit truncations and sqrt's 32 bits stay
+ * far inside that. 0: no range. */
+__attribute__((noinline)) static int render_sphere_span(const render_t *r, uint16_t oi, int32_t p, int32_t q,
+                                                        int32_t iy, render_depth_t *lo, render_depth_t *hi, bool low)
 {
     const render_obj_t *o = &r->obj[oi];
     const render_sphere_t *sp = o->u.sphere;
     int32_t ix0 = 0;
     const render_srow_t *s = render_sphere_rowforms(r, oi, iy, &ix0);
     if (!s || s->d2.hi >= 0 || sp->k.hi < 0 || (sp->k.hi == 0 && sp->k.lo == 0))
-        return false;
+        return 0;
     int32_t ixp = 2 * p - r->cam->width + 1, ixq = 2 * q - r->cam->width + 1;
     int32_t kp = (ixp - ix0) / 2, kq = (ixq - ix0) / 2, len = kq - kp;
     fx128_t dp = render_quad_k(s->v, s->d1, s->d2, kp), dq = render_quad_k(s->v, s->d1, s->d2, kq);
+    if (dp.hi < 0 || dq.hi < 0)
+        return 0; /* (not covered at an end) */
+    uint64_t bp = (uint64_t)rlin_at(&sp->b, ixp, iy), bq = (uint64_t)rlin_at(&sp->b, ixq, iy);
+    if (!low) {
+        render_depth_t tp = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bp + render_sqrt128(&dp), sp->tc);
+        render_depth_t tq = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bq + render_sqrt128(&dq), sp->tc);
+        bool p_first = render_depth_less(tp, tq);
+        *hi = render_depth_widen(p_first ? tq : tp, true);
+        *lo = render_depth_widen(p_first ? tp : tq, false);
+        return 2;
+    }
     fx128_t up = fx128_add(s->d1, render_mul128_small(s->d2, kp));            /* disc(p + 1) - disc(p) */
     fx128_t down = fx128_neg(fx128_add(s->d1, render_mul128_small(s->d2, kq - 1))); /* disc(q - 1) - disc(q) */
     fx128_t u1 = up.hi < 0 ? dp : fx128_add(dp, render_mul128_small(up, len));
     fx128_t u2 = down.hi < 0 ? dq : fx128_add(dq, render_mul128_small(down, len));
     fx128_t ub = fx128_sub(u1, u2).hi < 0 ? u1 : u2;
-    if (dp.hi < 0 || dq.hi < 0 || ub.hi >= (int64_t)1 << 60)
-        return false; /* (not covered at an end; or too large a bound to add b to) */
-    uint64_t bp = (uint64_t)rlin_at(&sp->b, ixp, iy), bq = (uint64_t)rlin_at(&sp->b, ixq, iy);
-    render_depth_t tp = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bp + render_sqrt128(&dp), sp->tc);
-    render_depth_t tq = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bq + render_sqrt128(&dq), sp->tc);
+    if (ub.hi >= (int64_t)1 << 60)
+        return 0; /* (too large a bound to add b to) */
     uint64_t bmax = (int64_t)bp > (int64_t)bq ? bp : bq;
-    *hi = render_depth_widen(render_depth_less(tp, tq) ? tq : tp, true);
     *lo = render_depth_widen(render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bmax + render_sqrt128(&ub), sp->tc), false);
-    return true;
+    return 1;
 }
 
 /* Depth range of box o over columns p..q of row iy, all of which it
@@ -552,18 +561,21 @@ __attribute__((noinline)) static bool render_box_span(const render_t *r, const r
 
 /* Bounds on object oi's depth over columns p..q of row iy, all of which
  * it covers (a plane or triangle: N / D is monotone there; a sphere:
- * render_sphere_span; a box: render_box_span); false where it has none. */
-bool render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
-                       render_depth_t *hi)
+ * render_sphere_span; a box: render_box_span): 1, both ends bounds; 2
+ * (a sphere, !low), *hi a bound and *lo not (its smaller end: its bound
+ * below, from low, can only be lower); 0, none. low: a sphere's bound
+ * below alone, into *lo. */
+int render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
+                      render_depth_t *hi, bool low)
 {
     const render_obj_t *o = &r->obj[oi];
     if (o->kind == RENDER_FLAT)
-        return render_plane_range(r, o, p, q, iy, lo, hi);
+        return render_plane_range(r, o, p, q, iy, lo, hi) ? 1 : 0;
     if (o->kind == RENDER_SPHERE)
-        return render_sphere_span(r, oi, p, q, iy, lo, hi);
+        return render_sphere_span(r, oi, p, q, iy, lo, hi, low);
     if (o->kind == RENDER_BOX)
-        return render_box_span(r, o, p, q, iy, lo, hi);
-    return false;
+        return render_box_span(r, o, p, q, iy, lo, hi) ? 1 : 0;
+    return 0;
 }
 #endif
 
