@@ -116,22 +116,24 @@ static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy
 #endif
 
 #if FXRT_NUMBER == FXRT_Q16
-/* a * m exactly (mod 2^128, so exact whenever the product fits). */
-RENDER_MAYBE_UNUSED static fx128_t render_mul128_small(fx128_t a, int32_t m)
+/* a * m exactly (mod 2^128, so exact whenever the product fits). By
+ * pointer, like render_quad_k's: the M0 passes a 16-byte value partly on
+ * the stack, copied with memcpy. */
+RENDER_MAYBE_UNUSED static fx128_t render_mul128_small(const fx128_t *a, int32_t m)
 {
     uint32_t um = m < 0 ? 0u - (uint32_t)m : (uint32_t)m;
-    uint64_t p0 = (uint64_t)(uint32_t)a.lo * um, p1 = (a.lo >> 32) * um;
+    uint64_t p0 = (uint64_t)(uint32_t)a->lo * um, p1 = (a->lo >> 32) * um;
     fx128_t r;
     r.lo = p0 + (p1 << 32);
-    r.hi = (int64_t)((uint64_t)a.hi * um + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
+    r.hi = (int64_t)((uint64_t)a->hi * um + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
     return m < 0 ? fx128_neg(r) : r;
 }
 
 /* q(k) = v + d1 k + d2 k (k - 1) / 2: the value the forward differences
  * reach after k steps, evaluated directly (exact). */
-RENDER_MAYBE_UNUSED static fx128_t render_quad_k(fx128_t v, fx128_t d1, fx128_t d2, int32_t k)
+RENDER_MAYBE_UNUSED static fx128_t render_quad_k(const fx128_t *v, const fx128_t *d1, const fx128_t *d2, int32_t k)
 {
-    return fx128_add(fx128_add(v, render_mul128_small(d1, k)), render_mul128_small(d2, (int32_t)((int64_t)k * (k - 1) / 2)));
+    return fx128_add(fx128_add(*v, render_mul128_small(d1, k)), render_mul128_small(d2, (int32_t)((int64_t)k * (k - 1) / 2)));
 }
 #endif
 

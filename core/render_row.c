@@ -145,30 +145,40 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
     for (; x <= xb; x++)
         p16[x] = v;
 #else
-    uint8_t pat[12];
-    for (int i = 0; i < 4; i++) {
-        pat[3 * i + 0] = c.r;
-        pat[3 * i + 1] = c.g;
-        pat[3 * i + 2] = c.b;
-    }
+    /* Single pixels by byte stores: a 3-byte memcpy is a library call on
+     * the Cortex-M0. */
     if (((uintptr_t)rgb & 3u) == 0) {
         /* Aligned rows (the firmware's framebuffer and bands). may_alias:
          * the buffer is bytes. */
-        for (; x <= xb && (x & 3); x++)
-            __builtin_memcpy(rgb + 3 * x, pat, 3);
-        word_t w[3], *p = (word_t *)(void *)(rgb + 3 * x);
-        __builtin_memcpy(w, pat, 12);
-        for (; x + 3 <= xb; x += 4, p += 3) {
-            p[0] = w[0];
-            p[1] = w[1];
-            p[2] = w[2];
+        for (; x <= xb && (x & 3); x++) {
+            rgb[3 * x + 0] = c.r;
+            rgb[3 * x + 1] = c.g;
+            rgb[3 * x + 2] = c.b;
         }
-    } else {
-        for (; x + 3 <= xb; x += 4)
-            __builtin_memcpy(rgb + 3 * x, pat, 12);
+        if (x + 3 <= xb) {
+            union {
+                uint8_t b[12];
+                uint32_t w[3];
+            } pat;
+            for (int i = 0; i < 4; i++) {
+                pat.b[3 * i + 0] = c.r;
+                pat.b[3 * i + 1] = c.g;
+                pat.b[3 * i + 2] = c.b;
+            }
+            uint32_t w0 = pat.w[0], w1 = pat.w[1], w2 = pat.w[2];
+            word_t *p = (word_t *)(void *)(rgb + 3 * x);
+            for (; x + 3 <= xb; x += 4, p += 3) {
+                p[0] = w0;
+                p[1] = w1;
+                p[2] = w2;
+            }
+        }
     }
-    for (; x <= xb; x++)
-        __builtin_memcpy(rgb + 3 * x, pat, 3);
+    for (; x <= xb; x++) {
+        rgb[3 * x + 0] = c.r;
+        rgb[3 * x + 1] = c.g;
+        rgb[3 * x + 2] = c.b;
+    }
 #endif
 }
 
@@ -338,19 +348,19 @@ static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t 
     int32_t lo = 0, hi = kmax; /* peak: first k whose step is <= 0 (or kmax) */
     while (lo < hi) {
         int32_t mid = lo + (hi - lo) / 2;
-        fx128_t step = fx128_add(d1, render_mul128_small(d2, mid));
+        fx128_t step = fx128_add(d1, render_mul128_small(&d2, mid));
         if (step.hi < 0 || (step.hi == 0 && step.lo == 0))
             hi = mid;
         else
             lo = mid + 1;
     }
     int32_t peak = lo;
-    if (render_quad_k(v, d1, d2, peak).hi < 0)
+    if (render_quad_k(&v, &d1, &d2, peak).hi < 0)
         return none;
     int32_t a = 0, b = peak; /* first k <= peak with q >= 0 */
     while (a < b) {
         int32_t mid = a + (b - a) / 2;
-        if (render_quad_k(v, d1, d2, mid).hi >= 0)
+        if (render_quad_k(&v, &d1, &d2, mid).hi >= 0)
             b = mid;
         else
             a = mid + 1;
@@ -360,7 +370,7 @@ static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t 
     a = peak, b = kmax; /* last k >= peak with q >= 0 */
     while (a < b) {
         int32_t mid = b - (b - a) / 2;
-        if (render_quad_k(v, d1, d2, mid).hi >= 0)
+        if (render_quad_k(&v, &d1, &d2, mid).hi >= 0)
             a = mid;
         else
             b = mid - 1;
@@ -999,7 +1009,7 @@ static int32_t render_gallop(const render_srow_t *s, int32_t from, int32_t dir, 
     int32_t good = from, bad = from, step = 1;
     while (good != limit) {
         int32_t k = (limit - good) * dir > step ? good + dir * step : limit;
-        if ((render_quad_k(s->v, s->d1, s->d2, k).hi >= 0) == want) {
+        if ((render_quad_k(&s->v, &s->d1, &s->d2, k).hi >= 0) == want) {
             good = k;
             step *= 2;
         } else {
@@ -1011,7 +1021,7 @@ static int32_t render_gallop(const render_srow_t *s, int32_t from, int32_t dir, 
         return good; /* held up to limit */
     while ((bad - good) * dir > 1) {
         int32_t mid = good + (bad - good) / 2;
-        if ((render_quad_k(s->v, s->d1, s->d2, mid).hi >= 0) == want)
+        if ((render_quad_k(&s->v, &s->d1, &s->d2, mid).hi >= 0) == want)
             good = mid;
         else
             bad = mid;
@@ -1022,7 +1032,7 @@ static int32_t render_gallop(const render_srow_t *s, int32_t from, int32_t dir, 
 /* Is the step q(k + 1) - q(k) = d1 + d2 k <= 0 (k at or past the peak)? */
 static bool render_sphere_down(const render_srow_t *s, int32_t k)
 {
-    fx128_t step = fx128_add(s->d1, render_mul128_small(s->d2, k));
+    fx128_t step = fx128_add(s->d1, render_mul128_small(&s->d2, k));
     return step.hi < 0 || (step.hi == 0 && step.lo == 0);
 }
 
@@ -1074,8 +1084,8 @@ static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, 
 {
     render_iv_t run, none = {1, 0};
     if (g.lo <= g.hi) {
-        bool in_lo = render_quad_k(s->v, s->d1, s->d2, g.lo).hi >= 0;
-        bool in_hi = g.hi == g.lo ? in_lo : render_quad_k(s->v, s->d1, s->d2, g.hi).hi >= 0;
+        bool in_lo = render_quad_k(&s->v, &s->d1, &s->d2, g.lo).hi >= 0;
+        bool in_hi = g.hi == g.lo ? in_lo : render_quad_k(&s->v, &s->d1, &s->d2, g.hi).hi >= 0;
         if (in_lo || in_hi) {
             run.lo = in_lo ? render_gallop(s, g.lo, -1, 0, true) : render_gallop(s, g.lo, 1, g.hi, false) + 1;
             run.hi = in_hi ? render_gallop(s, g.hi, 1, kmax, true) : render_gallop(s, g.hi, -1, g.lo, false) - 1;
@@ -1083,7 +1093,7 @@ static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, 
         }
         /* Shrunk from both sides: from its middle when that is still in it. */
         int32_t mid = g.lo + (g.hi - g.lo) / 2;
-        if (render_quad_k(s->v, s->d1, s->d2, mid).hi >= 0) {
+        if (render_quad_k(&s->v, &s->d1, &s->d2, mid).hi >= 0) {
             run.lo = render_gallop(s, g.lo, 1, mid, false) + 1;
             run.hi = render_gallop(s, g.hi, -1, mid, false) - 1;
             return run;
@@ -1091,7 +1101,7 @@ static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, 
     }
     int32_t peak = render_sphere_peak(s, kmax, *pk);
     *pk = (int16_t)peak;
-    if (render_quad_k(s->v, s->d1, s->d2, peak).hi < 0)
+    if (render_quad_k(&s->v, &s->d1, &s->d2, peak).hi < 0)
         return none;
     bool glo = g.lo <= g.hi && g.lo < peak, ghi = g.lo <= g.hi && g.hi > peak; /* q < 0 there (tested above) */
     run.lo = glo ? render_gallop(s, g.lo, 1, peak, false) + 1 : render_gallop(s, peak, -1, 0, true);

@@ -201,12 +201,12 @@ __attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, 
     int32_t k = (ix - ix0) / 2;
     if (sc->loi == oi && k == sc->lk + 1) {
         if (!sc->lstepped) /* the step at lk, once a second column follows */
-            sc->lstep = fx128_add(q->d1, render_mul128_small(q->d2, sc->lk));
+            sc->lstep = fx128_add(q->d1, render_mul128_small(&q->d2, sc->lk));
         sc->lq = fx128_add(sc->lq, sc->lstep);
         sc->lstep = fx128_add(sc->lstep, q->d2);
         sc->lstepped = true;
     } else if (!(sc->loi == oi && k == sc->lk)) {
-        sc->lq = render_quad_k(q->v, q->d1, q->d2, k);
+        sc->lq = render_quad_k(&q->v, &q->d1, &q->d2, k);
         sc->loi = oi;
         sc->lstepped = false;
     }
@@ -506,7 +506,7 @@ __attribute__((noinline)) static int render_sphere_span(const render_t *r, uint1
         return 0;
     int32_t ixp = 2 * p - r->cam->width + 1, ixq = 2 * q - r->cam->width + 1;
     int32_t kp = (ixp - ix0) / 2, kq = (ixq - ix0) / 2, len = kq - kp;
-    fx128_t dp = render_quad_k(s->v, s->d1, s->d2, kp), dq = render_quad_k(s->v, s->d1, s->d2, kq);
+    fx128_t dp = render_quad_k(&s->v, &s->d1, &s->d2, kp), dq = render_quad_k(&s->v, &s->d1, &s->d2, kq);
     if (dp.hi < 0 || dq.hi < 0)
         return 0; /* (not covered at an end) */
     uint64_t bp = (uint64_t)rlin_at(&sp->b, ixp, iy), bq = (uint64_t)rlin_at(&sp->b, ixq, iy);
@@ -518,10 +518,10 @@ __attribute__((noinline)) static int render_sphere_span(const render_t *r, uint1
         *lo = render_depth_widen(p_first ? tp : tq, false);
         return 2;
     }
-    fx128_t up = fx128_add(s->d1, render_mul128_small(s->d2, kp));            /* disc(p + 1) - disc(p) */
-    fx128_t down = fx128_neg(fx128_add(s->d1, render_mul128_small(s->d2, kq - 1))); /* disc(q - 1) - disc(q) */
-    fx128_t u1 = up.hi < 0 ? dp : fx128_add(dp, render_mul128_small(up, len));
-    fx128_t u2 = down.hi < 0 ? dq : fx128_add(dq, render_mul128_small(down, len));
+    fx128_t up = fx128_add(s->d1, render_mul128_small(&s->d2, kp));            /* disc(p + 1) - disc(p) */
+    fx128_t down = fx128_neg(fx128_add(s->d1, render_mul128_small(&s->d2, kq - 1))); /* disc(q - 1) - disc(q) */
+    fx128_t u1 = up.hi < 0 ? dp : fx128_add(dp, render_mul128_small(&up, len));
+    fx128_t u2 = down.hi < 0 ? dq : fx128_add(dq, render_mul128_small(&down, len));
     fx128_t ub = fx128_sub(u1, u2).hi < 0 ? u1 : u2;
     if (ub.hi >= (int64_t)1 << 60)
         return 0; /* (too large a bound to add b to) */
