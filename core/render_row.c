@@ -396,9 +396,13 @@ static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 /* Columns a..b go to object oi. */
 static void render_claim_all(render_t *r, uint16_t oi, int32_t a, int32_t b, uint8_t *rgb)
 {
-    uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi;
-    for (int32_t x = a; x <= b; x++)
-        r->owner[x] = tag;
+    uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi, *p = &r->owner[a], *e = &r->owner[b];
+    for (; p < e; p += 2) { /* two at a time: fewer loop instructions */
+        p[0] = tag;
+        p[1] = tag;
+    }
+    if (p == e)
+        *p = tag;
     render_fill(r, oi, a, b, rgb);
 }
 
@@ -429,8 +433,10 @@ static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb
 #define RENDER_CLAIM_MIN 8
 /* Columns of one other owner, this many or more in a row, are settled by
  * the two objects' depth ranges over stretches of them (render_claim_span),
- * which stop halving below RENDER_SPAN_LEAF columns (4 to 16 measured on
- * the bench set: 6 and 12 take the fewest instructions on the M3). */
+ * which stop halving below RENDER_SPAN_LEAF columns. Measured on the bench
+ * set (make qemu): 3 to 8 and leaves of 8 to 16; 4 is 0.2 % fewer
+ * instructions than 6 on the M3 but 1.5 % more on the M0 in cover and
+ * room, 8 is 1.6 % more on the M3, leaves of 8 or 16 0.2 % and 0.7 % more. */
 #ifndef RENDER_SPAN_MIN
 #define RENDER_SPAN_MIN 6
 #endif
@@ -536,26 +542,29 @@ static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, i
      * that oi is nearer than all along it) are taken, stretches of one
      * other owner settled, oi's own (a box's other face) kept. */
     uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT;
+    int32_t fa = -1; /* free columns fa..x-1 wait to be claimed together */
     for (int32_t x = a; x <= b;) {
         uint32_t cur = r->owner[x] & ~RENDER_DEPTH_KNOWN;
         uint16_t ci = (uint16_t)cur;
         int32_t y = x;
+        while (y < b && (r->owner[y + 1] & ~RENDER_DEPTH_KNOWN) == cur) /* (stale entries come in stretches too) */
+            y++;
         if (render_free(r, tag, cur)) {
-            while (y < b && render_free(r, tag, r->owner[y + 1]))
-                y++;
-            render_claim_all(r, oi, x, y, rgb);
+            if (fa < 0)
+                fa = x;
+            x = y + 1;
+            continue;
+        }
+        if (fa >= 0) {
+            render_claim_all(r, oi, fa, x - 1, rgb);
+            fa = -1;
+        }
+        if (ci == oi) {
+            x = y + 1;
+        } else if (y - x + 1 < RENDER_SPAN_MIN) {
+            render_claim_px(r, oi, f, x, y, iy, rgb, single);
+            x = y + 1;
         } else {
-            while (y < b && (r->owner[y + 1] & ~RENDER_DEPTH_KNOWN) == cur)
-                y++;
-            if (ci == oi) {
-                x = y + 1;
-                continue;
-            }
-            if (y - x + 1 < RENDER_SPAN_MIN) {
-                render_claim_px(r, oi, f, x, y, iy, rgb, single);
-                x = y + 1;
-                continue;
-            }
             /* Settled by ranges where they decide, else column by column. */
             for (int32_t len = y - x + 1; x <= y;) {
                 x += render_claim_span(r, oi, ci, x, y, iy, &len, rgb);
@@ -566,10 +575,10 @@ static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, i
                     len = RENDER_SPAN_MIN; /* then ranges again from a short stretch */
                 }
             }
-            continue;
         }
-        x = y + 1;
     }
+    if (fa >= 0)
+        render_claim_all(r, oi, fa, b, rgb);
 }
 #endif
 

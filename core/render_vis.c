@@ -159,12 +159,6 @@ __attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *
 }
 
 #if FXRT_NUMBER == FXRT_Q16
-/* A sphere's disc at a pixel from its forms on this row, when it has them
- * (perspective; c is then the constant k): from r->scache (the sphere
- * scanned last among others on this row) or, with row state, from its
- * own (it was scanned on this row, as it covers the pixel). Owners are
- * asked about column after column, so the last column's value and step
- * give the next by two additions. False: no row forms. */
 /* Sphere oi's forms on row iy where the row has them (r->scache: the
  * sphere scanned last among others; r->srow: its row state), with the
  * pixel offset *ix0 of their column k = 0; NULL when it has none, or they
@@ -190,6 +184,12 @@ static const render_srow_t *render_sphere_rowforms(const render_t *r, uint16_t o
     return q && !q->ortho && !q->inside ? q : NULL;
 }
 
+/* A sphere's disc at a pixel from its forms on this row, when it has them
+ * (perspective; c is then the constant k): from r->scache (the sphere
+ * scanned last among others on this row) or, with row state, from its
+ * own (it was scanned on this row, as it covers the pixel). Owners are
+ * asked about column after column, so the last column's value and step
+ * give the next by two additions. False: no row forms. */
 __attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, uint16_t oi, int32_t ix, int32_t iy,
                                                              rsw_t *disc)
 {
