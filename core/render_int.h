@@ -122,10 +122,17 @@ static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy
 RENDER_MAYBE_UNUSED static fx128_t render_mul128_small(const fx128_t *a, int32_t m)
 {
     uint32_t um = m < 0 ? 0u - (uint32_t)m : (uint32_t)m;
-    uint64_t p0 = (uint64_t)(uint32_t)a->lo * um, p1 = (a->lo >> 32) * um;
+#if FX_HAVE_UMULL
+    uint64_t p0 = (uint64_t)(uint32_t)a->lo * um, p1 = (a->lo >> 32) * um, ph = (uint64_t)a->hi * um;
+#else
+    /* 32 x 32 -> 64-bit products by fx_umul32 (four 16-bit multiplies),
+     * not 64 x 64 library calls; the top word's only mod 2^64. */
+    uint64_t p0 = fx_umul32((uint32_t)a->lo, um), p1 = fx_umul32((uint32_t)(a->lo >> 32), um);
+    uint64_t ph = fx_umul32((uint32_t)(uint64_t)a->hi, um) + ((uint64_t)((uint32_t)((uint64_t)a->hi >> 32) * um) << 32);
+#endif
     fx128_t r;
     r.lo = p0 + (p1 << 32);
-    r.hi = (int64_t)((uint64_t)a->hi * um + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
+    r.hi = (int64_t)(ph + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
     return m < 0 ? fx128_neg(r) : r;
 }
 
