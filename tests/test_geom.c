@@ -1779,6 +1779,14 @@ static void test_render_depth_less(void)
 static void test_render_depth_less(void) {}
 #endif
 
+/* An empty world (black background) for random scene it; true when its
+ * camera is to be orthographic (every fourth scene). */
+static bool random_world_begin(int it)
+{
+    world_init(&world, col(0, 0, 0));
+    return it % 4 == 3;
+}
+
 /* Depth ranges (render_setup: from the camera-space z of an object's
  * points; a sphere seen from outside, from the cap that faces the eye; a
  * box, from the corners of the faces set up): render_settle decides an
@@ -1793,9 +1801,8 @@ static void test_render_ranges(void)
     uint64_t st = 0x7a4e9e5ull;
     long checked = 0, outside = 0, spheres_near = 0, zoomed_px = 0;
     for (int it = 0; it < 400; it++) {
-        world_init(&world, col(0, 0, 0));
+        bool ortho = random_world_begin(it);
         uint16_t id = 0;
-        bool ortho = it % 4 == 3;
         vec3_t eye = V3(orand(&st, -2, 2), orand(&st, -2, 2), orand(&st, -2, 2));
         for (int i = 0; i < 4; i++) {
             /* Direction from the eye within about 40 degrees of the gaze
@@ -1915,9 +1922,8 @@ static void test_render_front(void)
     uint64_t st = 0xf407e11ull;
     long pieces = 0, front = 0, pixels = 0, wrong = 0;
     for (int it = 0; it < 600; it++) {
-        world_init(&world, col(0, 0, 0));
+        bool ortho = random_world_begin(it);
         uint16_t id = 0;
-        bool ortho = it % 4 == 3;
         double size = exp(orand(&st, log(0.05), log(50)));
         for (int i = 0; i < 2; i++) {
             double x = orand(&st, -6, 6), y = orand(&st, -6, 6), z = orand(&st, -12, 3), sk = it % 5 == 0 ? 0.02 : 1;
