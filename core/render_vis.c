@@ -484,6 +484,12 @@ static bool render_plane_range(const render_t *r, const render_obj_t *p, int32_t
 }
 
 #if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
+/* Sphere sp's near root k / g, in perspective (c is the constant k). */
+static render_depth_t render_sphere_near(const render_sphere_t *sp, uint64_t g)
+{
+    return render_depth_make((uint64_t)sp->k.hi, sp->k.lo, g, sp->tc);
+}
+
 /* Depth range of sphere oi over columns p..q of row iy, all of which it
  * covers, from its row forms (perspective, eye outside, disc concave
  * along the row). There t = k / g with g = b + sqrt(disc) concave (b
@@ -511,8 +517,8 @@ __attribute__((noinline)) static int render_sphere_span(const render_t *r, uint1
         return 0; /* (not covered at an end) */
     uint64_t bp = (uint64_t)rlin_at(&sp->b, ixp, iy), bq = (uint64_t)rlin_at(&sp->b, ixq, iy);
     if (!low) {
-        render_depth_t tp = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bp + render_sqrt128(&dp), sp->tc);
-        render_depth_t tq = render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bq + render_sqrt128(&dq), sp->tc);
+        render_depth_t tp = render_sphere_near(sp, bp + render_sqrt128(&dp));
+        render_depth_t tq = render_sphere_near(sp, bq + render_sqrt128(&dq));
         bool p_first = render_depth_less(tp, tq);
         *hi = render_depth_widen(p_first ? tq : tp, true);
         *lo = render_depth_widen(p_first ? tp : tq, false);
@@ -526,7 +532,7 @@ __attribute__((noinline)) static int render_sphere_span(const render_t *r, uint1
     if (ub.hi >= (int64_t)1 << 60)
         return 0; /* (too large a bound to add b to) */
     uint64_t bmax = (int64_t)bp > (int64_t)bq ? bp : bq;
-    *lo = render_depth_widen(render_depth_make((uint64_t)sp->k.hi, sp->k.lo, bmax + render_sqrt128(&ub), sp->tc), false);
+    *lo = render_depth_widen(render_sphere_near(sp, bmax + render_sqrt128(&ub)), false);
     return 1;
 }
 
@@ -569,8 +575,8 @@ int render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int3
                       render_depth_t *hi, bool low)
 {
     const render_obj_t *o = &r->obj[oi];
-    if (o->kind == RENDER_FLAT)
-        return render_plane_range(r, o, p, q, iy, lo, hi) ? 1 : 0;
+    if (o->kind == RENDER_FLAT) /* a plane or a triangle */
+        return render_flat_range(r, render_face(o, 0), p, q, iy, lo, hi) == 1;
     if (o->kind == RENDER_SPHERE)
         return render_sphere_span(r, oi, p, q, iy, lo, hi, low);
     if (o->kind == RENDER_BOX)
