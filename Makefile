@@ -20,7 +20,7 @@ LDLIBS_H := -lpng -lm
 NUMBERS := q16 float double
 num_id   = $(if $(filter q16,$1),1,$(if $(filter float,$1),2,3))
 
-CORE_NUM := num color cam geom world render_setup render_vis render_row render_shade render_sample shade shadow trace raycast fxrt
+CORE_NUM := num color cam geom mesh world render_setup render_vis render_row render_shade render_sample shade shadow trace raycast fxrt
 HOST_SRC := main scene image errf compare engine_select args
 
 # --- host tool -----------------------------------------------------------

@@ -140,13 +140,15 @@
 #error "FXRT_RENDER_BOX_FACES must be at least 1 when boxes are enabled"
 #endif
 
-/* Back faces of closed meshes (core/render_setup.c, render_cull_meshes):
- * in worlds of 4 to FXRT_MESH_MAX triangles (at most 255), the triangles
- * are matched edge to edge once per frame set-up (about T^2 / 2 vertex
- * compares), and a closed, consistently wound, convex set of them seen in
- * perspective from outside its bounding box leaves out its triangles that
- * face away from the eye. 2 B of RAM per triangle of FXRT_MAX_TRIANGLES
- * (render_t); 0 turns it off. Default 128. */
+/* Back faces of closed meshes (core/mesh.c, core/render_setup.c): in
+ * worlds of 4 to FXRT_MESH_MAX triangles (at most 255), each triangle is
+ * matched edge to edge with the earlier ones as it is added
+ * (world_add_triangle: about T^2 / 2 vertex compares for the world), and
+ * a frame's set-up leaves out the triangles of a closed, consistently
+ * wound, convex set of them that face away from an eye outside its
+ * bounding box, in perspective (two exact side tests per triangle of such
+ * a set). 2 B of world RAM per triangle up to FXRT_MESH_MAX, and 1 bit of
+ * render_t per triangle; 0 turns it off. Default 128. */
 #ifndef FXRT_MESH_MAX
 #define FXRT_MESH_MAX 128
 #endif

@@ -124,11 +124,9 @@ typedef struct {
  * per column. */
 #define RENDER_RUNS (FXRT_MAX_SAMPLES > 1 && RENDER_COHERENT)
 
-/* Back-face culling of closed meshes (render_cull_meshes): scratch for
- * every triangle (2 B each, so that RAM grows with the capacity alone),
- * used in worlds of 4 to FXRT_MESH_MAX of them. */
-#define RENDER_MESH (FXRT_MESH_MAX >= 4 && FXRT_MAX_TRIANGLES >= 4)
-#define RENDER_MESH_CULLED 0x40u /* mesh_bits: a back face this frame */
+/* Back-face culling of closed meshes (render_cull_meshes), from the
+ * world's mesh links (mesh.h, WORLD_MESH): a bit per triangle. */
+#define RENDER_MESH WORLD_MESH
 
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
@@ -290,10 +288,10 @@ typedef struct {
     render_scache_t *scache; /* during render_row_vis: on its stack (else NULL) */
 #endif
 #if RENDER_MESH
-    /* Per triangle: union-find parent and matched edges, flags, culled
-     * (render_cull_meshes; render_setup_object keeps a culled one out). */
-    uint8_t mesh_up[FXRT_MAX_TRIANGLES];
-    uint8_t mesh_bits[FXRT_MAX_TRIANGLES];
+    /* Bit i % 8 of byte i / 8: triangle i is a back face of a closed mesh
+     * this frame (render_cull_meshes, before the objects are set up;
+     * render_setup_triangle leaves it empty). */
+    uint8_t mesh_culled[(FXRT_MAX_TRIANGLES + 7) / 8];
 #endif
 #if RENDER_VIS
     /* Shading and sampling passes: per column of the current row, the
@@ -369,6 +367,11 @@ typedef struct {
     uint32_t *keys;
     int16_t dirty_lo, dirty_hi; /* this row: columns outside have no owner yet */
 } render_t;
+
+#if RENDER_MESH
+/* Is triangle i a back face of a closed mesh in this frame? */
+static inline bool render_mesh_culled(const render_t *r, uint16_t i) { return (r->mesh_culled[i >> 3] >> (i & 7)) & 1u; }
+#endif
 
 /* Per-frame set-up: camera-space forms and screen bounds of every object.
  * The world and camera must outlive r. Returns false (r->error says why)

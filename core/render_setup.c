@@ -545,7 +545,11 @@ __attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t 
     vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
     o->kind = RENDER_FLAT;
     o->nflat = 1;
+#if RENDER_MESH
+    if (t->degenerate || render_mesh_culled(r, o->index)) { /* culled: a back face of a closed mesh */
+#else
     if (t->degenerate) {
+#endif
         o->nflat = 0;
         render_set_empty(o);
         return;
@@ -558,12 +562,6 @@ __attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t 
     render_points_bounds(cam, v, 3, o);
     if (!render_flat_eye(cam, t->a, t->n, f))
         render_set_empty(o); /* the eye in the triangle's plane */
-#if RENDER_MESH
-    if (r->mesh_bits[o->index] & RENDER_MESH_CULLED) {
-        o->nflat = 0; /* a back face of a closed mesh (render_cull_meshes) */
-        render_set_empty(o);
-    }
-#endif
 }
 #endif
 
@@ -671,198 +669,42 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
  * it, and it leaves through the triangles that face away from the eye: a
  * triangle whose plane has the eye on its inner side is never the first
  * hit (except where it ties with the front face it meets on a silhouette
- * edge). So such triangles of a closed mesh are left out of the frame.
- * "Closed mesh": a connected set of triangles (sharing edges with the
- * exact same vertices) in which every directed edge a -> b is matched by
- * exactly one b -> a of another triangle and none appears twice, whose
- * edges are all convex (each neighbour's far vertex on the inner side of
- * a triangle's plane, or on it: no self-intersection), and whose signed
- * volume gives its outside. The eye must be outside its bounding box, in
- * perspective. Both loops (fast and reference) and every number type use
- * the same objects, so they still agree. */
-#define RENDER_MESH_EDGES 0x07u  /* matched edges (saturating at 7) */
-#define RENDER_MESH_POS 0x08u    /* a neighbour's far vertex on the positive side */
-#define RENDER_MESH_NEG 0x10u    /* ... on the negative side */
-#define RENDER_MESH_BAD 0x20u    /* degenerate, or a directed edge twice */
-
-#if FXRT_NUMBER == FXRT_Q16
-typedef fx128_t render_vol_t;
-#define RENDER_VOL_ZERO fx128_from64(0)
-#else
-typedef num_t render_vol_t;
-#define RENDER_VOL_ZERO NUM_ZERO
-#endif
-
-/* The side of p against the plane of (a, b, c): the sign of
- * d = det[b - a, c - a, p - a] (positive on the side (b - a) x (c - a)
- * points to), d added to *acc. With flat, 0 also where |d| is at most
- * 2^-13 of |b - a x c - a| |p - a| (an angle of about 10^-4: a dihedral
- * that rounding of the vertices may have bent either way). Q16.16: exact
- * (coordinates within FXRT_COORD_LIMIT, 2^13: differences below 2^31,
- * cross products below 2^62, d in 128 bits). Float and double: in num_t,
- * and 0 where its rounding could decide the sign. */
-static int render_mesh_side(vec3_t a, vec3_t b, vec3_t c, vec3_t p, render_vol_t *acc, bool flat)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    int64_t ux = (int64_t)b.x - a.x, uy = (int64_t)b.y - a.y, uz = (int64_t)b.z - a.z;
-    int64_t vx = (int64_t)c.x - a.x, vy = (int64_t)c.y - a.y, vz = (int64_t)c.z - a.z;
-    int64_t wx = (int64_t)p.x - a.x, wy = (int64_t)p.y - a.y, wz = (int64_t)p.z - a.z;
-    int64_t cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-    fx128_t d = fx128_add(fx128_add(fx128_mul(cx, wx), fx128_mul(cy, wy)), fx128_mul(cz, wz));
-    *acc = fx128_add(*acc, d);
-    if (flat) {
-        int64_t cs = (cx < 0 ? -cx : cx) + (cy < 0 ? -cy : cy) + (cz < 0 ? -cz : cz); /* < 2^63 */
-        int64_t wm = wx < 0 ? -wx : wx, t;
-        t = wy < 0 ? -wy : wy;
-        wm = t > wm ? t : wm;
-        t = wz < 0 ? -wz : wz;
-        wm = t > wm ? t : wm;
-        fx128_t lim = fx128_shr128(fx128_mul(cs, wm), 13), ad = d.hi < 0 ? fx128_neg(d) : d;
-        fx128_t gap = fx128_sub(lim, ad);
-        if (gap.hi >= 0)
-            return 0;
-    }
-    return d.hi < 0 ? -1 : (d.hi == 0 && d.lo == 0 ? 0 : 1);
-#else
-    num_t ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    num_t wx = p.x - a.x, wy = p.y - a.y, wz = p.z - a.z;
-    num_t cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-    num_t d = cx * wx + cy * wy + cz * wz;
-    num_t bound = (num_abs(uy * vz) + num_abs(uz * vy)) * num_abs(wx) + (num_abs(uz * vx) + num_abs(ux * vz)) * num_abs(wy) +
-                  (num_abs(ux * vy) + num_abs(uy * vx)) * num_abs(wz);
-    /* 64 units of rounding (float 2^-23, double 2^-52) */
-    num_t eps = sizeof(num_t) == sizeof(float) ? NUM(7.6e-6) : NUM(1.5e-14);
-    *acc += d;
-    if (flat && num_abs(d) <= bound * NUM(1.0 / 8192))
-        return 0;
-    return d > bound * eps ? 1 : (d < -bound * eps ? -1 : 0);
-#endif
-}
-
-static bool render_mesh_eq(vec3_t p, vec3_t q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
-
-/* A key that equal vertices share (and unequal ones rarely): one number
- * from the three coordinates. */
-#if FXRT_NUMBER == FXRT_Q16
-typedef uint32_t render_mesh_key_t;
-static inline render_mesh_key_t render_mesh_key(const vec3_t *p)
-{
-    return (uint32_t)p->x + ((uint32_t)p->y << 3) + ((uint32_t)p->z << 6);
-}
-#else
-typedef num_t render_mesh_key_t; /* (+0 and -0 give one key, as they compare equal) */
-static inline render_mesh_key_t render_mesh_key(const vec3_t *p) { return p->x + NUM(3.0) * p->y + NUM(7.0) * p->z; }
-#endif
-
-/* The first of the triangles t..end-1 whose a or b has one of the keys
- * of a triangle's vertices (a pair with fewer has fewer than two vertices
- * in common), else end. Its own loop: few registers. */
-static const geom_triangle_t *render_mesh_next(const geom_triangle_t *t, const geom_triangle_t *end,
-                                               const render_mesh_key_t key[3])
-{
-    render_mesh_key_t x0 = key[0], x1 = key[1], x2 = key[2];
-    for (; t < end; t++) {
-        render_mesh_key_t y0 = render_mesh_key(&t->a), y1 = render_mesh_key(&t->b);
-        if (y0 == x0 || y0 == x1 || y0 == x2 || y1 == x0 || y1 == x1 || y1 == x2)
-            return t;
-    }
-    return end;
-}
-
-static uint8_t render_mesh_root(uint8_t *up, uint8_t i)
-{
-    while (up[i] != i) {
-        up[i] = up[up[i]];
-        i = up[i];
-    }
-    return i;
-}
-
-static void render_mesh_edge(uint8_t *bits, uint8_t i)
-{
-    if ((bits[i] & RENDER_MESH_EDGES) != RENDER_MESH_EDGES)
-        bits[i]++;
-}
-
-/* Which triangles of this frame are back faces of closed meshes: their
- * objects are emptied (and stay so in render_setup_object). */
+ * edge). So such triangles of a closed mesh (mesh.h; the world links them
+ * as they are added) are left out of the frame: of a mesh that is closed,
+ * convex, whose signed volume gives its outside, and seen in perspective
+ * from outside its bounding box. Both loops (fast and reference) and every
+ * number type use the same objects, so they still agree. Per frame: two
+ * exact side tests per triangle of a closed mesh. */
 __attribute__((noinline)) static void render_cull_meshes(render_t *r)
 {
     const world_t *w = r->world;
     uint16_t n = w->n_triangles;
-    uint8_t *up = r->mesh_up, *bits = r->mesh_bits;
-    if (n < 4 || n > FXRT_MESH_MAX || render_ortho(r->cam))
+    const uint8_t *up = w->mesh_up, *bits = w->mesh_bits;
+    for (uint16_t i = 0; i < (FXRT_MAX_TRIANGLES + 7) / 8; i++)
+        r->mesh_culled[i] = 0;
+    if (n < 4 || n > FXRT_MESH_MAX || w->mesh_n != n || render_ortho(r->cam))
         return;
-    render_vol_t none = RENDER_VOL_ZERO; /* a sum nobody reads */
-    for (uint16_t i = 0; i < n; i++) {
-        up[i] = (uint8_t)i;
-        bits[i] = w->triangles[i].degenerate ? RENDER_MESH_BAD : 0;
-    }
-    /* Edges: matched pairs join their triangles; the far vertex of each
-     * neighbour tells the side of the dihedral angle. A pair shares an
-     * edge only where two of their vertices are equal: the vertices'
-     * keys first (most pairs share none), then the 3 x 3 vertex
-     * equalities. */
-    for (uint16_t i = 0; i < n; i++) {
-        const geom_triangle_t *ti = &w->triangles[i];
-        const vec3_t *vi[3] = {&ti->a, &ti->b, &ti->c};
-        render_mesh_key_t key[3] = {render_mesh_key(&ti->a), render_mesh_key(&ti->b), render_mesh_key(&ti->c)};
-        const geom_triangle_t *end = w->triangles + n;
-        for (const geom_triangle_t *tj = render_mesh_next(ti + 1, end, key); tj < end;
-             tj = render_mesh_next(tj + 1, end, key)) {
-            uint16_t j = (uint16_t)(tj - w->triangles);
-            const vec3_t *vj[3] = {&tj->a, &tj->b, &tj->c};
-            unsigned eq = 0, neq = 0; /* bit 3 ei + ej: vertex ei of i is vertex ej of j */
-            for (int ei = 0; ei < 3; ei++)
-                for (int ej = 0; ej < 3; ej++)
-                    if (render_mesh_eq(*vi[ei], *vj[ej])) {
-                        eq |= 1u << (3 * ei + ej);
-                        neq++;
-                    }
-            if (neq < 2)
-                continue;
-            static const uint8_t next[3] = {1, 2, 0};
-            for (int ei = 0; ei < 3; ei++)
-                for (int ej = 0; ej < 3; ej++) {
-                    int ei1 = next[ei], ej1 = next[ej];
-                    if ((eq >> (3 * ei + ej) & 1u) && (eq >> (3 * ei1 + ej1) & 1u)) {
-                        bits[i] |= RENDER_MESH_BAD; /* the same directed edge twice */
-                        bits[j] |= RENDER_MESH_BAD;
-                    } else if ((eq >> (3 * ei + ej1) & 1u) && (eq >> (3 * ei1 + ej) & 1u)) {
-                        render_mesh_edge(bits, (uint8_t)i);
-                        render_mesh_edge(bits, (uint8_t)j);
-                        int si = render_mesh_side(ti->a, ti->b, ti->c, *vj[next[ej1]], &none, true);
-                        int sj = render_mesh_side(tj->a, tj->b, tj->c, *vi[next[ei1]], &none, true);
-                        bits[i] |= si > 0 ? RENDER_MESH_POS : (si < 0 ? RENDER_MESH_NEG : 0);
-                        bits[j] |= sj > 0 ? RENDER_MESH_POS : (sj < 0 ? RENDER_MESH_NEG : 0);
-                        up[render_mesh_root(up, (uint8_t)i)] = render_mesh_root(up, (uint8_t)j);
-                    }
-                }
-        }
-    }
-    uint16_t base = 0; /* the first triangle's object (kinds were added in order) */
-    while (base < r->count && r->obj[base].geom != GEOM_TRIANGLE)
-        base++;
-    vec3_t e = r->cam->e;
+    const vec3_t *e = &r->cam->e;
     for (uint16_t k = 0; k < n; k++) {
-        if (render_mesh_root(up, (uint8_t)k) != k || (bits[k] & RENDER_MESH_EDGES) != 3)
+        if (up[k] != k || (bits[k] & MESH_EDGES) != 3)
             continue; /* not a root, or its own edges are not matched once each */
         /* One component: closed, convex, its outside, its bounding box. */
         bool closed = true;
         uint8_t sides = 0;
-        render_vol_t vol = RENDER_VOL_ZERO;
-        vec3_t lo = w->triangles[k].a, hi = lo, ref = lo;
+        mesh_vol_t vol = MESH_VOL_ZERO;
+        const vec3_t *ref = &w->triangles[k].a;
+        vec3_t lo = *ref, hi = lo;
         for (uint16_t i = 0; i < n && closed; i++) {
-            if (render_mesh_root(up, (uint8_t)i) != k)
+            if (mesh_root(up, (uint8_t)i) != k)
                 continue;
             const geom_triangle_t *t = &w->triangles[i];
-            closed = (bits[i] & (RENDER_MESH_EDGES | RENDER_MESH_BAD)) == 3;
-            sides |= bits[i] & (RENDER_MESH_POS | RENDER_MESH_NEG);
-            (void)render_mesh_side(t->a, t->b, t->c, ref, &vol, false);
-            vec3_t v[3] = {t->a, t->b, t->c};
+            closed = (bits[i] & (MESH_EDGES | MESH_BAD)) == 3;
+            sides |= bits[i] & (MESH_POS | MESH_NEG);
+            (void)mesh_side(&t->a, &t->b, &t->c, ref, &vol, false);
+            const vec3_t *v[3] = {&t->a, &t->b, &t->c};
             for (int m = 0; m < 3; m++) {
-                lo = vec3_make(num_min(lo.x, v[m].x), num_min(lo.y, v[m].y), num_min(lo.z, v[m].z));
-                hi = vec3_make(num_max(hi.x, v[m].x), num_max(hi.y, v[m].y), num_max(hi.z, v[m].z));
+                lo = vec3_make(num_min(lo.x, v[m]->x), num_min(lo.y, v[m]->y), num_min(lo.z, v[m]->z));
+                hi = vec3_make(num_max(hi.x, v[m]->x), num_max(hi.y, v[m]->y), num_max(hi.z, v[m]->z));
             }
         }
         /* The outside: reference point on the inner side of every face of
@@ -872,20 +714,16 @@ __attribute__((noinline)) static void render_cull_meshes(render_t *r)
 #else
         int out = vol < 0 ? -1 : (vol > 0 ? 1 : 0);
 #endif
-        bool outside = e.x < lo.x || e.x > hi.x || e.y < lo.y || e.y > hi.y || e.z < lo.z || e.z > hi.z;
-        uint8_t convex = out < 0 ? RENDER_MESH_POS : RENDER_MESH_NEG; /* the side no far vertex may be on */
+        bool outside = e->x < lo.x || e->x > hi.x || e->y < lo.y || e->y > hi.y || e->z < lo.z || e->z > hi.z;
+        uint8_t convex = out < 0 ? MESH_POS : MESH_NEG; /* the side no far vertex may be on */
         if (!closed || out == 0 || (sides & convex) || !outside)
             continue;
         for (uint16_t i = 0; i < n; i++) {
-            if (render_mesh_root(up, (uint8_t)i) != k)
+            if (mesh_root(up, (uint8_t)i) != k)
                 continue;
             const geom_triangle_t *t = &w->triangles[i];
-            if (render_mesh_side(t->a, t->b, t->c, e, &none, false) == out) { /* the eye on its inner side */
-                bits[i] |= RENDER_MESH_CULLED;
-                render_obj_t *o = &r->obj[base + i];
-                o->nflat = 0;
-                render_set_empty(o);
-            }
+            if (mesh_side(&t->a, &t->b, &t->c, e, NULL, false) == out) /* the eye on its inner side */
+                r->mesh_culled[i >> 3] |= (uint8_t)(1u << (i & 7));
         }
     }
 }
@@ -1086,8 +924,7 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
         r->owner[x] = 0;
     r->stamp = 0;
 #if RENDER_MESH
-    for (uint16_t i = 0; i < FXRT_MAX_TRIANGLES; i++)
-        r->mesh_bits[i] = 0; /* nothing culled while the objects are set up */
+    render_cull_meshes(r); /* before the triangles are set up: culled ones are not */
 #endif
 #if FXRT_MAX_PLANES > 0
     for (uint16_t i = 0; i < w->n_planes; i++)
@@ -1104,9 +941,6 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 #if FXRT_MAX_BOXES > 0
     for (uint16_t i = 0; i < w->n_boxes; i++)
         render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
-#endif
-#if RENDER_MESH
-    render_cull_meshes(r);
 #endif
 #if FXRT_MAX_LIGHTS > 0
     /* Objects were added kind after kind, each in index order. */

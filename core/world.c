@@ -14,6 +14,9 @@ void world_init(world_t *w, color_t background)
 #if FXRT_MAX_TRIANGLES > 0
     w->n_triangles = 0;
 #endif
+#if WORLD_MESH
+    w->mesh_n = 0;
+#endif
 #if FXRT_MAX_BOXES > 0
     w->n_boxes = 0;
 #endif
@@ -159,6 +162,12 @@ int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t col
         return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
     geom_triangle_make(&w->triangles[w->n_triangles++], a, b, c, color, id);
+#if WORLD_MESH
+    if (w->mesh_n == (uint16_t)(w->n_triangles - 1) && w->mesh_n < WORLD_MESH_N) {
+        mesh_link(w->triangles, w->mesh_n, w->mesh_up, w->mesh_bits);
+        w->mesh_n++;
+    }
+#endif
     world_grow(w, vec3_make(num_min(a.x, num_min(b.x, c.x)), num_min(a.y, num_min(b.y, c.y)),
                             num_min(a.z, num_min(b.z, c.z))),
                vec3_make(num_max(a.x, num_max(b.x, c.x)), num_max(a.y, num_max(b.y, c.y)),
@@ -168,6 +177,19 @@ int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t col
     (void)w;
     (void)a, (void)b, (void)c, (void)color;
     return FXRT_ERR_FULL;
+#endif
+}
+
+void world_mesh_update(world_t *w)
+{
+#if WORLD_MESH
+    w->mesh_n = 0;
+    while (w->mesh_n < w->n_triangles && w->mesh_n < WORLD_MESH_N) {
+        mesh_link(w->triangles, w->mesh_n, w->mesh_up, w->mesh_bits);
+        w->mesh_n++;
+    }
+#else
+    (void)w;
 #endif
 }
 

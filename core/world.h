@@ -6,6 +6,15 @@
 
 #include "geom.h"
 #include "light.h"
+#include "mesh.h"
+
+/* Closed meshes (mesh.h): the triangles' edges are matched once, as they
+ * are added, in worlds of at most FXRT_MESH_MAX triangles; a frame's
+ * set-up then leaves out the back faces of closed meshes. */
+#define WORLD_MESH (FXRT_MESH_MAX >= 4 && FXRT_MAX_TRIANGLES >= 4)
+/* Triangles that can be linked (the arrays below are sized by the
+ * capacity, so that RAM grows with it alone: firmware/fit.sh). */
+#define WORLD_MESH_N (FXRT_MAX_TRIANGLES < FXRT_MESH_MAX ? FXRT_MAX_TRIANGLES : FXRT_MESH_MAX)
 
 typedef struct {
     color_t background;
@@ -21,6 +30,14 @@ typedef struct {
 #if FXRT_MAX_TRIANGLES > 0
     uint16_t n_triangles;
     geom_triangle_t triangles[FXRT_MAX_TRIANGLES];
+#endif
+#if WORLD_MESH
+    /* Triangles 0 .. mesh_n - 1 are linked into meshes (mesh_link): per
+     * triangle its union-find parent and its MESH_ bits. A frame's set-up
+     * uses them only while mesh_n == n_triangles. */
+    uint16_t mesh_n;
+    uint8_t mesh_up[FXRT_MAX_TRIANGLES];
+    uint8_t mesh_bits[FXRT_MAX_TRIANGLES];
 #endif
 #if FXRT_MAX_BOXES > 0
     uint16_t n_boxes;
@@ -87,6 +104,14 @@ int32_t world_add_plane(world_t *w, vec3_t point, vec3_t normal, color_t color);
 int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color);
 int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t color);
 int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color);
+
+/* Link every triangle into meshes again (mesh.h), after triangles were
+ * written into w->triangles other than by world_add_triangle, or changed
+ * in place (geom_triangle_make). world_add_triangle links each triangle
+ * as it adds it; without this call, a world whose triangles were written
+ * directly has no back faces left out (mesh_n != n_triangles), and one
+ * whose triangles were changed in place may have the wrong ones left out. */
+void world_mesh_update(world_t *w);
 
 /* Lighting (FXRT_MAX_LIGHTS > 0; with 0 these refuse everything:
  * FXRT_ERR_FULL for lights, FXRT_ERR_MATERIAL for a material other than

@@ -1548,6 +1548,7 @@ static void test_render_overlap(void)
                                    col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
                 world.n_triangles++, id++;
         }
+        world_mesh_update(&world); /* written directly: link the triangles (world_add_triangle would) */
         for (int i = 0; i < nb; i++) {
             double x = orand(&st, -2, 2), y = orand(&st, -1.5, 1.5), z = orand(&st, -7, -3);
             if (geom_box_make(&world.boxes[world.n_boxes], V3(x, y, z),
@@ -1933,6 +1934,7 @@ static void test_render_front(void)
                                    col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
                 world.n_triangles++, id++;
         }
+        world_mesh_update(&world); /* written directly: link the triangles (world_add_triangle would) */
         double bx = orand(&st, -6, 6), by = orand(&st, -6, 6), bz = orand(&st, -12, 3);
         if (geom_box_make(&world.boxes[0], V3(bx, by, bz),
                           V3(bx + size * orand(&st, 0.01, 1), by + size * orand(&st, 0.01, 1), bz + size * orand(&st, 0.01, 1)),
@@ -2033,6 +2035,7 @@ static void test_render_span_ranges(void)
                                    col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
                 world.n_triangles++, id++;
         }
+        world_mesh_update(&world); /* written directly: link the triangles (world_add_triangle would) */
         if (geom_plane_make(&world.planes[0], V3(0, orand(&st, -4, -1), 0),
                             V3(orand(&st, -0.3, 0.3), 1, orand(&st, -0.3, 0.3)), col(orand(&st, 0, 1), 0.5, 0.5), id))
             world.n_planes = 1, id++;
@@ -2133,7 +2136,7 @@ static void test_render_meshes(void)
     static rgb8_t want[OH][OW];
     static bool tie[OH][OW];
     frame_tally_t tally = {0, 0, 0, 0};
-    long culled_ok = 0, culled_bad = 0, convex_views = 0;
+    long culled_ok = 0, culled_bad = 0, convex_views = 0, mesh_orders = 0;
     for (int it = 0; it < 240; it++) {
         int shape = it % 3, variant = (it / 3) % 5; /* 0, 1: closed; 2 open; 3 inconsistent; 4 not convex */
         const double(*v)[3] = shape == 0 ? oct_v : (shape == 1 ? ico_v : cube_v);
@@ -2168,6 +2171,7 @@ static void test_render_meshes(void)
                                    col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
                 world.n_triangles++, id++;
         }
+        world_mesh_update(&world); /* written directly: link the triangles (world_add_triangle would) */
         bool ortho = it % 7 == 6, eye_in = it % 11 == 10;
         vec3_t eye = eye_in ? V3(cx, cy, cz) : V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, 0, 2));
         vec3_t gaze = eye_in ? V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1))
@@ -2181,7 +2185,41 @@ static void test_render_meshes(void)
         int culled = 0;
 #if RENDER_MESH
         for (int k = 0; k < world.n_triangles; k++)
-            culled += (state.mesh_bits[k] & RENDER_MESH_CULLED) != 0;
+            culled += render_mesh_culled(&state, (uint16_t)k);
+        /* The same triangles added through world_add_triangle, last first:
+         * the links (per triangle its bits, and which triangles share a
+         * mesh) and the culled set do not depend on the order. */
+        static world_t rev;
+        static render_t rstate;
+        int nt = world.n_triangles;
+        bool added = true;
+        world_init(&rev, world.background);
+        for (int k = nt - 1; k >= 0 && added; k--) {
+            const geom_triangle_t *t = &world.triangles[k];
+            added = world_add_triangle(&rev, t->a, t->b, t->c, t->obj.color) >= 0;
+        }
+        CHECK_MSG(added && rev.mesh_n == nt, "mesh %d: %d triangles added, %d linked", it, rev.n_triangles, rev.mesh_n);
+        if (added && rev.mesh_n == nt && world.mesh_n == nt) {
+            int diff = 0;
+            for (int k = 0; k < nt; k++) {
+                diff += world.mesh_bits[k] != rev.mesh_bits[nt - 1 - k];
+                for (int m = 0; m < nt; m++)
+                    diff += (mesh_root(world.mesh_up, (uint8_t)k) == mesh_root(world.mesh_up, (uint8_t)m)) !=
+                            (mesh_root(rev.mesh_up, (uint8_t)(nt - 1 - k)) == mesh_root(rev.mesh_up, (uint8_t)(nt - 1 - m)));
+            }
+            CHECK(render_setup(&rstate, &rev, &c));
+            for (int k = 0; k < nt; k++)
+                diff += render_mesh_culled(&state, (uint16_t)k) != render_mesh_culled(&rstate, (uint16_t)(nt - 1 - k));
+            mesh_orders++;
+            CHECK_SWEEP(diff == 0, "mesh %d: %d differences between the two orders of adding", it, diff);
+            /* As if written directly and not linked again: nothing is culled. */
+            rev.mesh_n = 0;
+            CHECK(render_setup(&rstate, &rev, &c));
+            int stale = 0;
+            for (int k = 0; k < nt; k++)
+                stale += render_mesh_culled(&rstate, (uint16_t)k);
+            CHECK_SWEEP(stale == 0, "mesh %d: %d triangles culled from links that are out of date", it, stale);
+        }
 #endif
         bool may = variant <= 1 && !ortho && !eye_in; /* closed, convex, seen from outside its box */
         if (may) {
@@ -2206,6 +2244,9 @@ static void test_render_meshes(void)
               culled_ok, convex_views);
 #endif
     CHECK_MSG(culled_bad == 0, "%ld meshes culled that the rule excludes", culled_bad);
+#if RENDER_MESH
+    CHECK_MSG(mesh_orders > 200, "only %ld meshes added in both orders", mesh_orders);
+#endif
     CHECK_MSG(tally.interior > 20000, "too few pixels exercised: %ld", tally.interior);
     CHECK_MSG(tally.interior_bad == 0, "%ld interior pixels differ from the kernels' nearest object",
               tally.interior_bad);
