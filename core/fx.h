@@ -393,6 +393,13 @@ static inline fx128_t fx128_from64(int64_t v)
     fx128_t r = {(uint64_t)v, v < 0 ? -1 : 0};
     return r;
 }
+/* *dst = *src field by field: gcc copies a whole 16-byte struct with a
+ * memcpy call on Armv6-M. */
+static inline void fx128_copy(fx128_t *dst, const fx128_t *src)
+{
+    dst->lo = src->lo;
+    dst->hi = src->hi;
+}
 static inline fx128_t fx128_add(fx128_t a, fx128_t b)
 {
     fx128_t r;

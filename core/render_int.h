@@ -193,7 +193,10 @@ static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t i
     /* Orthographic: a = 1 exactly and r2 may use all 128 bits. */
     fx128_t r2a = ortho ? o->u.sphere->r2 : fx128_mul(a, fx128_shr_round(o->u.sphere->r2, 0));
     *disc_out = fx128_sub(r2a, sq);
-    *c_out = ortho ? fx128_add(o->u.sphere->k, sq) : o->u.sphere->k;
+    if (ortho)
+        *c_out = fx128_add(o->u.sphere->k, sq);
+    else
+        fx128_copy(c_out, &o->u.sphere->k);
 #else
     render_k_t sq = px * px + py * py + pz * pz;
     *disc_out = o->u.sphere->r2 * a - sq;

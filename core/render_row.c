@@ -733,7 +733,9 @@ static int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int
     /* Stepping: one run when the covered set is an interval (orthographic,
      * or perspective with disc concave), then stop after it. */
     bool one_run = s->ortho || s->d2.hi < 0;
-    fx128_t v = s->v, d1 = s->d1;
+    fx128_t v, d1;
+    fx128_copy(&v, &s->v);
+    fx128_copy(&d1, &s->d1);
     uint64_t b = s->ortho ? 1 : (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = s->ortho ? 0 : 2 * (uint64_t)o->u.sphere->b.x;
     int n = 0;
     int32_t start = -1, k;
@@ -846,7 +848,10 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     }
 #endif
     bool ortho = sp->ortho, use_c = sp->use_c;
-    fx128_t v = sp->v, d1 = sp->d1, d2 = sp->d2;
+    fx128_t v, d1, d2;
+    fx128_copy(&v, &sp->v);
+    fx128_copy(&d1, &sp->d1);
+    fx128_copy(&d2, &sp->d2);
     if (ortho) {
         /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
         fx128_t kr = fx128_add(o->u.sphere->k, o->u.sphere->r2);
@@ -859,7 +864,8 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
         return;
     }
     uint64_t b = (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere->b.x;
-    fx128_t k = o->u.sphere->k;
+    fx128_t k;
+    fx128_copy(&k, &o->u.sphere->k);
     for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
         if (!((render_k_t)b > 0 && v.hi >= 0))
             continue;

@@ -41,37 +41,42 @@ typedef struct {
 #if FXRT_NUMBER == FXRT_Q16
 static int render_bits32(uint32_t v) { return v ? 32 - __builtin_clz(v) : 0; }
 
-/* Smallest right shift that keeps sum |coef[i]| * mult[i] below 2^target. */
-static int rk_shift(const rc_t *coef, const uint32_t *mult, int n, int target)
+/* Bits of |coef| * mult (0 for a zero coefficient). */
+static int rk_bits(const rc_t *coef, uint32_t mult)
 {
-    int need = 0;
-    for (int i = 0; i < n; i++) {
-        int b = fx128_bits(coef[i]);
-        if (b)
-            b += render_bits32(mult[i]);
-        if (b > need)
-            need = b;
-    }
-    need += 3; /* at most 6 terms */
+    int b = fx128_bits(*coef);
+    return b ? b + render_bits32(mult) : 0;
+}
+static int rk_max(int a, int b) { return a > b ? a : b; }
+/* Smallest right shift that keeps a sum of at most 6 terms, each below
+ * 2^need, below 2^target. */
+static int rk_shift(int need, int target)
+{
+    need += 3;
     return need > target ? need - target : 0;
 }
-static render_k_t rk_of(rc_t c, int k) { return fx128_shr_round(c, k); }
-#define RK_SHIFT(coefs, mults, n, target) rk_shift(coefs, mults, n, target)
+static render_k_t rk_of(const rc_t *c, int k) { return fx128_shr_round(*c, k); }
 #else
-static render_k_t rk_of(rc_t c, int k) { (void)k; return c; }
-#define RK_SHIFT(coefs, mults, n, target) 0
+static render_k_t rk_of(const rc_t *c, int k) { (void)k; return *c; }
 #endif
 
-static render_lin_t rlin_scaled(const rclin_t *f, int k)
+/* The coefficients by pointer, the result into *r: on the M0 a 16-byte
+ * value passed or returned by value is copied with memcpy. */
+static void rlin_scaled(render_lin_t *r, const rclin_t *f, int k)
 {
-    render_lin_t r = {rk_of(f->c, k), rk_of(f->x, k), rk_of(f->y, k)};
-    return r;
+    r->c = rk_of(&f->c, k);
+    r->x = rk_of(&f->x, k);
+    r->y = rk_of(&f->y, k);
 }
 
-RENDER_MAYBE_UNUSED static render_quad_t rquad_scaled(const rcquad_t *f, int k)
+RENDER_MAYBE_UNUSED static void rquad_scaled(render_quad_t *r, const rcquad_t *f, int k)
 {
-    render_quad_t r = {rk_of(f->c, k), rk_of(f->x, k), rk_of(f->y, k), rk_of(f->xx, k), rk_of(f->xy, k), rk_of(f->yy, k)};
-    return r;
+    r->c = rk_of(&f->c, k);
+    r->x = rk_of(&f->x, k);
+    r->y = rk_of(&f->y, k);
+    r->xx = rk_of(&f->xx, k);
+    r->xy = rk_of(&f->xy, k);
+    r->yy = rk_of(&f->yy, k);
 }
 
 /* Screen extents of ix and iy, for the scale bounds. */
@@ -79,25 +84,24 @@ typedef struct {
     uint32_t xm, ym;
 } rext_t;
 
+/* Smallest right shift that keeps the form's value over the screen below
+ * 2^target (Q16.16; 0 in float and double). */
 static int rlin_need(const rclin_t *f, rext_t ext, int target)
 {
-    rc_t c[3] = {f->c, f->x, f->y};
-    uint32_t m[3] = {1, ext.xm, ext.ym};
-    (void)c;
-    (void)m;
-    (void)target;
-    return RK_SHIFT(c, m, 3, target);
+#if FXRT_NUMBER == FXRT_Q16
+    return rk_shift(rk_max(rk_bits(&f->c, 1), rk_max(rk_bits(&f->x, ext.xm), rk_bits(&f->y, ext.ym))), target);
+#else
+    (void)f, (void)ext, (void)target;
+    return 0;
+#endif
 }
 
 #if FXRT_NUMBER == FXRT_Q16
 RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int target)
 {
-    rc_t c[6] = {f->c, f->x, f->y, f->xx, f->xy, f->yy};
-    uint32_t m[6] = {1, ext.xm, ext.ym, ext.xm * ext.xm, ext.xm * ext.ym, ext.ym * ext.ym};
-    (void)c;
-    (void)m;
-    (void)target;
-    return RK_SHIFT(c, m, 6, target);
+    int need = rk_max(rk_bits(&f->c, 1), rk_max(rk_bits(&f->x, ext.xm), rk_bits(&f->y, ext.ym)));
+    need = rk_max(need, rk_max(rk_bits(&f->xx, ext.xm * ext.xm), rk_bits(&f->xy, ext.xm * ext.ym)));
+    return rk_shift(rk_max(need, rk_bits(&f->yy, ext.ym * ext.ym)), target);
 }
 #endif
 
@@ -106,9 +110,9 @@ RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int tar
 /* The sphere's pieces get 62 bits; b^2 - a c is formed in 128 bits. */
 #define RENDER_SPHERE_BITS 62
 
-RENDER_MAYBE_UNUSED static render_lin_t rlin_make(rclin_t f, rext_t ext)
+RENDER_MAYBE_UNUSED static void rlin_make(render_lin_t *r, const rclin_t *f, rext_t ext)
 {
-    return rlin_scaled(&f, rlin_need(&f, ext, RENDER_LIN_BITS));
+    rlin_scaled(r, f, rlin_need(f, ext, RENDER_LIN_BITS));
 }
 
 /* ---- set-up of each object ------------------------------------------- */
@@ -135,8 +139,8 @@ RENDER_MAYBE_UNUSED static void render_flat_nd(const cam_t *cam, rext_t ext, vec
                   ortho ? rc_nw(num_neg(n.y), cam->step_v) : rc_zero()};
     rclin_t df = {rc_nn(n.z, num_neg(focal)), ortho ? rc_zero() : rc_n(n.x), ortho ? rc_zero() : rc_n(n.y)};
     int kn = rlin_need(&nf, ext, RENDER_LIN_BITS), kd = rlin_need(&df, ext, RENDER_LIN_BITS);
-    f->n = rlin_scaled(&nf, kn);
-    f->d = rlin_scaled(&df, kd);
+    rlin_scaled(&f->n, &nf, kn);
+    rlin_scaled(&f->d, &df, kd);
     f->te = (int8_t)(kn - kd); /* N real = N 2^(kn - 48), D real = D 2^(kd - 48) */
     f->edges = 0;
 }
@@ -184,7 +188,7 @@ RENDER_MAYBE_UNUSED static void render_face_bounds_from(render_face_t *f, const 
  * origin and the edge the ray passes. Formed with the edge in canonical
  * order and negated for the other, so that two faces sharing an edge get
  * exactly opposite forms: no ray slips between them (watertight). */
-RENDER_MAYBE_UNUSED static render_lin_t render_edge(const cam_t *cam, rext_t ext, vec3_t p, vec3_t q)
+RENDER_MAYBE_UNUSED static void render_edge(render_lin_t *e, const cam_t *cam, rext_t ext, vec3_t p, vec3_t q)
 {
     bool swap = geom_point_less(q, p);
     if (swap) {
@@ -211,7 +215,7 @@ RENDER_MAYBE_UNUSED static render_lin_t render_edge(const cam_t *cam, rext_t ext
         f.x = rc_neg(f.x);
         f.y = rc_neg(f.y);
     }
-    return rlin_make(f, ext);
+    rlin_make(e, &f, ext);
 }
 
 RENDER_MAYBE_UNUSED static int32_t render_floor(num_t v)
@@ -401,16 +405,16 @@ __attribute__((noinline)) static void render_sphere_scale(render_t *r, rext_t ex
     }
     int sk = 2 * kp - 48;
     sp->k = sk >= 0 ? fx128_shr128(k, sk) : fx128_shl(k, -sk);
-    sp->b = rlin_scaled(b, kp);
-    r->sphere_a = rquad_scaled(a, ka); /* the same for every sphere */
+    rlin_scaled(&sp->b, b, kp);
+    rquad_scaled(&r->sphere_a, a, ka); /* the same for every sphere */
     sp->a = &r->sphere_a;
     /* b and sqrt(disc) are real * 2^(48 - kp), c is real * 2^(96 - 2 kp)
      * and a is real * 2^(48 - ka). */
     sp->tc = (int8_t)(kp - 48);
     sp->ta = (int8_t)(kp - ka);
-    sp->px = rlin_scaled(px, kp);
-    sp->py = rlin_scaled(py, kp);
-    sp->pz = rlin_scaled(pz, kp);
+    rlin_scaled(&sp->px, px, kp);
+    rlin_scaled(&sp->py, py, kp);
+    rlin_scaled(&sp->pz, pz, kp);
 }
 #endif
 
@@ -511,12 +515,12 @@ __attribute__((noinline)) static void render_setup_sphere(render_t *r, rext_t ex
 #if FXRT_NUMBER == FXRT_Q16
     render_sphere_scale(r, ext, o->u.sphere, rad, r2, k, &b, &px, &py, &pz, &a);
 #else
-    o->u.sphere->b = rlin_scaled(&b, 0);
-    r->sphere_a = rquad_scaled(&a, 0);
+    rlin_scaled(&o->u.sphere->b, &b, 0);
+    rquad_scaled(&r->sphere_a, &a, 0);
     o->u.sphere->a = &r->sphere_a;
-    o->u.sphere->px = rlin_scaled(&px, 0);
-    o->u.sphere->py = rlin_scaled(&py, 0);
-    o->u.sphere->pz = rlin_scaled(&pz, 0);
+    rlin_scaled(&o->u.sphere->px, &px, 0);
+    rlin_scaled(&o->u.sphere->py, &py, 0);
+    rlin_scaled(&o->u.sphere->pz, &pz, 0);
     o->u.sphere->k = k;
     o->u.sphere->r2 = r2;
     o->u.sphere->tc = 0;
@@ -557,7 +561,7 @@ __attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t 
     render_flat_t *f = render_face(o, 0);
     render_flat_nd(cam, ext, render_dir_to_cam(cam, t->n), v[0], f);
     for (int i = 0; i < 3; i++)
-        f->e[i] = render_edge(cam, ext, v[i], v[(i + 1) % 3]);
+        render_edge(&f->e[i], cam, ext, v[i], v[(i + 1) % 3]);
     f->edges = 3;
     render_points_bounds(cam, v, 3, o);
     if (!render_flat_eye(cam, t->a, t->n, f))
@@ -632,7 +636,7 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
             render_flat_t *f = &bf->f;
             render_flat_nd(cam, ext, nc, q[0], f);
             for (int k = 0; k < 4; k++)
-                *(k < 3 ? &f->e[k] : &bf->e4) = render_edge(cam, ext, q[k], q[(k + 1) % 4]);
+                render_edge(k < 3 ? &f->e[k] : &bf->e4, cam, ext, q[k], q[(k + 1) % 4]);
             f->edges = 4;
             /* Each face gets its own bounds, so a pixel is mostly stepped
              * for one face rather than all of them. */
