@@ -175,7 +175,9 @@
  * at most FXRT_LONE_MAX objects, so the default is the smaller of
  * FXRT_MAX_SPHERES and FXRT_LONE_MAX. fxrt-scenec writes the scene's
  * sphere count, or 0 for a scene of more than FXRT_LONE_MAX objects
- * (all of them with --sphere-rows, which the MPS2 firmware uses). */
+ * (all of them with --sphere-rows, which the firmware uses on every board;
+ * firmware/fit.sh compiles a scene whose row state does not fit RAM again
+ * with 0). */
 #ifndef FXRT_COHERENT_SPHERES
 #define FXRT_COHERENT_SPHERES (FXRT_MAX_SPHERES < FXRT_LONE_MAX ? FXRT_MAX_SPHERES : FXRT_LONE_MAX)
 #endif

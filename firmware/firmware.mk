@@ -27,12 +27,13 @@ FB_mps2-an385 := full
 FB_mps2-an386 := full
 FB_microbit   := stream
 FB ?= $(FB_$(BOARD))
-# Boards with RAM to spare (4 MB) keep every sphere's row-coherence state
-# (fxrt-scenec --sphere-rows, 120 B a sphere); the micro:bit's 16 KB keep
-# it only in scenes of at most FXRT_LONE_MAX objects.
+# Every board keeps every sphere's row-coherence state (fxrt-scenec
+# --sphere-rows, about 120 B a sphere) where it fits: firmware/fit.sh
+# compiles a scene whose state does not fit RAM (the micro:bit's 16 KB with
+# many spheres) again without it.
 SCENEC_OPTS_mps2-an385 := --sphere-rows
 SCENEC_OPTS_mps2-an386 := --sphere-rows
-SCENEC_OPTS_microbit   :=
+SCENEC_OPTS_microbit   := --sphere-rows
 
 FB_MODES := full stream
 
@@ -88,12 +89,13 @@ FW_OBJ   := $(patsubst %.c,$(FW_DIR)/%.o,$(FW_SRC))
 -include $(wildcard $(FW_OBJ:.o=.d))
 
 # The directory is named after the scene file's base name: scenes/lit/room
-# and scenes/bench/room share one. The scene's path (and --all-kinds) is
-# recorded, so that switching between them rebuilds instead of running the
-# other scene's firmware.
+# and scenes/bench/room share one. The scene's path (with --all-kinds and
+# the board's scene compiler options) is recorded, so that switching
+# between them rebuilds instead of running the other scene's firmware.
 $(FW_DIR)/scene-path: FORCE
 	@mkdir -p $(@D)
-	@echo '$(SCENE) $(FW_ALL_KINDS)' | cmp -s - $@ || echo '$(SCENE) $(FW_ALL_KINDS)' > $@
+	@echo '$(SCENE) $(FW_ALL_KINDS) $(SCENEC_OPTS_$(BOARD))' | cmp -s - $@ || \
+	  echo '$(SCENE) $(FW_ALL_KINDS) $(SCENEC_OPTS_$(BOARD))' > $@
 
 $(FW_DIR)/scene_data.h: $(SCENE_DEP) $(BUILD)/fxrt-scenec $(FW_DIR)/scene-path
 	@mkdir -p $(@D)

@@ -24,6 +24,11 @@
 #    objects has none), so the figures are those of large scenes; a small
 #    scene's sphere state counts in the part "without objects".
 # So the figures follow whatever the core's records take today.
+# A scene compiled with every sphere's row-coherence state (fxrt-scenec
+# --sphere-rows, as make does on every board) that does not fit RAM is
+# first compiled again without it (FXRT_COHERENT_SPHERES 0 in DIR's
+# scene_config.h, the objects in DIR rebuilt): the state is an optimisation
+# (same frames) that the micro:bit keeps only where RAM allows.
 #
 # link mode reads what make wrote into DIR: fit-cflags (FW_CFLAGS), fit-src
 # (the firmware sources), fit-ldflags (FW_LDFLAGS without -T and -Map), and
@@ -172,6 +177,24 @@ if [[ ${1:-} == link ]]; then
     elf=$3
     rm -f "$elf"
     read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
+    # Sphere rows where RAM allows: a scene compiled with every sphere's
+    # row-coherence state (fxrt-scenec --sphere-rows, which make passes on
+    # every board) that does not fit RAM is compiled again without it
+    # (FXRT_COHERENT_SPHERES 0: the frames are the same, the spheres find
+    # their runs without the row before's), and everything below is decided
+    # for that build.
+    if [[ $NEED_RAM -gt $RAM_LEN ]] && grep -q '^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$' "$DIR/scene_config.h"; then
+        sed -i -E 's|^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$|#define FXRT_COHERENT_SPHERES 0 /* firmware/fit.sh: the row state does not fit */|' \
+            "$DIR/scene_config.h"
+        pids=()
+        for s in $SRC; do
+            "$ARM_CC" "${CFLAGS[@]}" -MMD -MP -c "$s" -o "$DIR/${s%.c}.o" 2>"$WORK/$(basename "${s%.c}").log" &
+            pids+=($!)
+        done
+        for s in "${pids[@]}"; do wait "$s" || { cat "$WORK"/*.log >&2; die "compile without sphere rows failed"; }; done
+        read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
+        [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: the spheres' row state does not fit; built without it" >&2
+    fi
     if [[ ${FIT_QUICK:-0} == 1 && ( $NEED_RAM -gt $RAM_LEN || $NEED_FLASH -gt $FLASH_LEN ) ]]; then
         # make bench: only the verdict, without the per-kind probes
         echo "${SCENE:-$DIR}: does not fit $BOARD ($RAM_LEN B RAM, $FLASH_LEN B flash): needs $NEED_RAM B RAM, $NEED_FLASH B flash (FIT_QUICK=1: no per-kind figures)" >&2

@@ -38,8 +38,9 @@ static const char usage[] =
     "--all-kinds keeps every primitive kind compiled in (capacity >= 1), to\n"
     "measure what stripping the unused ones saves.\n"
     "--sphere-rows keeps every sphere's row-coherence state whatever the scene's\n"
-    "size (FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES), for boards with RAM to spare:\n"
-    "a sphere among other objects then steps its row forms down the rows.\n";
+    "size (FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES): a sphere among other objects\n"
+    "then steps its row forms down the rows (the firmware's make passes it on\n"
+    "every board; firmware/fit.sh drops the state where it does not fit).\n";
 
 static int fail(const char *msg, const char *arg)
 {
