@@ -137,10 +137,12 @@ RENDER_MAYBE_UNUSED static fx128_t render_mul128_small(const fx128_t *a, int32_t
 }
 
 /* q(k) = v + d1 k + d2 k (k - 1) / 2: the value the forward differences
- * reach after k steps, evaluated directly (exact). */
+ * reach after k steps, evaluated directly (exact). k is a column offset on
+ * a row, |k| <= FXRT_MAX_DIM + 1 <= 2^14 + 1 (fxrt_config.h), so
+ * k (k - 1) fits int32: no 64-bit product (a library call on the M0). */
 RENDER_MAYBE_UNUSED static fx128_t render_quad_k(const fx128_t *v, const fx128_t *d1, const fx128_t *d2, int32_t k)
 {
-    return fx128_add(fx128_add(*v, render_mul128_small(d1, k)), render_mul128_small(d2, (int32_t)((int64_t)k * (k - 1) / 2)));
+    return fx128_add(fx128_add(*v, render_mul128_small(d1, k)), render_mul128_small(d2, k * (k - 1) / 2));
 }
 #endif
 

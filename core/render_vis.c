@@ -464,7 +464,14 @@ static int render_flat_range(const render_t *r, const render_flat_t *f, int32_t 
 {
     int32_t w = r->cam->width;
     render_k_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
+    /* The far end from the near one: one product each, not two (the same
+     * value: 2 (x1 - x0) < 2 FXRT_MAX_DIM is a small factor). */
+#if FXRT_NUMBER == FXRT_Q16
+    render_k_t nb = (render_k_t)((uint64_t)na + fx_umul64_small((uint64_t)f->n.x, 2 * (x1 - x0)));
+    render_k_t db = (render_k_t)((uint64_t)da + fx_umul64_small((uint64_t)f->d.x, 2 * (x1 - x0)));
+#else
     render_k_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
+#endif
     if (!((na > 0 && da > 0 && nb > 0 && db > 0) || (na < 0 && da < 0 && nb < 0 && db < 0)))
         return (na > 0 && da < 0 && nb > 0 && db < 0) || (na < 0 && da > 0 && nb < 0 && db > 0) ? 0 : -1;
     render_depth_t ta = render_flat_depth(f, na, da), tb = render_flat_depth(f, nb, db);
