@@ -407,6 +407,39 @@ static inline fx128_t fx128_add(fx128_t a, fx128_t b)
     r.hi = (int64_t)((uint64_t)a.hi + (uint64_t)b.hi + (r.lo < a.lo ? 1u : 0u));
     return r;
 }
+/* *a += *b (mod 2^128). On Armv6-M four ADD/ADC on the words in memory
+ * (gcc builds the carries of fx128_add from compares there, with spills:
+ * about twice the instructions in a sphere's per-column stepping loop).
+ * gcc assembles Thumb-1 inline assembly in divided syntax (unless given
+ * -masm-syntax-unified), where ADD of three low registers and ADC set the
+ * flags; other compilers take the C. */
+static inline __attribute__((always_inline)) void fx128_add_to(fx128_t *a, const fx128_t *b)
+{
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
+    uint32_t x, y;
+    __asm__ volatile("ldr %[x], [%[a], #0]\n\t"
+                     "ldr %[y], [%[b], #0]\n\t"
+                     "add %[x], %[x], %[y]\n\t"
+                     "str %[x], [%[a], #0]\n\t"
+                     "ldr %[x], [%[a], #4]\n\t"
+                     "ldr %[y], [%[b], #4]\n\t"
+                     "adc %[x], %[y]\n\t"
+                     "str %[x], [%[a], #4]\n\t"
+                     "ldr %[x], [%[a], #8]\n\t"
+                     "ldr %[y], [%[b], #8]\n\t"
+                     "adc %[x], %[y]\n\t"
+                     "str %[x], [%[a], #8]\n\t"
+                     "ldr %[x], [%[a], #12]\n\t"
+                     "ldr %[y], [%[b], #12]\n\t"
+                     "adc %[x], %[y]\n\t"
+                     "str %[x], [%[a], #12]"
+                     : [x] "=&l"(x), [y] "=&l"(y)
+                     : [a] "l"(a), [b] "l"(b)
+                     : "cc", "memory");
+#else
+    *a = fx128_add(*a, *b);
+#endif
+}
 static inline fx128_t fx128_neg(fx128_t a)
 {
     fx128_t r;

@@ -856,7 +856,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
         /* c + disc = k + r2 along every ray (a = 1), and b is constant. */
         fx128_t kr = fx128_add(o->u.sphere->k, o->u.sphere->r2);
         render_k_t b = o->u.sphere->b.c;
-        for (int32_t x = x0; x <= x1; x++, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
+        for (int32_t x = x0; x <= x1; x++, fx128_add_to(&v, &d1), fx128_add_to(&d1, &d2)) {
             if (!(use_c ? v.hi < 0 : v.hi >= 0))
                 continue;
             RENDER_COVER(r, oi, x, rgb, render_resolve_ortho(r, cur_, oi, x, iy, b, &kr, &v, use_c));
@@ -866,7 +866,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
     uint64_t b = (uint64_t)rlin_at(&o->u.sphere->b, ix0, iy), sb = 2 * (uint64_t)o->u.sphere->b.x;
     fx128_t k;
     fx128_copy(&k, &o->u.sphere->k);
-    for (int32_t x = x0; x <= x1; x++, b += sb, v = fx128_add(v, d1), d1 = fx128_add(d1, d2)) {
+    for (int32_t x = x0; x <= x1; x++, b += sb, fx128_add_to(&v, &d1), fx128_add_to(&d1, &d2)) {
         if (!((render_k_t)b > 0 && v.hi >= 0))
             continue;
         RENDER_COVER(r, oi, x, rgb, render_resolve_sphere(r, cur_, oi, x, iy, (render_k_t)b, &k, &v));
