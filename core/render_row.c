@@ -622,7 +622,7 @@ static bool render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
         return true;
     }
 #else
-    (void)single;
+    (void)r, (void)oi, (void)f, (void)x0, (void)x1, (void)iy, (void)rgb, (void)lone, (void)single;
 #endif
     return false;
 }

@@ -22,6 +22,8 @@
 #   samples 2 adaptive  world_hit is there (the control)
 #   run mode          samples 2 with one primitive kind at a time, M0 and
 #                     M3, compiled with the firmware's -Werror warnings
+#   ablation          each switch of make bench-ablation (FXRT_NO_*), M0
+#                     and M3, the renderer compiled with -Werror
 # Then the counters of tests/test_skip.c (built with FXRT_STATS 1) run.
 set -u
 . "$(dirname "$0")/lib.sh"
@@ -105,6 +107,20 @@ for cpu in cortex-m0 cortex-m3; do
             "$OLDPWD/core/render_sample.c" "$OLDPWD/core/render_setup.c") >"$log" 2>&1
         check "samples 2, only FXRT_MAX_$kind > 0, $cpu: run mode compiles with -Werror ($(grep -m1 error "$log"))" \
             test ! -s "$log"
+    done
+done
+# Every ablation switch of make bench-ablation (firmware/ablate.sh) compiles
+# with the firmware's -Werror on the M0 and the M3 (FXRT_NO_SPANS once left
+# render_scan_flat's parameters unused and broke the ablation run).
+abl_dir=$out/ablation-caps
+mkdir -p "$abl_dir"
+for cpu in cortex-m0 cortex-m3; do
+    for sw in FXRT_NO_BOUNDS FXRT_NO_STEP FXRT_NO_LONE FXRT_NO_SPANS FXRT_NO_ZRANGE FXRT_NO_COHERENCE FXRT_NO_HOIST; do
+        log=$abl_dir/$cpu-$sw.log
+        (cd "$abl_dir" && arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror -O2 \
+            -mcpu=$cpu -mthumb -ffreestanding -c -DFXRT_NUMBER=1 -D$sw=1 -DFXRT_MAX_LIGHTS=0 -I"$OLDPWD/core" \
+            "$OLDPWD/core/render_row.c" "$OLDPWD/core/render_vis.c" "$OLDPWD/core/render_setup.c") >"$log" 2>&1
+        check "$sw=1, $cpu: the renderer compiles with -Werror ($(grep -m1 error "$log"))" test ! -s "$log"
     done
 done
 flat=$(syms flat | grep -E "$LIGHTING" || true)
