@@ -20,8 +20,8 @@
 #    (FXRT_MAX_<KIND> in scene_config.h) raised by 32 objects and linked the
 #    same way; RAM per object = the difference / 32, rounded up, from a
 #    probe with the scene's own capacities. Probes are compiled without the
-#    spheres' row-coherence state (a scene of more than FXRT_LONE_MAX
-#    objects has none), so the figures are those of large scenes; a small
+#    spheres' row-coherence state (a scene that does not fit with it is
+#    built without it), so the figures are those of large scenes; a small
 #    scene's sphere state counts in the part "without objects".
 # So the figures follow whatever the core's records take today.
 # A scene compiled with every sphere's row-coherence state (fxrt-scenec
@@ -85,18 +85,17 @@ trial_link() {
 
 # probe KIND CAP: compile every firmware source with FXRT_MAX_<KIND> = CAP
 # (KIND base: the scene's capacities) into $WORK/KIND-CAP/, link it; prints
-# "RAM FLASH". A probe is a scene of many objects, so its spheres keep no
-# row-coherence state (FXRT_COHERENT_SPHERES 0), as the scene compiler
-# would emit for it, unless the scene keeps it for every sphere
-# (--sphere-rows: FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES, which the probe
-# keeps); its flat pieces keep their guesses.
+# "RAM FLASH". Probes keep no sphere row-coherence state
+# (FXRT_COHERENT_SPHERES 0): a scene of many objects is built without it
+# where it does not fit (link mode above), so the figures per object and
+# the most objects that fit are those without it; its flat pieces keep
+# their guesses.
 probe() {
     local kind=$1 cap=$2 pdir=$WORK/$1-$2 s flags=() pids=()
     mkdir -p "$pdir"
     sed -E -e "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
-        -e '/^#define FXRT_(COHERENT_SPHERES [0-9]|NO_COHERENCE )/d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
-    grep -q '^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES' "$pdir/scene_config.h" ||
-        printf '#define FXRT_COHERENT_SPHERES 0\n' >>"$pdir/scene_config.h"
+        -e '/^#define FXRT_(COHERENT_SPHERES |NO_COHERENCE )/d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
+    printf '#define FXRT_COHERENT_SPHERES 0\n' >>"$pdir/scene_config.h"
     # A box brings its faces: when the scene compiler sized the face pool
     # (FXRT_RENDER_BOX_FACES, the faces this camera needs), the extra boxes
     # get as many faces as the scene's boxes have on average, so the per-box
