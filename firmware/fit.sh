@@ -83,6 +83,20 @@ trial_link() {
     echo "$((estack - RAM_ORIGIN)) $((sidata - FLASH_ORIGIN + edata - sdata))"
 }
 
+# compile_all OUTDIR WHAT FLAGS...: every firmware source ($SRC) compiled
+# with FLAGS into OUTDIR/<source>.o side by side (errors in OUTDIR/<source>.log);
+# dies naming WHAT when one fails.
+compile_all() {
+    local out=$1 what=$2 s pids=()
+    shift 2
+    for s in $SRC; do
+        mkdir -p "$out/$(dirname "$s")"
+        "$ARM_CC" "$@" -c "$s" -o "$out/${s%.c}.o" 2>"$out/${s%.c}.log" &
+        pids+=($!)
+    done
+    for s in "${pids[@]}"; do wait "$s" || { cat "$out"/*/*.log >&2; die "$what failed"; }; done
+}
+
 # probe KIND CAP: compile every firmware source with FXRT_MAX_<KIND> = CAP
 # (KIND base: the scene's capacities) into $WORK/KIND-CAP/, link it; prints
 # "RAM FLASH". Probes keep no sphere row-coherence state
@@ -91,7 +105,7 @@ trial_link() {
 # the most objects that fit are those without it; its flat pieces keep
 # their guesses.
 probe() {
-    local kind=$1 cap=$2 pdir=$WORK/$1-$2 s flags=() pids=()
+    local kind=$1 cap=$2 pdir=$WORK/$1-$2 s flags=()
     mkdir -p "$pdir"
     sed -E -e "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
         -e '/^#define FXRT_(COHERENT_SPHERES |NO_COHERENCE )/d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
@@ -112,12 +126,7 @@ probe() {
         [[ $s == "$DIR/scene_config.h" ]] && s=$pdir/scene_config.h
         flags+=("$s")
     done
-    for s in $SRC; do
-        mkdir -p "$pdir/$(dirname "$s")"
-        "$ARM_CC" "${flags[@]}" -c "$s" -o "$pdir/${s%.c}.o" 2>"$pdir/${s%.c}.log" &
-        pids+=($!)
-    done
-    for s in "${pids[@]}"; do wait "$s" || { cat "$pdir"/*/*.log >&2; die "probe compile ($kind = $cap) failed"; }; done
+    compile_all "$pdir" "probe compile ($kind = $cap)" "${flags[@]}"
     trial_link "$pdir" "$pdir/probe.elf"
 }
 
@@ -185,12 +194,7 @@ if [[ ${1:-} == link ]]; then
     if [[ $NEED_RAM -gt $RAM_LEN ]] && grep -q '^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$' "$DIR/scene_config.h"; then
         sed -i -E 's|^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$|#define FXRT_COHERENT_SPHERES 0 /* firmware/fit.sh: the row state does not fit */|' \
             "$DIR/scene_config.h"
-        pids=()
-        for s in $SRC; do
-            "$ARM_CC" "${CFLAGS[@]}" -MMD -MP -c "$s" -o "$DIR/${s%.c}.o" 2>"$WORK/$(basename "${s%.c}").log" &
-            pids+=($!)
-        done
-        for s in "${pids[@]}"; do wait "$s" || { cat "$WORK"/*.log >&2; die "compile without sphere rows failed"; }; done
+        compile_all "$DIR" "compile without sphere rows" "${CFLAGS[@]}" -MMD -MP
         read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
         [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: the spheres' row state does not fit; built without it" >&2
     fi
