@@ -224,6 +224,50 @@ static inline uint64_t fx_umul64_small(uint64_t a, int32_t i)
     return lo + ((uint64_t)(ah * (uint32_t)i) << 32);
 #endif
 }
+/* w[0] + w[1] i + w[2] j modulo 2^64 for small factors, |i|, |j| < 2^15:
+ * a linear form of the pixel offsets (the scanline loops' rlin_at). On
+ * Armv6-M with gcc, 36 instructions of inline assembly: per factor, the
+ * low word's 16-bit halves times it (each product below 2^31 in magnitude)
+ * added with its sign into the 64-bit sum, and the high word times it
+ * (modulo 2^32) into the sum's high word. gcc's code for the same sums
+ * takes about 60, with high registers spilled. Other targets and
+ * compilers take the C (fx_umul64_small). tests/onboard_main.c checks
+ * the assembly against 64-bit C products on every board. */
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
+#define FX_LIN_TERM(lo_off, hi_off, f)                                                                   \
+    "ldr %[t], [%[w], #" lo_off "]\n\t"                                                                    \
+    "uxth %[u], %[t]\n\t"                                                                                \
+    "mul %[u], %[" f "]\n\t"                                                                             \
+    "asr %[t], %[u], #31\n\t"                                                                            \
+    "add %[lo], %[lo], %[u]\n\t"                                                                         \
+    "adc %[hi], %[t]\n\t"                                                                                \
+    "ldr %[t], [%[w], #" lo_off "]\n\t"                                                                    \
+    "lsr %[t], %[t], #16\n\t"                                                                            \
+    "mul %[t], %[" f "]\n\t"                                                                             \
+    "lsl %[u], %[t], #16\n\t"                                                                            \
+    "asr %[t], %[t], #16\n\t"                                                                            \
+    "add %[lo], %[lo], %[u]\n\t"                                                                         \
+    "adc %[hi], %[t]\n\t"                                                                                \
+    "ldr %[t], [%[w], #" hi_off "]\n\t"                                                                    \
+    "mul %[t], %[" f "]\n\t"                                                                             \
+    "add %[hi], %[hi], %[t]\n\t"
+static inline __attribute__((always_inline)) uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
+{
+    uint32_t lo, hi, t, u;
+    __asm__("ldr %[lo], [%[w], #0]\n\t"
+            "ldr %[hi], [%[w], #4]\n\t" FX_LIN_TERM("8", "12", "i") FX_LIN_TERM("16", "20", "j")
+            : [lo] "=&l"(lo), [hi] "=&l"(hi), [t] "=&l"(t), [u] "=&l"(u)
+            : [w] "l"(w), [i] "l"(i), [j] "l"(j), "m"(*(const int64_t(*)[3])w)
+            : "cc");
+    return (uint64_t)hi << 32 | lo;
+}
+#undef FX_LIN_TERM
+#else
+static inline uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
+{
+    return (uint64_t)w[0] + fx_umul64_small((uint64_t)w[1], i) + fx_umul64_small((uint64_t)w[2], j);
+}
+#endif
 /* a * i for a small factor, |i| < 2^15 (pixel offsets): exact. On the M0
  * two 32-bit products of a's halves (each below 2^31 in magnitude) instead
  * of four 16-bit ones. */

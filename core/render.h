@@ -104,9 +104,10 @@ typedef struct {
     render_k_t c, x, y;
 } render_lin_t;
 
-/* c + x ix + y iy + xx ix^2 + xy ix iy + yy iy^2 */
+/* c + x ix + y iy + xx ix^2 + xy ix iy + yy iy^2 (in this order: x, xx
+ * and xy are the linear form x + xx ix + xy iy, rquad_at's first step) */
 typedef struct {
-    render_k_t c, x, y, xx, xy, yy;
+    render_k_t x, xx, xy, y, yy, c;
 } render_quad_t;
 
 /* Row coherence (the fast Q16.16 loop, with spans, lone objects and

@@ -93,15 +93,19 @@ static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTH
  * that the callers' frames (16 KB boards) do not grow with them. */
 #define RENDER_EVAL RENDER_MAYBE_UNUSED __attribute__((noinline)) static
 #endif
+_Static_assert(offsetof(render_lin_t, x) == 8 && offsetof(render_lin_t, y) == 16, "render_lin_t: c, x, y in a row");
+_Static_assert(offsetof(render_quad_t, xx) == 8 && offsetof(render_quad_t, xy) == 16, "render_quad_t: x, xx, xy first");
 RENDER_EVAL render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
 {
-    return (render_k_t)((uint64_t)f->c + fx_umul64_small((uint64_t)f->x, ix) + fx_umul64_small((uint64_t)f->y, iy));
+    return (render_k_t)fx_lin2_small((const int64_t *)(const void *)f, ix, iy); /* c, x, y */
 }
 RENDER_EVAL render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
 {
-    uint64_t gx = (uint64_t)f->x + fx_umul64_small((uint64_t)f->xx, ix) + fx_umul64_small((uint64_t)f->xy, iy);
-    uint64_t gy = (uint64_t)f->y + fx_umul64_small((uint64_t)f->yy, iy);
-    return (render_k_t)((uint64_t)f->c + fx_umul64_small(gx, ix) + fx_umul64_small(gy, iy));
+    int64_t g[3]; /* c, gx, gy */
+    g[0] = f->c;
+    g[1] = (int64_t)fx_lin2_small((const int64_t *)(const void *)f, ix, iy); /* x, xx, xy */
+    g[2] = (int64_t)((uint64_t)f->y + fx_umul64_small((uint64_t)f->yy, iy));
+    return (render_k_t)fx_lin2_small(g, ix, iy);
 }
 #else
 static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)

@@ -171,13 +171,30 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
                 pat.b[3 * i + 1] = c.g;
                 pat.b[3 * i + 2] = c.b;
             }
-            uint32_t w0 = pat.w[0], w1 = pat.w[1], w2 = pat.w[2];
             word_t *p = (word_t *)(void *)(rgb + 3 * x);
-            for (; x + 3 <= xb; x += 4, p += 3) {
+            int32_t groups = (xb - x + 1) / 4;
+            x += 4 * groups;
+#if defined(__thumb__) && defined(__GNUC__) && !defined(__clang__)
+            /* One STMIA per four pixels (gcc's loop keeps the three words
+             * in high registers on the M0: nine instructions). Its register
+             * list stores in register order, hence the fixed registers. */
+            register uint32_t w0 __asm__("r4") = pat.w[0], w1 __asm__("r5") = pat.w[1], w2 __asm__("r6") = pat.w[2];
+            word_t *end = p + 3 * groups;
+            __asm__ volatile("1:\n\t"
+                             "stmia %[p]!, {%[a], %[b], %[c]}\n\t"
+                             "cmp %[p], %[e]\n\t"
+                             "bne 1b"
+                             : [p] "+l"(p)
+                             : [a] "l"(w0), [b] "l"(w1), [c] "l"(w2), [e] "l"(end)
+                             : "cc", "memory");
+#else
+            uint32_t w0 = pat.w[0], w1 = pat.w[1], w2 = pat.w[2];
+            for (; groups > 0; groups--, p += 3) {
                 p[0] = w0;
                 p[1] = w1;
                 p[2] = w2;
             }
+#endif
         }
     }
     for (; x <= xb; x++)
@@ -243,22 +260,46 @@ static void render_signs(int64_t a, int64_t b, int32_t kmax, render_iv_t iv[4])
     iv[3] = flip ? nonneg : nonpos;
 }
 
+/* Of a form a + b k on k = 0..kmax, where it is > 0 and < 0 (strict), or
+ * >= 0 and <= 0, into *up and *down: the two of render_signs' intervals
+ * a flat piece's runs use (N and D strict, edges not). */
+static inline __attribute__((always_inline)) void render_signs_pick(const render_iv_t iv[4], bool strict,
+                                                                     render_iv_t *up, render_iv_t *down)
+{
+    *up = iv[strict ? 0 : 1];
+    *down = iv[strict ? 2 : 3];
+}
+
 #if RENDER_COHERENT
-/* render_signs without a division: from a guess *g of the first column
- * where the form, taken increasing (negated when b < 0), is >= 0 (the row
- * before's), by galloping and a binary search on that
- * monotone predicate, with one multiply-add per evaluation; *g is updated.
- * Any guess gives the exact answer; a near one takes two evaluations. */
+/* ub k for a column k in 0..kmax + 1 (< 2^15): fx_umul64_small, out of
+ * line on the M0 (three 32-bit products instead of an __aeabi_lmul call;
+ * inline, five forms' worth of them tripled render_runs_flat's frame). */
+#if defined(__ARM_ARCH_6M__)
+__attribute__((noinline)) static uint64_t render_umul_k(uint64_t ub, int32_t k) { return fx_umul64_small(ub, k); }
+#else
+static inline uint64_t render_umul_k(uint64_t ub, int32_t k) { return ub * (uint64_t)k; }
+#endif
+
+/* render_signs' *up and *down (render_signs_pick) without a division:
+ * from a guess *g of the first column where the form, taken increasing
+ * (negated when b < 0), is >= 0 (the row before's), by galloping and a
+ * binary search on that monotone predicate, with one multiply-add per
+ * evaluation; *g is updated. Any guess gives the exact answer; a near one
+ * takes two evaluations. */
 static inline __attribute__((always_inline)) void render_signs_near(int64_t a, int64_t b, int32_t kmax, int16_t *g,
-                                                                     render_iv_t iv[4])
+                                                                     bool strict, render_iv_t *up, render_iv_t *down)
 {
     if (b == 0) {
-        render_signs(a, b, kmax, iv);
+        bool u = strict ? a > 0 : a >= 0, d = strict ? a < 0 : a <= 0;
+        up->lo = u ? 0 : 1;
+        up->hi = u ? kmax : 0;
+        down->lo = d ? 0 : 1;
+        down->hi = d ? kmax : 0;
         return;
     }
     bool flip = b < 0;
     uint64_t ua = (uint64_t)(flip ? -a : a), ub = (uint64_t)(flip ? -b : b);
-#define RENDER_GE(k) ((int64_t)(ua + ub * (uint64_t)(k)) >= 0) /* k on the row: the value fits */
+#define RENDER_GE(k) ((int64_t)(ua + render_umul_k(ub, k)) >= 0) /* k on the row: the value fits */
     int32_t k = *g < 0 ? 0 : (*g > kmax + 1 ? kmax + 1 : *g), lo, hi, s = 1;
     if (k <= kmax && !RENDER_GE(k)) { /* the first >= 0 is to the right (kmax + 1: none) */
         for (lo = k;; lo = hi, s *= 2) {
@@ -288,18 +329,33 @@ static inline __attribute__((always_inline)) void render_signs_near(int64_t a, i
         else
             lo = mid;
     }
-    bool exact = hi <= kmax && ua + ub * (uint64_t)hi == 0;
+    bool exact = hi <= kmax && ua + render_umul_k(ub, hi) == 0;
 #undef RENDER_GE
     *g = (int16_t)hi;
-    render_iv_t pos = {exact ? hi + 1 : hi, kmax}, nonneg = {hi, kmax}, neg = {0, hi - 1}, nonpos = {0, exact ? hi : hi - 1};
-    iv[0] = flip ? neg : pos;
-    iv[1] = flip ? nonpos : nonneg;
-    iv[2] = flip ? pos : neg;
-    iv[3] = flip ? nonneg : nonpos;
+    /* The increasing form F is >= 0 on [hi, kmax] (> 0 from hi + 1 when
+     * it is 0 at hi), < 0 on [0, hi - 1] (<= 0 up to hi then). */
+    render_iv_t right = {strict && exact ? hi + 1 : hi, kmax}, left = {0, !strict && exact ? hi : hi - 1};
+    *up = flip ? left : right;
+    *down = flip ? right : left;
 }
-#define RENDER_SIGNS(a, b, kmax, hint, iv) ((hint) ? render_signs_near(a, b, kmax, hint, iv) : render_signs(a, b, kmax, iv))
+#define RENDER_SIGNS(a, b, kmax, hint, strict, up, down)                                                \
+    do {                                                                                                \
+        if (hint)                                                                                       \
+            render_signs_near(a, b, kmax, hint, strict, up, down);                                      \
+        else {                                                                                          \
+            render_iv_t iv_[4];                                                                         \
+            render_signs(a, b, kmax, iv_);                                                              \
+            render_signs_pick(iv_, strict, up, down);                                                   \
+        }                                                                                               \
+    } while (0)
 #else
-#define RENDER_SIGNS(a, b, kmax, hint, iv) ((void)(hint), render_signs(a, b, kmax, iv))
+#define RENDER_SIGNS(a, b, kmax, hint, strict, up, down)                                                \
+    do {                                                                                                \
+        render_iv_t iv_[4];                                                                             \
+        (void)(hint);                                                                                   \
+        render_signs(a, b, kmax, iv_);                                                                  \
+        render_signs_pick(iv_, strict, up, down);                                                       \
+    } while (0)
 #endif
 /* A flat piece's guesses (render_signs_near), where it keeps them. */
 #if RENDER_COHERENT
@@ -325,19 +381,20 @@ RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, const render_flat_t *
                                         int16_t *hint, render_iv_t run[4])
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0;
-    render_iv_t e[4], ge = {0, kmax}, le = {0, kmax}, front[2] = {{0, kmax}, {1, 0}};
+    render_iv_t ge = {0, kmax}, le = {0, kmax}, front[2] = {{0, kmax}, {1, 0}};
     if (!f->front) { /* (front: N and D share a sign all over its bounds) */
-        render_iv_t n[4], d[4];
-        RENDER_SIGNS(rlin_at(&f->n, ix0, iy), 2 * f->n.x, kmax, hint, n);
-        RENDER_SIGNS(rlin_at(&f->d, ix0, iy), 2 * f->d.x, kmax, hint ? hint + 1 : NULL, d);
-        front[0] = render_iv_and(n[0], d[0]);
-        front[1] = render_iv_and(n[2], d[2]);
+        render_iv_t np, nn, dp, dn;
+        RENDER_SIGNS(rlin_at(&f->n, ix0, iy), 2 * f->n.x, kmax, hint, true, &np, &nn);
+        RENDER_SIGNS(rlin_at(&f->d, ix0, iy), 2 * f->d.x, kmax, hint ? hint + 1 : NULL, true, &dp, &dn);
+        front[0] = render_iv_and(np, dp);
+        front[1] = render_iv_and(nn, dn);
     }
     for (int k = 0; k < f->edges; k++) {
         const render_lin_t *ek = render_edge_k(f, k);
-        RENDER_SIGNS(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, e);
-        ge = render_iv_and(ge, e[1]);
-        le = render_iv_and(le, e[3]);
+        render_iv_t up, down;
+        RENDER_SIGNS(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, false, &up, &down);
+        ge = render_iv_and(ge, up);
+        le = render_iv_and(le, down);
     }
     int nrun = 0;
     for (int i = 0; i < 2; i++) {

@@ -127,10 +127,62 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
     return 0;
 }
 
+/* The core's inline assembly (Armv6-M: fx_lin2_small, fx128_add_to; the
+ * C elsewhere) against plain 64-bit C arithmetic (libgcc's products on the
+ * M0), on edge values and pseudo-random ones: the number of mismatches. */
+static uint32_t onb_rng_state = 0x9E3779B9u;
+static uint32_t onb_rng(void)
+{
+    onb_rng_state ^= onb_rng_state << 13;
+    onb_rng_state ^= onb_rng_state >> 17;
+    onb_rng_state ^= onb_rng_state << 5;
+    return onb_rng_state;
+}
+static uint32_t onb_word(void)
+{
+    static const uint32_t edge[] = {0, 1, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFF0000u, 0xFFFFFFFFu};
+    uint32_t r = onb_rng();
+    return (r & 3) == 0 ? edge[(r >> 2) & 7] : onb_rng();
+}
+static int32_t onb_small(void)
+{
+    static const int32_t edge[] = {0, 1, -1, 32767, -32767, 2, -2, 16384};
+    uint32_t r = onb_rng();
+    return (r & 3) == 0 ? edge[(r >> 2) & 7] : (int32_t)(onb_rng() % 65535u) - 32767;
+}
+/* (noinline: its locals must not stay in main's frame while the scenes
+ * render, whose stack high-water mark is checked) */
+__attribute__((noinline)) static uint32_t onb_check_arith(void)
+{
+    uint32_t bad = 0;
+    for (int n = 0; n < 4000; n++) {
+        int64_t w[3];
+        for (int k = 0; k < 3; k++)
+            w[k] = (int64_t)((uint64_t)onb_word() << 32 | onb_word());
+        int32_t i = onb_small(), j = onb_small();
+        volatile uint64_t a = (uint64_t)w[1], b = (uint64_t)w[2]; /* (volatile: a real 64-bit product) */
+        uint64_t want = (uint64_t)w[0] + a * (uint64_t)(int64_t)i + b * (uint64_t)(int64_t)j;
+        bad += fx_lin2_small(w, i, j) != want;
+        fx128_t x = {(uint64_t)w[0], w[1]}, y = {(uint64_t)w[2], (int64_t)((uint64_t)onb_word() << 32 | onb_word())};
+        uint64_t lo = x.lo + y.lo;
+        uint64_t hi = (uint64_t)x.hi + (uint64_t)y.hi + (lo < x.lo);
+        fx128_add_to(&x, &y);
+        bad += x.lo != lo || (uint64_t)x.hi != hi;
+    }
+    return bad;
+}
+
 int main(void)
 {
     counter_start();
     int failed = 0;
+    uint32_t arith = onb_check_arith();
+    if (arith) {
+        semihost_puts("error=arith: ");
+        semihost_put_u64(arith);
+        semihost_puts(" mismatches of fx_lin2_small / fx128_add_to against 64-bit C\n");
+        failed = 1;
+    }
     uint64_t total = 0;
     for (uint32_t i = 0; i < sizeof onb_scenes / sizeof onb_scenes[0]; i++) {
         uint64_t t = 0;

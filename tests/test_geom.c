@@ -2501,9 +2501,64 @@ static void test_render_runs(void)
 #endif
 }
 
+#if FXRT_NUMBER == FXRT_Q16 && defined(__SIZEOF_INT128__)
+/* The scanline forms' integer helpers (rlin_at, rquad_at, the 128-bit
+ * render_mul128_small and render_quad_k; in the nohw build their Cortex-M0
+ * C paths) against the compiler's 128-bit integers, an independent
+ * computation: every coefficient drawn from all 64 bits (half of them
+ * from edge patterns), offsets over the whole |k| < 2^15 range, and the
+ * multiplier of render_mul128_small over 32 bits (k (k - 1) / 2 of
+ * render_quad_k). */
+static uint64_t arith_word(void)
+{
+    static const uint64_t edge[] = {0, 1, 0xFFFFu, 0x10000u, 0x7FFFFFFFull, 0x80000000ull, 0xFFFFFFFFull,
+                                    0x7FFFFFFFFFFFFFFFull, 0x8000000000000000ull, UINT64_MAX};
+    uint64_t r = rng();
+    return (r & 1) ? edge[(r >> 1) % 10] : rng();
+}
+static int32_t arith_small(void) { return (int32_t)(rng() % 65535u) - 32767; }
+static void test_render_forms_arith(void)
+{
+    __extension__ typedef unsigned __int128 u128;
+    __extension__ typedef __int128 s128;
+    long bad_lin = 0, bad_quad = 0, bad_mul = 0, bad_k = 0;
+    for (int n = 0; n < 200000; n++) {
+        render_lin_t f = {(int64_t)arith_word(), (int64_t)arith_word(), (int64_t)arith_word()};
+        render_quad_t q = {(int64_t)arith_word(), (int64_t)arith_word(), (int64_t)arith_word(),
+                           (int64_t)arith_word(), (int64_t)arith_word(), (int64_t)arith_word()};
+        int32_t ix = arith_small(), iy = arith_small();
+        uint64_t x = (uint64_t)(int64_t)ix, y = (uint64_t)(int64_t)iy;
+        uint64_t want = (uint64_t)f.c + (uint64_t)f.x * x + (uint64_t)f.y * y; /* (mod 2^64) */
+        bad_lin += (uint64_t)rlin_at(&f, ix, iy) != want;
+        uint64_t wq = (uint64_t)q.c + (uint64_t)q.x * x + (uint64_t)q.y * y + (uint64_t)q.xx * x * x +
+                      (uint64_t)q.xy * x * y + (uint64_t)q.yy * y * y;
+        bad_quad += (uint64_t)rquad_at(&q, ix, iy) != wq;
+        fx128_t a = {arith_word(), (int64_t)arith_word()}, v = {arith_word(), (int64_t)arith_word()},
+                d2 = {arith_word(), (int64_t)arith_word()};
+        int32_t m = (n & 1) ? arith_small() : (int32_t)(rng() >> 32);
+        u128 ua = (u128)a.lo | (u128)(uint64_t)a.hi << 64, um = (u128)(s128)m;
+        u128 p = ua * um;
+        fx128_t got = render_mul128_small(&a, m);
+        bad_mul += got.lo != (uint64_t)p || (uint64_t)got.hi != (uint64_t)(p >> 64);
+        int32_t k = arith_small() / 2; /* |k| <= 2^14: k (k - 1) / 2 fits int32 */
+        u128 uv = (u128)v.lo | (u128)(uint64_t)v.hi << 64, ud2 = (u128)d2.lo | (u128)(uint64_t)d2.hi << 64;
+        u128 wk = uv + ua * (u128)(s128)k + ud2 * (u128)(s128)((int64_t)k * (k - 1) / 2);
+        fx128_t gk = render_quad_k(&v, &a, &d2, k);
+        bad_k += gk.lo != (uint64_t)wk || (uint64_t)gk.hi != (uint64_t)(wk >> 64);
+    }
+    CHECK_MSG(bad_lin == 0, "rlin_at: %ld of 200000 differ from 64-bit products", bad_lin);
+    CHECK_MSG(bad_quad == 0, "rquad_at: %ld of 200000 differ", bad_quad);
+    CHECK_MSG(bad_mul == 0, "render_mul128_small: %ld of 200000 differ from __int128", bad_mul);
+    CHECK_MSG(bad_k == 0, "render_quad_k: %ld of 200000 differ from __int128", bad_k);
+}
+#else
+static void test_render_forms_arith(void) {}
+#endif
+
 int main(void)
 {
     test_color_rule();
+    test_render_forms_arith();
     test_cam_basis_seed();
     test_cam_basis_fig7();
     test_cam_pixels();
