@@ -700,12 +700,26 @@ fx128_t fx128_mul(int64_t a, int64_t b)
 {
     bool neg = (a < 0) != (b < 0);
     uint64_t x = fx_uabs64(a), y = fx_uabs64(b);
+    if ((x >> 32) != 0) { /* (swapped so that a factor below 2^32 comes first) */
+        uint64_t t = x;
+        x = y;
+        y = t;
+    }
     uint32_t x0 = (uint32_t)x, x1 = (uint32_t)(x >> 32), y0 = (uint32_t)y, y1 = (uint32_t)(y >> 32);
+    fx128_t r;
+    if (x1 == 0) {
+        /* A factor below 2^32 (the set-up's products of a Q16.16 value
+         * with another or with a 64-bit one): two pieces, not four. */
+        uint64_t p00 = fx_umul32(x0, y0), p01 = fx_umul32(x0, y1);
+        uint64_t mid = (p00 >> 32) + (uint32_t)p01;
+        r.lo = (mid << 32) | (uint32_t)p00;
+        r.hi = (int64_t)((p01 >> 32) + (mid >> 32));
+        return neg ? fx128_neg(r) : r;
+    }
     /* 32 x 32 -> 64-bit pieces: UMULL, or inline 16-bit products on the
      * M0 (a plain 64-bit product there is a __aeabi_lmul call). */
     uint64_t p00 = fx_umul32(x0, y0), p01 = fx_umul32(x0, y1), p10 = fx_umul32(x1, y0), p11 = fx_umul32(x1, y1);
     uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
-    fx128_t r;
     r.lo = (mid << 32) | (uint32_t)p00;
     r.hi = (int64_t)(p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32));
     return neg ? fx128_neg(r) : r;

@@ -9,9 +9,18 @@
  * screen stays below 2^target, and rounded once to int64. */
 #if FXRT_NUMBER == FXRT_Q16
 typedef fx128_t rc_t;
-RENDER_MAYBE_UNUSED __attribute__((noinline)) static rc_t rc_n(num_t a) { return fx128_shl(fx128_from64(a), 32); }
-RENDER_MAYBE_UNUSED static rc_t rc_w(numw_t w) { return fx128_shl(fx128_from64(w), 16); }
-RENDER_MAYBE_UNUSED __attribute__((noinline)) static rc_t rc_nn(num_t a, num_t b) { return fx128_shl(fx128_mul(a, b), 16); }
+/* v 2^s for a 64-bit v and 0 < s < 64, by word shifts (no fx128_shl or
+ * fx128_mul call: on the M0 the set-up forms many of these). */
+static rc_t rc_shl64(int64_t v, int s)
+{
+    rc_t r;
+    r.lo = (uint64_t)v << s;
+    r.hi = v >> (64 - s); /* arithmetic: the sign fills the top */
+    return r;
+}
+RENDER_MAYBE_UNUSED __attribute__((noinline)) static rc_t rc_n(num_t a) { return rc_shl64(a, 32); }
+RENDER_MAYBE_UNUSED static rc_t rc_w(numw_t w) { return rc_shl64(w, 16); }
+RENDER_MAYBE_UNUSED __attribute__((noinline)) static rc_t rc_nn(num_t a, num_t b) { return rc_shl64(fx_smul32(a, b), 16); }
 RENDER_MAYBE_UNUSED static rc_t rc_nw(num_t a, numw_t w) { return fx128_mul(a, w); }
 RENDER_MAYBE_UNUSED static rc_t rc_add(rc_t a, rc_t b) { return fx128_add(a, b); }
 RENDER_MAYBE_UNUSED static rc_t rc_neg(rc_t a) { return fx128_neg(a); }
@@ -238,27 +247,67 @@ typedef struct {
     bool any;
 } rbox_t;
 
-RENDER_MAYBE_UNUSED static void render_bound_add(const cam_t *cam, rbox_t *b, vec3_t p)
-{
+/* A camera-space point's projection, in pixel offsets. */
+typedef struct {
     num_t ix, iy;
-    if (render_ortho(cam)) {
-        ix = numw_div(numw_from(p.x), cam->step_u);
-        iy = numw_div(numw_from(p.y), cam->step_v);
-    } else {
-        numw_t z = numw_from(num_neg(p.z));
-        ix = numw_div(numw_mul(p.x, cam->focal), z);
-        iy = numw_div(numw_mul(p.y, cam->focal), z);
+} rproj_t;
+
+/* The projections of points p[idx[0..n-1]] that *have (bit i: proj[i]
+ * holds p[i]'s) lacks. A quotient already taken for an earlier point of
+ * the set with the same x and z (ix), or y and z (iy), is reused: a
+ * sphere's bounding cube takes 8 divisions instead of 16, a box's faces
+ * and outline share their corners' (a division is a few hundred
+ * instructions on the M0). The same values either way. */
+RENDER_MAYBE_UNUSED static void render_project(const cam_t *cam, const vec3_t *p, const uint8_t *idx, int n, rproj_t *proj,
+                                               uint8_t *have)
+{
+    bool ortho = render_ortho(cam);
+    for (int k = 0; k < n; k++) {
+        int i = idx[k];
+        if (*have & (1u << i))
+            continue;
+        bool gx = false, gy = false;
+        for (int m = 0; m < k && !(gx && gy); m++) { /* the set's points before it: projected now */
+            int j = idx[m];
+            if (!ortho && p[j].z != p[i].z)
+                continue;
+            if (!gx && p[j].x == p[i].x) {
+                proj[i].ix = proj[j].ix;
+                gx = true;
+            }
+            if (!gy && p[j].y == p[i].y) {
+                proj[i].iy = proj[j].iy;
+                gy = true;
+            }
+        }
+        if (ortho) {
+            if (!gx)
+                proj[i].ix = numw_div(numw_from(p[i].x), cam->step_u);
+            if (!gy)
+                proj[i].iy = numw_div(numw_from(p[i].y), cam->step_v);
+        } else {
+            numw_t z = numw_from(num_neg(p[i].z));
+            if (!gx)
+                proj[i].ix = numw_div(numw_mul(p[i].x, cam->focal), z);
+            if (!gy)
+                proj[i].iy = numw_div(numw_mul(p[i].y, cam->focal), z);
+        }
+        *have |= (uint8_t)(1u << i);
     }
+}
+
+RENDER_MAYBE_UNUSED static void render_bound_add(rbox_t *b, rproj_t q)
+{
     if (!b->any) {
-        b->ix0 = b->ix1 = ix;
-        b->iy0 = b->iy1 = iy;
+        b->ix0 = b->ix1 = q.ix;
+        b->iy0 = b->iy1 = q.iy;
         b->any = true;
         return;
     }
-    b->ix0 = num_min(b->ix0, ix);
-    b->ix1 = num_max(b->ix1, ix);
-    b->iy0 = num_min(b->iy0, iy);
-    b->iy1 = num_max(b->iy1, iy);
+    b->ix0 = num_min(b->ix0, q.ix);
+    b->ix1 = num_max(b->ix1, q.ix);
+    b->iy0 = num_min(b->iy0, q.iy);
+    b->iy1 = num_max(b->iy1, q.iy);
 }
 
 RENDER_MAYBE_UNUSED static int32_t render_clamp(int32_t v, int32_t lo, int32_t hi) { return v < lo ? lo : v > hi ? hi : v; }
@@ -338,14 +387,16 @@ RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t
     o->ranged = true;
 }
 
-/* Bounds of camera-space points that are all in front in perspective;
- * straddling sets get the whole screen, sets wholly behind are empty. */
-RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
+/* Bounds of camera-space points p[idx[0..n-1]] (at most 8, indices below
+ * 8) that are all in front in perspective; straddling sets get the whole
+ * screen, sets wholly behind are empty. proj and *have: the points'
+ * projections so far (render_project), shared by calls on one point set. */
+RENDER_MAYBE_UNUSED static void render_idx_bounds(const cam_t *cam, const vec3_t *p, const uint8_t *idx, int n,
+                                                  rproj_t *proj, uint8_t *have, render_obj_t *o)
 {
-    render_set_zrange(cam, p, n, o);
     int front = 0, behind = 0;
-    for (int i = 0; i < n; i++) {
-        if (p[i].z < NUM_ZERO)
+    for (int k = 0; k < n; k++) {
+        if (p[idx[k]].z < NUM_ZERO)
             front++;
         else
             behind++;
@@ -358,10 +409,22 @@ RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec
         render_set_full(cam, o);
         return;
     }
+    render_project(cam, p, idx, n, proj, have);
     rbox_t b = {NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO, false};
-    for (int i = 0; i < n; i++)
-        render_bound_add(cam, &b, p[i]);
+    for (int k = 0; k < n; k++)
+        render_bound_add(&b, proj[idx[k]]);
     render_set_bounds(cam, &b, o);
+}
+
+static const uint8_t render_idx8[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+
+/* Bounds and depth range of camera-space points p[0..n-1] (n <= 8). */
+RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
+{
+    render_set_zrange(cam, p, n, o);
+    rproj_t proj[8];
+    uint8_t have = 0;
+    render_idx_bounds(cam, p, render_idx8, n, proj, &have, o);
 }
 
 #if FXRT_MAX_SPHERES > 0
@@ -546,7 +609,6 @@ __attribute__((noinline)) static void render_setup_plane(render_t *r, rext_t ext
 __attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
-    vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
     o->kind = RENDER_FLAT;
     o->nflat = 1;
 #if RENDER_MESH
@@ -558,6 +620,7 @@ __attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t 
         render_set_empty(o);
         return;
     }
+    vec3_t v[3] = {render_to_cam(cam, t->a), render_to_cam(cam, t->b), render_to_cam(cam, t->c)};
     render_flat_t *f = render_face(o, 0);
     render_flat_nd(cam, ext, render_dir_to_cam(cam, t->n), v[0], f);
     for (int i = 0; i < 3; i++)
@@ -598,6 +661,8 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
     o->kind = RENDER_BOX;
     o->nflat = 0;
     unsigned used = 0; /* bit i: corner i belongs to a face set up */
+    rproj_t proj[8]; /* corner i's projection, once bit i of have is set */
+    uint8_t have = 0;
     for (int axis = 0; axis < 3; axis++) {
         int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
         /* A face of zero area (a flat box seen from its side) covers
@@ -622,26 +687,25 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
                 continue; /* parallel to every ray */
             /* The face's four corners, in order around it. */
             int base = side << axis;
-            int idx[4] = {base, base | (1 << a1), base | (1 << a1) | (1 << a2), base | (1 << a2)};
-            vec3_t q[4];
-            for (int k = 0; k < 4; k++) {
-                q[k] = corner[idx[k]];
+            uint8_t idx[4] = {(uint8_t)base, (uint8_t)(base | (1 << a1)), (uint8_t)(base | (1 << a1) | (1 << a2)),
+                              (uint8_t)(base | (1 << a2))};
+            for (int k = 0; k < 4; k++)
                 used |= 1u << idx[k];
-            }
             if (o->u.face + o->nflat >= r->box_faces + FXRT_RENDER_BOX_FACES) {
                 r->error = "more box faces than FXRT_RENDER_BOX_FACES";
                 continue;
             }
             render_face_t *bf = &o->u.face[o->nflat++];
             render_flat_t *f = &bf->f;
-            render_flat_nd(cam, ext, nc, q[0], f);
+            render_flat_nd(cam, ext, nc, corner[idx[0]], f);
             for (int k = 0; k < 4; k++)
-                render_edge(k < 3 ? &f->e[k] : &bf->e4, cam, ext, q[k], q[(k + 1) % 4]);
+                render_edge(k < 3 ? &f->e[k] : &bf->e4, cam, ext, corner[idx[k]], corner[idx[(k + 1) % 4]]);
             f->edges = 4;
             /* Each face gets its own bounds, so a pixel is mostly stepped
-             * for one face rather than all of them. */
+             * for one face rather than all of them; each corner is
+             * projected once for the faces and the box. */
             render_obj_t tmp;
-            render_points_bounds(cam, q, 4, &tmp);
+            render_idx_bounds(cam, corner, idx, 4, proj, &have, &tmp);
             render_face_bounds_from(bf, &tmp);
         }
     }
@@ -659,11 +723,15 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
     /* Bounds and depth range of the faces set up: from outside in
      * perspective the front faces, whose corners leave out the far ones. */
     vec3_t p[8];
+    uint8_t pidx[8];
     int n = 0;
     for (int i = 0; i < 8; i++)
-        if (used & (1u << i))
+        if (used & (1u << i)) {
+            pidx[n] = (uint8_t)i;
             p[n++] = corner[i];
-    render_points_bounds(cam, p, n, o);
+        }
+    render_set_zrange(cam, p, n, o);
+    render_idx_bounds(cam, corner, pidx, n, proj, &have, o);
 }
 #endif
 
