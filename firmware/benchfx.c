@@ -28,13 +28,7 @@ static vec3_t in_va[BENCH_N], in_vb[BENCH_N];
 static volatile uint32_t sink;
 
 static uint32_t rng_state = 0x2545F491u;
-static uint32_t rng(void)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 17;
-    rng_state ^= rng_state << 5;
-    return rng_state;
-}
+static uint32_t rng(void) { return board_xorshift32(&rng_state); }
 
 /* Half uniform bit patterns, half log-uniform magnitudes with random sign. */
 static fx_t rand_fx(void)

@@ -14,4 +14,15 @@ uint32_t board_ram_static(void);
 void counter_start(void);
 uint64_t counter_ticks(void);
 
+/* xorshift32 (Marsaglia 2003): the fixed-seed pseudo-random inputs of the
+ * on-board checks and benchmarks (tests/onboard_main.c, benchfx.c). */
+static inline uint32_t board_xorshift32(uint32_t *state)
+{
+    uint32_t x = *state;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    return *state = x;
+}
+
 #endif

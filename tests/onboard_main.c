@@ -131,13 +131,7 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
  * C elsewhere) against plain 64-bit C arithmetic (libgcc's products on the
  * M0), on edge values and pseudo-random ones: the number of mismatches. */
 static uint32_t onb_rng_state = 0x9E3779B9u;
-static uint32_t onb_rng(void)
-{
-    onb_rng_state ^= onb_rng_state << 13;
-    onb_rng_state ^= onb_rng_state >> 17;
-    onb_rng_state ^= onb_rng_state << 5;
-    return onb_rng_state;
-}
+static uint32_t onb_rng(void) { return board_xorshift32(&onb_rng_state); }
 static uint32_t onb_word(void)
 {
     static const uint32_t edge[] = {0, 1, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFF0000u, 0xFFFFFFFFu};
