@@ -1083,25 +1083,53 @@ static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t
     return &r->srow[o->index].cur;
 }
 
-/* From column `from`, where (q(k) >= 0) == want, towards `limit` (dir =
- * +1 or -1): the last column k before the predicate first fails, or
- * limit. It must be monotone over from..limit. Steps double from the
- * last column where it held (galloping), then a binary search between
- * that column and the first where it failed. */
-static int32_t render_gallop(const render_srow_t *s, int32_t from, int32_t dir, int32_t limit, bool want)
+/* Columns render_gallop walks by forward differences before it gallops:
+ * a run's end mostly moves a few columns from one row to the next, and a
+ * step is two 128-bit additions where a jump is render_quad_k's two
+ * 128-bit products. */
+#define RENDER_GALLOP_WALK 8
+
+/* From column `from`, where (q(k) >= 0) == want and q(from) = *qf,
+ * towards `limit` (dir = +1 or -1): the last column k before the
+ * predicate first fails, or limit. It must be monotone over from..limit.
+ * The first RENDER_GALLOP_WALK columns are stepped from q(from) (exact:
+ * the same values as render_quad_k's), then steps double from the last
+ * column where it held (galloping), then a binary search between that
+ * column and the first where it failed. */
+static int32_t render_gallop(const render_srow_t *s, int32_t from, const fx128_t *qf, int32_t dir, int32_t limit,
+                             bool want)
 {
-    int32_t good = from, bad = from, step = 1;
-    while (good != limit) {
+    int32_t good = from;
+    if (good == limit)
+        return good;
+    /* q(k + dir) - q(k): d1 + d2 k going right, -(d1 + d2 (k - 1)) going
+     * left; either changes by d2 per column. */
+    fx128_t q, st = fx128_add(s->d1, render_mul128_small(&s->d2, dir > 0 ? from : from - 1));
+    fx128_copy(&q, qf);
+    if (dir < 0)
+        st = fx128_neg(st);
+    for (int i = 0; i < RENDER_GALLOP_WALK; i++) {
+        fx128_add_to(&q, &st); /* q(good + dir) */
+        if ((q.hi >= 0) != want)
+            return good;
+        good += dir;
+        if (good == limit)
+            return good;
+        fx128_add_to(&st, &s->d2);
+    }
+    int32_t bad = good, step = 1;
+    bool failed = false;
+    while (!failed && good != limit) {
         int32_t k = (limit - good) * dir > step ? good + dir * step : limit;
         if ((render_quad_k(&s->v, &s->d1, &s->d2, k).hi >= 0) == want) {
             good = k;
             step *= 2;
         } else {
             bad = k;
-            break;
+            failed = true;
         }
     }
-    if (bad == from)
+    if (!failed)
         return good; /* held up to limit */
     while ((bad - good) * dir > 1) {
         int32_t mid = good + (bad - good) / 2;
@@ -1167,29 +1195,32 @@ static int32_t render_sphere_peak(const render_srow_t *s, int32_t kmax, int32_t 
 static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, render_iv_t g, int16_t *pk)
 {
     render_iv_t run, none = {1, 0};
+    fx128_t qlo, qhi; /* q at g's ends, which the galloping steps from */
     if (g.lo <= g.hi) {
-        bool in_lo = render_quad_k(&s->v, &s->d1, &s->d2, g.lo).hi >= 0;
-        bool in_hi = g.hi == g.lo ? in_lo : render_quad_k(&s->v, &s->d1, &s->d2, g.hi).hi >= 0;
+        qlo = render_quad_k(&s->v, &s->d1, &s->d2, g.lo);
+        qhi = g.hi == g.lo ? qlo : render_quad_k(&s->v, &s->d1, &s->d2, g.hi);
+        bool in_lo = qlo.hi >= 0, in_hi = qhi.hi >= 0;
         if (in_lo || in_hi) {
-            run.lo = in_lo ? render_gallop(s, g.lo, -1, 0, true) : render_gallop(s, g.lo, 1, g.hi, false) + 1;
-            run.hi = in_hi ? render_gallop(s, g.hi, 1, kmax, true) : render_gallop(s, g.hi, -1, g.lo, false) - 1;
+            run.lo = in_lo ? render_gallop(s, g.lo, &qlo, -1, 0, true) : render_gallop(s, g.lo, &qlo, 1, g.hi, false) + 1;
+            run.hi = in_hi ? render_gallop(s, g.hi, &qhi, 1, kmax, true) : render_gallop(s, g.hi, &qhi, -1, g.lo, false) - 1;
             return run;
         }
         /* Shrunk from both sides: from its middle when that is still in it. */
         int32_t mid = g.lo + (g.hi - g.lo) / 2;
         if (render_quad_k(&s->v, &s->d1, &s->d2, mid).hi >= 0) {
-            run.lo = render_gallop(s, g.lo, 1, mid, false) + 1;
-            run.hi = render_gallop(s, g.hi, -1, mid, false) - 1;
+            run.lo = render_gallop(s, g.lo, &qlo, 1, mid, false) + 1;
+            run.hi = render_gallop(s, g.hi, &qhi, -1, mid, false) - 1;
             return run;
         }
     }
     int32_t peak = render_sphere_peak(s, kmax, *pk);
     *pk = (int16_t)peak;
-    if (render_quad_k(&s->v, &s->d1, &s->d2, peak).hi < 0)
+    fx128_t qp = render_quad_k(&s->v, &s->d1, &s->d2, peak);
+    if (qp.hi < 0)
         return none;
     bool glo = g.lo <= g.hi && g.lo < peak, ghi = g.lo <= g.hi && g.hi > peak; /* q < 0 there (tested above) */
-    run.lo = glo ? render_gallop(s, g.lo, 1, peak, false) + 1 : render_gallop(s, peak, -1, 0, true);
-    run.hi = ghi ? render_gallop(s, g.hi, -1, peak, false) - 1 : render_gallop(s, peak, 1, kmax, true);
+    run.lo = glo ? render_gallop(s, g.lo, &qlo, 1, peak, false) + 1 : render_gallop(s, peak, &qp, -1, 0, true);
+    run.hi = ghi ? render_gallop(s, g.hi, &qhi, -1, peak, false) - 1 : render_gallop(s, peak, &qp, 1, kmax, true);
     return run;
 }
 
