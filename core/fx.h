@@ -226,13 +226,13 @@ static inline uint64_t fx_umul64_small(uint64_t a, int32_t i)
 }
 /* w[0] + w[1] i + w[2] j modulo 2^64 for small factors, |i|, |j| < 2^15:
  * a linear form of the pixel offsets (the scanline loops' rlin_at). On
- * Armv6-M with gcc, 36 instructions of inline assembly: per factor, the
+ * Armv6-M with gcc, 34 instructions of inline assembly: per factor, the
  * low word's 16-bit halves times it (each product below 2^31 in magnitude)
  * added with its sign into the 64-bit sum, and the high word times it
- * (modulo 2^32) into the sum's high word. gcc's code for the same sums
- * takes about 60, with high registers spilled. Other targets and
- * compilers take the C (fx_umul64_small). tests/onboard_main.c checks
- * the assembly against 64-bit C products on every board. */
+ * (modulo 2^32) into the sum's high word. gcc's code took about 70 (61
+ * with these sums written in C), with high registers spilled. Other
+ * targets and compilers take the C (fx_umul64_small). tests/onboard_main.c
+ * checks the assembly against 64-bit C products on every board. */
 #if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
 #define FX_LIN_TERM(lo_off, hi_off, f)                                                                   \
     "ldr %[t], [%[w], #" lo_off "]\n\t"                                                                    \
