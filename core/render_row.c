@@ -263,9 +263,11 @@ static void render_signs(int64_t a, int64_t b, int32_t kmax, render_iv_t iv[4])
 /* Of a form a + b k on k = 0..kmax, where it is > 0 and < 0 (strict), or
  * >= 0 and <= 0, into *up and *down: the two of render_signs' intervals
  * a flat piece's runs use (N and D strict, edges not). */
-static inline __attribute__((always_inline)) void render_signs_pick(const render_iv_t iv[4], bool strict,
-                                                                     render_iv_t *up, render_iv_t *down)
+static inline void render_signs_two(int64_t a, int64_t b, int32_t kmax, bool strict, render_iv_t *up,
+                                    render_iv_t *down)
 {
+    render_iv_t iv[4];
+    render_signs(a, b, kmax, iv);
     *up = iv[strict ? 0 : 1];
     *down = iv[strict ? 2 : 3];
 }
@@ -280,7 +282,7 @@ __attribute__((noinline)) static uint64_t render_umul_k(uint64_t ub, int32_t k) 
 static inline uint64_t render_umul_k(uint64_t ub, int32_t k) { return ub * (uint64_t)k; }
 #endif
 
-/* render_signs' *up and *down (render_signs_pick) without a division:
+/* render_signs_two without a division:
  * from a guess *g of the first column where the form, taken increasing
  * (negated when b < 0), is >= 0 (the row before's), by galloping and a
  * binary search on that monotone predicate, with one multiply-add per
@@ -339,23 +341,9 @@ static inline __attribute__((always_inline)) void render_signs_near(int64_t a, i
     *down = flip ? right : left;
 }
 #define RENDER_SIGNS(a, b, kmax, hint, strict, up, down)                                                \
-    do {                                                                                                \
-        if (hint)                                                                                       \
-            render_signs_near(a, b, kmax, hint, strict, up, down);                                      \
-        else {                                                                                          \
-            render_iv_t iv_[4];                                                                         \
-            render_signs(a, b, kmax, iv_);                                                              \
-            render_signs_pick(iv_, strict, up, down);                                                   \
-        }                                                                                               \
-    } while (0)
+    ((hint) ? render_signs_near(a, b, kmax, hint, strict, up, down) : render_signs_two(a, b, kmax, strict, up, down))
 #else
-#define RENDER_SIGNS(a, b, kmax, hint, strict, up, down)                                                \
-    do {                                                                                                \
-        render_iv_t iv_[4];                                                                             \
-        (void)(hint);                                                                                   \
-        render_signs(a, b, kmax, iv_);                                                                  \
-        render_signs_pick(iv_, strict, up, down);                                                       \
-    } while (0)
+#define RENDER_SIGNS(a, b, kmax, hint, strict, up, down) ((void)(hint), render_signs_two(a, b, kmax, strict, up, down))
 #endif
 /* A flat piece's guesses (render_signs_near), where it keeps them. */
 #if RENDER_COHERENT

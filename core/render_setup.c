@@ -95,10 +95,18 @@ typedef struct {
 
 /* Smallest right shift that keeps the form's value over the screen below
  * 2^target (Q16.16; 0 in float and double). */
+#if FXRT_NUMBER == FXRT_Q16
+/* Bits of the largest of |c|, |x| xm and |y| ym: the linear terms. */
+static int rk_lin_bits(const rc_t *c, const rc_t *x, const rc_t *y, rext_t ext)
+{
+    return rk_max(rk_bits(c, 1), rk_max(rk_bits(x, ext.xm), rk_bits(y, ext.ym)));
+}
+#endif
+
 static int rlin_need(const rclin_t *f, rext_t ext, int target)
 {
 #if FXRT_NUMBER == FXRT_Q16
-    return rk_shift(rk_max(rk_bits(&f->c, 1), rk_max(rk_bits(&f->x, ext.xm), rk_bits(&f->y, ext.ym))), target);
+    return rk_shift(rk_lin_bits(&f->c, &f->x, &f->y, ext), target);
 #else
     (void)f, (void)ext, (void)target;
     return 0;
@@ -108,7 +116,7 @@ static int rlin_need(const rclin_t *f, rext_t ext, int target)
 #if FXRT_NUMBER == FXRT_Q16
 RENDER_MAYBE_UNUSED static int rquad_need(const rcquad_t *f, rext_t ext, int target)
 {
-    int need = rk_max(rk_bits(&f->c, 1), rk_max(rk_bits(&f->x, ext.xm), rk_bits(&f->y, ext.ym)));
+    int need = rk_lin_bits(&f->c, &f->x, &f->y, ext);
     need = rk_max(need, rk_max(rk_bits(&f->xx, ext.xm * ext.xm), rk_bits(&f->xy, ext.xm * ext.ym)));
     return rk_shift(rk_max(need, rk_bits(&f->yy, ext.ym * ext.ym)), target);
 }
@@ -359,16 +367,20 @@ RENDER_MAYBE_UNUSED static void render_set_bounds(const cam_t *cam, const rbox_t
     o->r1 = (int16_t)(h - 1 - render_clamp(y0, 0, h - 1));
 }
 
-/* The depth range of an object inside the camera-space points p: a hit
+/* Indices 0..7: a point set taken whole. */
+RENDER_MAYBE_UNUSED static const uint8_t render_idx8[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+
+/* The depth range of an object inside the camera-space points p[idx[0..n-1]]: a hit
  * at camera-space z has t = -z / F (orthographic: -z), so the points' z
  * range bounds t. A margin covers the rounding of the corners and of the
  * forms, so that every depth the forms give lies strictly inside. */
-RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
+RENDER_MAYBE_UNUSED static void render_set_zrange(const cam_t *cam, const vec3_t *p, const uint8_t *idx, int n,
+                                                  render_obj_t *o)
 {
-    num_t zlo = p[0].z, zhi = p[0].z;
-    for (int i = 1; i < n; i++) {
-        zlo = num_min(zlo, p[i].z);
-        zhi = num_max(zhi, p[i].z);
+    num_t zlo = p[idx[0]].z, zhi = p[idx[0]].z;
+    for (int k = 1; k < n; k++) {
+        zlo = num_min(zlo, p[idx[k]].z);
+        zhi = num_max(zhi, p[idx[k]].z);
     }
     num_t f = render_ortho(cam) ? NUM_ONE : cam->focal;
 #if FXRT_NUMBER == FXRT_Q16
@@ -416,12 +428,10 @@ RENDER_MAYBE_UNUSED static void render_idx_bounds(const cam_t *cam, const vec3_t
     render_set_bounds(cam, &b, o);
 }
 
-static const uint8_t render_idx8[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-
 /* Bounds and depth range of camera-space points p[0..n-1] (n <= 8). */
 RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec3_t *p, int n, render_obj_t *o)
 {
-    render_set_zrange(cam, p, n, o);
+    render_set_zrange(cam, p, render_idx8, n, o);
     rproj_t proj[8];
     uint8_t have = 0;
     render_idx_bounds(cam, p, render_idx8, n, proj, &have, o);
@@ -507,7 +517,7 @@ static void render_sphere_cap(const cam_t *cam, vec3_t c, num_t rad, render_obj_
     vec3_t p[2];
     p[0] = vec3_make(NUM_ZERO, NUM_ZERO, num_min(num_add(c.z, rad), num_add(num_add(c.z, num_mul(rad, mhi)), slack)));
     p[1] = vec3_make(NUM_ZERO, NUM_ZERO, num_max(num_sub(c.z, rad), num_sub(num_add(c.z, num_mul(rad, mlo)), slack)));
-    render_set_zrange(cam, p, 2, o);
+    render_set_zrange(cam, p, render_idx8, 2, o);
 }
 
 __attribute__((noinline)) static void render_sphere_bounds(const cam_t *cam, vec3_t c, num_t rad, rc_t cc,
@@ -722,15 +732,12 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
     }
     /* Bounds and depth range of the faces set up: from outside in
      * perspective the front faces, whose corners leave out the far ones. */
-    vec3_t p[8];
     uint8_t pidx[8];
     int n = 0;
     for (int i = 0; i < 8; i++)
-        if (used & (1u << i)) {
-            pidx[n] = (uint8_t)i;
-            p[n++] = corner[i];
-        }
-    render_set_zrange(cam, p, n, o);
+        if (used & (1u << i))
+            pidx[n++] = (uint8_t)i;
+    render_set_zrange(cam, corner, pidx, n, o);
     render_idx_bounds(cam, corner, pidx, n, proj, &have, o);
 }
 #endif

@@ -152,6 +152,18 @@ int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color)
 #endif
 }
 
+#if WORLD_MESH
+/* Link triangles mesh_n .. n_triangles - 1 (up to WORLD_MESH_N) into the
+ * meshes of those before them. */
+static void world_mesh_link_rest(world_t *w)
+{
+    while (w->mesh_n < w->n_triangles && w->mesh_n < WORLD_MESH_N) {
+        mesh_link(w->triangles, w->mesh_n, w->mesh_up, w->mesh_bits);
+        w->mesh_n++;
+    }
+}
+#endif
+
 int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t color)
 {
 #if FXRT_MAX_TRIANGLES > 0
@@ -163,10 +175,8 @@ int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t col
     uint16_t id = world_count(w);
     geom_triangle_make(&w->triangles[w->n_triangles++], a, b, c, color, id);
 #if WORLD_MESH
-    if (w->mesh_n == (uint16_t)(w->n_triangles - 1) && w->mesh_n < WORLD_MESH_N) {
-        mesh_link(w->triangles, w->mesh_n, w->mesh_up, w->mesh_bits);
-        w->mesh_n++;
-    }
+    if (w->mesh_n == (uint16_t)(w->n_triangles - 1)) /* (else linked by world_mesh_update only) */
+        world_mesh_link_rest(w);
 #endif
     world_grow(w, vec3_make(num_min(a.x, num_min(b.x, c.x)), num_min(a.y, num_min(b.y, c.y)),
                             num_min(a.z, num_min(b.z, c.z))),
@@ -184,10 +194,7 @@ void world_mesh_update(world_t *w)
 {
 #if WORLD_MESH
     w->mesh_n = 0;
-    while (w->mesh_n < w->n_triangles && w->mesh_n < WORLD_MESH_N) {
-        mesh_link(w->triangles, w->mesh_n, w->mesh_up, w->mesh_bits);
-        w->mesh_n++;
-    }
+    world_mesh_link_rest(w);
 #else
     (void)w;
 #endif
