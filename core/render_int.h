@@ -180,6 +180,22 @@ static inline bool render_flat_vals(render_k_t n, render_k_t d, const render_k_t
     return !(pos && neg);
 }
 
+/* render_flat_vals' edge test at a pixel, each edge evaluated only while
+ * the ones before leave it open (a face's box neighbours mostly fail at
+ * the first or second). */
+static inline bool render_edges_in(const render_flat_t *f, int32_t ix, int32_t iy)
+{
+    bool pos = false, neg = false;
+    for (int i = 0; i < f->edges; i++) {
+        render_k_t e = rlin_at(render_edge_k(f, i), ix, iy);
+        pos |= e > 0;
+        neg |= e < 0;
+        if (pos && neg)
+            return false;
+    }
+    return true;
+}
+
 static inline bool render_flat_at(const render_flat_t *f, int32_t ix, int32_t iy)
 {
     render_k_t e[4];

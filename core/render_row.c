@@ -282,6 +282,40 @@ __attribute__((noinline)) static uint64_t render_umul_k(uint64_t ub, int32_t k) 
 static inline uint64_t render_umul_k(uint64_t ub, int32_t k) { return ub * (uint64_t)k; }
 #endif
 
+/* Where 32-bit division and CLZ are instructions (the M3, M4F, host), a
+ * flat piece's runs start from a quotient instead of the row before's
+ * columns: within one column of the answer wherever it is on the row, so
+ * one evaluation checks it. */
+#define RENDER_DIV_GUESS (FX_HAVE_UDIV && FX_HAVE_CLZ)
+#if RENDER_DIV_GUESS
+/* For ub > 0: about the first k in 0..kmax + 1 where ua + ub k >= 0
+ * (read as signed; kmax + 1: none on the row). Both are cut to the 16
+ * significant bits of ub, so for quotients up to kmax + 1 < 2^13 the
+ * result is floor(-ua / ub) give or take one (mostly exact). */
+static inline int32_t render_first_guess(uint64_t ua, uint64_t ub, int32_t kmax)
+{
+    if ((int64_t)ua >= 0)
+        return 0;
+    uint64_t num = -ua;
+    uint32_t nl = (uint32_t)num, nh = (uint32_t)(num >> 32), bl = (uint32_t)ub, bh = (uint32_t)(ub >> 32);
+    /* ub >> sh in [2^15, 2^16) (sh = bits(ub) - 16), in 32-bit halves */
+    int sh = bh ? 48 - __builtin_clz(bh) : 16 - __builtin_clz(bl);
+    if (sh >= 32) {
+        bl = bh >> (sh - 32);
+        nl = nh >> (sh - 32);
+    } else if (sh > 0) {
+        if (nh >> sh)
+            return kmax + 1; /* num >> sh >= 2^32 */
+        bl = bl >> sh | bh << (32 - sh);
+        nl = nl >> sh | nh << (32 - sh);
+    } else if (nh) {
+        return kmax + 1; /* num >= 2^32 > ub 2^16 */
+    }
+    uint32_t q = nl / bl;
+    return q > (uint32_t)kmax ? kmax + 1 : (int32_t)q;
+}
+#endif
+
 /* render_signs_two without a division:
  * from a guess *g of the first column where the form, taken increasing
  * (negated when b < 0), is >= 0 (the row before's), by galloping and a
@@ -302,7 +336,34 @@ static inline __attribute__((always_inline)) void render_signs_near(int64_t a, i
     bool flip = b < 0;
     uint64_t ua = (uint64_t)(flip ? -a : a), ub = (uint64_t)(flip ? -b : b);
 #define RENDER_GE(k) ((int64_t)(ua + render_umul_k(ub, k)) >= 0) /* k on the row: the value fits */
-    int32_t k = *g < 0 ? 0 : (*g > kmax + 1 ? kmax + 1 : *g), lo, hi, s = 1;
+    int32_t lo, hi, s = 1;
+    bool exact;
+#if RENDER_DIV_GUESS
+    /* The guess from a 32-bit division, checked by one evaluation: the
+     * first k >= 0 is g (F(g) >= 0, F(g - 1) < 0) or g + 1. */
+    (void)g;
+    int32_t k = render_first_guess(ua, ub, kmax);
+    if (k <= kmax) {
+        uint64_t v = ua + render_umul_k(ub, k);
+        if ((int64_t)v >= 0) {
+            if (k == 0 || (int64_t)(v - ub) < 0) {
+                hi = k;
+                exact = v == 0;
+                goto found;
+            }
+        } else if (k == kmax || (int64_t)(v + ub) >= 0) {
+            hi = k + 1;
+            exact = k < kmax && v + ub == 0;
+            goto found;
+        }
+    } else if (!RENDER_GE(kmax)) {
+        hi = kmax + 1;
+        exact = false;
+        goto found;
+    }
+#else
+    int32_t k = *g < 0 ? 0 : (*g > kmax + 1 ? kmax + 1 : *g);
+#endif
     if (k <= kmax && !RENDER_GE(k)) { /* the first >= 0 is to the right (kmax + 1: none) */
         for (lo = k;; lo = hi, s *= 2) {
             hi = lo + s;
@@ -331,9 +392,13 @@ static inline __attribute__((always_inline)) void render_signs_near(int64_t a, i
         else
             lo = mid;
     }
-    bool exact = hi <= kmax && ua + render_umul_k(ub, hi) == 0;
-#undef RENDER_GE
+    exact = hi <= kmax && ua + render_umul_k(ub, hi) == 0;
+#if RENDER_DIV_GUESS
+found:;
+#else
     *g = (int16_t)hi;
+#endif
+#undef RENDER_GE
     /* The increasing form F is >= 0 on [hi, kmax] (> 0 from hi + 1 when
      * it is 0 at hi), < 0 on [0, hi - 1] (<= 0 up to hi then). */
     render_iv_t right = {strict && exact ? hi + 1 : hi, kmax}, left = {0, !strict && exact ? hi : hi - 1};

@@ -28,6 +28,24 @@ static uint32_t render_top24(uint64_t hi, uint64_t lo, int *e)
     return (uint32_t)((lo >> s) | (hi << 1 << (63 - s)));
 }
 
+/* render_top24 of a 64-bit v, in 32-bit halves (most depths: a flat
+ * piece's N and D, every denominator). */
+static inline uint32_t render_top24_64(uint64_t v, int *e)
+{
+    uint32_t h = (uint32_t)(v >> 32), l = (uint32_t)v;
+    int s; /* bits(v) - 24 */
+    if (h) {
+        s = 40 - __builtin_clz(h); /* 9..40 */
+        *e += s;
+        return s >= 32 ? h >> (s - 32) : l >> s | h << (32 - s);
+    }
+    if (!l)
+        return 0;
+    s = 8 - __builtin_clz(l); /* -23..8 */
+    *e += s;
+    return s >= 0 ? l >> s : l << -s;
+}
+
 static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
 {
     e = e > RENDER_DEPTH_EMAX ? RENDER_DEPTH_EMAX : (e < -RENDER_DEPTH_EMAX ? -RENDER_DEPTH_EMAX : e);
@@ -39,7 +57,7 @@ static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
 render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e)
 {
     int en = 0, ed = 0;
-    uint32_t tn = render_top24(n_hi, n_lo, &en), td = render_top24(0, d, &ed);
+    uint32_t tn = n_hi ? render_top24(n_hi, n_lo, &en) : render_top24_64(n_lo, &en), td = render_top24_64(d, &ed);
     if (td == 0)
         return render_depth_pack(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
     if (tn == 0)
@@ -135,14 +153,12 @@ __attribute__((noinline)) static render_depth_t render_box_depth(const render_t 
     bool any = known != NULL;
     for (int k = 0; k < nc; k++) {
         const render_flat_t *f = &cand[k]->f;
+        bool test = any || k < nc - 1 || o->kind == RENDER_ALL;
+        if (test && !render_edges_in(f, ix, iy))
+            continue;
         render_k_t n = rlin_at(&f->n, ix, iy), d = rlin_at(&f->d, ix, iy);
-        if (any || k < nc - 1 || o->kind == RENDER_ALL) {
-            render_k_t e[4];
-            for (int i = 0; i < f->edges; i++)
-                e[i] = rlin_at(render_edge_k(f, i), ix, iy);
-            if (!render_flat_vals(n, d, e, f->edges))
-                continue;
-        }
+        if (test && !((n > 0 && d > 0) || (n < 0 && d < 0)))
+            continue;
         any = true;
         render_depth_t t = render_flat_depth(f, n, d);
         if (render_depth_less(t, best))
