@@ -278,8 +278,9 @@ typedef struct {
     /* Per column: stamp << 17 | depth-known << 16 | object (index into
      * obj) of the nearest cover so far. A column whose stamp is not the
      * current row's is uncovered, so rows need no clearing pass. Columns
-     * painted by an object alone on its row are not recorded. */
-    uint32_t owner[FXRT_RENDER_MAX_WIDTH];
+     * painted by an object alone on its row are not recorded. One entry
+     * more: render_claim_run's sentinel past its last column. */
+    uint32_t owner[FXRT_RENDER_MAX_WIDTH + 1];
     /* Per column: the owner's depth, where a second object has asked. */
     render_depth_t depth[FXRT_RENDER_MAX_WIDTH];
     uint16_t stamp;

@@ -324,6 +324,15 @@ static inline bool render_depth_less(render_depth_t a, render_depth_t b) { retur
  * which it covers. */
 render_depth_t render_depth_test(const render_t *r, uint16_t i, int32_t ix, int32_t iy);
 
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
+/* render_row.c, for tests: where a + b k (k = 0..kmax) is > 0 and < 0
+ * (strict; else >= 0 and <= 0), as a flat piece's run search finds it:
+ * the split *pr, *pl of render_split_two (guess NULL) or, in the coherent
+ * loop, of render_split_near from the guess *guess. Returns true when the
+ * form falls (> 0 on [0, *pl], < 0 on [*pr, kmax]; else the other way). */
+bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool strict, int32_t *pr, int32_t *pl);
+#endif
+
 /* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */
 bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy);

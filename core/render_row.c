@@ -230,21 +230,21 @@ static render_iv_t render_iv_and(render_iv_t a, render_iv_t b)
 
 static int32_t render_kclamp(int64_t v, int32_t kmax) { return v < -1 ? -1 : (v > kmax + 1 ? kmax + 1 : (int32_t)v); }
 
-/* Where along a row segment k = 0..kmax a linear form a + b k is > 0,
- * >= 0, < 0 and <= 0 (iv[0..3]), exactly: one floor division locates its
- * root, and the remainder says whether the root is a column. */
-static void render_signs(int64_t a, int64_t b, int32_t kmax, render_iv_t iv[4])
+/* A form a + b k on k = 0..kmax split where it changes sign: with b >= 0
+ * it is > 0 (strict; else >= 0) exactly on [*pr, kmax] and < 0 (<= 0) on
+ * [0, *pl]; the result (b < 0: it falls) swaps them: > 0 on [0, *pl],
+ * < 0 on [*pr, kmax]. (An empty interval has *pr = kmax + 1 or *pl = -1
+ * or either beyond the other.) One floor division locates the root, and
+ * the remainder says whether the root is a column. */
+static inline bool render_split_two(int64_t a, int64_t b, int32_t kmax, bool strict, int32_t *pr, int32_t *pl)
 {
-    render_iv_t all = {0, kmax}, none = {1, 0};
     if (b == 0) {
-        iv[0] = a > 0 ? all : none;
-        iv[1] = a >= 0 ? all : none;
-        iv[2] = a < 0 ? all : none;
-        iv[3] = a <= 0 ? all : none;
-        return;
+        *pr = (strict ? a > 0 : a >= 0) ? 0 : kmax + 1;
+        *pl = (strict ? a < 0 : a <= 0) ? kmax : -1;
+        return false;
     }
-    bool flip = b < 0; /* then work with -(a + b k) */
-    if (flip) {
+    bool fall = b < 0; /* then work with -(a + b k), which rises */
+    if (fall) {
         a = -a;
         b = -b;
     }
@@ -252,24 +252,10 @@ static void render_signs(int64_t a, int64_t b, int32_t kmax, render_iv_t iv[4])
     if (rem < 0)
         q--; /* floor(-a / b) */
     bool exact = rem == 0;
-    render_iv_t pos = {render_kclamp(q + 1, kmax), kmax}, nonneg = {render_kclamp(exact ? q : q + 1, kmax), kmax};
-    render_iv_t neg = {0, render_kclamp(exact ? q - 1 : q, kmax)}, nonpos = {0, render_kclamp(q, kmax)};
-    iv[0] = flip ? neg : pos;
-    iv[1] = flip ? nonpos : nonneg;
-    iv[2] = flip ? pos : neg;
-    iv[3] = flip ? nonneg : nonpos;
-}
-
-/* Of a form a + b k on k = 0..kmax, where it is > 0 and < 0 (strict), or
- * >= 0 and <= 0, into *up and *down: the two of render_signs' intervals
- * a flat piece's runs use (N and D strict, edges not). */
-static inline void render_signs_two(int64_t a, int64_t b, int32_t kmax, bool strict, render_iv_t *up,
-                                    render_iv_t *down)
-{
-    render_iv_t iv[4];
-    render_signs(a, b, kmax, iv);
-    *up = iv[strict ? 0 : 1];
-    *down = iv[strict ? 2 : 3];
+    int64_t hi = exact ? q : q + 1; /* the first k where it is >= 0 */
+    *pr = render_kclamp(strict && exact ? hi + 1 : hi, kmax);
+    *pl = render_kclamp(!strict && exact ? hi : hi - 1, kmax);
+    return fall;
 }
 
 #if RENDER_COHERENT
@@ -316,22 +302,19 @@ static inline int32_t render_first_guess(uint64_t ua, uint64_t ub, int32_t kmax)
 }
 #endif
 
-/* render_signs_two without a division:
+/* render_split_two without a division:
  * from a guess *g of the first column where the form, taken increasing
  * (negated when b < 0), is >= 0 (the row before's), by galloping and a
  * binary search on that monotone predicate, with one multiply-add per
  * evaluation; *g is updated. Any guess gives the exact answer; a near one
  * takes two evaluations. */
-static inline __attribute__((always_inline)) void render_signs_near(int64_t a, int64_t b, int32_t kmax, int16_t *g,
-                                                                     bool strict, render_iv_t *up, render_iv_t *down)
+static inline __attribute__((always_inline)) bool render_split_near(int64_t a, int64_t b, int32_t kmax, int16_t *g,
+                                                                     bool strict, int32_t *pr, int32_t *pl)
 {
     if (b == 0) {
-        bool u = strict ? a > 0 : a >= 0, d = strict ? a < 0 : a <= 0;
-        up->lo = u ? 0 : 1;
-        up->hi = u ? kmax : 0;
-        down->lo = d ? 0 : 1;
-        down->hi = d ? kmax : 0;
-        return;
+        *pr = (strict ? a > 0 : a >= 0) ? 0 : kmax + 1;
+        *pl = (strict ? a < 0 : a <= 0) ? kmax : -1;
+        return false;
     }
     bool flip = b < 0;
     uint64_t ua = (uint64_t)(flip ? -a : a), ub = (uint64_t)(flip ? -b : b);
@@ -401,16 +384,41 @@ found:;
 #undef RENDER_GE
     /* The increasing form F is >= 0 on [hi, kmax] (> 0 from hi + 1 when
      * it is 0 at hi), < 0 on [0, hi - 1] (<= 0 up to hi then). */
-    render_iv_t right = {strict && exact ? hi + 1 : hi, kmax}, left = {0, !strict && exact ? hi : hi - 1};
-    *up = flip ? left : right;
-    *down = flip ? right : left;
+    *pr = strict && exact ? hi + 1 : hi;
+    *pl = !strict && exact ? hi : hi - 1;
+    return flip;
 }
-#define RENDER_SIGNS(a, b, kmax, hint, strict, up, down)                                                \
-    ((hint) ? render_signs_near(a, b, kmax, hint, strict, up, down) : render_signs_two(a, b, kmax, strict, up, down))
+#define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl)                                                  \
+    ((hint) ? render_split_near(a, b, kmax, hint, strict, pr, pl) : render_split_two(a, b, kmax, strict, pr, pl))
 #else
-#define RENDER_SIGNS(a, b, kmax, hint, strict, up, down) ((void)(hint), render_signs_two(a, b, kmax, strict, up, down))
+#define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl) ((void)(hint), render_split_two(a, b, kmax, strict, pr, pl))
 #endif
-/* A flat piece's guesses (render_signs_near), where it keeps them. */
+/* The > 0 and < 0 (strict; else >= 0 and <= 0) intervals of a form from
+ * its split. */
+#define RENDER_SIGNS(a, b, kmax, hint, strict, up, down)                                               \
+    do {                                                                                               \
+        int32_t r_, l_;                                                                                \
+        render_iv_t right_, left_;                                                                     \
+        bool fall_ = RENDER_SPLIT(a, b, kmax, hint, strict, &r_, &l_);                                 \
+        right_.lo = r_;                                                                                \
+        right_.hi = kmax;                                                                              \
+        left_.lo = 0;                                                                                  \
+        left_.hi = l_;                                                                                 \
+        *(up) = fall_ ? left_ : right_;                                                                \
+        *(down) = fall_ ? right_ : left_;                                                              \
+    } while (0)
+bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool strict, int32_t *pr, int32_t *pl)
+{
+#if RENDER_COHERENT
+    if (guess)
+        return render_split_near(a, b, kmax, guess, strict, pr, pl);
+#else
+    (void)guess;
+#endif
+    return render_split_two(a, b, kmax, strict, pr, pl);
+}
+
+/* A flat piece's guesses (render_split_near), where it keeps them. */
 #if RENDER_COHERENT
 #define RENDER_HINT(f) ((f)->hint)
 #else
@@ -429,7 +437,7 @@ found:;
  * x0, possibly overlapping), found exactly from its forms: the same sign
  * tests as the stepping loop (N and D of one strict sign, edges all >= 0
  * or all <= 0). Returns the number of runs. hint (run mode; NULL: none):
- * per form (N, D, the edges) the guesses of render_signs_near. */
+ * per form (N, D, the edges) the guesses of render_split_near. */
 RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                         int16_t *hint, render_iv_t run[4])
 {
@@ -442,14 +450,25 @@ RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, const render_flat_t *
         front[0] = render_iv_and(np, dp);
         front[1] = render_iv_and(nn, dn);
     }
-    for (int k = 0; k < f->edges; k++) {
+    for (int k = 0; k < f->edges; k++) { /* each edge moves one end of ge and one of le */
         const render_lin_t *ek = render_edge_k(f, k);
-        render_iv_t up, down;
-        RENDER_SIGNS(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, false, &up, &down);
-        ge = render_iv_and(ge, up);
-        le = render_iv_and(le, down);
+        int32_t rk, lk;
+        if (RENDER_SPLIT(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, false, &rk, &lk)) {
+            ge.hi = lk < ge.hi ? lk : ge.hi;
+            le.lo = rk > le.lo ? rk : le.lo;
+        } else {
+            ge.lo = rk > ge.lo ? rk : ge.lo;
+            le.hi = lk < le.hi ? lk : le.hi;
+        }
     }
     int nrun = 0;
+    if (f->front) { /* the edges' two intervals as they are */
+        if (ge.lo <= ge.hi)
+            run[nrun++] = ge;
+        if (le.lo <= le.hi && f->edges)
+            run[nrun++] = le;
+        return nrun;
+    }
     for (int i = 0; i < 2; i++) {
         render_iv_t a = render_iv_and(front[i], ge), b = render_iv_and(front[i], le);
         if (a.lo <= a.hi)
@@ -665,12 +684,18 @@ static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, i
      * other owner settled, oi's own (a box's other face) kept. */
     uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT;
     int32_t fa = -1; /* free columns fa..x-1 wait to be claimed together */
+    /* Column b + 1 holds, while this runs, an entry no column has (object
+     * RENDER_VIS_NONE), so a stretch's scan needs no bound test. Only
+     * columns a..b are written below. */
+    uint32_t after = r->owner[b + 1];
+    r->owner[b + 1] = RENDER_VIS_NONE;
     for (int32_t x = a; x <= b;) {
         uint32_t cur = r->owner[x] & ~RENDER_DEPTH_KNOWN;
         uint16_t ci = (uint16_t)cur;
-        int32_t y = x;
-        while (y < b && (r->owner[y + 1] & ~RENDER_DEPTH_KNOWN) == cur) /* (stale entries come in stretches too) */
-            y++;
+        const uint32_t *p = &r->owner[x + 1];
+        while ((*p & ~RENDER_DEPTH_KNOWN) == cur) /* (stale entries come in stretches too) */
+            p++;
+        int32_t y = (int32_t)(p - r->owner) - 1;
         if (render_free(r, tag, cur)) {
             if (fa < 0)
                 fa = x;
@@ -699,6 +724,7 @@ static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, i
             }
         }
     }
+    r->owner[b + 1] = after;
     if (fa >= 0)
         render_claim_all(r, oi, fa, b, rgb);
 }
@@ -812,9 +838,10 @@ __attribute__((noinline)) static void render_sphere_row(const render_t *r, const
 /* Where b > 0 (the centre's side of the eye) on columns k = 0..kmax. */
 RENDER_MAYBE_UNUSED static render_iv_t render_sphere_front(const render_obj_t *o, int32_t ix0, int32_t iy, int32_t kmax)
 {
-    render_iv_t bi[4];
-    render_signs(rlin_at(&o->u.sphere->b, ix0, iy), 2 * o->u.sphere->b.x, kmax, bi);
-    return bi[0];
+    int32_t pr, pl;
+    bool fall = render_split_two(rlin_at(&o->u.sphere->b, ix0, iy), 2 * o->u.sphere->b.x, kmax, true, &pr, &pl);
+    render_iv_t pos = {fall ? 0 : pr, fall ? pl : kmax};
+    return pos;
 }
 #endif
 

@@ -53,15 +53,28 @@ static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
 }
 
 /* t = n / d * 2^e for n >= 0 and d > 0 (d = 0 cannot occur at a covered
- * pixel; it would give the far depth). */
-render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e)
+ * pixel; it would give the far depth), n below 2^64: inline for the flat
+ * pieces' depths. */
+static inline render_depth_t render_depth_make64(uint64_t n, uint64_t d, int e)
 {
     int en = 0, ed = 0;
-    uint32_t tn = n_hi ? render_top24(n_hi, n_lo, &en) : render_top24_64(n_lo, &en), td = render_top24_64(d, &ed);
+    uint32_t tn = render_top24_64(n, &en), td = render_top24_64(d, &ed);
     if (td == 0)
         return render_depth_pack(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
     if (tn == 0)
         return render_depth_pack(0, RENDER_DEPTH_ONE, 0);
+    return render_depth_pack(tn, td, e + en - ed);
+}
+
+/* The same for n = n_hi 2^64 + n_lo (a sphere's c). */
+render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e)
+{
+    if (!n_hi)
+        return render_depth_make64(n_lo, d, e);
+    int en = 0, ed = 0;
+    uint32_t tn = render_top24(n_hi, n_lo, &en), td = render_top24_64(d, &ed);
+    if (td == 0)
+        return render_depth_pack(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
     return render_depth_pack(tn, td, e + en - ed);
 }
 
@@ -71,7 +84,7 @@ static uint64_t render_uabs(render_k_t v) { return v < 0 ? 0 - (uint64_t)v : (ui
 
 static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, render_k_t d)
 {
-    return render_depth_make(0, render_uabs(n), render_uabs(d), f->te);
+    return render_depth_make64(render_uabs(n), render_uabs(d), f->te);
 }
 
 /* floor(sqrt(v)) to about 32 significant bits, v >= 0 (v < 2^127). By

@@ -2551,14 +2551,61 @@ static void test_render_forms_arith(void)
     CHECK_MSG(bad_mul == 0, "render_mul128_small: %ld of 200000 differ from __int128", bad_mul);
     CHECK_MSG(bad_k == 0, "render_quad_k: %ld of 200000 differ from __int128", bad_k);
 }
+
+/* A flat piece's run search (render_split_test: the division of the
+ * non-coherent loop, and the coherent loop's search from a guess, which is
+ * the 32-bit quotient where the target divides and the row before's column
+ * in the nohw build) against the form's sign at every column, evaluated in
+ * __int128: roots drawn on, between and beyond the columns (exact zeros
+ * among them), slopes from 1 to 2^50 and 0, guesses anywhere. */
+static void test_render_split(void)
+{
+    __extension__ typedef __int128 s128;
+    long bad = 0, zeros = 0, cases = 0;
+    for (int n = 0; n < 60000; n++) {
+        int32_t kmax = (int32_t)(rng() % 300);
+        int bits = (int)(rng() % 51);
+        int64_t b = (n % 50 == 0) ? 0 : (int64_t)((rng() >> (63 - bits)) | 1) * ((rng() & 1) ? 1 : -1);
+        int64_t k0 = (int64_t)(rng() % (uint64_t)(3 * kmax + 9)) - kmax - 4; /* the root's column */
+        int64_t ab = b < 0 ? -b : b;
+        int64_t delta = (rng() & 3) == 0 ? 0 : (ab ? (int64_t)(rng() % (uint64_t)ab) : (int64_t)(rng() >> 40) - (1ll << 23));
+        int64_t a = -b * k0 + ((rng() & 1) ? delta : -delta);
+        bool strict = rng() & 1;
+        for (int path = 0; path < 2; path++) {
+            int16_t guess = (int16_t)((int32_t)(rng() % (uint32_t)(kmax + 11)) - 5);
+            int32_t pr, pl;
+            bool fall = render_split_test(a, b, kmax, path ? &guess : NULL, strict, &pr, &pl);
+            cases++;
+            for (int32_t k = 0; k <= kmax; k++) {
+                s128 v = (s128)a + (s128)b * k;
+                zeros += v == 0;
+                bool pos = strict ? v > 0 : v >= 0, neg = strict ? v < 0 : v <= 0;
+                bool in_r = k >= pr, in_l = k <= pl;
+                bool got_pos = fall ? in_l : in_r, got_neg = fall ? in_r : in_l;
+                if (got_pos != pos || got_neg != neg) {
+                    if (bad < 5)
+                        printf("split: a=%lld b=%lld kmax=%d strict=%d path=%d: k=%d pos %d/%d neg %d/%d\n", (long long)a,
+                               (long long)b, (int)kmax, strict, path, (int)k, got_pos, pos, got_neg, neg);
+                    bad++;
+                    break;
+                }
+            }
+        }
+    }
+    printf("split: %ld searches, %ld exact zeros on columns\n", cases, zeros);
+    CHECK_MSG(zeros > 1000, "too few exact zeros exercised: %ld", zeros);
+    CHECK_MSG(bad == 0, "render_split: %ld of %ld searches differ from the signs in __int128", bad, cases);
+}
 #else
 static void test_render_forms_arith(void) {}
+static void test_render_split(void) {}
 #endif
 
 int main(void)
 {
     test_color_rule();
     test_render_forms_arith();
+    test_render_split();
     test_cam_basis_seed();
     test_cam_basis_fig7();
     test_cam_pixels();
