@@ -117,6 +117,13 @@ typedef struct {
     (FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS && !FXRT_NO_LONE && !FXRT_NO_BOUNDS && \
      !FXRT_NO_COHERENCE)
 
+/* Where division and CLZ are instructions (the M3, M4F and host), a flat
+ * piece's run search starts from a quotient (core/render_row.c) and keeps
+ * no guesses; on the M0 each flat piece keeps the row before's
+ * (render_flat_t's hint). */
+#define RENDER_DIV_GUESS (FX_HAVE_UDIV && FX_HAVE_CLZ)
+#define RENDER_HINTS (RENDER_COHERENT && !RENDER_DIV_GUESS)
+
 /* Spheres with row-coherence state (r->srow). */
 #define RENDER_SROWS (RENDER_COHERENT && FXRT_COHERENT_SPHERES > 0)
 
@@ -137,7 +144,7 @@ typedef struct {
     int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
     bool front;   /* Q16.16: N and D share one strict sign at every pixel of its bounds, so
                    * the edges alone decide its coverage there (render_setup_object) */
-#if RENDER_COHERENT
+#if RENDER_HINTS
     int16_t hint[6]; /* row coherence: where each form (N, D, edges) changed sign on the row before */
 #endif
 } render_flat_t;

@@ -268,11 +268,10 @@ __attribute__((noinline)) static uint64_t render_umul_k(uint64_t ub, int32_t k) 
 static inline uint64_t render_umul_k(uint64_t ub, int32_t k) { return ub * (uint64_t)k; }
 #endif
 
-/* Where 32-bit division and CLZ are instructions (the M3, M4F, host), a
+/* Where 32-bit division and CLZ are instructions (RENDER_DIV_GUESS), a
  * flat piece's runs start from a quotient instead of the row before's
  * columns: within one column of the answer wherever it is on the row, so
  * one evaluation checks it. */
-#define RENDER_DIV_GUESS (FX_HAVE_UDIV && FX_HAVE_CLZ)
 #if RENDER_DIV_GUESS
 /* For ub > 0: a guess g of the first k in 0..kmax + 1 where ua + ub k
  * >= 0 (read as signed; kmax + 1: none on the row). Both are cut to the
@@ -394,8 +393,7 @@ found:;
     *pl = !strict && exact ? hi : hi - 1;
     return flip;
 }
-#define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl)                                                  \
-    ((hint) ? render_split_near(a, b, kmax, hint, strict, pr, pl) : render_split_two(a, b, kmax, strict, pr, pl))
+#define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl) render_split_near(a, b, kmax, hint, strict, pr, pl)
 #else
 #define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl) ((void)(hint), render_split_two(a, b, kmax, strict, pr, pl))
 #endif
@@ -425,7 +423,7 @@ bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool 
 }
 
 /* A flat piece's guesses (render_split_near), where it keeps them. */
-#if RENDER_COHERENT
+#if RENDER_HINTS
 #define RENDER_HINT(f) ((f)->hint)
 #else
 #define RENDER_HINT(f) ((int16_t *)NULL)
@@ -442,8 +440,9 @@ bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool 
 /* A flat piece's hits on columns x0..x1 as at most four runs (k from
  * x0, possibly overlapping), found exactly from its forms: the same sign
  * tests as the stepping loop (N and D of one strict sign, edges all >= 0
- * or all <= 0). Returns the number of runs. hint (run mode; NULL: none):
- * per form (N, D, the edges) the guesses of render_split_near. */
+ * or all <= 0). Returns the number of runs. hint: per form (N, D, the
+ * edges) the guesses of render_split_near where the flat piece keeps them
+ * (RENDER_HINTS), else NULL. */
 RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                         int16_t *hint, render_iv_t run[4])
 {
@@ -1415,7 +1414,7 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
 #endif
             return -1; /* no row series: the per-sample pass */
         case RENDER_FLAT:
-            n = render_runs_push(out, n, cap, o->x0, iv, render_runs_flat(r, o->u.flat, o->x0, o->x1, iy, o->u.flat->hint, iv), i);
+            n = render_runs_push(out, n, cap, o->x0, iv, render_runs_flat(r, o->u.flat, o->x0, o->x1, iy, RENDER_HINT(o->u.flat), iv), i);
             break;
         case RENDER_BOX:
             for (int k = 0; k < o->nflat && n >= 0; k++) {
@@ -1423,7 +1422,7 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
                 if (row < fc->r0 || row > fc->r1 || fc->x0 > fc->x1)
                     continue;
                 n = render_runs_push(out, n, cap, fc->x0, iv,
-                                     render_runs_flat(r, &fc->f, fc->x0, fc->x1, iy, fc->f.hint, iv), i);
+                                     render_runs_flat(r, &fc->f, fc->x0, fc->x1, iy, RENDER_HINT(&fc->f), iv), i);
             }
             break;
         }

@@ -930,7 +930,7 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
     if (kind == GEOM_SPHERE && index < FXRT_COHERENT_SPHERES)
         render_srow_setup(r, i);
 #endif
-#if RENDER_COHERENT
+#if RENDER_HINTS
     if (o->kind == RENDER_FLAT || o->kind == RENDER_BOX) /* row coherence's guesses: a fixed start each frame */
         for (int k = 0; k < o->nflat; k++)
             for (int j = 0; j < 6; j++)
