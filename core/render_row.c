@@ -306,12 +306,12 @@ static inline int32_t render_first_guess(uint64_t ua, uint64_t ub, int32_t kmax)
 }
 #endif
 
-/* render_split_two without a division:
- * from a guess *g of the first column where the form, taken increasing
- * (negated when b < 0), is >= 0 (the row before's), by galloping and a
- * binary search on that monotone predicate, with one multiply-add per
- * evaluation; *g is updated. Any guess gives the exact answer; a near one
- * takes two evaluations. */
+/* render_split_two without a 64-bit division: from a guess of the first
+ * column where the form, taken increasing (negated when b < 0), is >= 0,
+ * by galloping and a binary search on that monotone predicate, with one
+ * multiply-add per evaluation. The guess is render_first_guess's quotient
+ * where RENDER_DIV_GUESS (one evaluation mostly settles it; g unused),
+ * else *g, the row before's (updated). Any guess gives the exact answer. */
 static inline __attribute__((always_inline)) bool render_split_near(int64_t a, int64_t b, int32_t kmax, int16_t *g,
                                                                      bool strict, int32_t *pr, int32_t *pl)
 {
@@ -579,7 +579,7 @@ static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb
  * CLZ instructions: the M3, M4F) 4 and 6 are 0.4 % fewer instructions
  * than 8 on the bench set; on the M0, 6 and 8 measure alike (0 to 16 did
  * before). */
-#define RENDER_CLAIM_MIN (FX_HAVE_UDIV && FX_HAVE_CLZ ? 6 : 8)
+#define RENDER_CLAIM_MIN (RENDER_DIV_GUESS ? 6 : 8)
 /* Columns of one other owner, this many or more in a row, are settled by
  * the two objects' depth ranges over stretches of them (render_claim_span),
  * which stop halving below RENDER_SPAN_LEAF columns. Measured on the bench
