@@ -230,6 +230,15 @@ static render_iv_t render_iv_and(render_iv_t a, render_iv_t b)
 
 static int32_t render_kclamp(int64_t v, int32_t kmax) { return v < -1 ? -1 : (v > kmax + 1 ? kmax + 1 : (int32_t)v); }
 
+/* render_split_two's and render_split_near's split of a constant form a
+ * (b = 0): all columns or none on each side. */
+static inline bool render_split_const(int64_t a, int32_t kmax, bool strict, int32_t *pr, int32_t *pl)
+{
+    *pr = (strict ? a > 0 : a >= 0) ? 0 : kmax + 1;
+    *pl = (strict ? a < 0 : a <= 0) ? kmax : -1;
+    return false;
+}
+
 /* A form a + b k on k = 0..kmax split where it changes sign: with b >= 0
  * it is > 0 (strict; else >= 0) exactly on [*pr, kmax] and < 0 (<= 0) on
  * [0, *pl]; the result (b < 0: it falls) swaps them: > 0 on [0, *pl],
@@ -238,11 +247,8 @@ static int32_t render_kclamp(int64_t v, int32_t kmax) { return v < -1 ? -1 : (v 
  * the remainder says whether the root is a column. */
 static inline bool render_split_two(int64_t a, int64_t b, int32_t kmax, bool strict, int32_t *pr, int32_t *pl)
 {
-    if (b == 0) {
-        *pr = (strict ? a > 0 : a >= 0) ? 0 : kmax + 1;
-        *pl = (strict ? a < 0 : a <= 0) ? kmax : -1;
-        return false;
-    }
+    if (b == 0)
+        return render_split_const(a, kmax, strict, pr, pl);
     bool fall = b < 0; /* then work with -(a + b k), which rises */
     if (fall) {
         a = -a;
@@ -315,11 +321,8 @@ static inline int32_t render_first_guess(uint64_t ua, uint64_t ub, int32_t kmax)
 static inline __attribute__((always_inline)) bool render_split_near(int64_t a, int64_t b, int32_t kmax, int16_t *g,
                                                                      bool strict, int32_t *pr, int32_t *pl)
 {
-    if (b == 0) {
-        *pr = (strict ? a > 0 : a >= 0) ? 0 : kmax + 1;
-        *pl = (strict ? a < 0 : a <= 0) ? kmax : -1;
-        return false;
-    }
+    if (b == 0)
+        return render_split_const(a, kmax, strict, pr, pl);
     bool flip = b < 0;
     uint64_t ua = (uint64_t)(flip ? -a : a), ub = (uint64_t)(flip ? -b : b);
 #define RENDER_GE(k) ((int64_t)(ua + render_umul_k(ub, k)) >= 0) /* k on the row: the value fits */

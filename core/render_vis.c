@@ -53,12 +53,12 @@ static render_depth_t render_depth_pack(uint32_t n, uint32_t d, int e)
 }
 
 /* t = n / d * 2^e for n >= 0 and d > 0 (d = 0 cannot occur at a covered
- * pixel; it would give the far depth), n below 2^64: inline for the flat
- * pieces' depths. */
-static inline render_depth_t render_depth_make64(uint64_t n, uint64_t d, int e)
+ * pixel; it would give the far depth), n's top 24 bits tn (exponent en)
+ * already taken. */
+static inline render_depth_t render_depth_over(uint32_t tn, int en, uint64_t d, int e)
 {
-    int en = 0, ed = 0;
-    uint32_t tn = render_top24_64(n, &en), td = render_top24_64(d, &ed);
+    int ed = 0;
+    uint32_t td = render_top24_64(d, &ed);
     if (td == 0)
         return render_depth_pack(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
     if (tn == 0)
@@ -66,16 +66,20 @@ static inline render_depth_t render_depth_make64(uint64_t n, uint64_t d, int e)
     return render_depth_pack(tn, td, e + en - ed);
 }
 
-/* The same for n = n_hi 2^64 + n_lo (a sphere's c). */
+/* n below 2^64: inline for the flat pieces' depths. */
+static inline render_depth_t render_depth_make64(uint64_t n, uint64_t d, int e)
+{
+    int en = 0;
+    uint32_t tn = render_top24_64(n, &en);
+    return render_depth_over(tn, en, d, e);
+}
+
+/* n = n_hi 2^64 + n_lo (a sphere's c). */
 render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e)
 {
-    if (!n_hi)
-        return render_depth_make64(n_lo, d, e);
-    int en = 0, ed = 0;
-    uint32_t tn = render_top24(n_hi, n_lo, &en), td = render_top24_64(d, &ed);
-    if (td == 0)
-        return render_depth_pack(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
-    return render_depth_pack(tn, td, e + en - ed);
+    int en = 0;
+    uint32_t tn = n_hi ? render_top24(n_hi, n_lo, &en) : render_top24_64(n_lo, &en);
+    return render_depth_over(tn, en, d, e);
 }
 
 static const render_depth_t render_depth_far = RENDER_DEPTH(RENDER_DEPTH_ONE, RENDER_DEPTH_ONE, RENDER_DEPTH_EMAX);
