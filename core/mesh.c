@@ -3,12 +3,34 @@
 
 #include "mesh.h"
 
+#if FXRT_NUMBER == FXRT_Q16
+/* Are the three components of a difference of coordinates below 2^20 in
+ * magnitude? */
+static inline bool mesh_small(int64_t x, int64_t y, int64_t z)
+{
+    const uint64_t lim = (uint64_t)1 << 20;
+    return (uint64_t)(x + (int64_t)lim) < 2 * lim && (uint64_t)(y + (int64_t)lim) < 2 * lim &&
+           (uint64_t)(z + (int64_t)lim) < 2 * lim;
+}
+#endif
+
 int mesh_side(const vec3_t *a, const vec3_t *b, const vec3_t *c, const vec3_t *p, mesh_vol_t *acc, bool flat)
 {
 #if FXRT_NUMBER == FXRT_Q16
     int64_t ux = (int64_t)b->x - a->x, uy = (int64_t)b->y - a->y, uz = (int64_t)b->z - a->z;
     int64_t vx = (int64_t)c->x - a->x, vy = (int64_t)c->y - a->y, vz = (int64_t)c->z - a->z;
     int64_t wx = (int64_t)p->x - a->x, wy = (int64_t)p->y - a->y, wz = (int64_t)p->z - a->z;
+    if (!flat && mesh_small(ux, uy, uz) && mesh_small(vx, vy, vz) && mesh_small(wx, wy, wz)) {
+        /* Differences below 2^20 (16.0): cross products below 2^41, d
+         * below 3 * 2^61, exact in 64 bits with 32-bit factors. */
+        int64_t cx = (int64_t)(int32_t)uy * (int32_t)vz - (int64_t)(int32_t)uz * (int32_t)vy;
+        int64_t cy = (int64_t)(int32_t)uz * (int32_t)vx - (int64_t)(int32_t)ux * (int32_t)vz;
+        int64_t cz = (int64_t)(int32_t)ux * (int32_t)vy - (int64_t)(int32_t)uy * (int32_t)vx;
+        int64_t d = cx * wx + cy * wy + cz * wz;
+        if (acc)
+            *acc = fx128_add(*acc, fx128_from64(d));
+        return d < 0 ? -1 : (d > 0);
+    }
     int64_t cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
     fx128_t d = fx128_add(fx128_add(fx128_mul(cx, wx), fx128_mul(cy, wy)), fx128_mul(cz, wz));
     if (acc)
@@ -122,8 +144,8 @@ void mesh_link(const geom_triangle_t *t, uint16_t j, uint8_t *up, uint8_t *bits)
                     mesh_edge(bits, j);
                     int si = mesh_side(vi[0], vi[1], vi[2], vj[next[ej1]], NULL, true);
                     int sj = mesh_side(vj[0], vj[1], vj[2], vi[next[ei1]], NULL, true);
-                    bits[i] |= si > 0 ? MESH_POS : (si < 0 ? MESH_NEG : 0);
-                    bits[j] |= sj > 0 ? MESH_POS : (sj < 0 ? MESH_NEG : 0);
+                    bits[i] |= si > 0 ? MESH_POS : (si < 0 ? MESH_NEG : MESH_FLAT);
+                    bits[j] |= sj > 0 ? MESH_POS : (sj < 0 ? MESH_NEG : MESH_FLAT);
                     up[mesh_find(up, (uint8_t)i)] = mesh_find(up, (uint8_t)j);
                 }
             }

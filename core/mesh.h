@@ -20,6 +20,7 @@
 #define MESH_POS 0x08u   /* a neighbour's far vertex on the positive side */
 #define MESH_NEG 0x10u   /* ... on the negative side */
 #define MESH_BAD 0x20u   /* degenerate, or a directed edge twice */
+#define MESH_FLAT 0x40u  /* ... on its plane (within mesh_side's flat margin) */
 
 #if FXRT_NUMBER == FXRT_Q16
 typedef fx128_t mesh_vol_t;
