@@ -123,6 +123,11 @@ typedef struct {
  * (render_flat_t's hint). */
 #define RENDER_DIV_GUESS (FX_HAVE_UDIV && FX_HAVE_CLZ)
 #define RENDER_HINTS (RENDER_COHERENT && !RENDER_DIV_GUESS)
+/* There, too, each edge form keeps where it changed sign on the row before
+ * (render_estep_t), so that the next row's column is one exact step away
+ * (core/render_row.c: render_split_edge). 32 bytes per edge: not on the
+ * M0, whose micro:bit has 16 KB of RAM. */
+#define RENDER_ESTEP (RENDER_COHERENT && RENDER_DIV_GUESS)
 
 /* Spheres with row-coherence state (r->srow). */
 #define RENDER_SROWS (RENDER_COHERENT && FXRT_COHERENT_SPHERES > 0)
@@ -136,6 +141,22 @@ typedef struct {
  * world's mesh links (mesh.h, WORLD_MESH): a bit per triangle. */
 #define RENDER_MESH WORLD_MESH
 
+#if RENDER_ESTEP
+/* An edge form G (the form, negated where it falls along the row, so G
+ * rises by step = 2 |x| a column) on row iy: col is the first column with
+ * G >= 0 (anywhere, not only on the piece's columns) and val = G(col), in
+ * [0, step). From a row to the next (iy - 2) G changes by a constant R:
+ * col + dk, val + jump with dk = floor(-R / step) and jump = R + dk step
+ * in (-step, 0], then one column more where val < 0. dk and jump hold for
+ * the frame once two rows in a row have given them. */
+typedef struct {
+    int64_t val, jump;
+    int32_t col, iy; /* iy RENDER_ESTEP_NONE: no column */
+    int32_t dk;      /* RENDER_ESTEP_NONE: no step yet */
+} render_estep_t;
+#define RENDER_ESTEP_NONE INT32_MIN
+#endif
+
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
     render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
@@ -146,6 +167,9 @@ typedef struct {
                    * the edges alone decide its coverage there (render_setup_object) */
 #if RENDER_HINTS
     int16_t hint[6]; /* row coherence: where each form (N, D, edges) changed sign on the row before */
+#endif
+#if RENDER_ESTEP
+    render_estep_t *es; /* row coherence: its edges' columns (r->estep; a plane: NULL) */
 #endif
 } render_flat_t;
 
@@ -280,6 +304,10 @@ typedef struct {
 #if FXRT_MAX_BOXES > 0
     render_face_t box_faces[FXRT_RENDER_BOX_FACES]; /* the faces a box can be hit through, box after box */
     uint16_t box_used;
+#endif
+#if RENDER_ESTEP && FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES > 0
+    /* The edges' row states: 3 per triangle, then 4 per box face. */
+    render_estep_t estep[3 * FXRT_MAX_TRIANGLES + (FXRT_MAX_BOXES > 0 ? 4 * FXRT_RENDER_BOX_FACES : 0)];
 #endif
     const char *error; /* why render_setup failed, or NULL */
     /* Per column: stamp << 17 | depth-known << 16 | object (index into

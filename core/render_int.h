@@ -42,6 +42,11 @@ static inline const render_lin_t *render_edge_k(const render_flat_t *f, int k)
     return k < 3 ? &f->e[k] : &((const render_face_t *)(const void *)f)->e4;
 }
 
+#if RENDER_ESTEP
+/* Edge k's row state (render_estep_t). */
+static inline render_estep_t *render_estep_k(render_flat_t *f, int k) { return &f->es[k]; }
+#endif
+
 /* The shading pass (FXRT_MAX_LIGHTS > 0): the visibility pass records in
  * r->vis which object it painted last in each column when render_tracks
  * says so (some object is lit, or keys are wanted); render_shade_row then
@@ -331,6 +336,13 @@ render_depth_t render_depth_test(const render_t *r, uint16_t i, int32_t ix, int3
  * loop, of render_split_near from the guess *guess. Returns true when the
  * form falls (> 0 on [0, *pl], < 0 on [*pr, kmax]; else the other way). */
 bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool strict, int32_t *pr, int32_t *pl);
+#endif
+#if RENDER_ESTEP
+/* render_row.c, for tests: render_split_edge, edge form ek's split (not
+ * strict, as render_split_test's) on columns x0..x0 + kmax of row iy (ix0:
+ * column x0's pixel offset), from and into its row state *st. */
+bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t x0, int32_t ix0, int32_t iy,
+                            int32_t kmax, int32_t *pr, int32_t *pl);
 #endif
 
 /* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),

@@ -400,6 +400,96 @@ found:;
 #else
 #define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl) ((void)(hint), render_split_two(a, b, kmax, strict, pr, pl))
 #endif
+#if RENDER_ESTEP
+/* The first k >= -RENDER_ESTEP_REACH with ua + ub k >= 0 (read as signed;
+ * ub > 0) when it is at most RENDER_ESTEP_REACH, into *pk, and the form's
+ * value there into *pv; false otherwise (the caller searches). From
+ * render_first_guess's quotient (for ua >= 0 that of ua / ub, the columns
+ * to the left), checked by one evaluation: within that reach the guess is
+ * the answer or one column off, on the side tested. */
+#define RENDER_ESTEP_REACH ((1 << 13) - 2)
+static inline bool render_edge_root(uint64_t ua, uint64_t ub, int32_t *pk, uint64_t *pv)
+{
+    int32_t k;
+    uint64_t v;
+    if ((int64_t)ua < 0) {
+        k = render_first_guess(ua, ub, RENDER_ESTEP_REACH); /* floor or ceil of -ua / ub */
+        if (k > RENDER_ESTEP_REACH)
+            return false;
+        v = ua + ub * (uint64_t)k;
+        if ((int64_t)v < 0) {
+            v += ub;
+            k++;
+        }
+    } else {
+        k = render_first_guess(0 - ua, ub, RENDER_ESTEP_REACH); /* floor or ceil of ua / ub */
+        if (k > RENDER_ESTEP_REACH)
+            return false;
+        v = ua - ub * (uint64_t)k;
+        if ((int64_t)v < 0) {
+            v += ub;
+            k--;
+        }
+        k = -k;
+    }
+    if ((int64_t)v < 0 || (int64_t)(v - ub) >= 0)
+        return false; /* (not the first k: outside the guess's reach) */
+    *pk = k;
+    *pv = v;
+    return true;
+}
+
+/* render_split_near's split of edge form ek (not strict) on columns
+ * x0..x0 + kmax of row iy, from its row state st (render_estep_t): the
+ * row before's column stepped (two additions and a compare), the same
+ * row's taken as it is, else located by render_edge_root, which also
+ * gives dk and jump when the row before had a column. */
+static inline __attribute__((always_inline)) bool render_split_edge(render_estep_t *st, const render_lin_t *ek,
+                                                                     int32_t x0, int32_t ix0, int32_t iy, int32_t kmax,
+                                                                     int32_t *pr, int32_t *pl)
+{
+    int64_t b = 2 * ek->x;
+    if (b == 0)
+        return render_split_const(rlin_at(ek, ix0, iy), kmax, false, pr, pl);
+    bool fall = b < 0;
+    uint64_t ub = (uint64_t)(fall ? -b : b), v;
+    int32_t col;
+    if (st->iy == iy + 2 && st->dk != RENDER_ESTEP_NONE) {
+        v = (uint64_t)st->val + (uint64_t)st->jump;
+        col = st->col + st->dk;
+        if ((int64_t)v < 0) {
+            v += ub;
+            col++;
+        }
+    } else if (st->iy == iy) {
+        v = (uint64_t)st->val;
+        col = st->col;
+    } else {
+        int64_t a = rlin_at(ek, ix0, iy);
+        int32_t k;
+        if (!render_edge_root((uint64_t)(fall ? -a : a), ub, &k, &v)) {
+            st->iy = RENDER_ESTEP_NONE;
+            return render_split_near(a, b, kmax, NULL, false, pr, pl);
+        }
+        col = x0 + k;
+        if (st->iy == iy + 2) { /* two rows in a row: the step */
+            int64_t diff = (int64_t)(v - (uint64_t)st->val); /* in (-step, step) */
+            st->dk = diff <= 0 ? col - st->col : col - st->col - 1;
+            st->jump = diff <= 0 ? diff : (int64_t)((uint64_t)diff - ub);
+        }
+    }
+    st->iy = iy;
+    st->col = col;
+    st->val = (int64_t)v;
+    int32_t hi = col - x0;
+    bool exact = v == 0 && hi >= 0 && hi <= kmax;
+    hi = hi < 0 ? 0 : (hi > kmax ? kmax + 1 : hi);
+    *pr = hi;
+    *pl = exact ? hi : hi - 1;
+    return fall;
+}
+#endif
+
 /* The > 0 and < 0 (strict; else >= 0 and <= 0) intervals of a form from
  * its split. */
 #define RENDER_SIGNS(a, b, kmax, hint, strict, up, down)                                               \
@@ -425,6 +515,14 @@ bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool 
     return render_split_two(a, b, kmax, strict, pr, pl);
 }
 
+#if RENDER_ESTEP
+bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t x0, int32_t ix0, int32_t iy,
+                            int32_t kmax, int32_t *pr, int32_t *pl)
+{
+    return render_split_edge(st, ek, x0, ix0, iy, kmax, pr, pl);
+}
+#endif
+
 /* A flat piece's guesses (render_split_near), where it keeps them. */
 #if RENDER_HINTS
 #define RENDER_HINT(f) ((f)->hint)
@@ -446,7 +544,7 @@ bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool 
  * or all <= 0). Returns the number of runs. hint: per form (N, D, the
  * edges) the guesses of render_split_near where the flat piece keeps them
  * (RENDER_HINTS), else NULL. */
-RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                         int16_t *hint, render_iv_t run[4])
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0;
@@ -461,7 +559,12 @@ RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, const render_flat_t *
     for (int k = 0; k < f->edges; k++) { /* each edge moves one end of ge and one of le */
         const render_lin_t *ek = render_edge_k(f, k);
         int32_t rk, lk;
+#if RENDER_ESTEP
+        (void)hint;
+        if (render_split_edge(render_estep_k(f, k), ek, x0, ix0, iy, kmax, &rk, &lk)) {
+#else
         if (RENDER_SPLIT(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, false, &rk, &lk)) {
+#endif
             ge.hi = lk < ge.hi ? lk : ge.hi;
             le.lo = rk > le.lo ? rk : le.lo;
         } else {

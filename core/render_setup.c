@@ -955,6 +955,29 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
             for (int j = 0; j < 6; j++)
                 render_face(o, k)->hint[j] = 0;
 #endif
+#if RENDER_ESTEP
+    /* The edges' row states (a triangle's 3, a box face's 4, a plane's
+     * none), without columns yet this frame. */
+    if (o->kind != RENDER_SPHERE) {
+        render_estep_t *es = NULL;
+        int ne = 0;
+#if FXRT_MAX_TRIANGLES > 0
+        if (kind == GEOM_TRIANGLE)
+            es = &r->estep[3 * index], ne = 3;
+#endif
+#if FXRT_MAX_BOXES > 0
+        if (kind == GEOM_BOX)
+            es = &r->estep[3 * FXRT_MAX_TRIANGLES + 4 * r->box_used], ne = 4;
+#endif
+        for (int k = 0; k < o->nflat; k++, es = es ? es + ne : NULL) {
+            render_face(o, k)->es = es;
+            for (int j = 0; j < ne; j++) {
+                es[j].iy = RENDER_ESTEP_NONE;
+                es[j].dk = RENDER_ESTEP_NONE;
+            }
+        }
+    }
+#endif
 #if FXRT_MAX_BOXES > 0
     if (kind == GEOM_BOX)
         r->box_used = (uint16_t)(r->box_used + o->nflat);

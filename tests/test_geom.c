@@ -2596,9 +2596,76 @@ static void test_render_split(void)
     CHECK_MSG(zeros > 1000, "too few exact zeros exercised: %ld", zeros);
     CHECK_MSG(bad == 0, "render_split: %ld of %ld searches differ from the signs in __int128", bad, cases);
 }
+
+#if RENDER_ESTEP
+/* The edges' row steps (render_split_edge_test) against the form's sign
+ * at every column, in __int128: per edge a frame's rows top to bottom,
+ * with rows skipped (the state starts again), rows asked twice, column
+ * ranges that move from row to row, crossings on, between and far beyond
+ * the columns (beyond the guess's reach too), steep and shallow edges and
+ * slopes of 0 along the row or down it. Every kind of answer (stepped,
+ * the same row's, located) must occur. Cap: 0 wrong. */
+static void test_render_edge_steps(void)
+{
+    __extension__ typedef __int128 s128;
+    long bad = 0, calls = 0, stepped = 0, zeros = 0, far = 0;
+    for (int n = 0; n < 3000; n++) {
+        int32_t w = 1 + (int32_t)(rng() % 700), h = 2 + (int32_t)(rng() % 120);
+        int bx = (int)(rng() % 46), by = (int)(rng() % 50);
+        render_lin_t e;
+        e.x = (n % 37 == 0) ? 0 : (int64_t)((rng() >> (63 - bx)) | 1) * ((rng() & 1) ? 1 : -1);
+        e.y = (n % 41 == 0) ? 0 : (int64_t)(rng() >> (63 - by)) * ((rng() & 1) ? 1 : -1);
+        /* zero on a column of a row in the frame (exact zeros where the
+         * slopes allow), then moved by a fraction of a column or more */
+        int64_t kx = (int64_t)(rng() % (uint64_t)(3 * w + 2)) - w, ky = (int64_t)(rng() % (uint64_t)h);
+        int64_t ix = 2 * kx - w + 1, iyr = h - 1 - 2 * ky;
+        int64_t ax = e.x < 0 ? -e.x : e.x;
+        int64_t shift = (rng() & 3) == 0 ? 0 : (int64_t)(rng() % (uint64_t)(2 * ax + 2)) - ax - 1;
+        e.c = -(e.x * ix + e.y * iyr) + shift;
+        render_estep_t st;
+        st.iy = RENDER_ESTEP_NONE;
+        st.dk = RENDER_ESTEP_NONE;
+        for (int32_t row = 0; row < h; row++) {
+            if (rng() % 16 == 0)
+                continue; /* a row without this edge */
+            int32_t iy = h - 1 - 2 * row;
+            for (int again = 0; again < 1 + (rng() % 8 == 0); again++) {
+                int32_t x0 = (int32_t)(rng() % (uint64_t)w), x1 = x0 + (int32_t)(rng() % (uint64_t)(w - x0));
+                int32_t kmax = x1 - x0, ix0 = 2 * x0 - w + 1, pr, pl;
+                stepped += st.iy == iy + 2 && st.dk != RENDER_ESTEP_NONE;
+                bool fall = render_split_edge_test(&st, &e, x0, ix0, iy, kmax, &pr, &pl);
+                calls++;
+                far += st.iy == RENDER_ESTEP_NONE; /* no column within the guess's reach: searched */
+                for (int32_t k = 0; k <= kmax; k++) {
+                    s128 v = (s128)e.c + (s128)e.x * (2 * (x0 + k) - w + 1) + (s128)e.y * iy;
+                    zeros += v == 0;
+                    bool in_r = k >= pr, in_l = k <= pl;
+                    if ((fall ? in_l : in_r) != (v >= 0) || (fall ? in_r : in_l) != (v <= 0)) {
+                        if (bad < 5)
+                            printf("edge steps: x=%lld y=%lld c=%lld w=%d row=%d x0=%d kmax=%d: k=%d wrong\n",
+                                   (long long)e.x, (long long)e.y, (long long)e.c, (int)w, (int)row, (int)x0,
+                                   (int)kmax, (int)k);
+                        bad++;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    printf("edge steps: %ld splits, %ld stepped from the row before, %ld searched, %ld exact zeros on columns\n",
+           calls, stepped, far, zeros);
+    CHECK_MSG(stepped > calls / 3 && stepped < calls, "edge steps: %ld of %ld splits stepped", stepped, calls);
+    CHECK_MSG(far > 100, "edge steps: only %ld splits beyond the guess's reach", far);
+    CHECK_MSG(zeros > 500, "edge steps: too few exact zeros exercised: %ld", zeros);
+    CHECK_MSG(bad == 0, "render_split_edge: %ld of %ld splits differ from the signs in __int128", bad, calls);
+}
+#else
+static void test_render_edge_steps(void) {}
+#endif
 #else
 static void test_render_forms_arith(void) {}
 static void test_render_split(void) {}
+static void test_render_edge_steps(void) {}
 #endif
 
 int main(void)
@@ -2606,6 +2673,7 @@ int main(void)
     test_color_rule();
     test_render_forms_arith();
     test_render_split();
+    test_render_edge_steps();
     test_cam_basis_seed();
     test_cam_basis_fig7();
     test_cam_pixels();
