@@ -129,6 +129,12 @@ typedef struct {
  * M0, whose micro:bit has 16 KB of RAM. */
 #define RENDER_ESTEP (RENDER_COHERENT && RENDER_DIV_GUESS)
 
+/* Where CLZ is an instruction (the M3, M4F and host), a row finds the
+ * objects it can meet from a mask per block of rows (r->row_mask) instead
+ * of asking every object: 2 bytes per object, not on the M0. */
+#define RENDER_ROW_BLOCKS 16
+#define RENDER_ROW_MASKS (FX_HAVE_CLZ && !FXRT_NO_BOUNDS)
+
 /* Spheres with row-coherence state (r->srow). */
 #define RENDER_SROWS (RENDER_COHERENT && FXRT_COHERENT_SPHERES > 0)
 
@@ -321,6 +327,12 @@ typedef struct {
     uint16_t stamp;
     uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
     uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
+#if RENDER_ROW_MASKS
+    /* Bit i % 32 of word i / 32 of block b: object i's rows r0..r1 meet
+     * rows b << row_shift .. ((b + 1) << row_shift) - 1. */
+    uint32_t row_mask[RENDER_ROW_BLOCKS][(FXRT_RENDER_MAX_OBJECTS + 31) / 32];
+    uint8_t row_shift;
+#endif
 #if FXRT_NUMBER == FXRT_Q16
     render_scache_t *scache; /* during render_row_vis: on its stack (else NULL) */
 #endif

@@ -1561,6 +1561,7 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
 /* The first object from i on whose rows include row (r->count: none); a
  * loop of its own, with few registers, as most objects of a large world
  * are off most rows. */
+#if !RENDER_ROW_MASKS
 __attribute__((noinline)) static uint16_t render_next_on_row(const render_t *r, uint16_t i, int32_t row)
 {
     if (FXRT_NO_BOUNDS)
@@ -1570,6 +1571,8 @@ __attribute__((noinline)) static uint16_t render_next_on_row(const render_t *r, 
         o++;
     return (uint16_t)(o - r->obj);
 }
+#endif
+
 
 /* The visibility pass of one row: every object's coverage, the nearest
  * owner of each column, flat colours painted (and r->vis recorded for the
@@ -1591,7 +1594,17 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
     render_begin_row(r, rgb);
     r->dirty_lo = (int16_t)w;
     r->dirty_hi = -1;
+#if RENDER_ROW_MASKS
+    /* The objects of the row's block (r->row_mask), in index order. */
+    const uint32_t *mask = r->row_mask[row >> r->row_shift];
+    for (uint16_t word = 0, nw = (uint16_t)((r->count + 31) >> 5); word < nw; word++)
+        for (uint32_t bits = mask[word]; bits; bits &= bits - 1) {
+            uint16_t i = (uint16_t)(word << 5 | (uint16_t)__builtin_ctz(bits));
+            if (row < r->obj[i].r0 || row > r->obj[i].r1)
+                continue;
+#else
     for (uint16_t i = render_next_on_row(r, 0, row); i < r->count; i = render_next_on_row(r, i + 1, row)) {
+#endif
         const render_obj_t *o = &r->obj[i];
         int32_t x0 = FXRT_NO_BOUNDS ? 0 : o->x0, x1 = FXRT_NO_BOUNDS ? w - 1 : o->x1;
         if (x0 > x1)

@@ -984,6 +984,27 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
 #endif
 }
 
+#if RENDER_ROW_MASKS
+/* The row blocks' object masks (render_t's row_mask): blocks of the
+ * fewest rows, a power of two, that RENDER_ROW_BLOCKS blocks cover the
+ * frame's rows with. */
+static void render_row_masks(render_t *r)
+{
+    uint8_t s = 0;
+    while ((int32_t)RENDER_ROW_BLOCKS << s < r->cam->height)
+        s++;
+    r->row_shift = s;
+    for (int b = 0; b < RENDER_ROW_BLOCKS; b++)
+        for (int k = 0; k < (FXRT_RENDER_MAX_OBJECTS + 31) / 32; k++)
+            r->row_mask[b][k] = 0;
+    for (uint16_t i = 0; i < r->count; i++) {
+        const render_obj_t *o = &r->obj[i];
+        for (int32_t b = o->r0 >> s; o->r0 <= o->r1 && b <= o->r1 >> s; b++)
+            r->row_mask[b][i >> 5] |= 1u << (i & 31);
+    }
+}
+#endif
+
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 {
     r->error = NULL;
@@ -1062,6 +1083,9 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 #if FXRT_MAX_BOXES > 0
     for (uint16_t i = 0; i < w->n_boxes; i++)
         render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
+#endif
+#if RENDER_ROW_MASKS
+    render_row_masks(r);
 #endif
 #if FXRT_MAX_LIGHTS > 0
     /* Objects were added kind after kind, each in index order. */
