@@ -234,6 +234,14 @@ typedef struct {
     bool lstepped;
     int32_t lk;
     fx128_t lq, lstep;
+#if RENDER_DIV_GUESS
+    /* The last sphere depth range's first column (render_sphere_span:
+     * sphere poi's depth at column px, on this row; poi is reset at each
+     * row), which a stretch halved starts from again. */
+    uint16_t poi;
+    int32_t px;
+    render_depth_t pt;
+#endif
 } render_scache_t;
 #endif
 

@@ -233,6 +233,17 @@ static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t i
 
 /* The output row (0 = top) of the pixel-offset row iy (ray rows are
  * iy = 2 y - height + 1, y from the bottom). */
+#if FXRT_NUMBER == FXRT_Q16
+/* A row's sphere cache (render_scache_t) with nothing in it. */
+static inline void render_scache_reset(render_scache_t *sc)
+{
+    sc->oi = sc->loi = RENDER_VIS_NONE;
+#if RENDER_DIV_GUESS
+    sc->poi = RENDER_VIS_NONE;
+#endif
+}
+#endif
+
 static inline int32_t render_row_of(const cam_t *cam, int32_t iy)
 {
     return cam->height - 1 - (iy + cam->height - 1) / 2;

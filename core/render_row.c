@@ -649,9 +649,16 @@ static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 static void render_claim_all(render_t *r, uint16_t oi, int32_t a, int32_t b, uint8_t *rgb)
 {
     uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi, *p = &r->owner[a], *e = &r->owner[b];
-    for (; p < e; p += 2) { /* two at a time: fewer loop instructions */
+    for (; p + 3 <= e; p += 4) { /* four at a time: fewer loop instructions */
         p[0] = tag;
         p[1] = tag;
+        p[2] = tag;
+        p[3] = tag;
+    }
+    if (p < e) { /* two or three left */
+        p[0] = tag;
+        p[1] = tag;
+        p += 2;
     }
     if (p == e)
         *p = tag;
@@ -1585,7 +1592,7 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
     int32_t iy = 2 * y - cam->height + 1;
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
     render_scache_t scache;
-    scache.oi = scache.loi = RENDER_VIS_NONE;
+    render_scache_reset(&scache);
     r->scache = &scache;
 #endif
     render_prow_t prow;

@@ -557,8 +557,20 @@ __attribute__((noinline)) static int render_sphere_span(const render_t *r, uint1
         return 0; /* (not covered at an end) */
     uint64_t bp = (uint64_t)rlin_at(&sp->b, ixp, iy), bq = (uint64_t)rlin_at(&sp->b, ixq, iy);
     if (!low) {
-        render_depth_t tp = render_sphere_near(sp, bp + render_sqrt128(&dp));
-        render_depth_t tq = render_sphere_near(sp, bq + render_sqrt128(&dq));
+        render_depth_t tp, tq = render_sphere_near(sp, bq + render_sqrt128(&dq));
+#if RENDER_DIV_GUESS
+        render_scache_t *sc = r->scache;
+        if (sc->poi == oi && sc->px == p) {
+            tp = sc->pt;
+        } else {
+            tp = render_sphere_near(sp, bp + render_sqrt128(&dp));
+            sc->poi = oi;
+            sc->px = p;
+            sc->pt = tp;
+        }
+#else
+        tp = render_sphere_near(sp, bp + render_sqrt128(&dp));
+#endif
         bool p_first = render_depth_less(tp, tq);
         *hi = render_depth_widen(p_first ? tq : tp, true);
         *lo = render_depth_widen(p_first ? tp : tq, false);

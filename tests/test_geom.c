@@ -2001,7 +2001,7 @@ static void test_render_front(void) {}
 static void test_render_span_ranges(void)
 {
     uint64_t st = 0x5b4ae11ull;
-    long ranged[4] = {0, 0, 0, 0}, cols = 0, wrong = 0;
+    long ranged[4] = {0, 0, 0, 0}, cols = 0, wrong = 0, cached_bad = 0;
     static uint8_t rgb[OW * 3];
     for (int it = 0; it < 150; it++) {
         world_init(&world, col(0, 0, 0));
@@ -2051,7 +2051,7 @@ static void test_render_span_ranges(void)
         for (int32_t row = 0; row < OH; row++) {
             render_row(&state, row, rgb);
             render_scache_t sc; /* none: the spheres' ranges come from their row state */
-            sc.oi = sc.loi = RENDER_VIS_NONE;
+            render_scache_reset(&sc);
             state.scache = &sc;
             int32_t iy = OH - 1 - 2 * row;
             for (uint16_t i = 0; i < state.count; i++) {
@@ -2071,8 +2071,19 @@ static void test_render_span_ranges(void)
                             p = a + (int32_t)orand(&st, 0, b - a + 0.999);
                             q = p + (int32_t)orand(&st, 0, b - p + 0.999);
                         }
-                        render_depth_t lo, hi;
+                        render_depth_t lo, hi, lo2, hi2;
                         int got = render_span_range(&state, i, p, q, iy, &lo, &hi, false);
+                        /* The same from an empty cache (a sphere's range
+                         * reuses the depth of the stretch before's first
+                         * column): the cache must not change a range. */
+                        render_scache_reset(&sc);
+                        int got2 = render_span_range(&state, i, p, q, iy, &lo2, &hi2, false);
+                        if (got2 != got || (got && (render_depth_less(lo, lo2) || render_depth_less(lo2, lo) ||
+                                                    render_depth_less(hi, hi2) || render_depth_less(hi2, hi)))) {
+                            cached_bad++;
+                            CHECK_SWEEP(false, "scene %d object %d row %d: range of columns %d..%d differs after the "
+                                        "cache is emptied", it, (int)i, (int)row, (int)p, (int)q);
+                        }
                         if (got == 2 && !render_span_range(&state, i, p, q, iy, &lo, &hi, true))
                             got = 0; /* a sphere: its bound below apart */
                         if (!got)
@@ -2099,6 +2110,7 @@ static void test_render_span_ranges(void)
     CHECK_MSG(ranged[0] > 2000 && ranged[1] > 2000 && ranged[2] > 2000 && ranged[3] > 500,
               "too few stretches ranged: %ld %ld %ld %ld", ranged[0], ranged[1], ranged[2], ranged[3]);
     CHECK_MSG(wrong == 0, "%ld depths outside their stretch's range", wrong);
+    CHECK_MSG(cached_bad == 0, "%ld ranges changed by the cache", cached_bad);
 }
 #else
 static void test_render_span_ranges(void) {}
