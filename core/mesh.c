@@ -4,8 +4,8 @@
 #include "mesh.h"
 
 #if FXRT_NUMBER == FXRT_Q16
-/* Are the three components of a difference of coordinates below 2^20 in
- * magnitude? */
+/* Are the three components of a difference of coordinates in
+ * [-2^20, 2^20)? */
 static inline bool mesh_small(int64_t x, int64_t y, int64_t z)
 {
     const uint64_t lim = (uint64_t)1 << 20;
@@ -21,8 +21,9 @@ int mesh_side(const vec3_t *a, const vec3_t *b, const vec3_t *c, const vec3_t *p
     int64_t vx = (int64_t)c->x - a->x, vy = (int64_t)c->y - a->y, vz = (int64_t)c->z - a->z;
     int64_t wx = (int64_t)p->x - a->x, wy = (int64_t)p->y - a->y, wz = (int64_t)p->z - a->z;
     if (!flat && mesh_small(ux, uy, uz) && mesh_small(vx, vy, vz) && mesh_small(wx, wy, wz)) {
-        /* Differences below 2^20 (16.0): cross products below 2^41, d
-         * below 3 * 2^61, exact in 64 bits with 32-bit factors. */
+        /* Differences of at most 2^20 (16.0): cross products of at most
+         * 2^41, d of at most 3 * 2^61, exact in 64 bits with 32-bit
+         * factors. */
         int64_t cx = (int64_t)(int32_t)uy * (int32_t)vz - (int64_t)(int32_t)uz * (int32_t)vy;
         int64_t cy = (int64_t)(int32_t)uz * (int32_t)vx - (int64_t)(int32_t)ux * (int32_t)vz;
         int64_t cz = (int64_t)(int32_t)ux * (int32_t)vy - (int64_t)(int32_t)uy * (int32_t)vx;

@@ -231,8 +231,6 @@ static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t i
 #endif
 }
 
-/* The output row (0 = top) of the pixel-offset row iy (ray rows are
- * iy = 2 y - height + 1, y from the bottom). */
 #if FXRT_NUMBER == FXRT_Q16
 /* A row's sphere cache (render_scache_t) with nothing in it. */
 static inline void render_scache_reset(render_scache_t *sc)
@@ -244,6 +242,8 @@ static inline void render_scache_reset(render_scache_t *sc)
 }
 #endif
 
+/* The output row (0 = top) of the pixel-offset row iy (ray rows are
+ * iy = 2 y - height + 1, y from the bottom). */
 static inline int32_t render_row_of(const cam_t *cam, int32_t iy)
 {
     return cam->height - 1 - (iy + cam->height - 1) / 2;

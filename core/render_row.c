@@ -1565,10 +1565,11 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
 }
 #endif
 
+#if !RENDER_ROW_MASKS
 /* The first object from i on whose rows include row (r->count: none); a
  * loop of its own, with few registers, as most objects of a large world
- * are off most rows. */
-#if !RENDER_ROW_MASKS
+ * are off most rows. (Where CLZ is an instruction the rows' object masks
+ * do this: render_row_vis.) */
 __attribute__((noinline)) static uint16_t render_next_on_row(const render_t *r, uint16_t i, int32_t row)
 {
     if (FXRT_NO_BOUNDS)
@@ -1579,7 +1580,6 @@ __attribute__((noinline)) static uint16_t render_next_on_row(const render_t *r, 
     return (uint16_t)(o - r->obj);
 }
 #endif
-
 
 /* The visibility pass of one row: every object's coverage, the nearest
  * owner of each column, flat colours painted (and r->vis recorded for the

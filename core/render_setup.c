@@ -755,6 +755,7 @@ __attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, 
  * use the same objects, so they still agree. Per frame: one exact side
  * test per triangle of a closed mesh (the eye's), and a second only in a
  * mesh with an edge within mesh_side's flat margin (its volume). */
+
 /* The side of component k's triangles (mesh.h) that the sum of the sides
  * of one of its vertices takes: -1, 0 or 1. For a closed mesh this is the
  * sign of its signed volume. */
@@ -999,7 +1000,9 @@ static void render_row_masks(render_t *r)
             r->row_mask[b][k] = 0;
     for (uint16_t i = 0; i < r->count; i++) {
         const render_obj_t *o = &r->obj[i];
-        for (int32_t b = o->r0 >> s; o->r0 <= o->r1 && b <= o->r1 >> s; b++)
+        if (o->r0 > o->r1)
+            continue; /* on no row (a culled back face, say) */
+        for (int32_t b = o->r0 >> s; b <= o->r1 >> s; b++)
             r->row_mask[b][i >> 5] |= 1u << (i & 31);
     }
 }
