@@ -552,15 +552,27 @@ __attribute__((noinline)) static int render_sphere_span(const render_t *r, uint1
         return 0;
     int32_t ixp = 2 * p - r->cam->width + 1, ixq = 2 * q - r->cam->width + 1;
     int32_t kp = (ixp - ix0) / 2, kq = (ixq - ix0) / 2, len = kq - kp;
-    fx128_t dp = render_quad_k(&s->v, &s->d1, &s->d2, kp), dq = render_quad_k(&s->v, &s->d1, &s->d2, kq);
-    if (dp.hi < 0 || dq.hi < 0)
+    fx128_t dq = render_quad_k(&s->v, &s->d1, &s->d2, kq), dp = {0, 0};
+    if (dq.hi < 0)
         return 0; /* (not covered at an end) */
-    uint64_t bp = (uint64_t)rlin_at(&sp->b, ixp, iy), bq = (uint64_t)rlin_at(&sp->b, ixq, iy);
+    uint64_t bq = (uint64_t)rlin_at(&sp->b, ixq, iy), bp = 0;
+#if RENDER_DIV_GUESS
+    /* The depth at p kept from the range before (which found p covered). */
+    render_scache_t *sc = r->scache;
+    bool kept = !low && sc->poi == oi && sc->px == p;
+#else
+    bool kept = false;
+#endif
+    if (!kept) {
+        dp = render_quad_k(&s->v, &s->d1, &s->d2, kp);
+        if (dp.hi < 0)
+            return 0;
+        bp = (uint64_t)rlin_at(&sp->b, ixp, iy);
+    }
     if (!low) {
         render_depth_t tp, tq = render_sphere_near(sp, bq + render_sqrt128(&dq));
 #if RENDER_DIV_GUESS
-        render_scache_t *sc = r->scache;
-        if (sc->poi == oi && sc->px == p) {
+        if (kept) {
             tp = sc->pt;
         } else {
             tp = render_sphere_near(sp, bp + render_sqrt128(&dp));
