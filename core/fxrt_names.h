@@ -48,6 +48,7 @@
 #define render_range_check FXRT_SYM(render_range_check)
 #define render_depth_test FXRT_SYM(render_depth_test)
 #define render_split_test FXRT_SYM(render_split_test)
+#define render_split_edge_test FXRT_SYM(render_split_edge_test)
 #define render_span_range FXRT_SYM(render_span_range)
 #define raycast_row FXRT_SYM(raycast_row)
 #define geom_plane_surface FXRT_SYM(geom_plane_surface)
