@@ -167,6 +167,19 @@
 #error "FXRT_LONE_MAX must be 0..65535"
 #endif
 
+/* The fast renderer visits the objects nearest first (render_setup sorts
+ * them once per frame; FXRT_NO_ORDER below): in worlds of at most
+ * FXRT_ORDER_MAX objects, larger ones keep scene order. The sort's
+ * scratch is on the stack, 6 B per object: at most 1.5 KB with the
+ * default 256 (and 6 B times the scene's objects where fewer can exist:
+ * the firmware's capacities are the scene's counts). */
+#ifndef FXRT_ORDER_MAX
+#define FXRT_ORDER_MAX 256
+#endif
+#if FXRT_ORDER_MAX < 0 || FXRT_ORDER_MAX > 4096
+#error "FXRT_ORDER_MAX must be 0..4096"
+#endif
+
 /* Spheres that keep row-coherence state (fast Q16.16 renderer, about
  * 120 B each; FXRT_NO_COHERENCE below): the spheres with index 0 ..
  * FXRT_COHERENT_SPHERES - 1; the others find their runs from scratch. A
@@ -204,6 +217,8 @@
  *                   per flat piece)
  *   FXRT_NO_HOIST   1 = (reference loop) recompute each object's forms at
  *                   every pixel instead of once per frame
+ *   FXRT_NO_ORDER   1 = visit the objects in scene order (kind after kind)
+ *                   instead of nearest first (render_setup's sort)
  * 0 (default) = the optimisation is on. */
 #ifndef FXRT_NO_BOUNDS
 #define FXRT_NO_BOUNDS 0
@@ -225,6 +240,9 @@
 #endif
 #ifndef FXRT_NO_HOIST
 #define FXRT_NO_HOIST 0
+#endif
+#ifndef FXRT_NO_ORDER
+#define FXRT_NO_ORDER 0
 #endif
 
 /* FXRT_SPHERE_SEARCH: how the fast Q16.16 renderer finds the run of a

@@ -360,13 +360,15 @@ typedef struct {
 #endif
 #if FXRT_MAX_LIGHTS > 0
     bool any_lit;
-    /* Per object (index into obj): its shading constants, once per frame. */
+    /* Per object, in world order (render_world_index: kind after kind, each
+     * in index order, whatever order obj is in): its shading constants,
+     * once per frame. */
     shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
 #if SHADOW_CULL
     /* Shadow-ray culling, per light and bounded object (core/shadow.c). */
     shadow_cull_t shadow_cull[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
 #endif
-    uint16_t kind_base[4]; /* obj index of each kind's first object (obj = base + index) */
+    uint16_t kind_base[4]; /* world order of each kind's first object */
 #endif
 #if RENDER_SROWS
     /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the

@@ -279,6 +279,15 @@ static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 /* render_setup.c: (re)compute object i's forms and bounds. */
 void render_setup_object(render_t *r, uint16_t i);
 
+#if FXRT_MAX_LIGHTS > 0
+/* Object o's place in world order (shade_k): obj is sorted nearest first
+ * each frame (render_setup), shade_k is not. */
+static inline uint16_t render_world_index(const render_t *r, const render_obj_t *o)
+{
+    return (uint16_t)(r->kind_base[o->geom] + o->index);
+}
+#endif
+
 #if FXRT_NUMBER == FXRT_Q16
 /* render_vis.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
  * and a denominator d > 0, truncated to 24 bits each. */
@@ -332,8 +341,45 @@ static inline __attribute__((always_inline)) bool render_depth_less(render_depth
         g <<= 1;
     return l < g;
 }
+/* A 32-bit key that grows with depth t = r 2^e (r = n / d in (1/2, 2)),
+ * for ordering objects: 2^16 (e + r), r to about 15 bits (n / d with d's
+ * top 16 bits). It grows with r within one e; where t grows from
+ * (e - 1, r') to (e, r), r > r' / 2 > r' - 1 (r' < 2), so e + r >
+ * e - 1 + r', and more so across larger steps of e. Depths closer than
+ * about 2^-14 of each other may come out in either order. t = 0 sorts
+ * first. */
+static inline int32_t render_depth_key(render_depth_t t)
+{
+    uint32_t n = render_depth_n(t);
+    if (n == 0)
+        return INT32_MIN;
+    uint32_t r = (n << 8) / (render_depth_d(t) >> 8); /* r 2^16, in (2^15, 2^17) */
+    return render_depth_e(t) * (1 << 16) + (int32_t)r;
+}
 #else
 static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
+/* (Float and double: the bits of a positive IEEE number grow with it; a
+ * double's top 32 of them.) */
+static inline int32_t render_depth_key(render_depth_t t)
+{
+    if (!(t.t > NUM_ZERO))
+        return INT32_MIN;
+#if FXRT_NUMBER == FXRT_FLOAT
+    union {
+        float f;
+        int32_t i;
+    } u;
+    u.f = t.t;
+    return u.i;
+#else
+    union {
+        double f;
+        int64_t i;
+    } u;
+    u.f = (double)t.t;
+    return (int32_t)(u.i >> 32);
+#endif
+}
 #endif
 
 /* render_vis.c, for tests: object i's depth at pixel offsets (ix, iy),

@@ -38,7 +38,7 @@ static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t 
     if (!o->flat) {
         ray_t ray;
         cam_ray(r->cam, X, y, &ray);
-        return shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, &r->shade_k[oi], NULL);
+        return shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, &r->shade_k[render_world_index(r, o)], NULL);
     }
 #else
     (void)X, (void)y;

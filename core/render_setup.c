@@ -985,6 +985,98 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
 #endif
 }
 
+#if !FXRT_NO_ORDER
+/* Visiting order, nearest first. The image does not depend on the order
+ * in which objects claim columns (depth, then scene id, decides), but the
+ * work does: an object that comes after a nearer one loses the columns
+ * they share, mostly a whole stretch at a time by depth ranges, without
+ * painting them; in the other order it paints them and the nearer one
+ * paints them again. So the objects are sorted once per frame, stably, by
+ * a key from their near depth bound (render_depth_key): the planes stay
+ * first (render_row_order, row_win and the flats' pool expect them at
+ * 0 .. nplanes - 1), then objects without a depth range, then the rest,
+ * nearest first. The triangles of one mesh (mesh_up: joined by shared
+ * edges) share the key of their nearest one and so stay together, in
+ * their scene order: a closed mesh's front faces never overlap, and
+ * neighbours that come one after another find their columns free on a
+ * row (render_claim_free) more often than a mesh sorted face by face.
+ * Cost: a key per object and an insertion sort of the keys (a compare
+ * per object where they come in order), then each record moved once,
+ * along the permutation's cycles. Worlds of more than FXRT_ORDER_MAX
+ * objects keep scene order (the scratch is on the stack). */
+#define RENDER_ORDER_N (FXRT_RENDER_MAX_OBJECTS < FXRT_ORDER_MAX ? FXRT_RENDER_MAX_OBJECTS : FXRT_ORDER_MAX)
+static void render_order(render_t *r)
+{
+    int32_t key[RENDER_ORDER_N > 0 ? RENDER_ORDER_N : 1];
+    uint16_t ord[RENDER_ORDER_N > 0 ? RENDER_ORDER_N : 1], n = r->count;
+    if (n > RENDER_ORDER_N)
+        return; /* scene order */
+    for (uint16_t i = 0; i < n; i++) {
+        const render_obj_t *o = &r->obj[i];
+        if (i < r->nplanes)
+            key[i] = INT32_MIN;
+        else if (o->r0 > o->r1 || o->x0 > o->x1)
+            key[i] = INT32_MAX; /* on no row: placed below */
+        else
+            key[i] = o->ranged ? render_depth_key(o->tlo) : INT32_MIN + 1;
+    }
+#if RENDER_MESH
+    const world_t *w = r->world;
+    if (w->mesh_n == w->n_triangles) {
+        /* Objects are still in kind order here: triangle j is object
+         * base + j. A mesh's key is first gathered at its root, then
+         * given to every triangle of it that is on some row. */
+        uint16_t base = 0;
+        while (base < n && r->obj[base].geom != GEOM_TRIANGLE)
+            base++;
+        for (uint16_t i = base; i < base + w->n_triangles; i++) {
+            uint16_t k = (uint16_t)(base + mesh_root(w->mesh_up, (uint8_t)(i - base)));
+            ord[i] = k; /* (ord is free until the sort) */
+            if (key[i] != INT32_MAX && key[i] < key[k])
+                key[k] = key[i];
+        }
+        for (uint16_t i = base; i < base + w->n_triangles; i++)
+            if (key[i] != INT32_MAX)
+                key[i] = key[ord[i]];
+    }
+#endif
+    /* Objects on no row are skipped wherever they are: each keeps its
+     * place after the objects before it (the largest key so far: no
+     * move). Then a stable insertion
+     * sort, which costs a compare per object where the keys are already
+     * in order. */
+    bool moved = false;
+    for (uint16_t i = 0; i < n; i++) {
+        int32_t k = key[i] == INT32_MAX && i > 0 ? key[i - 1] : key[i];
+        uint16_t j = i;
+        for (; j > 0 && key[j - 1] > k; j--) {
+            key[j] = key[j - 1];
+            ord[j] = ord[j - 1];
+        }
+        moved |= j != i;
+        key[j] = k;
+        ord[j] = i;
+    }
+    if (!moved)
+        return;
+    /* obj[p] becomes the old obj[ord[p]]; ord[p] = p marks a place done. */
+    for (uint16_t p = 0; p < n; p++) {
+        if (ord[p] == p)
+            continue;
+        render_obj_t t = r->obj[p];
+        uint16_t q = p;
+        while (ord[q] != p) {
+            uint16_t nx = ord[q];
+            r->obj[q] = r->obj[nx];
+            ord[q] = q;
+            q = nx;
+        }
+        r->obj[q] = t;
+        ord[q] = q;
+    }
+}
+#endif
+
 #if RENDER_ROW_MASKS
 /* The row blocks' object masks (render_t's row_mask): blocks of the
  * fewest rows, a power of two, that RENDER_ROW_BLOCKS blocks cover the
@@ -1087,11 +1179,14 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     for (uint16_t i = 0; i < w->n_boxes; i++)
         render_add(r, GEOM_BOX, i, &w->boxes[i].obj);
 #endif
+#if !FXRT_NO_ORDER
+    render_order(r);
+#endif
 #if RENDER_ROW_MASKS
     render_row_masks(r);
 #endif
 #if FXRT_MAX_LIGHTS > 0
-    /* Objects were added kind after kind, each in index order. */
+    /* World order: kind after kind, each in index order (shade_k). */
     uint16_t base = 0;
     for (int k = 0; k < 4; k++) {
         r->kind_base[k] = base;
@@ -1105,9 +1200,9 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     for (uint16_t i = 0; r->any_lit && i < r->count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->obj[i].geom, r->obj[i].index);
         if (c->mat.kind != MATERIAL_FLAT) {
-            shade_consts(w, c, &r->shade_k[i]);
+            shade_consts(w, c, &r->shade_k[render_world_index(r, &r->obj[i])]);
 #if SHADOW_CULL
-            r->shade_k[i].cull = r->shadow_cull;
+            r->shade_k[render_world_index(r, &r->obj[i])].cull = r->shadow_cull;
 #endif
         }
     }

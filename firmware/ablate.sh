@@ -14,6 +14,8 @@
 #   fast, no row coherence  a lone object's runs found from scratch on each
 #                           row (no sphere forms stepped down the rows, no
 #                           search from the row before's runs)
+#   fast, scene order       objects visited in scene order (kind after
+#                           kind), not sorted nearest first per frame
 #   fast                    the default build
 # Scenes: the seed scenes and, when present, scenes/bench/ (ABLATE_SCENES
 # overrides the list).
@@ -32,6 +34,7 @@ variants=(
     "fast, no spans|ablnospans|-DFXRT_NO_SPANS=1"
     "fast, no depth ranges|ablnozrange|-DFXRT_NO_ZRANGE=1"
     "fast, no row coherence|ablnocoh|-DFXRT_NO_COHERENCE=1"
+    "fast, scene order|ablnoorder|-DFXRT_NO_ORDER=1"
     "fast||"
 )
 if [ -n "${ABLATE_SCENES:-}" ]; then

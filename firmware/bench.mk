@@ -77,6 +77,7 @@ ram-table: deps $(BUILD)/fxrt-scenec
 # Per-function instruction profile of one firmware run in QEMU (the target's
 # own code, soft-float and libgcc helpers by name), for the missed targets:
 #   make profile SCENE=scenes/lit/room.scene BOARD=mps2-an385 NUMBER=float [PROFILE_SIZE=80x60] [FW_EXTRA=...]
+# (PROFILE_TOP=N in the environment lists N functions instead of 15)
 profile: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) firmware/profile.sh '$(SCENE)' $(BOARD) $(NUMBER) $(or $(PROFILE_SIZE),80x60) '$(FW_EXTRA)'
 .PHONY: profile

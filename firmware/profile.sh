@@ -56,6 +56,6 @@ END {
     for (fnm in by) printf "%d %s\n", by[fnm], fnm
     printf "%d TOTAL\n", tot }' "$tmp/q.log" >"$tmp/by"
 tot=$(awk '$2 == "TOTAL" { print $1 }' "$tmp/by")
-grep -v ' TOTAL$' "$tmp/by" | sort -k1,1nr | head -n 15 |
+grep -v ' TOTAL$' "$tmp/by" | sort -k1,1nr | head -n ${PROFILE_TOP:-15} |
     awk -v px="$px" -v tot="$tot" '{ printf "| `%s` | %d | %.1f | %.1f %% |\n", $2, $1, $1 / px, 100 * $1 / tot }'
 awk -v px="$px" -v tot="$tot" 'BEGIN { printf "| all functions | %d | %.1f | 100 %% |\n", tot, tot / px }'

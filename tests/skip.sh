@@ -114,8 +114,8 @@ done
 # render_scan_flat's parameters unused and broke the ablation run).
 abl_dir=$out/ablation-caps
 mkdir -p "$abl_dir"
-abl_switches="FXRT_NO_BOUNDS FXRT_NO_STEP FXRT_NO_LONE FXRT_NO_SPANS FXRT_NO_ZRANGE FXRT_NO_COHERENCE FXRT_NO_HOIST"
-for cpu in cortex-m0 cortex-m3; do # the 14 builds side by side (each in a directory of its own)
+abl_switches="FXRT_NO_BOUNDS FXRT_NO_STEP FXRT_NO_LONE FXRT_NO_SPANS FXRT_NO_ZRANGE FXRT_NO_COHERENCE FXRT_NO_HOIST FXRT_NO_ORDER"
+for cpu in cortex-m0 cortex-m3; do # the 16 builds side by side (each in a directory of its own)
     for sw in $abl_switches; do
         mkdir -p "$abl_dir/$cpu-$sw"
         (cd "$abl_dir/$cpu-$sw" && arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes \

@@ -2311,6 +2311,216 @@ static vec3_t spread_eye(uint64_t *st, bool inside)
     return inside && world.n_spheres > 0 ? world.spheres[0].center : eye;
 }
 
+#if !FXRT_NO_ORDER
+/* A depth as a double (n / d * 2^e in Q16.16). */
+static double depth_value(render_depth_t t)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return render_depth_n(t) == 0 ? 0.0 : ldexp((double)render_depth_n(t) / render_depth_d(t), render_depth_e(t));
+#else
+    return (double)t.t;
+#endif
+}
+
+#define ORDER_TOL (1.0 / 4096)
+
+static bool on_some_row(const render_obj_t *o) { return o->r0 <= o->r1 && o->x0 <= o->x1; }
+
+/* The visiting order (render_setup sorts the objects nearest first each
+ * frame; the image does not depend on it, make bench measures what it
+ * saves). Random worlds of planes, spheres, boxes, loose triangles and a
+ * closed octahedron, seen from outside and from inside a sphere, both
+ * camera kinds. The objects must be the world's, each once; the planes
+ * first in scene order; among the objects on some row, those without a
+ * depth range before the ranged ones; ranged objects outside meshes in
+ * order of their near bound (to ORDER_TOL: the sort key keeps n / d to
+ * about 2^-14 in Q16.16, t's float bits, a double's top 32); a mesh's triangles in scene order, placed by the
+ * nearest of them. A world of more objects than FXRT_ORDER_MAX keeps
+ * scene order (kind after kind). Cap: 0 of each. */
+static void test_render_order(void)
+{
+    static const double oct_v[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const uint8_t oct_f[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                        {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    uint64_t st = 0x0bde5a11ull;
+    long pairs = 0, bad_pairs = 0, mesh_seen = 0, bad_mesh = 0, bad_set = 0, moved = 0, unranged_seen = 0;
+    for (int it = 0; it < 300; it++) {
+        bool ortho = random_world_begin(it);
+        uint16_t id = 0;
+        int np = (int)(check_rng_next(&st) % 3), ns = (int)(check_rng_next(&st) % 8);
+        int nb = (int)(check_rng_next(&st) % 4), nt = (int)(check_rng_next(&st) % 5);
+        bool mesh = it % 2 == 0;
+        for (int k = 0; k < np; k++)
+            if (geom_plane_make(&world.planes[world.n_planes], V3(0, orand(&st, -3, 0), orand(&st, -40, -10)),
+                                V3(orand(&st, -0.3, 0.3), orand(&st, 0.2, 1), orand(&st, 0.2, 1)),
+                                col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_planes++, id++;
+        vec3_t eye = V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, 0, 2));
+        for (int k = 0; k < ns; k++) {
+            bool around = k == 0 && it % 5 == 4; /* the eye inside: no depth range */
+            vec3_t c = around ? eye : V3(orand(&st, -4, 4), orand(&st, -3, 3), orand(&st, -20, -2));
+            if (geom_sphere_make(&world.spheres[world.n_spheres], c, N(around ? 1.5 : orand(&st, 0.1, 2)),
+                                 col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_spheres++, id++;
+        }
+        for (int k = 0; k < nt; k++) {
+            double x = orand(&st, -4, 4), y = orand(&st, -3, 3), z = orand(&st, -20, -2);
+            if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x, y, z),
+                                   V3(x + orand(&st, 0.3, 2), y + orand(&st, -1, 1), z + orand(&st, -1, 1)),
+                                   V3(x + orand(&st, -1, 1), y + orand(&st, 0.3, 2), z + orand(&st, -1, 1)),
+                                   col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_triangles++, id++;
+        }
+        int mesh_first = world.n_triangles;
+        if (mesh) {
+            double cx = orand(&st, -3, 3), cy = orand(&st, -2, 2), cz = orand(&st, -15, -4), sc = orand(&st, 0.5, 2);
+            double ang = orand(&st, 0, 2 * PI), tilt = orand(&st, -1, 1);
+            vec3_t pv[6]; /* turned about y, then tilted about x: faces at different depths */
+            for (int k = 0; k < 6; k++) {
+                double x = oct_v[k][0], y = oct_v[k][1], z = oct_v[k][2];
+                double x1 = x * cos(ang) - z * sin(ang), z1 = x * sin(ang) + z * cos(ang);
+                double y1 = y * cos(tilt) - z1 * sin(tilt), z2 = y * sin(tilt) + z1 * cos(tilt);
+                pv[k] = V3(cx + sc * x1, cy + sc * y1, cz + sc * z2);
+            }
+            for (int k = 0; k < 8; k++)
+                if (geom_triangle_make(&world.triangles[world.n_triangles], pv[oct_f[k][0]], pv[oct_f[k][1]],
+                                       pv[oct_f[k][2]], col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                    world.n_triangles++, id++;
+        }
+        for (int k = 0; k < nb; k++) {
+            double bx = orand(&st, -4, 4), by = orand(&st, -3, 3), bz = orand(&st, -20, -2);
+            if (geom_box_make(&world.boxes[world.n_boxes], V3(bx, by, bz),
+                              V3(bx + orand(&st, 0.1, 2), by + orand(&st, 0.1, 2), bz + orand(&st, 0.1, 2)),
+                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
+                world.n_boxes++, id++;
+        }
+#if RENDER_MESH
+        world_mesh_update(&world);
+#endif
+        cam_t c;
+        if (cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, eye, V3(orand(&st, -0.2, 0.2), orand(&st, -0.2, 0.2), -1),
+                      V3(0, 1, 0), N(orand(&st, 30, 70)), N(orand(&st, 4, 12)), OW, OH) != CAM_OK)
+            continue;
+        static render_t state;
+        CHECK(render_setup(&state, &world, &c));
+        /* The world's objects, each once. */
+        int total = world.n_planes + world.n_spheres + world.n_triangles + world.n_boxes, seen[4][128];
+        memset(seen, 0, sizeof seen);
+        for (uint16_t i = 0; i < state.count; i++)
+            seen[state.obj[i].geom][state.obj[i].index]++;
+        int once = 0;
+        for (int k = 0; k < 4; k++)
+            for (int m = 0; m < 128; m++)
+                once += seen[k][m] == 1;
+        bad_set += state.count != total || once != total;
+        CHECK_SWEEP(state.count == total && once == total, "scene %d: %d objects, %d of the world's %d once", it,
+                    (int)state.count, once, total);
+        for (uint16_t i = 0; i < state.count; i++) {
+            const render_obj_t *a = &state.obj[i];
+            bool kind_order = i == 0 || a->geom > state.obj[i - 1].geom ||
+                              (a->geom == state.obj[i - 1].geom && a->index > state.obj[i - 1].index);
+            moved += !kind_order;
+            if (i < world.n_planes) {
+                bad_set += a->geom != GEOM_PLANE || a->index != i;
+                CHECK_SWEEP(a->geom == GEOM_PLANE && a->index == i, "scene %d: object %d is not plane %d", it, (int)i,
+                            (int)i);
+                continue;
+            }
+            if (!on_some_row(a))
+                continue;
+            bool am = a->geom == GEOM_TRIANGLE && a->index >= mesh_first;
+            unranged_seen += !a->ranged;
+            for (uint16_t j = (uint16_t)(i + 1); j < state.count; j++) {
+                const render_obj_t *b = &state.obj[j];
+                bool bm = b->geom == GEOM_TRIANGLE && b->index >= mesh_first;
+                if (!on_some_row(b))
+                    continue;
+                pairs++;
+                bool ok = true;
+                if (a->ranged && !b->ranged)
+                    ok = false; /* an object without a range after a ranged one */
+                else if (am && bm)
+                    ok = a->index < b->index, mesh_seen++; /* a mesh in scene order */
+                else if (a->ranged && b->ranged && !am && !bm)
+                    ok = depth_value(b->tlo) >= depth_value(a->tlo) * (1 - ORDER_TOL);
+                bad_pairs += !ok;
+                CHECK_SWEEP(ok, "scene %d: object %d (kind %d #%d, near %.6g) before object %d (kind %d #%d, near %.6g)",
+                            it, (int)i, a->geom, a->index, depth_value(a->tlo), (int)j, b->geom, b->index,
+                            depth_value(b->tlo));
+            }
+        }
+        /* The mesh by its nearest visible triangle. */
+        double mnear = -1;
+        int mfirst = -1, mlast = -1;
+        for (uint16_t i = 0; i < state.count; i++) {
+            const render_obj_t *a = &state.obj[i];
+            if (a->geom == GEOM_TRIANGLE && a->index >= mesh_first && on_some_row(a) && a->ranged) {
+                double t = depth_value(a->tlo);
+                mnear = mnear < 0 || t < mnear ? t : mnear;
+                mlast = i;
+                mfirst = mfirst < 0 ? i : mfirst;
+            }
+        }
+        for (uint16_t i = 0; i < state.count && mnear >= 0; i++) {
+            const render_obj_t *a = &state.obj[i];
+            if (i < world.n_planes || !on_some_row(a) || !a->ranged || (a->geom == GEOM_TRIANGLE && a->index >= mesh_first))
+                continue;
+            double t = depth_value(a->tlo);
+            bool ok = (i < mfirst && t <= mnear * (1 + ORDER_TOL)) || (i > mlast && t >= mnear * (1 - ORDER_TOL)) ||
+                      (i > mfirst && i < mlast && fabs(t - mnear) <= mnear * ORDER_TOL);
+            bad_mesh += !ok;
+            CHECK_SWEEP(ok, "scene %d: object %d (near %.6g) misplaced against the mesh at %d..%d (near %.6g)", it,
+                        (int)i, t, mfirst, mlast, mnear);
+        }
+    }
+    printf("order: %ld pairs compared (%ld in a mesh), %ld objects out of scene order, %ld without a range; "
+           "%ld wrong\n", pairs, mesh_seen, moved, unranged_seen, bad_set + bad_pairs + bad_mesh);
+    CHECK_MSG(pairs > 5000 && mesh_seen > 500 && moved > 100 && unranged_seen > 10,
+              "the sweep compared %ld pairs, %ld in a mesh, %ld objects out of scene order, %ld without a range", pairs,
+              mesh_seen, moved, unranged_seen);
+    CHECK_MSG(bad_set == 0 && bad_pairs == 0 && bad_mesh == 0,
+              "%ld sets, %ld pairs and %ld mesh placements wrong (cap 0)", bad_set, bad_pairs, bad_mesh);
+#if FXRT_ORDER_MAX < FXRT_RENDER_MAX_OBJECTS && FXRT_MAX_PLANES >= 1 && FXRT_MAX_SPHERES >= 64 && \
+    FXRT_MAX_BOXES >= 64 && FXRT_MAX_TRIANGLES >= 128 && FXRT_ORDER_MAX < 257
+    /* More objects than FXRT_ORDER_MAX: scene order, kind after kind. */
+    world_init(&world, col(0, 0, 0));
+    uint16_t id = 0;
+    int want = FXRT_ORDER_MAX + 1;
+    if (geom_plane_make(&world.planes[0], V3(0, -3, 0), V3(0, 1, 0), col(0.5, 0.5, 0.5), id))
+        world.n_planes = 1, id++;
+    for (int k = 0; id < want && k < 64; k++)
+        if (geom_sphere_make(&world.spheres[world.n_spheres], V3(orand(&st, -4, 4), orand(&st, -3, 3), orand(&st, -20, -2)),
+                             N(orand(&st, 0.1, 1)), col(0.5, 0.5, 0.5), id))
+            world.n_spheres++, id++;
+    for (int k = 0; id < want && k < 128; k++) {
+        double x = orand(&st, -4, 4), y = orand(&st, -3, 3), z = orand(&st, -20, -2);
+        if (geom_triangle_make(&world.triangles[world.n_triangles], V3(x, y, z), V3(x + 1, y, z), V3(x, y + 1, z + 0.5),
+                               col(0.5, 0.5, 0.5), id))
+            world.n_triangles++, id++;
+    }
+    for (int k = 0; id < want && k < 64; k++) {
+        double bx = orand(&st, -4, 4), by = orand(&st, -3, 3), bz = orand(&st, -20, -2);
+        if (geom_box_make(&world.boxes[world.n_boxes], V3(bx, by, bz), V3(bx + 0.5, by + 0.5, bz + 0.5),
+                          col(0.5, 0.5, 0.5), id))
+            world.n_boxes++, id++;
+    }
+    cam_t c;
+    static render_t big;
+    CHECK(cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(0, 0, -1), V3(0, 1, 0), N(50), N(4), OW, OH) == CAM_OK);
+    CHECK_MSG(id == want, "%d of %d objects made", (int)id, want);
+    CHECK_MSG(render_setup(&big, &world, &c), "set-up: %s", big.error ? big.error : "");
+    int out_of_order = 0;
+    for (uint16_t i = 1; i < big.count; i++)
+        out_of_order += !(big.obj[i].geom > big.obj[i - 1].geom ||
+                          (big.obj[i].geom == big.obj[i - 1].geom && big.obj[i].index > big.obj[i - 1].index));
+    CHECK_MSG(big.count == want && out_of_order == 0, "%d objects (FXRT_ORDER_MAX %d): %d out of scene order",
+              (int)big.count, FXRT_ORDER_MAX, out_of_order);
+#endif
+}
+#else
+static void test_render_order(void) {}
+#endif
+
 /* Row coherence (RENDER_COHERENT: a lone sphere's forms stepped down the
  * rows and its run searched from the row before's; a flat piece's sign
  * changes searched from the row before's): random worlds (spread_world),
@@ -2712,6 +2922,7 @@ int main(void)
     test_render_front();
     test_render_span_ranges();
     test_render_meshes();
+    test_render_order();
     test_render_eye_on_box();
     test_render_coherent();
     test_render_runs();
