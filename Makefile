@@ -118,6 +118,7 @@ TEST_FULL_PREREQ :=
 -include tests/qemu_lit.mk
 -include tests/growth.mk
 -include tests/qemu_trace.mk
+-include tests/order.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/qemu.sh \
           $(SUITES_EXTRA)

@@ -54,7 +54,10 @@
  * (24 x 24-bit products). This depth, a deterministic function of the
  * object's integer forms at the pixel, is the depth rule of both loops.
  * Each column keeps its owner and, once a second object has asked, the
- * owner's depth, so a further object costs one compare. Most overlaps need
+ * owner's depth, so a further object costs one compare. Objects claim a
+ * row's columns nearest first (render_setup sorts them by their near
+ * depth bound each frame; planes first, a mesh's triangles together), so
+ * a farther one mostly loses shared columns without painting them. Most overlaps need
  * no depth at all: every bounded object has a depth range from its
  * camera-space z (t = -z / F, orthographic -z) with a margin, and per row
  * each object's range is compared with each plane's range over the
@@ -360,15 +363,12 @@ typedef struct {
 #endif
 #if FXRT_MAX_LIGHTS > 0
     bool any_lit;
-    /* Per object, in world order (render_world_index: kind after kind, each
-     * in index order, whatever order obj is in): its shading constants,
-     * once per frame. */
+    /* Per object (index into obj): its shading constants, once per frame. */
     shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
 #if SHADOW_CULL
     /* Shadow-ray culling, per light and bounded object (core/shadow.c). */
     shadow_cull_t shadow_cull[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
 #endif
-    uint16_t kind_base[4]; /* world order of each kind's first object */
 #endif
 #if RENDER_SROWS
     /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the

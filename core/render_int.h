@@ -279,12 +279,16 @@ static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 /* render_setup.c: (re)compute object i's forms and bounds. */
 void render_setup_object(render_t *r, uint16_t i);
 
-#if FXRT_MAX_LIGHTS > 0
-/* Object o's place in world order (shade_k): obj is sorted nearest first
- * each frame (render_setup), shade_k is not. */
-static inline uint16_t render_world_index(const render_t *r, const render_obj_t *o)
+#if FXRT_MAX_LIGHTS > 0 && FXRT_MAX_SAMPLES > 1
+/* The obj index of the world's object (kind, index): a search, as obj is
+ * sorted nearest first each frame (render_setup); for the adaptive
+ * sampler's one ray per pixel, whose world_hit costs far more. */
+static inline uint16_t render_obj_of(const render_t *r, geom_kind_t kind, uint16_t index)
 {
-    return (uint16_t)(r->kind_base[o->geom] + o->index);
+    uint16_t i = 0;
+    while (i + 1 < r->count && (r->obj[i].geom != kind || r->obj[i].index != index))
+        i++;
+    return i;
 }
 #endif
 

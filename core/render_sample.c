@@ -38,7 +38,7 @@ static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t 
     if (!o->flat) {
         ray_t ray;
         cam_ray(r->cam, X, y, &ray);
-        return shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, &r->shade_k[render_world_index(r, o)], NULL);
+        return shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, &r->shade_k[oi], NULL);
     }
 #else
     (void)X, (void)y;
@@ -152,7 +152,7 @@ static void render_adaptive_row(render_t *r, int32_t row)
         if (world_hit(w, &ray, &hit)) {
             uint8_t mask = 0;
 #if FXRT_MAX_LIGHTS > 0
-            uint16_t oi = (uint16_t)(r->kind_base[hit.kind] + hit.index);
+            uint16_t oi = render_obj_of(r, hit.kind, hit.index);
             bool lit = hit.obj->mat.kind != MATERIAL_FLAT;
             c = color_to_rgb8(shade_object_k(w, hit.kind, hit.index, &ray, lit ? &r->shade_k[oi] : NULL, &mask));
 #else

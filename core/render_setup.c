@@ -1040,11 +1040,10 @@ static void render_order(render_t *r)
                 key[i] = key[ord[i]];
     }
 #endif
-    /* Objects on no row are skipped wherever they are: each keeps its
-     * place after the objects before it (the largest key so far: no
-     * move). Then a stable insertion
-     * sort, which costs a compare per object where the keys are already
-     * in order. */
+    /* A stable insertion sort: a compare per object where the keys are
+     * already in order. Objects on no row are skipped wherever they are,
+     * so each keeps its place after the objects before it (it takes the
+     * largest key so far: no move). */
     bool moved = false;
     for (uint16_t i = 0; i < n; i++) {
         int32_t k = key[i] == INT32_MAX && i > 0 ? key[i - 1] : key[i];
@@ -1186,13 +1185,6 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     render_row_masks(r);
 #endif
 #if FXRT_MAX_LIGHTS > 0
-    /* World order: kind after kind, each in index order (shade_k). */
-    uint16_t base = 0;
-    for (int k = 0; k < 4; k++) {
-        r->kind_base[k] = base;
-        for (uint16_t i = 0; i < r->count; i++)
-            base = (uint16_t)(base + (r->obj[i].geom == k));
-    }
 #if SHADOW_CULL
     if (r->any_lit)
         shadow_cull_setup(w, r->shadow_cull);
@@ -1200,9 +1192,9 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
     for (uint16_t i = 0; r->any_lit && i < r->count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->obj[i].geom, r->obj[i].index);
         if (c->mat.kind != MATERIAL_FLAT) {
-            shade_consts(w, c, &r->shade_k[render_world_index(r, &r->obj[i])]);
+            shade_consts(w, c, &r->shade_k[i]);
 #if SHADOW_CULL
-            r->shade_k[render_world_index(r, &r->obj[i])].cull = r->shadow_cull;
+            r->shade_k[i].cull = r->shadow_cull;
 #endif
         }
     }

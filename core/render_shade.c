@@ -27,7 +27,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         ray_t ray;
         uint8_t mask = 0;
         cam_ray(cam, x, y, &ray);
-        color_t c = shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade_k[render_world_index(r, o)] : NULL,
+        color_t c = shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade_k[oi] : NULL,
                                    r->keys ? &mask : NULL);
         if (r->keys)
             r->keys[x] = render_key(o->id, mask);
