@@ -57,12 +57,13 @@
  * owner's depth, so a further object costs one compare. Objects claim a
  * row's columns nearest first (render_setup sorts them by their near
  * depth bound each frame; planes first, a mesh's triangles together), so
- * a farther one mostly loses shared columns without painting them. Most overlaps need
- * no depth at all: every bounded object has a depth range from its
- * camera-space z (t = -z / F, orthographic -z) with a margin, and per row
- * each object's range is compared with each plane's range over the
- * object's columns (t = N / D is monotone along a row), which decides "in
- * front of that plane on this whole row" or hides the object on the row.
+ * a farther one mostly loses shared columns without painting them. Most
+ * overlaps need no depth at all: every bounded object has a depth range
+ * from its camera-space z (t = -z / F, orthographic -z) with a margin,
+ * and per row each object's range is compared with each plane's range
+ * over the object's columns (t = N / D is monotone along a row), which
+ * decides "in front of that plane on this whole row" or hides the object
+ * on the row.
  * Where a newcomer crosses a stretch of columns of one other owner, the
  * two objects' depth ranges over the stretch (flat: N / D at its ends;
  * sphere: t at its ends above, below from a bound on disc; box: its
