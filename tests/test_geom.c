@@ -1396,6 +1396,28 @@ static double orand(uint64_t *st, double lo, double hi)
     return lo + (hi - lo) * (double)(check_rng_next(st) >> 11) / 9007199254740992.0;
 }
 
+/* A random box added to the world: its min corner in [x0, x1] x [y0, y1]
+ * x [z0, z1], each side in [s0, s1], a random colour; id counts it. */
+static void add_random_box(uint64_t *st, double x0, double x1, double y0, double y1, double z0, double z1, double s0,
+                           double s1, uint16_t *id)
+{
+    double bx = orand(st, x0, x1), by = orand(st, y0, y1), bz = orand(st, z0, z1);
+    if (geom_box_make(&world.boxes[world.n_boxes], V3(bx, by, bz),
+                      V3(bx + orand(st, s0, s1), by + orand(st, s0, s1), bz + orand(st, s0, s1)),
+                      col(orand(st, 0, 1), orand(st, 0, 1), orand(st, 0, 1)), *id))
+        world.n_boxes++, (*id)++;
+}
+
+/* Point (x, y, z) turned by ang about y, then tilted by tilt about x,
+ * scaled and moved to c. */
+static vec3_t turned(double x, double y, double z, double ang, double tilt, double scale, double cx, double cy,
+                     double cz)
+{
+    double x1 = x * cos(ang) - z * sin(ang), z1 = x * sin(ang) + z * cos(ang);
+    double y1 = y * cos(tilt) - z1 * sin(tilt), z2 = y * sin(tilt) + z1 * cos(tilt);
+    return V3(cx + scale * x1, cy + scale * y1, cz + scale * z2);
+}
+
 /* Nearest and second-nearest hit over every object of the world, by the
  * world-space kernels (an algorithm independent of the renderer's
  * camera-space forms and depths). */
@@ -1549,13 +1571,8 @@ static void test_render_overlap(void)
                 world.n_triangles++, id++;
         }
         world_mesh_update(&world); /* written directly: link the triangles (world_add_triangle would) */
-        for (int i = 0; i < nb; i++) {
-            double x = orand(&st, -2, 2), y = orand(&st, -1.5, 1.5), z = orand(&st, -7, -3);
-            if (geom_box_make(&world.boxes[world.n_boxes], V3(x, y, z),
-                              V3(x + orand(&st, 0.2, 2), y + orand(&st, 0.2, 2), z + orand(&st, 0.2, 2)),
-                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
-                world.n_boxes++, id++;
-        }
+        for (int i = 0; i < nb; i++)
+            add_random_box(&st, -2, 2, -1.5, 1.5, -7, -3, 0.2, 2, &id);
         cam_t c;
         bool ortho = it % 3 == 2;
         vec3_t eye = V3(orand(&st, -1, 1), orand(&st, -0.5, 1.5), orand(&st, 0, 2));
@@ -1821,13 +1838,8 @@ static void test_render_ranges(void)
                                  N(rad), col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
                 world.n_spheres++, id++;
         }
-        for (int i = 0; i < 2; i++) {
-            double bx = orand(&st, -4, 4), by = orand(&st, -4, 4), bz = orand(&st, -8, 1);
-            if (geom_box_make(&world.boxes[world.n_boxes], V3(bx, by, bz),
-                              V3(bx + orand(&st, 0.1, 4), by + orand(&st, 0.1, 4), bz + orand(&st, 0.1, 4)),
-                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
-                world.n_boxes++, id++;
-        }
+        for (int i = 0; i < 2; i++)
+            add_random_box(&st, -4, 4, -4, 4, -8, 1, 0.1, 4, &id);
         double x = orand(&st, -3, 3), y = orand(&st, -3, 3), z = orand(&st, -9, -1);
         if (geom_triangle_make(&world.triangles[0], V3(x, y, z),
                                V3(x + orand(&st, -3, 3), y + orand(&st, 0.5, 3), z + orand(&st, -3, 3)),
@@ -2163,9 +2175,7 @@ static void test_render_meshes(void)
             double x = v[k][0], y = v[k][1], z = v[k][2];
             if (variant == 4 && k == 4)
                 z = -0.5; /* the top below the waist: a closed bowl */
-            double x1 = x * cos(ang) - z * sin(ang), z1 = x * sin(ang) + z * cos(ang);
-            double y1 = y * cos(tilt) - z1 * sin(tilt), z2 = y * sin(tilt) + z1 * cos(tilt);
-            pv[k] = V3(cx + scale * x1, cy + scale * y1, cz + scale * z2); /* shared vertices: the same numbers */
+            pv[k] = turned(x, y, z, ang, tilt, scale, cx, cy, cz); /* shared vertices: the same numbers */
         }
         world_init(&world, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)));
         uint16_t id = 0;
@@ -2376,24 +2386,15 @@ static void test_render_order(void)
             double cx = orand(&st, -3, 3), cy = orand(&st, -2, 2), cz = orand(&st, -15, -4), sc = orand(&st, 0.5, 2);
             double ang = orand(&st, 0, 2 * PI), tilt = orand(&st, -1, 1);
             vec3_t pv[6]; /* turned about y, then tilted about x: faces at different depths */
-            for (int k = 0; k < 6; k++) {
-                double x = oct_v[k][0], y = oct_v[k][1], z = oct_v[k][2];
-                double x1 = x * cos(ang) - z * sin(ang), z1 = x * sin(ang) + z * cos(ang);
-                double y1 = y * cos(tilt) - z1 * sin(tilt), z2 = y * sin(tilt) + z1 * cos(tilt);
-                pv[k] = V3(cx + sc * x1, cy + sc * y1, cz + sc * z2);
-            }
+            for (int k = 0; k < 6; k++)
+                pv[k] = turned(oct_v[k][0], oct_v[k][1], oct_v[k][2], ang, tilt, sc, cx, cy, cz);
             for (int k = 0; k < 8; k++)
                 if (geom_triangle_make(&world.triangles[world.n_triangles], pv[oct_f[k][0]], pv[oct_f[k][1]],
                                        pv[oct_f[k][2]], col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
                     world.n_triangles++, id++;
         }
-        for (int k = 0; k < nb; k++) {
-            double bx = orand(&st, -4, 4), by = orand(&st, -3, 3), bz = orand(&st, -20, -2);
-            if (geom_box_make(&world.boxes[world.n_boxes], V3(bx, by, bz),
-                              V3(bx + orand(&st, 0.1, 2), by + orand(&st, 0.1, 2), bz + orand(&st, 0.1, 2)),
-                              col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), id))
-                world.n_boxes++, id++;
-        }
+        for (int k = 0; k < nb; k++)
+            add_random_box(&st, -4, 4, -3, 3, -20, -2, 0.1, 2, &id);
 #if RENDER_MESH
         world_mesh_update(&world);
 #endif
