@@ -993,8 +993,8 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
  * painting them; in the other order it paints them and the nearer one
  * paints them again. So the objects are sorted once per frame, stably, by
  * a key from their near depth bound (render_depth_key): the planes stay
- * first (render_row_order, row_win and the flats' pool expect them at
- * 0 .. nplanes - 1), then objects without a depth range, then the rest,
+ * first (render_row_order and row_win take objects 0 .. nplanes - 1 for
+ * the planes), then objects without a depth range, then the rest,
  * nearest first. The triangles of one mesh (mesh_up: joined by shared
  * edges) share the key of their nearest one and so stay together, in
  * their scene order: a closed mesh's front faces never overlap, and
