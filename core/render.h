@@ -163,8 +163,11 @@ typedef struct {
     int64_t val, jump;
     int32_t col, iy; /* iy RENDER_ESTEP_NONE: no column */
     int32_t dk;      /* RENDER_ESTEP_NONE: no step yet */
+    int16_t next;    /* iy - 2 when col, dk and jump give that row's column, else RENDER_ESTEP_NO_ROW */
+    bool fall;       /* the form falls along the row (with col) */
 } render_estep_t;
 #define RENDER_ESTEP_NONE INT32_MIN
+#define RENDER_ESTEP_NO_ROW INT16_MIN /* (pixel offsets lie within +-2^15: FXRT_MAX_DIM) */
 #endif
 
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */

@@ -440,13 +440,14 @@ static inline bool render_edge_root(uint64_t ua, uint64_t ub, int32_t *pk, uint6
 }
 
 /* render_split_near's split of edge form ek (not strict) on columns
- * x0..x0 + kmax of row iy, from its row state st (render_estep_t): the
- * row before's column stepped (two additions and a compare), the same
- * row's taken as it is, else located by render_edge_root, which also
- * gives dk and jump when the row before had a column. */
-static inline __attribute__((always_inline)) bool render_split_edge(render_estep_t *st, const render_lin_t *ek,
-                                                                     int32_t x0, int32_t ix0, int32_t iy, int32_t kmax,
-                                                                     int32_t *pr, int32_t *pl)
+ * x0..x0 + kmax of row iy, from its row state st (render_estep_t), where
+ * the row before's column cannot simply be stepped (render_split_edge):
+ * the same row's taken as it is, else located by render_edge_root, which
+ * also gives dk and jump when the row before had a column. Out of line:
+ * render_runs_flat keeps few registers for the stepped path. */
+__attribute__((noinline)) static bool render_split_edge_at(render_estep_t *st, const render_lin_t *ek, int32_t x0,
+                                                           int32_t ix0, int32_t iy, int32_t kmax, int32_t *pr,
+                                                           int32_t *pl)
 {
     int64_t b = 2 * ek->x;
     if (b == 0)
@@ -454,7 +455,7 @@ static inline __attribute__((always_inline)) bool render_split_edge(render_estep
     bool fall = b < 0;
     uint64_t ub = (uint64_t)(fall ? -b : b), v;
     int32_t col;
-    if (st->iy == iy + 2 && st->dk != RENDER_ESTEP_NONE) {
+    if (st->iy == iy + 2 && st->dk != RENDER_ESTEP_NONE) { /* (render_split_edge steps these) */
         v = (uint64_t)st->val + (uint64_t)st->jump;
         col = st->col + st->dk;
         if ((int64_t)v < 0) {
@@ -469,6 +470,7 @@ static inline __attribute__((always_inline)) bool render_split_edge(render_estep
         int32_t k;
         if (!render_edge_root((uint64_t)(fall ? -a : a), ub, &k, &v)) {
             st->iy = RENDER_ESTEP_NONE;
+            st->next = RENDER_ESTEP_NO_ROW;
             return render_split_near(a, b, kmax, NULL, false, pr, pl);
         }
         col = x0 + k;
@@ -481,12 +483,41 @@ static inline __attribute__((always_inline)) bool render_split_edge(render_estep
     st->iy = iy;
     st->col = col;
     st->val = (int64_t)v;
+    st->fall = fall;
+    st->next = (int16_t)(st->dk != RENDER_ESTEP_NONE ? iy - 2 : RENDER_ESTEP_NO_ROW);
     int32_t hi = col - x0;
     bool exact = v == 0 && hi >= 0 && hi <= kmax;
     hi = hi < 0 ? 0 : (hi > kmax ? kmax + 1 : hi);
     *pr = hi;
     *pl = exact ? hi : hi - 1;
     return fall;
+}
+
+/* render_split_near's split of edge form ek (not strict) on columns
+ * x0..x0 + kmax of row iy, from its row state st: mostly the row
+ * before's column, stepped by dk and jump (two additions and a compare),
+ * else render_split_edge_at. *pr and *pl may lie beyond 0..kmax (an
+ * interval of columns bounded by them means the same there). */
+static inline __attribute__((always_inline)) bool render_split_edge(render_estep_t *st, const render_lin_t *ek,
+                                                                     int32_t x0, int32_t ix0, int32_t iy, int32_t kmax,
+                                                                     int32_t *pr, int32_t *pl)
+{
+    if (st->next != iy)
+        return render_split_edge_at(st, ek, x0, ix0, iy, kmax, pr, pl);
+    uint64_t v = (uint64_t)st->val + (uint64_t)st->jump;
+    int32_t col = st->col + st->dk;
+    if ((int64_t)v < 0) { /* one column more: + step = 2 |x| */
+        uint64_t b = 2 * (uint64_t)ek->x;
+        v += st->fall ? 0 - b : b;
+        col++;
+    }
+    st->iy = iy;
+    st->next = (int16_t)(iy - 2);
+    st->col = col;
+    st->val = (int64_t)v;
+    *pr = col - x0;
+    *pl = v == 0 ? col - x0 : col - x0 - 1;
+    return st->fall;
 }
 #endif
 

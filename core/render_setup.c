@@ -975,6 +975,7 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
             for (int j = 0; j < ne; j++) {
                 es[j].iy = RENDER_ESTEP_NONE;
                 es[j].dk = RENDER_ESTEP_NONE;
+                es[j].next = RENDER_ESTEP_NO_ROW;
             }
         }
     }

@@ -2848,6 +2848,7 @@ static void test_render_edge_steps(void)
         render_estep_t st;
         st.iy = RENDER_ESTEP_NONE;
         st.dk = RENDER_ESTEP_NONE;
+        st.next = RENDER_ESTEP_NO_ROW;
         for (int32_t row = 0; row < h; row++) {
             if (rng() % 16 == 0)
                 continue; /* a row without this edge */
