@@ -569,6 +569,20 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
 #else
 #define RENDER_RUNS_INLINE static inline __attribute__((always_inline))
 #endif
+/* Each edge's split (rk, lk; fall: it falls along the row) moves one end
+ * of ge (where every edge is >= 0) and one of le (<= 0). */
+static inline __attribute__((always_inline)) void render_edge_runs(bool fall, int32_t rk, int32_t lk, render_iv_t *ge,
+                                                                    render_iv_t *le)
+{
+    if (fall) {
+        ge->hi = lk < ge->hi ? lk : ge->hi;
+        le->lo = rk > le->lo ? rk : le->lo;
+    } else {
+        ge->lo = rk > ge->lo ? rk : ge->lo;
+        le->hi = lk < le->hi ? lk : le->hi;
+    }
+}
+
 /* A flat piece's hits on columns x0..x1 as at most four runs (k from
  * x0, possibly overlapping), found exactly from its forms: the same sign
  * tests as the stepping loop (N and D of one strict sign, edges all >= 0
@@ -578,7 +592,7 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
 RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                         int16_t *hint, render_iv_t run[4])
 {
-    int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0;
+    int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0, rk, lk;
     render_iv_t ge = {0, kmax}, le = {0, kmax}, front[2] = {{0, kmax}, {1, 0}};
     if (!f->front) { /* (front: N and D share a sign all over its bounds) */
         render_iv_t np, nn, dp, dn;
@@ -587,22 +601,27 @@ RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, render_flat_t *f, int
         front[0] = render_iv_and(np, dp);
         front[1] = render_iv_and(nn, dn);
     }
-    for (int k = 0; k < f->edges; k++) { /* each edge moves one end of ge and one of le */
-        const render_lin_t *ek = render_edge_k(f, k);
-        int32_t rk, lk;
 #if RENDER_ESTEP
-        (void)hint;
-        if (render_split_edge(render_estep_k(f, k), ek, x0, ix0, iy, kmax, &rk, &lk)) {
-#else
-        if (RENDER_SPLIT(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, false, &rk, &lk)) {
-#endif
-            ge.hi = lk < ge.hi ? lk : ge.hi;
-            le.lo = rk > le.lo ? rk : le.lo;
-        } else {
-            ge.lo = rk > ge.lo ? rk : ge.lo;
-            le.hi = lk < le.hi ? lk : le.hi;
+    /* (Unrolled: a triangle's three edges, then a box face's fourth.) */
+    (void)hint;
+    if (f->edges) {
+        render_estep_t *es = f->es;
+        for (int k = 0; k < 3; k++) {
+            bool fall = render_split_edge(&es[k], &f->e[k], x0, ix0, iy, kmax, &rk, &lk);
+            render_edge_runs(fall, rk, lk, &ge, &le);
+        }
+        if (f->edges == 4) {
+            bool fall = render_split_edge(&es[3], render_edge_k(f, 3), x0, ix0, iy, kmax, &rk, &lk);
+            render_edge_runs(fall, rk, lk, &ge, &le);
         }
     }
+#else
+    for (int k = 0; k < f->edges; k++) {
+        const render_lin_t *ek = render_edge_k(f, k);
+        bool fall = RENDER_SPLIT(rlin_at(ek, ix0, iy), 2 * ek->x, kmax, hint ? hint + 2 + k : NULL, false, &rk, &lk);
+        render_edge_runs(fall, rk, lk, &ge, &le);
+    }
+#endif
     int nrun = 0;
     if (f->front) { /* the edges' two intervals as they are */
         if (ge.lo <= ge.hi)
