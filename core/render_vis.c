@@ -663,8 +663,8 @@ bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t i
     if (o->ranged) {
         blo = o->tlo;
         bhi = o->thi;
-    } else if (!render_is_plane(o) || !render_plane_range(r, o, x0, x1, iy, &blo, &bhi)) {
-        return true;
+    } else if (!render_is_plane(o) || r->nplanes < 2 || !render_plane_range(r, o, x0, x1, iy, &blo, &bhi)) {
+        return true; /* (a plane: its own range, when there is another plane) */
     }
     uint16_t n = r->nplanes < 32 ? r->nplanes : 32;
     for (uint16_t j = 0; j < n; j++) {
