@@ -1666,13 +1666,6 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
         int32_t x0 = FXRT_NO_BOUNDS ? 0 : o->x0, x1 = FXRT_NO_BOUNDS ? w - 1 : o->x1;
         if (x0 > x1)
             continue;
-        if (!FXRT_NO_BOUNDS && o->kind == RENDER_FLAT && render_face(o, 0)->edges == 0) {
-            /* A plane: along a row its front test is one interval, so if
-             * it fails at both ends the row is beyond the horizon. */
-            if (!render_flat_at(render_face(o, 0), 2 * x0 - w + 1, iy) &&
-                !render_flat_at(render_face(o, 0), 2 * x1 - w + 1, iy))
-                continue;
-        }
         bool lone = !FXRT_NO_LONE && render_alone(r, i, row);
         r->row_win = 0;
         if (!FXRT_NO_ZRANGE && !lone && r->nplanes && !render_row_order(r, i, x0, x1, iy, &prow))
