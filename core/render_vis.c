@@ -651,6 +651,22 @@ int render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int3
 
 static bool render_is_plane(const render_obj_t *o) { return o->kind == RENDER_FLAT && render_face(o, 0)->edges == 0; }
 
+/* Plane p's (object j's) depth range over the whole of row iy, once per
+ * row for the first RENDER_ROW_PLANES planes (pr); false when it does not
+ * cover the row with one sign of N and D. */
+__attribute__((noinline)) static bool render_prow_range(const render_t *r, const render_obj_t *p, uint16_t j,
+                                                        int32_t iy, render_prow_t *pr, render_depth_t *lo,
+                                                        render_depth_t *hi)
+{
+    if (j >= RENDER_ROW_PLANES)
+        return render_plane_range(r, p, 0, r->cam->width - 1, iy, lo, hi);
+    if (pr->state[j] == 0)
+        pr->state[j] = render_plane_range(r, p, 0, r->cam->width - 1, iy, &pr->lo[j], &pr->hi[j]) ? 1 : 2;
+    *lo = pr->lo[j];
+    *hi = pr->hi[j];
+    return pr->state[j] == 1;
+}
+
 /* Depth order against the planes on this row, for object i over its
  * columns x0..x1: r->row_win gets bit j when i is nearer than plane j
  * wherever both cover (no depth needed there); returns false when a plane
@@ -663,8 +679,8 @@ bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t i
     if (o->ranged) {
         blo = o->tlo;
         bhi = o->thi;
-    } else if (!render_is_plane(o) || r->nplanes < 2 || !render_plane_range(r, o, x0, x1, iy, &blo, &bhi)) {
-        return true; /* (a plane: its own range, when there is another plane) */
+    } else if (!render_is_plane(o) || r->nplanes < 2 || !render_prow_range(r, o, i, iy, pr, &blo, &bhi)) {
+        return true; /* (a plane, i < nplanes: its own range over the row, which its columns span) */
     }
     uint16_t n = r->nplanes < 32 ? r->nplanes : 32;
     for (uint16_t j = 0; j < n; j++) {
