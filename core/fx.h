@@ -230,9 +230,10 @@ static inline uint64_t fx_umul64_small(uint64_t a, int32_t i)
  * low word's 16-bit halves times it (each product below 2^31 in magnitude)
  * added with its sign into the 64-bit sum, and the high word times it
  * (modulo 2^32) into the sum's high word. gcc's code took about 70 (61
- * with these sums written in C), with high registers spilled. Other
- * targets and compilers take the C (fx_umul64_small). tests/onboard_main.c
- * checks the assembly against 64-bit C products on every board. */
+ * with these sums written in C), with high registers spilled. Armv7-M
+ * (the M3, M4F) has its own below; other targets and compilers take the C
+ * (fx_umul64_small). tests/onboard_main.c checks the assembly against
+ * 64-bit C products on every board. */
 #if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
 #define FX_LIN_TERM(lo_off, hi_off, f)                                                                   \
     "ldr %[t], [%[w], #" lo_off "]\n\t"                                                                    \
@@ -262,6 +263,29 @@ static inline __attribute__((always_inline)) uint64_t fx_lin2_small(const int64_
     return (uint64_t)hi << 32 | lo;
 }
 #undef FX_LIN_TERM
+#elif (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
+/* Armv7-M: per factor f, the low word's product accumulated into the sum
+ * by UMLAL, then the high word's (modulo 2^32) and the low word times f's
+ * sign word (-1 or 0: f sign-extended to 64 bits) into its high word by
+ * MLA: 11 instructions, where gcc's C takes 18. */
+static inline __attribute__((always_inline)) uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
+{
+    uint32_t lo, hi, a, b, t;
+    __asm__("ldrd %[lo], %[hi], [%[w]]\n\t"
+            "ldrd %[a], %[b], [%[w], #8]\n\t"
+            "umlal %[lo], %[hi], %[a], %[i]\n\t"
+            "mla %[hi], %[b], %[i], %[hi]\n\t"
+            "asr %[t], %[i], #31\n\t"
+            "mla %[hi], %[a], %[t], %[hi]\n\t"
+            "ldrd %[a], %[b], [%[w], #16]\n\t"
+            "umlal %[lo], %[hi], %[a], %[j]\n\t"
+            "mla %[hi], %[b], %[j], %[hi]\n\t"
+            "asr %[t], %[j], #31\n\t"
+            "mla %[hi], %[a], %[t], %[hi]"
+            : [lo] "=&r"(lo), [hi] "=&r"(hi), [a] "=&r"(a), [b] "=&r"(b), [t] "=&r"(t)
+            : [w] "r"(w), [i] "r"(i), [j] "r"(j), "m"(*(const int64_t(*)[3])w));
+    return (uint64_t)hi << 32 | lo;
+}
 #else
 static inline uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
 {
