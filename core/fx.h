@@ -468,6 +468,24 @@ static inline void fx128_copy(fx128_t *dst, const fx128_t *src)
     dst->lo = src->lo;
     dst->hi = src->hi;
 }
+#if (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
+/* Armv7-M: a carry chain on the four words (ADDS, three ADCS), where
+ * gcc's C builds the carry from a compare. */
+static inline __attribute__((always_inline)) fx128_t fx128_add(fx128_t a, fx128_t b)
+{
+    uint32_t w0 = (uint32_t)a.lo, w1 = (uint32_t)(a.lo >> 32), w2 = (uint32_t)a.hi, w3 = (uint32_t)((uint64_t)a.hi >> 32);
+    __asm__("adds %[w0], %[w0], %[b0]\n\t"
+            "adcs %[w1], %[w1], %[b1]\n\t"
+            "adcs %[w2], %[w2], %[b2]\n\t"
+            "adc %[w3], %[w3], %[b3]"
+            : [w0] "+r"(w0), [w1] "+r"(w1), [w2] "+r"(w2), [w3] "+r"(w3)
+            : [b0] "r"((uint32_t)b.lo), [b1] "r"((uint32_t)(b.lo >> 32)), [b2] "r"((uint32_t)b.hi),
+              [b3] "r"((uint32_t)((uint64_t)b.hi >> 32))
+            : "cc");
+    fx128_t r = {(uint64_t)w1 << 32 | w0, (int64_t)((uint64_t)w3 << 32 | w2)};
+    return r;
+}
+#else
 static inline fx128_t fx128_add(fx128_t a, fx128_t b)
 {
     fx128_t r;
@@ -475,6 +493,7 @@ static inline fx128_t fx128_add(fx128_t a, fx128_t b)
     r.hi = (int64_t)((uint64_t)a.hi + (uint64_t)b.hi + (r.lo < a.lo ? 1u : 0u));
     return r;
 }
+#endif
 /* *a += *b (mod 2^128). On Armv6-M four ADD/ADC on the words in memory
  * (gcc builds the carries of fx128_add from compares there, with spills:
  * about twice the instructions in a sphere's per-column stepping loop).
@@ -515,10 +534,28 @@ static inline fx128_t fx128_neg(fx128_t a)
     r.hi = (int64_t)(~(uint64_t)a.hi + (r.lo == 0 ? 1u : 0u));
     return r;
 }
+#if (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
+/* Armv7-M: a borrow chain (SUBS, three SBCS). */
+static inline __attribute__((always_inline)) fx128_t fx128_sub(fx128_t a, fx128_t b)
+{
+    uint32_t w0 = (uint32_t)a.lo, w1 = (uint32_t)(a.lo >> 32), w2 = (uint32_t)a.hi, w3 = (uint32_t)((uint64_t)a.hi >> 32);
+    __asm__("subs %[w0], %[w0], %[b0]\n\t"
+            "sbcs %[w1], %[w1], %[b1]\n\t"
+            "sbcs %[w2], %[w2], %[b2]\n\t"
+            "sbc %[w3], %[w3], %[b3]"
+            : [w0] "+r"(w0), [w1] "+r"(w1), [w2] "+r"(w2), [w3] "+r"(w3)
+            : [b0] "r"((uint32_t)b.lo), [b1] "r"((uint32_t)(b.lo >> 32)), [b2] "r"((uint32_t)b.hi),
+              [b3] "r"((uint32_t)((uint64_t)b.hi >> 32))
+            : "cc");
+    fx128_t r = {(uint64_t)w1 << 32 | w0, (int64_t)((uint64_t)w3 << 32 | w2)};
+    return r;
+}
+#else
 static inline fx128_t fx128_sub(fx128_t a, fx128_t b)
 {
     return fx128_add(a, fx128_neg(b));
 }
+#endif
 /* a * b, exact. */
 fx128_t fx128_mul(int64_t a, int64_t b);
 fx128_t fx128_sqr(int64_t a); /* a * a */

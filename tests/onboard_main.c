@@ -127,9 +127,10 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
     return 0;
 }
 
-/* The core's inline assembly (Armv6-M: fx_lin2_small, fx128_add_to; the
- * C elsewhere) against plain 64-bit C arithmetic (libgcc's products on the
- * M0), on edge values and pseudo-random ones: the number of mismatches. */
+/* The core's inline assembly (Armv6-M: fx_lin2_small, fx128_add_to;
+ * Armv7-M: fx_lin2_small, fx128_add, fx128_sub; the C elsewhere) against
+ * plain 64-bit C arithmetic (libgcc's products on the M0), on edge values
+ * and pseudo-random ones: the number of mismatches. */
 static uint32_t onb_rng_state = 0x9E3779B9u;
 static uint32_t onb_rng(void) { return board_xorshift32(&onb_rng_state); }
 static uint32_t onb_word(void)
@@ -160,6 +161,11 @@ __attribute__((noinline)) static uint32_t onb_check_arith(void)
         fx128_t x = {(uint64_t)w[0], w[1]}, y = {(uint64_t)w[2], (int64_t)((uint64_t)onb_word() << 32 | onb_word())};
         uint64_t lo = x.lo + y.lo;
         uint64_t hi = (uint64_t)x.hi + (uint64_t)y.hi + (lo < x.lo);
+        uint64_t dlo = x.lo - y.lo;
+        uint64_t dhi = (uint64_t)x.hi - (uint64_t)y.hi - (x.lo < y.lo);
+        fx128_t d = fx128_sub(x, y), s = fx128_add(x, y);
+        bad += d.lo != dlo || (uint64_t)d.hi != dhi;
+        bad += s.lo != lo || (uint64_t)s.hi != hi;
         fx128_add_to(&x, &y);
         bad += x.lo != lo || (uint64_t)x.hi != hi;
     }
@@ -174,7 +180,7 @@ int main(void)
     if (arith) {
         semihost_puts("error=arith: ");
         semihost_put_u64(arith);
-        semihost_puts(" mismatches of fx_lin2_small / fx128_add_to against 64-bit C\n");
+        semihost_puts(" mismatches of fx_lin2_small / fx128_add / fx128_sub / fx128_add_to against 64-bit C\n");
         failed = 1;
     }
     uint64_t total = 0;
