@@ -2001,6 +2001,71 @@ static void test_render_front(void)
 static void test_render_front(void) {}
 #endif
 
+#if FXRT_NUMBER == FXRT_Q16
+/* A plane's rows (render_setup: render_plane_rows bisects for the rows
+ * beyond its horizon once per frame, from the front test at the ends of
+ * a row): a row must lie in r0..r1 exactly when some pixel of it passes
+ * the plane's front test (N and D of one strict sign), each pixel's forms
+ * evaluated from scratch. Random planes (any point and normal, some
+ * through the eye's height, some nearly edge-on), eyes and gazes up and
+ * down (horizons across the frame, above it, below it), both camera
+ * kinds, frames from 1 to 200 rows. Cap: 0 rows wrong. */
+static void test_render_plane_rows(void)
+{
+    uint64_t st = 0x91a4e50ull;
+    long rows = 0, covered = 0, wrong = 0, cut = 0, planes = 0;
+    for (int it = 0; it < 3000; it++) {
+        bool ortho = random_world_begin(it);
+        double ey = orand(&st, -3, 3);
+        vec3_t eye = V3(orand(&st, -3, 3), ey, orand(&st, -3, 3));
+        vec3_t n = it % 7 == 0 ? V3(orand(&st, -0.01, 0.01), 1, orand(&st, -0.01, 0.01))
+                               : V3(orand(&st, -1, 1), orand(&st, -1, 1), orand(&st, -1, 1));
+        vec3_t a = it % 5 == 0 ? V3(orand(&st, -5, 5), ey + orand(&st, -1e-3, 1e-3), orand(&st, -5, 5))
+                               : V3(orand(&st, -8, 8), orand(&st, -8, 8), orand(&st, -8, 8));
+        if (!geom_plane_make(&world.planes[0], a, n, col(orand(&st, 0, 1), orand(&st, 0, 1), orand(&st, 0, 1)), 0))
+            continue;
+        world.n_planes = 1;
+        int32_t w = 1 + (int32_t)(rng() % 160), h = 1 + (int32_t)(rng() % 200);
+        vec3_t gaze = V3(orand(&st, -1, 1), orand(&st, -1.5, 1.5), orand(&st, -1, 1));
+        cam_t c;
+        if (cam_setup(&c, ortho ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE, eye, gaze, V3(0, 1, 0), N(orand(&st, 10, 150)),
+                      N(orand(&st, 0.5, 20)), w, h) != CAM_OK)
+            continue;
+        static render_t state;
+        if (!render_setup(&state, &world, &c) || state.count != 1)
+            continue;
+        const render_obj_t *o = &state.obj[0];
+        const render_flat_t *f = render_face(o, 0);
+        planes++;
+        cut += o->r0 <= o->r1 && (o->r0 > 0 || o->r1 < h - 1);
+        for (int32_t row = 0; row < h; row++) {
+            bool any = false;
+            for (int32_t x = 0; x < w && !any; x++) {
+                render_k_t nv = rlin_at(&f->n, 2 * x - w + 1, h - 1 - 2 * row);
+                render_k_t dv = rlin_at(&f->d, 2 * x - w + 1, h - 1 - 2 * row);
+                any = (nv > 0 && dv > 0) || (nv < 0 && dv < 0);
+            }
+            bool in = row >= o->r0 && row <= o->r1;
+            rows++;
+            covered += any;
+            if (in != any) {
+                wrong++;
+                CHECK_SWEEP(false, "frame %d (%s, %dx%d): row %d %s the plane's rows %d..%d, but %s pixel passes", it,
+                            ortho ? "ortho" : "persp", (int)w, (int)h, (int)row, in ? "in" : "not in", (int)o->r0,
+                            (int)o->r1, any ? "a" : "no");
+            }
+        }
+    }
+    printf("plane rows: %ld planes (%ld with a horizon inside the frame), %ld rows (%ld covered), %ld wrong\n", planes,
+           cut, rows, covered, wrong);
+    CHECK_MSG(planes > 2000 && cut > planes / 10 && covered > rows / 5 && covered < rows - rows / 5,
+              "too little exercised: %ld planes, %ld cut, %ld of %ld rows covered", planes, cut, covered, rows);
+    CHECK_MSG(wrong == 0, "%ld rows in or out of a plane's rows against its pixels", wrong);
+}
+#else
+static void test_render_plane_rows(void) {}
+#endif
+
 #if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
 /* Depth ranges over stretches of a row (render_span_range: render_row's
  * claiming settles a whole stretch of one owner from them): every column
@@ -2922,6 +2987,7 @@ int main(void)
     test_render_depth_less();
     test_render_ranges();
     test_render_front();
+    test_render_plane_rows();
     test_render_span_ranges();
     test_render_meshes();
     test_render_order();
