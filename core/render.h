@@ -81,10 +81,11 @@
  *
  * Screen bounds: each object also gets a conservative pixel rectangle (its
  * projected bounding box plus a margin, or the whole screen when it
- * straddles the eye plane); planes are unbounded but whole rows on the far
- * side of the horizon are skipped. Pixels no object can cover are never
- * tested, and an object whose rectangle meets no other's on a row paints
- * its hits without any bookkeeping.
+ * straddles the eye plane); planes span every column, and their rows stop
+ * at the horizon (render_setup bisects for it once per frame, exactly:
+ * render_plane_rows). Pixels no object can cover are never tested, and an
+ * object whose rectangle meets no other's on a row paints its hits
+ * without any bookkeeping.
  *
  * Memory: per-kind records (render_sphere_t, render_flat_t, render_face_t) in
  * arrays sized by the per-kind capacities of fxrt_config.h, plus per column
