@@ -470,7 +470,8 @@ static inline void fx128_copy(fx128_t *dst, const fx128_t *src)
 }
 #if (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
 /* Armv7-M: a carry chain on the four words (ADDS, three ADCS), where
- * gcc's C builds the carry from a compare. */
+ * gcc's C builds the carry from a compare. (Early-clobber: no input may
+ * share a register with a word written before the last input is read.) */
 static inline __attribute__((always_inline)) fx128_t fx128_add(fx128_t a, fx128_t b)
 {
     uint32_t w0 = (uint32_t)a.lo, w1 = (uint32_t)(a.lo >> 32), w2 = (uint32_t)a.hi, w3 = (uint32_t)((uint64_t)a.hi >> 32);
@@ -478,7 +479,7 @@ static inline __attribute__((always_inline)) fx128_t fx128_add(fx128_t a, fx128_
             "adcs %[w1], %[w1], %[b1]\n\t"
             "adcs %[w2], %[w2], %[b2]\n\t"
             "adc %[w3], %[w3], %[b3]"
-            : [w0] "+r"(w0), [w1] "+r"(w1), [w2] "+r"(w2), [w3] "+r"(w3)
+            : [w0] "+&r"(w0), [w1] "+&r"(w1), [w2] "+&r"(w2), [w3] "+&r"(w3)
             : [b0] "r"((uint32_t)b.lo), [b1] "r"((uint32_t)(b.lo >> 32)), [b2] "r"((uint32_t)b.hi),
               [b3] "r"((uint32_t)((uint64_t)b.hi >> 32))
             : "cc");
@@ -543,7 +544,7 @@ static inline __attribute__((always_inline)) fx128_t fx128_sub(fx128_t a, fx128_
             "sbcs %[w1], %[w1], %[b1]\n\t"
             "sbcs %[w2], %[w2], %[b2]\n\t"
             "sbc %[w3], %[w3], %[b3]"
-            : [w0] "+r"(w0), [w1] "+r"(w1), [w2] "+r"(w2), [w3] "+r"(w3)
+            : [w0] "+&r"(w0), [w1] "+&r"(w1), [w2] "+&r"(w2), [w3] "+&r"(w3)
             : [b0] "r"((uint32_t)b.lo), [b1] "r"((uint32_t)(b.lo >> 32)), [b2] "r"((uint32_t)b.hi),
               [b3] "r"((uint32_t)((uint64_t)b.hi >> 32))
             : "cc");

@@ -441,10 +441,12 @@ static inline bool render_edge_root(uint64_t ua, uint64_t ub, int32_t *pk, uint6
 
 /* render_split_near's split of edge form ek (not strict) on columns
  * x0..x0 + kmax of row iy, from its row state st (render_estep_t), where
- * the row before's column cannot simply be stepped (render_split_edge):
- * the same row's taken as it is, else located by render_edge_root, which
- * also gives dk and jump when the row before had a column. Out of line:
- * render_runs_flat keeps few registers for the stepped path. */
+ * the row before's column cannot simply be stepped (render_split_edge
+ * steps it whenever st->next is this row, which the state sets once dk
+ * and jump hold): the same row's taken as it is, else located by
+ * render_edge_root, which also gives dk and jump when the row before had
+ * a column. Out of line: render_runs_flat keeps few registers for the
+ * stepped path. */
 __attribute__((noinline)) static bool render_split_edge_at(render_estep_t *st, const render_lin_t *ek, int32_t x0,
                                                            int32_t ix0, int32_t iy, int32_t kmax, int32_t *pr,
                                                            int32_t *pl)
@@ -455,14 +457,7 @@ __attribute__((noinline)) static bool render_split_edge_at(render_estep_t *st, c
     bool fall = b < 0;
     uint64_t ub = (uint64_t)(fall ? -b : b), v;
     int32_t col;
-    if (st->iy == iy + 2 && st->dk != RENDER_ESTEP_NONE) { /* (render_split_edge steps these) */
-        v = (uint64_t)st->val + (uint64_t)st->jump;
-        col = st->col + st->dk;
-        if ((int64_t)v < 0) {
-            v += ub;
-            col++;
-        }
-    } else if (st->iy == iy) {
+    if (st->iy == iy) {
         v = (uint64_t)st->val;
         col = st->col;
     } else {
