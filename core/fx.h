@@ -469,22 +469,24 @@ static inline void fx128_copy(fx128_t *dst, const fx128_t *src)
     dst->hi = src->hi;
 }
 #if (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
-/* Armv7-M: a carry chain on the four words (ADDS, three ADCS), where
- * gcc's C builds the carry from a compare. (Early-clobber: no input may
- * share a register with a word written before the last input is read.) */
+/* Armv7-M: a op b as a carry (borrow) chain on the four words: `first`
+ * on the low words, `next` twice, `last` on the high words, where gcc's C
+ * builds the carry from a compare. (Early-clobber: no input may share a
+ * register with a word written before the last input is read.) */
+#define FX128_CHAIN(a, b, first, next, last)                                                                   \
+    uint32_t w0 = (uint32_t)(a).lo, w1 = (uint32_t)((a).lo >> 32), w2 = (uint32_t)(a).hi,                      \
+             w3 = (uint32_t)((uint64_t)(a).hi >> 32);                                                          \
+    __asm__(first " %[w0], %[w0], %[b0]\n\t" next " %[w1], %[w1], %[b1]\n\t" next " %[w2], %[w2], %[b2]\n\t" last \
+                  " %[w3], %[w3], %[b3]"                                                                       \
+            : [w0] "+&r"(w0), [w1] "+&r"(w1), [w2] "+&r"(w2), [w3] "+&r"(w3)                                   \
+            : [b0] "r"((uint32_t)(b).lo), [b1] "r"((uint32_t)((b).lo >> 32)), [b2] "r"((uint32_t)(b).hi),       \
+              [b3] "r"((uint32_t)((uint64_t)(b).hi >> 32))                                                     \
+            : "cc");                                                                                           \
+    fx128_t r = {(uint64_t)w1 << 32 | w0, (int64_t)((uint64_t)w3 << 32 | w2)};                                 \
+    return r
 static inline __attribute__((always_inline)) fx128_t fx128_add(fx128_t a, fx128_t b)
 {
-    uint32_t w0 = (uint32_t)a.lo, w1 = (uint32_t)(a.lo >> 32), w2 = (uint32_t)a.hi, w3 = (uint32_t)((uint64_t)a.hi >> 32);
-    __asm__("adds %[w0], %[w0], %[b0]\n\t"
-            "adcs %[w1], %[w1], %[b1]\n\t"
-            "adcs %[w2], %[w2], %[b2]\n\t"
-            "adc %[w3], %[w3], %[b3]"
-            : [w0] "+&r"(w0), [w1] "+&r"(w1), [w2] "+&r"(w2), [w3] "+&r"(w3)
-            : [b0] "r"((uint32_t)b.lo), [b1] "r"((uint32_t)(b.lo >> 32)), [b2] "r"((uint32_t)b.hi),
-              [b3] "r"((uint32_t)((uint64_t)b.hi >> 32))
-            : "cc");
-    fx128_t r = {(uint64_t)w1 << 32 | w0, (int64_t)((uint64_t)w3 << 32 | w2)};
-    return r;
+    FX128_CHAIN(a, b, "adds", "adcs", "adc");
 }
 #else
 static inline fx128_t fx128_add(fx128_t a, fx128_t b)
@@ -536,21 +538,11 @@ static inline fx128_t fx128_neg(fx128_t a)
     return r;
 }
 #if (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
-/* Armv7-M: a borrow chain (SUBS, three SBCS). */
 static inline __attribute__((always_inline)) fx128_t fx128_sub(fx128_t a, fx128_t b)
 {
-    uint32_t w0 = (uint32_t)a.lo, w1 = (uint32_t)(a.lo >> 32), w2 = (uint32_t)a.hi, w3 = (uint32_t)((uint64_t)a.hi >> 32);
-    __asm__("subs %[w0], %[w0], %[b0]\n\t"
-            "sbcs %[w1], %[w1], %[b1]\n\t"
-            "sbcs %[w2], %[w2], %[b2]\n\t"
-            "sbc %[w3], %[w3], %[b3]"
-            : [w0] "+&r"(w0), [w1] "+&r"(w1), [w2] "+&r"(w2), [w3] "+&r"(w3)
-            : [b0] "r"((uint32_t)b.lo), [b1] "r"((uint32_t)(b.lo >> 32)), [b2] "r"((uint32_t)b.hi),
-              [b3] "r"((uint32_t)((uint64_t)b.hi >> 32))
-            : "cc");
-    fx128_t r = {(uint64_t)w1 << 32 | w0, (int64_t)((uint64_t)w3 << 32 | w2)};
-    return r;
+    FX128_CHAIN(a, b, "subs", "sbcs", "sbc"); /* (FX128_CHAIN: fx128_add's) */
 }
+#undef FX128_CHAIN
 #else
 static inline fx128_t fx128_sub(fx128_t a, fx128_t b)
 {
