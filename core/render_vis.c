@@ -662,9 +662,11 @@ __attribute__((noinline)) static bool render_prow_range(const render_t *r, const
         return render_plane_range(r, p, 0, r->cam->width - 1, iy, lo, hi);
     if (pr->state[j] == 0)
         pr->state[j] = render_plane_range(r, p, 0, r->cam->width - 1, iy, &pr->lo[j], &pr->hi[j]) ? 1 : 2;
+    if (pr->state[j] != 1)
+        return false; /* (lo, hi not set: the caller reads them only on true) */
     *lo = pr->lo[j];
     *hi = pr->hi[j];
-    return pr->state[j] == 1;
+    return true;
 }
 
 /* Depth order against the planes on this row, for object i over its
