@@ -9,6 +9,10 @@
 # translation) and sums the instructions per function of the ELF's symbol
 # table. Counts cover the whole run (boot, set-up, frame dump), so they are
 # a little above make qemu's instructions=, which counts the render only.
+# Calls per pixel count the executions of the block that starts at a
+# function's first instruction (a loop back to that instruction would count
+# as a call too; the soft-float helpers and the renderer's functions begin
+# with their prologue), so "per call" is its instructions per call.
 # SIZE defaults to 80x60: the log grows with the instructions (about one
 # line per 5), so keep frames small.
 set -euo pipefail
@@ -35,8 +39,8 @@ arm-none-eabi-nm -n --defined-only "$elf" | awk '$2 ~ /^[tTwW]$/ { print $1, $3 
 px=$((${size%x*} * ${size#*x}))
 echo "Profile: $scene on $board ($number${extra:+, $extra}) at $size, QEMU instructions per function over the whole run (per pixel = / $px)."
 echo
-echo "| function | instructions | per pixel | share |"
-echo "|---|---:|---:|---:|"
+echo "| function | instructions | per pixel | share | calls per pixel | per call |"
+echo "|---|---:|---:|---:|---:|---:|"
 awk -v px="$px" -v syms="$tmp/syms" '
 function hex(s,   i, c, v) { v = 0; s = tolower(s); sub(/^0x/, "", s)
     for (i = 1; i <= length(s); i++) { c = index("0123456789abcdef", substr(s, i, 1)) - 1; v = v * 16 + c } return v }
@@ -45,17 +49,19 @@ BEGIN { n = 0
 /^IN:/ { inb = 1; pc = ""; cnt = 0; next }
 inb && /^0x[0-9a-f]+:/ { if (pc == "") pc = hex(substr($1, 1, length($1) - 1)); cnt++; next }
 inb && /^$/ { if (pc != "") size[pc] = cnt; inb = 0; next }
-/^Trace / { s = $0; sub(/^[^[]*\[/, "", s); split(s, f, "/"); p = hex(f[2]); execd[p] += size[p]; if (NF >= 5) qn[p] = $NF }
+/^Trace / { s = $0; sub(/^[^[]*\[/, "", s); split(s, f, "/"); p = hex(f[2]); execd[p] += size[p]; runs[p]++; if (NF >= 5) qn[p] = $NF }
 END {
     tot = 0
-    for (p in execd) { # function by binary search
-        l = 1; h = n; k = 0
+    for (ps in execd) { # function by binary search (p numeric: a key is a string)
+        p = ps + 0; l = 1; h = n; k = 0
         while (l <= h) { m = int((l + h) / 2); if (lo[m] <= p) { k = m; l = m + 1 } else h = m - 1 }
-        fn = (p in qn) ? qn[p] : k ? nm[k] : "?"
-        by[fn] += execd[p]; tot += execd[p] }
-    for (fnm in by) printf "%d %s\n", by[fnm], fnm
+        fn = (ps in qn) ? qn[ps] : k ? nm[k] : "?"
+        by[fn] += execd[ps]; tot += execd[ps]
+        if (k && lo[k] == p) calls[fn] += runs[ps] } # a block at the entry: a call
+    for (fnm in by) printf "%d %s %d\n", by[fnm], fnm, calls[fnm]
     printf "%d TOTAL\n", tot }' "$tmp/q.log" >"$tmp/by"
 tot=$(awk '$2 == "TOTAL" { print $1 }' "$tmp/by")
 grep -v ' TOTAL$' "$tmp/by" | sort -k1,1nr | head -n ${PROFILE_TOP:-15} |
-    awk -v px="$px" -v tot="$tot" '{ printf "| `%s` | %d | %.1f | %.1f %% |\n", $2, $1, $1 / px, 100 * $1 / tot }'
-awk -v px="$px" -v tot="$tot" 'BEGIN { printf "| all functions | %d | %.1f | 100 %% |\n", tot, tot / px }'
+    awk -v px="$px" -v tot="$tot" '{ printf "| `%s` | %d | %.1f | %.1f %% | %.2f | %s |\n", $2, $1, $1 / px, 100 * $1 / tot,
+        $3 / px, $3 ? sprintf("%.1f", $1 / $3) : "-" }'
+awk -v px="$px" -v tot="$tot" 'BEGIN { printf "| all functions | %d | %.1f | 100 %% | | |\n", tot, tot / px }'
