@@ -12,11 +12,15 @@
  *   bench fn=NAME calls=N ticks=T empty_ticks=E
  * firmware/benchfx.sh turns ticks into instructions.
  *
+ * firmware/benchfx_num.c times the same operations in float (float_NAME
+ * lines), for the table of Q16.16 against float operation by operation.
+ *
  * old_fx_div and old_fx_sqrt are the implementations before issue 9
  * (64-bit division by libgcc; a digit-by-digit 64-bit root), kept here only
  * for the before/after comparison. */
 #include "vec3.h"
 
+#include "benchfx.h"
 #include "board.h"
 #include "semihost.h"
 
@@ -112,6 +116,7 @@ static fx_t old_fx_sqrt(fx_t a)
 #define NOINLINE __attribute__((noinline))
 static NOINLINE fx_t w_old_fx_div(fx_t a, fx_t b) { return old_fx_div(a, b); }
 static NOINLINE fx_t w_old_fx_sqrt(fx_t a) { return old_fx_sqrt(a); }
+static NOINLINE fx_t w_fx_add(fx_t a, fx_t b) { return fx_add(a, b); }
 static NOINLINE fx_t w_fx_mul(fx_t a, fx_t b) { return fx_mul(a, b); }
 static NOINLINE fx_t empty_1(fx_t a)
 {
@@ -220,17 +225,22 @@ static NOINLINE uint64_t time_v(fnv_t f, const vec3_t *x, const vec3_t *y)
     return t;
 }
 
-static void report(const char *name, uint64_t ticks, uint64_t empty)
+void benchfx_report(const char *name, uint32_t calls, uint64_t ticks, uint64_t empty)
 {
     semihost_puts("bench fn=");
     semihost_puts(name);
     semihost_puts(" calls=");
-    semihost_put_u64(BENCH_N);
+    semihost_put_u64(calls);
     semihost_puts(" ticks=");
     semihost_put_u64(ticks);
     semihost_puts(" empty_ticks=");
     semihost_put_u64(empty);
     semihost_puts("\n");
+}
+
+static void report(const char *name, uint64_t ticks, uint64_t empty)
+{
+    benchfx_report(name, BENCH_N, ticks, empty);
 }
 
 int main(void);
@@ -241,6 +251,7 @@ int main(void)
     uint64_t e1 = time_1(empty_1, in_pos), e2 = time_2(empty_2, in_a, in_b);
     uint64_t ew1 = time_w1(empty_w1, in_wpos), ew2 = time_w2(empty_w2, in_wa, in_wb);
     uint64_t ev = time_v(empty_v, in_va, in_vb);
+    report("fx_add", time_2(w_fx_add, in_a, in_b), e2);
     report("fx_mul", time_2(w_fx_mul, in_a, in_b), e2);
     report("fx_div", time_2(fx_div, in_a, in_b), e2);
     report("fx_recip", time_1(fx_recip, in_a), e1);
@@ -258,6 +269,8 @@ int main(void)
     report("vec3_unit_len", time_v(v_unit_len, in_va, in_vb), ev);
     report("old_fx_div", time_2(w_old_fx_div, in_a, in_b), e2);
     report("old_fx_sqrt", time_1(w_old_fx_sqrt, in_pos), e1);
+    _Static_assert(sizeof(vec3_t) == 3 * sizeof(int32_t), "vec3_t is three int32_t");
+    benchfx_float(in_a, in_b, in_pos, (const int32_t *)(const void *)in_va, (const int32_t *)(const void *)in_vb);
     semihost_puts("ticks=0 done\n");
     return 0;
 }

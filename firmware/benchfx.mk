@@ -8,12 +8,22 @@
 BENCHFX_BOARDS ?= $(BOARDS)
 BENCHFX_SRC := firmware/benchfx.c core/fx.c firmware/startup.c firmware/semihost.c firmware/counter.c
 
-$(BUILD)/benchfx/%/benchfx.elf: $(BENCHFX_SRC) core/fx.h core/vec3.h core/num.h core/fxrt_config.h $(wildcard linker/*.ld)
+BENCHFX_HDR := firmware/benchfx.h core/fx.h core/vec3.h core/num.h core/fxrt_config.h
+
+# The float counterparts (firmware/benchfx_num.c), built as the float
+# renderer is (FXRT_NUMBER = 2: soft float on the M0 and M3, the FPU on the M4F).
+$(BUILD)/benchfx/%/benchfx_num.o: firmware/benchfx_num.c $(BENCHFX_HDR)
 	@mkdir -p $(@D)
 	@echo "  ARMCC   $@"
 	$(Q)$(ARM_CC) $(WARN) -O2 -g $(CPU_$*) -ffreestanding -ffunction-sections -fdata-sections \
-	  -DFXRT_NUMBER=1 -Icore -Ifirmware $(BENCHFX_SRC) -nostartfiles --specs=nano.specs --specs=nosys.specs \
-	  -Wl,--gc-sections -Wl,-Map=$(@D)/benchfx.map -Llinker -Tlinker/$*.ld -o $@
+	  -DFXRT_NUMBER=2 -Icore -Ifirmware -c $< -o $@
+
+$(BUILD)/benchfx/%/benchfx.elf: $(BENCHFX_SRC) $(BUILD)/benchfx/%/benchfx_num.o $(BENCHFX_HDR) $(wildcard linker/*.ld)
+	@mkdir -p $(@D)
+	@echo "  ARMCC   $@"
+	$(Q)$(ARM_CC) $(WARN) -O2 -g $(CPU_$*) -ffreestanding -ffunction-sections -fdata-sections \
+	  -DFXRT_NUMBER=1 -Icore -Ifirmware $(BENCHFX_SRC) $(BUILD)/benchfx/$*/benchfx_num.o -nostartfiles \
+	  --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Wl,-Map=$(@D)/benchfx.map -Llinker -Tlinker/$*.ld -lm -o $@
 
 bench-fx: $(BUILD)/tests/test_fx
 	$(Q)$(MAKE) --no-print-directory $(foreach b,$(BENCHFX_BOARDS),$(BUILD)/benchfx/$(b)/benchfx.elf)

@@ -9,7 +9,9 @@ out=$BUILD/benchfx
 mkdir -p "$out"
 shift_=5
 raw=$out/raw.txt
+rawf=$out/raw-float.txt
 : >"$raw"
+: >"$rawf"
 for spec in $BENCHFX_TICKS; do
     IFS=: read -r board machine tick_ns <<<"$spec"
     elf=$out/$board/benchfx.elf
@@ -36,6 +38,7 @@ for spec in $BENCHFX_TICKS; do
     sed -nE 's/^bench fn=([a-z0-9_]+) calls=([0-9]+) ticks=([0-9]+) empty_ticks=([0-9]+).*/\1 \2 \3 \4/p' "$log" |
         while read -r fn calls ticks empty; do
             case $fn in
+            fx_add) group="w_fx_add" ;;
             fx_mul) group="w_fx_mul" ;;
             fx_div) group="fx_div fx_recip_tab" ;;
             fx_recip) group="fx_recip fx_div fx_recip_tab" ;;
@@ -53,6 +56,9 @@ for spec in $BENCHFX_TICKS; do
             vec3_unit_len) group="v_unit_len fx_normalize3_len fx_rsqrt_q46 fx_rsqrt_tab" ;;
             old_fx_div) group="w_old_fx_div" ;;
             old_fx_sqrt) group="w_old_fx_sqrt" ;;
+            float_vec3_unit_len) group="f_unit_len" ;;
+            float_vec3_*) group="f_${fn#float_vec3_}" ;;
+            float_*) group="f_${fn#float_}" ;;
             *) group=$fn ;;
             esac
             size=$(awk -v g="$group" 'BEGIN { n = split(g, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
@@ -62,10 +68,13 @@ for spec in $BENCHFX_TICKS; do
                     return v }
                 END { print s + 0 }' "$nm_out")
             libgcc=$(awk -v g="$group" 'BEGIN { n = split(g, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
-                { base = $1; sub(/\..*/, "", base) } (base in want) && $2 ~ /^__/ { print $2 }' "$dis" | sort -u | paste -sd, -)
+                { base = $1; sub(/\..*/, "", base) } (base in want) && $2 ~ /^__|^sqrtf$/ { print $2 }' "$dis" | sort -u | paste -sd, -)
             instr=$(awk -v t="$ticks" -v e="$empty" -v ns="$tick_ns" -v s=$shift_ -v c="$calls" \
                 'BEGIN { printf "%.1f", (t - e) * ns / 2^s / c }')
-            echo "$fn $board $instr $size ${libgcc:--}" >>"$raw"
+            case $fn in
+            float_*) echo "$fn $board $instr $size ${libgcc:--}" >>"$rawf" ;;
+            *) echo "$fn $board $instr $size ${libgcc:--}" >>"$raw" ;;
+            esac
         done
 done
 # Worst errors from the host test (FX_TEST_RANDOM random inputs per function).
@@ -92,21 +101,46 @@ boards=$(for spec in $BENCHFX_TICKS; do echo "${spec%%:*}"; done | paste -sd' ' 
                 printf " %s / %s | %s | %s |\n", sz[fn, b[1]], sz[fn, b[nb]], lg[fn, b[nb]],
                     (fn in err) ? err[fn] : ((fn ~ /^old_/) ? "0.5 (before)" : "-") } }' "$raw"
 } >"$out/benchfx.md"
+# Q16.16 against float, operation by operation (benchfx_num.c): the same
+# operation's instructions per call in each build, and their ratio
+# (float / q16: how many times fewer instructions Q16.16 takes).
+{
+    awk -v boards="$boards" -v rawf="$rawf" '
+        BEGIN { nb = split(boards, b, " ")
+                while ((getline l < rawf) > 0) { split(l, f, " "); fl[f[1], f[2]] = f[3]; lg[f[1], f[2]] = f[5] }
+                np = split("add:fx_add:float_add mul:fx_mul:float_mul div:fx_div:float_div sqrt:fx_sqrt:float_sqrt " \
+                           "1/sqrt:fx_rsqrt:float_rsqrt dot:vec3_dot:float_vec3_dot cross:vec3_cross:float_vec3_cross " \
+                           "length:vec3_len:float_vec3_len normalise:vec3_normalize:float_vec3_normalize " \
+                           "unit+length:vec3_unit_len:float_vec3_unit_len", pairs, " ")
+                printf "| operation | Q16.16 function |"; for (i = 1; i <= nb; i++) printf " %s: q16 / float instr. (float ÷ q16) |", b[i]
+                printf " float calls (%s) |\n", b[nb]
+                printf "|---|---|"; for (i = 1; i <= nb; i++) printf "---:|"; printf "---|\n" }
+        { q[$1, $2] = $3 }
+        END { for (k = 1; k <= np; k++) { split(pairs[k], f, ":"); op = f[1]; gsub(/\+/, " and ", op)
+                printf "| %s | %s |", op, f[2]
+                for (i = 1; i <= nb; i++) { a = q[f[2], b[i]]; c = fl[f[3], b[i]]
+                    printf " %s / %s (%s) |", a, c, (a > 0 && c != "") ? sprintf("%.1f×", c / a) : "-" }
+                printf " %s |\n", lg[f[3], b[nb]] } }' "$raw"
+} >"$out/benchfx-versus.md"
 cat "$out/benchfx.md"
+echo
+cat "$out/benchfx-versus.md"
 # BENCHFX_UPDATE_DOCS=1: replace the table between the benchfx markers in
 # docs/BENCHMARKS.md (the rest of the file is left as it is).
 if [ "${BENCHFX_UPDATE_DOCS:-0}" = 1 ]; then
     doc=docs/BENCHMARKS.md
-    if grep -q '<!-- benchfx:table -->' "$doc"; then
-        awk -v tab="$out/benchfx.md" '
-            /<!-- benchfx:table -->/ { print; while ((getline l < tab) > 0) print l; skip = 1; next }
-            /<!-- \/benchfx:table -->/ { skip = 0 }
+    for block in table:benchfx.md versus:benchfx-versus.md; do
+        mark=${block%%:*} tab=$out/${block#*:}
+        if ! grep -q "<!-- benchfx:$mark -->" "$doc"; then
+            echo "bench-fx: no <!-- benchfx:$mark --> marker in $doc" >&2
+            exit 1
+        fi
+        awk -v tab="$tab" -v m="benchfx:$mark" '
+            $0 == "<!-- " m " -->" { print; while ((getline l < tab) > 0) print l; skip = 1; next }
+            $0 == "<!-- /" m " -->" { skip = 0 }
             !skip { print }' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
-        echo "bench-fx: updated $doc"
-    else
-        echo "bench-fx: no <!-- benchfx:table --> marker in $doc" >&2
-        exit 1
-    fi
+    done
+    echo "bench-fx: updated $doc"
 fi
 echo
 echo "(per-board rows: $out/benchfx-long.md; text bytes are the function's own symbols,"

@@ -1,0 +1,144 @@
+/* benchfx_num: the float counterparts of benchfx.c's Q16.16 operations,
+ * built with FXRT_NUMBER = FXRT_FLOAT: the renderer's own float
+ * expressions (core/num.h, core/vec3.h), soft float on the M0 and M3
+ * (libgcc's __aeabi_f* helpers), the FPU on the M4F. Timed like
+ * benchfx.c: each through a function pointer, less the same loop around
+ * an empty function of its signature, so a figure is one out-of-line
+ * call. The inputs are benchfx.c's first BENCHFX_FLOAT_N (the micro:bit's
+ * RAM), converted from Q16.16 before timing. make bench-fx prints them
+ * beside the Q16.16 figures (docs/BENCHMARKS.md, "Q16.16 against float,
+ * operation by operation"). */
+#include "vec3.h"
+
+#include "benchfx.h"
+#include "board.h"
+
+#if FXRT_NUMBER != FXRT_FLOAT
+#error "benchfx_num.c is the float build: compile it with -DFXRT_NUMBER=2"
+#endif
+
+#define N BENCHFX_FLOAT_N
+#define NOINLINE __attribute__((noinline))
+
+static float f_a[N], f_b[N], f_pos[N];
+static vec3_t f_va[N], f_vb[N];
+static volatile uint32_t fsink;
+
+static float from_q16(int32_t v) { return (float)v / 65536.0f; }
+
+/* The empty functions keep their arguments where the ABI passes them: FPU
+ * registers ("t") with the hard-float ABI (M4F), core registers otherwise. */
+#ifdef __ARM_PCS_VFP
+#define FREG "+t"
+#else
+#define FREG "+r"
+#endif
+static NOINLINE float f_empty_1(float a)
+{
+    __asm__ volatile("" : FREG(a));
+    return a;
+}
+static NOINLINE float f_empty_2(float a, float b)
+{
+    __asm__ volatile("" : FREG(a), FREG(b));
+    return a;
+}
+static NOINLINE void f_empty_v(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    __asm__ volatile("" : : "r"(out), "r"(a), "r"(b) : "memory");
+}
+static NOINLINE float f_add(float a, float b) { return num_add(a, b); }
+static NOINLINE float f_mul(float a, float b) { return num_mul(a, b); }
+static NOINLINE float f_div(float a, float b) { return num_div(a, b); }
+static NOINLINE float f_sqrt(float a) { return num_sqrt(a); }
+static NOINLINE float f_rsqrt(float a) { return num_rsqrt(a); }
+static NOINLINE void f_dot(vec3_t *out, const vec3_t *a, const vec3_t *b) { out->x = vec3_dot(*a, *b); }
+static NOINLINE void f_cross(vec3_t *out, const vec3_t *a, const vec3_t *b) { *out = vec3_cross(*a, *b); }
+static NOINLINE void f_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    (void)b;
+    out->x = vec3_len(*a);
+}
+static NOINLINE void f_normalize(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    (void)b;
+    *out = *a;
+    vec3_normalize(out);
+}
+static NOINLINE void f_unit_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
+{
+    (void)b;
+    num_t len = 0;
+    vec3_unit_len(*a, out, &len);
+    out->x += len;
+}
+
+typedef float (*ffn1_t)(float);
+typedef float (*ffn2_t)(float, float);
+typedef void (*ffnv_t)(vec3_t *, const vec3_t *, const vec3_t *);
+
+/* The result's bits go to a volatile sink, so no call is optimised away. */
+static uint32_t bits(float v)
+{
+    union {
+        float f;
+        uint32_t u;
+    } c = {v};
+    return c.u;
+}
+static NOINLINE uint64_t f_time_1(ffn1_t f, const float *x)
+{
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < N; i++)
+        acc += bits(f(x[i]));
+    uint64_t t = counter_ticks() - t0;
+    fsink = acc;
+    return t;
+}
+static NOINLINE uint64_t f_time_2(ffn2_t f, const float *x, const float *y)
+{
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < N; i++)
+        acc += bits(f(x[i], y[i]));
+    uint64_t t = counter_ticks() - t0;
+    fsink = acc;
+    return t;
+}
+static NOINLINE uint64_t f_time_v(ffnv_t f, const vec3_t *x, const vec3_t *y)
+{
+    vec3_t out = vec3_make(0.0f, 0.0f, 0.0f);
+    uint32_t acc = 0;
+    uint64_t t0 = counter_ticks();
+    for (int i = 0; i < N; i++) {
+        f(&out, &x[i], &y[i]);
+        acc += bits(out.x);
+    }
+    uint64_t t = counter_ticks() - t0;
+    fsink = acc;
+    return t;
+}
+
+void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const int32_t *va, const int32_t *vb)
+{
+    for (int i = 0; i < N; i++) {
+        f_a[i] = from_q16(a[i]);
+        f_b[i] = from_q16(b[i]);
+        f_pos[i] = from_q16(pos[i]);
+        f_va[i] = vec3_make(from_q16(va[3 * i]), from_q16(va[3 * i + 1]), from_q16(va[3 * i + 2]));
+        f_vb[i] = vec3_make(from_q16(vb[3 * i]), from_q16(vb[3 * i + 1]), from_q16(vb[3 * i + 2]));
+    }
+    uint64_t e1 = f_time_1(f_empty_1, f_pos), e2 = f_time_2(f_empty_2, f_a, f_b);
+    uint64_t ev = f_time_v(f_empty_v, f_va, f_vb);
+    benchfx_report("float_add", N, f_time_2(f_add, f_a, f_b), e2);
+    benchfx_report("float_mul", N, f_time_2(f_mul, f_a, f_b), e2);
+    benchfx_report("float_div", N, f_time_2(f_div, f_a, f_b), e2);
+    benchfx_report("float_sqrt", N, f_time_1(f_sqrt, f_pos), e1);
+    benchfx_report("float_rsqrt", N, f_time_1(f_rsqrt, f_pos), e1);
+    benchfx_report("float_vec3_dot", N, f_time_v(f_dot, f_va, f_vb), ev);
+    benchfx_report("float_vec3_cross", N, f_time_v(f_cross, f_va, f_vb), ev);
+    benchfx_report("float_vec3_len", N, f_time_v(f_len, f_va, f_vb), ev);
+    benchfx_report("float_vec3_normalize", N, f_time_v(f_normalize, f_va, f_vb), ev);
+    benchfx_report("float_vec3_unit_len", N, f_time_v(f_unit_len, f_va, f_vb), ev);
+}
