@@ -245,6 +245,18 @@
 #define FXRT_NO_ORDER 0
 #endif
 
+/* FXRT_BOUND_NO_LIGHT_SUM 1 = measurement only, for make bench-lit-bound
+ * (docs/BENCHMARKS.md, "Lit scenes"): every lit pixel still gets its
+ * camera ray, hit point and normal, but its light sum stops before the
+ * first light (the ambient term alone: no light vectors, no n . l, no
+ * Phong term, no shadow rays). What is left is what a lit pixel costs
+ * before any light is summed; the frames are not the renderer's. Host
+ * keys (fxrt render --keys) still get the full light loop. 0 (default) =
+ * off. */
+#ifndef FXRT_BOUND_NO_LIGHT_SUM
+#define FXRT_BOUND_NO_LIGHT_SUM 0
+#endif
+
 /* FXRT_SPHERE_SEARCH: how the fast Q16.16 renderer finds the run of a
  * sphere alone on its row (the frame is the same either way):
  *   1 = binary searches with exact evaluations of the row's quadratic

@@ -222,6 +222,11 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
                             const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
                             uint8_t *mask)
 {
+#if FXRT_BOUND_NO_LIGHT_SUM
+    /* Measurement only (core/fxrt_config.h): no light sum at all. */
+    if (!mask && obj->mat.kind != MATERIAL_TRANSPARENT)
+        return obj->mat.kind == MATERIAL_FLAT || !k ? obj->color : k->ambient;
+#endif
     vec3_t p = *pp, n_geo = *n_geo_p, d = *dp;
     const material_t *m = &obj->mat;
     bool lit = m->kind != MATERIAL_FLAT;

@@ -66,6 +66,14 @@ bench-ablation: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) BOARD=$(BOARD) firmware/ablate.sh
 .PHONY: bench-ablation
 
+# How far the lit set's float / q16 ratio can go on a board (default the
+# micro:bit) with any light sum on top of today's hit point
+# (firmware/lit-bound.sh): make bench-lit-bound [LIT_BOUND_BOARD=...]
+LIT_BOUND_BOARD ?= microbit
+bench-lit-bound: deps $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) BOARD=$(LIT_BOUND_BOARD) firmware/lit-bound.sh
+.PHONY: bench-lit-bound
+
 # RAM per object of each kind and the most objects that fit each board at
 # FIT_SIZE (default 160x120), measured from the compiled firmware
 # (firmware/fit.sh; the same figures the fw link step prints when a scene
