@@ -321,7 +321,7 @@ static inline uint64_t fx_root64_est(uint64_t n)
         return sh ? (R + (1u << (sh - 1))) >> sh : R;
     }
     uint64_t q = (uint64_t)R << (k - 8); /* within 2^(k-7) + 2, below 2^32 */
-    int64_t d = (int64_t)(n - fx_umul32((uint32_t)q, (uint32_t)q));
+    int64_t d = (int64_t)(n - fx_usqr32((uint32_t)q));
     /* d / (2q) with 1 / (2 sqrt(n)) ~ y 2^-31 2^-k. */
     return (uint64_t)((int64_t)q + ((d * y) >> (31 + k)));
 }
@@ -338,7 +338,7 @@ uint32_t fx_isqrt64(uint64_t n)
         return 0;
     uint64_t q = fx_root64_est(n);
     uint32_t q32 = q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
-    int64_t d = (int64_t)(n - fx_umul32(q32, q32));
+    int64_t d = (int64_t)(n - fx_usqr32(q32));
     while (d < 0) { /* q^2 > n */
         q32--;
         d += 2 * (int64_t)q32 + 1;
@@ -360,7 +360,7 @@ fx_t fxw_sqrt(fxw_t w)
         return 0;
     uint64_t n = (uint64_t)w;
     uint64_t q = fx_root64_est(n); /* below 2^32: n < 2^63 */
-    int64_t d = (int64_t)(n - fx_umul32((uint32_t)q, (uint32_t)q)); /* q <= 2^32: q^2 mod 2^64 */
+    int64_t d = (int64_t)(n - fx_usqr32((uint32_t)q)); /* q <= 2^32: q^2 mod 2^64 */
     while (d > (int64_t)q) {
         d -= (int64_t)(2 * q + 1);
         q++;
@@ -380,7 +380,7 @@ static uint32_t fx_rsqrt_q46(uint32_t m)
     int32_t s, y;
     fx_sqrt_est(m, &s, &y);
     uint32_t Y = (uint32_t)y << 16;
-    uint32_t t = (uint32_t)(fx_umul32(Y, Y) >> 32);    /* ~ 2^60 / m */
+    uint32_t t = (uint32_t)(fx_usqr32(Y) >> 32);       /* ~ 2^60 / m */
     uint64_t f = 3 * ((uint64_t)1 << 60) - fx_umul32(m, t); /* ~ 2^61 */
     return (uint32_t)(fx_umul32(Y, (uint32_t)(f >> 30)) >> 31);
 }
@@ -643,7 +643,7 @@ static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], 
         s1 >>= -shift;
         s2 >>= -shift;
     }
-    uint64_t len2 = fx_umul32(s0, s0) + fx_umul32(s1, s1) + fx_umul32(s2, s2);
+    uint64_t len2 = fx_usqr32(s0) + fx_usqr32(s1) + fx_usqr32(s2);
     /* The top 32 bits of len2 with an even shift: len2 ~ top 2^(32 - e)
      * with top in [2^30, 2^32), so |s| ~ sqrt(top) 2^k with k = 16 - e/2,
      * 1 / |s| ~ Y 2^-46 / 2^k, and each component in Q16.16 is
@@ -731,7 +731,7 @@ fx128_t fx128_sqr(int64_t a)
 {
     uint64_t x = fx_uabs64(a);
     uint32_t x0 = (uint32_t)x, x1 = (uint32_t)(x >> 32);
-    uint64_t p00 = fx_umul32(x0, x0), p01 = fx_umul32(x0, x1), p11 = fx_umul32(x1, x1);
+    uint64_t p00 = fx_usqr32(x0), p01 = fx_umul32(x0, x1), p11 = fx_usqr32(x1);
     uint64_t mid = (p00 >> 32) + 2 * (uint64_t)(uint32_t)p01;
     fx128_t r;
     r.lo = (mid << 32) | (uint32_t)p00;

@@ -159,7 +159,7 @@ static inline num_t numw_pow_int(numw_t x, uint32_t k)
         }
         k >>= 1;
         if (k) {
-            b = (uint32_t)((fx_umul32(b, b) + 0x40000000u) >> 31);
+            b = (uint32_t)((fx_usqr32(b) + 0x40000000u) >> 31);
             FXRT_COUNT(pow_products);
         }
     }

@@ -452,6 +452,22 @@ int main(int argc, char **argv)
         }
         CHECK_MSG(bad == 0, "fx_smul_unit: %ld products differ from the exact one", bad);
     }
+    /* fx_usqr32 (the M0: three 16-bit products, the middle one's 2^17
+     * split across the words): a^2 exactly, for hard cases (each half 0,
+     * 1 or 2^16 - 1, where the carries are) and random a of every
+     * magnitude. */
+    {
+        static const uint32_t sq[] = {0, 1, 0xffffu, 0x10000u, 0x1ffffu, 0x7fffffffu, 0x80000000u, 0xffffffffu,
+                                      0xffff0000u, 0xffff0001u, 0x0001ffffu, 0x8000ffffu, 0x40000000u, 0x3fffffffu};
+        long bad = 0;
+        for (size_t i = 0; i < sizeof sq / sizeof sq[0]; i++)
+            bad += fx_usqr32(sq[i]) != (uint64_t)sq[i] * sq[i];
+        for (long i = 0; i < n_random; i++) {
+            uint32_t a = rng() >> (i & 1 ? rng() % 32 : 0);
+            bad += fx_usqr32(a) != (uint64_t)a * a;
+        }
+        CHECK_MSG(bad == 0, "fx_usqr32: %ld squares differ from the exact one", bad);
+    }
     /* numw_dot3_units (the M0: fx_dot3_small within [-2^18, 2^18), the
      * product sum outside): the exact a . u for unit vectors' components,
      * the range's ends, and components beyond it in either vector. */
