@@ -68,20 +68,52 @@ static inline fx_t fx_sat64(int64_t v)
     return v < 0 ? FX_MIN : FX_MAX;
 }
 
-/* a + b, a - b, -a: exact, saturating. */
+/* a + b, a - b, -a: exact, saturating. On Armv6-M (Thumb-1) gcc tests
+ * the overflow with three logic operations on the signs; the ADDS/SUBS
+ * there sets the V flag, and FX_SAT_ASM branches on it: two instructions
+ * when nothing saturates. Its rare path forms a < 0 ? FX_MIN : FX_MAX as
+ * 2^31 + ~(a >> 31) (b's register is a scratch copy). The same values:
+ * tests/onboard_main.c checks them on the M0 against 64-bit C. */
+#if defined(__GNUC__) && defined(__thumb__) && !defined(__thumb2__)
+#define FX_SAT_ASM(op, a, b)                                                                                   \
+    __extension__({                                                                                            \
+        fx_t s_, t_ = (b);                                                                                     \
+        __asm__(".syntax unified\n\t" op " %0, %2, %1\n\t"                                                    \
+                   "bvc 1f\n\t"                                                                              \
+                   "asrs %1, %2, #31\n\t"                                                                    \
+                   "mvns %1, %1\n\t"                                                                         \
+                   "movs %0, #1\n\t"                                                                         \
+                   "lsls %0, %0, #31\n\t"                                                                    \
+                   "adds %0, %0, %1\n"                                                                        \
+                   "1:\n\t"                                                                                   \
+                   ".syntax divided"                                                                         \
+                : "=&l"(s_), "+l"(t_)                                                                          \
+                : "l"(a)                                                                                       \
+                : "cc");                                                                                       \
+        s_;                                                                                                    \
+    })
+#endif
 static inline fx_t fx_add(fx_t a, fx_t b)
 {
+#ifdef FX_SAT_ASM
+    return FX_SAT_ASM("adds", a, b);
+#else
     fx_t s;
     if (__builtin_add_overflow(a, b, &s))
         return a < 0 ? FX_MIN : FX_MAX;
     return s;
+#endif
 }
 static inline fx_t fx_sub(fx_t a, fx_t b)
 {
+#ifdef FX_SAT_ASM
+    return FX_SAT_ASM("subs", a, b);
+#else
     fx_t s;
     if (__builtin_sub_overflow(a, b, &s))
         return a < 0 ? FX_MIN : FX_MAX;
     return s;
+#endif
 }
 static inline fx_t fx_neg(fx_t a)
 {

@@ -127,8 +127,9 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
     return 0;
 }
 
-/* The core's inline assembly (Armv6-M: fx_lin2_small, fx128_add_to;
- * Armv7-M: fx_lin2_small, fx128_add, fx128_sub; the C elsewhere) against
+/* The core's inline assembly (Armv6-M: fx_lin2_small, fx128_add_to,
+ * fx_add, fx_sub; Armv7-M: fx_lin2_small, fx128_add, fx128_sub; the C
+ * elsewhere) against
  * plain 64-bit C arithmetic (libgcc's products on the M0), on edge values
  * and pseudo-random ones: the number of mismatches. */
 static uint32_t onb_rng_state = 0x9E3779B9u;
@@ -168,6 +169,13 @@ __attribute__((noinline)) static uint32_t onb_check_arith(void)
         bad += s.lo != lo || (uint64_t)s.hi != hi;
         fx128_add_to(&x, &y);
         bad += x.lo != lo || (uint64_t)x.hi != hi;
+        /* Saturating 32-bit sums: the exact sum in 64 bits, clamped. */
+        int32_t p = (int32_t)onb_word(), q = (int32_t)onb_word();
+        int64_t es = (int64_t)p + q, ed = (int64_t)p - q;
+        int32_t ws = es > INT32_MAX ? INT32_MAX : es < INT32_MIN ? INT32_MIN : (int32_t)es;
+        int32_t wd = ed > INT32_MAX ? INT32_MAX : ed < INT32_MIN ? INT32_MIN : (int32_t)ed;
+        bad += fx_add(p, q) != ws;
+        bad += fx_sub(p, q) != wd;
     }
     return bad;
 }
@@ -180,7 +188,7 @@ int main(void)
     if (arith) {
         semihost_puts("error=arith: ");
         semihost_put_u64(arith);
-        semihost_puts(" mismatches of fx_lin2_small / fx128_add / fx128_sub / fx128_add_to against 64-bit C\n");
+        semihost_puts(" mismatches of fx_lin2_small / fx128_add / fx128_sub / fx128_add_to / fx_add / fx_sub against 64-bit C\n");
         failed = 1;
     }
     uint64_t total = 0;
