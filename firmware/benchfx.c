@@ -21,6 +21,8 @@
 #include "vec3.h"
 
 #include "benchfx.h"
+#define BENCHFX_VEC_PREFIX v_
+#include "benchfx_gen.h"
 #include "board.h"
 #include "semihost.h"
 
@@ -138,92 +140,17 @@ static NOINLINE fx_t empty_w2(fxw_t a, fxw_t b)
     __asm__ volatile("" : "+r"(a), "+r"(b));
     return (fx_t)a;
 }
-static NOINLINE void empty_v(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    __asm__ volatile("" : : "r"(out), "r"(a), "r"(b) : "memory");
-}
-static NOINLINE void v_dot(vec3_t *out, const vec3_t *a, const vec3_t *b) { out->x = vec3_dot(*a, *b); }
-static NOINLINE void v_cross(vec3_t *out, const vec3_t *a, const vec3_t *b) { *out = vec3_cross(*a, *b); }
-static NOINLINE void v_normalize(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    (void)b;
-    *out = *a;
-    vec3_normalize(out);
-}
-static NOINLINE void v_unit_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    (void)b;
-    num_t len = 0;
-    vec3_unit_len(*a, out, &len);
-    out->x += len;
-}
-static NOINLINE void v_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    (void)b;
-    out->x = vec3_len(*a);
-}
-
 typedef fx_t (*fn1_t)(fx_t);
 typedef fx_t (*fn2_t)(fx_t, fx_t);
 typedef fx_t (*fnw1_t)(fxw_t);
 typedef fx_t (*fnw2_t)(fxw_t, fxw_t);
 typedef void (*fnv_t)(vec3_t *, const vec3_t *, const vec3_t *);
 
-/* The timed loops; noinline so every loop is the same code for every
- * function of a signature (only the pointer differs). */
-static NOINLINE uint64_t time_1(fn1_t f, const fx_t *x)
-{
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < BENCH_N; i++)
-        acc += (uint32_t)f(x[i]);
-    uint64_t t = counter_ticks() - t0;
-    sink = acc;
-    return t;
-}
-static NOINLINE uint64_t time_2(fn2_t f, const fx_t *x, const fx_t *y)
-{
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < BENCH_N; i++)
-        acc += (uint32_t)f(x[i], y[i]);
-    uint64_t t = counter_ticks() - t0;
-    sink = acc;
-    return t;
-}
-static NOINLINE uint64_t time_w1(fnw1_t f, const fxw_t *x)
-{
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < BENCH_N; i++)
-        acc += (uint32_t)f(x[i]);
-    uint64_t t = counter_ticks() - t0;
-    sink = acc;
-    return t;
-}
-static NOINLINE uint64_t time_w2(fnw2_t f, const fxw_t *x, const fxw_t *y)
-{
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < BENCH_N; i++)
-        acc += (uint32_t)f(x[i], y[i]);
-    uint64_t t = counter_ticks() - t0;
-    sink = acc;
-    return t;
-}
-static NOINLINE uint64_t time_v(fnv_t f, const vec3_t *x, const vec3_t *y)
-{
-    vec3_t out = vec3_make(0, 0, 0);
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < BENCH_N; i++) {
-        f(&out, &x[i], &y[i]);
-        acc += (uint32_t)out.x;
-    }
-    uint64_t t = counter_ticks() - t0;
-    sink = acc;
-    return t;
-}
+/* The timed loops (benchfx_gen.h): time_1, time_2, time_v over the fx_t
+ * and vector inputs, timew_1, timew_2 over the wide ones. */
+static uint32_t fx_word(fx_t v) { return (uint32_t)v; }
+BENCHFX_TIMERS(time, fx_t, fn1_t, fn2_t, fnv_t, BENCH_N, fx_word, sink)
+BENCHFX_TIMERS(timew, fxw_t, fnw1_t, fnw2_t, fnv_t, BENCH_N, fx_word, sink)
 
 void benchfx_report(const char *name, uint32_t calls, uint64_t ticks, uint64_t empty)
 {
@@ -249,15 +176,15 @@ int main(void)
     make_inputs();
     counter_start();
     uint64_t e1 = time_1(empty_1, in_pos), e2 = time_2(empty_2, in_a, in_b);
-    uint64_t ew1 = time_w1(empty_w1, in_wpos), ew2 = time_w2(empty_w2, in_wa, in_wb);
-    uint64_t ev = time_v(empty_v, in_va, in_vb);
+    uint64_t ew1 = timew_1(empty_w1, in_wpos), ew2 = timew_2(empty_w2, in_wa, in_wb);
+    uint64_t ev = time_v(v_empty, in_va, in_vb);
     report("fx_add", time_2(w_fx_add, in_a, in_b), e2);
     report("fx_mul", time_2(w_fx_mul, in_a, in_b), e2);
     report("fx_div", time_2(fx_div, in_a, in_b), e2);
     report("fx_recip", time_1(fx_recip, in_a), e1);
     report("fx_sqrt", time_1(fx_sqrt, in_pos), e1);
-    report("fxw_sqrt", time_w1(fxw_sqrt, in_wpos), ew1);
-    report("fxw_div", time_w2(fxw_div, in_wa, in_wb), ew2);
+    report("fxw_sqrt", timew_1(fxw_sqrt, in_wpos), ew1);
+    report("fxw_div", timew_2(fxw_div, in_wa, in_wb), ew2);
     report("fx_rsqrt", time_1(fx_rsqrt, in_pos), e1);
     report("fx_sin_deg", time_1(fx_sin_deg, in_deg), e1);
     report("fx_cos_deg", time_1(fx_cos_deg, in_deg), e1);

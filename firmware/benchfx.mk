@@ -8,7 +8,7 @@
 BENCHFX_BOARDS ?= $(BOARDS)
 BENCHFX_SRC := firmware/benchfx.c core/fx.c firmware/startup.c firmware/semihost.c firmware/counter.c
 
-BENCHFX_HDR := firmware/benchfx.h core/fx.h core/vec3.h core/num.h core/fxrt_config.h
+BENCHFX_HDR := firmware/benchfx.h firmware/benchfx_gen.h core/fx.h core/vec3.h core/num.h core/fxrt_config.h
 
 # The float counterparts (firmware/benchfx_num.c), built as the float
 # renderer is (FXRT_NUMBER = 2: soft float on the M0 and M3, the FPU on the M4F).

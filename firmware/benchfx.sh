@@ -56,7 +56,6 @@ for spec in $BENCHFX_TICKS; do
             vec3_unit_len) group="v_unit_len fx_normalize3_len fx_rsqrt_q46 fx_rsqrt_tab" ;;
             old_fx_div) group="w_old_fx_div" ;;
             old_fx_sqrt) group="w_old_fx_sqrt" ;;
-            float_vec3_unit_len) group="f_unit_len" ;;
             float_vec3_*) group="f_${fn#float_vec3_}" ;;
             float_*) group="f_${fn#float_}" ;;
             *) group=$fn ;;

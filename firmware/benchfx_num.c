@@ -11,6 +11,8 @@
 #include "vec3.h"
 
 #include "benchfx.h"
+#define BENCHFX_VEC_PREFIX f_
+#include "benchfx_gen.h"
 #include "board.h"
 
 #if FXRT_NUMBER != FXRT_FLOAT
@@ -43,36 +45,11 @@ static NOINLINE float f_empty_2(float a, float b)
     __asm__ volatile("" : FREG(a), FREG(b));
     return a;
 }
-static NOINLINE void f_empty_v(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    __asm__ volatile("" : : "r"(out), "r"(a), "r"(b) : "memory");
-}
 static NOINLINE float f_add(float a, float b) { return num_add(a, b); }
 static NOINLINE float f_mul(float a, float b) { return num_mul(a, b); }
 static NOINLINE float f_div(float a, float b) { return num_div(a, b); }
 static NOINLINE float f_sqrt(float a) { return num_sqrt(a); }
 static NOINLINE float f_rsqrt(float a) { return num_rsqrt(a); }
-static NOINLINE void f_dot(vec3_t *out, const vec3_t *a, const vec3_t *b) { out->x = vec3_dot(*a, *b); }
-static NOINLINE void f_cross(vec3_t *out, const vec3_t *a, const vec3_t *b) { *out = vec3_cross(*a, *b); }
-static NOINLINE void f_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    (void)b;
-    out->x = vec3_len(*a);
-}
-static NOINLINE void f_normalize(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    (void)b;
-    *out = *a;
-    vec3_normalize(out);
-}
-static NOINLINE void f_unit_len(vec3_t *out, const vec3_t *a, const vec3_t *b)
-{
-    (void)b;
-    num_t len = 0;
-    vec3_unit_len(*a, out, &len);
-    out->x += len;
-}
-
 typedef float (*ffn1_t)(float);
 typedef float (*ffn2_t)(float, float);
 typedef void (*ffnv_t)(vec3_t *, const vec3_t *, const vec3_t *);
@@ -86,39 +63,7 @@ static uint32_t bits(float v)
     } c = {v};
     return c.u;
 }
-static NOINLINE uint64_t f_time_1(ffn1_t f, const float *x)
-{
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < N; i++)
-        acc += bits(f(x[i]));
-    uint64_t t = counter_ticks() - t0;
-    fsink = acc;
-    return t;
-}
-static NOINLINE uint64_t f_time_2(ffn2_t f, const float *x, const float *y)
-{
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < N; i++)
-        acc += bits(f(x[i], y[i]));
-    uint64_t t = counter_ticks() - t0;
-    fsink = acc;
-    return t;
-}
-static NOINLINE uint64_t f_time_v(ffnv_t f, const vec3_t *x, const vec3_t *y)
-{
-    vec3_t out = vec3_make(0.0f, 0.0f, 0.0f);
-    uint32_t acc = 0;
-    uint64_t t0 = counter_ticks();
-    for (int i = 0; i < N; i++) {
-        f(&out, &x[i], &y[i]);
-        acc += bits(out.x);
-    }
-    uint64_t t = counter_ticks() - t0;
-    fsink = acc;
-    return t;
-}
+BENCHFX_TIMERS(f_time, float, ffn1_t, ffn2_t, ffnv_t, N, bits, fsink)
 
 void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const int32_t *va, const int32_t *vb)
 {
@@ -130,7 +75,7 @@ void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const
         f_vb[i] = vec3_make(from_q16(vb[3 * i]), from_q16(vb[3 * i + 1]), from_q16(vb[3 * i + 2]));
     }
     uint64_t e1 = f_time_1(f_empty_1, f_pos), e2 = f_time_2(f_empty_2, f_a, f_b);
-    uint64_t ev = f_time_v(f_empty_v, f_va, f_vb);
+    uint64_t ev = f_time_v(f_empty, f_va, f_vb);
     benchfx_report("float_add", N, f_time_2(f_add, f_a, f_b), e2);
     benchfx_report("float_mul", N, f_time_2(f_mul, f_a, f_b), e2);
     benchfx_report("float_div", N, f_time_2(f_div, f_a, f_b), e2);
