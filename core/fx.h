@@ -70,11 +70,12 @@ static inline fx_t fx_sat64(int64_t v)
 
 /* a + b, a - b, -a: exact, saturating. On Armv6-M (Thumb-1) gcc tests
  * the overflow with three logic operations on the signs; the ADDS/SUBS
- * there sets the V flag, and FX_SAT_ASM branches on it: two instructions
+ * there sets the V flag, and FX_SAT_ASM (gcc only, as the other assembly
+ * here; clang takes the C) branches on it: two instructions
  * when nothing saturates. Its rare path forms a < 0 ? FX_MIN : FX_MAX as
  * 2^31 + ~(a >> 31) (b's register is a scratch copy). The same values:
  * tests/onboard_main.c checks them on the M0 against 64-bit C. */
-#if defined(__GNUC__) && defined(__thumb__) && !defined(__thumb2__)
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
 #define FX_SAT_ASM(op, a, b)                                                                                   \
     __extension__({                                                                                            \
         fx_t s_, t_ = (b);                                                                                     \

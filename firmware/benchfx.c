@@ -27,6 +27,7 @@
 #include "semihost.h"
 
 #define BENCH_N 128 /* inputs fit the micro:bit's 16 KB RAM */
+_Static_assert(BENCH_N == BENCHFX_FLOAT_N, "the float operations time the same inputs");
 
 static fx_t in_a[BENCH_N], in_b[BENCH_N], in_pos[BENCH_N], in_deg[BENCH_N], in_cot[BENCH_N];
 static fxw_t in_wa[BENCH_N], in_wb[BENCH_N], in_wpos[BENCH_N];

@@ -8,11 +8,11 @@
 /* One "bench fn=NAME calls=N ticks=T empty_ticks=E" line. */
 void benchfx_report(const char *name, uint32_t calls, uint64_t ticks, uint64_t empty);
 
-/* Time the float counterparts of the Q16.16 operations over the first
- * BENCHFX_FLOAT_N of benchfx.c's inputs (raw Q16.16 values, converted to
- * float before timing): scalars a, b, pos (pos >= 0) and vectors va, vb
+/* Time the float counterparts of the Q16.16 operations over
+ * BENCHFX_FLOAT_N of benchfx.c's inputs, all of them (raw Q16.16 values,
+ * converted to float before timing): scalars a, b, pos (pos >= 0) and vectors va, vb
  * (three components each), and report each as float_NAME. */
-#define BENCHFX_FLOAT_N 64
+#define BENCHFX_FLOAT_N 128
 void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const int32_t *va, const int32_t *vb);
 
 #endif

@@ -11,12 +11,13 @@ BENCHFX_SRC := firmware/benchfx.c core/fx.c firmware/startup.c firmware/semihost
 BENCHFX_HDR := firmware/benchfx.h firmware/benchfx_gen.h core/fx.h core/vec3.h core/num.h core/fxrt_config.h
 
 # The float counterparts (firmware/benchfx_num.c), built as the float
-# renderer is (FXRT_NUMBER = 2: soft float on the M0 and M3, the FPU on the M4F).
+# renderer's firmware is (FXRT_NUMBER = 2, -fno-math-errno as in
+# firmware.mk: soft float on the M0 and M3, the FPU on the M4F).
 $(BUILD)/benchfx/%/benchfx_num.o: firmware/benchfx_num.c $(BENCHFX_HDR)
 	@mkdir -p $(@D)
 	@echo "  ARMCC   $@"
 	$(Q)$(ARM_CC) $(WARN) -O2 -g $(CPU_$*) -ffreestanding -ffunction-sections -fdata-sections \
-	  -DFXRT_NUMBER=2 -Icore -Ifirmware -c $< -o $@
+	  -fno-math-errno -DFXRT_NUMBER=2 -Icore -Ifirmware -c $< -o $@
 
 $(BUILD)/benchfx/%/benchfx.elf: $(BENCHFX_SRC) $(BUILD)/benchfx/%/benchfx_num.o $(BENCHFX_HDR) $(wildcard linker/*.ld)
 	@mkdir -p $(@D)

@@ -4,8 +4,8 @@
  * (libgcc's __aeabi_f* helpers), the FPU on the M4F. Timed like
  * benchfx.c: each through a function pointer, less the same loop around
  * an empty function of its signature, so a figure is one out-of-line
- * call. The inputs are benchfx.c's first BENCHFX_FLOAT_N (the micro:bit's
- * RAM), converted from Q16.16 before timing. make bench-fx prints them
+ * call. The inputs are benchfx.c's (BENCHFX_FLOAT_N of them), converted
+ * from Q16.16 before timing. make bench-fx prints them
  * beside the Q16.16 figures (docs/BENCHMARKS.md, "Q16.16 against float,
  * operation by operation"). */
 #include "vec3.h"

@@ -17,7 +17,7 @@
 # last column is what q16's may cost for 8x: float step / 8 - (q16, no
 # light sum). The no-light-sum builds' frames must differ from the
 # renderer's (the light sum really went); the script exits non-zero if not.
-set -eu
+set -euo pipefail
 BUILD=${BUILD:-build}
 BOARD=${BOARD:-microbit}
 SIZE=${LIT_BOUND_SIZE:-160x120}
@@ -38,8 +38,15 @@ for s in "${scenes[@]}"; do
         echo "[lit-bound] $name: $label" >&2
         args=(SCENE="$s" BOARD="$BOARD" NUMBER="$number" SIZE="$SIZE")
         [ -n "$tag" ] && args+=(FW_TAG="$tag" FW_EXTRA="$flags")
-        line=$($M qemu "${args[@]}" | grep instructions=)
+        line=$($M qemu "${args[@]}" | grep instructions=) || {
+            echo "lit-bound: $name: $label: make qemu failed or printed no count" >&2
+            exit 1
+        }
         ipp["$label|$name"]=$(sed -nE 's/.*instructions_per_pixel=([0-9.]+).*/\1/p' <<<"$line")
+        if [ -z "${ipp["$label|$name"]}" ]; then
+            echo "lit-bound: $name: $label: no instructions_per_pixel in: $line" >&2
+            exit 1
+        fi
     done
     for pair in "q16-$SIZE-bound q16-$SIZE" "float-$SIZE-stepbound float-$SIZE-step"; do
         read -r a b <<<"$pair"
@@ -51,7 +58,7 @@ for s in "${scenes[@]}"; do
 done
 echo "Lit scenes on $BOARD at $SIZE, instructions per pixel (QEMU -icount), one run."
 echo
-echo "| scene | float step | q16 | float / q16 | float, no light sum | q16, no light sum | float / (q16, no light sum) | light sum: float | light sum: q16 | float / q16 | q16 light sum for 8x |"
+echo "| scene | float step | q16 | float / q16 | float, no light sum | q16, no light sum | float / (q16, no light sum) | light sum: float | light sum: q16 | light sums: float / q16 | q16 light sum for 8x |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for s in "${scenes[@]}"; do
     name=$(basename "$s" .scene)
