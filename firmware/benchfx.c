@@ -1,11 +1,11 @@
 /* benchfx: instructions per call of every Q16.16 scalar and vector function,
  * on the board, in QEMU with -icount (see counter.c).
  *
- * Every function runs over the same BENCH_N pseudo-random inputs on every
+ * Every function runs over the same BENCHFX_N pseudo-random inputs on every
  * board (xorshift32 with a fixed seed, generated before timing). Each is
  * called through a function pointer of its signature, and the same loop
  * around an empty function of that signature is timed too: the difference,
- * divided by BENCH_N, is the cost of one call from the caller's side
+ * divided by BENCHFX_N, is the cost of one call from the caller's side
  * (call, body, return). Functions that are inline in the headers (fx_mul,
  * vec3_dot, ...) get an out-of-line wrapper here, so they count as one
  * out-of-line call. Output, one line per function:
@@ -26,12 +26,10 @@
 #include "board.h"
 #include "semihost.h"
 
-#define BENCH_N 128 /* inputs fit the micro:bit's 16 KB RAM */
-_Static_assert(BENCH_N == BENCHFX_FLOAT_N, "the float operations time the same inputs");
 
-static fx_t in_a[BENCH_N], in_b[BENCH_N], in_pos[BENCH_N], in_deg[BENCH_N], in_cot[BENCH_N];
-static fxw_t in_wa[BENCH_N], in_wb[BENCH_N], in_wpos[BENCH_N];
-static vec3_t in_va[BENCH_N], in_vb[BENCH_N];
+static fx_t in_a[BENCHFX_N], in_b[BENCHFX_N], in_pos[BENCHFX_N], in_deg[BENCHFX_N], in_cot[BENCHFX_N];
+static fxw_t in_wa[BENCHFX_N], in_wb[BENCHFX_N], in_wpos[BENCHFX_N];
+static vec3_t in_va[BENCHFX_N], in_vb[BENCHFX_N];
 static volatile uint32_t sink;
 
 static uint32_t rng_state = 0x2545F491u;
@@ -56,7 +54,7 @@ static fxw_t rand_w(void)
 
 static void make_inputs(void)
 {
-    for (int i = 0; i < BENCH_N; i++) {
+    for (int i = 0; i < BENCHFX_N; i++) {
         in_a[i] = rand_fx();
         in_b[i] = rand_fx();
         fx_t p = rand_fx();
@@ -150,25 +148,20 @@ typedef void (*fnv_t)(vec3_t *, const vec3_t *, const vec3_t *);
 /* The timed loops (benchfx_gen.h): time_1, time_2, time_v over the fx_t
  * and vector inputs, timew_1, timew_2 over the wide ones. */
 static uint32_t fx_word(fx_t v) { return (uint32_t)v; }
-BENCHFX_TIMERS(time, fx_t, fn1_t, fn2_t, fnv_t, BENCH_N, fx_word, sink)
-BENCHFX_TIMERS(timew, fxw_t, fnw1_t, fnw2_t, fnv_t, BENCH_N, fx_word, sink)
+BENCHFX_TIMERS(time, fx_t, fn1_t, fn2_t, fnv_t, BENCHFX_N, fx_word, sink)
+BENCHFX_TIMERS(timew, fxw_t, fnw1_t, fnw2_t, fnv_t, BENCHFX_N, fx_word, sink)
 
-void benchfx_report(const char *name, uint32_t calls, uint64_t ticks, uint64_t empty)
+void benchfx_report(const char *name, uint64_t ticks, uint64_t empty)
 {
     semihost_puts("bench fn=");
     semihost_puts(name);
     semihost_puts(" calls=");
-    semihost_put_u64(calls);
+    semihost_put_u64(BENCHFX_N);
     semihost_puts(" ticks=");
     semihost_put_u64(ticks);
     semihost_puts(" empty_ticks=");
     semihost_put_u64(empty);
     semihost_puts("\n");
-}
-
-static void report(const char *name, uint64_t ticks, uint64_t empty)
-{
-    benchfx_report(name, BENCH_N, ticks, empty);
 }
 
 int main(void);
@@ -179,24 +172,24 @@ int main(void)
     uint64_t e1 = time_1(empty_1, in_pos), e2 = time_2(empty_2, in_a, in_b);
     uint64_t ew1 = timew_1(empty_w1, in_wpos), ew2 = timew_2(empty_w2, in_wa, in_wb);
     uint64_t ev = time_v(v_empty, in_va, in_vb);
-    report("fx_add", time_2(w_fx_add, in_a, in_b), e2);
-    report("fx_mul", time_2(w_fx_mul, in_a, in_b), e2);
-    report("fx_div", time_2(fx_div, in_a, in_b), e2);
-    report("fx_recip", time_1(fx_recip, in_a), e1);
-    report("fx_sqrt", time_1(fx_sqrt, in_pos), e1);
-    report("fxw_sqrt", timew_1(fxw_sqrt, in_wpos), ew1);
-    report("fxw_div", timew_2(fxw_div, in_wa, in_wb), ew2);
-    report("fx_rsqrt", time_1(fx_rsqrt, in_pos), e1);
-    report("fx_sin_deg", time_1(fx_sin_deg, in_deg), e1);
-    report("fx_cos_deg", time_1(fx_cos_deg, in_deg), e1);
-    report("fx_cot_deg", time_1(fx_cot_deg, in_cot), e1);
-    report("vec3_dot", time_v(v_dot, in_va, in_vb), ev);
-    report("vec3_cross", time_v(v_cross, in_va, in_vb), ev);
-    report("vec3_len", time_v(v_len, in_va, in_vb), ev);
-    report("vec3_normalize", time_v(v_normalize, in_va, in_vb), ev);
-    report("vec3_unit_len", time_v(v_unit_len, in_va, in_vb), ev);
-    report("old_fx_div", time_2(w_old_fx_div, in_a, in_b), e2);
-    report("old_fx_sqrt", time_1(w_old_fx_sqrt, in_pos), e1);
+    benchfx_report("fx_add", time_2(w_fx_add, in_a, in_b), e2);
+    benchfx_report("fx_mul", time_2(w_fx_mul, in_a, in_b), e2);
+    benchfx_report("fx_div", time_2(fx_div, in_a, in_b), e2);
+    benchfx_report("fx_recip", time_1(fx_recip, in_a), e1);
+    benchfx_report("fx_sqrt", time_1(fx_sqrt, in_pos), e1);
+    benchfx_report("fxw_sqrt", timew_1(fxw_sqrt, in_wpos), ew1);
+    benchfx_report("fxw_div", timew_2(fxw_div, in_wa, in_wb), ew2);
+    benchfx_report("fx_rsqrt", time_1(fx_rsqrt, in_pos), e1);
+    benchfx_report("fx_sin_deg", time_1(fx_sin_deg, in_deg), e1);
+    benchfx_report("fx_cos_deg", time_1(fx_cos_deg, in_deg), e1);
+    benchfx_report("fx_cot_deg", time_1(fx_cot_deg, in_cot), e1);
+    benchfx_report("vec3_dot", time_v(v_dot, in_va, in_vb), ev);
+    benchfx_report("vec3_cross", time_v(v_cross, in_va, in_vb), ev);
+    benchfx_report("vec3_len", time_v(v_len, in_va, in_vb), ev);
+    benchfx_report("vec3_normalize", time_v(v_normalize, in_va, in_vb), ev);
+    benchfx_report("vec3_unit_len", time_v(v_unit_len, in_va, in_vb), ev);
+    benchfx_report("old_fx_div", time_2(w_old_fx_div, in_a, in_b), e2);
+    benchfx_report("old_fx_sqrt", time_1(w_old_fx_sqrt, in_pos), e1);
     _Static_assert(sizeof(vec3_t) == 3 * sizeof(int32_t), "vec3_t is three int32_t");
     benchfx_float(in_a, in_b, in_pos, (const int32_t *)(const void *)in_va, (const int32_t *)(const void *)in_vb);
     semihost_puts("ticks=0 done\n");

@@ -5,14 +5,16 @@
 
 #include <stdint.h>
 
-/* One "bench fn=NAME calls=N ticks=T empty_ticks=E" line. */
-void benchfx_report(const char *name, uint32_t calls, uint64_t ticks, uint64_t empty);
+/* One "bench fn=NAME calls=N ticks=T empty_ticks=E" line (N = BENCHFX_N). */
+void benchfx_report(const char *name, uint64_t ticks, uint64_t empty);
 
-/* Time the float counterparts of the Q16.16 operations over
- * BENCHFX_FLOAT_N of benchfx.c's inputs, all of them (raw Q16.16 values,
- * converted to float before timing): scalars a, b, pos (pos >= 0) and vectors va, vb
+/* Inputs per function, the same for both number types (they fit the
+ * micro:bit's 16 KB RAM). */
+#define BENCHFX_N 128
+
+/* Time the float counterparts of the Q16.16 operations over benchfx.c's
+ * BENCHFX_N inputs (raw Q16.16 values, converted to float before timing): scalars a, b, pos (pos >= 0) and vectors va, vb
  * (three components each), and report each as float_NAME. */
-#define BENCHFX_FLOAT_N 128
 void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const int32_t *va, const int32_t *vb);
 
 #endif

@@ -4,7 +4,7 @@
  * (libgcc's __aeabi_f* helpers), the FPU on the M4F. Timed like
  * benchfx.c: each through a function pointer, less the same loop around
  * an empty function of its signature, so a figure is one out-of-line
- * call. The inputs are benchfx.c's (BENCHFX_FLOAT_N of them), converted
+ * call. The inputs are benchfx.c's (BENCHFX_N of them), converted
  * from Q16.16 before timing. make bench-fx prints them
  * beside the Q16.16 figures (docs/BENCHMARKS.md, "Q16.16 against float,
  * operation by operation"). */
@@ -19,11 +19,10 @@
 #error "benchfx_num.c is the float build: compile it with -DFXRT_NUMBER=2"
 #endif
 
-#define N BENCHFX_FLOAT_N
 #define NOINLINE __attribute__((noinline))
 
-static float f_a[N], f_b[N], f_pos[N];
-static vec3_t f_va[N], f_vb[N];
+static float f_a[BENCHFX_N], f_b[BENCHFX_N], f_pos[BENCHFX_N];
+static vec3_t f_va[BENCHFX_N], f_vb[BENCHFX_N];
 static volatile uint32_t fsink;
 
 static float from_q16(int32_t v) { return (float)v / 65536.0f; }
@@ -63,11 +62,11 @@ static uint32_t bits(float v)
     } c = {v};
     return c.u;
 }
-BENCHFX_TIMERS(f_time, float, ffn1_t, ffn2_t, ffnv_t, N, bits, fsink)
+BENCHFX_TIMERS(f_time, float, ffn1_t, ffn2_t, ffnv_t, BENCHFX_N, bits, fsink)
 
 void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const int32_t *va, const int32_t *vb)
 {
-    for (int i = 0; i < N; i++) {
+    for (int i = 0; i < BENCHFX_N; i++) {
         f_a[i] = from_q16(a[i]);
         f_b[i] = from_q16(b[i]);
         f_pos[i] = from_q16(pos[i]);
@@ -76,14 +75,14 @@ void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const
     }
     uint64_t e1 = f_time_1(f_empty_1, f_pos), e2 = f_time_2(f_empty_2, f_a, f_b);
     uint64_t ev = f_time_v(f_empty, f_va, f_vb);
-    benchfx_report("float_add", N, f_time_2(f_add, f_a, f_b), e2);
-    benchfx_report("float_mul", N, f_time_2(f_mul, f_a, f_b), e2);
-    benchfx_report("float_div", N, f_time_2(f_div, f_a, f_b), e2);
-    benchfx_report("float_sqrt", N, f_time_1(f_sqrt, f_pos), e1);
-    benchfx_report("float_rsqrt", N, f_time_1(f_rsqrt, f_pos), e1);
-    benchfx_report("float_vec3_dot", N, f_time_v(f_dot, f_va, f_vb), ev);
-    benchfx_report("float_vec3_cross", N, f_time_v(f_cross, f_va, f_vb), ev);
-    benchfx_report("float_vec3_len", N, f_time_v(f_len, f_va, f_vb), ev);
-    benchfx_report("float_vec3_normalize", N, f_time_v(f_normalize, f_va, f_vb), ev);
-    benchfx_report("float_vec3_unit_len", N, f_time_v(f_unit_len, f_va, f_vb), ev);
+    benchfx_report("float_add", f_time_2(f_add, f_a, f_b), e2);
+    benchfx_report("float_mul", f_time_2(f_mul, f_a, f_b), e2);
+    benchfx_report("float_div", f_time_2(f_div, f_a, f_b), e2);
+    benchfx_report("float_sqrt", f_time_1(f_sqrt, f_pos), e1);
+    benchfx_report("float_rsqrt", f_time_1(f_rsqrt, f_pos), e1);
+    benchfx_report("float_vec3_dot", f_time_v(f_dot, f_va, f_vb), ev);
+    benchfx_report("float_vec3_cross", f_time_v(f_cross, f_va, f_vb), ev);
+    benchfx_report("float_vec3_len", f_time_v(f_len, f_va, f_vb), ev);
+    benchfx_report("float_vec3_normalize", f_time_v(f_normalize, f_va, f_vb), ev);
+    benchfx_report("float_vec3_unit_len", f_time_v(f_unit_len, f_va, f_vb), ev);
 }
