@@ -89,3 +89,13 @@ ram-table: deps $(BUILD)/fxrt-scenec
 profile: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) firmware/profile.sh '$(SCENE)' $(BOARD) $(NUMBER) $(or $(PROFILE_SIZE),80x60) '$(FW_EXTRA)'
 .PHONY: profile
+
+# A refactor's proof (tests/same-frames.sh, firmware/same-code.sh): every
+# host frame, and the firmware's code function by function, against the
+# revision BASE: make same-frames BASE=REV; make same-code BASE=REV
+# [SAME_RUN=1 SAME_VERBOSE=1 SAME_RENAMES=FILE SAME_CONFIGS=...]
+same-frames: $(BUILD)/fxrt
+	$(Q)BUILD=$(BUILD) BASE=$(BASE) tests/same-frames.sh
+same-code: deps
+	$(Q)BUILD=$(BUILD) BASE=$(BASE) firmware/same-code.sh
+.PHONY: same-frames same-code
