@@ -14,22 +14,24 @@ Q       := $(if $(filter 1,$(V)),,@)
 
 WARN    := -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror
 HOSTCFLAGS ?= -O2 -g
-CFLAGS_H := $(WARN) $(HOSTCFLAGS) -D_POSIX_C_SOURCE=200809L -MMD -MP
+CFLAGS_H := $(WARN) $(HOSTCFLAGS) -D_POSIX_C_SOURCE=200809L -MMD -MP -Icore
 LDLIBS_H := -lpng -lm
 
 NUMBERS := q16 float double
 num_id   = $(if $(filter q16,$1),1,$(if $(filter float,$1),2,3))
 
-CORE_NUM := num color cam geom mesh world render_setup render_vis render_row render_shade render_sample shade shadow trace raycast fxrt
+include core/core.mk
+.SECONDARY:
+.SECONDEXPANSION:
+include host/multi.mk
 HOST_SRC := main scene image errf compare engine_select args
 
 # --- host tool -----------------------------------------------------------
-HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o \
-            $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
+# (host/multi.mk: the three number types' objects, each joined into one.)
+HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),fxrt,$(NUMBERS))
 
 SCENEC_OBJ := $(BUILD)/host/scenec.o $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
-              $(BUILD)/host/fx.o $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(BUILD)/host/scenec_emit-$(n).o \
-              $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
+              $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),scenec,$(NUMBERS))
 
 all: $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 
@@ -46,7 +48,7 @@ $(BUILD)/host/%.o: host/%.c
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CFLAGS_H) -c $< -o $@
 
-$(BUILD)/host/fx.o: core/fx.c
+$(BUILD)/host/fx.o: core/math/fx.c
 	@mkdir -p $(@D)
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CFLAGS_H) -c $< -o $@
@@ -80,8 +82,6 @@ $(BUILD)/tests/%.o: tests/%.c
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CFLAGS_H) -Ihost -Icore -c $< -o $@
 
-.SECONDARY:
-.SECONDEXPANSION:
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $$($$*_DEPS)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(CFLAGS_H) -o $@ $(filter %.o,$^) $(LDLIBS_H)
@@ -163,5 +163,6 @@ clean:
 # Dependency files of the host build. Firmware objects' ones are read by
 # firmware.mk for the one ELF being built: build/fw holds one directory per
 # ELF the tests and benchmarks made (over a thousand .d files), and reading
-# them all cost every make call about a second.
--include $(shell find $(BUILD) -path '$(BUILD)/fw' -prune -o -name '*.d' -print 2>/dev/null)
+# them all cost every make call about a second. build/same holds other
+# revisions' trees (make same-code), whose files are not ours.
+-include $(shell find $(BUILD) \( -path '$(BUILD)/fw' -o -path '$(BUILD)/same' \) -prune -o -name '*.d' -print 2>/dev/null)

@@ -49,10 +49,10 @@
 
 #include <stddef.h>
 
-#include "cam.h"
+#include "scene/cam.h"
 #include "fxrt_err.h"
-#include "render.h"
-#include "world.h"
+#include "vis/render.h"
+#include "scene/world.h"
 
 /* Bytes of one output row of `width` pixels: RGB888, 3 bytes per pixel,
  * or RGB565 (2 bytes) when the core is built with FXRT_PIXEL =

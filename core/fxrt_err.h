@@ -7,7 +7,6 @@
 #define FXRT_ERR_H
 
 #include "fxrt_config.h"
-#include "fxrt_names.h"
 
 typedef enum {
     FXRT_OK = 0,
@@ -40,36 +39,5 @@ typedef enum {
      * fxrt_strerror still tell them apart. */
     FXRT_ERR_CAM_BASE = -100,
 } fxrt_err_t;
-
-/* The host links all three number types (FXRT_MULTI, see fxrt_names.h):
- * the API's number-dependent functions get the type's suffix too. */
-#ifdef FXRT_MULTI
-#define geom_check_point FXRT_SYM(geom_check_point)
-#define geom_check_dir FXRT_SYM(geom_check_dir)
-#define geom_check_color FXRT_SYM(geom_check_color)
-#define geom_plane_check FXRT_SYM(geom_plane_check)
-#define geom_sphere_check FXRT_SYM(geom_sphere_check)
-#define geom_triangle_check FXRT_SYM(geom_triangle_check)
-#define geom_box_check FXRT_SYM(geom_box_check)
-#define world_count FXRT_SYM(world_count)
-#define world_add_plane FXRT_SYM(world_add_plane)
-#define world_add_sphere FXRT_SYM(world_add_sphere)
-#define world_add_triangle FXRT_SYM(world_add_triangle)
-#define world_add_box FXRT_SYM(world_add_box)
-#define fxrt_world_init_checked FXRT_SYM(fxrt_world_init_checked)
-#define fxrt_add FXRT_SYM(fxrt_add)
-#define fxrt_camera_perspective FXRT_SYM(fxrt_camera_perspective)
-#define fxrt_camera_orthographic FXRT_SYM(fxrt_camera_orthographic)
-#define fxrt_camera_setup FXRT_SYM(fxrt_camera_setup)
-#define fxrt_render_setup_checked FXRT_SYM(fxrt_render_setup_checked)
-#define fxrt_strerror FXRT_SYM(fxrt_strerror)
-#define fxrt_add_light FXRT_SYM(fxrt_add_light)
-#define world_set_ambient FXRT_SYM(world_set_ambient)
-#define world_set_material FXRT_SYM(world_set_material)
-#define world_add_light FXRT_SYM(world_add_light)
-#define light_check_fraction FXRT_SYM(light_check_fraction)
-#define world_set_depth FXRT_SYM(world_set_depth)
-#define world_set_samples FXRT_SYM(world_set_samples)
-#endif
 
 #endif

@@ -18,7 +18,7 @@
  * old_fx_div and old_fx_sqrt are the implementations before issue 9
  * (64-bit division by libgcc; a digit-by-digit 64-bit root), kept here only
  * for the before/after comparison. */
-#include "vec3.h"
+#include "math/vec3.h"
 
 #include "benchfx.h"
 #define BENCHFX_VEC_PREFIX v_

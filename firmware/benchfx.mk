@@ -6,9 +6,9 @@
 # BENCHFX_UPDATE_DOCS=1 also the table in docs/BENCHMARKS.md.
 # (Included before firmware.mk: board variables are only used in recipes.)
 BENCHFX_BOARDS ?= $(BOARDS)
-BENCHFX_SRC := firmware/benchfx.c core/fx.c firmware/startup.c firmware/semihost.c firmware/counter.c
+BENCHFX_SRC := firmware/benchfx.c core/math/fx.c firmware/startup.c firmware/semihost.c firmware/counter.c
 
-BENCHFX_HDR := firmware/benchfx.h firmware/benchfx_gen.h core/fx.h core/vec3.h core/num.h core/fxrt_config.h
+BENCHFX_HDR := firmware/benchfx.h firmware/benchfx_gen.h core/math/fx.h core/math/vec3.h core/math/num.h core/fxrt_config.h
 
 # The float counterparts (firmware/benchfx_num.c), built as the float
 # renderer's firmware is (FXRT_NUMBER = 2, -fno-math-errno as in

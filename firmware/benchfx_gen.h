@@ -8,7 +8,7 @@
 #define FXRT_BENCHFX_GEN_H
 
 #include "board.h"
-#include "vec3.h"
+#include "math/vec3.h"
 
 #ifndef BENCHFX_VEC_PREFIX
 #error "define BENCHFX_VEC_PREFIX (v_ or f_) before including benchfx_gen.h"

@@ -8,7 +8,7 @@
  * from Q16.16 before timing. make bench-fx prints them
  * beside the Q16.16 figures (docs/BENCHMARKS.md, "Q16.16 against float,
  * operation by operation"). */
-#include "vec3.h"
+#include "math/vec3.h"
 
 #include "benchfx.h"
 #define BENCHFX_VEC_PREFIX f_

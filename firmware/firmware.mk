@@ -81,7 +81,7 @@ FW_CFLAGS := $(WARN) -O2 $(FW_DEBUG) $(CPU_$(BOARD)) -ffreestanding -ffunction-s
              '-DFXRT_OUT_PATH="$(FW_OUT).part"'
 FW_LDFLAGS := -nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections \
               -Wl,-Map=$(FW_DIR)/fxrt.map -Llinker -Tlinker/$(BOARD).ld -lm
-FW_SRC   := $(CORE_NUM:%=core/%.c) core/fx.c firmware/main.c firmware/startup.c \
+FW_SRC   := $(CORE_SRC:%=core/%.c) firmware/main.c firmware/startup.c \
             firmware/semihost.c firmware/counter.c
 FW_OBJ   := $(patsubst %.c,$(FW_DIR)/%.o,$(FW_SRC))
 

@@ -16,7 +16,7 @@
  * replicated). The ray caster writes RGB888 only, so it is packed here.
  */
 #include "fxrt.h"
-#include "raycast.h"
+#include "frame/raycast.h"
 #include "scene_data.h"
 
 #include "board.h"

@@ -45,29 +45,8 @@ configs=${SAME_CONFIGS:-$default_configs}
 
 # The normalised disassembly of ELF, one file per function under DIR.
 norm() {
-    local elf=$1 dir=$2
-    rm -rf "$dir"
-    mkdir -p "$dir"
-    arm-none-eabi-objdump -d --no-show-raw-insn "$elf" | awk -v dir="$dir" -v ren="${SAME_RENAMES:-}" '
-        BEGIN { if (ren != "") while ((getline l < ren) > 0) { split(l, w, " "); if (w[2] != "") map[w[1]] = w[2] } }
-        function rn(s,   m, n) {
-            while (match(s, /<[A-Za-z_.$][A-Za-z0-9_.$]*/)) {
-                n = substr(s, RSTART + 1, RLENGTH - 1)
-                m = m substr(s, 1, RSTART) ((n in map) ? map[n] : n) "\001"
-                s = substr(s, RSTART + RLENGTH)
-            }
-            gsub("\001", "", m)
-            return m s
-        }
-        /^[0-9a-f]+ <[^>]+>:$/ { name = $2; gsub(/[<>:]/, "", name); if (name in map) name = map[name]; f = dir "/" name; next }
-        /^ *[0-9a-f]+:\t/ {
-            if (f == "") next
-            sub(/^ *[0-9a-f]+:\t/, "")
-            if ($0 ~ /^\.(word|short|byte)/) next
-            sub(/[ \t]*[;@].*$/, "")
-            gsub(/[0-9a-f]+ </, "<")
-            print rn($0) > f
-        }'
+    rm -rf "$2"
+    python3 firmware/same-code.py "$1" "$2" "${SAME_RENAMES:-}"
 }
 
 # A board variable of firmware/firmware.mk (FB_microbit, TICK_NS_...).

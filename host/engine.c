@@ -5,7 +5,7 @@
 #include <stdio.h>
 
 #include "../core/fxrt.h"
-#include "../core/raycast.h"
+#include "../core/frame/raycast.h"
 #include "engine.h"
 #include "engine_build.h"
 

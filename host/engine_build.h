@@ -5,10 +5,11 @@
 #define FXRT_HOST_ENGINE_BUILD_H
 
 #include "../core/fxrt.h"
+#include "multi.h"
 #include "scene.h"
 
 #ifdef FXRT_MULTI
-#define ENGINE_SYM(name) FXRT_SYM(name)
+#define ENGINE_SYM(name) MULTI_SYM(name)
 #else
 #define ENGINE_SYM(name) name
 #endif

@@ -280,7 +280,7 @@ want=$(ppm_bytes "$out/keys.ppm" 32 24 | awk -v W=32 -v H=24 '
         print n + 0
     }')
 check "compare --scene: near_pixels=$np is the count from the key picture ($want)" test "$np" = "$want"
-if grep -q 'keys\[' core/*.c; then
+if grep -q 'keys\[' core/*/*.c; then
     # Once the core writes keys, the two spheres' silhouettes are near pixels.
     check "compare --scene: the silhouettes are near pixels (near_pixels=$np)" test "$np" -gt 0
     lit=$(ppm_bytes "$out/keys.ppm" 32 24 | grep -cv '^0$')

@@ -3,7 +3,7 @@
 # 8-bit value (docs/ACCURACY.md, "Colour"). Included by the top Makefile.
 COLOR_BIN := $(BUILD)/tests/test_color
 test_color_DEPS := $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/engine_select.o $(BUILD)/host/fx.o \
-                   $(foreach n,$(NUMBERS),$(BUILD)/host/engine-$(n).o $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
+                   $(call multi_objs,$(BUILD),fxrt,$(NUMBERS))
 
 SUITES_EXTRA += $(COLOR_BIN)
 TEST_PREREQ  += $(COLOR_BIN)

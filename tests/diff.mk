@@ -9,8 +9,7 @@
 
 DIFF_NUMBERS := q16 float double
 DIFF_BIN     := $(BUILD)/tests/test_diff
-DIFF_OBJ     := $(BUILD)/tests/test_diff.o $(DIFF_NUMBERS:%=$(BUILD)/tests/diffk-%.o) $(BUILD)/host/fx.o \
-                $(foreach n,$(DIFF_NUMBERS),$(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
+DIFF_OBJ     := $(BUILD)/tests/test_diff.o $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),diff,$(DIFF_NUMBERS))
 
 define diff_number_rules
 $(BUILD)/tests/diffk-$(1).o: tests/diffk.c
@@ -56,27 +55,28 @@ DIFF_FUZZ_OBJDIR := $(DIFF_FUZZ_DIR)/kernels-obj
 DIFF_FUZZ_BIN    := $(DIFF_FUZZ_DIR)/fuzz_kernels
 DIFF_FUZZ_CORPUS := $(DIFF_FUZZ_DIR)/kernels-corpus
 DIFF_FUZZ_SAN    := -fsanitize=address,undefined -fno-sanitize-recover=all
-DIFF_FUZZ_CFLAGS := $(WARN) -O1 -g -D_POSIX_C_SOURCE=200809L $(DIFF_FUZZ_SAN) -fsanitize=fuzzer-no-link
-DIFF_FUZZ_OBJ    := $(DIFF_FUZZ_OBJDIR)/fx.o \
-                    $(foreach n,$(DIFF_NUMBERS),$(DIFF_FUZZ_OBJDIR)/diffk-$(n).o \
-                      $(CORE_NUM:%=$(DIFF_FUZZ_OBJDIR)/$(n)/%.o))
+DIFF_FUZZ_CFLAGS := $(WARN) -O1 -g -D_POSIX_C_SOURCE=200809L -Icore $(DIFF_FUZZ_SAN) -fsanitize=fuzzer-no-link
+DIFF_FUZZ_OBJ    := $(DIFF_FUZZ_OBJDIR)/host/fx.o $(call multi_objs,$(DIFF_FUZZ_OBJDIR),diff,$(DIFF_NUMBERS))
 
-$(DIFF_FUZZ_OBJDIR)/fx.o: core/fx.c
+$(DIFF_FUZZ_OBJDIR)/host/fx.o: core/math/fx.c
 	@mkdir -p $(@D)
 	@echo "  FUZZCC  $<"
 	$(Q)$(DIFF_FUZZ_CC) $(DIFF_FUZZ_CFLAGS) -MMD -MP -c $< -o $@
 
 define diff_fuzz_rules
-$(DIFF_FUZZ_OBJDIR)/$(1)/%.o: core/%.c
+$(DIFF_FUZZ_OBJDIR)/host/$(1)/%.o: core/%.c
 	@mkdir -p $$(@D)
 	@echo "  FUZZCC $(1) $$<"
 	$$(Q)$$(DIFF_FUZZ_CC) $$(DIFF_FUZZ_CFLAGS) -MMD -MP -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
-$(DIFF_FUZZ_OBJDIR)/diffk-$(1).o: tests/diffk.c
+$(DIFF_FUZZ_OBJDIR)/tests/diffk-$(1).o: tests/diffk.c
 	@mkdir -p $$(@D)
 	@echo "  FUZZCC $(1) $$<"
 	$$(Q)$$(DIFF_FUZZ_CC) $$(DIFF_FUZZ_CFLAGS) -MMD -MP -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -c $$< -o $$@
 endef
 $(foreach n,$(DIFF_NUMBERS),$(eval $(call diff_fuzz_rules,$(n))))
+
+$(DIFF_FUZZ_OBJDIR)/multi/%.o: $$(addprefix $(DIFF_FUZZ_OBJDIR)/,$$(MULTI_$$*)) host/multi-ld.sh
+	$(Q)$(multi_link)
 
 $(DIFF_FUZZ_BIN): tests/fuzz_kernels.c tests/test_diff.c tests/diffk.h tests/check.h $(DIFF_FUZZ_OBJ)
 	@mkdir -p $(@D)

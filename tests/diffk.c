@@ -5,11 +5,12 @@
 #include <math.h>
 #include <string.h>
 
-#include "../core/cam.h"
-#include "../core/geom.h"
+#include "../core/scene/cam.h"
+#include "../core/scene/geom.h"
+#include "../host/multi.h"
 #include "diffk.h"
 
-#define DIFFK_SYM(name) FXRT_SYM(name)
+#define DIFFK_SYM(name) MULTI_SYM(name)
 
 /* host/engine.c engine_num, plus saturation so that out-of-range input
  * (only the fuzzer produces it) is not undefined behaviour. */
@@ -175,8 +176,8 @@ int DIFFK_SYM(diffk_cam)(const diffk_cam_t *c, int n, const int *xs, const int *
 }
 
 /* ---- lighting (issue 11) --------------------------------------------------- */
-#include "../core/shade.h"
-#include "../core/world.h"
+#include "../core/light/shade.h"
+#include "../core/scene/world.h"
 
 static color_t diffk_col(const double c[3])
 {
@@ -300,12 +301,12 @@ double DIFFK_SYM(diffk_pow)(long long x_q32, unsigned k)
  * its one external function renamed (diffk_trace_copy_<number>) so that it
  * does not clash with the core's trace_bounces. The static trace_children
  * then makes the same children as in the renderer. */
-#include "../core/trace.h"
+#include "../core/light/trace.h"
 #undef trace_bounces
-#define trace_bounces FXRT_SYM(diffk_trace_copy)
+#define trace_bounces MULTI_SYM(diffk_trace_copy)
 color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
                       color_t local);
-#include "../core/trace.c"
+#include "../core/light/trace.c"
 
 void DIFFK_SYM(diffk_bounce)(const double d[3], const double n[3], double eta, double refl[3], int *tir,
                              double trans[3], int *has_t, double *R)

@@ -10,7 +10,7 @@
 EXAMPLE_CFG := -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=2 -DFXRT_MAX_TRIANGLES=1 \
                -DFXRT_MAX_BOXES=1 -DFXRT_RENDER_MAX_WIDTH=64 -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=1
 # The core's sources as the Makefile lists them (without the optional ray caster).
-EXAMPLE_CORE = fx $(filter-out raycast,$(CORE_NUM))
+EXAMPLE_CORE = $(CORE_FX) $(filter-out frame/raycast,$(CORE_NUM))
 EX_HOST := $(BUILD)/examples/host
 EX_MB   := $(BUILD)/examples/microbit
 
@@ -65,7 +65,7 @@ TEST_PREREQ  += $(TEST_FXRT_BIN) $(EX_HOST)/orbit $(EX_MB)/orbit.elf
 # On-board set-up of many scenes in one ELF (tests/qemu.sh):
 #   make onboard BOARD=b ONB_DIR=dir   (dir from tests/onboard_gen.sh)
 ONB_DIR ?= $(BUILD)/onboard
-ONB_SRC = $(CORE_NUM:%=core/%.c) core/fx.c tests/onboard_main.c firmware/startup.c firmware/semihost.c \
+ONB_SRC = $(CORE_SRC:%=core/%.c) tests/onboard_main.c firmware/startup.c firmware/semihost.c \
           firmware/counter.c
 onboard:
 	@echo "  ARMCC   $(ONB_DIR)/onboard.elf"

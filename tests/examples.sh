@@ -72,7 +72,7 @@ $CC -std=c11 -O2 $CFG_APP -Icore -c examples/orbit.c -o "$mm/orbit.o"
 $CC -std=c11 -O2 -c examples/io_host.c -Icore -o "$mm/io_host.o"
 # The objects of the core's current sources (a stale object of a removed
 # source must not be linked).
-core=$(for o in "$BUILD"/examples/host/core/*.o; do [ -f "core/$(basename "$o" .o).c" ] && echo "$o"; done)
+core=$(find "$BUILD/examples/host/core" -name '*.o' | while read -r o; do s=${o#"$BUILD/examples/host/"}; [ -f "${s%.o}.c" ] && echo "$o"; done)
 if $CC -o "$mm/orbit" "$mm/orbit.o" "$mm/io_host.o" $core 2>"$mm/link.log"; then
     bad "a core with 2 spheres and an application with 8 must not link"
 else
@@ -82,7 +82,7 @@ sed 's/^/  link: /' "$mm/link.log" | grep -m2 fxrt_config
 check "the link error names the application's configuration (fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8_d0_x1a0)" \
     grep -q "fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8_d0_x1a0" "$mm/link.log"
 check "the core defines its own (fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8_d0_x1a0)" \
-    bash -c "nm '$BUILD/examples/host/core/fxrt.o' | grep -q ' R fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8_d0_x1a0$'"
+    bash -c "nm '$BUILD/examples/host/core/frame/api.o' | grep -q ' R fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8_d0_x1a0$'"
 # And the matching build links (the check above is not a link that always fails).
 $CC -std=c11 -O2 $(sed 's/SPHERES=8/SPHERES=2/' <<<"$CFG_APP") -Icore -c examples/orbit.c -o "$mm/orbit-ok.o"
 check "the same files with matching macros link" $CC -o "$mm/orbit-ok" "$mm/orbit-ok.o" "$mm/io_host.o" $core

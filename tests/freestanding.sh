@@ -10,9 +10,9 @@ set -u
 out=$BUILD/tests/freestanding
 mkdir -p "$out"
 # Every source file of the core, so that a new one is checked too.
-CORE=$(cd core && ls *.c | sed "s/\.c$//")
+CORE=$(cd core && ls */*.c | sed "s/\.c$//")
 
-bad_includes=$(grep -hE '^\s*#\s*include\s*<' core/*.c core/*.h | grep -vE '<(stdint|stddef|stdbool)\.h>' || true)
+bad_includes=$(grep -hE '^\s*#\s*include\s*<' core/*.h core/*/*.c core/*/*.h | grep -vE '<(stdint|stddef|stdbool)\.h>' || true)
 check "core includes only stdint/stddef/stdbool (found: $bad_includes)" test -z "$bad_includes"
 
 if ! command -v arm-none-eabi-gcc >/dev/null; then
@@ -24,10 +24,10 @@ inc=$(arm-none-eabi-gcc -print-file-name=include)
 for cpu in cortex-m0 cortex-m3; do
     objs=()
     for f in $CORE; do
-        o=$out/$cpu-$f.o
+        o=$out/$cpu-${f//\//-}.o
         if arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror \
             -Os -mcpu=$cpu -mthumb -ffreestanding -nostdinc -isystem "$inc" -DFXRT_NUMBER=1 \
-            -c core/$f.c -o "$o"; then
+            -Icore -c core/$f.c -o "$o"; then
             ok
             objs+=("$o")
         else
@@ -41,7 +41,7 @@ for cpu in cortex-m0 cortex-m3; do
     check "$cpu: no malloc/stdio/soft-float references (found: $forbidden)" test -z "$forbidden"
     # And the check itself must be able to fail: a float build does pull
     # soft-float helpers in on these cores.
-    arm-none-eabi-gcc -std=c11 -Os -mcpu=$cpu -mthumb -ffreestanding -DFXRT_NUMBER=2 -c core/geom.c -o "$out/$cpu-float-geom.o"
+    arm-none-eabi-gcc -std=c11 -Os -mcpu=$cpu -mthumb -ffreestanding -DFXRT_NUMBER=2 -Icore -c core/scene/geom.c -o "$out/$cpu-float-geom.o"
     check "$cpu: the nm check sees soft-float in a float build" \
         bash -c "arm-none-eabi-nm -u '$out/$cpu-float-geom.o' | grep -q __aeabi_f"
 done

@@ -13,14 +13,14 @@
 FX_NOHW_FLAGS := -DFX_HAVE_UDIV=0 -DFX_HAVE_CLZ=0 -DFX_HAVE_UMULL=0
 FX_JOBS ?= 2
 
-$(BUILD)/tests/fx-nohw.o: core/fx.c core/fx.h core/fxrt_config.h
+$(BUILD)/tests/fx-nohw.o: core/math/fx.c core/math/fx.h core/fxrt_config.h
 	@mkdir -p $(@D)
 	@echo "  CC nohw $<"
 	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -c $< -o $@
 
 # The test itself is compiled with the same flags: fx.h's inline products
 # (fx_umul32, fx_smul32, fx_smul_small) then take their M0 paths too.
-$(BUILD)/tests/test_fx_nohw: tests/test_fx.c tests/check.h core/fx.h core/fxrt_config.h $(BUILD)/tests/fx-nohw.o
+$(BUILD)/tests/test_fx_nohw: tests/test_fx.c tests/check.h core/math/fx.h core/fxrt_config.h $(BUILD)/tests/fx-nohw.o
 	@echo "  CC/LD   $@"
 	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DTEST_FX_NAME='"test_fx_nohw"' -Icore -o $@ tests/test_fx.c $(BUILD)/tests/fx-nohw.o -lm
 
@@ -67,7 +67,7 @@ TEST_PREREQ  += $(BUILD)/tests/test_fx_nohw $(FX_EXH_BIN)
 include firmware/benchfx.mk
 
 # test_fx_nohw under ASan+UBSan too (tests/sanitize.sh runs tests.list).
-$(SAN_DIR)/tests/fx-nohw.o: core/fx.c
+$(SAN_DIR)/tests/fx-nohw.o: core/math/fx.c
 	@mkdir -p $(@D)
 	@echo "  CC san nohw $<"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) $(FX_NOHW_FLAGS) -c $< -o $@

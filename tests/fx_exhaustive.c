@@ -21,7 +21,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "../core/fx.h"
+#include "../core/math/fx.h"
 #include "check.h"
 
 /* Stated bounds, asserted (fx.h). */

@@ -39,7 +39,7 @@ graph() {
     mkdir -p "$dir"
     local f rc=0
     for f in "$@"; do
-        "$CC_ARM" "${FLAGS[@]}" "$opt" -DFXRT_NUMBER="$num" -c "$f" -o "$dir/$(basename "$f" .c).o" \
+        "$CC_ARM" "${FLAGS[@]}" "$opt" -DFXRT_NUMBER="$num" -c "$f" -o "$dir/$(tr / _ <<<"${f%.c}").o" \
             2>>"$dir/cc.log" || rc=1
     done
     echo $rc >"$dir/rc"
@@ -63,7 +63,7 @@ for opt in -O0 -O2; do
     fi
 done
 
-srcs=(core/*.c)
+srcs=(core/*/*.c)
 configs=()
 # make test: Q16.16 at -O0 (the source as written) and at -O2, double at
 # -O0 (the other side of every FXRT_NUMBER branch); make test-full: every

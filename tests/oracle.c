@@ -30,7 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../core/raycast.h"
+#include "../core/frame/raycast.h"
 #include "oracle.h"
 #include "randscene.h"
 

@@ -12,8 +12,7 @@
 ORACLE_NUMBERS := q16 double
 ORACLE_BIN     := $(BUILD)/tests/oracle
 ORACLE_OBJ     := $(BUILD)/tests/oracle.o $(BUILD)/tests/randscene.o $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/fx.o \
-                  $(foreach n,$(ORACLE_NUMBERS),$(BUILD)/tests/oracle_num-$(n).o $(BUILD)/host/engine-$(n).o \
-                    $(CORE_NUM:%=$(BUILD)/host/$(n)/%.o))
+                  $(call multi_objs,$(BUILD),oracle,$(ORACLE_NUMBERS))
 
 define oracle_number_rules
 $(BUILD)/tests/oracle_num-$(1).o: tests/oracle_num.c

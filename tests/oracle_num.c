@@ -5,12 +5,12 @@
  * type's suffix (oracle_frame_q16, oracle_frame_double). */
 #include <stdio.h>
 
-#include "../core/raycast.h"
-#include "../core/render.h"
+#include "../core/frame/raycast.h"
+#include "../core/vis/render.h"
 #include "../host/engine_build.h"
 #include "oracle.h"
 
-int FXRT_SYM(oracle_frame)(const char *path, const scene_t *sc, int width, int height, uint8_t *fast,
+int MULTI_SYM(oracle_frame)(const char *path, const scene_t *sc, int width, int height, uint8_t *fast,
                            uint8_t *ray, uint16_t *ids, char *err, size_t errlen)
 {
     /* Static: the host world and render state are too big for a stack frame. */
@@ -42,7 +42,7 @@ static void oracle_put_rgb(uint8_t *rgb, int count, const geom_common_t *o)
     }
 }
 
-int FXRT_SYM(oracle_colors)(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
+int MULTI_SYM(oracle_colors)(const char *path, const scene_t *sc, int width, int height, uint8_t *rgb,
                             char *err, size_t errlen)
 {
     static world_t world;

@@ -4,7 +4,7 @@
 # (scene order), in every number type. Included by the top Makefile.
 ORDER_FXRT := $(BUILD)/noorder/fxrt
 
-$(ORDER_FXRT): $(wildcard core/*.c core/*.h host/*.c host/*.h)
+$(ORDER_FXRT): $(wildcard core/*.h core/*/*.c core/*/*.h host/*.c host/*.h)
 	@echo "  MAKE    $@ (FXRT_NO_ORDER=1)"
 	$(Q)$(MAKE) --no-print-directory -s BUILD=$(BUILD)/noorder HOSTCFLAGS='$(HOSTCFLAGS) -DFXRT_NO_ORDER=1' $(BUILD)/noorder/fxrt
 

@@ -17,7 +17,7 @@
 SAN_CC     ?= clang
 SAN_DIR    := $(BUILD)/san
 SAN_FLAGS  := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1
-SAN_CFLAGS := $(WARN) $(SAN_FLAGS) -D_POSIX_C_SOURCE=200809L -MMD -MP
+SAN_CFLAGS := $(WARN) $(SAN_FLAGS) -D_POSIX_C_SOURCE=200809L -MMD -MP -Icore
 
 # $(call san_path,FILES): the sanitized twin of files under $(BUILD)/.
 san_path = $(patsubst $(BUILD)/%,$(SAN_DIR)/%,$1)
@@ -41,7 +41,7 @@ $(SAN_DIR)/host/%.o: host/%.c
 	@echo "  CC san  $<"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -c $< -o $@
 
-$(SAN_DIR)/host/fx.o: core/fx.c
+$(SAN_DIR)/host/fx.o: core/math/fx.c
 	@mkdir -p $(@D)
 	@echo "  CC san  $<"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -c $< -o $@
@@ -94,6 +94,9 @@ $(SAN_DIR)/tests/diffk-$(1).o: tests/diffk.c
 endef
 $(foreach n,$(NUMBERS),$(eval $(call san_number_test_rules,$(n))))
 
+$(SAN_DIR)/multi/%.o: $$(addprefix $(SAN_DIR)/,$$(MULTI_$$*)) host/multi-ld.sh
+	$(Q)$(multi_link)
+
 $(SAN_ORACLE): $$(call san_path,$$(ORACLE_OBJ))
 	@echo "  LD san  $@"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) -lm
@@ -118,7 +121,7 @@ sanitize: deps san-build $$(SAN_ORACLE)
 FUZZ_DIR      := $(BUILD)/fuzz
 FUZZ_CC       ?= clang
 FUZZ_SAN      := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1
-FUZZ_CFLAGS   := $(WARN) -D_POSIX_C_SOURCE=200809L -MMD -MP
+FUZZ_CFLAGS   := $(WARN) -D_POSIX_C_SOURCE=200809L -MMD -MP -Icore
 FUZZ_TIMEOUT  ?= 5
 FUZZ_MAX_LEN  ?= 4096
 FUZZ_SCENE_BIN := $(FUZZ_DIR)/fuzz_scene

@@ -29,7 +29,7 @@ set -u
 . "$(dirname "$0")/lib.sh"
 out=$BUILD/tests/skip
 mkdir -p "$out"
-CORE=$(cd core && ls *.c | sed "s/\.c$//")
+CORE=$(cd core && ls */*.c | sed "s/\.c$//")
 LIGHTING='^(shade_point|shade_point_k|shade_object|shade_object_k|shade_consts|render_shade_row|shadow_[a-z0-9_]+|world_occluded|world_set_material|world_add_light|geom_(plane|sphere|triangle|box)_surface)([.].*)?$'
 SHADOW='^(shadow_[a-z0-9_]+|world_occluded)([.].*)?$' # all of core/shadow.c
 LIBM='^(pow|powf|acos|acosf|cos|cosf|sin|sinf|sqrt|sqrtf|exp|log)$'
@@ -103,8 +103,8 @@ for cpu in cortex-m0 cortex-m3; do
         # shellcheck disable=SC2086
         (cd "$caps_dir" && arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror -O2 \
             -mcpu=$cpu -mthumb -ffreestanding -c -DFXRT_NUMBER=1 $caps -DFXRT_MAX_LIGHTS=0 -DFXRT_MAX_SAMPLES=2 \
-            -DFXRT_ADAPTIVE=0 -DFXRT_RENDER_MAX_WIDTH=64 -I"$OLDPWD/core" "$OLDPWD/core/render_row.c" \
-            "$OLDPWD/core/render_sample.c" "$OLDPWD/core/render_setup.c") >"$log" 2>&1
+            -DFXRT_ADAPTIVE=0 -DFXRT_RENDER_MAX_WIDTH=64 -I"$OLDPWD/core" "$OLDPWD/core/vis/render_row.c" \
+            "$OLDPWD/core/frame/render_sample.c" "$OLDPWD/core/vis/render_setup.c") >"$log" 2>&1
         check "samples 2, only FXRT_MAX_$kind > 0, $cpu: run mode compiles with -Werror ($(grep -m1 error "$log"))" \
             test ! -s "$log"
     done
@@ -120,7 +120,7 @@ for cpu in cortex-m0 cortex-m3; do # the 16 builds side by side (each in a direc
         mkdir -p "$abl_dir/$cpu-$sw"
         (cd "$abl_dir/$cpu-$sw" && arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes \
             -Werror -O2 -mcpu=$cpu -mthumb -ffreestanding -c -DFXRT_NUMBER=1 -D$sw=1 -DFXRT_MAX_LIGHTS=0 \
-            -I"$OLDPWD/core" "$OLDPWD/core/render_row.c" "$OLDPWD/core/render_vis.c" "$OLDPWD/core/render_setup.c") \
+            -I"$OLDPWD/core" "$OLDPWD/core/vis/render_row.c" "$OLDPWD/core/vis/render_vis.c" "$OLDPWD/core/vis/render_setup.c") \
             >"$abl_dir/$cpu-$sw.log" 2>&1 &
     done
 done

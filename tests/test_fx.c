@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "../core/vec3.h"
+#include "../core/math/vec3.h"
 #include "check.h"
 
 #ifndef TEST_FX_NAME

@@ -13,8 +13,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../core/render.h"
-#include "../core/render_int.h"
+#include "../core/vis/render.h"
+#include "../core/vis/render_int.h"
 #include "check.h"
 
 #if FXRT_NUMBER == FXRT_Q16

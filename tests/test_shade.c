@@ -310,7 +310,7 @@ static scene_t course(int material)
     return s;
 }
 
-#include "../core/shade.h"
+#include "../core/light/shade.h"
 
 /* Random numbers for the sweeps below (deterministic). */
 static uint64_t spot_rng_state = 0x9e3779b97f4a7c15u;

@@ -1,0 +1,9 @@
+# The core's sources by layer (make fragments and scripts read this file):
+#   CORE_FX   the Q16.16 scalar library, the same in every number type
+#   CORE_NUM  the number-generic renderer, built once per number type
+# Paths are relative to core/, without .c.
+CORE_FX  := math/fx
+CORE_NUM := math/num math/color scene/cam scene/geom scene/mesh scene/world \
+            vis/render_setup vis/render_vis vis/render_row frame/render_shade frame/render_sample \
+            light/shade light/shadow light/trace frame/raycast frame/api
+CORE_SRC := $(CORE_FX) $(CORE_NUM)

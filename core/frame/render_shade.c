@@ -1,0 +1,46 @@
+/* render_shade: the shading pass. The visibility pass (render_row.c,
+ * render_vis.c) leaves in r->vis the object that owns each column of the
+ * row; here each pixel owned by a lit object gets its colour from the
+ * lighting model (core/shade.c): the pixel's camera ray (cam_ray), the
+ * owner's surface point and normal (geom_<kind>_surface: one object, no
+ * search), and the light sum. Flat objects keep the colour the visibility
+ * pass painted. With r->keys set, every pixel's key is written too. */
+#include "vis/render_int.h"
+#include "light/shade.h"
+
+#if FXRT_MAX_LIGHTS > 0
+void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
+{
+    const cam_t *cam = r->cam;
+    int32_t w = cam->width, y = cam->height - 1 - row;
+    for (int32_t x = 0; x < w; x++) {
+        uint16_t oi = r->vis[x];
+        if (oi == RENDER_VIS_NONE) {
+            if (r->keys)
+                r->keys[x] = RENDER_KEY_MISS;
+            continue;
+        }
+        const render_obj_t *o = &r->obj[oi];
+        bool lit = !o->flat;
+        if (!lit && !r->keys)
+            continue;
+        ray_t ray;
+        uint8_t mask = 0;
+        cam_ray(cam, x, y, &ray);
+        color_t c = shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade_k[oi] : NULL,
+                                   r->keys ? &mask : NULL);
+        if (r->keys)
+            r->keys[x] = render_key(o->id, mask);
+        if (!lit)
+            continue;
+        rgb8_t p = color_to_rgb8(c);
+#if FXRT_PIXEL == FXRT_RGB565
+        ((uint16_t *)(void *)rgb)[x] = render_565(p);
+#else
+        rgb[3 * x + 0] = p.r;
+        rgb[3 * x + 1] = p.g;
+        rgb[3 * x + 2] = p.b;
+#endif
+    }
+}
+#endif

@@ -1,0 +1,370 @@
+/* shade: the lighting model (see shade.h). */
+#include "light/shade.h"
+#include "light/trace.h"
+
+#if FXRT_STATS
+fxrt_stats_t fxrt_stats;
+#endif
+
+#if FXRT_MAX_LIGHTS > 0
+
+/* Colour arithmetic of the light sum. Every term is at most 255 (1/255
+ * units) times fractions <= 1, and the sum of the ambient term and two
+ * terms per light stays below 255 (1 + 2 FXRT_MAX_LIGHTS) = 4335, far
+ * inside Q16.16: the products are fx_mul's rounding without its
+ * saturation checks, and the sums plain additions. Identical values. */
+#if FXRT_NUMBER == FXRT_Q16
+static inline num_t shade_mul(num_t a, num_t b)
+{
+#if !FX_HAVE_UMULL
+    /* The M0: a colour (a >= 0) times a fraction 0 <= b <= 1, the light
+     * sum's usual product, in two 32-bit products: (a_hi b) 2^16 + a_lo b
+     * with a_hi < 2^15 and a_lo b <= (2^16 - 1) 2^16, so a_lo b + 2^15
+     * fits 32 bits and the rounding is fx_smul32's. */
+    if (a >= 0 && (uint32_t)b <= 0x10000u)
+        return (fx_t)(((uint32_t)a >> 16) * (uint32_t)b + (((uint32_t)a & 0xffffu) * (uint32_t)b + 0x8000u) / 0x10000u);
+#endif
+    return (fx_t)((fx_smul32(a, b) + FX_HALF) >> FX_FRAC_BITS);
+}
+static inline num_t shade_add(num_t a, num_t b)
+{
+    return (fx_t)((uint32_t)a + (uint32_t)b);
+}
+#else
+static inline num_t shade_mul(num_t a, num_t b) { return a * b; }
+static inline num_t shade_add(num_t a, num_t b) { return a + b; }
+#endif
+static inline color_t shade_filter(color_t a, color_t f)
+{
+    return color_make(shade_mul(a.r, f.r), shade_mul(a.g, f.g), shade_mul(a.b, f.b));
+}
+/* c + a * s */
+static inline color_t shade_madd(color_t c, color_t a, num_t s)
+{
+    return color_make(shade_add(c.r, shade_mul(a.r, s)), shade_add(c.g, shade_mul(a.g, s)),
+                      shade_add(c.b, shade_mul(a.b, s)));
+}
+
+void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k)
+{
+    k->ambient = shade_filter(obj->color, w->ambient);
+#if SHADOW_CULL
+    k->cull = NULL;
+#endif
+    for (uint8_t i = 0; i < w->n_lights; i++) {
+        k->kd[i] = shade_filter(obj->color, w->lights[i].color);
+#if FXRT_PHONG
+        /* The specular colour (fractions) in 1/255 units: exact in Q16.16. */
+        color_t s = obj->mat.specular;
+        color_t s255 = color_make(num_mul_int(s.r, 255), num_mul_int(s.g, 255), num_mul_int(s.b, 255));
+        k->ks[i] = shade_filter(s255, w->lights[i].color);
+#endif
+    }
+}
+
+/* Spot cone: (-l) . s >= cos(angle) for l = v / |v|, compared as
+ * (-v) . s >= cos(angle) |v|: cosines, no acos, and no rounding of l. */
+static bool shade_in_cone(const light_t *L, vec3_t v, num_t dist)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    /* Q16.16 x Q2.30 products (< 2^61 each), exact in int64. */
+    int64_t lhs = -(fx_smul32(v.x, L->axis30[0]) + fx_smul32(v.y, L->axis30[1]) + fx_smul32(v.z, L->axis30[2]));
+    return lhs >= fx_smul32(dist, L->cos30);
+#else
+    return vec3_dotw(vec3_neg(v), L->dir) >= numw_mul(L->cos_angle, dist);
+#endif
+}
+
+#if FXRT_NUMBER == FXRT_Q16
+/* a b for a, b < 2^64, as 128 bits (hi:lo): four 32x32->64 products.
+ * fx128_mul's unsigned core, inline: with fx128_sqr and fx128_mul (out of
+ * line, signed) the early spot test below costs as much as the
+ * normalisation it saves (course-lambert-spot on the M3: 847.2 -> 899.3
+ * instructions per pixel, against 897 without the test). */
+static inline void shade_umul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
+{
+    uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32), b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
+    uint64_t p00 = fx_umul32(a0, b0), p01 = fx_umul32(a0, b1), p10 = fx_umul32(a1, b0);
+    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10; /* < 3 2^32 */
+    *lo = (mid << 32) | (uint32_t)p00;
+    *hi = fx_umul32(a1, b1) + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+}
+
+/* (shade.h) Is p surely outside spot L's cone, v = position - p? Decided
+ * without normalising v, and only where shade_in_cone with the distance
+ * from fx_normalize3_len (within 0.5 LSB + 2^-24 |v| of the exact m = |v|)
+ * would say outside too, so the frame is the same; a point close to the
+ * cone's edge is left to that test. With lhs = (-v) . s (Q18.46, s in
+ * Q2.30) and c = cos(angle) in Q2.30:
+ *  - lhs < 0: outside (c dist >= 0);
+ *  - else, with x = lhs + c and x' = x + x / 2^22 + 1 > x (1 + 2^-22):
+ *    x'^2 < c^2 m^2 gives x < c m (1 - 2^-23), so lhs < c (m - 1 - 2^-23 m)
+ *    <= c dist: outside. Both sides are exact 128-bit products.
+ * Only for |v_i| < 2^30 LSB (16384; then v did not saturate, and m^2 <
+ * 2^62); a farther light takes the full test. */
+bool shade_spot_surely_out(const light_t *L, vec3_t v)
+{
+    const fx_t lim = (fx_t)1 << 30;
+    if (v.x >= lim || v.x <= -lim || v.y >= lim || v.y <= -lim || v.z >= lim || v.z <= -lim)
+        return false;
+    int64_t lhs = -fx_smlal32(fx_smlal32(fx_smul32(v.x, L->axis30[0]), v.y, L->axis30[1]), v.z, L->axis30[2]);
+    if (lhs < 0)
+        return true;
+    uint64_t x = (uint64_t)lhs + (uint64_t)L->cos30; /* < 3 2^60 + 2^30 */
+    x += (x >> 22) + 1;
+    uint64_t m2 = (uint64_t)fx_smlal32(fx_smlal32(fx_smul32(v.x, v.x), v.y, v.y), v.z, v.z); /* < 3 2^60 */
+    uint64_t ahi, alo, bhi, blo;
+    shade_umul64(x, x, &ahi, &alo);
+    shade_umul64(fx_umul32((uint32_t)L->cos30, (uint32_t)L->cos30), m2, &bhi, &blo);
+    return ahi < bhi || (ahi == bhi && alo < blo);
+}
+
+/* A point or spot light can be farther from a hit point than Q16.16
+ * holds: the point up to 32767 from the origin (a plane seen far away),
+ * the light up to FXRT_COORD_LIMIT. Then v = pos - p saturates (a
+ * component beyond 32767) or fx_normalize3_len saturates its length, and
+ * neither l nor the distance is right. Any such case has a computed
+ * distance of at least SHADE_FAR_DIST (shade.h), and so does a light just
+ * inside the range, for which this path is right too. shade_light_far
+ * recomputes l from a quarter of the exact 64-bit difference (|v| / 4 <
+ * 17,737: it fits) and makes a spot's cone test with that quarter and
+ * its length; it returns l, or the zero vector when the spot does not
+ * reach p. The caller then passes the distance SHADE_FAR_DIST, and
+ * shadow_blocked casts the shadow ray from the light's end of the
+ * segment (core/shadow.c). Rare, so out of line. */
+static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, vec3_t p)
+{
+    vec3_t pos = L->position, l = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3_t v = vec3_make((fx_t)(((int64_t)pos.x - p.x) / 4), (fx_t)(((int64_t)pos.y - p.y) / 4),
+                         (fx_t)(((int64_t)pos.z - p.z) / 4));
+    num_t len;
+    (void)vec3_unit_len(v, &l, &len); /* |v| > 8191: not zero */
+    if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, len))
+        return vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    return l;
+}
+#endif
+
+color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                    uint8_t *mask)
+{
+    return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
+}
+
+static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+                            const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
+
+/* shade_sum without per-frame constants (the ray caster, arbitrary rays):
+ * they are computed here, off the renderer's stack path. It calls
+ * shade_lights, not shade_sum: no cycle in the call graph
+ * (tests/norecurse.sh). */
+static __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
+                                                      uint16_t index, const vec3_t *p, const vec3_t *n_geo,
+                                                      const vec3_t *d, uint8_t *mask)
+{
+    shade_k_t own;
+    shade_consts(w, obj, &own);
+    return shade_lights(w, obj, kind, index, p, n_geo, d, &own, mask);
+}
+
+/* The light sum for object obj (= world_common(w, kind, index)), looked
+ * up once by the caller. Inlined into its two callers where the core has
+ * 32x32->64-bit multiplies (the M3 and M4F: one call fewer per pixel,
+ * about -1 % on the lit scenes when it was measured); the M0
+ * keeps the call (inlined, its callers' register pressure cost it +1 %). */
+#if FX_HAVE_UMULL
+#define SHADE_SUM_INLINE inline __attribute__((always_inline))
+#else
+#define SHADE_SUM_INLINE
+#endif
+static SHADE_SUM_INLINE color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+                                          const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k,
+                                          uint8_t *mask)
+{
+    const material_t *m = &obj->mat;
+    FXRT_COUNT(shaded);
+    bool lit = m->kind != MATERIAL_FLAT;
+    /* Transparent: no local term (core/trace.c adds what it transmits and
+     * reflects); the light loop runs only for a pixel's key. */
+    bool clear = m->kind == MATERIAL_TRANSPARENT;
+    if ((!lit || clear) && !mask)
+        return clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : obj->color;
+    if (lit && !clear && !k)
+        return shade_sum_own(w, obj, kind, index, p, n_geo, d, mask); /* computes k on its own frame */
+    return shade_lights(w, obj, kind, index, p, n_geo, d, k, mask);
+}
+
+#if FXRT_PHONG
+/* c plus Phong's term c_s (.) c_l (ks) max(0, r . e)^k for the light at l.
+ * Out of line on the M0 only: there its temporaries, inlined, made
+ * shade_lights' frame (the deepest on the shading path) larger than the
+ * 16 KB boards' stack margin allows with shadow-ray culling. */
+#if FX_HAVE_UMULL
+#define SHADE_SPEC_INLINE inline __attribute__((always_inline))
+#else
+#define SHADE_SPEC_INLINE __attribute__((noinline))
+#endif
+static SHADE_SPEC_INLINE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
+                                                const color_t *ks, uint16_t exponent)
+{
+    /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
+    vec3_t r = vec3_sub(vec3_scale_unit_small(*n, num_add(ndl, ndl)), *l);
+    numw_t rde = numw_neg_fits(vec3_dotw_units(r, *d)); /* r . e = -(r . d), e = -d */
+    if (rde > 0)
+        c = shade_madd(c, *ks, numw_pow_int(rde, exponent));
+    return c;
+}
+#endif
+
+/* The light loop of shade_sum (k not NULL when the material is lit and
+ * not transparent). */
+static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+                            const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
+                            uint8_t *mask)
+{
+#if FXRT_BOUND_NO_LIGHT_SUM
+    /* Measurement only (core/fxrt_config.h): no light sum at all. */
+    if (!mask && obj->mat.kind != MATERIAL_TRANSPARENT)
+        return obj->mat.kind == MATERIAL_FLAT || !k ? obj->color : k->ambient;
+#endif
+    vec3_t p = *pp, n_geo = *n_geo_p, d = *dp;
+    const material_t *m = &obj->mat;
+    bool lit = m->kind != MATERIAL_FLAT;
+    bool clear = m->kind == MATERIAL_TRANSPARENT;
+    /* Two-sided: n faces the incoming ray. */
+    bool inside = vec3_dotw_units(d, n_geo) > 0;
+    vec3_t n = inside ? vec3_neg_unit(n_geo) : n_geo;
+    color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
+    uint8_t bits = 0;
+#if !FXRT_SHADOWS
+    (void)kind, (void)index; /* only shadow rays need to know the object */
+#endif
+    for (uint8_t i = 0; i < w->n_lights; i++) {
+        const light_t *L = &w->lights[i];
+        vec3_t l;
+        num_t dist = NUM_MAX;
+        if (L->kind == LIGHT_DIRECTIONAL) {
+            l = L->dir; /* normalised once, in world_add_light */
+        } else {
+            /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
+             * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
+#if FXRT_NUMBER == FXRT_Q16
+            /* One inverse square root gives l and |v| (fx_normalize3_len);
+             * a point clearly outside a spot's cone needs neither. Where
+             * the core has UMULL (M3, M4F) the early test's products cost
+             * less than the normalisation: -5 % on the spot scenes; the M0
+             * pays +5 % for them, so it goes straight to the full test. */
+            vec3_t v = vec3_sub(L->position, p);
+#if FX_HAVE_UMULL
+            if (L->kind == LIGHT_SPOT && shade_spot_surely_out(L, v))
+                continue; /* outside the cone */
+#endif
+            FXRT_COUNT(l_normalised);
+            if (!vec3_unit_len(v, &l, &dist))
+                continue; /* the light is at p: no direction, no light */
+            if (__builtin_expect(dist >= SHADE_FAR_DIST, 0)) {
+                l = shade_light_far(L, p);
+                if (l.x == NUM_ZERO && l.y == NUM_ZERO && l.z == NUM_ZERO)
+                    continue; /* outside the cone */
+                dist = SHADE_FAR_DIST;
+            } else if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist)) {
+                continue; /* outside the cone */
+            }
+#else
+            vec3_t v = vec3_sub(L->position, p);
+            /* |v| first: a point outside a spot's cone costs no division. */
+            dist = vec3_len(v);
+            if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))
+                continue; /* outside the cone */
+            FXRT_COUNT(l_normalised);
+            if (dist == NUM_ZERO)
+                continue; /* the light is at p: no direction, no light */
+            l = vec3_scale(v, num_div(NUM_ONE, dist)); /* vec3_normalize's value, without its second root */
+#endif
+        }
+        numw_t ndlw = vec3_dotw_units(n, l);
+        if (ndlw <= 0)
+            continue; /* behind the surface: no shadow ray either */
+#if FXRT_SHADOWS
+#if SHADOW_CULL
+        const shadow_cull_t *cull = k && k->cull ? k->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
+#else
+        const shadow_cull_row_t *cull = NULL;
+#endif
+        if (L->shadows && shadow_blocked(w, kind, index, obj, inside, &p, L, &l, dist, cull))
+            continue;
+#endif
+        bits = (uint8_t)(bits | (1u << i));
+        if (!lit || clear)
+            continue;
+        num_t ndl = numw_round_fits(ndlw); /* n, l unit: |n . l| < 2, no saturation */
+        c = shade_madd(c, k->kd[i], ndl);
+#if FXRT_PHONG
+        if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE)
+            c = shade_specular(c, &n, &l, &d, ndl, &k->ks[i], m->exponent);
+#endif
+    }
+    if (mask)
+        *mask = bits;
+    return c;
+}
+
+color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                      const shade_k_t *k, uint8_t *mask)
+{
+    const geom_common_t *obj = world_common(w, kind, index);
+    /* Without the caller's constants (the bounce loop, the ray caster), a
+     * lit opaque material goes straight to shade_sum_own, so that one
+     * shade_sum frame, not two, is on the stack (16 KB boards). */
+    if (!k && obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_TRANSPARENT)
+        return shade_sum_own(w, obj, kind, index, &p, &n_geo, &d, mask);
+    return shade_sum(w, obj, kind, index, &p, &n_geo, &d, k, mask);
+}
+
+color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask)
+{
+    return shade_object_k(w, kind, index, ray, NULL, mask);
+}
+
+color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
+                       uint8_t *mask)
+{
+    const geom_common_t *obj = world_common(w, kind, index);
+    if (obj->mat.kind == MATERIAL_FLAT && !mask)
+        return obj->color;
+    num_t t = NUM_ZERO;
+    vec3_t n = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    switch (kind) {
+#if FXRT_MAX_PLANES > 0
+    case GEOM_PLANE: geom_plane_surface(&w->planes[index], ray, &t, &n); break;
+#endif
+#if FXRT_MAX_SPHERES > 0
+    case GEOM_SPHERE: geom_sphere_surface(&w->spheres[index], ray, &t, &n); break;
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    case GEOM_TRIANGLE: geom_triangle_surface(&w->triangles[index], ray, &t, &n); break;
+#endif
+#if FXRT_MAX_BOXES > 0
+    case GEOM_BOX: geom_box_surface(&w->boxes[index], ray, &t, &n); break;
+#endif
+    default: break;
+    }
+#if FXRT_NUMBER == FXRT_Q16
+    /* A camera ray (unit d, shade.h): for |t| < 16384, t d needs no
+     * saturation test (vec3_scale_unit_small, the same value; -0.75 % on
+     * the lit set on the M3). */
+    vec3_t p = t < num_from_int(16384) && t > -num_from_int(16384)
+                   ? vec3_add(ray->o, vec3_scale_unit_small(ray->d, t))
+                   : ray_at(ray, t);
+#else
+    vec3_t p = ray_at(ray, t);
+#endif
+    color_t c = shade_sum(w, obj, kind, index, &p, &n, &ray->d, k, mask);
+#if FXRT_MAX_DEPTH > 0
+    if (material_bounces(obj->mat.kind))
+        c = trace_bounces(w, kind, index, ray, p, n, c);
+#endif
+    return c;
+}
+
+#endif

@@ -1,0 +1,159 @@
+/* shade: the lighting model, per hit point (issue 11; docs/ACCURACY.md
+ * "Shading" has its error bound).
+ *
+ * With hit point p, unit normal n turned towards the incoming ray (surfaces
+ * are two-sided), e = -d towards the eye, surface colour c_d (1/255 units),
+ * ambient c_a, and for each light its colour c_l and the unit vector l from
+ * p towards it:
+ *   flat     c = c_d (lights ignored)
+ *   lambert  c = c_d (.) c_a + sum over lights that reach p of
+ *                c_d (.) c_l * (n . l)
+ *   phong    lambert + sum over the same lights of
+ *                c_s (.) c_l * max(0, r . e)^k,   r = 2 (n . l) n - l
+ * A light reaches p when n . l > 0, p is inside its cone (spot: (-l) . s >=
+ * cos(angle), cosines compared, no acos) and, for a light with shadows on,
+ * no object is hit along the ray from p towards it with 0 < t < distance
+ * (any t > 0 for a directional light; core/shadow.c). Each channel is
+ * summed unclamped; color_to_rgb8 clamps and rounds. No distance
+ * attenuation. The double build is the reference: this code, in doubles.
+ */
+#ifndef FXRT_SHADE_H
+#define FXRT_SHADE_H
+
+#include <stddef.h>
+
+#include "scene/world.h"
+
+/* Shadow-ray culling (FXRT_SHADOW_CULL; core/shadow.c): for each point or
+ * spot light and each bounded object (slot: spheres, then triangles, then
+ * boxes, by index), the cone from the light that holds every shadow ray
+ * the object's exact test could find blocked. A ray towards the light
+ * along ldir (unit) from a point at distance dist skips the object when
+ * dist <= d_cap and either dist <= d_near (the object lies beyond the
+ * point, seen from the light) or ldir . u > lim (outside the cone). An
+ * entry with d_cap < 0 culls nothing. For a directional light the rays
+ * are parallel: an object is skipped when the point's projection along
+ * ldir falls outside the object's (two exact cross-product forms). */
+#define SHADOW_CULL_SLOTS (FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
+#define SHADOW_CULL (FXRT_SHADOWS && FXRT_SHADOW_CULL && SHADOW_CULL_SLOTS > 0)
+#if SHADOW_CULL
+typedef union {
+    struct {
+        vec3_t u;     /* unit vector from the light towards the bounding sphere's centre (Q16.16: in Q2.30) */
+        num_t lim;    /* -cos of the cone's half-angle, minus the margins (Q16.16: in Q18.14, rounded up) */
+        num_t d_near; /* no blocking hit for dist <= d_near */
+        num_t d_cap;  /* the entry holds for dist <= d_cap (< 0: never) */
+    } pt;             /* point and spot lights */
+    struct {
+        numw_t c1, c2; /* the centre's projections (shadow.c, shadow_proj) */
+        numw_t r;      /* bounding radius with margins */
+    } dir;             /* directional lights */
+} shadow_cull_t;
+/* Fill table[light * SHADOW_CULL_SLOTS + slot] for world w (every light:
+ * a point or spot light's row holds cones, a directional light's the
+ * objects' projections). Once per frame. */
+void shadow_cull_setup(const world_t *w, shadow_cull_t *table);
+#if FXRT_NUMBER == FXRT_Q16
+/* A point or spot light's cone test, ldir . u > lim (shadow_culled_pt,
+ * core/shadow.c). Q16.16 keeps u in Q2.30 and lim in Q18.14 rounded up,
+ * so that the test needs only the high word of the Q18.46 dot: with S =
+ * ldir . u 2^46 exact in int64, floor(S / 2^32) > lim14 gives S / 2^46 >=
+ * (lim14 + 1) 2^-14 > lim. (Rounding lim up, by at most 3 2^-16, and
+ * reading only the high word, at most 2^-14, cull a little less than the
+ * exact test with lim would, never more; the margins are 2^-11.) */
+static inline bool shadow_cone_out64(const shadow_cull_t *e, const vec3_t *l)
+{
+    int64_t S = fx_smlal32(fx_smlal32(fx_smul32(l->x, e->pt.u.x), l->y, e->pt.u.y), l->z, e->pt.u.z);
+    return (int32_t)(S >> 32) > e->pt.lim;
+}
+/* The same in 32-bit products (the M0's form; true only where the exact
+ * dot is above lim14 too, which tests/test_shade.c checks on the host):
+ * ldir . u from components in Q2.14 (ldir >> 2, u >> 16; |.| <= 2^14),
+ * three products in Q4.28 (each at most 2^28). With x = 4a + r, y = 4b +
+ * s (0 <= r, s <= 3), |xy - 16ab| = 4as + 4br + rs <= 393,225 2^-32, so
+ * the three move the dot by at most 73,730 in Q4.28 (2.7e-4); the test
+ * adds 2^17 (2^-11). */
+static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
+{
+    int32_t dot = (l->x >> 2) * (e->pt.u.x >> 16) + (l->y >> 2) * (e->pt.u.y >> 16) + (l->z >> 2) * (e->pt.u.z >> 16);
+    return dot > (int32_t)((uint32_t)e->pt.lim << 14) + (1 << 17);
+}
+#endif
+#endif
+
+/* What the light sum needs of one object that does not change within a
+ * frame, computed once per frame and object (render_setup) instead of at
+ * every pixel: the ambient term c_d (.) c_a and, per light, the diffuse
+ * colour c_d (.) c_l and the specular colour c_s (.) c_l in 1/255 units. */
+typedef struct {
+    color_t ambient;
+    color_t kd[FXRT_MAX_LIGHTS > 0 ? FXRT_MAX_LIGHTS : 1];
+#if FXRT_PHONG
+    color_t ks[FXRT_MAX_LIGHTS];
+#endif
+#if SHADOW_CULL
+    const shadow_cull_t *cull; /* the frame's cull table (NULL: none) */
+#endif
+} shade_k_t;
+
+/* Fill k for object obj of world w (k->cull: NULL). */
+void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k);
+
+/* The colour (1/255 units, unclamped) of object `index` of `kind` seen
+ * along `ray` (a camera ray: d unit, not a bounce ray's), which the
+ * caller has found to meet it (the renderer's visibility pass, or
+ * world_hit): the hit point and normal come from the
+ * object's geom_<kind>_surface, the light sum from shade_point. When mask
+ * is not NULL it receives the lights that reach the hit point (bit i for
+ * light i), also for a flat material; without it a flat object costs
+ * nothing but its colour. */
+color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask);
+/* The same with the object's per-frame constants (NULL: computed here). */
+color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
+                       uint8_t *mask);
+
+/* The light sum at hit point p of object (kind, index) with geometric unit
+ * normal n_geo (not yet turned) for a ray of unit direction d. */
+color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                    uint8_t *mask);
+color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
+                      const shade_k_t *k, uint8_t *mask);
+
+/* Shadow ray (FXRT_SHADOWS 1): is light `l`, in unit direction ldir at
+ * distance dist (NUM_MAX for a directional light) from p, blocked? p lies
+ * on object (kind, index), seen from its back (inside) or front.
+ * Self-shadowing policy (no offset, no epsilon): every primitive is
+ * convex, so a ray leaving its surface towards the side the normal faces
+ * never meets it again, except a solid (sphere, box) seen from inside,
+ * where the ray crosses the interior and leaves it: that object then
+ * blocks the light exactly when the light is outside it (always for a
+ * directional light). Every other object is tested with the world-space
+ * kernels, t limited to (0, dist), stopping at the first hit. */
+#if SHADOW_CULL
+typedef shadow_cull_t shadow_cull_row_t;
+#else
+typedef void shadow_cull_row_t;
+#endif
+/* obj: world_common(w, kind, index). cull: the light's row of the cull
+ * table, or NULL (no culling). */
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
+                    const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
+
+#if FXRT_NUMBER == FXRT_Q16
+/* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST
+ * from p may lie beyond the range (shade_lights computes |v| within 0.5
+ * LSB + 2^-24 relative, so |v| >= 32768 gives at least 129 LSB below
+ * NUM_MAX). shadow_blocked then casts the ray from the light towards p,
+ * t in (0, NUM_MAX - 1): every bounded object is within 32,474 of a light
+ * in the domain, so no occluder between them is missed but a plane met
+ * beyond 32767 from the light (a far hit, docs/ACCURACY.md). */
+#define SHADE_FAR_DIST (NUM_MAX - 256)
+/* Is the point p surely outside spot light L's cone (v = L's position -
+ * p)? A cheap exact test that the light loop makes before normalising v:
+ * true only where the cone test with v's normalised length would reject
+ * p too, so it changes no frame (tests/test_shade.c checks this near the
+ * cone's edge). False for |v_i| >= 16384 (the full test decides). */
+bool shade_spot_surely_out(const light_t *L, vec3_t v);
+#endif
+
+#endif

@@ -1,0 +1,378 @@
+/* shadow: shadow rays (see shade.h for the self-shadowing policy). */
+#include "light/shade.h"
+
+#if FXRT_MAX_LIGHTS > 0 && FXRT_SHADOWS
+
+/* Transparent objects cast no shadow (core/trace.h). */
+#if FXRT_MAX_DEPTH > 0
+#define SHADOW_CASTS(o) ((o).mat.kind != MATERIAL_TRANSPARENT)
+#else
+#define SHADOW_CASTS(o) true
+#endif
+
+/* Is the light's position strictly inside solid (kind, index)? */
+static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t index, const light_t *l)
+{
+    if (l->kind == LIGHT_DIRECTIONAL)
+        return false; /* at infinity */
+#if FXRT_MAX_SPHERES > 0
+    if (kind == GEOM_SPHERE) {
+        const geom_sphere_t *s = &w->spheres[index];
+        vec3_t v = vec3_sub(l->position, s->center);
+        return vec3_dotw(v, v) < s->radius2;
+    }
+#endif
+#if FXRT_MAX_BOXES > 0
+    if (kind == GEOM_BOX) {
+        const geom_box_t *b = &w->boxes[index];
+        vec3_t q = l->position;
+        return q.x > b->min.x && q.x < b->max.x && q.y > b->min.y && q.y < b->max.y && q.z > b->min.z &&
+               q.z < b->max.z;
+    }
+#endif
+    (void)w, (void)kind, (void)index;
+    return false;
+}
+
+#if SHADOW_CULL
+/* Shadow-ray culling (shade.h; docs/ACCURACY.md, "Shadow-ray culling",
+ * derives the margins). The shadow ray from p along ldir (unit, rounded)
+ * with t in (0, dist) ends at L' = p + dist ldir, within eps(dist) of the
+ * light's position L: eps <= 2^-15 + dist 2^-13 in every build (Q16.16:
+ * |ldir - v/|v||_2 <= 0.9 LSB = 2^-16.2 and |dist - |v|| <= 0.5 LSB +
+ * 2^-24 |v|; float and double: a few ulp). A point x of the ray lies on
+ * L' + s (-ldir), 0 < s < dist, so the ray from L along -ldir passes
+ * within eps of x. If the exact test finds the object at x, x is within
+ * R' of the bounding sphere's centre c, and the ray from L passes within
+ * rho = R' + eps of c: the angle between -ldir and c - L is at most
+ * asin(rho / |c - L|), and s + eps >= |x - L| >= |c - L| - R'. R' is the
+ * bounding radius plus a margin for the kernels' own rounding (Q16.16: a
+ * few LSB; float and double: a few ulp of the coordinates, CULL_REL).
+ * Each entry holds for dist <= d_cap, where eps(dist) <= eps_cap. */
+/* The M0 (no 32x32->64 multiply) makes the cone test in 32-bit products
+ * (shadow_cone_out16, shade.h; tests/test_shade.c checks it on the host). */
+#define SHADOW_CULL_DOT16 (FXRT_NUMBER == FXRT_Q16 && !FX_HAVE_UMULL)
+#if FXRT_NUMBER == FXRT_Q16
+#define CULL_REL NUM_ZERO
+#elif FXRT_NUMBER == FXRT_FLOAT
+#define CULL_REL NUM(1.0 / 262144) /* 2^-18: 64 ulp of float */
+#else
+#define CULL_REL NUM(1.0 / 1099511627776.0) /* 2^-40 */
+#endif
+
+static num_t shadow_l1(vec3_t v)
+{
+    return num_add(num_add(num_abs(v.x), num_abs(v.y)), num_abs(v.z));
+}
+
+/* Directional lights: v . (ldir x e_k) for the axis e_k, k = 0..2,
+ * as one 2x2 determinant. ldir . (ldir x e_k) is exactly zero (the same
+ * two products), so every point p + t ldir of a shadow ray has p's value:
+ * an object whose bounding sphere (c, R') it meets has |value(p) -
+ * value(c)| <= R' |ldir x e_k| <= R'. In Q16.16 vec3_det2w is exact. The
+ * two axes used are the light's (light_dir_axes, core/light.h), found
+ * once in world_add_light. */
+static numw_t shadow_proj(vec3_t v, vec3_t l, int k)
+{
+    return k == 0 ? vec3_det2w(v.y, l.z, v.z, l.y) : k == 1 ? vec3_det2w(v.z, l.x, v.x, l.z)
+                                                           : vec3_det2w(v.x, l.y, v.y, l.x);
+}
+
+/* The entry for an object with bounding sphere (c, r) seen from L. */
+static void shadow_cull_entry(shadow_cull_t *e, const light_t *L, vec3_t c, num_t r)
+{
+    /* R' = r (1 + 2^-8) + 2^-10 + CULL_REL (|c|_1 + |L|_1). */
+    num_t rr = num_add(num_add(r, num_mul(r, NUM(1.0 / 256))), NUM(1.0 / 1024));
+    rr = num_add(rr, num_mul(CULL_REL, num_add(shadow_l1(c), shadow_l1(L->position))));
+    if (L->kind == LIGHT_DIRECTIONAL) {
+        e->dir.c1 = shadow_proj(c, L->dir, L->axes[0]);
+        e->dir.c2 = shadow_proj(c, L->dir, L->axes[1]);
+        e->dir.r = numw_from(rr);
+        return;
+    }
+    e->pt.u = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    e->pt.lim = NUM_ZERO;
+    e->pt.d_near = e->pt.d_cap = NUM(-1); /* culls nothing */
+    vec3_t u;
+    num_t len;
+    if (!vec3_unit_len(vec3_sub(c, L->position), &u, &len))
+        return; /* the light at the centre */
+    num_t eps_cap = num_add(num_mul(rr, NUM(0.25)), num_mul(len, NUM(1.0 / 1024)));
+    num_t rho = num_add(rr, eps_cap);
+    if (rho >= len)
+        return; /* the light is inside or near the bound */
+    num_t ratio = num_div(rho, len);
+    num_t s2 = num_mul(ratio, ratio);
+    if (s2 > NUM(1.0 - 1.0 / 128))
+        return; /* a cone of almost a half-space: no use */
+    /* cos(asin(rho / |c - L|)) within a few LSB (the root's slope is at
+     * most 8 here), less 2^-11 for that, u's and ldir's rounding and
+     * |ldir| != 1. */
+    num_t cosv = num_sub(num_sqrt(num_sub(NUM_ONE, s2)), NUM(1.0 / 2048));
+    /* eps(dist) <= eps_cap for dist <= (eps_cap - 2^-15) 2^13. */
+    num_t cap = num_mul_int(num_sub(eps_cap, NUM(1.0 / 32768)), 8192);
+#if FXRT_NUMBER == FXRT_Q16
+    if (cap >= SHADE_FAR_DIST)
+        cap = SHADE_FAR_DIST - 1; /* the far path (shade.h) is never culled */
+#endif
+    /* s + eps >= |c - L| - R' with s < dist |ldir| <= dist (1 + 2^-12). */
+    num_t near = num_sub(num_mul(num_sub(len, rho), NUM(1.0 - 1.0 / 4096)), NUM(1.0 / 32768));
+#if FXRT_NUMBER == FXRT_Q16
+    /* u in Q2.30 (exact) and lim in Q18.14, rounded up (shade.h). */
+    e->pt.u = vec3_make(u.x * (1 << 14), u.y * (1 << 14), u.z * (1 << 14));
+    e->pt.lim = (num_neg(cosv) + 3) >> 2;
+#else
+    e->pt.u = u;
+    e->pt.lim = num_neg(cosv);
+#endif
+    e->pt.d_cap = cap;
+    e->pt.d_near = num_min(near, cap);
+}
+
+void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
+{
+    for (uint8_t li = 0; li < w->n_lights; li++) {
+        const light_t *L = &w->lights[li];
+        shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
+#if FXRT_MAX_SPHERES > 0
+        for (uint16_t i = 0; i < w->n_spheres; i++)
+            shadow_cull_entry(&row[i], L, w->spheres[i].center, w->spheres[i].radius);
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+        for (uint16_t i = 0; i < w->n_triangles; i++) {
+            const geom_triangle_t *t = &w->triangles[i];
+            vec3_t lo = vec3_make(num_min(num_min(t->a.x, t->b.x), t->c.x), num_min(num_min(t->a.y, t->b.y), t->c.y),
+                                  num_min(num_min(t->a.z, t->b.z), t->c.z));
+            vec3_t hi = vec3_make(num_max(num_max(t->a.x, t->b.x), t->c.x), num_max(num_max(t->a.y, t->b.y), t->c.y),
+                                  num_max(num_max(t->a.z, t->b.z), t->c.z));
+            vec3_t c = vec3_make(num_half(num_add(lo.x, hi.x)), num_half(num_add(lo.y, hi.y)), num_half(num_add(lo.z, hi.z)));
+            num_t r = num_max(num_max(vec3_len(vec3_sub(t->a, c)), vec3_len(vec3_sub(t->b, c))), vec3_len(vec3_sub(t->c, c)));
+            shadow_cull_entry(&row[FXRT_MAX_SPHERES + i], L, c, r);
+        }
+#endif
+#if FXRT_MAX_BOXES > 0
+        for (uint16_t i = 0; i < w->n_boxes; i++) {
+            const geom_box_t *b = &w->boxes[i];
+            vec3_t c = vec3_make(num_half(num_add(b->min.x, b->max.x)), num_half(num_add(b->min.y, b->max.y)),
+                                 num_half(num_add(b->min.z, b->max.z)));
+            num_t r = num_max(vec3_len(vec3_sub(b->max, c)), vec3_len(vec3_sub(c, b->min)));
+            shadow_cull_entry(&row[FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + i], L, c, r);
+        }
+#endif
+    }
+}
+
+/* One shadow ray's view of the cull row: the light's row, the ray's ldir
+ * and dist, and for a directional light the point's projections (with,
+ * in float and double, a margin for their rounding: CULL_REL |p|_1). */
+typedef struct {
+    const shadow_cull_t *row;
+    vec3_t ldir;
+    num_t dist;
+    numw_t p1, p2;
+#if FXRT_NUMBER != FXRT_Q16
+    numw_t slack;
+#endif
+} shadow_ray_cull_t;
+
+/* Can the object of cull entry e not block the ray? One test per kind of
+ * light, each inlined where products are cheap (32x32->64 in one
+ * instruction, or floating point); out of line on the M0, where inlined
+ * three times into the loop their products took its frame from 40 to 312
+ * bytes (16 KB boards). */
+#if FX_HAVE_UMULL || FXRT_NUMBER != FXRT_Q16
+#define SHADOW_CULLED_INLINE inline __attribute__((always_inline))
+#else
+#define SHADOW_CULLED_INLINE __attribute__((noinline))
+#endif
+/* A point or spot light: the cone and the distances. */
+static SHADOW_CULLED_INLINE bool shadow_culled_pt(const shadow_ray_cull_t *rc, const shadow_cull_t *e)
+{
+    if (rc->dist > e->pt.d_cap)
+        return false;
+    if (rc->dist <= e->pt.d_near)
+        return true;
+#if SHADOW_CULL_DOT16
+    return shadow_cone_out16(e, &rc->ldir);
+#elif FXRT_NUMBER == FXRT_Q16
+    return shadow_cone_out64(e, &rc->ldir);
+#else
+    return vec3_dotw_unit(rc->ldir, e->pt.u) > numw_from(e->pt.lim);
+#endif
+}
+/* |d| > lim for lim >= 0: Q16.16 in one unsigned comparison (d + lim
+ * lies in [0, 2 lim] exactly when |d| <= lim; |d| < 2^50, no overflow). */
+static inline bool shadow_outside(numw_t d, numw_t lim)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    return (uint64_t)d + (uint64_t)lim > 2 * (uint64_t)lim;
+#else
+    return d > lim || d < -lim;
+#endif
+}
+/* A directional light: the point's projections against the object's. */
+static SHADOW_CULLED_INLINE bool shadow_culled_dir(const shadow_ray_cull_t *rc, const shadow_cull_t *e)
+{
+#if FXRT_NUMBER != FXRT_Q16
+    numw_t lim = numw_add(e->dir.r, rc->slack);
+#else
+    numw_t lim = e->dir.r;
+#endif
+    return shadow_outside(numw_sub_exact(rc->p1, e->dir.c1), lim) ||
+           shadow_outside(numw_sub_exact(rc->p2, e->dir.c2), lim);
+}
+#else
+typedef void shadow_ray_cull_t;
+typedef char shadow_cull_t; /* a placeholder: no table */
+#endif
+
+/* Which culling a loop makes: a constant in each instance of
+ * shadow_occluded_loop, so that each has its test inlined and no test of
+ * the light's kind or of a missing table per object. */
+enum { SHADOW_CULL_NONE, SHADOW_CULL_PT, SHADOW_CULL_DIR };
+#if SHADOW_CULL
+#define SHADOW_ROW(base) (mode != SHADOW_CULL_NONE ? rc->row + (base) : NULL)
+#define SHADOW_SKIP(e)                                                                                                 \
+    (mode == SHADOW_CULL_PT ? shadow_culled_pt(rc, e) : mode == SHADOW_CULL_DIR ? shadow_culled_dir(rc, e) : false)
+#else
+#define SHADOW_ROW(base) NULL
+#define SHADOW_SKIP(e) false
+#endif
+/* The next object's cull entry. */
+#define SHADOW_NEXT(e) ((e) = mode != SHADOW_CULL_NONE ? (e) + 1 : (e))
+
+/* world_occluded, skipping what rc rules out (mode: how). An object's cull
+ * entry is read before the object (the table is small and contiguous);
+ * the object itself is skipped by its id when its entry did not cull it. */
+static inline __attribute__((always_inline)) bool shadow_occluded_loop(const world_t *w, const ray_t *ray, num_t tmax,
+                                                                      uint16_t skip_id, const shadow_ray_cull_t *rc,
+                                                                      int mode)
+{
+    (void)rc, (void)mode;
+#if SHADOW_CULL
+    /* A directional light's: a copy that no call can change, so that its
+     * fields may stay in registers (course-lambert-directional on the M3:
+     * 946.7 -> 941.7 instructions per pixel; a point light's copy costs
+     * more than it saves; on the M0 the test is a call, and the copy only
+     * costs). */
+    shadow_ray_cull_t own;
+    if (mode == SHADOW_CULL_DIR && !SHADOW_CULL_DOT16) {
+        own = *rc;
+        rc = &own;
+    }
+#endif
+#if FXRT_MAX_PLANES > 0
+    for (uint16_t i = 0; i < w->n_planes; i++)
+        if (w->planes[i].obj.id != skip_id && SHADOW_CASTS(w->planes[i].obj) && geom_plane_occludes(&w->planes[i], ray, tmax))
+            return true;
+#endif
+#if FXRT_MAX_SPHERES > 0
+    {
+        const shadow_cull_t *e = SHADOW_ROW(0);
+        const geom_sphere_t *o = w->spheres;
+        for (uint16_t n = w->n_spheres; n > 0; n--, o++) {
+            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_sphere_occludes(o, ray, tmax))
+                return true;
+            SHADOW_NEXT(e);
+        }
+    }
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    {
+        const shadow_cull_t *e = SHADOW_ROW(FXRT_MAX_SPHERES);
+        const geom_triangle_t *o = w->triangles;
+        for (uint16_t n = w->n_triangles; n > 0; n--, o++) {
+            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_triangle_occludes(o, ray, tmax))
+                return true;
+            SHADOW_NEXT(e);
+        }
+    }
+#endif
+#if FXRT_MAX_BOXES > 0
+    {
+        const shadow_cull_t *e = SHADOW_ROW(FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES);
+        const geom_box_t *o = w->boxes;
+        for (uint16_t n = w->n_boxes; n > 0; n--, o++) {
+            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_box_occludes(o, ray, tmax))
+                return true;
+            SHADOW_NEXT(e);
+        }
+    }
+#endif
+    return false;
+}
+
+/* The loop without culling (world_occluded, and shadow rays without a
+ * table) and, with SHADOW_CULL, one instance per kind of light. */
+static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
+{
+    return shadow_occluded_loop(w, ray, tmax, skip_id, NULL, SHADOW_CULL_NONE);
+}
+#if SHADOW_CULL
+static bool shadow_occluded_pt(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
+                               const shadow_ray_cull_t *rc)
+{
+    return shadow_occluded_loop(w, ray, tmax, skip_id, rc, SHADOW_CULL_PT);
+}
+static bool shadow_occluded_dir(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
+                                const shadow_ray_cull_t *rc)
+{
+    return shadow_occluded_loop(w, ray, tmax, skip_id, rc, SHADOW_CULL_DIR);
+}
+
+/* A directional light's ray: its projections (out of line: shadow_blocked's
+ * frame stays small on the M0). */
+static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const ray_t *ray, num_t tmax,
+                                                        uint16_t skip_id, shadow_ray_cull_t *rc, const vec3_t *p,
+                                                        const uint8_t axes[2])
+{
+    rc->p1 = shadow_proj(*p, rc->ldir, axes[0]);
+    rc->p2 = shadow_proj(*p, rc->ldir, axes[1]);
+#if FXRT_NUMBER != FXRT_Q16
+    rc->slack = num_mul(CULL_REL, shadow_l1(*p));
+#endif
+    return shadow_occluded_dir(w, ray, tmax, skip_id, rc);
+}
+#endif
+
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
+                    const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
+{
+    FXRT_COUNT(shadow_rays);
+    bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
+    if (inside && solid && SHADOW_CASTS(*obj) && !shadow_light_inside(w, kind, index, l))
+        return true;
+    ray_t ray = {*p, *ldir};
+    num_t tmax = dist;
+#if FXRT_NUMBER == FXRT_Q16
+    if (dist >= SHADE_FAR_DIST && l->kind != LIGHT_DIRECTIONAL) {
+        /* The light may be beyond the range from p (shade.h): the same
+         * segment from the light's end (never culled: d_cap is below). */
+        ray.o = l->position;
+        ray.d = vec3_neg(*ldir);
+        tmax = NUM_MAX - 1;
+    }
+#endif
+    uint16_t id = obj->id;
+#if SHADOW_CULL
+    if (cull) {
+        shadow_ray_cull_t rc;
+        rc.row = cull;
+        rc.ldir = *ldir;
+        rc.dist = dist;
+        if (l->kind == LIGHT_DIRECTIONAL)
+            return shadow_blocked_dir(w, &ray, tmax, id, &rc, p, l->axes);
+        return shadow_occluded_pt(w, &ray, tmax, id, &rc);
+    }
+#else
+    (void)cull;
+#endif
+    return shadow_occluded(w, &ray, tmax, id);
+}
+
+bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
+{
+    return shadow_occluded(w, ray, tmax, skip_id);
+}
+
+#endif

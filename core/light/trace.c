@@ -1,0 +1,281 @@
+/* trace: the bounce loop (see trace.h). */
+#include "light/trace.h"
+#include "light/shade.h"
+
+#if FXRT_MAX_DEPTH > 0
+
+/* A pending ray: where it starts, where it goes, its weight, its bounce,
+ * and the object it leaves (`from`, an id) with whether it goes into that
+ * object (a solid's interior: the medium it travels in). */
+typedef struct {
+    ray_t ray;
+    color_t w;
+    uint16_t from;
+    uint8_t bounce;
+    bool inward;
+} trace_ray_t;
+
+/* The nearest hit of a secondary ray. */
+typedef struct {
+    num_t t;
+    geom_kind_t kind;
+    uint16_t index;
+    uint16_t id;
+    bool exit; /* the exit of the solid the ray starts in */
+} trace_hit_t;
+
+static void trace_consider(trace_hit_t *best, bool *found, num_t t, geom_kind_t kind, uint16_t index, uint16_t id,
+                           bool exit)
+{
+    if (*found && (t > best->t || (t == best->t && id > best->id)))
+        return;
+    *found = true;
+    best->t = t;
+    best->kind = kind;
+    best->index = index;
+    best->id = id;
+    best->exit = exit;
+}
+
+/* Could the ray meet a bounded object? It must meet the sphere around
+ * their box (world_t.bc, br2) at some t >= 0 or start inside it: with
+ * oc = c - o and b = oc . d, a miss is b < 0 with o outside, or a closest
+ * approach |oc|^2 - b^2 beyond the radius. No division; the products are
+ * exact in Q16.16's wide type, and the padding covers the rounding of b. */
+static bool trace_in_bounds(const world_t *w, const ray_t *ray)
+{
+    if (!w->bounded)
+        return false;
+    if (FXRT_NO_BOUNDS)
+        return true; /* every bounded object tested (the frames are the same) */
+    vec3_t oc = vec3_sub(w->bc, ray->o);
+    numw_t oc2 = vec3_dotw(oc, oc);
+    if (oc2 <= w->br2)
+        return true; /* starts inside */
+    num_t b = vec3_dot(oc, ray->d);
+    if (b < NUM_ZERO)
+        return false; /* outside and moving away */
+    return numw_sub(oc2, numw_mul(b, b)) <= w->br2;
+}
+
+/* Nearest object along a secondary ray, with the self-intersection rule of
+ * trace.h. */
+__attribute__((noinline)) static bool trace_nearest(const world_t *w, const trace_ray_t *tr, trace_hit_t *hit)
+{
+    bool found = false;
+    num_t t;
+    vec3_t n;
+    const ray_t *ray = &tr->ray;
+    FXRT_COUNT(secondary_rays);
+#if FXRT_MAX_PLANES > 0
+    for (uint16_t i = 0; i < w->n_planes; i++)
+        if (w->planes[i].obj.id != tr->from && geom_plane_hit(&w->planes[i], ray, &t))
+            trace_consider(hit, &found, t, GEOM_PLANE, i, w->planes[i].obj.id, false);
+#endif
+    if (!trace_in_bounds(w, ray)) {
+        FXRT_COUNT(bounds_skips);
+        return found;
+    }
+#if FXRT_MAX_SPHERES > 0
+    for (uint16_t i = 0; i < w->n_spheres; i++) {
+        const geom_sphere_t *s = &w->spheres[i];
+        if (s->obj.id == tr->from) {
+            if (tr->inward && geom_sphere_exit(s, ray, &t, &n))
+                trace_consider(hit, &found, t, GEOM_SPHERE, i, s->obj.id, true);
+        } else if (geom_sphere_hit(s, ray, &t))
+            trace_consider(hit, &found, t, GEOM_SPHERE, i, s->obj.id, false);
+    }
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    for (uint16_t i = 0; i < w->n_triangles; i++)
+        if (w->triangles[i].obj.id != tr->from && geom_triangle_hit(&w->triangles[i], ray, &t))
+            trace_consider(hit, &found, t, GEOM_TRIANGLE, i, w->triangles[i].obj.id, false);
+#endif
+#if FXRT_MAX_BOXES > 0
+    for (uint16_t i = 0; i < w->n_boxes; i++) {
+        const geom_box_t *b = &w->boxes[i];
+        if (b->obj.id == tr->from) {
+            if (tr->inward && geom_box_exit(b, ray, &t, &n))
+                trace_consider(hit, &found, t, GEOM_BOX, i, b->obj.id, true);
+        } else if (geom_box_hit(b, ray, &t))
+            trace_consider(hit, &found, t, GEOM_BOX, i, b->obj.id, false);
+    }
+#endif
+    (void)n;
+    return found;
+}
+
+/* The hit point's t and geometric normal (as the kernels give them).
+ * trace_nearest, trace_surface and trace_children are kept out of line so
+ * that their temporaries are not all in trace_bounces' frame at once while
+ * it shades (the 2 KB stack of the micro:bit). */
+__attribute__((noinline)) static void trace_surface(const world_t *w, const trace_hit_t *h, const ray_t *ray, num_t *t,
+                                                    vec3_t *n)
+{
+    switch (h->kind) {
+#if FXRT_MAX_PLANES > 0
+    case GEOM_PLANE: geom_plane_surface(&w->planes[h->index], ray, t, n); break;
+#endif
+#if FXRT_MAX_SPHERES > 0
+    case GEOM_SPHERE:
+        if (h->exit)
+            (void)geom_sphere_exit(&w->spheres[h->index], ray, t, n);
+        else
+            geom_sphere_surface(&w->spheres[h->index], ray, t, n);
+        break;
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+    case GEOM_TRIANGLE: geom_triangle_surface(&w->triangles[h->index], ray, t, n); break;
+#endif
+#if FXRT_MAX_BOXES > 0
+    case GEOM_BOX:
+        if (h->exit)
+            (void)geom_box_exit(&w->boxes[h->index], ray, t, n);
+        else
+            geom_box_surface(&w->boxes[h->index], ray, t, n);
+        break;
+#endif
+    default: break;
+    }
+}
+
+/* Is a weight below the cut-off, 1/512, in every channel? */
+static bool trace_cut(color_t wt)
+{
+#if FXRT_NO_CUTOFF
+    (void)wt;
+    return false; /* measurement build: no cut-off (fxrt_config.h) */
+#else
+    num_t c = NUM(1.0 / 512);
+    return wt.r < c && wt.g < c && wt.b < c;
+#endif
+}
+
+/* Can a bounce ray with direction v be traced? Q16.16: the kernels'
+ * products with a ray's direction (vec3_dotw_unit, ray.h) need |v_i| <
+ * 2^30 LSB (16384.0). A refracted direction is not renormalised and its
+ * length error grows by about q^2 per refraction, so at extreme index
+ * contrasts it can reach that (a direction 16384 times too long: nothing
+ * left of the ray); such a ray is not traced. Float and double trace
+ * every ray, as the model says. */
+static bool trace_dir_ok(vec3_t v)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    const fx_t lim = (fx_t)1 << 30;
+    return v.x < lim && v.x > -lim && v.y < lim && v.y > -lim && v.z < lim && v.z > -lim;
+#else
+    (void)v;
+    return true;
+#endif
+}
+
+/* One node of the tree: a hit and the ray that reached it. */
+typedef struct {
+    const geom_common_t *obj;
+    vec3_t p, n_geo, d;
+    color_t w;
+    uint8_t bounce;
+} trace_node_t;
+
+/* The children of a node (at most two): their rays, the first in *out0,
+ * the second in *out1 (returns how many, 0..2). */
+__attribute__((noinline)) static int trace_children(const trace_node_t *nd, trace_ray_t *out0, trace_ray_t *out1)
+{
+    const material_t *m = &nd->obj->mat;
+    numw_t dnw = vec3_dotw_units(nd->d, nd->n_geo);
+    bool inside = dnw > 0;                 /* the ray comes from the solid's inside */
+    vec3_t n = inside ? vec3_neg_unit(nd->n_geo) : nd->n_geo; /* faces the incoming ray */
+    num_t dn = numw_round(inside ? -dnw : dnw);               /* d . n <= 0 */
+    /* Saturating products: a refracted d is not renormalised, and in
+     * Q16.16 its length error grows by about q^2 at each refraction, so d
+     * . n and q d are not bounded here (trace_dir_ok cuts the worst). */
+    vec3_t r = vec3_sub(nd->d, vec3_scale_unit(n, num_mul_int(dn, 2)));
+    uint8_t b = (uint8_t)(nd->bounce + 1);
+    int k = 0;
+    if (m->kind == MATERIAL_REFLECTIVE) {
+        color_t wr = color_mul(nd->w, m->reflection);
+        if (!trace_cut(wr) && trace_dir_ok(r))
+            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
+        return k;
+    }
+    /* Transparent. */
+    num_t eta = m->index;
+    num_t q = inside ? eta : num_div(NUM_ONE, eta);
+    num_t cos_i = num_neg(dn);
+    num_t sin2_i = num_sub(NUM_ONE, num_mul(cos_i, cos_i));
+    num_t cos2_t = num_sub(NUM_ONE, num_mul(num_mul(q, q), sin2_i));
+    if (cos2_t < NUM_ZERO) {
+        /* Total internal reflection: the reflected ray with the full weight. */
+        if (!trace_cut(nd->w) && trace_dir_ok(r))
+            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, nd->w, nd->obj->id, b, inside};
+        return k;
+    }
+    num_t cos_t = num_sqrt(cos2_t);
+    vec3_t td = vec3_add(vec3_scale_unit(nd->d, q), vec3_scale_unit(n, num_sub(num_mul(q, cos_i), cos_t)));
+    num_t r0 = num_div(num_sub(NUM_ONE, eta), num_add(NUM_ONE, eta));
+    r0 = num_mul(r0, r0);
+    num_t x = num_sub(NUM_ONE, inside ? cos_t : cos_i);
+    num_t x2 = num_mul(x, x);
+    num_t x5 = num_mul(num_mul(x2, x2), x);
+    num_t R = num_add(r0, num_mul(num_sub(NUM_ONE, r0), x5));
+    color_t wr = color_scale(nd->w, R);
+    /* The tint c_d as fractions: the colour is in 1/255 units. */
+    num_t k255 = num_from_int(255);
+    color_t c = nd->obj->color;
+    color_t tint = color_make(num_div(c.r, k255), num_div(c.g, k255), num_div(c.b, k255));
+    color_t wt = color_scale(color_mul(nd->w, tint), num_sub(NUM_ONE, R));
+    if (!trace_cut(wr) && trace_dir_ok(r))
+        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
+    if (!trace_cut(wt) && trace_dir_ok(td))
+        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, td}, wt, nd->obj->id, b, !inside};
+    return k;
+}
+
+color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
+                      color_t local)
+{
+    trace_ray_t stack[TRACE_STACK_ENTRIES], spare;
+    int sp = 0;
+    color_t acc = local; /* the primary hit's weight is 1 */
+    trace_node_t nd = {world_common(w, kind, index), p, n_geo, ray->d,
+                       color_make(NUM_ONE, NUM_ONE, NUM_ONE), 0};
+    bool have = true; /* nd holds a node whose children are still to be made */
+    for (;;) {
+        trace_ray_t next;
+        bool go = false;
+        if (have && material_bounces(nd.obj->mat.kind) && nd.bounce < w->depth) {
+            /* The first child goes to next, the second (if any) onto the
+             * stack: always room (see trace.h); no copy on the stack. */
+            int nk = trace_children(&nd, &next, sp < TRACE_STACK_ENTRIES ? &stack[sp] : &spare);
+            go = nk > 0;
+            if (nk > 1 && sp < TRACE_STACK_ENTRIES)
+                sp++;
+        }
+        have = false;
+        if (!go) {
+            if (sp == 0)
+                break;
+            next = stack[--sp];
+        }
+        trace_hit_t h = {NUM_ZERO, GEOM_PLANE, 0, 0, false};
+        if (!trace_nearest(w, &next, &h)) {
+            acc = color_add(acc, color_mul(w->background, next.w));
+            continue;
+        }
+        num_t t;
+        vec3_t n;
+        trace_surface(w, &h, &next.ray, &t, &n);
+        nd.obj = world_common(w, h.kind, h.index);
+        nd.p = ray_at(&next.ray, t);
+        nd.n_geo = n;
+        nd.d = next.ray.d;
+        nd.w = next.w;
+        nd.bounce = next.bounce;
+        color_t c = shade_point_k(w, h.kind, h.index, nd.p, n, nd.d, NULL, NULL);
+        acc = color_add(acc, color_mul(c, nd.w));
+        have = true;
+    }
+    return acc;
+}
+
+#endif

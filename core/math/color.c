@@ -1,0 +1,25 @@
+/* color: conversion to output pixels. */
+#include "math/color.h"
+
+/* floor(c + 1/2) clamped to 0..255. Exact in every build: in Q16.16 it is
+ * an integer shift; in float and double, c + 0.5 is exact for any value
+ * the loader stores (a multiple of 2^-16 below 256 has at most 24
+ * significant bits), and the conversion truncates a non-negative value. */
+static uint8_t color_channel(num_t c)
+{
+    if (!(c > NUM_ZERO))
+        return 0;
+    if (c >= COLOR_MAX)
+        return 255;
+#if FXRT_NUMBER == FXRT_Q16
+    return (uint8_t)(((uint32_t)c + FX_HALF) >> FX_FRAC_BITS);
+#else
+    return (uint8_t)(c + NUM(0.5));
+#endif
+}
+
+rgb8_t color_to_rgb8(color_t c)
+{
+    rgb8_t p = {color_channel(c.r), color_channel(c.g), color_channel(c.b)};
+    return p;
+}

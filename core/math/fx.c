@@ -1,0 +1,807 @@
+/* fx: Q16.16 operations that are too large to inline. See fx.h for formats,
+ * rounding and the overflow policy. */
+#include <stddef.h>
+
+#include "math/fx.h"
+
+/* Magnitude of an int64 as uint64, defined for INT64_MIN too. */
+static uint64_t fx_uabs64(int64_t v)
+{
+    return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+}
+
+/* Apply a sign to a rounded magnitude and saturate to the fx_t range. */
+static fx_t fx_signed_sat(uint64_t mag, bool negative)
+{
+    if (negative)
+        return mag >= (uint64_t)1 << 31 ? FX_MIN : -(fx_t)mag;
+    return mag > (uint64_t)INT32_MAX ? FX_MAX : (fx_t)mag;
+}
+
+/* round(num / den) for unsigned operands, den != 0, without overflowing
+ * num + den / 2. */
+static uint64_t fx_udiv_round(uint64_t num, uint64_t den)
+{
+    uint64_t q = num / den;
+    uint64_t r = num - q * den;
+    /* r >= den - r is r >= den/2 (ties up) computed without overflow. */
+    return q + (r >= den - r ? 1u : 0u);
+}
+
+/* Leading zero count of a non-zero uint32. Hardware CLZ where the target
+ * has it; a five-step binary search on the Cortex-M0 (whose libgcc
+ * __clzsi2 costs more). FX_HAVE_CLZ in core/fxrt_config.h. */
+static inline __attribute__((always_inline)) int fx_clz32(uint32_t v)
+{
+#if FX_HAVE_CLZ
+    return __builtin_clz(v);
+#else
+    int e = 0;
+    if (v < (1u << 16)) {
+        v <<= 16;
+        e += 16;
+    }
+    if (v < (1u << 24)) {
+        v <<= 8;
+        e += 8;
+    }
+    if (v < (1u << 28)) {
+        v <<= 4;
+        e += 4;
+    }
+    if (v < (1u << 30)) {
+        v <<= 2;
+        e += 2;
+    }
+    if (v < (1u << 31))
+        e += 1;
+    return e;
+#endif
+}
+
+/* The leading zero count of a non-zero uint32 rounded down to an even
+ * number, as a shift that brings the top set bit to bit 30 or 31. */
+static inline __attribute__((always_inline)) int fx_clz_even(uint32_t v)
+{
+    return fx_clz32(v) & ~1;
+}
+
+#if !FX_HAVE_UDIV
+/* round(2^23 / (i + 0.5)) for i = 128 .. 255: 2^31 / d1 for a 16-bit d1 in
+ * [2^15, 2^16) indexed by its top 8 bits, within 2^-8 relative. */
+static const uint16_t fx_recip_tab[128] = {
+    65281, 64777, 64281, 63792, 63310, 62836, 62369, 61909, 61455, 61008, 60568, 60133, 59705,
+    59283, 58867, 58457, 58053, 57654, 57260, 56872, 56489, 56111, 55738, 55370, 55007, 54649,
+    54295, 53946, 53601, 53261, 52925, 52593, 52265, 51942, 51622, 51306, 50995, 50686, 50382,
+    50081, 49784, 49490, 49200, 48913, 48630, 48349, 48072, 47798, 47528, 47260, 46995, 46733,
+    46474, 46218, 45965, 45714, 45467, 45222, 44979, 44739, 44502, 44267, 44035, 43805, 43577,
+    43352, 43129, 42908, 42690, 42474, 42260, 42048, 41838, 41631, 41425, 41222, 41020, 40820,
+    40623, 40427, 40233, 40041, 39851, 39662, 39476, 39291, 39108, 38926, 38746, 38568, 38392,
+    38217, 38044, 37872, 37702, 37533, 37366, 37200, 37036, 36873, 36712, 36552, 36393, 36236,
+    36080, 35926, 35772, 35620, 35470, 35320, 35172, 35026, 34880, 34735, 34592, 34450, 34309,
+    34169, 34031, 33893, 33757, 33622, 33487, 33354, 33222, 33091, 32961, 32832,
+};
+
+/* v ~ 2^31 / d1 for d1 in [2^15, 2^16): the table, then one Newton step
+ * v += v (2^31 - d1 v) / 2^31, which leaves v at most 2^-15 below. */
+static inline __attribute__((always_inline)) uint32_t fx_recip16(uint32_t d1)
+{
+    int32_t v = fx_recip_tab[(d1 >> 8) - 128];
+    int32_t e = (int32_t)((1u << 31) - d1 * (uint32_t)v); /* |e| < 2^23 */
+    return (uint32_t)(v + ((v * (e >> 8)) >> 23));
+}
+#endif
+
+/* q = floor(u / d1) and *r = u - q d1, for d1 in [2^15, 2^16). v is
+ * fx_recip16(d1) on targets without a divide instruction (unused else). */
+static inline __attribute__((always_inline)) uint32_t fx_div32_16(uint32_t u, uint32_t d1, uint32_t v, uint32_t *r)
+{
+#if FX_HAVE_UDIV
+    (void)v;
+    uint32_t q = u / d1;
+    *r = u - q * d1;
+    return q;
+#else
+    /* u v / 2^31 in two 16-bit halves (no 64-bit product). It is at most a
+     * few units below u / d1 (v is low by < 2^-15, and two truncations),
+     * never above, so the exact remainder is small and non-negative. */
+    uint32_t q = ((((u >> 16) * v) >> 1) + (((u & 0xffffu) * v) >> 17)) >> 14;
+    uint32_t rem = u - q * d1;
+    while (rem >= d1) {
+        q++;
+        rem -= d1;
+    }
+    *r = rem;
+    return q;
+#endif
+}
+
+/* One 16-bit quotient digit of Knuth's long division (TAOCP 4.3.1,
+ * algorithm D) in base 2^16 with a normalised divisor D = d1 2^16 + d0
+ * (d1 >= 2^15): floor((u 2^16 + un) / D) for u < D, un < 2^16. The
+ * estimate floor(u / d1) is at most 2 too large; the d0 test brings it to
+ * the exact digit. *rem gets u 2^16 + un - digit * D (< D: exact mod 2^32). */
+static inline __attribute__((always_inline)) uint32_t fx_div_digit(uint32_t u, uint32_t un, uint32_t d, uint32_t v, uint32_t *rem)
+{
+    uint32_t d1 = d >> 16, d0 = d & 0xffffu, rhat;
+    uint32_t q = fx_div32_16(u, d1, v, &rhat);
+    while (q >= (1u << 16) || q * d0 > ((rhat << 16) | un)) {
+        q--;
+        rhat += d1;
+        if (rhat >= (1u << 16))
+            break;
+    }
+    *rem = (u << 16) + un - q * d;
+    return q;
+}
+
+/* floor(u / d) for u < d 2^32 and d in [2^31, 2^32) (normalised): two
+ * 16-bit digits of Knuth's division, 32-bit operations only. *rem gets
+ * the remainder. */
+static inline __attribute__((always_inline)) uint32_t fx_div64_32(uint64_t u, uint32_t d, uint32_t *rem)
+{
+#if FX_HAVE_UDIV
+    uint32_t v = 0;
+#else
+    uint32_t v = fx_recip16(d >> 16);
+#endif
+    uint32_t u1 = (uint32_t)(u >> 32), u0 = (uint32_t)u, r;
+    uint32_t q1 = fx_div_digit(u1, u0 >> 16, d, v, &r);
+    uint32_t q0 = fx_div_digit(r, u0 & 0xffffu, d, v, &r);
+    *rem = r;
+    return (q1 << 16) + q0;
+}
+
+/* a / b correctly rounded, ties away from zero, with 32-bit operations only
+ * (no libgcc 64-bit division). The quotient magnitude q = |a| 2^16 / |b|
+ * is tested for saturation first (q >= 2^31 iff |a| / 2^15 >= |b|); then
+ * q < 2^31 and Knuth's division of the 63-bit numerator |a| 2^(16+s) by
+ * the normalised divisor |b| 2^s gives two 16-bit digits and the exact
+ * remainder r. Rounding compares 2r with the divisor (ties go up in
+ * magnitude, i.e. away from zero). */
+fx_t fx_div(fx_t a, fx_t b)
+{
+    if (b == 0)
+        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    bool neg = (a < 0) != (b < 0);
+    uint32_t ua = fx_uabs32(a), ub = fx_uabs32(b);
+    if ((ua >> 15) >= ub)
+        return neg ? FX_MIN : FX_MAX;
+    int s = fx_clz32(ub);
+    uint32_t d = ub << s;
+    uint32_t u1, u0; /* numerator ua 2^(16+s) = u1 2^32 + u0, u1 < d / 2 */
+    if (s < 16) {
+        u1 = ua >> (16 - s);
+        u0 = ua << (16 + s);
+    } else {
+        u1 = ua << (s - 16);
+        u0 = 0;
+    }
+    uint32_t r;
+    uint32_t q = fx_div64_32(((uint64_t)u1 << 32) | u0, d, &r);
+    q += r >= d - r ? 1u : 0u; /* 2r >= d without overflow */
+    if (neg)
+        return q >= (1u << 31) ? FX_MIN : -(fx_t)q;
+    return q > (uint32_t)INT32_MAX ? FX_MAX : (fx_t)q;
+}
+
+/* round(n / d), ties up, for n < 2^63 and 0 < d <= 2^63, when the floor
+ * of the quotient is below 2^31; 2^31 when it is not (the caller
+ * saturates), for targets without a divide instruction (the M0: libgcc's
+ * __udivmoddi4 costs about 300 instructions there). A divisor below 2^32 is
+ * normalised and divides in two 16-bit digits as in fx_div; a larger one
+ * takes the top 32 bits of the normalised divisor, a 64/32 quotient of
+ * n / 2 by them, at most one too large after undoing the shifts, and one
+ * exact correction (Hacker's Delight, 9-5). */
+#if !FX_HAVE_UDIV
+static uint32_t fx_udiv64_round_sat(uint64_t n, uint64_t d)
+{
+    uint32_t q;
+    uint64_t r;
+    if ((d >> 32) == 0) {
+        uint32_t d32 = (uint32_t)d;
+        if ((n >> 31) >= d32)
+            return 1u << 31; /* floor(n / d) >= 2^31 */
+        int s = fx_clz32(d32);
+        uint32_t r32;
+        /* n 2^s < d 2^(31 + s) < 2^63: the normalised quotient fits. */
+        q = fx_div64_32(n << s, d32 << s, &r32);
+        r = r32 >> s;
+    } else {
+        /* n < 2^63 and d >= 2^32: the quotient is below 2^31. */
+        int s = fx_clz32((uint32_t)(d >> 32)); /* 0 .. 31 */
+        uint32_t d1 = (uint32_t)((d << s) >> 32), r32;
+        uint32_t q1 = fx_div64_32(n >> 1, d1, &r32); /* n / 2 < d1 2^32 */
+        q = (uint32_t)(((uint64_t)q1 << s) >> 31);
+        if (q != 0)
+            q--; /* now exact or one too small */
+        r = n - (fx_umul32(q, (uint32_t)d) + ((uint64_t)(q * (uint32_t)(d >> 32)) << 32));
+        if (r >= d) {
+            q++;
+            r -= d;
+        }
+    }
+    return q + (r >= d - r ? 1u : 0u); /* 2r >= d without overflow */
+}
+#endif
+
+fx_t fx_recip(fx_t a)
+{
+    return fx_div(FX_ONE, a);
+}
+
+/* round(2^30 / sqrt((i + 0.5) * 2^25)) for i = 32 .. 127: 1/sqrt(m) for
+ * m in [2^30, 2^32) indexed by m's top 7 bits, within 2^-7.4 relative. */
+static const uint16_t fx_rsqrt_tab[96] = {
+    32515, 32026, 31558, 31111, 30682, 30270, 29874, 29494, 29127, 28774, 28434, 28105,
+    27787, 27480, 27183, 26895, 26617, 26346, 26084, 25830, 25583, 25342, 25109, 24882,
+    24660, 24445, 24235, 24031, 23831, 23637, 23447, 23262, 23080, 22904, 22731, 22562,
+    22396, 22235, 22077, 21922, 21770, 21621, 21476, 21333, 21193, 21056, 20921, 20789,
+    20660, 20533, 20408, 20285, 20165, 20047, 19930, 19816, 19704, 19594, 19485, 19378,
+    19273, 19170, 19068, 18968, 18870, 18773, 18677, 18583, 18490, 18399, 18309, 18220,
+    18133, 18047, 17962, 17878, 17795, 17714, 17634, 17554, 17476, 17399, 17323, 17248,
+    17174, 17100, 17028, 16957, 16886, 16817, 16748, 16680, 16613, 16546, 16481, 16416,
+};
+
+/* sqrt(m) and 1/sqrt(m) for m in [2^30, 2^32) with 32-bit multiplies only
+ * (no divide, no 64-bit product, so also fast on the Cortex-M0):
+ *  1. y0 ~ 2^30 / sqrt(m) from the table, s0 = m y0 / 2^30 ~ sqrt(m) (7 bits);
+ *  2. s1 = s0 + (m - s0^2) y0 / 2^31, a Newton step on the exact residual
+ *     (|m - s0^2| < 2^25 fits an int32): s1 ~ sqrt(m) within +-4;
+ *  3. y1 = y0 (2 - s1 y0 / 2^30), a Newton step for 2^30 / s1 (14 bits).
+ * *s gets s1 and *y gets y1. */
+static inline __attribute__((always_inline)) void fx_sqrt_est(uint32_t m, int32_t *s, int32_t *y)
+{
+    int32_t y0 = fx_rsqrt_tab[(m >> 25) - 32];
+    int32_t s0 = (int32_t)(((m >> 16) * (uint32_t)y0) >> 14);
+    int32_t r = (int32_t)(m - (uint32_t)s0 * (uint32_t)s0);
+    int32_t s1 = s0 + (((r >> 9) * y0) >> 22);
+    int32_t t = (int32_t)(1u << 30) - (int32_t)((uint32_t)s1 * (uint32_t)y0);
+    *y = y0 + ((y0 * (t >> 8)) >> 22);
+    *s = s1;
+}
+
+/* Correctly rounded sqrt. The exact result is round(sqrt(n)) with
+ * n = a 2^16 < 2^47; ties cannot happen (n is an integer, (r + 1/2)^2 is
+ * not). With m = a 4^h in [2^30, 2^32), sqrt(n) = 256 sqrt(m) / 2^h:
+ *  - fx_sqrt_est gives s1 ~ sqrt(m) and y1 ~ 2^30 / s1;
+ *  - R = 256 s1 + (m - s1^2) 128 / s1 ~ 256 sqrt(m), within a unit or two;
+ *  - q = R / 2^h rounded, then the exact test: with d = n - q^2 (exact in
+ *    32-bit modular arithmetic, because |d| < 2^31 near the root), q is
+ *    round(sqrt(n)) iff -q < d <= q; otherwise step q by one and retest
+ *    (q is never more than one step off: tests/fx_exhaustive.c checks
+ *    every input). */
+fx_t fx_sqrt(fx_t a)
+{
+    if (a <= 0)
+        return 0;
+    int e = fx_clz_even((uint32_t)a);
+    uint32_t m = (uint32_t)a << e;
+    int h = e >> 1;
+    int32_t s, y;
+    fx_sqrt_est(m, &s, &y);
+    int32_t r = (int32_t)(m - (uint32_t)s * (uint32_t)s);
+    int32_t R = (int32_t)((uint32_t)s << 8) + (((r >> 5) * y) >> 18);
+    uint32_t q = h ? ((uint32_t)R + (1u << (h - 1))) >> h : (uint32_t)R;
+    uint32_t n = (uint32_t)a << 16; /* n mod 2^32 */
+    int32_t d = (int32_t)(n - q * q);
+    while (d > (int32_t)q) { /* q too small: n >= q^2 + q + 1 */
+        d -= (int32_t)(2 * q + 1);
+        q++;
+    }
+    while (d <= -(int32_t)q) { /* q too large: n <= q^2 - q */
+        q--;
+        d += (int32_t)(2 * q + 1);
+    }
+    return (fx_t)q;
+}
+
+/* Leading zero count of a non-zero uint64. */
+static inline int fx_clz64(uint64_t v)
+{
+    uint32_t hi = (uint32_t)(v >> 32);
+    return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)v);
+}
+
+/* An estimate of sqrt(n), n > 0, within a few units: the top 32 bits m
+ * of n (taken with an even shift, so sqrt(n) ~ sqrt(m) 2^k) give a 24-bit
+ * root R ~ 256 sqrt(m) as in fx_sqrt; for n >= 2^48 one more Newton step
+ * on the exact 64-bit residual. At most 2^32 (q^2 may wrap only there). */
+static inline uint64_t fx_root64_est(uint64_t n)
+{
+    int e = fx_clz64(n) & ~1;
+    uint32_t m = e >= 32 ? (uint32_t)(n << (e - 32)) : (uint32_t)(n >> (32 - e));
+    int k = 16 - (e >> 1); /* sqrt(n) ~ sqrt(m) 2^k, k in [-15, 16] */
+    int32_t s, y;
+    fx_sqrt_est(m, &s, &y);
+    int32_t r = (int32_t)(m - (uint32_t)s * (uint32_t)s);
+    uint32_t R = (uint32_t)(((int32_t)((uint32_t)s << 8)) + (((r >> 5) * y) >> 18));
+    if (k <= 8) {
+        int sh = 8 - k;
+        return sh ? (R + (1u << (sh - 1))) >> sh : R;
+    }
+    uint64_t q = (uint64_t)R << (k - 8); /* within 2^(k-7) + 2, below 2^32 */
+    int64_t d = (int64_t)(n - fx_usqr32((uint32_t)q));
+    /* d / (2q) with 1 / (2 sqrt(n)) ~ y 2^-31 2^-k. */
+    return (uint64_t)((int64_t)q + ((d * y) >> (31 + k)));
+}
+
+/* floor(sqrt(n)), exact: the estimate, then d = n - q^2 (exact modulo 2^64
+ * because q is within a few units of the root) and q steps until
+ * 0 <= d <= 2q, i.e. q^2 <= n < (q + 1)^2. q is kept below 2^32, so q^2
+ * never wraps. About 60 instructions on the Cortex-M3 (the digit-by-digit
+ * loop it replaces took about 500); tests/test_fx.c checks it against a
+ * long double and __int128 oracle. */
+uint32_t fx_isqrt64(uint64_t n)
+{
+    if (n == 0)
+        return 0;
+    uint64_t q = fx_root64_est(n);
+    uint32_t q32 = q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
+    int64_t d = (int64_t)(n - fx_usqr32(q32));
+    while (d < 0) { /* q^2 > n */
+        q32--;
+        d += 2 * (int64_t)q32 + 1;
+    }
+    while (d > 2 * (int64_t)q32) { /* (q + 1)^2 <= n */
+        d -= 2 * (int64_t)q32 + 1;
+        q32++;
+    }
+    return q32;
+}
+
+fx_t fxw_sqrt(fxw_t w)
+{
+    /* sqrt(w * 2^-32) * 2^16 = sqrt(w): the Q32.32 integer's rounded root
+     * is the Q16.16 result. The estimate, then the exact test on
+     * d = w - q^2 (exact mod 2^64 because it is small), stepping q until
+     * -q < d <= q. */
+    if (w <= 0)
+        return 0;
+    uint64_t n = (uint64_t)w;
+    uint64_t q = fx_root64_est(n); /* below 2^32: n < 2^63 */
+    int64_t d = (int64_t)(n - fx_usqr32((uint32_t)q)); /* q <= 2^32: q^2 mod 2^64 */
+    while (d > (int64_t)q) {
+        d -= (int64_t)(2 * q + 1);
+        q++;
+    }
+    while (d <= -(int64_t)q) {
+        q--;
+        d += (int64_t)(2 * q + 1);
+    }
+    return q > (uint64_t)INT32_MAX ? FX_MAX : (fx_t)q;
+}
+
+/* Y ~ 2^46 / sqrt(m) for m in [2^30, 2^32), Y in [2^30, 2^31], within
+ * 2^-25 relative: fx_sqrt_est's 14-bit y1, then one Newton step for the
+ * inverse square root, Y' = Y (3 - m Y^2 / 2^92) / 2, in 64-bit products. */
+static uint32_t fx_rsqrt_q46(uint32_t m)
+{
+    int32_t s, y;
+    fx_sqrt_est(m, &s, &y);
+    uint32_t Y = (uint32_t)y << 16;
+    uint32_t t = (uint32_t)(fx_usqr32(Y) >> 32);       /* ~ 2^60 / m */
+    uint64_t f = 3 * ((uint64_t)1 << 60) - fx_umul32(m, t); /* ~ 2^61 */
+    return (uint32_t)(fx_umul32(Y, (uint32_t)(f >> 30)) >> 31);
+}
+
+/* 1 / sqrt(a) = 2^24 / sqrt(a_raw) in Q16.16. With m = a 4^h in
+ * [2^30, 2^32): 2^24 / sqrt(a) = Y 2^h / 2^22, rounded once. */
+fx_t fx_rsqrt(fx_t a)
+{
+    if (a <= 0)
+        return FX_MAX;
+    int e = fx_clz_even((uint32_t)a);
+    int k = 22 - (e >> 1); /* 7 .. 22 */
+    uint32_t Y = fx_rsqrt_q46((uint32_t)a << e);
+    return (fx_t)((Y + (1u << (k - 1))) >> k);
+}
+
+
+fx_t fxw_div(fxw_t a, fxw_t b)
+{
+    if (b == 0)
+        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    if (a == 0)
+        return 0;
+    bool neg = (a < 0) != (b < 0);
+    uint64_t n = fx_uabs64(a), d = fx_uabs64(b);
+    /* We want n * 2^16 / d. Shift n up as far as it goes (k <= 16) and take
+     * the remaining 16 - k bits off d. When d must lose bits, the result is
+     * either saturated anyway or d keeps >= 31 significant bits, so the
+     * quotient stays within 1 LSB. */
+    int k = fx_clz64(n) - 1; /* keep the top bit clear */
+    if (k > FX_FRAC_BITS)
+        k = FX_FRAC_BITS;
+    int dshift = FX_FRAC_BITS - k;
+    if (k < 0)
+        n >>= 1; /* n = 2^63 (a = INT64_MIN): exact, and d loses 17 bits */
+    else
+        n <<= k;
+    if (dshift > 0) {
+        uint64_t dr = (d + ((uint64_t)1 << (dshift - 1))) >> dshift;
+        if (dr == 0)
+            return fx_signed_sat(UINT64_MAX, neg);
+        d = dr;
+    }
+#if FX_HAVE_UDIV
+    /* libgcc's 64-bit division, built on UDIV, is a little faster here
+     * than fx_udiv64_round_sat (make bench-fx). */
+    return fx_signed_sat(fx_udiv_round(n, d), neg);
+#else
+    return fx_signed_sat(fx_udiv64_round_sat(n, d), neg);
+#endif
+}
+
+/* cos(x) and sin(x)/x for x (radians, Q2.30, 0 <= x <= pi/2) by Taylor
+ * series in unsigned Q2.30. Terms shrink fast (x^2 / ((2k+1)(2k+2)) < 1.24,
+ * then < 0.21), so the loop ends after at most 14 terms; each term is
+ * rounded once. sin(x)/x rather than sin(x) keeps full relative precision
+ * for tiny angles, where x itself has few significant bits in Q2.30. The
+ * alternating partial sums may dip below zero; unsigned arithmetic is
+ * modular, so the final sums are still exact. */
+static void fx_cos_sinc_q30(uint32_t x, uint64_t *cos_out, uint64_t *sinc_out)
+{
+    const uint64_t one = (uint64_t)1 << 30;
+    uint64_t x2 = ((uint64_t)x * x + (one >> 1)) >> 30;
+    uint64_t c = 0, s = 0;
+    uint64_t tc = one, ts = one;
+    for (uint32_t k = 0; tc != 0 || ts != 0; k++) {
+        if (k & 1u) {
+            c -= tc;
+            s -= ts;
+        } else {
+            c += tc;
+            s += ts;
+        }
+        tc = fx_udiv_round(((tc * x2) + (one >> 1)) >> 30, (uint64_t)(2 * k + 1) * (2 * k + 2));
+        ts = fx_udiv_round(((ts * x2) + (one >> 1)) >> 30, (uint64_t)(2 * k + 2) * (2 * k + 3));
+    }
+    *cos_out = c;
+    *sinc_out = s;
+}
+
+/* pi / 180 in Q19.45 (about 2^39.2). */
+#define FX_DEG_TO_RAD_Q45 ((uint64_t)(3.14159265358979323846 / 180.0 * 35184372088832.0 + 0.5))
+
+fx_t fx_cot_deg(fx_t deg)
+{
+    if (deg <= 0)
+        return FX_MAX;
+    if (deg >= F16(90.0))
+        return 0;
+    /* x = deg * pi/180 in Q2.30 feeds the series only. */
+    uint32_t x = (uint32_t)(((uint64_t)deg * FX_DEG_TO_RAD_Q45 + ((uint64_t)1 << 30)) >> 31);
+    uint64_t c, sinc;
+    fx_cos_sinc_q30(x, &c, &sinc);
+    /* cot = cos / (sinc * k * deg) with k = pi/180 and deg in Q16.16:
+     * y = sinc * k in Q45 (< 2^40), q = cos * 2^33 / y = cos / (sinc k) in
+     * Q18 (24+ significant bits), then cot in Q16.16 = q * 2^14 / deg. */
+    const uint64_t k_hi = FX_DEG_TO_RAD_Q45 >> 20, k_lo = FX_DEG_TO_RAD_Q45 & 0xfffff;
+    uint64_t y = ((sinc * k_hi) >> 10) + ((sinc * k_lo + ((uint64_t)1 << 29)) >> 30); /* no 2^70 product */
+    uint64_t q = fx_udiv_round(c << 33, y);
+    return fx_signed_sat(fx_udiv_round(q << 14, (uint64_t)deg), false);
+}
+
+/* Sine and cosine of degrees. The angle is reduced exactly in integers:
+ * |deg| modulo 360 degrees (sin is odd, cos even), then to a quadrant and
+ * a remainder r in [0, 90), then to [0, 45] by sin(90 - r) = cos(r). Only
+ * the final [0, 45] angle is converted to radians (Q1.31, error <= 1 unit
+ * of Q31 = 4.7e-10) and fed to Taylor polynomials in unsigned Q1.31 (sin to
+ * x^9, cos to x^10: the first dropped terms are below 1.8e-9 at pi/4).
+ * Written as nested 1 - u (c - u (...)) with u = x^2, every partial value is
+ * positive, so each step is one unsigned 32 x 32 -> 64-bit product (UMULL,
+ * or four 16-bit products on the M0) and no division. All Q31 roundings
+ * together stay below 1e-8, i.e. below 0.001 LSB of Q16.16, so after the
+ * final rounding the result is within 0.5 + 0.001 LSB of the exact value. */
+#define FX_DEG90 ((uint32_t)90 << FX_FRAC_BITS)
+#define FX_DEG45 ((uint32_t)45 << FX_FRAC_BITS)
+#define FX_DEG360 ((uint32_t)360 << FX_FRAC_BITS)
+#define FX_Q31_ONE ((uint32_t)1 << 31)
+
+/* a * b / 2^31 (truncated) for Q1.31 values a, b <= 1. */
+static inline uint32_t fx_mul_q31(uint32_t a, uint32_t b)
+{
+    return (uint32_t)(fx_umul32(a, b) >> 31);
+}
+
+/* sin (want_cos false) or cos (want_cos true) of r degrees (Q16.16),
+ * 0 <= r <= 45 degrees, as Q1.31 in [0, 1], within 1e-8. */
+static uint32_t fx_sincos45_q31(uint32_t r, bool want_cos)
+{
+    /* x = r pi/180 in Q31 = r * round(pi/180 2^37) / 2^22, r < 2^22. */
+    uint32_t x = (uint32_t)(fx_umul32(r, 2398762259u) >> 22);
+    uint32_t u = fx_mul_q31(x, x);
+    uint32_t v;
+    if (want_cos) {
+        /* 1 - u (1/2! - u (1/4! - u (1/6! - u (1/8! - u / 10!)))), Q31. */
+        v = 53261u - fx_mul_q31(u, 592u);
+        v = 2982616u - fx_mul_q31(u, v);
+        v = 89478485u - fx_mul_q31(u, v);
+        v = 1073741824u - fx_mul_q31(u, v);
+        v = FX_Q31_ONE - fx_mul_q31(u, v);
+    } else {
+        /* x (1 - u (1/3! - u (1/5! - u (1/7! - u / 9!)))). */
+        v = 426088u - fx_mul_q31(u, 5918u);
+        v = 17895697u - fx_mul_q31(u, v);
+        v = 357913941u - fx_mul_q31(u, v);
+        v = fx_mul_q31(x, FX_Q31_ONE - fx_mul_q31(u, v));
+    }
+    return v;
+}
+
+/* The same as Q16.16. */
+static fx_t fx_sincos45(uint32_t r, bool want_cos)
+{
+    uint32_t v = fx_sincos45_q31(r, want_cos);
+    v = (v + (1u << 14)) >> 15; /* Q31 -> Q16, ties toward +infinity */
+    return v > (uint32_t)FX_ONE ? FX_ONE : (fx_t)v; /* a guard: the bound keeps v <= 1 */
+}
+
+/* sin(deg + quarter * 90 degrees), quarter 0 or 1. */
+static fx_t fx_sin_quarter(fx_t deg, uint32_t quarter)
+{
+    bool neg = deg < 0;
+    uint32_t a = neg ? 0u - (uint32_t)deg : (uint32_t)deg; /* |deg| <= 2^31 */
+    /* a mod 360 degrees without a divide: 182 / 2^16 is just below
+     * 1 / 360, so q is floor(a / 360 deg) or one less. */
+    uint32_t q = ((a >> 16) * 182u) >> 16;
+    a -= q * FX_DEG360;
+    while (a >= FX_DEG360)
+        a -= FX_DEG360;
+    /* sin(-x) = sin(x + 180 degrees): negate by adding two quarters, and
+     * cos(-x) = cos(x) = sin(x + 90): a cosine of a negative angle is the
+     * cosine of |deg|. */
+    uint32_t quad = 0;
+    while (a >= FX_DEG90) {
+        a -= FX_DEG90;
+        quad++;
+    }
+    quad = (quad + quarter + (neg && !quarter ? 2u : 0u)) & 3u;
+    /* sin(quad * 90 + r): quad 0 sin r, 1 cos r, 2 -sin r, 3 -cos r. */
+    bool use_cos = (quad & 1u) != 0;
+    if (a > FX_DEG45) {
+        a = FX_DEG90 - a; /* sin(r) = cos(90 - r) and vice versa */
+        use_cos = !use_cos;
+    }
+    fx_t v = fx_sincos45(a, use_cos);
+    return quad >= 2 ? -v : v;
+}
+
+fx_t fx_sin_deg(fx_t deg)
+{
+    return fx_sin_quarter(deg, 0);
+}
+
+fx_t fx_cos_deg(fx_t deg)
+{
+    return fx_sin_quarter(deg, 1);
+}
+
+int32_t fx_cos_deg_q30(fx_t deg)
+{
+    if (deg <= 0)
+        return (int32_t)1 << 30;
+    if ((uint32_t)deg >= FX_DEG90)
+        return 0;
+    uint32_t a = (uint32_t)deg;
+    uint32_t v = a > FX_DEG45 ? fx_sincos45_q31(FX_DEG90 - a, false) : fx_sincos45_q31(a, true);
+    return (int32_t)((v + 1u) >> 1);
+}
+
+bool fx_unit30(const fx_t v[3], int32_t out[3])
+{
+    uint32_t m = 0;
+    for (int i = 0; i < 3; i++)
+        m |= fx_uabs32(v[i]);
+    if (m == 0)
+        return false;
+    /* Scale the largest magnitude into [2^29, 2^30): the root of the
+     * squared length then has at least 29 bits. */
+    int sh = 0;
+    while ((m << sh) < ((uint32_t)1 << 29))
+        sh++;
+    int shr = 0;
+    while ((m >> shr) >= ((uint32_t)1 << 30))
+        shr++;
+    int64_t w[3];
+    uint64_t len2 = 0;
+    for (int i = 0; i < 3; i++) {
+        w[i] = shr ? (int64_t)v[i] / ((int64_t)1 << shr) : (int64_t)v[i] * ((int64_t)1 << sh);
+        len2 += (uint64_t)(w[i] * w[i]); /* < 3 * 2^60 */
+    }
+    uint64_t r = fx_isqrt64(len2); /* >= 2^29 */
+    for (int i = 0; i < 3; i++) {
+        uint64_t mag = (uint64_t)(w[i] < 0 ? -w[i] : w[i]) << 30; /* < 2^60 */
+        uint64_t q = (mag + r / 2) / r;
+        out[i] = w[i] < 0 ? -(int32_t)q : (int32_t)q;
+    }
+    return true;
+}
+
+/* fx_normalize3 (len NULL) and fx_normalize3_len: inlined into each, so
+ * the length's code is only in the second. */
+static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], fx_t *len)
+{
+    /* Straight-line code, constant 64-bit shifts only (a variable one is
+     * a dozen instructions on the M3 and more on the M0). */
+    uint32_t s0 = fx_uabs32(v[0]), s1 = fx_uabs32(v[1]), s2 = fx_uabs32(v[2]);
+    uint32_t m = s0 | s1 | s2;
+    if (m == 0)
+        return false;
+    /* Scale by a power of two so the largest magnitude lies in [2^29, 2^30):
+     * the direction is unchanged (a right shift truncates toward zero, a
+     * relative change below 2^-29), the squared length lies in
+     * [2^58, 3 * 2^60), and the length keeps 30 significant bits. */
+    int shift = fx_clz32(m) - 2;
+    if (shift >= 0) {
+        s0 <<= shift;
+        s1 <<= shift;
+        s2 <<= shift;
+    } else {
+        s0 >>= -shift;
+        s1 >>= -shift;
+        s2 >>= -shift;
+    }
+    uint64_t len2 = fx_usqr32(s0) + fx_usqr32(s1) + fx_usqr32(s2);
+    /* The top 32 bits of len2 with an even shift: len2 ~ top 2^(32 - e)
+     * with top in [2^30, 2^32), so |s| ~ sqrt(top) 2^k with k = 16 - e/2,
+     * 1 / |s| ~ Y 2^-46 / 2^k, and each component in Q16.16 is
+     * s Y / 2^(30 + k), rounded once. Dropping len2's low bits costs at
+     * most 2^-30 relative. len2 >> 32 lies in [2^26, 3 * 2^28): e is 2
+     * (k = 15) or 4 (k = 14). The rounding bit 2^(29 + k) lies in the
+     * product's high word, so the rounded quotient is
+     * (high word + 2^(k - 3)) >> (k - 2): the low word cannot carry into
+     * it. */
+    bool big = (uint32_t)(len2 >> 32) >= ((uint32_t)1 << 28);
+    uint32_t top = big ? (uint32_t)(len2 >> 30) : (uint32_t)(len2 >> 28);
+    uint32_t Y = fx_rsqrt_q46(top);
+    int sh = big ? 13 : 12;
+    uint32_t half = (uint32_t)1 << (sh - 1);
+    fx_t c0 = (fx_t)(((uint32_t)(fx_umul32(s0, Y) >> 32) + half) >> sh);
+    fx_t c1 = (fx_t)(((uint32_t)(fx_umul32(s1, Y) >> 32) + half) >> sh);
+    fx_t c2 = (fx_t)(((uint32_t)(fx_umul32(s2, Y) >> 32) + half) >> sh);
+    if (len) {
+        /* |v| = |s| 2^-shift = sqrt(top) 2^(k - shift) = top Y 2^(k - 46 - shift),
+         * a shift by 31 + shift (k = 15) or 32 + shift (k = 14), which lies
+         * in [29, 61]; rounded once, saturated like fxw_sqrt. */
+        int q = (big ? 31 : 32) + shift;
+        uint64_t prod = fx_umul32(top, Y); /* < 2^63 */
+        if (q >= 33) {
+            /* The usual case (v below 2^29 LSB): the rounding bit 2^(q-1)
+             * lies in the high word, so the low word cannot carry into
+             * the rounded quotient (as for c0..c2 above), and the
+             * quotient, below 2^31 / 2, fits: 32-bit operations only,
+             * without the 64-bit variable shift. The same value. */
+            uint32_t hi = (uint32_t)(prod >> 32);
+            *len = (fx_t)((hi + ((uint32_t)1 << (q - 33))) >> (q - 32));
+        } else {
+            uint64_t r = (prod + ((uint64_t)1 << (q - 1))) >> q;
+            *len = r > (uint64_t)FX_MAX ? FX_MAX : (fx_t)r;
+        }
+    }
+    v[0] = v[0] < 0 ? -c0 : c0;
+    v[1] = v[1] < 0 ? -c1 : c1;
+    v[2] = v[2] < 0 ? -c2 : c2;
+    return true;
+}
+
+bool fx_normalize3(fx_t v[3])
+{
+    return fx_normalize3_impl(v, NULL);
+}
+
+bool fx_normalize3_len(fx_t v[3], fx_t *len)
+{
+    return fx_normalize3_impl(v, len);
+}
+
+fx128_t fx128_mul(int64_t a, int64_t b)
+{
+    bool neg = (a < 0) != (b < 0);
+    uint64_t x = fx_uabs64(a), y = fx_uabs64(b);
+    if ((x >> 32) != 0) { /* (swapped so that a factor below 2^32 comes first) */
+        uint64_t t = x;
+        x = y;
+        y = t;
+    }
+    uint32_t x0 = (uint32_t)x, x1 = (uint32_t)(x >> 32), y0 = (uint32_t)y, y1 = (uint32_t)(y >> 32);
+    fx128_t r;
+    if (x1 == 0) {
+        /* A factor below 2^32 (the set-up's products of a Q16.16 value
+         * with another or with a 64-bit one): two pieces, not four. */
+        uint64_t p00 = fx_umul32(x0, y0), p01 = fx_umul32(x0, y1);
+        uint64_t mid = (p00 >> 32) + (uint32_t)p01;
+        r.lo = (mid << 32) | (uint32_t)p00;
+        r.hi = (int64_t)((p01 >> 32) + (mid >> 32));
+        return neg ? fx128_neg(r) : r;
+    }
+    /* 32 x 32 -> 64-bit pieces: UMULL, or inline 16-bit products on the
+     * M0 (a plain 64-bit product there is a __aeabi_lmul call). */
+    uint64_t p00 = fx_umul32(x0, y0), p01 = fx_umul32(x0, y1), p10 = fx_umul32(x1, y0), p11 = fx_umul32(x1, y1);
+    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
+    r.lo = (mid << 32) | (uint32_t)p00;
+    r.hi = (int64_t)(p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32));
+    return neg ? fx128_neg(r) : r;
+}
+
+/* a^2: fx128_mul(a, a) with three pieces instead of four (the cross
+ * products are equal) and no sign. */
+fx128_t fx128_sqr(int64_t a)
+{
+    uint64_t x = fx_uabs64(a);
+    uint32_t x0 = (uint32_t)x, x1 = (uint32_t)(x >> 32);
+    uint64_t p00 = fx_usqr32(x0), p01 = fx_umul32(x0, x1), p11 = fx_usqr32(x1);
+    uint64_t mid = (p00 >> 32) + 2 * (uint64_t)(uint32_t)p01;
+    fx128_t r;
+    r.lo = (mid << 32) | (uint32_t)p00;
+    r.hi = (int64_t)(p11 + 2 * (p01 >> 32) + (mid >> 32));
+    return r;
+}
+
+fx128_t fx128_shl(fx128_t a, int s)
+{
+    fx128_t r;
+    if (s == 0)
+        return a;
+    if (s >= 64) {
+        r.hi = (int64_t)(a.lo << (s - 64));
+        r.lo = 0;
+        return r;
+    }
+    r.hi = (int64_t)(((uint64_t)a.hi << s) | (a.lo >> (64 - s)));
+    r.lo = a.lo << s;
+    return r;
+}
+
+int fx128_bits(fx128_t a)
+{
+    if (a.hi < 0)
+        a = fx128_neg(a);
+    if (a.hi)
+        return 128 - __builtin_clzll((uint64_t)a.hi);
+    return a.lo ? 64 - __builtin_clzll(a.lo) : 0;
+}
+
+int64_t fx128_shr_round(fx128_t a, int s)
+{
+    bool neg = a.hi < 0;
+    if (neg)
+        a = fx128_neg(a);
+    if (s > 0)
+        a = fx128_add(a, fx128_shl(fx128_from64(1), s - 1));
+    uint64_t hi = (uint64_t)a.hi, lo = a.lo, q;
+    if (s == 0) {
+        q = lo;
+        if (hi)
+            q = UINT64_MAX;
+    } else if (s < 64) {
+        q = (lo >> s) | (hi << (64 - s));
+        if (hi >> s)
+            q = UINT64_MAX;
+    } else {
+        q = hi >> (s - 64);
+    }
+    if (neg)
+        return q > (uint64_t)INT64_MAX ? INT64_MIN : -(int64_t)q;
+    return q > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)q;
+}
+
+fx128_t fx128_shr128(fx128_t a, int s)
+{
+    if (s == 0)
+        return a;
+    bool neg = a.hi < 0;
+    if (neg)
+        a = fx128_neg(a);
+    a = fx128_add(a, fx128_shl(fx128_from64(1), s - 1));
+    fx128_t r;
+    if (s < 64) {
+        r.lo = (a.lo >> s) | ((uint64_t)a.hi << (64 - s));
+        r.hi = (int64_t)((uint64_t)a.hi >> s);
+    } else {
+        r.lo = (uint64_t)a.hi >> (s - 64);
+        r.hi = 0;
+    }
+    return neg ? fx128_neg(r) : r;
+}

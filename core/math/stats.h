@@ -1,0 +1,31 @@
+/* fxrt_stats: optional work counters (FXRT_STATS 1), for the tests that
+ * prove the renderer skips what a scene does not need (tests/test_skip.c):
+ * how many shadow rays, per-pixel light-vector normalisations, normal
+ * normalisations, Phong power products and spot cosines a frame took.
+ * With FXRT_STATS 0 (the default) the counters compile to nothing. */
+#ifndef FXRT_STATS_H
+#define FXRT_STATS_H
+
+#include <stdint.h>
+
+#include "fxrt_config.h"
+
+#if FXRT_STATS
+typedef struct {
+    uint32_t shaded;       /* shade_point calls */
+    uint32_t shadow_rays;  /* shadow_blocked calls */
+    uint32_t l_normalised; /* per-pixel normalisations of a light vector */
+    uint32_t n_normalised; /* per-pixel normalisations of a surface normal */
+    uint32_t phong;        /* Phong powers evaluated */
+    uint32_t pow_products; /* products inside those powers */
+    uint32_t cosines;      /* cosines computed (spot cones) */
+    uint32_t secondary_rays; /* reflected and transmitted rays traced (core/trace.c) */
+    uint32_t bounds_skips;   /* of those, rays that missed the bounds box */
+} fxrt_stats_t;
+extern fxrt_stats_t fxrt_stats;
+#define FXRT_COUNT(field) ((void)(fxrt_stats.field++))
+#else
+#define FXRT_COUNT(field) ((void)0)
+#endif
+
+#endif

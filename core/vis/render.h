@@ -1,0 +1,472 @@
+/* render: the scanline renderer for primary rays.
+ *
+ * Coverage. Primary rays are coherent: in camera space the ray through
+ * pixel offsets (ix, iy) = (2x - W + 1, 2y - H + 1) is
+ *   perspective   o = 0,                r = (ix, iy, -F)   (F = H cot(fov/2))
+ *   orthographic  o = (su ix, sv iy, 0), r = (0, 0, -1)
+ * so whether a ray hits an object is the sign of a few polynomials of
+ * degree <= 2 in (ix, iy), whose coefficients render_setup computes once
+ * per frame (the ray-invariant work, hoisted):
+ *   sphere     b = oc.r (linear, oc = C - o), c = |oc|^2 - R^2 (inside
+ *              when < 0), disc = R^2 |r|^2 - |oc x r|^2 (= b^2 - a c
+ *              without its cancellation; oc x r is linear, a = |r|^2)
+ *              hit = c < 0 || (b > 0 && disc >= 0)
+ *   flat       N = n.(A - o), D = n.r; in front when N, D have one strict
+ *              sign; a triangle or box face adds one linear edge form per
+ *              side, inside when no two edges have opposite strict signs.
+ *              In perspective N is one constant: a plane or triangle whose
+ *              plane holds the eye (the kernels' n.(A - e) is 0) covers
+ *              nothing, and N takes the sign of the kernels' n.(A - e)
+ *              where the camera-space rounding disagrees
+ *   box        the union of its faces that a ray can cross at t > 0:
+ *              the front faces seen from outside in perspective, every
+ *              non-degenerate face when the eye is on its surface (except
+ *              the faces whose plane holds the eye: a ray leaves them at
+ *              t = 0, so a ray that leaves the box at once misses it, as
+ *              in the kernels) or the camera is orthographic (ray origins
+ *              spread over a plane that may cut the box); every pixel
+ *              when the eye is strictly inside
+ * In the Q16.16 build the coefficients are integers (rounded once, with a
+ * per-form power-of-two scale), so every value along a scanline is exact:
+ * forward differencing (one 64-bit addition per linear form and pixel,
+ * two 128-bit additions for a sphere's quadratic) gives exactly what
+ * evaluating the polynomial from scratch gives. That is what lets the fast
+ * renderer skip and step while staying byte-identical to the reference
+ * loop (render_row_reference), which evaluates every object's polynomials
+ * at every pixel. The float and double builds use the same set-up and
+ * evaluate each polynomial directly, or, with FXRT_FLOAT_STEP, step them
+ * in floating point from a direct evaluation at the start of each object's
+ * row segment (that drifts; it is the baseline a float programmer writes).
+ *
+ * Visibility. Where two objects cover a pixel, the nearer wins; ties go to
+ * the object that comes first in the scene (lower id). Depth is the ray
+ * parameter t along the camera-space ray r above (the same r for every
+ * object at a pixel), formed from the coverage forms themselves, never by
+ * casting the pixel's ray:
+ *   flat       t = N / D
+ *   sphere     t = c / (b + s) outside (the near root without
+ *              cancellation), s = sqrt(disc); inside, the far root
+ *              (b + s) / a, or (-c) / (s - b) when b < 0
+ *   box        the smallest t of its faces that cover the pixel
+ * Q16.16 keeps t as n / d * 2^e with n and d the top 24 bits of the exact
+ * integer numerator and denominator (s: the integer square root of the top
+ * bits of disc), and compares two depths exactly by cross-multiplication
+ * (24 x 24-bit products). This depth, a deterministic function of the
+ * object's integer forms at the pixel, is the depth rule of both loops.
+ * Each column keeps its owner and, once a second object has asked, the
+ * owner's depth, so a further object costs one compare. Objects claim a
+ * row's columns nearest first (render_setup sorts them by their near
+ * depth bound each frame; planes first, a mesh's triangles together), so
+ * a farther one mostly loses shared columns without painting them. Most
+ * overlaps need no depth at all: every bounded object has a depth range
+ * from its camera-space z (t = -z / F, orthographic -z) with a margin,
+ * and per row each object's range is compared with each plane's range
+ * over the object's columns (t = N / D is monotone along a row), which
+ * decides "in front of that plane on this whole row" or hides the object
+ * on the row.
+ * Where a newcomer crosses a stretch of columns of one other owner, the
+ * two objects' depth ranges over the stretch (flat: N / D at its ends;
+ * sphere: t at its ends above, below from a bound on disc; box: its
+ * faces') settle the whole stretch when they do not meet.
+ * These shortcuts only skip computations whose result they already know,
+ * so the image is what the per-pixel compare gives (FXRT_NO_ZRANGE turns
+ * them off; the frames are byte-identical).
+ *
+ * What is exact: coverage (every form value, in integers); the depth
+ * compare of the 24-bit depths. What is rounded: the forms' coefficients
+ * (once per frame) and the 24-bit truncation of n, d and s, so two
+ * surfaces closer than about 2^-22 of their distance may be ordered
+ * differently from exact arithmetic (a world-space ray caster in Q16.16
+ * resolves far less).
+ *
+ * Screen bounds: each object also gets a conservative pixel rectangle (its
+ * projected bounding box plus a margin, or the whole screen when it
+ * straddles the eye plane); planes span every column, and their rows stop
+ * at the horizon (render_setup bisects for it once per frame, exactly:
+ * render_plane_rows). Pixels no object can cover are never tested, and an
+ * object whose rectangle meets no other's on a row paints its hits
+ * without any bookkeeping.
+ *
+ * Memory: per-kind records (render_sphere_t, render_flat_t, render_face_t) in
+ * arrays sized by the per-kind capacities of fxrt_config.h, plus per column
+ * an owner word and an 8-byte depth.
+ */
+#ifndef FXRT_RENDER_H
+#define FXRT_RENDER_H
+
+#include "scene/cam.h"
+#include "light/shade.h"
+#include "scene/world.h"
+
+#if FXRT_NUMBER == FXRT_Q16
+typedef int64_t render_k_t; /* coefficient: a scaled integer */
+#else
+typedef num_t render_k_t;
+#endif
+
+/* c + x ix + y iy */
+typedef struct {
+    render_k_t c, x, y;
+} render_lin_t;
+
+/* c + x ix + y iy + xx ix^2 + xy ix iy + yy iy^2 (in this order: x, xx
+ * and xy are the linear form x + xx ix + xy iy, rquad_at's first step) */
+typedef struct {
+    render_k_t x, xx, xy, y, yy, c;
+} render_quad_t;
+
+/* Row coherence (the fast Q16.16 loop, with spans, lone objects and
+ * bounds): a lone sphere's forms step down the rows (r->srow) and its run
+ * on a row is searched from the row before's. */
+#define RENDER_COHERENT                                                                                  \
+    (FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS && !FXRT_NO_LONE && !FXRT_NO_BOUNDS && \
+     !FXRT_NO_COHERENCE)
+
+/* Where division and CLZ are instructions (the M3, M4F and host), a flat
+ * piece's run search starts from a quotient (core/render_row.c) and keeps
+ * no guesses; on the M0 each flat piece keeps the row before's
+ * (render_flat_t's hint). */
+#define RENDER_DIV_GUESS (FX_HAVE_UDIV && FX_HAVE_CLZ)
+#define RENDER_HINTS (RENDER_COHERENT && !RENDER_DIV_GUESS)
+/* There, too, each edge form keeps where it changed sign on the row before
+ * (render_estep_t), so that the next row's column is one exact step away
+ * (core/render_row.c: render_split_edge). 32 bytes per edge: not on the
+ * M0, whose micro:bit has 16 KB of RAM. */
+#define RENDER_ESTEP (RENDER_COHERENT && RENDER_DIV_GUESS)
+
+/* Where CLZ is an instruction (the M3, M4F and host), a row finds the
+ * objects it can meet from a mask per block of rows (r->row_mask) instead
+ * of asking every object: 2 bytes per object, not on the M0. */
+#define RENDER_ROW_BLOCKS 16
+#define RENDER_ROW_MASKS (FX_HAVE_CLZ && !FXRT_NO_BOUNDS)
+
+/* Spheres with row-coherence state (r->srow). */
+#define RENDER_SROWS (RENDER_COHERENT && FXRT_COHERENT_SPHERES > 0)
+
+/* Run mode of the sampling pass (core/render_sample.c): the coherent loop
+ * can describe a fine row as runs of one owner each instead of one owner
+ * per column. */
+#define RENDER_RUNS (FXRT_MAX_SAMPLES > 1 && RENDER_COHERENT)
+
+/* Back-face culling of closed meshes (render_cull_meshes), from the
+ * world's mesh links (mesh.h, WORLD_MESH): a bit per triangle. */
+#define RENDER_MESH WORLD_MESH
+
+#if RENDER_ESTEP
+/* An edge form G (the form, negated where it falls along the row, so G
+ * rises by step = 2 |x| a column) on row iy: col is the first column with
+ * G >= 0 (anywhere, not only on the piece's columns) and val = G(col), in
+ * [0, step). From a row to the next (iy - 2) G changes by a constant R:
+ * col + dk, val + jump with dk = floor(-R / step) and jump = R + dk step
+ * in (-step, 0], then one column more where val < 0. dk and jump hold for
+ * the frame once two rows in a row have given them. */
+typedef struct {
+    int64_t val, jump;
+    int32_t col, iy; /* iy RENDER_ESTEP_NONE: no column */
+    int32_t dk;      /* RENDER_ESTEP_NONE: no step yet */
+    int16_t next;    /* iy - 2 when col, dk and jump give that row's column, else RENDER_ESTEP_NO_ROW */
+    bool fall;       /* the form falls along the row (with col) */
+} render_estep_t;
+#define RENDER_ESTEP_NONE INT32_MIN
+#define RENDER_ESTEP_NO_ROW INT16_MIN /* (pixel offsets lie within +-2^15: FXRT_MAX_DIM) */
+#endif
+
+/* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
+typedef struct {
+    render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
+    render_lin_t e[3];  /* edge forms (a box face's fourth: render_face_t) */
+    uint8_t edges;
+    int8_t te;    /* Q16.16: t = N / D * 2^te (N, D carry their own scales) */
+    bool front;   /* Q16.16: N and D share one strict sign at every pixel of its bounds, so
+                   * the edges alone decide its coverage there (render_setup_object) */
+#if RENDER_HINTS
+    int16_t hint[6]; /* row coherence: where each form (N, D, edges) changed sign on the row before */
+#endif
+#if RENDER_ESTEP
+    render_estep_t *es; /* row coherence: its edges' columns (r->estep; a plane: NULL) */
+#endif
+} render_flat_t;
+
+/* The per-column owner array of the shading and sampling passes exists
+ * when some pass reads it. */
+#define RENDER_VIS (FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1)
+
+#if RENDER_RUNS
+/* Fine columns a..b (inclusive) of one fine row belong to object oi. */
+typedef struct {
+    int16_t a, b;
+    uint16_t oi;
+} render_run_t;
+#endif
+
+/* Output columns with samples > 1 (at most half the fine columns). */
+#define RENDER_OUT_COLS ((FXRT_RENDER_MAX_WIDTH + 1) / 2)
+
+/* A depth (ray parameter along the camera-space ray): Q16.16 keeps
+ * t = n / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes:
+ * n in bits 0-23, e (signed) in bits 24-31, d in bits 32-55 (render_vis.c
+ * packs and reads them). An integer rather than a struct: the M0's
+ * compiler copies an 8-byte struct with a memcpy call. */
+#if FXRT_NUMBER == FXRT_Q16
+typedef uint64_t render_depth_t;
+#else
+typedef struct {
+    num_t t;
+} render_depth_t;
+#endif
+
+#if FXRT_NUMBER == FXRT_Q16
+/* A sphere on one row from a column x0 (core/render_row.c): the test
+ * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the
+ * row: in perspective c is, in orthographic b is, and c < 0 implies
+ * disc > 0. v, d1, d2: the form that decides (c, when use_c, or disc) at
+ * x0, its first difference there and its (constant) second difference. */
+typedef struct {
+    fx128_t v, d1, d2;
+    bool ortho, inside, use_c; /* inside: the eye is (every pixel covered) */
+} render_srow_t;
+
+/* The row forms of the sphere scanned last among others on the current
+ * row (object oi, from pixel offset ix0 on row iy): a depth the sphere's
+ * owner columns need later (render_depth_at) comes from them by a direct
+ * evaluation at the column instead of from the sphere's forms. */
+typedef struct {
+    render_srow_t s;
+    int32_t ix0, iy;
+    uint16_t oi;
+    /* The last disc so computed for a sphere among others on this row
+     * (render_vis.c; loi is reset at each row): sphere loi's q(lk) and,
+     * when lstepped, its step q(lk + 1) - q(lk), so the next column's is
+     * two additions. */
+    uint16_t loi;
+    bool lstepped;
+    int32_t lk;
+    fx128_t lq, lstep;
+#if RENDER_DIV_GUESS
+    /* The last sphere depth range's first column (render_sphere_span:
+     * sphere poi's depth at column px, on this row; poi is reset at each
+     * row), which a stretch halved starts from again. */
+    uint16_t poi;
+    int32_t px;
+    render_depth_t pt;
+#endif
+} render_scache_t;
+#endif
+
+/* A sphere's forms. disc = r2 a - (px^2 + py^2 + pz^2) and c: with the
+ * eye at o, centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
+ * (the same as b^2 - a c, without its cancellation).
+ * Perspective: p = C x r, a = |r|^2 (one form for every sphere), c = k =
+ * |C|^2 - R^2. Orthographic: p = the offsets of the ray from the centre
+ * across the view, pz = 0, a = 1, c = k + px^2 + py^2.
+ * Q16.16: pieces below 2^62, squares and sums exact in 128 bits. */
+typedef struct {
+    render_lin_t b, px, py, pz; /* b shares the p pieces' scale */
+    const render_quad_t *a;
+    bool ortho;
+    int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
+    /* (k and r2 last: on a 32-bit target the small fields above fill the
+     * padding before them) */
+#if FXRT_NUMBER == FXRT_Q16
+    fx128_t k, r2;
+#else
+    render_k_t k, r2;
+#endif
+} render_sphere_t;
+
+/* A box face: a flat piece with a fourth edge and its own pixel bounds
+ * (render_flat_t first, so a pointer to f is a pointer to the face). A
+ * plane's or triangle's bounds are its object's. */
+typedef struct {
+    render_flat_t f;
+    render_lin_t e4;
+    int16_t x0, x1, r0, r1;
+} render_face_t;
+
+typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_ALL } render_kind_t;
+
+typedef struct {
+    render_depth_t tlo, thi; /* first: 8-byte aligned in Q16.16, no padding before them */
+    uint8_t kind;      /* render_kind_t */
+    uint8_t geom;      /* geom_kind_t: which world array */
+    uint8_t nflat;     /* RENDER_FLAT: 1, RENDER_BOX and RENDER_ALL: faces */
+    bool ranged;       /* tlo, thi bound its depth (not for planes) */
+    uint16_t index;    /* index there */
+    uint16_t id;       /* scene order, for ties */
+    rgb8_t rgb;
+    bool flat;         /* its material is flat: rgb is every sample (no light sum) */
+#if FXRT_PIXEL == FXRT_RGB565
+    uint16_t px;       /* rgb as an RGB565 pixel */
+#endif
+    int16_t x0, x1;    /* columns that may be covered, inclusive */
+    int16_t r0, r1;    /* output rows (0 = top) that may be covered */
+#if FXRT_MAX_SAMPLES > 1
+    color_sum_t one[3]; /* flat: one sample of its colour (color_sum_add), for the sampling pass */
+#endif
+    union {
+        render_sphere_t *sphere; /* RENDER_SPHERE */
+        render_flat_t *flat;     /* RENDER_FLAT: a plane or triangle */
+        render_face_t *face;     /* RENDER_BOX and RENDER_ALL: nflat faces */
+    } u;
+} render_obj_t;
+
+typedef struct {
+    const world_t *world;
+    const cam_t *cam;
+    uint16_t count;
+    render_obj_t obj[FXRT_RENDER_MAX_OBJECTS];
+    /* Per-kind records, sized by the per-kind capacities. */
+#if FXRT_MAX_SPHERES > 0
+    render_sphere_t spheres[FXRT_MAX_SPHERES];
+    render_quad_t sphere_a; /* a = |r|^2, shared by every sphere */
+#endif
+#if FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES > 0
+    render_flat_t flats[FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES]; /* one per plane or triangle */
+#endif
+#if FXRT_MAX_BOXES > 0
+    render_face_t box_faces[FXRT_RENDER_BOX_FACES]; /* the faces a box can be hit through, box after box */
+    uint16_t box_used;
+#endif
+#if RENDER_ESTEP && FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES > 0
+    /* The edges' row states: 3 per triangle, then 4 per box face. */
+    render_estep_t estep[3 * FXRT_MAX_TRIANGLES + (FXRT_MAX_BOXES > 0 ? 4 * FXRT_RENDER_BOX_FACES : 0)];
+#endif
+    const char *error; /* why render_setup failed, or NULL */
+    /* Per column: stamp << 17 | depth-known << 16 | object (index into
+     * obj) of the nearest cover so far. A column whose stamp is not the
+     * current row's is uncovered, so rows need no clearing pass. Columns
+     * painted by an object alone on its row are not recorded. One entry
+     * more: render_claim_run's sentinel past its last column. */
+    uint32_t owner[FXRT_RENDER_MAX_WIDTH + 1];
+    /* Per column: the owner's depth, where a second object has asked. */
+    render_depth_t depth[FXRT_RENDER_MAX_WIDTH];
+    uint16_t stamp;
+    uint16_t nplanes;  /* objects 0 .. nplanes - 1 are the planes */
+    uint32_t row_win;  /* this row, the object being scanned: planes it is nearer than */
+#if RENDER_ROW_MASKS
+    /* Bit i % 32 of word i / 32 of block b: object i's rows r0..r1 meet
+     * rows b << row_shift .. ((b + 1) << row_shift) - 1. */
+    uint32_t row_mask[RENDER_ROW_BLOCKS][(FXRT_RENDER_MAX_OBJECTS + 31) / 32];
+    uint8_t row_shift;
+#endif
+#if FXRT_NUMBER == FXRT_Q16
+    render_scache_t *scache; /* during render_row_vis: on its stack (else NULL) */
+#endif
+#if RENDER_MESH
+    /* Bit i % 8 of byte i / 8: triangle i is a back face of a closed mesh
+     * this frame (render_cull_meshes, before the objects are set up;
+     * render_setup_triangle leaves it empty). */
+    uint8_t mesh_culled[(FXRT_MAX_TRIANGLES + 7) / 8];
+#endif
+#if RENDER_VIS
+    /* Shading and sampling passes: per column of the current row, the
+     * object (index into obj) painted last, RENDER_VIS_NONE where none,
+     * recorded when track is set (some object is lit, or samples > 1) or
+     * keys are wanted. */
+    uint16_t vis[FXRT_RENDER_MAX_WIDTH];
+    bool track;
+#endif
+#if FXRT_MAX_LIGHTS > 0
+    bool any_lit;
+    /* Per object (index into obj): its shading constants, once per frame. */
+    shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
+#if SHADOW_CULL
+    /* Shadow-ray culling, per light and bounded object (core/shadow.c). */
+    shadow_cull_t shadow_cull[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
+#endif
+#endif
+#if RENDER_SROWS
+    /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the
+     * deciding form at its first column x0 is quadratic in the (fine) row,
+     * exactly in 128 bits. cur holds it on fine row vrow (v, d1, d2 as
+     * render_srow_t); dvk = v(next row) - v; ddv and dd1, how dvk and d1
+     * change per row. plo..phi: its run of f >= 0 on fine row prow
+     * (columns from x0), which guesses the next row's; pk, the column of
+     * f's peak last found. */
+    struct {
+        render_srow_t cur; /* v, d1, d2 on fine row vrow */
+        fx128_t dvk, ddv, dd1;
+        int32_t vrow, prow;
+        int16_t plo, phi, pk;
+    } srow[FXRT_COHERENT_SPHERES];
+#endif
+#if FXRT_MAX_SAMPLES > 1
+    /* Supersampling (render_sample.c), samples > 1: cam points to `fine`,
+     * the camera of the N x N cells (cam_fine), and out_cam to the output
+     * camera; each output row sums the clamped colours of its N fine rows
+     * in acc (Q16.16: raw units, at most 255 * 2^16 * 256 < 2^32). */
+    uint8_t samples;
+    bool adaptive;
+    color_sum_t bg_one[3]; /* one sample of the background */
+    const cam_t *out_cam;
+    cam_t fine;
+    uint8_t fine_rgb[(FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * FXRT_RENDER_MAX_WIDTH] __attribute__((aligned(4)));
+    color_sum_t acc[3 * RENDER_OUT_COLS];
+    uint16_t uni[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
+#if RENDER_RUNS
+    /* Run mode: the runs of fine row j of the current output row are
+     * runs[run_at[j] .. run_at[j + 1] - 1], sorted, not overlapping; gaps
+     * are the background. */
+    render_run_t runs[FXRT_SAMPLE_RUNS];
+    uint16_t run_at[FXRT_MAX_SAMPLES + 1];
+    /* run_cap: the runs an output row may use, FXRT_SAMPLE_RUNS after
+     * render_setup (a test may lower it to force the per-sample pass);
+     * run_rows: output rows rendered from runs so far (a statistic). */
+    uint16_t run_cap;
+    uint32_t run_rows;
+#endif
+#if FXRT_ADAPTIVE
+    /* Adaptive: keys and colours of output rows at one sample per pixel
+     * (a ring of three rows: slot row % 3 holds row arow[row % 3]), and
+     * per column whether the pixel takes the N x N rays. */
+    uint32_t akeys[3][RENDER_OUT_COLS];
+    rgb8_t argb[3][RENDER_OUT_COLS];
+    int32_t arow[3];
+    bool need[RENDER_OUT_COLS];
+#endif
+#endif
+    /* Optional, set by the caller after render_setup: when not NULL,
+     * render_row and render_row_reference also write each pixel's key
+     * (render_key) into keys[0 .. width-1]. */
+    uint32_t *keys;
+    int16_t dirty_lo, dirty_hi; /* this row: columns outside have no owner yet */
+} render_t;
+
+#if RENDER_MESH
+/* Is triangle i a back face of a closed mesh in this frame? */
+static inline bool render_mesh_culled(const render_t *r, uint16_t i) { return (r->mesh_culled[i >> 3] >> (i & 7)) & 1u; }
+#endif
+
+/* Per-frame set-up: camera-space forms and screen bounds of every object.
+ * The world and camera must outlive r. Returns false (r->error says why)
+ * when the camera is wider than FXRT_RENDER_MAX_WIDTH or the boxes need
+ * more faces than FXRT_RENDER_BOX_FACES. */
+bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
+
+/* A pixel's key: the nearest object's scene id and the set of lights that
+ * reach its hit point (bit i for light i; core/shade.c), id << 8 | mask.
+ * A pixel that shows the background has RENDER_KEY_MISS. Two neighbouring
+ * pixels with different keys mark a discontinuity (silhouette, shadow
+ * edge, spot-cone edge, terminator): host/compare.c. */
+#define RENDER_KEY_MISS 0xFFFF00u
+static inline uint32_t render_key(uint16_t id, uint8_t mask) { return (uint32_t)id << 8 | mask; }
+
+/* With samples N > 1 (world_set_samples), render_row and
+ * render_row_reference give each pixel the mean of its N x N cell-centre
+ * rays, each clamped to [0, 1], rounded to 8 bits (core/render_sample.c);
+ * keys are then not written (they are defined at one sample per pixel). */
+
+/* Render output row `row` (0 = top) into rgb in the FXRT_PIXEL format:
+ * RGB888, 3 * width bytes; RGB565, width uint16_t values in native byte
+ * order (rgb 2-byte aligned). */
+void render_row(render_t *r, int32_t row, uint8_t *rgb);
+
+/* The same image from the straightforward loop: every object's forms
+ * evaluated from scratch at every pixel, no bounds, no stepping. The Q16.16
+ * build's output is byte-identical to render_row (tests enforce it). */
+void render_row_reference(render_t *r, int32_t row, uint8_t *rgb);
+
+/* The colour seen along one arbitrary ray (world-space kernels). */
+rgb8_t render_pixel(const world_t *w, const ray_t *ray);
+
+#endif
