@@ -4,6 +4,6 @@
 # Paths are relative to core/, without .c.
 CORE_FX  := math/fx
 CORE_NUM := math/num math/color scene/cam scene/geom scene/mesh scene/world \
-            vis/render_setup vis/render_vis vis/render_row frame/render_shade frame/render_sample \
-            light/shade light/shadow light/trace frame/raycast frame/api
+            vis/render_setup vis/render_vis vis/render_row vis/reference frame/render frame/render_shade frame/render_sample \
+            light/shade light/shadow light/trace light/hit frame/raycast frame/api
 CORE_SRC := $(CORE_FX) $(CORE_NUM)

@@ -31,14 +31,27 @@ def holder(addr):
 
 os.makedirs(out, exist_ok=True)
 cur, start, size, fh = None, 0, 0, None
+body = []
+
+
+def flush():
+    """Write the function's lines, without the alignment padding at its end
+    (zero halfwords, shown as movs r0, r0)."""
+    while body and body[-1] in ('movs\tr0, r0', 'nop'):
+        body.pop()
+    if fh:
+        fh.write(''.join(line + '\n' for line in body))
+        fh.close()
+    body.clear()
+
+
 dis = subprocess.run(['arm-none-eabi-objdump', '-d', '--no-show-raw-insn', elf], capture_output=True, text=True).stdout
 for line in dis.splitlines():
     m = re.match(r'^([0-9a-f]+) <([^>]+)>:$', line)
     if m:
         name = m.group(2)
-        if fh:
-            fh.close()
-            fh = None
+        flush()
+        fh = None
         if name in byname:
             cur, start, size = name, byname[name][0], byname[name][1]
             fh = open(os.path.join(out, ren.get(name, name)), 'w')
@@ -59,6 +72,5 @@ for line in dis.splitlines():
             return '<%s%s>' % (ren.get(h[2], h[2]), '' if a == h[0] else '+0x%x' % (a - h[0]))
         return '<?>'
     ins = re.sub(r'\b([0-9a-f]+) <[^>]*>', target, ins)
-    fh.write(ins + '\n')
-if fh:
-    fh.close()
+    body.append(ins)
+flush()

@@ -1,6 +1,5 @@
 /* shade: the lighting model (see shade.h). */
-#include "light/shade.h"
-#include "light/trace.h"
+#include "light/shade_sum.h"
 
 #if FXRT_STATS
 fxrt_stats_t fxrt_stats;
@@ -151,47 +150,18 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
     return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
 }
 
-static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
-                            const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
 
 /* shade_sum without per-frame constants (the ray caster, arbitrary rays):
  * they are computed here, off the renderer's stack path. It calls
  * shade_lights, not shade_sum: no cycle in the call graph
  * (tests/norecurse.sh). */
-static __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
+__attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
                                                       uint16_t index, const vec3_t *p, const vec3_t *n_geo,
                                                       const vec3_t *d, uint8_t *mask)
 {
     shade_k_t own;
     shade_consts(w, obj, &own);
     return shade_lights(w, obj, kind, index, p, n_geo, d, &own, mask);
-}
-
-/* The light sum for object obj (= world_common(w, kind, index)), looked
- * up once by the caller. Inlined into its two callers where the core has
- * 32x32->64-bit multiplies (the M3 and M4F: one call fewer per pixel,
- * about -1 % on the lit scenes when it was measured); the M0
- * keeps the call (inlined, its callers' register pressure cost it +1 %). */
-#if FX_HAVE_UMULL
-#define SHADE_SUM_INLINE inline __attribute__((always_inline))
-#else
-#define SHADE_SUM_INLINE
-#endif
-static SHADE_SUM_INLINE color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
-                                          const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k,
-                                          uint8_t *mask)
-{
-    const material_t *m = &obj->mat;
-    FXRT_COUNT(shaded);
-    bool lit = m->kind != MATERIAL_FLAT;
-    /* Transparent: no local term (core/trace.c adds what it transmits and
-     * reflects); the light loop runs only for a pixel's key. */
-    bool clear = m->kind == MATERIAL_TRANSPARENT;
-    if ((!lit || clear) && !mask)
-        return clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : obj->color;
-    if (lit && !clear && !k)
-        return shade_sum_own(w, obj, kind, index, p, n_geo, d, mask); /* computes k on its own frame */
-    return shade_lights(w, obj, kind, index, p, n_geo, d, k, mask);
 }
 
 #if FXRT_PHONG
@@ -218,8 +188,8 @@ static SHADE_SPEC_INLINE color_t shade_specular(color_t c, const vec3_t *n, cons
 
 /* The light loop of shade_sum (k not NULL when the material is lit and
  * not transparent). */
-static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
-                            const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
+color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+                     const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
                             uint8_t *mask)
 {
 #if FXRT_BOUND_NO_LIGHT_SUM
@@ -309,6 +279,14 @@ static color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kin
     return c;
 }
 
+#if !FX_HAVE_UMULL
+color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, const vec3_t *p,
+                  const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask)
+{
+    return shade_sum_inline(w, obj, kind, index, p, n_geo, d, k, mask);
+}
+#endif
+
 color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
                       const shade_k_t *k, uint8_t *mask)
 {
@@ -319,52 +297,6 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
     if (!k && obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_TRANSPARENT)
         return shade_sum_own(w, obj, kind, index, &p, &n_geo, &d, mask);
     return shade_sum(w, obj, kind, index, &p, &n_geo, &d, k, mask);
-}
-
-color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask)
-{
-    return shade_object_k(w, kind, index, ray, NULL, mask);
-}
-
-color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
-                       uint8_t *mask)
-{
-    const geom_common_t *obj = world_common(w, kind, index);
-    if (obj->mat.kind == MATERIAL_FLAT && !mask)
-        return obj->color;
-    num_t t = NUM_ZERO;
-    vec3_t n = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    switch (kind) {
-#if FXRT_MAX_PLANES > 0
-    case GEOM_PLANE: geom_plane_surface(&w->planes[index], ray, &t, &n); break;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    case GEOM_SPHERE: geom_sphere_surface(&w->spheres[index], ray, &t, &n); break;
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    case GEOM_TRIANGLE: geom_triangle_surface(&w->triangles[index], ray, &t, &n); break;
-#endif
-#if FXRT_MAX_BOXES > 0
-    case GEOM_BOX: geom_box_surface(&w->boxes[index], ray, &t, &n); break;
-#endif
-    default: break;
-    }
-#if FXRT_NUMBER == FXRT_Q16
-    /* A camera ray (unit d, shade.h): for |t| < 16384, t d needs no
-     * saturation test (vec3_scale_unit_small, the same value; -0.75 % on
-     * the lit set on the M3). */
-    vec3_t p = t < num_from_int(16384) && t > -num_from_int(16384)
-                   ? vec3_add(ray->o, vec3_scale_unit_small(ray->d, t))
-                   : ray_at(ray, t);
-#else
-    vec3_t p = ray_at(ray, t);
-#endif
-    color_t c = shade_sum(w, obj, kind, index, &p, &n, &ray->d, k, mask);
-#if FXRT_MAX_DEPTH > 0
-    if (material_bounces(obj->mat.kind))
-        c = trace_bounces(w, kind, index, ray, p, n, c);
-#endif
-    return c;
 }
 
 #endif

@@ -61,6 +61,8 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
  * r->vis (when render_tracks), flat colours painted into rgb. */
 void render_row_vis(render_t *r, int32_t row, uint8_t *rgb);
 void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb);
+/* Start a row: a new owner stamp, vis cleared, the background painted. */
+void render_begin_row(render_t *r, uint8_t *rgb);
 
 /* Fill pixels xa..xb of a row with colour c, in the pixel format. */
 void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c);

@@ -1,76 +1,10 @@
 /* render_row: the scanline loops (fast and reference), spans and the
  * pixel format. See render.h for the method. */
-#include "vis/render_int.h"
-#include "light/shade.h"
-
-/* Is a column with owner entry cur (tag: this row's stamp) free for any
- * newcomer: not reached yet on this row, or owned by a plane that the
- * newcomer is nearer than all along it (render_row_order)? */
-static inline bool render_free(const render_t *r, uint32_t tag, uint32_t cur)
-{
-    uint16_t ci = (uint16_t)cur;
-    return (cur & ~0x1FFFFu) != tag || (ci < 32 && (r->row_win >> ci) & 1u);
-}
-
-/* Claim column x for object oi: free columns are taken at once, so are
- * columns owned by a plane that oi is nearer than all along this row
- * (r->row_win, render_row_order), a column owned by another object goes
- * to the nearer (RESOLVE, which may use cur_), and the pixel is painted
- * when oi wins. */
-#define RENDER_COVER(r, oi, x, rgb, RESOLVE)                                         \
-    do {                                                                         \
-        uint32_t tag_ = (uint32_t)(r)->stamp << RENDER_STAMP_SHIFT, cur_ = (r)->owner[x]; \
-        if (render_free(r, tag_, cur_))                                          \
-            (r)->owner[x] = tag_ | (oi);                                         \
-        else if ((uint16_t)cur_ == (oi) || !(RESOLVE))                           \
-            break;                                                               \
-        render_paint(r, oi, x, rgb);                                             \
-    } while (0)
-
-/* Paint column x in object oi's colour (the row's pixel format). */
-#if FXRT_PIXEL == FXRT_RGB565
-typedef uint16_t __attribute__((may_alias)) render_px16_t;
-static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
-{
-#if RENDER_VIS
-    r->vis[x] = oi;
-#endif
-    ((render_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
-}
-#else
-static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
-{
-#if RENDER_VIS
-    r->vis[x] = oi;
-#endif
-    rgb8_t c = r->obj[oi].rgb;
-    rgb[3 * x + 0] = c.r;
-    rgb[3 * x + 1] = c.g;
-    rgb[3 * x + 2] = c.b;
-}
-#endif
-
-/* Record that object oi covers column x and paint it if it is the nearest
- * so far. The result does not depend on the order of calls (depth, then
- * id, order objects totally), so both loops agree. */
-static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t iy, uint8_t *rgb)
-{
-    RENDER_COVER(r, oi, x, rgb, render_resolve(r, cur_, oi, x, iy));
-}
-
-/* A hit at column x: paint directly when the object is alone on the row
- * (no other object's bounds reach it, so no bookkeeping). */
-#define RENDER_HIT(r, oi, x, iy, rgb, lone)                                    \
-    do {                                                                       \
-        if (lone)                                                              \
-            render_paint(r, oi, x, rgb);                                       \
-        else                                                                   \
-            render_cover(r, oi, x, iy, rgb);                                   \
-    } while (0)
+#include "vis/paint.h"
 
 /* Start a row: a new stamp (so every column is uncovered) and the
  * background in every pixel, with word stores where the row is aligned. */
-static void render_begin_row(render_t *r, uint8_t *rgb)
+void render_begin_row(render_t *r, uint8_t *rgb)
 {
 #if RENDER_VIS
     if (render_tracks(r))
@@ -87,38 +21,6 @@ static void render_begin_row(render_t *r, uint8_t *rgb)
         return; /* the sampling pass reads vis, not the painted scratch row */
 #endif
     render_fill_rgb(rgb, 0, r->cam->width - 1, r->world->background_rgb);
-}
-
-void render_row_reference(render_t *r, int32_t row, uint8_t *rgb)
-{
-#if FXRT_MAX_SAMPLES > 1
-    if (r->samples > 1) {
-        render_sample_row(r, row, rgb, true);
-        return;
-    }
-#endif
-    render_row_reference_vis(r, row, rgb);
-#if FXRT_MAX_LIGHTS > 0
-    if (render_tracks(r))
-        render_shade_row(r, row, rgb);
-#endif
-}
-
-void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb)
-{
-    int32_t w = r->cam->width, y = r->cam->height - 1 - row;
-    int32_t iy = 2 * y - r->cam->height + 1;
-    render_begin_row(r, rgb);
-    r->row_win = 0;
-    for (int32_t x = 0; x < w; x++) {
-        int32_t ix = 2 * x - w + 1;
-        for (uint16_t i = 0; i < r->count; i++) {
-            if (FXRT_NO_HOIST)
-                render_setup_object(r, i);
-            if (render_covers(&r->obj[i], ix, iy))
-                render_cover(r, i, x, iy, rgb);
-        }
-    }
 }
 
 /* ---- the fast loop ------------------------------------------------------ */
@@ -985,12 +887,20 @@ __attribute__((noinline)) static void render_step_flat(render_t *r, uint16_t oi,
  * disc are quadratic along the row, so their 128-bit forward differences
  * (second difference constant) give exactly the values render_sphere_cd
  * computes from scratch. (A frame of its own, not render_row_vis's.) */
+/* render_sphere_cd out of line: render_sphere_row's three calls share it
+ * (inline, its temporaries would grow render_sphere_row's frame). */
+__attribute__((noinline)) static void render_sphere_cd_row(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c,
+                                                           rsw_t *disc)
+{
+    render_sphere_cd(o, ix, iy, c, disc);
+}
+
 __attribute__((noinline)) static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0,
                                                         int32_t iy, render_srow_t *s)
 {
     fx128_t c[3], q[3];
     for (int k = 0; k < 3; k++)
-        render_sphere_cd(o, ix0 + 2 * k, iy, &c[k], &q[k]);
+        render_sphere_cd_row(o, ix0 + 2 * k, iy, &c[k], &q[k]);
     s->ortho = render_ortho(r->cam);
     s->inside = !s->ortho && rsw_neg(c[0]);
     s->use_c = s->ortho && !(o->u.sphere->b.c > 0);
@@ -1704,33 +1614,3 @@ __attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t 
     r->scache = NULL;
 #endif
 }
-
-void render_row(render_t *r, int32_t row, uint8_t *rgb)
-{
-#if FXRT_MAX_SAMPLES > 1
-    if (r->samples > 1) {
-        render_sample_row(r, row, rgb, false);
-        return;
-    }
-#endif
-    render_row_vis(r, row, rgb);
-#if FXRT_MAX_LIGHTS > 0
-    if (render_tracks(r))
-        render_shade_row(r, row, rgb);
-#endif
-}
-
-/* ---- arbitrary rays ------------------------------------------------------ */
-
-rgb8_t render_pixel(const world_t *w, const ray_t *ray)
-{
-    hit_t hit;
-    if (!world_hit(w, ray, &hit))
-        return w->background_rgb;
-#if FXRT_MAX_LIGHTS > 0
-    if (hit.obj->mat.kind != MATERIAL_FLAT)
-        return color_to_rgb8(shade_object(w, hit.kind, hit.index, ray, NULL));
-#endif
-    return hit.obj->rgb;
-}
-
