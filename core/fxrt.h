@@ -51,7 +51,7 @@
 
 #include "scene/cam.h"
 #include "fxrt_err.h"
-#include "vis/render.h"
+#include "frame/render.h"
 #include "scene/world.h"
 
 /* Bytes of one output row of `width` pixels: RGB888, 3 bytes per pixel,

@@ -247,9 +247,9 @@ static void engine_pass(render_t *state, const world_t *world, const cam_t *cam,
         uint8_t *out = rgb != NULL ? rgb + (size_t)3 * width * row : scratch;
         /* The renderers write a key only where they paint an object (or
          * not at all, the ray caster), so every row starts as background. */
-        state->keys = NULL;
+        render_set_keys(state, NULL);
         if (keys != NULL) {
-            state->keys = keys + (size_t)width * row;
+            render_set_keys(state, keys + (size_t)width * row);
             for (int x = 0; x < width; x++)
                 state->keys[x] = RENDER_KEY_MISS;
         }
@@ -259,7 +259,7 @@ static void engine_pass(render_t *state, const world_t *world, const cam_t *cam,
         case ENGINE_RAYCAST: raycast_row(world, cam, row, out, NULL); break;
         }
     }
-    state->keys = NULL; /* state outlives the caller's buffer */
+    render_set_keys(state, NULL); /* state outlives the caller's buffer */
 }
 
 /* render_setup refused the frame: say why, with the samples line when

@@ -151,7 +151,7 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
             snprintf(err, errlen, "%s: %s", path, rs.error ? rs.error : "render set-up failed");
             return -1;
         }
-        fprintf(cfg, "#define FXRT_RENDER_BOX_FACES %u\n", rs.box_used > 0 ? (unsigned)rs.box_used : 1u);
+        fprintf(cfg, "#define FXRT_RENDER_BOX_FACES %u\n", rs.vis.box_used > 0 ? (unsigned)rs.vis.box_used : 1u);
     }
 #endif
 

@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../core/vis/render.h"
+#include "../core/frame/render.h"
 #include "../core/vis/render_int.h"
 #include "check.h"
 
@@ -1665,8 +1665,9 @@ static void test_render_eye_on_box(void)
 
 /* Object i at column x of row `row`: -1 when it does not cover the pixel
  * or has no depth range, else whether its depth lies inside the range. */
-static int range_check(const render_t *r, uint16_t i, int32_t x, int32_t row)
+static int range_check(const render_t *rs, uint16_t i, int32_t x, int32_t row)
 {
+    const vis_t *r = &rs->vis;
     int32_t ix = 2 * x - r->cam->width + 1, iy = 2 * (r->cam->height - 1 - row) - r->cam->height + 1;
     if (!r->obj[i].ranged || !render_covers(&r->obj[i], ix, iy))
         return -1;
@@ -1854,7 +1855,7 @@ static void test_render_ranges(void)
         static render_t state;
         if (!render_setup(&state, &world, &c))
             continue;
-        for (uint16_t i = 0; i < state.count; i++)
+        for (uint16_t i = 0; i < state.vis.count; i++)
             for (int32_t row = 0; row < OH; row++)
                 for (int32_t px = 0; px < OW; px++) {
                     int k = range_check(&state, i, px, row);
@@ -1964,8 +1965,8 @@ static void test_render_front(void)
         static render_t state;
         if (!render_setup(&state, &world, &c))
             continue;
-        for (uint16_t i = 0; i < state.count; i++) {
-            const render_obj_t *o = &state.obj[i];
+        for (uint16_t i = 0; i < state.vis.count; i++) {
+            const render_obj_t *o = &state.vis.obj[i];
             if (o->kind != RENDER_FLAT && o->kind != RENDER_BOX)
                 continue;
             for (int k = 0; k < o->nflat; k++) {
@@ -2032,9 +2033,9 @@ static void test_render_plane_rows(void)
                       N(orand(&st, 0.5, 20)), w, h) != CAM_OK)
             continue;
         static render_t state;
-        if (!render_setup(&state, &world, &c) || state.count != 1)
+        if (!render_setup(&state, &world, &c) || state.vis.count != 1)
             continue;
-        const render_obj_t *o = &state.obj[0];
+        const render_obj_t *o = &state.vis.obj[0];
         const render_flat_t *f = render_face(o, 0);
         planes++;
         cut += o->r0 <= o->r1 && (o->r0 > 0 || o->r1 < h - 1);
@@ -2129,10 +2130,10 @@ static void test_render_span_ranges(void)
             render_row(&state, row, rgb);
             render_scache_t sc; /* none: the spheres' ranges come from their row state */
             render_scache_reset(&sc);
-            state.scache = &sc;
+            state.vis.scache = &sc;
             int32_t iy = OH - 1 - 2 * row;
-            for (uint16_t i = 0; i < state.count; i++) {
-                const render_obj_t *o = &state.obj[i];
+            for (uint16_t i = 0; i < state.vis.count; i++) {
+                const render_obj_t *o = &state.vis.obj[i];
                 int kind = o->kind == RENDER_SPHERE ? 0 : o->kind == RENDER_BOX ? 1 : render_face(o, 0)->edges ? 2 : 3;
                 for (int32_t a = 0; a < OW;) {
                     if (!render_covers(o, 2 * a - OW + 1, iy)) {
@@ -2149,25 +2150,25 @@ static void test_render_span_ranges(void)
                             q = p + (int32_t)orand(&st, 0, b - p + 0.999);
                         }
                         render_depth_t lo, hi, lo2, hi2;
-                        int got = render_span_range(&state, i, p, q, iy, &lo, &hi, false);
+                        int got = render_span_range(&state.vis, i, p, q, iy, &lo, &hi, false);
                         /* The same from an empty cache (a sphere's range
                          * reuses the depth of the stretch before's first
                          * column): the cache must not change a range. */
                         render_scache_reset(&sc);
-                        int got2 = render_span_range(&state, i, p, q, iy, &lo2, &hi2, false);
+                        int got2 = render_span_range(&state.vis, i, p, q, iy, &lo2, &hi2, false);
                         if (got2 != got || (got && (render_depth_less(lo, lo2) || render_depth_less(lo2, lo) ||
                                                     render_depth_less(hi, hi2) || render_depth_less(hi2, hi)))) {
                             cached_bad++;
                             CHECK_SWEEP(false, "scene %d object %d row %d: range of columns %d..%d differs after the "
                                         "cache is emptied", it, (int)i, (int)row, (int)p, (int)q);
                         }
-                        if (got == 2 && !render_span_range(&state, i, p, q, iy, &lo, &hi, true))
+                        if (got == 2 && !render_span_range(&state.vis, i, p, q, iy, &lo, &hi, true))
                             got = 0; /* a sphere: its bound below apart */
                         if (!got)
                             continue;
                         ranged[kind]++;
                         for (int32_t x = p; x <= q; x++) {
-                            render_depth_t t = render_depth_test(&state, i, 2 * x - OW + 1, iy);
+                            render_depth_t t = render_depth_test(&state.vis, i, 2 * x - OW + 1, iy);
                             cols++;
                             if (render_depth_less(t, lo) || render_depth_less(hi, t)) {
                                 wrong++;
@@ -2179,7 +2180,7 @@ static void test_render_span_ranges(void)
                     a = b + 1;
                 }
             }
-            state.scache = NULL;
+            state.vis.scache = NULL;
         }
     }
     printf("stretch ranges: %ld spheres, %ld boxes, %ld triangles, %ld planes; %ld columns checked, %ld outside\n",
@@ -2272,7 +2273,7 @@ static void test_render_meshes(void)
         int culled = 0;
 #if RENDER_MESH
         for (int k = 0; k < world.n_triangles; k++)
-            culled += render_mesh_culled(&state, (uint16_t)k);
+            culled += render_mesh_culled(&state.vis, (uint16_t)k);
         /* The same triangles added through world_add_triangle, last first:
          * the links (per triangle its bits, and which triangles share a
          * mesh) and the culled set do not depend on the order. */
@@ -2296,7 +2297,7 @@ static void test_render_meshes(void)
             }
             CHECK(render_setup(&rstate, &rev, &c));
             for (int k = 0; k < nt; k++)
-                diff += render_mesh_culled(&state, (uint16_t)k) != render_mesh_culled(&rstate, (uint16_t)(nt - 1 - k));
+                diff += render_mesh_culled(&state.vis, (uint16_t)k) != render_mesh_culled(&rstate.vis, (uint16_t)(nt - 1 - k));
             mesh_orders++;
             CHECK_SWEEP(diff == 0, "mesh %d: %d differences between the two orders of adding", it, diff);
             /* As if written directly and not linked again: nothing is culled. */
@@ -2304,7 +2305,7 @@ static void test_render_meshes(void)
             CHECK(render_setup(&rstate, &rev, &c));
             int stale = 0;
             for (int k = 0; k < nt; k++)
-                stale += render_mesh_culled(&rstate, (uint16_t)k);
+                stale += render_mesh_culled(&rstate.vis, (uint16_t)k);
             CHECK_SWEEP(stale == 0, "mesh %d: %d triangles culled from links that are out of date", it, stale);
         }
 #endif
@@ -2472,19 +2473,19 @@ static void test_render_order(void)
         /* The world's objects, each once. */
         int total = world.n_planes + world.n_spheres + world.n_triangles + world.n_boxes, seen[4][128];
         memset(seen, 0, sizeof seen);
-        for (uint16_t i = 0; i < state.count; i++)
-            seen[state.obj[i].geom][state.obj[i].index]++;
+        for (uint16_t i = 0; i < state.vis.count; i++)
+            seen[state.vis.obj[i].geom][state.vis.obj[i].index]++;
         int once = 0;
         for (int k = 0; k < 4; k++)
             for (int m = 0; m < 128; m++)
                 once += seen[k][m] == 1;
-        bad_set += state.count != total || once != total;
-        CHECK_SWEEP(state.count == total && once == total, "scene %d: %d objects, %d of the world's %d once", it,
-                    (int)state.count, once, total);
-        for (uint16_t i = 0; i < state.count; i++) {
-            const render_obj_t *a = &state.obj[i];
-            bool kind_order = i == 0 || a->geom > state.obj[i - 1].geom ||
-                              (a->geom == state.obj[i - 1].geom && a->index > state.obj[i - 1].index);
+        bad_set += state.vis.count != total || once != total;
+        CHECK_SWEEP(state.vis.count == total && once == total, "scene %d: %d objects, %d of the world's %d once", it,
+                    (int)state.vis.count, once, total);
+        for (uint16_t i = 0; i < state.vis.count; i++) {
+            const render_obj_t *a = &state.vis.obj[i];
+            bool kind_order = i == 0 || a->geom > state.vis.obj[i - 1].geom ||
+                              (a->geom == state.vis.obj[i - 1].geom && a->index > state.vis.obj[i - 1].index);
             moved += !kind_order;
             if (i < world.n_planes) {
                 bad_set += a->geom != GEOM_PLANE || a->index != i;
@@ -2496,8 +2497,8 @@ static void test_render_order(void)
                 continue;
             bool am = a->geom == GEOM_TRIANGLE && a->index >= mesh_first;
             unranged_seen += !a->ranged;
-            for (uint16_t j = (uint16_t)(i + 1); j < state.count; j++) {
-                const render_obj_t *b = &state.obj[j];
+            for (uint16_t j = (uint16_t)(i + 1); j < state.vis.count; j++) {
+                const render_obj_t *b = &state.vis.obj[j];
                 bool bm = b->geom == GEOM_TRIANGLE && b->index >= mesh_first;
                 if (!on_some_row(b))
                     continue;
@@ -2518,8 +2519,8 @@ static void test_render_order(void)
         /* The mesh by its nearest visible triangle. */
         double mnear = -1;
         int mfirst = -1, mlast = -1;
-        for (uint16_t i = 0; i < state.count; i++) {
-            const render_obj_t *a = &state.obj[i];
+        for (uint16_t i = 0; i < state.vis.count; i++) {
+            const render_obj_t *a = &state.vis.obj[i];
             if (a->geom == GEOM_TRIANGLE && a->index >= mesh_first && on_some_row(a) && a->ranged) {
                 double t = depth_value(a->tlo);
                 mnear = mnear < 0 || t < mnear ? t : mnear;
@@ -2527,8 +2528,8 @@ static void test_render_order(void)
                 mfirst = mfirst < 0 ? i : mfirst;
             }
         }
-        for (uint16_t i = 0; i < state.count && mnear >= 0; i++) {
-            const render_obj_t *a = &state.obj[i];
+        for (uint16_t i = 0; i < state.vis.count && mnear >= 0; i++) {
+            const render_obj_t *a = &state.vis.obj[i];
             if (i < world.n_planes || !on_some_row(a) || !a->ranged || (a->geom == GEOM_TRIANGLE && a->index >= mesh_first))
                 continue;
             double t = depth_value(a->tlo);
@@ -2576,11 +2577,11 @@ static void test_render_order(void)
     CHECK_MSG(id == want, "%d of %d objects made", (int)id, want);
     CHECK_MSG(render_setup(&big, &world, &c), "set-up: %s", big.error ? big.error : "");
     int out_of_order = 0;
-    for (uint16_t i = 1; i < big.count; i++)
-        out_of_order += !(big.obj[i].geom > big.obj[i - 1].geom ||
-                          (big.obj[i].geom == big.obj[i - 1].geom && big.obj[i].index > big.obj[i - 1].index));
-    CHECK_MSG(big.count == want && out_of_order == 0, "%d objects (FXRT_ORDER_MAX %d): %d out of scene order",
-              (int)big.count, FXRT_ORDER_MAX, out_of_order);
+    for (uint16_t i = 1; i < big.vis.count; i++)
+        out_of_order += !(big.vis.obj[i].geom > big.vis.obj[i - 1].geom ||
+                          (big.vis.obj[i].geom == big.vis.obj[i - 1].geom && big.vis.obj[i].index > big.vis.obj[i - 1].index));
+    CHECK_MSG(big.vis.count == want && out_of_order == 0, "%d objects (FXRT_ORDER_MAX %d): %d out of scene order",
+              (int)big.vis.count, FXRT_ORDER_MAX, out_of_order);
 #endif
 }
 #else
@@ -2669,7 +2670,7 @@ static void test_render_coherent(void)
 #if RENDER_SROWS
         bool searched = false; /* some sphere's run was searched from a row before's */
         for (uint16_t i = 0; i < world.n_spheres && i < FXRT_COHERENT_SPHERES; i++)
-            searched |= state.srow[i].prow >= 0;
+            searched |= state.vis.srow[i].prow >= 0;
         coherent_frames += searched;
 #endif
     }
@@ -2727,7 +2728,7 @@ static void test_render_runs(void)
         CHECK(render_setup(&state, &world, &c));
 #if RENDER_RUNS
         if (it % 7 == 6)
-            state.run_cap = (uint16_t)(1 + check_rng_next(&st) % 6);
+            state.sample.run_cap = (uint16_t)(1 + check_rng_next(&st) % 6);
 #endif
         int32_t fw = n * ow, fh = n * oh;
         for (int32_t Y = -1; Y <= fh; Y++)
@@ -2772,7 +2773,7 @@ static void test_render_runs(void)
             }
         }
 #if RENDER_RUNS
-        run_rows += state.run_rows;
+        run_rows += state.sample.run_rows;
 #endif
     }
     printf("runs: %ld rows (%lu from runs), %ld interior pixels checked (%ld on objects), %ld wrong, %ld rows fast != "

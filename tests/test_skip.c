@@ -58,7 +58,7 @@ static void render(const cam_t *cam, bool want_keys)
     CHECK(fxrt_render_setup(&rs, &world, cam) == FXRT_OK);
     reset();
     for (int y = 0; y < H; y++) {
-        rs.keys = want_keys ? keys + W * y : NULL;
+        render_set_keys(&rs, want_keys ? keys + W * y : NULL);
         render_row(&rs, y, img + 3 * W * y);
     }
 }

@@ -22,8 +22,8 @@
  * colour; the others are summed from their N x N rays as above. When no
  * pixel of a row needs them, the row's fine rows are not rendered at all.
  */
+#include "frame/render.h"
 #include "vis/render_int.h"
-#include "light/shade.h"
 
 #if FXRT_MAX_SAMPLES > 1
 
@@ -32,29 +32,29 @@
 static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t y)
 {
     if (oi == RENDER_VIS_NONE)
-        return r->world->background;
-    const render_obj_t *o = &r->obj[oi];
+        return r->vis.world->background;
+    const render_obj_t *o = &r->vis.obj[oi];
 #if FXRT_MAX_LIGHTS > 0
     if (!o->flat) {
         ray_t ray;
-        cam_ray(r->cam, X, y, &ray);
-        return shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, &r->shade_k[oi], NULL);
+        cam_ray(r->vis.cam, X, y, &ray);
+        return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, &r->shade.k[oi], NULL);
     }
 #else
     (void)X, (void)y;
 #endif
-    return world_common(r->world, (geom_kind_t)o->geom, o->index)->color;
+    return world_common(r->vis.world, (geom_kind_t)o->geom, o->index)->color;
 }
 
 static inline bool render_sample_flat(const render_t *r, uint16_t oi)
 {
-    return oi == RENDER_VIS_NONE || r->obj[oi].flat;
+    return oi == RENDER_VIS_NONE || r->vis.obj[oi].flat;
 }
 
 /* One sample of a flat owner or the background, clamped, in sum units. */
 static inline const color_sum_t *render_sample_one(const render_t *r, uint16_t oi)
 {
-    return oi == RENDER_VIS_NONE ? r->bg_one : r->obj[oi].one;
+    return oi == RENDER_VIS_NONE ? r->sample.bg_one : r->sample.one[oi];
 }
 
 /* uni[x] while an output pixel's samples so far all had one flat owner
@@ -67,21 +67,21 @@ static inline const color_sum_t *render_sample_one(const render_t *r, uint16_t o
  * wants its samples (need == NULL: all) checks or adds them. */
 static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool reference, const bool *need)
 {
-    int32_t n = r->samples, w = r->out_cam->width, frow = row * n + j, y = r->cam->height - 1 - frow;
+    int32_t n = r->sample.samples, w = r->sample.out_cam->width, frow = row * n + j, y = r->vis.cam->height - 1 - frow;
     if (reference)
-        render_row_reference_vis(r, frow, r->fine_rgb);
+        render_row_reference_vis(&r->vis, frow, r->sample.fine_rgb);
     else
-        render_row_vis(r, frow, r->fine_rgb);
+        render_row_vis(&r->vis, frow, r->sample.fine_rgb);
     for (int32_t x = 0, X0 = 0; x < w; x++, X0 += n) {
         if (need && !need[x])
             continue;
-        const uint16_t *v = &r->vis[X0];
-        color_sum_t *a = &r->acc[3 * x];
-        uint16_t u = j == 0 ? v[0] : r->uni[x]; /* row 0 starts the pixel afresh */
+        const uint16_t *v = &r->vis.painted[X0];
+        color_sum_t *a = &r->sample.acc[3 * x];
+        uint16_t u = j == 0 ? v[0] : r->sample.uni[x]; /* row 0 starts the pixel afresh */
         if (u != RENDER_UNI_MIXED) {
             bool same = true;
             if (j == 0) {
-                r->uni[x] = u;
+                r->sample.uni[x] = u;
                 same = render_sample_flat(r, u); /* uni holds flat owners only */
             }
             for (int32_t i = 0; i < n && same; i++)
@@ -98,7 +98,7 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
                 a[1] = c[1] * (color_sum_t)n * nj;
                 a[2] = c[2] * (color_sum_t)n * nj;
             }
-            r->uni[x] = RENDER_UNI_MIXED;
+            r->sample.uni[x] = RENDER_UNI_MIXED;
         }
         uint16_t oi = v[0];
         bool one = true;
@@ -138,10 +138,10 @@ static void render_sample_put(uint8_t *rgb, int32_t x, uint8_t cr, uint8_t cg, u
 static void render_adaptive_row(render_t *r, int32_t row)
 {
     int32_t s = row % 3;
-    if (r->arow[s] == row)
+    if (r->sample.arow[s] == row)
         return;
-    const cam_t *cam = r->out_cam;
-    const world_t *w = r->world;
+    const cam_t *cam = r->sample.out_cam;
+    const world_t *w = r->vis.world;
     int32_t y = cam->height - 1 - row;
     for (int32_t x = 0; x < cam->width; x++) {
         ray_t ray;
@@ -152,38 +152,38 @@ static void render_adaptive_row(render_t *r, int32_t row)
         if (world_hit(w, &ray, &hit)) {
             uint8_t mask = 0;
 #if FXRT_MAX_LIGHTS > 0
-            uint16_t oi = render_obj_of(r, hit.kind, hit.index);
+            uint16_t oi = render_obj_of(&r->vis, hit.kind, hit.index);
             bool lit = hit.obj->mat.kind != MATERIAL_FLAT;
-            c = color_to_rgb8(shade_object_k(w, hit.kind, hit.index, &ray, lit ? &r->shade_k[oi] : NULL, &mask));
+            c = color_to_rgb8(shade_object_k(w, hit.kind, hit.index, &ray, lit ? &r->shade.k[oi] : NULL, &mask));
 #else
             c = hit.obj->rgb;
 #endif
             key = render_key(hit.obj->id, mask);
         }
-        r->akeys[s][x] = key;
-        r->argb[s][x] = c;
+        r->sample.akeys[s][x] = key;
+        r->sample.argb[s][x] = c;
     }
-    r->arow[s] = row;
+    r->sample.arow[s] = row;
 }
 
 /* Which pixels of output row `row` take N x N rays; false when none. */
 static bool render_adaptive_need(render_t *r, int32_t row)
 {
-    const cam_t *cam = r->out_cam;
+    const cam_t *cam = r->sample.out_cam;
     int32_t h = cam->height, w = cam->width;
     int32_t r0 = row > 0 ? row - 1 : row, r1 = row < h - 1 ? row + 1 : row;
     for (int32_t q = r0; q <= r1; q++)
         render_adaptive_row(r, q);
     bool any = false;
-    const uint32_t *mid = r->akeys[row % 3];
+    const uint32_t *mid = r->sample.akeys[row % 3];
     for (int32_t x = 0; x < w; x++) {
         uint32_t k = mid[x];
         int32_t x0 = x > 0 ? x - 1 : x, x1 = x < w - 1 ? x + 1 : x;
         bool differ = false;
         for (int32_t q = r0; q <= r1 && !differ; q++)
             for (int32_t xx = x0; xx <= x1; xx++)
-                differ |= r->akeys[q % 3][xx] != k;
-        r->need[x] = differ;
+                differ |= r->sample.akeys[q % 3][xx] != k;
+        r->sample.need[x] = differ;
         any |= differ;
     }
     return any;
@@ -205,15 +205,15 @@ static bool render_adaptive_need(render_t *r, int32_t row)
  * keeps the shading's stack off this one's. */
 __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t row, uint8_t *rgb, const bool *need)
 {
-    int32_t n = r->samples, W = r->cam->width;
-    int used = 0, cap = r->run_cap < FXRT_SAMPLE_RUNS ? r->run_cap : FXRT_SAMPLE_RUNS;
-    r->run_at[0] = 0;
+    int32_t n = r->sample.samples, W = r->vis.cam->width;
+    int used = 0, cap = r->sample.run_cap < FXRT_SAMPLE_RUNS ? r->sample.run_cap : FXRT_SAMPLE_RUNS;
+    r->sample.run_at[0] = 0;
     for (int32_t j = 0; j < n; j++) {
-        int k = render_row_runs(r, row * n + j, r->runs + used, cap - used);
+        int k = render_row_runs(&r->vis, row * n + j, r->sample.runs + used, cap - used);
         if (k < 0)
             return false;
         used += k;
-        r->run_at[j + 1] = (uint16_t)used;
+        r->sample.run_at[j + 1] = (uint16_t)used;
     }
     /* Per fine row j: the run at or after the current column (at), the
      * owner from the current column (u) and the column where that changes
@@ -223,12 +223,12 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
     int32_t nb[FXRT_MAX_SAMPLES];
     color_sum_t f[3] = {0, 0, 0};
     for (int32_t j = 0; j < n; j++) {
-        at[j] = r->run_at[j];
+        at[j] = r->sample.run_at[j];
         u[j] = RENDER_VIS_NONE;
         nb[j] = 0;
-        f[0] += r->bg_one[0];
-        f[1] += r->bg_one[1];
-        f[2] += r->bg_one[2];
+        f[0] += r->sample.bg_one[0];
+        f[1] += r->sample.bg_one[1];
+        f[2] += r->sample.bg_one[2];
     }
     uint32_t n2 = (uint32_t)(n * n);
     for (int32_t a = 0, b; a < W; a = b) {
@@ -243,8 +243,8 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
             f[2] -= c[2];
             if (u[j] != RENDER_VIS_NONE)
                 at[j]++;
-            const render_run_t *q = &r->runs[at[j]];
-            bool more = at[j] < r->run_at[j + 1];
+            const render_run_t *q = &r->sample.runs[at[j]];
+            bool more = at[j] < r->sample.run_at[j + 1];
             if (more && q->a == a) {
                 u[j] = q->oi;
                 nb[j] = q->b + 1;
@@ -275,12 +275,12 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
             if (one && c0 == X0 && c1 == X0 + n) {
                 /* Whole pixels of one owner: x .. xe at once. */
                 int32_t xe = need ? x : b / n - 1;
-                render_fill_rgb(rgb, x, xe, u[0] == RENDER_VIS_NONE ? r->world->background_rgb : r->obj[u[0]].rgb);
+                render_fill_rgb(rgb, x, xe, u[0] == RENDER_VIS_NONE ? r->vis.world->background_rgb : r->vis.obj[u[0]].rgb);
                 x = xe;
                 X0 = xe * n;
                 continue;
             }
-            color_sum_t *s = &r->acc[3 * x], m = (color_sum_t)(c1 - c0);
+            color_sum_t *s = &r->sample.acc[3 * x], m = (color_sum_t)(c1 - c0);
             if (c0 == X0)
                 s[0] = s[1] = s[2] = 0;
             s[0] += f[0] * m;
@@ -290,24 +290,24 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
                 render_sample_put(rgb, x, color_sum_out(s[0], n2), color_sum_out(s[1], n2), color_sum_out(s[2], n2));
         }
     }
-    r->run_rows++;
+    r->sample.run_rows++;
     return true;
 }
 #endif
 
 void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
 {
-    int32_t n = r->samples, w = r->out_cam->width;
+    int32_t n = r->sample.samples, w = r->sample.out_cam->width;
     const bool *need = NULL;
 #if FXRT_ADAPTIVE
-    if (r->adaptive) {
+    if (r->sample.adaptive) {
         bool any = render_adaptive_need(r, row);
-        const rgb8_t *one = r->argb[row % 3];
+        const rgb8_t *one = r->sample.argb[row % 3];
         for (int32_t x = 0; x < w; x++)
             render_sample_put(rgb, x, one[x].r, one[x].g, one[x].b);
         if (!any)
             return;
-        need = r->need;
+        need = r->sample.need;
     }
 #endif
 #if RENDER_RUNS
@@ -320,13 +320,13 @@ void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
     for (int32_t x = 0; x < w; x++) {
         if (need && !need[x])
             continue;
-        uint16_t u = r->uni[x];
+        uint16_t u = r->sample.uni[x];
         if (u != RENDER_UNI_MIXED) {
-            rgb8_t c = u == RENDER_VIS_NONE ? r->world->background_rgb : r->obj[u].rgb;
+            rgb8_t c = u == RENDER_VIS_NONE ? r->vis.world->background_rgb : r->vis.obj[u].rgb;
             render_sample_put(rgb, x, c.r, c.g, c.b);
             continue;
         }
-        const color_sum_t *a = &r->acc[3 * x];
+        const color_sum_t *a = &r->sample.acc[3 * x];
         render_sample_put(rgb, x, color_sum_out(a[0], n2), color_sum_out(a[1], n2), color_sum_out(a[2], n2));
     }
 }

@@ -5,29 +5,29 @@
  * owner's surface point and normal (geom_<kind>_surface: one object, no
  * search), and the light sum. Flat objects keep the colour the visibility
  * pass painted. With r->keys set, every pixel's key is written too. */
+#include "frame/render.h"
 #include "vis/render_int.h"
-#include "light/shade.h"
 
 #if FXRT_MAX_LIGHTS > 0
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
 {
-    const cam_t *cam = r->cam;
+    const cam_t *cam = r->vis.cam;
     int32_t w = cam->width, y = cam->height - 1 - row;
     for (int32_t x = 0; x < w; x++) {
-        uint16_t oi = r->vis[x];
+        uint16_t oi = r->vis.painted[x];
         if (oi == RENDER_VIS_NONE) {
             if (r->keys)
                 r->keys[x] = RENDER_KEY_MISS;
             continue;
         }
-        const render_obj_t *o = &r->obj[oi];
+        const render_obj_t *o = &r->vis.obj[oi];
         bool lit = !o->flat;
         if (!lit && !r->keys)
             continue;
         ray_t ray;
         uint8_t mask = 0;
         cam_ray(cam, x, y, &ray);
-        color_t c = shade_object_k(r->world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade_k[oi] : NULL,
+        color_t c = shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade.k[oi] : NULL,
                                    r->keys ? &mask : NULL);
         if (r->keys)
             r->keys[x] = render_key(o->id, mask);

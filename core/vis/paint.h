@@ -8,7 +8,7 @@
 /* Is a column with owner entry cur (tag: this row's stamp) free for any
  * newcomer: not reached yet on this row, or owned by a plane that the
  * newcomer is nearer than all along it (render_row_order)? */
-static inline bool render_free(const render_t *r, uint32_t tag, uint32_t cur)
+static inline bool render_free(const vis_t *r, uint32_t tag, uint32_t cur)
 {
     uint16_t ci = (uint16_t)cur;
     return (cur & ~0x1FFFFu) != tag || (ci < 32 && (r->row_win >> ci) & 1u);
@@ -32,18 +32,18 @@ static inline bool render_free(const render_t *r, uint32_t tag, uint32_t cur)
 /* Paint column x in object oi's colour (the row's pixel format). */
 #if FXRT_PIXEL == FXRT_RGB565
 typedef uint16_t __attribute__((may_alias)) render_px16_t;
-static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
+static inline void render_paint(vis_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
 #if RENDER_VIS
-    r->vis[x] = oi;
+    r->painted[x] = oi;
 #endif
     ((render_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
 }
 #else
-static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
+static inline void render_paint(vis_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
 #if RENDER_VIS
-    r->vis[x] = oi;
+    r->painted[x] = oi;
 #endif
     rgb8_t c = r->obj[oi].rgb;
     rgb[3 * x + 0] = c.r;
@@ -55,7 +55,7 @@ static inline void render_paint(render_t *r, uint16_t oi, int32_t x, uint8_t *rg
 /* Record that object oi covers column x and paint it if it is the nearest
  * so far. The result does not depend on the order of calls (depth, then
  * id, order objects totally), so both loops agree. */
-static inline void render_cover(render_t *r, uint16_t oi, int32_t x, int32_t iy, uint8_t *rgb)
+static inline void render_cover(vis_t *r, uint16_t oi, int32_t x, int32_t iy, uint8_t *rgb)
 {
     RENDER_COVER(r, oi, x, rgb, render_resolve(r, cur_, oi, x, iy));
 }

@@ -2,7 +2,7 @@
  * object's forms evaluated at every pixel (render_row_reference). */
 #include "vis/paint.h"
 
-void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb)
+void render_row_reference_vis(vis_t *r, int32_t row, uint8_t *rgb)
 {
     int32_t w = r->cam->width, y = r->cam->height - 1 - row;
     int32_t iy = 2 * y - r->cam->height + 1;

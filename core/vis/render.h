@@ -95,7 +95,6 @@
 #define FXRT_RENDER_H
 
 #include "scene/cam.h"
-#include "light/shade.h"
 #include "scene/world.h"
 
 #if FXRT_NUMBER == FXRT_Q16
@@ -300,9 +299,6 @@ typedef struct {
 #endif
     int16_t x0, x1;    /* columns that may be covered, inclusive */
     int16_t r0, r1;    /* output rows (0 = top) that may be covered */
-#if FXRT_MAX_SAMPLES > 1
-    color_sum_t one[3]; /* flat: one sample of its colour (color_sum_add), for the sampling pass */
-#endif
     union {
         render_sphere_t *sphere; /* RENDER_SPHERE */
         render_flat_t *flat;     /* RENDER_FLAT: a plane or triangle */
@@ -363,17 +359,8 @@ typedef struct {
      * object (index into obj) painted last, RENDER_VIS_NONE where none,
      * recorded when track is set (some object is lit, or samples > 1) or
      * keys are wanted. */
-    uint16_t vis[FXRT_RENDER_MAX_WIDTH];
+    uint16_t painted[FXRT_RENDER_MAX_WIDTH];
     bool track;
-#endif
-#if FXRT_MAX_LIGHTS > 0
-    bool any_lit;
-    /* Per object (index into obj): its shading constants, once per frame. */
-    shade_k_t shade_k[FXRT_RENDER_MAX_OBJECTS];
-#if SHADOW_CULL
-    /* Shadow-ray culling, per light and bounded object (core/shadow.c). */
-    shadow_cull_t shadow_cull[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
-#endif
 #endif
 #if RENDER_SROWS
     /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the
@@ -390,83 +377,28 @@ typedef struct {
         int16_t plo, phi, pk;
     } srow[FXRT_COHERENT_SPHERES];
 #endif
+    /* Set by the frame (frame/render.h): a key is wanted for every pixel
+     * of the row, so vis[] is recorded whatever track says. */
+    bool want_keys;
 #if FXRT_MAX_SAMPLES > 1
-    /* Supersampling (render_sample.c), samples > 1: cam points to `fine`,
-     * the camera of the N x N cells (cam_fine), and out_cam to the output
-     * camera; each output row sums the clamped colours of its N fine rows
-     * in acc (Q16.16: raw units, at most 255 * 2^16 * 256 < 2^32). */
-    uint8_t samples;
-    bool adaptive;
-    color_sum_t bg_one[3]; /* one sample of the background */
-    const cam_t *out_cam;
-    cam_t fine;
-    uint8_t fine_rgb[(FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * FXRT_RENDER_MAX_WIDTH] __attribute__((aligned(4)));
-    color_sum_t acc[3 * RENDER_OUT_COLS];
-    uint16_t uni[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
-#if RENDER_RUNS
-    /* Run mode: the runs of fine row j of the current output row are
-     * runs[run_at[j] .. run_at[j + 1] - 1], sorted, not overlapping; gaps
-     * are the background. */
-    render_run_t runs[FXRT_SAMPLE_RUNS];
-    uint16_t run_at[FXRT_MAX_SAMPLES + 1];
-    /* run_cap: the runs an output row may use, FXRT_SAMPLE_RUNS after
-     * render_setup (a test may lower it to force the per-sample pass);
-     * run_rows: output rows rendered from runs so far (a statistic). */
-    uint16_t run_cap;
-    uint32_t run_rows;
+    /* The world's samples are more than 1: rows are the sampler's fine
+     * rows, whose pixels it reads from painted[], not from the row. */
+    bool sampled;
 #endif
-#if FXRT_ADAPTIVE
-    /* Adaptive: keys and colours of output rows at one sample per pixel
-     * (a ring of three rows: slot row % 3 holds row arow[row % 3]), and
-     * per column whether the pixel takes the N x N rays. */
-    uint32_t akeys[3][RENDER_OUT_COLS];
-    rgb8_t argb[3][RENDER_OUT_COLS];
-    int32_t arow[3];
-    bool need[RENDER_OUT_COLS];
-#endif
-#endif
-    /* Optional, set by the caller after render_setup: when not NULL,
-     * render_row and render_row_reference also write each pixel's key
-     * (render_key) into keys[0 .. width-1]. */
-    uint32_t *keys;
     int16_t dirty_lo, dirty_hi; /* this row: columns outside have no owner yet */
-} render_t;
+} vis_t;
 
 #if RENDER_MESH
 /* Is triangle i a back face of a closed mesh in this frame? */
-static inline bool render_mesh_culled(const render_t *r, uint16_t i) { return (r->mesh_culled[i >> 3] >> (i & 7)) & 1u; }
+static inline bool render_mesh_culled(const vis_t *r, uint16_t i) { return (r->mesh_culled[i >> 3] >> (i & 7)) & 1u; }
 #endif
 
-/* Per-frame set-up: camera-space forms and screen bounds of every object.
- * The world and camera must outlive r. Returns false (r->error says why)
- * when the camera is wider than FXRT_RENDER_MAX_WIDTH or the boxes need
- * more faces than FXRT_RENDER_BOX_FACES. */
-bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
-
-/* A pixel's key: the nearest object's scene id and the set of lights that
- * reach its hit point (bit i for light i; core/shade.c), id << 8 | mask.
- * A pixel that shows the background has RENDER_KEY_MISS. Two neighbouring
- * pixels with different keys mark a discontinuity (silhouette, shadow
- * edge, spot-cone edge, terminator): host/compare.c. */
-#define RENDER_KEY_MISS 0xFFFF00u
-static inline uint32_t render_key(uint16_t id, uint8_t mask) { return (uint32_t)id << 8 | mask; }
-
-/* With samples N > 1 (world_set_samples), render_row and
- * render_row_reference give each pixel the mean of its N x N cell-centre
- * rays, each clamped to [0, 1], rounded to 8 bits (core/render_sample.c);
- * keys are then not written (they are defined at one sample per pixel). */
-
-/* Render output row `row` (0 = top) into rgb in the FXRT_PIXEL format:
- * RGB888, 3 * width bytes; RGB565, width uint16_t values in native byte
- * order (rgb 2-byte aligned). */
-void render_row(render_t *r, int32_t row, uint8_t *rgb);
-
-/* The same image from the straightforward loop: every object's forms
- * evaluated from scratch at every pixel, no bounds, no stepping. The Q16.16
- * build's output is byte-identical to render_row (tests enforce it). */
-void render_row_reference(render_t *r, int32_t row, uint8_t *rgb);
-
-/* The colour seen along one arbitrary ray (world-space kernels). */
-rgb8_t render_pixel(const world_t *w, const ray_t *ray);
+/* Per-frame set-up of the visibility pass: camera-space forms and screen
+ * bounds of every object, for camera cam (the sampler's fine camera when
+ * the world's samples are more than 1). The world and camera must outlive
+ * r. Returns NULL, or why the frame cannot be set up (the boxes need more
+ * faces than FXRT_RENDER_BOX_FACES, or the camera is wider than
+ * FXRT_RENDER_MAX_WIDTH). */
+const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam);
 
 #endif

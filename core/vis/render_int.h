@@ -53,16 +53,15 @@ static inline render_estep_t *render_estep_k(render_flat_t *f, int k) { return &
  * shades those columns. */
 #define RENDER_VIS_NONE 0xFFFFu
 #if RENDER_VIS
-static inline bool render_tracks(const render_t *r) { return r->track || r->keys; }
+static inline bool render_tracks(const vis_t *r) { return r->track || r->want_keys; }
 #endif
-void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
 
 /* The visibility pass alone (fast loop and reference loop): owners in
  * r->vis (when render_tracks), flat colours painted into rgb. */
-void render_row_vis(render_t *r, int32_t row, uint8_t *rgb);
-void render_row_reference_vis(render_t *r, int32_t row, uint8_t *rgb);
+void render_row_vis(vis_t *r, int32_t row, uint8_t *rgb);
+void render_row_reference_vis(vis_t *r, int32_t row, uint8_t *rgb);
 /* Start a row: a new owner stamp, vis cleared, the background painted. */
-void render_begin_row(render_t *r, uint8_t *rgb);
+void render_begin_row(vis_t *r, uint8_t *rgb);
 
 /* Fill pixels xa..xb of a row with colour c, in the pixel format. */
 void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c);
@@ -72,16 +71,14 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c);
  * flat and alone on its row (render_row_vis would fill spans there): into
  * out[0 .. n-1], sorted, one object's runs merged; returns n, or -1 when
  * some object is lit or not alone, or there are more than cap runs. */
-int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap);
+int render_row_runs(vis_t *r, int32_t row, render_run_t *out, int cap);
 #endif
 #if RENDER_SROWS
 /* Per frame, sphere object i (index < FXRT_COHERENT_SPHERES): its row
  * series starts afresh (r->srow). */
-void render_srow_setup(render_t *r, uint16_t i);
+void render_srow_setup(vis_t *r, uint16_t i);
 #endif
 
-/* render_sample.c: output row `row` with samples > 1. */
-void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference);
 
 static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTHOGRAPHIC; }
 
@@ -279,20 +276,8 @@ static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 #define RENDER_STAMP_LIMIT 0x8000u
 
 /* render_setup.c: (re)compute object i's forms and bounds. */
-void render_setup_object(render_t *r, uint16_t i);
+void render_setup_object(vis_t *r, uint16_t i);
 
-#if FXRT_MAX_LIGHTS > 0 && FXRT_MAX_SAMPLES > 1
-/* The obj index of the world's object (kind, index): a search, as obj is
- * sorted nearest first each frame (render_setup); for the adaptive
- * sampler's one ray per pixel, whose world_hit costs far more. */
-static inline uint16_t render_obj_of(const render_t *r, geom_kind_t kind, uint16_t index)
-{
-    uint16_t i = 0;
-    while (i + 1 < r->count && (r->obj[i].geom != kind || r->obj[i].index != index))
-        i++;
-    return i;
-}
-#endif
 
 #if FXRT_NUMBER == FXRT_Q16
 /* render_vis.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
@@ -390,7 +375,7 @@ static inline int32_t render_depth_key(render_depth_t t)
 
 /* render_vis.c, for tests: object i's depth at pixel offsets (ix, iy),
  * which it covers. */
-render_depth_t render_depth_test(const render_t *r, uint16_t i, int32_t ix, int32_t iy);
+render_depth_t render_depth_test(const vis_t *r, uint16_t i, int32_t ix, int32_t iy);
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
 /* render_row.c, for tests: where a + b k (k = 0..kmax) is > 0 and < 0
@@ -410,20 +395,20 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
 
 /* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */
-bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy);
+bool render_range_check(const vis_t *r, uint16_t i, int32_t ix, int32_t iy);
 
 /* render_vis.c: object oi also covers column x, owned so far by the owner
  * entry cur; returns true when oi is nearer (or ties with a lower id) and
  * has taken the column. The newcomer's depth comes from its forms at the
  * pixel (render_resolve) or from values the scanline stepped. */
-bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy);
+bool render_resolve(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy);
 #if RENDER_STEPPED
-bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+bool render_resolve_flat(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                          render_k_t n, render_k_t d);
 /* A box, found covering the pixel by its face f, with f's N and D there. */
-bool render_resolve_box(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+bool render_resolve_box(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                         render_k_t n, render_k_t d);
-bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
+bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
                            const rsw_t *disc);
 #endif
 
@@ -433,7 +418,7 @@ bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, in
  * row forms): 1 both bounds, 2 (a sphere) only hi, with lo its smaller
  * end (its bound below, from low, lies lower), 0 none; with low, a
  * sphere's bound below alone, into lo (1) or none (0). */
-int render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
+int render_span_range(const vis_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
                       render_depth_t *hi, bool low);
 #endif
 
@@ -448,6 +433,6 @@ typedef struct {
 
 /* render_vis.c: object i's depth order against the planes on row iy over
  * columns x0..x1 (sets r->row_win); false when a plane hides it there. */
-bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy, render_prow_t *pr);
+bool render_row_order(vis_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy, render_prow_t *pr);
 
 #endif

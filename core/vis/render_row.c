@@ -4,12 +4,12 @@
 
 /* Start a row: a new stamp (so every column is uncovered) and the
  * background in every pixel, with word stores where the row is aligned. */
-void render_begin_row(render_t *r, uint8_t *rgb)
+void render_begin_row(vis_t *r, uint8_t *rgb)
 {
 #if RENDER_VIS
     if (render_tracks(r))
         for (int32_t x = 0; x < r->cam->width; x++)
-            r->vis[x] = RENDER_VIS_NONE;
+            r->painted[x] = RENDER_VIS_NONE;
 #endif
     if (++r->stamp == RENDER_STAMP_LIMIT) {
         for (int32_t x = 0; x < r->cam->width; x++)
@@ -17,7 +17,7 @@ void render_begin_row(render_t *r, uint8_t *rgb)
         r->stamp = 1;
     }
 #if FXRT_MAX_SAMPLES > 1
-    if (r->samples > 1)
+    if (r->sampled)
         return; /* the sampling pass reads vis, not the painted scratch row */
 #endif
     render_fill_rgb(rgb, 0, r->cam->width - 1, r->world->background_rgb);
@@ -105,12 +105,12 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
 }
 
 /* Fill columns xa..xb with object oi's colour (and record it in vis). */
-RENDER_MAYBE_UNUSED static void render_fill(render_t *r, uint16_t oi, int32_t xa, int32_t xb, uint8_t *rgb)
+RENDER_MAYBE_UNUSED static void render_fill(vis_t *r, uint16_t oi, int32_t xa, int32_t xb, uint8_t *rgb)
 {
 #if RENDER_VIS
     if (render_tracks(r)) /* only the shading and sampling passes read vis */
         for (int32_t k = xa; k <= xb; k++)
-            r->vis[k] = oi;
+            r->painted[k] = oi;
 #endif
     render_fill_rgb(rgb, xa, xb, r->obj[oi].rgb);
 }
@@ -486,7 +486,7 @@ static inline __attribute__((always_inline)) void render_edge_runs(bool fall, in
  * or all <= 0). Returns the number of runs. hint: per form (N, D, the
  * edges) the guesses of render_split_near where the flat piece keeps them
  * (RENDER_HINTS), else NULL. */
-RENDER_RUNS_INLINE int render_runs_flat(const render_t *r, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+RENDER_RUNS_INLINE int render_runs_flat(const vis_t *r, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                         int16_t *hint, render_iv_t run[4])
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1, kmax = x1 - x0, rk, lk;
@@ -581,7 +581,7 @@ static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t 
 #endif
 
 /* A lone flat piece: its runs filled. */
-static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static void render_span_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb)
 {
     render_iv_t run[4];
@@ -593,7 +593,7 @@ static void render_span_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
 /* Columns a..b go to object oi. */
-static void render_claim_all(render_t *r, uint16_t oi, int32_t a, int32_t b, uint8_t *rgb)
+static void render_claim_all(vis_t *r, uint16_t oi, int32_t a, int32_t b, uint8_t *rgb)
 {
     uint32_t tag = (uint32_t)r->stamp << RENDER_STAMP_SHIFT | oi, *p = &r->owner[a], *e = &r->owner[b];
     for (; p + 3 <= e; p += 4) { /* four at a time: fewer loop instructions */
@@ -615,7 +615,7 @@ static void render_claim_all(render_t *r, uint16_t oi, int32_t a, int32_t b, uin
 /* Columns *a..*b, all covered by object oi: those no object has reached
  * yet on this row (outside r->dirty_lo..dirty_hi) are claimed and filled
  * without looking; *a..*b becomes the rest (false when empty). */
-static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb, uint8_t *rgb)
+static bool render_claim_free(vis_t *r, uint16_t oi, int32_t *pa, int32_t *pb, uint8_t *rgb)
 {
     int32_t a = *pa, b = *pb;
     int32_t fb = b < r->dirty_lo ? b : r->dirty_lo - 1;
@@ -657,7 +657,7 @@ static bool render_claim_free(render_t *r, uint16_t oi, int32_t *pa, int32_t *pb
  * piece f's depth from N and D stepped along them (single: f is its
  * object's only piece; a box's depth is the nearest of its faces there,
  * f's among them: render_resolve_box), a sphere's (f NULL) from its forms. */
-__attribute__((noinline)) static void render_claim_px(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a,
+__attribute__((noinline)) static void render_claim_px(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t a,
                                                       int32_t b, int32_t iy, uint8_t *rgb, bool single)
 {
     if (!f) {
@@ -689,7 +689,7 @@ __attribute__((noinline)) static void render_claim_px(render_t *r, uint16_t oi, 
  * stretch shorter than RENDER_SPAN_LEAF undecided), the caller settles
  * the next *len columns one by one. (A frame of its own, gone before the
  * columns' own settling: the micro:bit's stack.) */
-__attribute__((noinline)) static int32_t render_claim_span(render_t *r, uint16_t oi, uint16_t ci, int32_t a, int32_t b,
+__attribute__((noinline)) static int32_t render_claim_span(vis_t *r, uint16_t oi, uint16_t ci, int32_t a, int32_t b,
                                                            int32_t iy, int32_t *len, uint8_t *rgb)
 {
     const render_obj_t *no = &r->obj[oi], *co = &r->obj[ci];
@@ -738,7 +738,7 @@ __attribute__((noinline)) static int32_t render_claim_span(render_t *r, uint16_t
  * claimed and filled without looking (render_claim_free); of the rest,
  * stretches of one other owner settle by ranges (render_claim_span), and
  * other columns on their own (render_claim_px). */
-static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
+static void render_claim_run(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy,
                              uint8_t *rgb, bool single)
 {
     if (!render_claim_free(r, oi, &a, &b, rgb))
@@ -799,13 +799,13 @@ static void render_claim_run(render_t *r, uint16_t oi, const render_flat_t *f, i
 #endif
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
-__attribute__((noinline)) static void render_step_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0,
+__attribute__((noinline)) static void render_step_flat(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t x0,
                                                        int32_t x1, int32_t iy, uint8_t *rgb, bool lone, bool single);
 
 /* A flat piece across columns x0..x1, by spans where it is wide enough
  * (true); false: the caller steps it (render_step_flat), each form linear,
  * so one exact 64-bit addition per form and pixel. */
-static bool render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static bool render_scan_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb, bool lone)
 {
     bool single = r->obj[oi].kind == RENDER_FLAT;
@@ -833,7 +833,7 @@ static bool render_scan_flat(render_t *r, uint16_t oi, render_flat_t *f, int32_t
 
 /* Narrow: every column stepped and tested. (A frame of its own, apart
  * from the claiming path's: the micro:bit's stack.) */
-__attribute__((noinline)) static void render_step_flat(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0,
+__attribute__((noinline)) static void render_step_flat(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t x0,
                                                        int32_t x1, int32_t iy, uint8_t *rgb, bool lone, bool single)
 {
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
@@ -895,7 +895,7 @@ __attribute__((noinline)) static void render_sphere_cd_row(const render_obj_t *o
     render_sphere_cd(o, ix, iy, c, disc);
 }
 
-__attribute__((noinline)) static void render_sphere_row(const render_t *r, const render_obj_t *o, int32_t ix0,
+__attribute__((noinline)) static void render_sphere_row(const vis_t *r, const render_obj_t *o, int32_t ix0,
                                                         int32_t iy, render_srow_t *s)
 {
     fx128_t c[3], q[3];
@@ -973,14 +973,14 @@ static int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int
 }
 
 #if RENDER_SROWS
-static inline int render_sphere_row_runs(render_t *r, const render_obj_t *o, int32_t row, render_iv_t run[2]);
-static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row);
-static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row, const render_srow_t *s,
+static inline int render_sphere_row_runs(vis_t *r, const render_obj_t *o, int32_t row, render_iv_t run[2]);
+static const render_srow_t *render_sphere_row_at(vis_t *r, const render_obj_t *o, int32_t row);
+static int render_sphere_runs_at(vis_t *r, const render_obj_t *o, int32_t row, const render_srow_t *s,
                                  render_iv_t run[2]);
 
 /* A lone sphere on the row at iy (its bounds x0..x1): its forms stepped
  * from the row before and its runs searched from the row before's. */
-__attribute__((noinline)) static void render_lone_sphere(render_t *r, uint16_t oi, const render_obj_t *o,
+__attribute__((noinline)) static void render_lone_sphere(vis_t *r, uint16_t oi, const render_obj_t *o,
                                                          int32_t iy, uint8_t *rgb)
 {
     int32_t row = render_row_of(r->cam, iy);
@@ -993,7 +993,7 @@ __attribute__((noinline)) static void render_lone_sphere(render_t *r, uint16_t o
 
 /* Orthographic sphere: c + disc = k + r2 (kr) along every ray, and v is
  * the one of them that was stepped (c when use_c). */
-static bool render_resolve_ortho(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b,
+static bool render_resolve_ortho(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b,
                                  const fx128_t *kr, const fx128_t *v, bool use_c)
 {
     fx128_t other = fx128_sub(*kr, *v);
@@ -1002,7 +1002,7 @@ static bool render_resolve_ortho(render_t *r, uint32_t cur, uint16_t oi, int32_t
 
 /* Step a sphere over columns x0..x1: a lone one fills its runs, others
  * claim each covered column. */
-static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_sphere(vis_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
 #if RENDER_SROWS
@@ -1092,7 +1092,7 @@ static void render_scan_sphere(render_t *r, uint16_t oi, const render_obj_t *o, 
  * evaluated directly at the segment's first pixel and then stepped by one
  * addition per pixel (the quadratic a by forward differences); rounding
  * accumulates along the segment, unlike the exact Q16.16 steps. */
-static void render_scan_flat_f(render_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_flat_f(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
     bool single = r->obj[oi].kind == RENDER_FLAT;
@@ -1121,7 +1121,7 @@ static void render_scan_flat_f(render_t *r, uint16_t oi, const render_flat_t *f,
     }
 }
 
-static void render_scan_sphere_f(render_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
+static void render_scan_sphere_f(vis_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
                                  uint8_t *rgb, bool lone)
 {
     const render_sphere_t *sp = o->u.sphere;
@@ -1166,7 +1166,7 @@ static void render_scan_sphere_f(render_t *r, uint16_t oi, const render_obj_t *o
 /* Is object i the only one whose bounds reach columns x0..x1 on this row?
  * Then nothing can compete for its pixels. (Only checked for small worlds;
  * a large one simply takes the owner path.) */
-static bool render_alone(const render_t *r, uint16_t i, int32_t row)
+static bool render_alone(const vis_t *r, uint16_t i, int32_t row)
 {
     if (r->count > FXRT_LONE_MAX)
         return false;
@@ -1188,7 +1188,7 @@ RENDER_MAYBE_UNUSED static int32_t render_iy(const cam_t *cam, int32_t row)
 
 #if RENDER_SROWS
 
-void render_srow_setup(render_t *r, uint16_t i)
+void render_srow_setup(vis_t *r, uint16_t i)
 {
     const render_obj_t *o = &r->obj[i];
     r->srow[o->index].vrow = r->srow[o->index].prow = -2;
@@ -1196,7 +1196,7 @@ void render_srow_setup(render_t *r, uint16_t i)
 }
 
 /* One fine row down the series of render_sphere_row_at. */
-static inline void render_srow_step(render_t *r, uint16_t si)
+static inline void render_srow_step(vis_t *r, uint16_t si)
 {
     __typeof__(r->srow[0]) *q = &r->srow[si];
     q->cur.v = fx128_add(q->cur.v, q->dvk);
@@ -1208,7 +1208,7 @@ static inline void render_srow_step(render_t *r, uint16_t si)
 /* The series on fine row `row` - 1, from the forms on three rows (on the
  * screen, where every form fits): their differences give it exactly.
  * One row's forms at a time (the micro:bit's stack). */
-__attribute__((noinline)) static void render_srow_start(render_t *r, const render_obj_t *o, int32_t row)
+__attribute__((noinline)) static void render_srow_start(vis_t *r, const render_obj_t *o, int32_t row)
 {
     __typeof__(r->srow[0]) *q = &r->srow[o->index];
     int32_t h = r->cam->height, b = row + 2 < h ? row : h - 3, ix0 = 2 * o->x0 - r->cam->width + 1;
@@ -1231,7 +1231,7 @@ __attribute__((noinline)) static void render_srow_start(render_t *r, const rende
 /* render_sphere_row on fine row `row`, a fine camera of at least three
  * rows: three additions after the row before. In place (no copies: on
  * the M0 a copy of 128-bit values is a memcpy call). */
-static const render_srow_t *render_sphere_row_at(render_t *r, const render_obj_t *o, int32_t row)
+static const render_srow_t *render_sphere_row_at(vis_t *r, const render_obj_t *o, int32_t row)
 {
     if (row != r->srow[o->index].vrow + 1)
         render_srow_start(r, o, row);
@@ -1384,7 +1384,7 @@ static render_iv_t render_sphere_run_near(const render_srow_t *s, int32_t kmax, 
  * s (render_sphere_row_at): where the deciding form is concave along the
  * row, one run, found from the row before's (render_sphere_run_near);
  * otherwise by stepping. */
-__attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const render_obj_t *o, int32_t row,
+__attribute__((noinline)) static int render_sphere_runs_at(vis_t *r, const render_obj_t *o, int32_t row,
                                                           const render_srow_t *s, render_iv_t run[2])
 {
     int32_t ix0 = 2 * o->x0 - r->cam->width + 1, iy = render_iy(r->cam, row);
@@ -1429,7 +1429,7 @@ __attribute__((noinline)) static int render_sphere_runs_at(render_t *r, const re
 /* A lone sphere's runs on fine row `row` (k from its x0), from the row
  * before's. The row's forms first, then the search (two frames, not one
  * on top of the other: the micro:bit's stack). */
-static inline __attribute__((always_inline)) int render_sphere_row_runs(render_t *r, const render_obj_t *o, int32_t row,
+static inline __attribute__((always_inline)) int render_sphere_row_runs(vis_t *r, const render_obj_t *o, int32_t row,
                                                                     render_iv_t run[2])
 {
     return render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), run);
@@ -1454,7 +1454,7 @@ static int render_runs_push(render_run_t *out, int n, int cap, int32_t x0, const
     return n;
 }
 
-int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
+int render_row_runs(vis_t *r, int32_t row, render_run_t *out, int cap)
 {
     int32_t iy = render_iy(r->cam, row);
     int n = 0;
@@ -1525,7 +1525,7 @@ int render_row_runs(render_t *r, int32_t row, render_run_t *out, int cap)
  * loop of its own, with few registers, as most objects of a large world
  * are off most rows. (Where CLZ is an instruction the rows' object masks
  * do this: render_row_vis.) */
-__attribute__((noinline)) static uint16_t render_next_on_row(const render_t *r, uint16_t i, int32_t row)
+__attribute__((noinline)) static uint16_t render_next_on_row(const vis_t *r, uint16_t i, int32_t row)
 {
     if (FXRT_NO_BOUNDS)
         return i;
@@ -1540,7 +1540,7 @@ __attribute__((noinline)) static uint16_t render_next_on_row(const render_t *r, 
  * owner of each column, flat colours painted (and r->vis recorded for the
  * shading pass). Out of line so that its frame is gone before the shading
  * pass runs (stack depth on the micro:bit). */
-__attribute__((noinline)) void render_row_vis(render_t *r, int32_t row, uint8_t *rgb)
+__attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rgb)
 {
     const cam_t *cam = r->cam;
     int32_t w = cam->width, y = cam->height - 1 - row;

@@ -443,7 +443,7 @@ RENDER_MAYBE_UNUSED static void render_points_bounds(const cam_t *cam, const vec
  * a time: on the Cortex-M0 the 128-bit arithmetic inlined into one
  * function took over 1 KB of stack (the micro:bit reserves little). */
 #if FXRT_NUMBER == FXRT_Q16
-__attribute__((noinline)) static void render_sphere_scale(render_t *r, rext_t ext, render_sphere_t *sp, num_t rad,
+__attribute__((noinline)) static void render_sphere_scale(vis_t *r, rext_t ext, render_sphere_t *sp, num_t rad,
                                                           rc_t r2, rc_t k, const rclin_t *b, const rclin_t *px,
                                                           const rclin_t *py, const rclin_t *pz, const rcquad_t *a)
 {
@@ -540,7 +540,7 @@ __attribute__((noinline)) static void render_sphere_bounds(const cam_t *cam, vec
     render_sphere_cap(cam, c, rad, o);
 }
 
-__attribute__((noinline)) static void render_setup_sphere(render_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_sphere(vis_t *r, rext_t ext, const geom_sphere_t *s, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     vec3_t c = render_to_cam(cam, s->center);
@@ -645,7 +645,7 @@ static void render_plane_rows(const cam_t *cam, const render_flat_t *f, render_o
         o->r0 = (int16_t)hi;
 }
 
-__attribute__((noinline)) static void render_setup_plane(render_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_plane(vis_t *r, rext_t ext, const geom_plane_t *p, render_obj_t *o)
 {
     o->kind = RENDER_FLAT;
     o->nflat = 1;
@@ -659,7 +659,7 @@ __attribute__((noinline)) static void render_setup_plane(render_t *r, rext_t ext
 #endif
 
 #if FXRT_MAX_TRIANGLES > 0
-__attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_triangle(vis_t *r, rext_t ext, const geom_triangle_t *t, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     o->kind = RENDER_FLAT;
@@ -687,7 +687,7 @@ __attribute__((noinline)) static void render_setup_triangle(render_t *r, rext_t 
 
 #if FXRT_MAX_BOXES > 0
 
-__attribute__((noinline)) static void render_setup_box(render_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
+__attribute__((noinline)) static void render_setup_box(vis_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o)
 {
     const cam_t *cam = r->cam;
     bool ortho = render_ortho(cam);
@@ -818,7 +818,7 @@ static int render_mesh_volume(const world_t *w, uint16_t k)
 #endif
 }
 
-__attribute__((noinline)) static void render_cull_meshes(render_t *r)
+__attribute__((noinline)) static void render_cull_meshes(vis_t *r)
 {
     const world_t *w = r->world;
     uint16_t n = w->n_triangles;
@@ -892,7 +892,7 @@ static bool render_flat_front(const cam_t *cam, const render_flat_t *f, int32_t 
 #endif
 
 /* (Re)compute object i's forms and bounds from its world object. */
-void render_setup_object(render_t *r, uint16_t i)
+void render_setup_object(vis_t *r, uint16_t i)
 {
     const world_t *w = r->world;
     const cam_t *cam = r->cam;
@@ -935,18 +935,7 @@ void render_setup_object(render_t *r, uint16_t i)
 }
 
 /* Register an object of the world in scene-array order. */
-#if FXRT_MAX_SAMPLES > 1
-/* One sample of colour c, clamped, in the sampling pass's sum units. */
-static void render_sum_one(color_sum_t one[3], color_t c)
-{
-    one[0] = one[1] = one[2] = 0;
-    color_sum_add(&one[0], c.r, 1);
-    color_sum_add(&one[1], c.g, 1);
-    color_sum_add(&one[2], c.b, 1);
-}
-#endif
-
-static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom_common_t *c)
+static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_common_t *c)
 {
     uint16_t i = r->count++;
     render_obj_t *o = &r->obj[i];
@@ -962,9 +951,6 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
     o->flat = c->mat.kind == MATERIAL_FLAT;
 #else
     o->flat = true;
-#endif
-#if FXRT_MAX_SAMPLES > 1
-    render_sum_one(o->one, c->color);
 #endif
     switch (kind) {
     case GEOM_PLANE:
@@ -1049,7 +1035,7 @@ static void render_add(render_t *r, geom_kind_t kind, uint16_t index, const geom
  * along the permutation's cycles. Worlds of more than FXRT_ORDER_MAX
  * objects keep scene order (the scratch is on the stack). */
 #define RENDER_ORDER_N (FXRT_RENDER_MAX_OBJECTS < FXRT_ORDER_MAX ? FXRT_RENDER_MAX_OBJECTS : FXRT_ORDER_MAX)
-static void render_order(render_t *r)
+static void render_order(vis_t *r)
 {
     int32_t key[RENDER_ORDER_N > 0 ? RENDER_ORDER_N : 1];
     uint16_t ord[RENDER_ORDER_N > 0 ? RENDER_ORDER_N : 1], n = r->count;
@@ -1121,10 +1107,10 @@ static void render_order(render_t *r)
 #endif
 
 #if RENDER_ROW_MASKS
-/* The row blocks' object masks (render_t's row_mask): blocks of the
+/* The row blocks' object masks (vis_t's row_mask): blocks of the
  * fewest rows, a power of two, that RENDER_ROW_BLOCKS blocks cover the
  * frame's rows with. */
-static void render_row_masks(render_t *r)
+static void render_row_masks(vis_t *r)
 {
     uint8_t s = 0;
     while ((int32_t)RENDER_ROW_BLOCKS << s < r->cam->height)
@@ -1143,38 +1129,11 @@ static void render_row_masks(render_t *r)
 }
 #endif
 
-bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
+const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam)
 {
     r->error = NULL;
-#if FXRT_MAX_SAMPLES > 1
-    /* Supersampling: the forms and bounds are those of the fine camera. */
-    r->samples = (uint8_t)world_samples(w);
-    r->adaptive = world_adaptive(w);
-    r->out_cam = cam;
-    if (r->samples > 1) {
-        if (cam->width > FXRT_RENDER_MAX_WIDTH / r->samples) {
-            r->error = "samples x width wider than FXRT_RENDER_MAX_WIDTH";
-            return false;
-        }
-        if (cam_fine(cam, r->samples, &r->fine) != CAM_OK) {
-            r->error = "samples x height beyond FXRT_MAX_DIM, or samples x height x cot(fov/2) beyond 32767";
-            return false;
-        }
-        cam = &r->fine;
-        render_sum_one(r->bg_one, w->background);
-#if FXRT_ADAPTIVE
-        r->arow[0] = r->arow[1] = r->arow[2] = -1;
-#endif
-#if RENDER_RUNS
-        r->run_cap = FXRT_SAMPLE_RUNS;
-        r->run_rows = 0;
-#endif
-    }
-#endif
-    if (cam->width > FXRT_RENDER_MAX_WIDTH) {
-        r->error = "image wider than FXRT_RENDER_MAX_WIDTH";
-        return false;
-    }
+    if (cam->width > FXRT_RENDER_MAX_WIDTH)
+        return r->error = "image wider than FXRT_RENDER_MAX_WIDTH";
 #if FXRT_MAX_BOXES > 0
     r->box_used = 0;
 #endif
@@ -1185,14 +1144,14 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 #if FXRT_NUMBER == FXRT_Q16
     r->scache = NULL;
 #endif
-    r->keys = NULL;
-#if FXRT_MAX_LIGHTS > 0
-    r->any_lit = w->n_lit > 0;
+    r->want_keys = false;
+#if FXRT_MAX_SAMPLES > 1
+    r->sampled = world_samples(w) > 1;
 #endif
 #if RENDER_VIS
     r->track = world_samples(w) > 1;
 #if FXRT_MAX_LIGHTS > 0
-    r->track = r->track || r->any_lit;
+    r->track = r->track || w->n_lit > 0;
 #endif
 #endif
 #if FXRT_MAX_PLANES > 0
@@ -1228,21 +1187,5 @@ bool render_setup(render_t *r, const world_t *w, const cam_t *cam)
 #if RENDER_ROW_MASKS
     render_row_masks(r);
 #endif
-#if FXRT_MAX_LIGHTS > 0
-#if SHADOW_CULL
-    if (r->any_lit)
-        shadow_cull_setup(w, r->shadow_cull);
-#endif
-    for (uint16_t i = 0; r->any_lit && i < r->count; i++) {
-        const geom_common_t *c = world_common(w, (geom_kind_t)r->obj[i].geom, r->obj[i].index);
-        if (c->mat.kind != MATERIAL_FLAT) {
-            shade_consts(w, c, &r->shade_k[i]);
-#if SHADOW_CULL
-            r->shade_k[i].cull = r->shadow_cull;
-#endif
-        }
-    }
-#endif
-    return r->error == NULL;
+    return r->error;
 }
-

@@ -154,7 +154,7 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
  * earlier candidate face does, the last candidate must: its coverage is
  * not tested (a RENDER_ALL box's always is). */
 #define RENDER_BOX_SIDES 6 /* faces a box can have set up */
-__attribute__((noinline)) static render_depth_t render_box_depth(const render_t *r, const render_obj_t *o, int32_t ix,
+__attribute__((noinline)) static render_depth_t render_box_depth(const vis_t *r, const render_obj_t *o, int32_t ix,
                                                                  int32_t iy, const render_flat_t *known, render_k_t kn,
                                                                  render_k_t kd)
 {
@@ -196,7 +196,7 @@ __attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *
  * sphere scanned last among others; r->srow: its row state), with the
  * pixel offset *ix0 of their column k = 0; NULL when it has none, or they
  * are not the perspective disc from outside. */
-static const render_srow_t *render_sphere_rowforms(const render_t *r, uint16_t oi, int32_t iy, int32_t *ix0)
+static const render_srow_t *render_sphere_rowforms(const vis_t *r, uint16_t oi, int32_t iy, int32_t *ix0)
 {
     const render_scache_t *sc = r->scache;
     const render_srow_t *q = NULL;
@@ -223,7 +223,7 @@ static const render_srow_t *render_sphere_rowforms(const render_t *r, uint16_t o
  * own (it was scanned on this row, as it covers the pixel). Owners are
  * asked about column after column, so the last column's value and step
  * give the next by two additions. False: no row forms. */
-__attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, uint16_t oi, int32_t ix, int32_t iy,
+__attribute__((noinline)) static bool render_sphere_disc_row(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy,
                                                              rsw_t *disc)
 {
     render_scache_t *sc = r->scache;
@@ -253,7 +253,7 @@ __attribute__((noinline)) static bool render_sphere_disc_row(const render_t *r, 
 /* A sphere's depth at a pixel it covers. Its 128-bit forms in frames of
  * their own, one after the other: off the stack of the other kinds'
  * paths, and not on top of each other (the micro:bit's stack). */
-__attribute__((noinline)) static render_depth_t render_sphere_depth_at(const render_t *r, uint16_t oi, int32_t ix,
+__attribute__((noinline)) static render_depth_t render_sphere_depth_at(const vis_t *r, uint16_t oi, int32_t ix,
                                                                        int32_t iy)
 {
     const render_obj_t *o = &r->obj[oi];
@@ -270,7 +270,7 @@ __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const ren
 
 /* Depth of object oi at a pixel it covers, from its forms evaluated there
  * (a sphere's from its row forms where it has them: the same value). */
-static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix, int32_t iy)
+static render_depth_t render_depth_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy)
 {
     const render_obj_t *o = &r->obj[oi];
     if (o->kind == RENDER_SPHERE)
@@ -286,7 +286,7 @@ static render_depth_t render_depth_at(const render_t *r, uint16_t oi, int32_t ix
 
 
 /* Test hook: object i's depth at pixel offsets (ix, iy), which it covers. */
-render_depth_t render_depth_test(const render_t *r, uint16_t i, int32_t ix, int32_t iy)
+render_depth_t render_depth_test(const vis_t *r, uint16_t i, int32_t ix, int32_t iy)
 {
     return render_depth_at(r, i, ix, iy);
 }
@@ -294,7 +294,7 @@ render_depth_t render_depth_test(const render_t *r, uint16_t i, int32_t ix, int3
 /* Test hook: is object i's depth at pixel offsets (ix, iy), which it
  * covers, inside its depth range [tlo, thi]? (A depth outside would let
  * render_settle decide an overlap wrongly.) */
-bool render_range_check(const render_t *r, uint16_t i, int32_t ix, int32_t iy)
+bool render_range_check(const vis_t *r, uint16_t i, int32_t ix, int32_t iy)
 {
     const render_obj_t *o = &r->obj[i];
     render_depth_t t = render_depth_at(r, i, ix, iy);
@@ -311,7 +311,7 @@ typedef struct {
     const rsw_t *c, *disc;
 } render_raw_t;
 
-static render_depth_t render_raw_depth(const render_t *r, uint16_t oi, int32_t ix, int32_t iy, const render_raw_t *raw)
+static render_depth_t render_raw_depth(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, const render_raw_t *raw)
 {
 #if RENDER_STEPPED
     if (raw->how == RENDER_RAW_FLAT)
@@ -339,7 +339,7 @@ static render_depth_t render_raw_depth(const render_t *r, uint16_t oi, int32_t i
 #else
 #define RENDER_QUICK_INLINE inline __attribute__((always_inline))
 #endif
-static RENDER_QUICK_INLINE int render_settle_quick(render_t *r, uint32_t cur, uint16_t oi, int32_t x)
+static RENDER_QUICK_INLINE int render_settle_quick(vis_t *r, uint32_t cur, uint16_t oi, int32_t x)
 {
     const render_obj_t *a = &r->obj[(uint16_t)cur], *b = &r->obj[oi];
     if (FXRT_NO_ZRANGE || !b->ranged)
@@ -366,7 +366,7 @@ static RENDER_QUICK_INLINE int render_settle_quick(render_t *r, uint32_t cur, ui
  * ranges (render_setup: from their camera-space z, with a margin) do not
  * already decide; render_settle_quick has already tried the ranges
  * against the owner's range or known depth. Returns true when oi wins. */
-static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy,
+static __attribute__((noinline)) bool render_settle(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy,
                                                     const render_raw_t *raw)
 {
     uint16_t ci = (uint16_t)cur;
@@ -407,7 +407,7 @@ static __attribute__((noinline)) bool render_settle(render_t *r, uint32_t cur, u
 }
 
 /* The newcomer's depth from its forms evaluated at the pixel. */
-bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
+bool render_resolve(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
 {
     int q = render_settle_quick(r, cur, oi, x);
     if (q >= 0)
@@ -420,7 +420,7 @@ bool render_resolve(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t i
 #if RENDER_STEPPED
 /* The newcomer's depth from the values the scanline loop stepped: a flat
  * piece's N and D (its own piece, or the face f of a box). */
-static inline __attribute__((always_inline)) bool render_resolve_nd(render_t *r, uint32_t cur, uint16_t oi, int32_t x,
+static inline __attribute__((always_inline)) bool render_resolve_nd(vis_t *r, uint32_t cur, uint16_t oi, int32_t x,
                                                                     int32_t iy, const render_flat_t *f, render_k_t n,
                                                                     render_k_t d, bool box)
 {
@@ -434,17 +434,17 @@ static inline __attribute__((always_inline)) bool render_resolve_nd(render_t *r,
     raw.d = d;
     return render_settle(r, cur, oi, x, iy, &raw);
 }
-bool render_resolve_flat(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+bool render_resolve_flat(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                          render_k_t n, render_k_t d)
 {
     return render_resolve_nd(r, cur, oi, x, iy, f, n, d, false);
 }
-bool render_resolve_box(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
+bool render_resolve_box(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                         render_k_t n, render_k_t d)
 {
     return render_resolve_nd(r, cur, oi, x, iy, f, n, d, true);
 }
-bool render_resolve_sphere(render_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
+bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
                            const rsw_t *disc)
 {
     int q = render_settle_quick(r, cur, oi, x);
@@ -492,7 +492,7 @@ static render_depth_t render_depth_widen(render_depth_t t, bool up)
  * is in front at both ends (N and D of one strict sign), so all along
  * (both are linear), where t = N / D is monotone; 0 when it is behind at
  * both ends (opposite strict signs, so all along); -1 otherwise. */
-static int render_flat_range(const render_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+static int render_flat_range(const vis_t *r, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              render_depth_t *lo, render_depth_t *hi)
 {
     int32_t w = r->cam->width;
@@ -517,7 +517,7 @@ static int render_flat_range(const render_t *r, const render_flat_t *f, int32_t 
 /* Depth range of plane p over columns x0..x1 of row iy when it covers both
  * ends with one sign of N and D: then it covers the whole segment and its
  * t = N / D is monotone there. */
-static bool render_plane_range(const render_t *r, const render_obj_t *p, int32_t x0, int32_t x1, int32_t iy,
+static bool render_plane_range(const vis_t *r, const render_obj_t *p, int32_t x0, int32_t x1, int32_t iy,
                                render_depth_t *lo, render_depth_t *hi)
 {
     return render_flat_range(r, render_face(p, 0), x0, x1, iy, lo, hi) == 1;
@@ -541,7 +541,7 @@ static render_depth_t render_sphere_near(const render_sphere_t *sp, uint64_t g)
  * step(q - 1) (a step counted only where it rises). Both ends widened by
  * render_depth_widen: the keys' 24-bit truncations and sqrt's 32 bits stay
  * far inside that. 0: no range. */
-__attribute__((noinline)) static int render_sphere_span(const render_t *r, uint16_t oi, int32_t p, int32_t q,
+__attribute__((noinline)) static int render_sphere_span(const vis_t *r, uint16_t oi, int32_t p, int32_t q,
                                                         int32_t iy, render_depth_t *lo, render_depth_t *hi, bool low)
 {
     const render_obj_t *o = &r->obj[oi];
@@ -604,7 +604,7 @@ __attribute__((noinline)) static int render_sphere_span(const render_t *r, uint1
  * covers: its depth at a column is that of a face covering it there, and
  * every face that can (its pixel bounds reach the column) has a range on
  * its part of p..q, or is behind all along it. */
-__attribute__((noinline)) static bool render_box_span(const render_t *r, const render_obj_t *o, int32_t p, int32_t q,
+__attribute__((noinline)) static bool render_box_span(const vis_t *r, const render_obj_t *o, int32_t p, int32_t q,
                                                       int32_t iy, render_depth_t *lo, render_depth_t *hi)
 {
     int32_t row = render_row_of(r->cam, iy);
@@ -635,7 +635,7 @@ __attribute__((noinline)) static bool render_box_span(const render_t *r, const r
  * (a sphere, !low), *hi a bound and *lo not (its smaller end: its bound
  * below, from low, can only be lower); 0, none. low: a sphere's bound
  * below alone, into *lo. */
-int render_span_range(const render_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
+int render_span_range(const vis_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
                       render_depth_t *hi, bool low)
 {
     const render_obj_t *o = &r->obj[oi];
@@ -654,7 +654,7 @@ static bool render_is_plane(const render_obj_t *o) { return o->kind == RENDER_FL
 /* Plane p's (object j's) depth range over the whole of row iy, once per
  * row for the first RENDER_ROW_PLANES planes (pr); false when it does not
  * cover the row with one sign of N and D. */
-__attribute__((noinline)) static bool render_prow_range(const render_t *r, const render_obj_t *p, uint16_t j,
+__attribute__((noinline)) static bool render_prow_range(const vis_t *r, const render_obj_t *p, uint16_t j,
                                                         int32_t iy, render_prow_t *pr, render_depth_t *lo,
                                                         render_depth_t *hi)
 {
@@ -673,7 +673,7 @@ __attribute__((noinline)) static bool render_prow_range(const render_t *r, const
  * columns x0..x1: r->row_win gets bit j when i is nearer than plane j
  * wherever both cover (no depth needed there); returns false when a plane
  * covers the whole segment nearer than i (i is hidden on this row). */
-bool render_row_order(render_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy, render_prow_t *pr)
+bool render_row_order(vis_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy, render_prow_t *pr)
 {
     const render_obj_t *o = &r->obj[i];
     render_depth_t blo, bhi;
