@@ -4,6 +4,8 @@
 #ifndef FXRT_CONFIG_H
 #define FXRT_CONFIG_H
 
+#include "port/port.h" /* the target's features, for the defaults below */
+
 /* FXRT_NUMBER selects the renderer's number type:
  *   1 = FXRT_Q16    Q16.16 fixed point (the product)
  *   2 = FXRT_FLOAT  IEEE binary32 (what a user would otherwise write)
@@ -99,19 +101,14 @@
  *   FX_HAVE_CLZ    1: __builtin_clz is an instruction; 0: a binary search
  *   FX_HAVE_UMULL  1: (uint64_t)a * b is one instruction; 0: four 16-bit
  *                  products inline (instead of libgcc's __aeabi_lmul) */
-#if defined(__ARM_ARCH_6M__)
-#define FXRT_ARCH_SMALL_ISA 1
-#else
-#define FXRT_ARCH_SMALL_ISA 0
-#endif
 #ifndef FX_HAVE_UDIV
-#define FX_HAVE_UDIV (!FXRT_ARCH_SMALL_ISA)
+#define FX_HAVE_UDIV (!FXRT_PORT_SMALL_ISA)
 #endif
 #ifndef FX_HAVE_CLZ
-#define FX_HAVE_CLZ (!FXRT_ARCH_SMALL_ISA)
+#define FX_HAVE_CLZ (!FXRT_PORT_SMALL_ISA)
 #endif
 #ifndef FX_HAVE_UMULL
-#define FX_HAVE_UMULL (!FXRT_ARCH_SMALL_ISA)
+#define FX_HAVE_UMULL (!FXRT_PORT_SMALL_ISA)
 #endif
 
 /* ---- the scanline renderer (render.h) ---------------------------------- */
@@ -264,11 +261,7 @@
  *   0 = stepping along the row by forward differences (additions only)
  * Default: 0 on Armv6-M (Cortex-M0 has no long multiply), else 1. */
 #ifndef FXRT_SPHERE_SEARCH
-#if defined(__ARM_ARCH_6M__)
-#define FXRT_SPHERE_SEARCH 0
-#else
-#define FXRT_SPHERE_SEARCH 1
-#endif
+#define FXRT_SPHERE_SEARCH (!FXRT_PORT_SMALL_ISA)
 #endif
 #if FXRT_SPHERE_SEARCH != 0 && FXRT_SPHERE_SEARCH != 1
 #error "FXRT_SPHERE_SEARCH must be 0 or 1"

@@ -5,7 +5,7 @@ files' symbols (tests/layers.sh). docs/ARCHITECTURE.md has the picture.
   layers.py CORE_DIR [OBJ_DIR]
 
 Layers, lowest first: the configuration and error codes (fxrt_config.h,
-fxrt_err.h), port/, math/, scene/, then vis/ and light/ side by side, then
+fxrt_err.h) with port/ (the target), math/, scene/, then vis/ and light/ side by side, then
 frame/ with the public API (fxrt.h). A file may include, and a translation
 unit may call into, its own layer and the layers below it; vis/ and light/
 may not use each other. No two headers include each other, directly or
@@ -21,7 +21,7 @@ import re
 import subprocess
 import sys
 
-RANK = {'': 0, 'port': 1, 'math': 2, 'scene': 3, 'vis': 4, 'light': 4, 'frame': 5}
+RANK = {'': 0, 'port': 0, 'math': 2, 'scene': 3, 'vis': 4, 'light': 4, 'frame': 5}
 SIBLINGS = {('vis', 'light'), ('light', 'vis')}
 
 

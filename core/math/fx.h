@@ -29,6 +29,7 @@
 #include <stdint.h>
 
 #include "fxrt_config.h"
+#include "port/asm.h"
 
 typedef int32_t fx_t;  /* Q16.16 */
 typedef int64_t fxw_t; /* Q32.32 */
@@ -70,34 +71,15 @@ static inline fx_t fx_sat64(int64_t v)
 
 /* a + b, a - b, -a: exact, saturating. On Armv6-M (Thumb-1) gcc tests
  * the overflow with three logic operations on the signs; the ADDS/SUBS
- * there sets the V flag, and FX_SAT_ASM (gcc only, as the other assembly
+ * there sets the V flag, and PORT_SAT_ASM (gcc only, as the other assembly
  * here; clang takes the C) branches on it: two instructions
  * when nothing saturates. Its rare path forms a < 0 ? FX_MIN : FX_MAX as
  * 2^31 + ~(a >> 31) (b's register is a scratch copy). The same values:
  * tests/onboard_main.c checks them on the M0 against 64-bit C. */
-#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
-#define FX_SAT_ASM(op, a, b)                                                                                   \
-    __extension__({                                                                                            \
-        fx_t s_, t_ = (b);                                                                                     \
-        __asm__(".syntax unified\n\t" op " %0, %2, %1\n\t"                                                    \
-                   "bvc 1f\n\t"                                                                              \
-                   "asrs %1, %2, #31\n\t"                                                                    \
-                   "mvns %1, %1\n\t"                                                                         \
-                   "movs %0, #1\n\t"                                                                         \
-                   "lsls %0, %0, #31\n\t"                                                                    \
-                   "adds %0, %0, %1\n"                                                                        \
-                   "1:\n\t"                                                                                   \
-                   ".syntax divided"                                                                         \
-                : "=&l"(s_), "+l"(t_)                                                                          \
-                : "l"(a)                                                                                       \
-                : "cc");                                                                                       \
-        s_;                                                                                                    \
-    })
-#endif
 static inline fx_t fx_add(fx_t a, fx_t b)
 {
-#ifdef FX_SAT_ASM
-    return FX_SAT_ASM("adds", a, b);
+#if FXRT_PORT_V6M_ASM
+    return PORT_SAT_ASM("adds", a, b);
 #else
     fx_t s;
     if (__builtin_add_overflow(a, b, &s))
@@ -107,8 +89,8 @@ static inline fx_t fx_add(fx_t a, fx_t b)
 }
 static inline fx_t fx_sub(fx_t a, fx_t b)
 {
-#ifdef FX_SAT_ASM
-    return FX_SAT_ASM("subs", a, b);
+#if FXRT_PORT_V6M_ASM
+    return PORT_SAT_ASM("subs", a, b);
 #else
     fx_t s;
     if (__builtin_sub_overflow(a, b, &s))
@@ -168,9 +150,9 @@ static inline uint64_t fx_usqr32(uint32_t a)
  * b 2^32 when a < 0 and a 2^32 when b < 0 (modulo 2^64). */
 static inline int64_t fx_smul32(int32_t a, int32_t b)
 {
-#if FX_HAVE_UMULL && defined(__thumb2__) && defined(__GNUC__)
+#if FX_HAVE_UMULL && FXRT_PORT_THUMB2_GCC
     int32_t lo, hi;
-    __asm__("smull %0, %1, %2, %3" : "=&r"(lo), "=&r"(hi) : "r"(a), "r"(b));
+    PORT_SMULL(lo, hi, a, b);
     return (int64_t)(((uint64_t)(uint32_t)hi << 32) | (uint32_t)lo);
 #elif FX_HAVE_UMULL
     return (int64_t)a * b;
@@ -188,9 +170,9 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
  * 2^64 otherwise, never undefined): one SMLAL on Thumb-2. */
 static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)
 {
-#if FX_HAVE_UMULL && defined(__thumb2__) && defined(__GNUC__)
+#if FX_HAVE_UMULL && FXRT_PORT_THUMB2_GCC
     uint32_t lo = (uint32_t)acc, hi = (uint32_t)((uint64_t)acc >> 32);
-    __asm__("smlal %0, %1, %2, %3" : "+r"(lo), "+r"(hi) : "r"(a), "r"(b));
+    PORT_SMLAL(lo, hi, a, b);
     return (int64_t)(((uint64_t)hi << 32) | lo);
 #else
     return (int64_t)((uint64_t)acc + (uint64_t)fx_smul32(a, b));
@@ -282,57 +264,11 @@ static inline uint64_t fx_umul64_small(uint64_t a, int32_t i)
  * (the M3, M4F) has its own below; other targets and compilers take the C
  * (fx_umul64_small). tests/onboard_main.c checks the assembly against
  * 64-bit C products on every board. */
-#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
-#define FX_LIN_TERM(lo_off, hi_off, f)                                                                   \
-    "ldr %[t], [%[w], #" lo_off "]\n\t"                                                                    \
-    "uxth %[u], %[t]\n\t"                                                                                \
-    "mul %[u], %[" f "]\n\t"                                                                             \
-    "asr %[t], %[u], #31\n\t"                                                                            \
-    "add %[lo], %[lo], %[u]\n\t"                                                                         \
-    "adc %[hi], %[t]\n\t"                                                                                \
-    "ldr %[t], [%[w], #" lo_off "]\n\t"                                                                    \
-    "lsr %[t], %[t], #16\n\t"                                                                            \
-    "mul %[t], %[" f "]\n\t"                                                                             \
-    "lsl %[u], %[t], #16\n\t"                                                                            \
-    "asr %[t], %[t], #16\n\t"                                                                            \
-    "add %[lo], %[lo], %[u]\n\t"                                                                         \
-    "adc %[hi], %[t]\n\t"                                                                                \
-    "ldr %[t], [%[w], #" hi_off "]\n\t"                                                                    \
-    "mul %[t], %[" f "]\n\t"                                                                             \
-    "add %[hi], %[hi], %[t]\n\t"
+#if FXRT_PORT_V6M_ASM || FXRT_PORT_V7M_ASM
+/* Armv6-M and Armv7-M: port/asm.h (port_lin2_small). */
 static inline __attribute__((always_inline)) uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
 {
-    uint32_t lo, hi, t, u;
-    __asm__("ldr %[lo], [%[w], #0]\n\t"
-            "ldr %[hi], [%[w], #4]\n\t" FX_LIN_TERM("8", "12", "i") FX_LIN_TERM("16", "20", "j")
-            : [lo] "=&l"(lo), [hi] "=&l"(hi), [t] "=&l"(t), [u] "=&l"(u)
-            : [w] "l"(w), [i] "l"(i), [j] "l"(j), "m"(*(const int64_t(*)[3])w)
-            : "cc");
-    return (uint64_t)hi << 32 | lo;
-}
-#undef FX_LIN_TERM
-#elif (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
-/* Armv7-M: per factor f, the low word's product accumulated into the sum
- * by UMLAL, then the high word's (modulo 2^32) and the low word times f's
- * sign word (-1 or 0: f sign-extended to 64 bits) into its high word by
- * MLA: 11 instructions, where gcc's C takes 18. */
-static inline __attribute__((always_inline)) uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
-{
-    uint32_t lo, hi, a, b, t;
-    __asm__("ldrd %[lo], %[hi], [%[w]]\n\t"
-            "ldrd %[a], %[b], [%[w], #8]\n\t"
-            "umlal %[lo], %[hi], %[a], %[i]\n\t"
-            "mla %[hi], %[b], %[i], %[hi]\n\t"
-            "asr %[t], %[i], #31\n\t"
-            "mla %[hi], %[a], %[t], %[hi]\n\t"
-            "ldrd %[a], %[b], [%[w], #16]\n\t"
-            "umlal %[lo], %[hi], %[a], %[j]\n\t"
-            "mla %[hi], %[b], %[j], %[hi]\n\t"
-            "asr %[t], %[j], #31\n\t"
-            "mla %[hi], %[a], %[t], %[hi]"
-            : [lo] "=&r"(lo), [hi] "=&r"(hi), [a] "=&r"(a), [b] "=&r"(b), [t] "=&r"(t)
-            : [w] "r"(w), [i] "r"(i), [j] "r"(j), "m"(*(const int64_t(*)[3])w));
-    return (uint64_t)hi << 32 | lo;
+    return port_lin2_small(w, i, j);
 }
 #else
 static inline uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
@@ -516,25 +452,10 @@ static inline void fx128_copy(fx128_t *dst, const fx128_t *src)
     dst->lo = src->lo;
     dst->hi = src->hi;
 }
-#if (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
-/* Armv7-M: a op b as a carry (borrow) chain on the four words: `first`
- * on the low words, `next` twice, `last` on the high words, where gcc's C
- * builds the carry from a compare. (Early-clobber: no input may share a
- * register with a word written before the last input is read.) */
-#define FX128_CHAIN(a, b, first, next, last)                                                                   \
-    uint32_t w0 = (uint32_t)(a).lo, w1 = (uint32_t)((a).lo >> 32), w2 = (uint32_t)(a).hi,                      \
-             w3 = (uint32_t)((uint64_t)(a).hi >> 32);                                                          \
-    __asm__(first " %[w0], %[w0], %[b0]\n\t" next " %[w1], %[w1], %[b1]\n\t" next " %[w2], %[w2], %[b2]\n\t" last \
-                  " %[w3], %[w3], %[b3]"                                                                       \
-            : [w0] "+&r"(w0), [w1] "+&r"(w1), [w2] "+&r"(w2), [w3] "+&r"(w3)                                   \
-            : [b0] "r"((uint32_t)(b).lo), [b1] "r"((uint32_t)((b).lo >> 32)), [b2] "r"((uint32_t)(b).hi),       \
-              [b3] "r"((uint32_t)((uint64_t)(b).hi >> 32))                                                     \
-            : "cc");                                                                                           \
-    fx128_t r = {(uint64_t)w1 << 32 | w0, (int64_t)((uint64_t)w3 << 32 | w2)};                                 \
-    return r
+#if FXRT_PORT_V7M_ASM
 static inline __attribute__((always_inline)) fx128_t fx128_add(fx128_t a, fx128_t b)
 {
-    FX128_CHAIN(a, b, "adds", "adcs", "adc");
+    PORT_CHAIN128(a, b, "adds", "adcs", "adc");
 }
 #else
 static inline fx128_t fx128_add(fx128_t a, fx128_t b)
@@ -553,27 +474,8 @@ static inline fx128_t fx128_add(fx128_t a, fx128_t b)
  * flags; other compilers take the C. */
 static inline __attribute__((always_inline)) void fx128_add_to(fx128_t *a, const fx128_t *b)
 {
-#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
-    uint32_t x, y;
-    __asm__ volatile("ldr %[x], [%[a], #0]\n\t"
-                     "ldr %[y], [%[b], #0]\n\t"
-                     "add %[x], %[x], %[y]\n\t"
-                     "str %[x], [%[a], #0]\n\t"
-                     "ldr %[x], [%[a], #4]\n\t"
-                     "ldr %[y], [%[b], #4]\n\t"
-                     "adc %[x], %[y]\n\t"
-                     "str %[x], [%[a], #4]\n\t"
-                     "ldr %[x], [%[a], #8]\n\t"
-                     "ldr %[y], [%[b], #8]\n\t"
-                     "adc %[x], %[y]\n\t"
-                     "str %[x], [%[a], #8]\n\t"
-                     "ldr %[x], [%[a], #12]\n\t"
-                     "ldr %[y], [%[b], #12]\n\t"
-                     "adc %[x], %[y]\n\t"
-                     "str %[x], [%[a], #12]"
-                     : [x] "=&l"(x), [y] "=&l"(y)
-                     : [a] "l"(a), [b] "l"(b)
-                     : "cc", "memory");
+#if FXRT_PORT_V6M_ASM
+    PORT_ADD128_TO(a, b);
 #else
     *a = fx128_add(*a, *b);
 #endif
@@ -585,12 +487,11 @@ static inline fx128_t fx128_neg(fx128_t a)
     r.hi = (int64_t)(~(uint64_t)a.hi + (r.lo == 0 ? 1u : 0u));
     return r;
 }
-#if (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)) && defined(__GNUC__) && !defined(__clang__)
+#if FXRT_PORT_V7M_ASM
 static inline __attribute__((always_inline)) fx128_t fx128_sub(fx128_t a, fx128_t b)
 {
-    FX128_CHAIN(a, b, "subs", "sbcs", "sbc"); /* (FX128_CHAIN: fx128_add's) */
+    PORT_CHAIN128(a, b, "subs", "sbcs", "sbc"); /* (PORT_CHAIN128: port/asm.h) */
 }
-#undef FX128_CHAIN
 #else
 static inline fx128_t fx128_sub(fx128_t a, fx128_t b)
 {

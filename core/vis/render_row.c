@@ -76,19 +76,8 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
             word_t *p = (word_t *)(void *)(rgb + 3 * x);
             int32_t groups = (xb - x + 1) / 4;
             x += 4 * groups;
-#if defined(__thumb__) && defined(__GNUC__) && !defined(__clang__)
-            /* One STMIA per four pixels (gcc's loop keeps the three words
-             * in high registers on the M0: nine instructions). Its register
-             * list stores in register order, hence the fixed registers. */
-            register uint32_t w0 __asm__("r4") = pat.w[0], w1 __asm__("r5") = pat.w[1], w2 __asm__("r6") = pat.w[2];
-            word_t *end = p + 3 * groups;
-            __asm__ volatile("1:\n\t"
-                             "stmia %[p]!, {%[a], %[b], %[c]}\n\t"
-                             "cmp %[p], %[e]\n\t"
-                             "bne 1b"
-                             : [p] "+l"(p)
-                             : [a] "l"(w0), [b] "l"(w1), [c] "l"(w2), [e] "l"(end)
-                             : "cc", "memory");
+#if FXRT_PORT_THUMB_ASM
+            PORT_STORE3_LOOP(p, p + 3 * groups, pat.w[0], pat.w[1], pat.w[2]);
 #else
             uint32_t w0 = pat.w[0], w1 = pat.w[1], w2 = pat.w[2];
             for (; groups > 0; groups--, p += 3) {
@@ -170,11 +159,7 @@ static inline bool render_split_two(int64_t a, int64_t b, int32_t kmax, bool str
 /* ub k for a column k in 0..kmax + 1 (< 2^15): fx_umul64_small, out of
  * line on the M0 (three 32-bit products instead of an __aeabi_lmul call;
  * inline, five forms' worth of them tripled render_runs_flat's frame). */
-#if defined(__ARM_ARCH_6M__)
-__attribute__((noinline)) static uint64_t render_umul_k(uint64_t ub, int32_t k) { return fx_umul64_small(ub, k); }
-#else
-static inline uint64_t render_umul_k(uint64_t ub, int32_t k) { return ub * (uint64_t)k; }
-#endif
+static FXRT_INLINE_WIDE uint64_t render_umul_k(uint64_t ub, int32_t k) { return fx_umul64_small(ub, k); }
 
 /* Where 32-bit division and CLZ are instructions (RENDER_DIV_GUESS), a
  * flat piece's runs start from a quotient instead of the row before's
@@ -461,11 +446,7 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
 /* Inline into its callers (M3: 0.5 % fewer instructions on the bench
  * set), but out of line on Armv6-M, where it would grow
  * render_scan_flat's frame on the claiming path (the micro:bit's stack). */
-#if defined(__ARM_ARCH_6M__)
-#define RENDER_RUNS_INLINE __attribute__((noinline)) static
-#else
-#define RENDER_RUNS_INLINE static inline __attribute__((always_inline))
-#endif
+#define RENDER_RUNS_INLINE static FXRT_INLINE_WIDE
 /* Each edge's split (rk, lk; fall: it falls along the row) moves one end
  * of ge (where every edge is >= 0) and one of le (<= 0). */
 static inline __attribute__((always_inline)) void render_edge_runs(bool fall, int32_t rk, int32_t lk, render_iv_t *ge,

@@ -334,12 +334,7 @@ static render_depth_t render_raw_depth(const vis_t *r, uint16_t oi, int32_t ix, 
  * not decide. Inline in each of them; on Armv6-M a frame of its own, gone
  * before render_settle's (their frames with it inline would stack under
  * it: the micro:bit's 2 KB stack). */
-#if defined(__ARM_ARCH_6M__)
-#define RENDER_QUICK_INLINE __attribute__((noinline))
-#else
-#define RENDER_QUICK_INLINE inline __attribute__((always_inline))
-#endif
-static RENDER_QUICK_INLINE int render_settle_quick(vis_t *r, uint32_t cur, uint16_t oi, int32_t x)
+static FXRT_INLINE_WIDE int render_settle_quick(vis_t *r, uint32_t cur, uint16_t oi, int32_t x)
 {
     const render_obj_t *a = &r->obj[(uint16_t)cur], *b = &r->obj[oi];
     if (FXRT_NO_ZRANGE || !b->ranged)

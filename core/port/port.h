@@ -1,0 +1,55 @@
+/* port: what the core needs to know of its target, and its inlining policy.
+ * Every test of the compiler's architecture macros is here; the rest of the
+ * core asks these names. port/asm.h has the inline assembly.
+ *
+ *   FXRT_PORT_SMALL_ISA  1 on Armv6-M (Cortex-M0): no 32-bit divide, no
+ *                        CLZ, no 32 x 32 -> 64-bit multiply
+ *                        (fxrt_config.h's FX_HAVE_* defaults follow it)
+ *   FXRT_PORT_V6M_ASM    gcc on Armv6-M: Thumb-1 inline assembly
+ *   FXRT_PORT_V7M_ASM    gcc on Armv7-M or Armv7E-M (Cortex-M3, M4):
+ *                        Thumb-2 inline assembly
+ *   FXRT_PORT_THUMB_ASM  gcc on any Thumb target
+ *   FXRT_PORT_THUMB2_GCC gcc or clang on a Thumb-2 target (SMULL, SMLAL)
+ * Assembly is gcc's only: clang rejects '.syntax divided', and takes the C. */
+#ifndef FXRT_PORT_H
+#define FXRT_PORT_H
+
+#if defined(__ARM_ARCH_6M__)
+#define FXRT_PORT_SMALL_ISA 1
+#else
+#define FXRT_PORT_SMALL_ISA 0
+#endif
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__)
+#define FXRT_PORT_V6M_ASM 1
+#else
+#define FXRT_PORT_V6M_ASM 0
+#endif
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__))
+#define FXRT_PORT_V7M_ASM 1
+#else
+#define FXRT_PORT_V7M_ASM 0
+#endif
+#if defined(__GNUC__) && !defined(__clang__) && defined(__thumb__)
+#define FXRT_PORT_THUMB_ASM 1
+#else
+#define FXRT_PORT_THUMB_ASM 0
+#endif
+#if defined(__thumb2__) && defined(__GNUC__)
+#define FXRT_PORT_THUMB2_GCC 1
+#else
+#define FXRT_PORT_THUMB2_GCC 0
+#endif
+
+/* Inlining policy: FXRT_INLINE_WIDE marks functions that are inlined into
+ * their callers where the core has registers to spare (Armv7-M, the host)
+ * and kept out of line on Armv6-M, where inlining them spilled registers
+ * and grew their callers' frames beyond what the micro:bit's 2 KB stack
+ * holds. Each use says what it measured. */
+#if FXRT_PORT_SMALL_ISA
+#define FXRT_INLINE_WIDE __attribute__((noinline))
+#else
+#define FXRT_INLINE_WIDE inline __attribute__((always_inline))
+#endif
+
+#endif
