@@ -3,7 +3,7 @@
 #   CORE_NUM  the number-generic renderer, built once per number type
 # Paths are relative to core/, without .c.
 CORE_FX  := math/fx
-CORE_NUM := math/num math/color scene/cam scene/geom scene/mesh scene/world \
-            vis/render_setup vis/render_vis vis/render_row vis/reference frame/render frame/render_shade frame/render_sample \
+CORE_NUM := math/num math/color scene/cam scene/geom scene/plane scene/sphere scene/triangle scene/box scene/mesh scene/world \
+            vis/setup_forms vis/setup vis/setup_plane vis/setup_sphere vis/setup_triangle vis/setup_box vis/cull vis/order vis/render_vis vis/render_row vis/reference frame/render frame/render_shade frame/render_sample \
             light/shade light/shadow light/trace light/hit frame/raycast frame/api
 CORE_SRC := $(CORE_FX) $(CORE_NUM)

@@ -101,32 +101,21 @@ static inline fxrt_err_t fxrt_world_init(world_t *w, color_t background)
                                    &FXRT_CONFIG_SYMBOL);
 }
 
-/* Adding objects (declared in world.h, part of this API):
- *   int32_t world_add_plane(world_t *, vec3_t point, vec3_t normal, color_t);
- *   int32_t world_add_sphere(world_t *, vec3_t center, num_t radius, color_t);
- *   int32_t world_add_triangle(world_t *, vec3_t a, vec3_t b, vec3_t c, color_t);
- *   int32_t world_add_box(world_t *, vec3_t min, vec3_t max, color_t);
- * Each returns the object's id (0, 1, 2, ... in the order added, across all
- * kinds; nearer wins, equal depth goes to the lower id) or a negative
- * fxrt_err_t: FXRT_ERR_FULL when FXRT_MAX_<KIND> objects of that kind are
- * there already (a kind with capacity 0 is compiled out), FXRT_ERR_COORD,
- * FXRT_ERR_DIRECTION, FXRT_ERR_RADIUS, FXRT_ERR_COLOR, FXRT_ERR_BOX,
- * FXRT_ERR_TINY. A refused object leaves the world unchanged. A plane's
- * normal need not be unit length. A collinear triangle is accepted and
- * never hit. */
+/* Adding objects: fxrt_add (below) returns the object's id (0, 1, 2, ...
+ * in the order added, across all kinds; nearer wins, equal depth goes to
+ * the lower id) or a negative fxrt_err_t: FXRT_ERR_FULL when
+ * FXRT_MAX_<KIND> objects of that kind are there already (a kind with
+ * capacity 0 is compiled out), FXRT_ERR_COORD, FXRT_ERR_DIRECTION,
+ * FXRT_ERR_RADIUS, FXRT_ERR_COLOR, FXRT_ERR_BOX, FXRT_ERR_TINY. A refused
+ * object leaves the world unchanged. A plane's normal need not be unit
+ * length. A collinear triangle is accepted and never hit. */
 
 /* One object as data, for tables of objects (the scene compiler emits
- * them). p[] holds: plane point, normal; sphere centre; triangle a, b, c;
- * box min, max. radius: spheres only. */
-typedef struct {
-    geom_kind_t kind; /* GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX */
-    vec3_t p[3];
-    num_t radius;
-    color_t color;
-    material_t material; /* all zero: MATERIAL_FLAT */
-} fxrt_object_t;
+ * them): scene/kinds.h's geom_desc_t. p[] holds: plane point, normal;
+ * sphere centre; triangle a, b, c; box min, max. radius: spheres only. */
+typedef geom_desc_t fxrt_object_t;
 
-/* world_add_<kind> for o->kind, then world_set_material when the material
+/* world_add for o, then world_set_material when the material
  * is not flat. Returns the id or a negative fxrt_err_t (FXRT_ERR_KIND for
  * an unknown kind; a refused material removes nothing but leaves the
  * object flat, so check the code). */

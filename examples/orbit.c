@@ -35,22 +35,33 @@ static void must(int32_t r, const char *what)
         example_fail(what, fxrt_strerror(r));
 }
 
-/* Out of line: its call arguments then take stack only while it runs,
- * not during every frame's set-up as well. */
+/* One object of the world (fxrt_object_t: the kind's points in p[], a
+ * sphere's radius). */
+static void add(fxrt_object_t o, const char *what)
+{
+    must(fxrt_add(&world, &o), what);
+}
+
+/* Out of line: its objects then take stack only while it runs, not during
+ * every frame's set-up as well. */
 __attribute__((noinline)) static void build_world(void)
 {
     must(fxrt_world_init(&world, RGB(0.05, 0.1, 0.2)), "world");
-    must(world_add_plane(&world, v3(0, F16(-1), 0), v3(0, F16(1), 0), RGB(0.35, 0.55, 0.3)),
-         "plane");
-    must(world_add_sphere(&world, v3(0, 0, 0), F16(0.9), RGB(0.85, 0.3, 0.15)), "sphere");
-    must(world_add_sphere(&world, v3(F16(1.6), F16(-0.5), F16(0.8)), F16(0.5), RGB(0.2, 0.45, 0.9)),
-         "sphere");
-    must(world_add_box(&world, v3(F16(-2.2), F16(-1), F16(-0.6)), v3(F16(-1.2), F16(0.2), F16(0.4)),
-                       RGB(0.95, 0.8, 0.25)),
-         "box");
-    must(world_add_triangle(&world, v3(F16(-0.5), F16(-1), F16(-2.2)), v3(F16(1.5), F16(-1), F16(-1.8)),
-                            v3(F16(0.4), F16(1.4), F16(-2)), RGB(0.6, 0.25, 0.7)),
-         "triangle");
+    add((fxrt_object_t){.kind = GEOM_PLANE, .p = {v3(0, F16(-1), 0), v3(0, F16(1), 0)}, .color = RGB(0.35, 0.55, 0.3)},
+        "plane");
+    add((fxrt_object_t){.kind = GEOM_SPHERE, .p = {v3(0, 0, 0)}, .radius = F16(0.9), .color = RGB(0.85, 0.3, 0.15)},
+        "sphere");
+    add((fxrt_object_t){.kind = GEOM_SPHERE, .p = {v3(F16(1.6), F16(-0.5), F16(0.8))}, .radius = F16(0.5),
+                        .color = RGB(0.2, 0.45, 0.9)},
+        "sphere");
+    add((fxrt_object_t){.kind = GEOM_BOX, .p = {v3(F16(-2.2), F16(-1), F16(-0.6)), v3(F16(-1.2), F16(0.2), F16(0.4))},
+                        .color = RGB(0.95, 0.8, 0.25)},
+        "box");
+    add((fxrt_object_t){.kind = GEOM_TRIANGLE,
+                        .p = {v3(F16(-0.5), F16(-1), F16(-2.2)), v3(F16(1.5), F16(-1), F16(-1.8)),
+                              v3(F16(0.4), F16(1.4), F16(-2))},
+                        .color = RGB(0.6, 0.25, 0.7)},
+        "triangle");
 }
 
 int orbit_main(void)

@@ -111,28 +111,12 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
         t->radius = NUM_ZERO;
         for (int k = 0; k < 3; k++)
             t->p[k] = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-        switch (o->kind) {
-        case SCENE_PLANE:
-            t->kind = GEOM_PLANE;
-            t->p[0] = engine_vec(o->p[0]);
-            t->p[1] = engine_vec(o->p[1]);
-            break;
-        case SCENE_SPHERE:
-            t->kind = GEOM_SPHERE;
-            t->p[0] = engine_vec(o->p[0]);
-            t->radius = ENGINE_SYM(engine_num)(o->radius);
-            break;
-        case SCENE_TRIANGLE:
-            t->kind = GEOM_TRIANGLE;
-            for (int k = 0; k < 3; k++)
-                t->p[k] = engine_vec(o->p[k]);
-            break;
-        case SCENE_BOX:
-            t->kind = GEOM_BOX;
-            t->p[0] = engine_vec(o->p[0]);
-            t->p[1] = engine_vec(o->p[1]);
-            break;
-        }
+        /* The parser keeps a kind's fields in p[] and radius as the
+         * description does (scene/kinds.h), unused ones 0. */
+        t->kind = (geom_kind_t)o->kind;
+        for (int k = 0; k < 3; k++)
+            t->p[k] = engine_vec(o->p[k]);
+        t->radius = ENGINE_SYM(engine_num)(o->radius);
         t->material = engine_material(o);
         d->bounces |= material_bounces(t->material.kind);
     }
@@ -160,10 +144,10 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
 static const char *engine_kind_name(geom_kind_t k)
 {
     switch (k) {
-    case GEOM_PLANE: return "plane";
-    case GEOM_SPHERE: return "sphere";
-    case GEOM_TRIANGLE: return "triangle";
-    case GEOM_BOX: return "box";
+#define ENGINE_KIND_NAME(K, k, ...) case GEOM_##K: return #k;
+        FXRT_KINDS(ENGINE_KIND_NAME)
+#undef ENGINE_KIND_NAME
+    default: break;
     }
     return "object";
 }

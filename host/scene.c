@@ -80,6 +80,7 @@ typedef struct {
 typedef enum {
     SCENE_F_POINT,  /* 3 coordinates, |v| <= FXRT_COORD_LIMIT */
     SCENE_F_DIR,    /* 3 components, |v| <= FXRT_COORD_LIMIT, nonzero length */
+    SCENE_F_MAX,    /* a POINT not below the field before it on any axis (a box's max) */
     SCENE_F_COLOR,  /* 3 components in 0..1 */
     SCENE_F_RADIUS, /* 1 value in (0, FXRT_RADIUS_LIMIT] */
     SCENE_F_FOV,    /* 1 value in (0, 180) degrees */
@@ -113,22 +114,24 @@ typedef struct {
     {"material", SCENE_F_MATERIAL, 1}, {"specular", SCENE_F_COLOR, 1}, {"exponent", SCENE_F_EXPONENT, 1},     \
         {"reflection", SCENE_F_COLOR, 1}, { "index", SCENE_F_INDEX, 1 }
 #define SCENE_N_MATERIAL_FIELDS 5
-static const scene_shape_t scene_shape_plane = {
-    "plane", 8,
-    {{"point", SCENE_F_POINT, 0}, {"normal", SCENE_F_DIR, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
-static const scene_shape_t scene_shape_sphere = {
-    "sphere", 8,
-    {{"center", SCENE_F_POINT, 0}, {"radius", SCENE_F_RADIUS, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
-static const scene_shape_t scene_shape_triangle = {
-    "triangle", 9,
-    {{"a", SCENE_F_POINT, 0},
-     {"b", SCENE_F_POINT, 0},
-     {"c", SCENE_F_POINT, 0},
-     {"color", SCENE_F_COLOR, 0},
-     SCENE_MATERIAL_FIELDS}};
-static const scene_shape_t scene_shape_box = {
-    "box", 8,
-    {{"min", SCENE_F_POINT, 0}, {"max", SCENE_F_POINT, 0}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
+/* Each kind's statement, from the kinds table (scene/kinds.h): its fields
+ * (unused ones, type NONE, left out), then color and the material ones. */
+#define SCENE_NF_NONE 0
+#define SCENE_NF_POINT 1
+#define SCENE_NF_DIR 1
+#define SCENE_NF_RADIUS 1
+#define SCENE_NF_MAX 1
+#define SCENE_FIELD(f, t) SCENE_FIELD_##t(f, t)
+#define SCENE_FIELD_NONE(f, t)
+#define SCENE_FIELD_POINT(f, t) {#f, SCENE_F_##t, 0},
+#define SCENE_FIELD_DIR SCENE_FIELD_POINT
+#define SCENE_FIELD_RADIUS SCENE_FIELD_POINT
+#define SCENE_FIELD_MAX SCENE_FIELD_POINT
+#define SCENE_SHAPE(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
+    {#k,                                                                                                      \
+     SCENE_NF_##t1 + SCENE_NF_##t2 + SCENE_NF_##t3 + 1 + SCENE_N_MATERIAL_FIELDS,                             \
+     {SCENE_FIELD(f1, t1) SCENE_FIELD(f2, t2) SCENE_FIELD(f3, t3){"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}},
+static const scene_shape_t scene_kind_shape[] = {FXRT_KINDS(SCENE_SHAPE)};
 /* Lights: shadows is optional (default on). */
 static const scene_shape_t scene_shape_point = {
     "point light", 3, {{"position", SCENE_F_POINT, 0}, {"color", SCENE_F_COLOR, 0}, {"shadows", SCENE_F_ONOFF, 1}}};
@@ -151,8 +154,14 @@ static const scene_shape_t scene_shape_ortho = {
 /* Every field name of every statement. A run of values ends at any of
  * them, so "center 0 0 radius 1" reports "got 2" rather than trying to read
  * "radius" as a number. */
-static const char *const scene_all_fields[] = {"point", "normal", "center", "radius", "a",
-                                                "b",     "c",      "min",    "max",    "color",
+#define SCENE_KIND_FIELDS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)               \
+    SCENE_FIELD_NAME_##t1(f1) SCENE_FIELD_NAME_##t2(f2) SCENE_FIELD_NAME_##t3(f3)
+#define SCENE_FIELD_NAME_NONE(f)
+#define SCENE_FIELD_NAME_POINT(f) #f,
+#define SCENE_FIELD_NAME_DIR SCENE_FIELD_NAME_POINT
+#define SCENE_FIELD_NAME_RADIUS SCENE_FIELD_NAME_POINT
+#define SCENE_FIELD_NAME_MAX SCENE_FIELD_NAME_POINT
+static const char *const scene_all_fields[] = {FXRT_KINDS(SCENE_KIND_FIELDS) "color",
                                                 "eye",   "gaze",   "up",     "fov",    "scale",
                                                 "material", "specular", "exponent", "position", "direction",
                                                 "angle", "shadows", "reflection", "index"};
@@ -163,11 +172,12 @@ static const char *const scene_material_names[] = {"flat", "lambert", "phong", "
 #define SCENE_MATERIAL_LIST "flat, lambert, phong, reflective or transparent"
 
 /* Per object kind (indexed by scene_kind_t): names and capacities. */
-static const char *const scene_kind_plural[] = {"planes", "spheres", "triangles", "boxes"};
-static const char *const scene_kind_macro[] = {"FXRT_MAX_PLANES", "FXRT_MAX_SPHERES",
-                                               "FXRT_MAX_TRIANGLES", "FXRT_MAX_BOXES"};
-static const int scene_kind_capacity[] = {FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES,
-                                          FXRT_MAX_BOXES};
+#define SCENE_KIND_PLURAL(K, k, ks, ...) #ks,
+#define SCENE_KIND_MACRO(K, k, ks, cap, ...) #cap,
+#define SCENE_KIND_CAPACITY(K, k, ks, cap, ...) cap,
+static const char *const scene_kind_plural[] = {FXRT_KINDS(SCENE_KIND_PLURAL)};
+static const char *const scene_kind_macro[] = {FXRT_KINDS(SCENE_KIND_MACRO)};
+static const int scene_kind_capacity[] = {FXRT_KINDS(SCENE_KIND_CAPACITY)};
 
 /* Values read for one field, with their tokens so messages can quote what
  * the user wrote (e.g. "1e99999" rather than "inf"). */
@@ -186,7 +196,7 @@ typedef struct {
     int line; /* current line, 1-based */
     scene_t *out;
     int camera_line, image_line, background_line, ambient_line, depth_line, samples_line; /* 0 = not seen yet */
-    int kind_count[4];
+    int kind_count[SCENE_KINDS];
     int ntok;
     scene_tok_t tok[SCENE_MAX_TOKENS];
 } scene_parser_t;
@@ -374,6 +384,7 @@ static int scene_check_value(scene_parser_t *p, const char *what, scene_ftype_t 
 
     switch (type) {
     case SCENE_F_POINT:
+    case SCENE_F_MAX:
         if (!(fabs(v) <= FXRT_COORD_LIMIT))
             return scene_fail(p, "%s: value %s out of range (|coordinate| <= %g)", what, q.s,
                               (double)FXRT_COORD_LIMIT);
@@ -423,6 +434,7 @@ static int scene_ftype_count(scene_ftype_t type)
 {
     switch (type) {
     case SCENE_F_POINT:
+    case SCENE_F_MAX:
     case SCENE_F_DIR:
     case SCENE_F_COLOR:
         return 3;
@@ -810,24 +822,29 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
     mat_field = sh->nfields - SCENE_N_MATERIAL_FIELDS;
     if (scene_check_material(p, sh, &vals[mat_field]) != 0)
         return -1;
-    if (kind == SCENE_PLANE && scene_is_zero(scene_vec(&vals[1])))
-        return scene_fail(p, "normal has zero length");
-    if (kind == SCENE_PLANE) {
-        scene_vec_t n = scene_vec(&vals[1]), nq = scene_vq16(n);
-        double tn = scene_len(nq) > 0 ? scene_turn(n, nq) : INFINITY;
-        if (!(tn <= SCENE_TURN_CAP))
-            return scene_fail(p, "normal is too short for Q16.16: rounding it to 1/65536 turns it by %.3g LSB "
-                                 "(more than %g); directions are scale-free, so multiply it by e.g. 1000",
-                              tn, SCENE_TURN_CAP);
-    }
-    if (kind == SCENE_BOX) {
-        static const char axis[3] = {'x', 'y', 'z'};
-        int k;
-        for (k = 0; k < 3; k++) {
-            if (vals[0].v[k] > vals[1].v[k]) {
-                scene_quote_t lo = scene_quote(vals[0].t[k]);
-                scene_quote_t hi = scene_quote(vals[1].t[k]);
-                return scene_fail(p, "box min exceeds max on %c (%s > %s)", axis[k], lo.s, hi.s);
+    /* The kind's fields by type: a direction nonzero and not turned by
+     * Q16.16's rounding, a MAX point not below the field before it. */
+    for (f = 0; f < sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS; f++) {
+        const char *name = sh->field[f].name;
+        if (sh->field[f].type == SCENE_F_DIR) {
+            scene_vec_t n = scene_vec(&vals[f]), nq = scene_vq16(n);
+            if (scene_is_zero(n))
+                return scene_fail(p, "%s has zero length", name);
+            double tn = scene_len(nq) > 0 ? scene_turn(n, nq) : INFINITY;
+            if (!(tn <= SCENE_TURN_CAP))
+                return scene_fail(p, "%s is too short for Q16.16: rounding it to 1/65536 turns it by %.3g LSB "
+                                     "(more than %g); directions are scale-free, so multiply it by e.g. 1000",
+                                  name, tn, SCENE_TURN_CAP);
+        }
+        if (sh->field[f].type == SCENE_F_MAX) {
+            static const char axis[3] = {'x', 'y', 'z'};
+            for (int k = 0; k < 3; k++) {
+                if (vals[f - 1].v[k] > vals[f].v[k]) {
+                    scene_quote_t lo = scene_quote(vals[f - 1].t[k]);
+                    scene_quote_t hi = scene_quote(vals[f].t[k]);
+                    return scene_fail(p, "%s %s exceeds %s on %c (%s > %s)", sh->label, sh->field[f - 1].name, name,
+                                      axis[k], lo.s, hi.s);
+                }
             }
         }
     }
@@ -1084,18 +1101,19 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
         return scene_parse_samples(p);
     if (scene_tok_is(kw, "camera"))
         return scene_parse_camera(p);
-    if (scene_tok_is(kw, "plane"))
-        return scene_parse_object(p, SCENE_PLANE, &scene_shape_plane);
-    if (scene_tok_is(kw, "sphere"))
-        return scene_parse_object(p, SCENE_SPHERE, &scene_shape_sphere);
-    if (scene_tok_is(kw, "triangle"))
-        return scene_parse_object(p, SCENE_TRIANGLE, &scene_shape_triangle);
-    if (scene_tok_is(kw, "box"))
-        return scene_parse_object(p, SCENE_BOX, &scene_shape_box);
+    for (int k = 0; k < SCENE_KINDS; k++)
+        if (scene_tok_is(kw, scene_kind_shape[k].label))
+            return scene_parse_object(p, (scene_kind_t)k, &scene_kind_shape[k]);
     {
+        /* "..., samples, plane, sphere, triangle or box": the kinds' words. */
+        char kinds[256] = "";
+        for (int k = 0; k < SCENE_KINDS; k++) {
+            strcat(kinds, k == 0 ? "" : k == SCENE_KINDS - 1 ? " or " : ", ");
+            strcat(kinds, scene_kind_shape[k].label);
+        }
         scene_quote_t q = scene_quote(kw);
         return scene_fail(p, "unknown keyword '%s' (expected image, background, ambient, camera, "
-                             "light, depth, samples, plane, sphere, triangle or box)", q.s);
+                             "light, depth, samples, %s)", q.s, kinds);
     }
 }
 

@@ -5,9 +5,9 @@
 #define FXRT_HOST_SCENE_H
 
 #include <stddef.h>
-#include "../core/fxrt_config.h"
+#include "../core/scene/kinds.h" /* the kinds of object and their fields */
 
-#define SCENE_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
+#define SCENE_MAX_OBJECTS FXRT_RENDER_MAX_OBJECTS
 #define SCENE_MAX_LINE 1024 /* longest accepted line, in bytes, without newline */
 #define SCENE_DEFAULT_WIDTH 160
 #define SCENE_DEFAULT_HEIGHT 120
@@ -21,7 +21,10 @@ typedef struct {
 /* Largest Phong exponent ('exponent' is an integer in 1..this). */
 #define SCENE_MAX_EXPONENT FXRT_PHONG_MAX_EXPONENT
 
-typedef enum { SCENE_PLANE, SCENE_SPHERE, SCENE_TRIANGLE, SCENE_BOX } scene_kind_t;
+/* The kinds of object (scene/kinds.h), in the table's order: SCENE_PLANE, ... */
+#define SCENE_KIND_ENUM(K, ...) SCENE_##K,
+typedef enum { FXRT_KINDS(SCENE_KIND_ENUM) SCENE_KINDS } scene_kind_t;
+#undef SCENE_KIND_ENUM
 
 /* 'material flat|lambert|phong|reflective|transparent' on an object; flat
  * (the default) is the colour as is, unaffected by lights. */
@@ -42,8 +45,8 @@ typedef struct {
     scene_kind_t kind;
     int line;          /* 1-based line of the file it came from */
     double color[3];   /* 0..1 */
-    scene_vec_t p[3];  /* plane: point, normal; sphere: center; triangle: a, b, c; box: min, max */
-    double radius;     /* sphere only */
+    scene_vec_t p[3];  /* its kind's fields in table order (plane: point, normal; ...) */
+    double radius;     /* a RADIUS field (sphere), else 0 */
     scene_material_t material;
     double specular[3]; /* phong, reflective: fractions 0..1, else 0 */
     int exponent;       /* phong, reflective: 1..SCENE_MAX_EXPONENT, else 0 */

@@ -45,10 +45,10 @@ static void emit_color(FILE *f, color_t c)
 static const char *kind_name(geom_kind_t k)
 {
     switch (k) {
-    case GEOM_PLANE: return "GEOM_PLANE";
-    case GEOM_SPHERE: return "GEOM_SPHERE";
-    case GEOM_TRIANGLE: return "GEOM_TRIANGLE";
-    case GEOM_BOX: return "GEOM_BOX";
+#define EMIT_KIND_NAME(K, ...) case GEOM_##K: return "GEOM_" #K;
+        FXRT_KINDS(EMIT_KIND_NAME)
+#undef EMIT_KIND_NAME
+    default: break;
     }
     return "?";
 }
@@ -181,7 +181,23 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(data, "static const fxrt_object_t scene_objects[%d] = {\n", d.count ? d.count : 1);
     for (int i = 0; i < d.count; i++) {
         const fxrt_object_t *o = &d.obj[i];
-        int np = o->kind == GEOM_SPHERE ? 1 : o->kind == GEOM_TRIANGLE ? 3 : 2;
+        /* Its points (POINT, DIR and MAX fields), then its radius if any. */
+#define EMIT_NP_NONE 0
+#define EMIT_NP_POINT 1
+#define EMIT_NP_DIR 1
+#define EMIT_NP_MAX 1
+#define EMIT_NP_RADIUS 0
+#define EMIT_NR_NONE 0
+#define EMIT_NR_POINT 0
+#define EMIT_NR_DIR 0
+#define EMIT_NR_MAX 0
+#define EMIT_NR_RADIUS 1
+#define EMIT_POINTS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
+    EMIT_NP_##t1 + EMIT_NP_##t2 + EMIT_NP_##t3,
+#define EMIT_RADIUS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
+    EMIT_NR_##t1 + EMIT_NR_##t2 + EMIT_NR_##t3,
+        static const int points[] = {FXRT_KINDS(EMIT_POINTS)}, radius[] = {FXRT_KINDS(EMIT_RADIUS)};
+        int np = points[o->kind];
         fprintf(data, "    {.kind = %s, .p = {", kind_name(o->kind));
         for (int k = 0; k < np; k++) {
             if (k)
@@ -189,7 +205,7 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
             emit_vec(data, o->p[k]);
         }
         fputs("}, ", data);
-        if (o->kind == GEOM_SPHERE) {
+        if (radius[o->kind]) {
             fputs(".radius = ", data);
             emit_num(data, o->radius);
             fputs(", ", data);

@@ -6,8 +6,9 @@
 #include <string.h>
 
 #include "../core/scene/cam.h"
-#include "../core/scene/geom.h"
+#include "../core/scene/kinds.h"
 #include "../host/multi.h"
+#include "add.h"
 #include "diffk.h"
 
 #define DIFFK_SYM(name) MULTI_SYM(name)

@@ -238,6 +238,7 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
                        NULL);
             FUZZ_CHECK(fuzz_is_zero(o->p[2]) && o->radius == 0.0, NULL);
             break;
+        default: break;
         }
     }
     for (k = 0; k < 4; k++) {

@@ -87,8 +87,7 @@ for b in nobounce bounce samples2 adaptive; do
     m=$(arm-none-eabi-nm "$out/$b.elf" | awk '{print $NF}' | grep -E "$LIBM" || true)
     check "$b: no libm function linked (found: $m)" test -z "$m"
 done
-# Run mode of the sampling pass (core/render_row.c, render_sample.c,
-# render_setup.c) with samples 2 and one primitive kind at a time (the
+# Run mode of the sampling pass (core/vis/ and core/frame/) with samples 2 and one primitive kind at a time (the
 # scene compiler sets the other capacities to 0), on the M0 (no
 # FXRT_SPHERE_SEARCH) and the M3: every helper is used or marked, as the
 # firmware's -Wall -Wextra -Werror builds need (a plane-only scene once
@@ -103,8 +102,8 @@ for cpu in cortex-m0 cortex-m3; do
         # shellcheck disable=SC2086
         (cd "$caps_dir" && arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror -O2 \
             -mcpu=$cpu -mthumb -ffreestanding -c -DFXRT_NUMBER=1 $caps -DFXRT_MAX_LIGHTS=0 -DFXRT_MAX_SAMPLES=2 \
-            -DFXRT_ADAPTIVE=0 -DFXRT_RENDER_MAX_WIDTH=64 -I"$OLDPWD/core" "$OLDPWD/core/vis/render_row.c" \
-            "$OLDPWD/core/frame/render_sample.c" "$OLDPWD/core/vis/render_setup.c") >"$log" 2>&1
+            -DFXRT_ADAPTIVE=0 -DFXRT_RENDER_MAX_WIDTH=64 -I"$OLDPWD/core" "$OLDPWD"/core/vis/*.c \
+            "$OLDPWD"/core/frame/*.c) >"$log" 2>&1
         check "samples 2, only FXRT_MAX_$kind > 0, $cpu: run mode compiles with -Werror ($(grep -m1 error "$log"))" \
             test ! -s "$log"
     done
@@ -120,7 +119,7 @@ for cpu in cortex-m0 cortex-m3; do # the 16 builds side by side (each in a direc
         mkdir -p "$abl_dir/$cpu-$sw"
         (cd "$abl_dir/$cpu-$sw" && arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes \
             -Werror -O2 -mcpu=$cpu -mthumb -ffreestanding -c -DFXRT_NUMBER=1 -D$sw=1 -DFXRT_MAX_LIGHTS=0 \
-            -I"$OLDPWD/core" "$OLDPWD/core/vis/render_row.c" "$OLDPWD/core/vis/render_vis.c" "$OLDPWD/core/vis/render_setup.c") \
+            -I"$OLDPWD/core" "$OLDPWD"/core/vis/*.c) \
             >"$abl_dir/$cpu-$sw.log" 2>&1 &
     done
 done

@@ -7,6 +7,8 @@
  * core a configuration pulls in. */
 #include "fxrt.h"
 
+#include "add.h"
+
 #define P(x, y, z) vec3_make(F16(x), F16(y), F16(z))
 #define COL(r, g, b) color_make(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
 #define FR(r, g, b) color_make(F16(r), F16(g), F16(b)) /* fractions */

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "../core/fxrt.h"
+#include "add.h"
 #include "check.h"
 
 static num_t N(double x)

@@ -15,6 +15,7 @@
 
 #include "../core/frame/render.h"
 #include "../core/vis/render_int.h"
+#include "add.h"
 #include "check.h"
 
 #if FXRT_NUMBER == FXRT_Q16

@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "../core/fxrt.h"
+#include "add.h"
 #include "check.h"
 
 #define W 64

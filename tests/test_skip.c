@@ -30,6 +30,7 @@
 #include <time.h>
 
 #include "../core/fxrt.h"
+#include "add.h"
 #include "check.h"
 
 #if FXRT_NUMBER == FXRT_Q16

@@ -20,14 +20,7 @@ fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t worl
 
 int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
 {
-    int32_t id;
-    switch (o->kind) {
-    case GEOM_PLANE: id = world_add_plane(w, o->p[0], o->p[1], o->color); break;
-    case GEOM_SPHERE: id = world_add_sphere(w, o->p[0], o->radius, o->color); break;
-    case GEOM_TRIANGLE: id = world_add_triangle(w, o->p[0], o->p[1], o->p[2], o->color); break;
-    case GEOM_BOX: id = world_add_box(w, o->p[0], o->p[1], o->color); break;
-    default: return FXRT_ERR_KIND;
-    }
+    int32_t id = world_add(w, o);
     if (id >= 0 && o->material.kind != MATERIAL_FLAT) {
 #if FXRT_MAX_LIGHTS > 0
         fxrt_err_t e = world_set_material(w, id, &o->material);

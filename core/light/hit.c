@@ -19,18 +19,9 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
     num_t t = NUM_ZERO;
     vec3_t n = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     switch (kind) {
-#if FXRT_MAX_PLANES > 0
-    case GEOM_PLANE: geom_plane_surface(&w->planes[index], ray, &t, &n); break;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    case GEOM_SPHERE: geom_sphere_surface(&w->spheres[index], ray, &t, &n); break;
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    case GEOM_TRIANGLE: geom_triangle_surface(&w->triangles[index], ray, &t, &n); break;
-#endif
-#if FXRT_MAX_BOXES > 0
-    case GEOM_BOX: geom_box_surface(&w->boxes[index], ray, &t, &n); break;
-#endif
+#define HIT_SURFACE(K, k, ks, ...) FXRT_IF_##K(case GEOM_##K: geom_##k##_surface(&w->ks[index], ray, &t, &n); break;)
+        FXRT_KINDS(HIT_SURFACE)
+#undef HIT_SURFACE
     default: break;
     }
 #if FXRT_NUMBER == FXRT_Q16

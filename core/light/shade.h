@@ -34,7 +34,14 @@
  * entry with d_cap < 0 culls nothing. For a directional light the rays
  * are parallel: an object is skipped when the point's projection along
  * ldir falls outside the object's (two exact cross-product forms). */
-#define SHADOW_CULL_SLOTS (FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
+#define SHADOW_SLOT_CAP(K, k, ks, cap, solid, bounded, ...) +(bounded ? cap : 0)
+#define SHADOW_CULL_SLOTS (0 FXRT_KINDS(SHADOW_SLOT_CAP))
+/* Each bounded kind's first slot (SHADOW_SLOT_KIND): the capacities of the
+ * bounded kinds before it, by the enumeration's running count. */
+#define SHADOW_SLOT_ENUM(K, k, ks, cap, solid, bounded, ...)                                                  \
+    SHADOW_SLOT_##K, SHADOW_SLOT_##K##_LAST = SHADOW_SLOT_##K + (bounded ? cap : 0) - 1,
+enum { FXRT_KINDS(SHADOW_SLOT_ENUM) };
+#undef SHADOW_SLOT_ENUM
 #define SHADOW_CULL (FXRT_SHADOWS && FXRT_SHADOW_CULL && SHADOW_CULL_SLOTS > 0)
 #if SHADOW_CULL
 typedef union {

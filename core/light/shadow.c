@@ -15,22 +15,14 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
 {
     if (l->kind == LIGHT_DIRECTIONAL)
         return false; /* at infinity */
-#if FXRT_MAX_SPHERES > 0
-    if (kind == GEOM_SPHERE) {
-        const geom_sphere_t *s = &w->spheres[index];
-        vec3_t v = vec3_sub(l->position, s->center);
-        return vec3_dotw(v, v) < s->radius2;
+    switch (kind) {
+#define SHADOW_INSIDE(K, k, ks, cap, solid, ...)                                                              \
+    FXRT_WHEN(solid, FXRT_IF_##K(case GEOM_##K: return geom_##k##_contains(&w->ks[index], l->position);))
+        FXRT_KINDS(SHADOW_INSIDE)
+#undef SHADOW_INSIDE
+    default: break;
     }
-#endif
-#if FXRT_MAX_BOXES > 0
-    if (kind == GEOM_BOX) {
-        const geom_box_t *b = &w->boxes[index];
-        vec3_t q = l->position;
-        return q.x > b->min.x && q.x < b->max.x && q.y > b->min.y && q.y < b->max.y && q.z > b->min.z &&
-               q.z < b->max.z;
-    }
-#endif
-    (void)w, (void)kind, (void)index;
+    (void)w, (void)index;
     return false;
 }
 
@@ -134,31 +126,16 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
     for (uint8_t li = 0; li < w->n_lights; li++) {
         const light_t *L = &w->lights[li];
         shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
-#if FXRT_MAX_SPHERES > 0
-        for (uint16_t i = 0; i < w->n_spheres; i++)
-            shadow_cull_entry(&row[i], L, w->spheres[i].center, w->spheres[i].radius);
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-        for (uint16_t i = 0; i < w->n_triangles; i++) {
-            const geom_triangle_t *t = &w->triangles[i];
-            vec3_t lo = vec3_make(num_min(num_min(t->a.x, t->b.x), t->c.x), num_min(num_min(t->a.y, t->b.y), t->c.y),
-                                  num_min(num_min(t->a.z, t->b.z), t->c.z));
-            vec3_t hi = vec3_make(num_max(num_max(t->a.x, t->b.x), t->c.x), num_max(num_max(t->a.y, t->b.y), t->c.y),
-                                  num_max(num_max(t->a.z, t->b.z), t->c.z));
-            vec3_t c = vec3_make(num_half(num_add(lo.x, hi.x)), num_half(num_add(lo.y, hi.y)), num_half(num_add(lo.z, hi.z)));
-            num_t r = num_max(num_max(vec3_len(vec3_sub(t->a, c)), vec3_len(vec3_sub(t->b, c))), vec3_len(vec3_sub(t->c, c)));
-            shadow_cull_entry(&row[FXRT_MAX_SPHERES + i], L, c, r);
-        }
-#endif
-#if FXRT_MAX_BOXES > 0
-        for (uint16_t i = 0; i < w->n_boxes; i++) {
-            const geom_box_t *b = &w->boxes[i];
-            vec3_t c = vec3_make(num_half(num_add(b->min.x, b->max.x)), num_half(num_add(b->min.y, b->max.y)),
-                                 num_half(num_add(b->min.z, b->max.z)));
-            num_t r = num_max(vec3_len(vec3_sub(b->max, c)), vec3_len(vec3_sub(c, b->min)));
-            shadow_cull_entry(&row[FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + i], L, c, r);
-        }
-#endif
+        vec3_t c;
+        num_t r;
+#define SHADOW_CULL_ROW(K, k, ks, cap, solid, bounded, ...)                                                   \
+    FXRT_WHEN(bounded, FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) {                                \
+        geom_##k##_around(&w->ks[i], &c, &r);                                                                 \
+        shadow_cull_entry(&row[SHADOW_SLOT_##K + i], L, c, r);                                                \
+    }))
+        FXRT_KINDS(SHADOW_CULL_ROW)
+#undef SHADOW_CULL_ROW
+        (void)row, (void)c, (void)r;
     }
 }
 
@@ -261,44 +238,26 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
         rc = &own;
     }
 #endif
-#if FXRT_MAX_PLANES > 0
-    for (uint16_t i = 0; i < w->n_planes; i++)
-        if (w->planes[i].obj.id != skip_id && SHADOW_CASTS(w->planes[i].obj) && geom_plane_occludes(&w->planes[i], ray, tmax))
+    /* Per kind, its objects: an unbounded kind's have no cull entry. */
+#define SHADOW_LOOP(K, k, ks, cap, solid, bounded, ...) FXRT_IF_##K(SHADOW_LOOP_##bounded(K, k, ks))
+#define SHADOW_LOOP_0(K, k, ks)                                                                               \
+    for (uint16_t i = 0; i < w->n_##ks; i++)                                                                  \
+        if (w->ks[i].obj.id != skip_id && SHADOW_CASTS(w->ks[i].obj) && geom_##k##_occludes(&w->ks[i], ray, tmax)) \
             return true;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    {
-        const shadow_cull_t *e = SHADOW_ROW(0);
-        const geom_sphere_t *o = w->spheres;
-        for (uint16_t n = w->n_spheres; n > 0; n--, o++) {
-            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_sphere_occludes(o, ray, tmax))
-                return true;
-            SHADOW_NEXT(e);
-        }
+#define SHADOW_LOOP_1(K, k, ks)                                                                               \
+    {                                                                                                         \
+        const shadow_cull_t *e = SHADOW_ROW(SHADOW_SLOT_##K);                                                 \
+        const geom_##k##_t *o = w->ks;                                                                        \
+        for (uint16_t n = w->n_##ks; n > 0; n--, o++) {                                                       \
+            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_##k##_occludes(o, ray, tmax)) \
+                return true;                                                                                  \
+            SHADOW_NEXT(e);                                                                                   \
+        }                                                                                                     \
     }
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    {
-        const shadow_cull_t *e = SHADOW_ROW(FXRT_MAX_SPHERES);
-        const geom_triangle_t *o = w->triangles;
-        for (uint16_t n = w->n_triangles; n > 0; n--, o++) {
-            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_triangle_occludes(o, ray, tmax))
-                return true;
-            SHADOW_NEXT(e);
-        }
-    }
-#endif
-#if FXRT_MAX_BOXES > 0
-    {
-        const shadow_cull_t *e = SHADOW_ROW(FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES);
-        const geom_box_t *o = w->boxes;
-        for (uint16_t n = w->n_boxes; n > 0; n--, o++) {
-            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_box_occludes(o, ray, tmax))
-                return true;
-            SHADOW_NEXT(e);
-        }
-    }
-#endif
+    FXRT_KINDS(SHADOW_LOOP)
+#undef SHADOW_LOOP
+#undef SHADOW_LOOP_0
+#undef SHADOW_LOOP_1
     return false;
 }
 
@@ -339,7 +298,7 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const ge
                     const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
 {
     FXRT_COUNT(shadow_rays);
-    bool solid = kind == GEOM_SPHERE || kind == GEOM_BOX;
+    bool solid = (GEOM_SOLID_KINDS >> kind) & 1u;
     if (inside && solid && SHADOW_CASTS(*obj) && !shadow_light_inside(w, kind, index, l))
         return true;
     ray_t ray = {*p, *ldir};

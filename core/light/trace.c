@@ -67,40 +67,33 @@ __attribute__((noinline)) static bool trace_nearest(const world_t *w, const trac
     vec3_t n;
     const ray_t *ray = &tr->ray;
     FXRT_COUNT(secondary_rays);
-#if FXRT_MAX_PLANES > 0
-    for (uint16_t i = 0; i < w->n_planes; i++)
-        if (w->planes[i].obj.id != tr->from && geom_plane_hit(&w->planes[i], ray, &t))
-            trace_consider(hit, &found, t, GEOM_PLANE, i, w->planes[i].obj.id, false);
-#endif
+    /* The unbounded kinds first; the bounded ones only when the ray
+     * meets their bounds. A solid the ray starts in is met where the ray
+     * leaves it (its exit), any other object the ray leaves is not met. */
+#define TRACE_KIND(K, k, ks, cap, solid)                                                                      \
+    for (uint16_t i = 0; i < w->n_##ks; i++) {                                                                \
+        const geom_##k##_t *o = &w->ks[i];                                                                    \
+        TRACE_KIND_##solid(K, k)                                                                              \
+    }
+#define TRACE_KIND_0(K, k)                                                                                    \
+    if (o->obj.id != tr->from && geom_##k##_hit(o, ray, &t))                                                  \
+        trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, false);
+#define TRACE_KIND_1(K, k)                                                                                    \
+    if (o->obj.id == tr->from) {                                                                              \
+        if (tr->inward && geom_##k##_exit(o, ray, &t, &n))                                                    \
+            trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, true);                                     \
+    } else if (geom_##k##_hit(o, ray, &t))                                                                    \
+        trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, false);
+#define TRACE_UNBOUNDED(K, k, ks, cap, solid, bounded, ...) FXRT_UNLESS(bounded, FXRT_IF_##K(TRACE_KIND(K, k, ks, cap, solid)))
+#define TRACE_BOUNDED(K, k, ks, cap, solid, bounded, ...) FXRT_WHEN(bounded, FXRT_IF_##K(TRACE_KIND(K, k, ks, cap, solid)))
+    FXRT_KINDS(TRACE_UNBOUNDED)
     if (!trace_in_bounds(w, ray)) {
         FXRT_COUNT(bounds_skips);
         return found;
     }
-#if FXRT_MAX_SPHERES > 0
-    for (uint16_t i = 0; i < w->n_spheres; i++) {
-        const geom_sphere_t *s = &w->spheres[i];
-        if (s->obj.id == tr->from) {
-            if (tr->inward && geom_sphere_exit(s, ray, &t, &n))
-                trace_consider(hit, &found, t, GEOM_SPHERE, i, s->obj.id, true);
-        } else if (geom_sphere_hit(s, ray, &t))
-            trace_consider(hit, &found, t, GEOM_SPHERE, i, s->obj.id, false);
-    }
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    for (uint16_t i = 0; i < w->n_triangles; i++)
-        if (w->triangles[i].obj.id != tr->from && geom_triangle_hit(&w->triangles[i], ray, &t))
-            trace_consider(hit, &found, t, GEOM_TRIANGLE, i, w->triangles[i].obj.id, false);
-#endif
-#if FXRT_MAX_BOXES > 0
-    for (uint16_t i = 0; i < w->n_boxes; i++) {
-        const geom_box_t *b = &w->boxes[i];
-        if (b->obj.id == tr->from) {
-            if (tr->inward && geom_box_exit(b, ray, &t, &n))
-                trace_consider(hit, &found, t, GEOM_BOX, i, b->obj.id, true);
-        } else if (geom_box_hit(b, ray, &t))
-            trace_consider(hit, &found, t, GEOM_BOX, i, b->obj.id, false);
-    }
-#endif
+    FXRT_KINDS(TRACE_BOUNDED)
+#undef TRACE_UNBOUNDED
+#undef TRACE_BOUNDED
     (void)n;
     return found;
 }
@@ -113,28 +106,13 @@ __attribute__((noinline)) static void trace_surface(const world_t *w, const trac
                                                     vec3_t *n)
 {
     switch (h->kind) {
-#if FXRT_MAX_PLANES > 0
-    case GEOM_PLANE: geom_plane_surface(&w->planes[h->index], ray, t, n); break;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    case GEOM_SPHERE:
-        if (h->exit)
-            (void)geom_sphere_exit(&w->spheres[h->index], ray, t, n);
-        else
-            geom_sphere_surface(&w->spheres[h->index], ray, t, n);
-        break;
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    case GEOM_TRIANGLE: geom_triangle_surface(&w->triangles[h->index], ray, t, n); break;
-#endif
-#if FXRT_MAX_BOXES > 0
-    case GEOM_BOX:
-        if (h->exit)
-            (void)geom_box_exit(&w->boxes[h->index], ray, t, n);
-        else
-            geom_box_surface(&w->boxes[h->index], ray, t, n);
-        break;
-#endif
+#define TRACE_SURFACE(K, k, ks, cap, solid, ...)                                                              \
+    FXRT_IF_##K(case GEOM_##K:                                                                                \
+                FXRT_WHEN(solid, if (h->exit) (void)geom_##k##_exit(&w->ks[h->index], ray, t, n); else)       \
+                geom_##k##_surface(&w->ks[h->index], ray, t, n);                                              \
+                break;)
+        FXRT_KINDS(TRACE_SURFACE)
+#undef TRACE_SURFACE
     default: break;
     }
 }

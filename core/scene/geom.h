@@ -14,8 +14,6 @@
 #include "fxrt_err.h"
 #include "math/ray.h"
 
-typedef enum { GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX } geom_kind_t;
-
 /* How a surface responds to light (core/shade.c and core/trace.c have
  * the formulas):
  *   MATERIAL_FLAT         its colour as is, whatever the lights (the default)
@@ -60,31 +58,6 @@ typedef struct {
 #endif
 } geom_common_t;
 
-typedef struct {
-    vec3_t a; /* a point on the plane */
-    vec3_t n; /* unit normal */
-    geom_common_t obj;
-} geom_plane_t;
-
-typedef struct {
-    vec3_t center;
-    num_t radius;
-    numw_t radius2; /* radius^2, exact (Q32.32) */
-    geom_common_t obj;
-} geom_sphere_t;
-
-typedef struct {
-    vec3_t a, b, c;  /* vertices (edge tests use them directly, see geom.c) */
-    vec3_t n;        /* unit normal, zero when degenerate */
-    bool degenerate; /* collinear vertices: never hit */
-    geom_common_t obj;
-} geom_triangle_t;
-
-typedef struct {
-    vec3_t min, max; /* lbf and run corners, min <= max per axis */
-    geom_common_t obj;
-} geom_box_t;
-
 /* Component i (0 = x, 1 = y, 2 = z) of v. */
 static inline num_t geom_axis(vec3_t v, int i)
 {
@@ -127,61 +100,19 @@ static inline bool geom_point_less(vec3_t p, vec3_t q)
 fxrt_err_t geom_check_point(vec3_t p);
 fxrt_err_t geom_check_dir(vec3_t d);
 fxrt_err_t geom_check_color(color_t c);
-/* Per kind: the checks above, plus radius in (0, FXRT_RADIUS_LIMIT] and
- * min <= max per axis. A degenerate (collinear) triangle is in the domain:
- * it is accepted and never hit. */
-fxrt_err_t geom_plane_check(vec3_t point, vec3_t normal, color_t color);
-fxrt_err_t geom_sphere_check(vec3_t center, num_t radius, color_t color);
-fxrt_err_t geom_triangle_check(vec3_t a, vec3_t b, vec3_t c, color_t color);
-fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color);
+/* One value against |v| <= limit (NaN fails): FXRT_OK, FXRT_ERR_COORD, or
+ * in float and double FXRT_ERR_TINY for a nonzero |v| below 2^-16. */
+fxrt_err_t geom_check_num(num_t v, int32_t limit);
 
-/* Constructors fill the precomputed fields. They return false when the
- * input fails its domain check above (so code that bypasses the world's
- * add functions cannot build an object the renderer would get wrong); a
- * degenerate (collinear) triangle is accepted and never hit. */
-bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id);
-bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t color, uint16_t id);
-bool geom_triangle_make(geom_triangle_t *t, vec3_t a, vec3_t b, vec3_t c, color_t color, uint16_t id);
-bool geom_box_make(geom_box_t *b, vec3_t min, vec3_t max, color_t color, uint16_t id);
-
-bool geom_plane_hit(const geom_plane_t *p, const ray_t *ray, num_t *t);
-bool geom_sphere_hit(const geom_sphere_t *s, const ray_t *ray, num_t *t);
-bool geom_triangle_hit(const geom_triangle_t *tr, const ray_t *ray, num_t *t);
-bool geom_box_hit(const geom_box_t *b, const ray_t *ray, num_t *t);
-/* geom_box_hit that also gives the face hit: axis * 2 + (1 for the max
- * side), 0..5. */
-bool geom_box_hit_face(const geom_box_t *b, const ray_t *ray, num_t *t, uint8_t *face);
-
-/* Shadow rays: is the object hit at some t with 0 < t < tmax (tmax =
- * NUM_MAX: any t > 0)? Any hit, not the nearest, and no division: the
- * bounds are compared as fractions, exactly in Q16.16 (a sphere's own
- * kernel has no division, world_occluded uses it). */
-bool geom_plane_occludes(const geom_plane_t *p, const ray_t *ray, num_t tmax);
-bool geom_sphere_occludes(const geom_sphere_t *s, const ray_t *ray, num_t tmax);
-bool geom_triangle_occludes(const geom_triangle_t *tr, const ray_t *ray, num_t tmax);
-bool geom_box_occludes(const geom_box_t *b, const ray_t *ray, num_t tmax);
-
-/* Shading: where a ray that the renderer has already found to meet the
- * object meets its surface, and the unit geometric normal there (outward
- * for a sphere and a box, the stored normal for a plane and a triangle;
- * not yet turned towards the ray). Unlike the hit tests these never miss:
- * at a silhouette pixel, whose centre ray may pass just outside the
- * object, they return the nearest surface point the ray comes to (a
- * sphere's tangent point: the root with the discriminant clamped at 0; a
- * flat piece's plane ignoring its edges; a box's entry face by the slab
- * test ignoring the miss). *t may be 0 or negative only for a ray that
- * starts behind or on the surface. */
-void geom_plane_surface(const geom_plane_t *p, const ray_t *ray, num_t *t, vec3_t *n);
-void geom_sphere_surface(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n);
-void geom_triangle_surface(const geom_triangle_t *tr, const ray_t *ray, num_t *t, vec3_t *n);
-void geom_box_surface(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n);
-
-/* Secondary rays that start on a solid's surface and go into it
- * (core/trace.c): where the ray leaves it, and the outward unit normal
- * there. The far root of a sphere (the discriminant clamped at 0), the far
- * slab of a box. False when that exit is not at t > 0 (a ray that only
- * grazes the surface it starts on). */
-bool geom_sphere_exit(const geom_sphere_t *s, const ray_t *ray, num_t *t, vec3_t *n);
-bool geom_box_exit(const geom_box_t *b, const ray_t *ray, num_t *t, vec3_t *n);
+/* Helpers of the kinds' files (scene/KIND.c; the kinds' interface is in
+ * scene/kinds.h). geom_common_init: an object's shared part, flat
+ * material. The flat pieces' plane through a with unit normal n:
+ * geom_flat_t, the hit at t > 0 (false: none); geom_flat_occludes, a hit
+ * in (0, tmax), no division; geom_flat_surface_t, the plane's t for any
+ * ray (no side or sign test). */
+void geom_common_init(geom_common_t *c, color_t color, uint16_t id);
+bool geom_flat_t(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t *t);
+bool geom_flat_occludes(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t tmax);
+num_t geom_flat_surface_t(const vec3_t *a, const vec3_t *n, const ray_t *ray);
 
 #endif

@@ -14,7 +14,7 @@
 #ifndef FXRT_MESH_H
 #define FXRT_MESH_H
 
-#include "scene/geom.h"
+#include "scene/kinds.h"
 
 #define MESH_EDGES 0x07u /* matched edges (saturating at 7) */
 #define MESH_POS 0x08u   /* a neighbour's far vertex on the positive side */

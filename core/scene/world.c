@@ -5,20 +5,11 @@ void world_init(world_t *w, color_t background)
 {
     w->background = background;
     w->background_rgb = color_to_rgb8(background);
-#if FXRT_MAX_PLANES > 0
-    w->n_planes = 0;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    w->n_spheres = 0;
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    w->n_triangles = 0;
-#endif
+#define WORLD_EMPTY(K, k, ks, ...) FXRT_IF_##K(w->n_##ks = 0;)
+    FXRT_KINDS(WORLD_EMPTY)
+#undef WORLD_EMPTY
 #if WORLD_MESH
     w->mesh_n = 0;
-#endif
-#if FXRT_MAX_BOXES > 0
-    w->n_boxes = 0;
 #endif
 #if FXRT_MAX_LIGHTS > 0
     w->ambient = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -93,63 +84,11 @@ fxrt_err_t world_set_samples(world_t *w, int32_t samples, bool adaptive)
 uint16_t world_count(const world_t *w)
 {
     uint32_t n = 0; /* below 65536: fxrt_config.h bounds the total capacity */
-#if FXRT_MAX_PLANES > 0
-    n += w->n_planes;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    n += w->n_spheres;
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    n += w->n_triangles;
-#endif
-#if FXRT_MAX_BOXES > 0
-    n += w->n_boxes;
-#endif
+#define WORLD_COUNT(K, k, ks, ...) FXRT_IF_##K(n += w->n_##ks;)
+    FXRT_KINDS(WORLD_COUNT)
+#undef WORLD_COUNT
     (void)w;
     return (uint16_t)n;
-}
-
-/* A kind with capacity 0 is compiled out: adding one reports FXRT_ERR_FULL
- * without referencing its checks or constructor, so none of its code is
- * linked. */
-int32_t world_add_plane(world_t *w, vec3_t point, vec3_t normal, color_t color)
-{
-#if FXRT_MAX_PLANES > 0
-    fxrt_err_t e = geom_plane_check(point, normal, color);
-    if (e != FXRT_OK)
-        return e;
-    if (w->n_planes >= FXRT_MAX_PLANES)
-        return FXRT_ERR_FULL;
-    uint16_t id = world_count(w);
-    if (!geom_plane_make(&w->planes[w->n_planes], point, normal, color, id))
-        return FXRT_ERR_DIRECTION; /* a normal too short to normalise */
-    w->n_planes++;
-    return id;
-#else
-    (void)w;
-    (void)point, (void)normal, (void)color;
-    return FXRT_ERR_FULL;
-#endif
-}
-
-int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color)
-{
-#if FXRT_MAX_SPHERES > 0
-    fxrt_err_t e = geom_sphere_check(center, radius, color);
-    if (e != FXRT_OK)
-        return e;
-    if (w->n_spheres >= FXRT_MAX_SPHERES)
-        return FXRT_ERR_FULL;
-    uint16_t id = world_count(w);
-    geom_sphere_make(&w->spheres[w->n_spheres++], center, radius, color, id);
-    world_grow(w, vec3_sub(center, vec3_make(radius, radius, radius)),
-               vec3_add(center, vec3_make(radius, radius, radius)));
-    return id;
-#else
-    (void)w;
-    (void)center, (void)radius, (void)color;
-    return FXRT_ERR_FULL;
-#endif
 }
 
 #if WORLD_MESH
@@ -164,30 +103,40 @@ static void world_mesh_link_rest(world_t *w)
 }
 #endif
 
-int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t color)
+/* A kind with capacity 0 is compiled out: adding one reports FXRT_ERR_FULL
+ * without referencing its checks or constructor, so none of its code is
+ * linked. A bounded object grows the world's bounds (secondary rays). */
+int32_t world_add(world_t *w, const geom_desc_t *d)
 {
-#if FXRT_MAX_TRIANGLES > 0
-    fxrt_err_t e = geom_triangle_check(a, b, c, color);
-    if (e != FXRT_OK)
-        return e;
-    if (w->n_triangles >= FXRT_MAX_TRIANGLES)
-        return FXRT_ERR_FULL;
     uint16_t id = world_count(w);
-    geom_triangle_make(&w->triangles[w->n_triangles++], a, b, c, color, id);
+    fxrt_err_t e;
+    vec3_t lo, hi;
+    (void)lo, (void)hi, (void)id, (void)e;
+    switch (d->kind) {
+#define WORLD_ADD(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                         \
+    case GEOM_##K:                                                                                            \
+        FXRT_IF_##K(e = geom_##k##_check(GEOM_FIELDS(d, t1, t2, t3) d->color);                                \
+                    if (e != FXRT_OK) return e;                                                               \
+                    if (w->n_##ks >= cap) return FXRT_ERR_FULL;                                               \
+                    if (!geom_##k##_make(&w->ks[w->n_##ks], GEOM_FIELDS(d, t1, t2, t3) d->color, id))         \
+                        return FXRT_ERR_DIRECTION; /* a plane's normal too short to normalise */              \
+                    FXRT_WHEN(bounded, if (FXRT_MAX_DEPTH > 0) {                                           \
+                        geom_##k##_bounds(&w->ks[w->n_##ks], &lo, &hi);                                   \
+                        world_grow(w, lo, hi);                                                             \
+                    })                                                                                     \
+                    w->n_##ks++;                                                                              \
+                    break;)                                                                                   \
+        return FXRT_ERR_FULL;
+        FXRT_KINDS(WORLD_ADD)
+#undef WORLD_ADD
+    default:
+        return FXRT_ERR_KIND;
+    }
 #if WORLD_MESH
-    if (w->mesh_n == (uint16_t)(w->n_triangles - 1)) /* (else linked by world_mesh_update only) */
+    if (d->kind == GEOM_TRIANGLE && w->mesh_n == (uint16_t)(w->n_triangles - 1)) /* (else linked by world_mesh_update only) */
         world_mesh_link_rest(w);
 #endif
-    world_grow(w, vec3_make(num_min(a.x, num_min(b.x, c.x)), num_min(a.y, num_min(b.y, c.y)),
-                            num_min(a.z, num_min(b.z, c.z))),
-               vec3_make(num_max(a.x, num_max(b.x, c.x)), num_max(a.y, num_max(b.y, c.y)),
-                         num_max(a.z, num_max(b.z, c.z))));
     return id;
-#else
-    (void)w;
-    (void)a, (void)b, (void)c, (void)color;
-    return FXRT_ERR_FULL;
-#endif
 }
 
 void world_mesh_update(world_t *w)
@@ -197,25 +146,6 @@ void world_mesh_update(world_t *w)
     world_mesh_link_rest(w);
 #else
     (void)w;
-#endif
-}
-
-int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color)
-{
-#if FXRT_MAX_BOXES > 0
-    fxrt_err_t e = geom_box_check(min, max, color);
-    if (e != FXRT_OK)
-        return e;
-    if (w->n_boxes >= FXRT_MAX_BOXES)
-        return FXRT_ERR_FULL;
-    uint16_t id = world_count(w);
-    geom_box_make(&w->boxes[w->n_boxes++], min, max, color, id);
-    world_grow(w, min, max);
-    return id;
-#else
-    (void)w;
-    (void)min, (void)max, (void)color;
-    return FXRT_ERR_FULL;
 #endif
 }
 
@@ -237,26 +167,11 @@ bool world_hit(const world_t *w, const ray_t *ray, hit_t *hit)
 {
     bool found = false;
     num_t t;
-#if FXRT_MAX_PLANES > 0
-    for (uint16_t i = 0; i < w->n_planes; i++)
-        if (geom_plane_hit(&w->planes[i], ray, &t))
-            world_consider(hit, &found, t, GEOM_PLANE, i, &w->planes[i].obj);
-#endif
-#if FXRT_MAX_SPHERES > 0
-    for (uint16_t i = 0; i < w->n_spheres; i++)
-        if (geom_sphere_hit(&w->spheres[i], ray, &t))
-            world_consider(hit, &found, t, GEOM_SPHERE, i, &w->spheres[i].obj);
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    for (uint16_t i = 0; i < w->n_triangles; i++)
-        if (geom_triangle_hit(&w->triangles[i], ray, &t))
-            world_consider(hit, &found, t, GEOM_TRIANGLE, i, &w->triangles[i].obj);
-#endif
-#if FXRT_MAX_BOXES > 0
-    for (uint16_t i = 0; i < w->n_boxes; i++)
-        if (geom_box_hit(&w->boxes[i], ray, &t))
-            world_consider(hit, &found, t, GEOM_BOX, i, &w->boxes[i].obj);
-#endif
+#define WORLD_HIT(K, k, ks, ...)                                                                              \
+    FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) if (geom_##k##_hit(&w->ks[i], ray, &t))             \
+                    world_consider(hit, &found, t, GEOM_##K, i, &w->ks[i].obj);)
+    FXRT_KINDS(WORLD_HIT)
+#undef WORLD_HIT
     if (found)
         hit->point = ray_at(ray, hit->t);
     return found;
@@ -265,18 +180,9 @@ bool world_hit(const world_t *w, const ray_t *ray, hit_t *hit)
 const geom_common_t *world_common(const world_t *w, geom_kind_t kind, uint16_t index)
 {
     switch (kind) {
-#if FXRT_MAX_PLANES > 0
-    case GEOM_PLANE: return &w->planes[index].obj;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    case GEOM_SPHERE: return &w->spheres[index].obj;
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    case GEOM_TRIANGLE: return &w->triangles[index].obj;
-#endif
-#if FXRT_MAX_BOXES > 0
-    case GEOM_BOX: return &w->boxes[index].obj;
-#endif
+#define WORLD_COMMON(K, k, ks, ...) FXRT_IF_##K(case GEOM_##K: return &w->ks[index].obj;)
+        FXRT_KINDS(WORLD_COMMON)
+#undef WORLD_COMMON
     default: break;
     }
     return 0;
@@ -284,29 +190,17 @@ const geom_common_t *world_common(const world_t *w, geom_kind_t kind, uint16_t i
 
 bool world_find(const world_t *w, uint16_t id, geom_kind_t *kind, uint16_t *index)
 {
-    static const geom_kind_t kinds[4] = {GEOM_PLANE, GEOM_SPHERE, GEOM_TRIANGLE, GEOM_BOX};
-    uint16_t counts[4] = {0, 0, 0, 0};
-#if FXRT_MAX_PLANES > 0
-    counts[0] = w->n_planes;
-#endif
-#if FXRT_MAX_SPHERES > 0
-    counts[1] = w->n_spheres;
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    counts[2] = w->n_triangles;
-#endif
-#if FXRT_MAX_BOXES > 0
-    counts[3] = w->n_boxes;
-#endif
     /* Ids are assigned in order of addition across kinds, so search each
      * kind's array (ids within a kind increase). */
-    for (int k = 0; k < 4; k++)
-        for (uint16_t i = 0; i < counts[k]; i++)
-            if (world_common(w, kinds[k], i)->id == id) {
-                *kind = kinds[k];
-                *index = i;
-                return true;
-            }
+#define WORLD_FIND(K, k, ks, ...)                                                                             \
+    FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) if (w->ks[i].obj.id == id) {                        \
+        *kind = GEOM_##K;                                                                                     \
+        *index = i;                                                                                           \
+        return true;                                                                                          \
+    })
+    FXRT_KINDS(WORLD_FIND)
+#undef WORLD_FIND
+    (void)w, (void)id, (void)kind, (void)index;
     return false;
 }
 

@@ -6,7 +6,7 @@
 #ifndef FXRT_WORLD_H
 #define FXRT_WORLD_H
 
-#include "scene/geom.h"
+#include "scene/kinds.h"
 #include "scene/light.h"
 #include "scene/mesh.h"
 
@@ -21,18 +21,10 @@
 typedef struct {
     color_t background;
     rgb8_t background_rgb;
-#if FXRT_MAX_PLANES > 0
-    uint16_t n_planes;
-    geom_plane_t planes[FXRT_MAX_PLANES];
-#endif
-#if FXRT_MAX_SPHERES > 0
-    uint16_t n_spheres;
-    geom_sphere_t spheres[FXRT_MAX_SPHERES];
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-    uint16_t n_triangles;
-    geom_triangle_t triangles[FXRT_MAX_TRIANGLES];
-#endif
+    /* Per kind: how many, and the records (scene/kinds.h). */
+#define WORLD_KIND_FIELDS(K, k, ks, cap, ...) FXRT_IF_##K(uint16_t n_##ks; geom_##k##_t ks[cap];)
+    FXRT_KINDS(WORLD_KIND_FIELDS)
+#undef WORLD_KIND_FIELDS
 #if WORLD_MESH
     /* Triangles 0 .. mesh_n - 1 are linked into meshes (mesh_link): per
      * triangle its union-find parent and its MESH_ bits. A frame's set-up
@@ -40,10 +32,6 @@ typedef struct {
     uint16_t mesh_n;
     uint8_t mesh_up[FXRT_MAX_TRIANGLES];
     uint8_t mesh_bits[FXRT_MAX_TRIANGLES];
-#endif
-#if FXRT_MAX_BOXES > 0
-    uint16_t n_boxes;
-    geom_box_t boxes[FXRT_MAX_BOXES];
 #endif
 #if FXRT_MAX_LIGHTS > 0
     color_t ambient;  /* c_a, fractions 0..1 (default 0) */
@@ -97,19 +85,18 @@ void world_init(world_t *w, color_t background);
 /* How many objects the world holds: the id the next one gets. */
 uint16_t world_count(const world_t *w);
 
-/* Add an object after checking its domain (geom_<kind>_check) and its
- * kind's capacity. Ids are assigned here, in the order objects are added
- * (0, 1, 2, ... across all kinds): ties in depth go to the lower id.
- * Returns the new object's id (>= 0), or a negative fxrt_err_t, in which
+/* Add the object d describes (its material is not read: world_set_material)
+ * after checking its domain (geom_<kind>_check) and its kind's
+ * capacity. Ids are assigned here, in the order objects are added (0, 1,
+ * 2, ... across all kinds): ties in depth go to the lower id. Returns the
+ * new object's id (>= 0), or a negative fxrt_err_t (FXRT_ERR_KIND for an
+ * unknown kind, FXRT_ERR_FULL for a kind compiled out or full), in which
  * case the world is unchanged. */
-int32_t world_add_plane(world_t *w, vec3_t point, vec3_t normal, color_t color);
-int32_t world_add_sphere(world_t *w, vec3_t center, num_t radius, color_t color);
-int32_t world_add_triangle(world_t *w, vec3_t a, vec3_t b, vec3_t c, color_t color);
-int32_t world_add_box(world_t *w, vec3_t min, vec3_t max, color_t color);
+int32_t world_add(world_t *w, const geom_desc_t *d);
 
 /* Link every triangle into meshes again (mesh.h), after triangles were
- * written into w->triangles other than by world_add_triangle, or changed
- * in place (geom_triangle_make). world_add_triangle links each triangle
+ * written into w->triangles other than by world_add, or changed
+ * in place (geom_triangle_make). world_add links each triangle
  * as it adds it; without this call, a world whose triangles were written
  * directly has no back faces left out (mesh_n != n_triangles), and one
  * whose triangles were changed in place may have the wrong ones left out. */

@@ -170,6 +170,29 @@ typedef struct {
 #define RENDER_ESTEP_NO_ROW INT16_MIN /* (pixel offsets lie within +-2^15: FXRT_MAX_DIM) */
 #endif
 
+/* The visibility pass's records, by the form each kind takes (FORM and
+ * EDGES in scene/kinds.h): flat pieces of their own (RENDER_FLATS),
+ * spheres' forms (RENDER_ROUNDS), faces from the box-face pool
+ * (FXRT_RENDER_BOX_FACES, when RENDER_FACE_KINDS > 0), and the edge forms'
+ * row states (RENDER_EDGES: a flat piece's, then 4 per face). */
+#define RENDER_CAP_FLAT(K, k, ks, cap, solid, bounded, form, edges, ...) RENDER_CAP_FLAT_##form(cap)
+#define RENDER_CAP_FLAT_FLAT(cap) +(cap)
+#define RENDER_CAP_FLAT_ROUND(cap)
+#define RENDER_CAP_FLAT_FACES(cap)
+#define RENDER_CAP_ROUND(K, k, ks, cap, solid, bounded, form, edges, ...) RENDER_CAP_ROUND_##form(cap)
+#define RENDER_CAP_ROUND_FLAT(cap)
+#define RENDER_CAP_ROUND_ROUND(cap) +(cap)
+#define RENDER_CAP_ROUND_FACES(cap)
+#define RENDER_CAP_FACES(K, k, ks, cap, solid, bounded, form, edges, ...) RENDER_CAP_FACES_##form(cap)
+#define RENDER_CAP_FACES_FLAT(cap)
+#define RENDER_CAP_FACES_ROUND(cap)
+#define RENDER_CAP_FACES_FACES(cap) +(cap)
+#define RENDER_CAP_EDGES(K, k, ks, cap, solid, bounded, form, edges, ...) +(edges) * (cap)
+#define RENDER_FLATS (0 FXRT_KINDS(RENDER_CAP_FLAT))
+#define RENDER_ROUNDS (0 FXRT_KINDS(RENDER_CAP_ROUND))
+#define RENDER_FACE_KINDS (0 FXRT_KINDS(RENDER_CAP_FACES))
+#define RENDER_EDGES (0 FXRT_KINDS(RENDER_CAP_EDGES) + (RENDER_FACE_KINDS > 0 ? 4 * FXRT_RENDER_BOX_FACES : 0))
+
 /* A flat piece: a plane (no edges), a triangle (3) or a box face (4). */
 typedef struct {
     render_lin_t n, d;  /* N and D: the hit is in front when they share a strict sign */
@@ -311,21 +334,22 @@ typedef struct {
     const cam_t *cam;
     uint16_t count;
     render_obj_t obj[FXRT_RENDER_MAX_OBJECTS];
-    /* Per-kind records, sized by the per-kind capacities. */
-#if FXRT_MAX_SPHERES > 0
-    render_sphere_t spheres[FXRT_MAX_SPHERES];
+    /* The records, by form (scene/kinds.h), sized by the capacities of the
+     * kinds of each form; *_used: how many this frame's objects took. */
+#if RENDER_ROUNDS > 0
+    render_sphere_t spheres[RENDER_ROUNDS];
     render_quad_t sphere_a; /* a = |r|^2, shared by every sphere */
 #endif
-#if FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES > 0
-    render_flat_t flats[FXRT_MAX_PLANES + FXRT_MAX_TRIANGLES]; /* one per plane or triangle */
+#if RENDER_FLATS > 0
+    render_flat_t flats[RENDER_FLATS]; /* one per plane or triangle */
 #endif
-#if FXRT_MAX_BOXES > 0
+#if RENDER_FACE_KINDS > 0
     render_face_t box_faces[FXRT_RENDER_BOX_FACES]; /* the faces a box can be hit through, box after box */
-    uint16_t box_used;
 #endif
-#if RENDER_ESTEP && FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES > 0
-    /* The edges' row states: 3 per triangle, then 4 per box face. */
-    render_estep_t estep[3 * FXRT_MAX_TRIANGLES + (FXRT_MAX_BOXES > 0 ? 4 * FXRT_RENDER_BOX_FACES : 0)];
+    uint16_t flats_used, spheres_used, box_used, estep_used;
+#if RENDER_ESTEP && RENDER_EDGES > 0
+    /* The edges' row states: a flat piece's (a triangle's 3), then 4 per box face. */
+    render_estep_t estep[RENDER_EDGES];
 #endif
     const char *error; /* why render_setup failed, or NULL */
     /* Per column: stamp << 17 | depth-known << 16 | object (index into

@@ -1,0 +1,183 @@
+/* kinds: the kinds of object a world holds. One row of FXRT_KINDS per
+ * kind, and its record below: every per-kind array, loop and switch of
+ * the core (the world, shadows, secondary rays, shading, set-up, the API)
+ * and of the host tools (the scene language, the scene compiler) is made
+ * from this table. docs/ARCHITECTURE.md, "A new kind", has the steps.
+ *
+ * X(KIND, kind, kinds, CAPACITY, SOLID, BOUNDED, FORM, EDGES, F1, T1, F2, T2, F3, T3):
+ *   KIND      the enum name's suffix: GEOM_KIND
+ *   kind      the infix of its functions (geom_kind_hit, render_setup_kind)
+ *             and its scene keyword
+ *   kinds     the world's array (w->kinds) and count (w->n_kinds)
+ *   CAPACITY  its capacity (fxrt_config.h); 0 compiles the kind out
+ *   SOLID     1: it has an inside (geom_kind_exit, geom_kind_contains)
+ *   BOUNDED   1: it is finite (secondary rays' bounds, shadow culling)
+ *   FORM      what the visibility pass makes of it (vis/render.h):
+ *             FLAT one flat piece (N, D and its edge forms), ROUND a
+ *             sphere's forms, FACES flat pieces from the box-face pool
+ *   EDGES     a FLAT piece's edge forms (0..3)
+ *   Fi Ti     its fields, in the scene language's words and in the order
+ *             of geom_desc_t's p[] (a RADIUS field is its radius): name
+ *             and type (POINT, DIR nonzero, RADIUS, MAX a point not below
+ *             the field before on any axis; _ NONE for an unused one)
+ * In world order: planes first (the renderer's planes lead its objects). */
+#ifndef FXRT_SCENE_KINDS_H
+#define FXRT_SCENE_KINDS_H
+
+#include "scene/geom.h"
+
+/*  X(KIND,     kind,     kinds,     CAPACITY,           SOLID BOUNDED FORM   EDGES  fields ...) */
+#define FXRT_KINDS(X)                                                                                         \
+    X(PLANE,    plane,    planes,    FXRT_MAX_PLANES,    0,    0,      FLAT,  0,     point, POINT, normal, DIR, _, NONE) \
+    X(SPHERE,   sphere,   spheres,   FXRT_MAX_SPHERES,   1,    1,      ROUND, 0,     center, POINT, radius, RADIUS, _, NONE) \
+    X(TRIANGLE, triangle, triangles, FXRT_MAX_TRIANGLES, 0,    1,      FLAT,  3,     a, POINT, b, POINT, c, POINT) \
+    X(BOX,      box,      boxes,     FXRT_MAX_BOXES,     1,    1,      FACES, 0,     min, POINT, max, MAX, _, NONE)
+
+/* FXRT_IF_KIND(...): its arguments where the kind is compiled in, nothing
+ * where its capacity is 0. */
+#if FXRT_MAX_PLANES > 0
+#define FXRT_IF_PLANE(...) __VA_ARGS__
+#else
+#define FXRT_IF_PLANE(...)
+#endif
+#if FXRT_MAX_SPHERES > 0
+#define FXRT_IF_SPHERE(...) __VA_ARGS__
+#else
+#define FXRT_IF_SPHERE(...)
+#endif
+#if FXRT_MAX_TRIANGLES > 0
+#define FXRT_IF_TRIANGLE(...) __VA_ARGS__
+#else
+#define FXRT_IF_TRIANGLE(...)
+#endif
+#if FXRT_MAX_BOXES > 0
+#define FXRT_IF_BOX(...) __VA_ARGS__
+#else
+#define FXRT_IF_BOX(...)
+#endif
+
+/* Helpers for the tables' users: FXRT_WHEN(FLAG, ...) keeps its
+ * arguments when FLAG is 1 (a SOLID or BOUNDED column), drops them when 0. */
+#define FXRT_WHEN(flag, ...) FXRT_WHEN_##flag(__VA_ARGS__)
+#define FXRT_WHEN_0(...)
+#define FXRT_WHEN_1(...) __VA_ARGS__
+#define FXRT_UNLESS(flag, ...) FXRT_WHEN_##flag##_NOT(__VA_ARGS__)
+#define FXRT_WHEN_0_NOT(...) __VA_ARGS__
+#define FXRT_WHEN_1_NOT(...)
+
+#define GEOM_KIND_ENUM(K, ...) GEOM_##K,
+typedef enum { FXRT_KINDS(GEOM_KIND_ENUM) GEOM_KINDS } geom_kind_t;
+#undef GEOM_KIND_ENUM
+
+/* Bit GEOM_KIND is set for each solid kind. */
+#define GEOM_SOLID_BIT(K, k, ks, cap, solid, ...) | (solid << GEOM_##K)
+#define GEOM_SOLID_KINDS (0u FXRT_KINDS(GEOM_SOLID_BIT))
+
+/* One object as data (the public API's fxrt_object_t): p[] holds its
+ * kind's fields in table order (plane point, normal; sphere centre;
+ * triangle a, b, c; box min, max), radius a RADIUS field. */
+typedef struct {
+    geom_kind_t kind;
+    vec3_t p[3];
+    num_t radius;
+    color_t color;
+    material_t material; /* all zero: MATERIAL_FLAT */
+} geom_desc_t;
+
+/* ---- the records --------------------------------------------------------- */
+
+typedef struct {
+    vec3_t a; /* a point on the plane */
+    vec3_t n; /* unit normal */
+    geom_common_t obj;
+} geom_plane_t;
+
+typedef struct {
+    vec3_t center;
+    num_t radius;
+    numw_t radius2; /* radius^2, exact (Q32.32) */
+    geom_common_t obj;
+} geom_sphere_t;
+
+typedef struct {
+    vec3_t a, b, c;  /* vertices (edge tests use them directly, see triangle.c) */
+    vec3_t n;        /* unit normal, zero when degenerate */
+    bool degenerate; /* collinear vertices: never hit */
+    geom_common_t obj;
+} geom_triangle_t;
+
+typedef struct {
+    vec3_t min, max; /* lbf and run corners, min <= max per axis */
+    geom_common_t obj;
+} geom_box_t;
+
+/* Each kind's constructor and domain check, on its fields as written. */
+bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id);
+bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t color, uint16_t id);
+bool geom_triangle_make(geom_triangle_t *t, vec3_t a, vec3_t b, vec3_t c, color_t color, uint16_t id);
+bool geom_box_make(geom_box_t *b, vec3_t min, vec3_t max, color_t color, uint16_t id);
+fxrt_err_t geom_plane_check(vec3_t point, vec3_t normal, color_t color);
+fxrt_err_t geom_sphere_check(vec3_t center, num_t radius, color_t color);
+fxrt_err_t geom_triangle_check(vec3_t a, vec3_t b, vec3_t c, color_t color);
+fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color);
+/* geom_box_hit that also gives the face hit: axis * 2 + (1 for the max
+ * side), 0..5. */
+bool geom_box_hit_face(const geom_box_t *b, const ray_t *ray, num_t *t, uint8_t *face);
+
+/* ---- every kind's interface (scene/KIND.c) --------------------------------
+ *   geom_K_check     its fields (in table order) and colour against the
+ *                    domain (geom.h): FXRT_OK or the fxrt_err_t that refuses
+ *                    them
+ *   geom_K_make      the record from checked fields, colour and scene id:
+ *                    false for a plane whose normal is too short to
+ *                    normalise
+ *   geom_K_hit       the nearest hit with t > 0 (in Q16.16 t >= 1 LSB), or
+ *                    false; d is unit length, so t is a distance. A hit
+ *                    beyond the number range saturates to NUM_MAX and still
+ *                    counts (a far hit, not a miss)
+ *   geom_K_occludes  shadow rays: any hit with 0 < t < tmax (tmax NUM_MAX:
+ *                    any t > 0), no division, exact in Q16.16
+ *   geom_K_surface   shading: where a ray that the renderer found to meet
+ *                    the object meets its surface, and the unit geometric
+ *                    normal there (outward for solids; not yet turned
+ *                    towards the ray). Never misses: at a silhouette the
+ *                    nearest surface point the ray comes to
+ * for a bounded kind:
+ *   geom_K_bounds    a box around it: lo <= hi on every axis
+ *   geom_K_around    a sphere around it, centre c and radius r (shadow-ray
+ *                    culling: light/shadow.c)
+ * and for a solid:
+ *   geom_K_exit      a secondary ray that starts on the surface and goes
+ *                    in: where it leaves, and the outward normal there;
+ *                    false when that is not at t > 0
+ *   geom_K_contains  is point p strictly inside? */
+#define GEOM_KIND_API(K, k, ...)                                                                              \
+    bool geom_##k##_hit(const geom_##k##_t *o, const ray_t *ray, num_t *t);                                   \
+    bool geom_##k##_occludes(const geom_##k##_t *o, const ray_t *ray, num_t tmax);                            \
+    void geom_##k##_surface(const geom_##k##_t *o, const ray_t *ray, num_t *t, vec3_t *n);
+#define GEOM_SOLID_API(K, k, ks, cap, solid, bounded, ...)                                                    \
+    FXRT_WHEN(bounded, void geom_##k##_bounds(const geom_##k##_t *o, vec3_t *lo, vec3_t *hi);                 \
+              void geom_##k##_around(const geom_##k##_t *o, vec3_t *c, num_t *r);)                            \
+    FXRT_WHEN(solid, bool geom_##k##_exit(const geom_##k##_t *o, const ray_t *ray, num_t *t, vec3_t *n);      \
+              bool geom_##k##_contains(const geom_##k##_t *o, vec3_t p);)
+FXRT_KINDS(GEOM_KIND_API)
+FXRT_KINDS(GEOM_SOLID_API)
+#undef GEOM_KIND_API
+#undef GEOM_SOLID_API
+
+/* GEOM_FIELDS(d, T1, T2, T3): description d's fields as the arguments of
+ * its kind's geom_K_check and geom_K_make (each followed by a comma): p[]
+ * in order for points, directions and MAX points, radius for a RADIUS. */
+#define GEOM_FIELDS(d, t1, t2, t3) GEOM_ARG_##t1(d, 0) GEOM_ARG_##t2(d, GEOM_NP_##t1) GEOM_ARG_##t3(d, GEOM_NP_##t1 + GEOM_NP_##t2)
+#define GEOM_ARG_NONE(d, i)
+#define GEOM_ARG_POINT(d, i) (d)->p[i],
+#define GEOM_ARG_DIR GEOM_ARG_POINT
+#define GEOM_ARG_MAX GEOM_ARG_POINT
+#define GEOM_ARG_RADIUS(d, i) (d)->radius,
+#define GEOM_NP_NONE 0
+#define GEOM_NP_POINT 1
+#define GEOM_NP_DIR 1
+#define GEOM_NP_MAX 1
+#define GEOM_NP_RADIUS 0
+
+#endif

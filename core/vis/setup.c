@@ -1,0 +1,161 @@
+/* setup: the visibility pass's per-frame set-up (render_vis_setup): every
+ * object's records, its camera-space coverage forms, screen bounds and
+ * depth range by its kind's set-up (vis/setup_KIND.c), the back faces of
+ * closed meshes, the visiting order and the rows' object masks. See
+ * docs/ARCHITECTURE.md for the method. */
+#include "vis/setup.h"
+
+#if FXRT_NUMBER == FXRT_Q16
+/* Do N and D share one strict sign over columns x0..x1 of output rows
+ * r0..r1? Both are linear in the pixel offsets, so their signs at the
+ * rectangle's four corners (exact integer values) decide for every pixel
+ * inside it. */
+static bool render_flat_front(const cam_t *cam, const render_flat_t *f, int32_t x0, int32_t x1, int32_t r0, int32_t r1)
+{
+    if (FXRT_NO_BOUNDS || x0 > x1 || r0 > r1)
+        return false; /* (without bounds every pixel is scanned) */
+    int pos = 0, neg = 0;
+    for (int k = 0; k < 4; k++) {
+        int32_t ix = 2 * ((k & 1) ? x1 : x0) - cam->width + 1, iy = cam->height - 1 - 2 * ((k & 2) ? r1 : r0);
+        render_k_t n = rlin_at(&f->n, ix, iy), d = rlin_at(&f->d, ix, iy);
+        pos += n > 0 && d > 0;
+        neg += n < 0 && d < 0;
+    }
+    return pos == 4 || neg == 4;
+}
+#endif
+
+/* (Re)compute object i's forms and bounds from its world object. */
+void render_setup_object(vis_t *r, uint16_t i)
+{
+    const world_t *w = r->world;
+    const cam_t *cam = r->cam;
+    rext_t ext = {(uint32_t)(cam->width - 1), (uint32_t)(cam->height - 1)};
+    render_obj_t *o = &r->obj[i];
+    (void)ext;
+    (void)w;
+    switch (o->geom) {
+#define RENDER_SETUP_CASE(K, k, ks, ...) FXRT_IF_##K(case GEOM_##K: render_setup_##k(r, ext, &w->ks[o->index], o); break;)
+        FXRT_KINDS(RENDER_SETUP_CASE)
+#undef RENDER_SETUP_CASE
+    default: break;
+    }
+    for (int k = 0; k < o->nflat && (o->kind == RENDER_FLAT || o->kind == RENDER_BOX); k++) {
+        render_flat_t *f = render_face(o, k);
+        f->front = false;
+#if FXRT_NUMBER == FXRT_Q16
+        if (o->kind == RENDER_FLAT)
+            f->front = render_flat_front(cam, f, o->x0, o->x1, o->r0, o->r1);
+        else
+            f->front = render_flat_front(cam, f, o->u.face[k].x0, o->u.face[k].x1, o->u.face[k].r0, o->u.face[k].r1);
+#endif
+    }
+}
+
+/* Register an object of the world in scene-array order. */
+static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_common_t *c)
+{
+    uint16_t i = r->count++;
+    render_obj_t *o = &r->obj[i];
+    o->geom = kind;
+    o->index = index;
+    o->id = c->id;
+    o->rgb = c->rgb;
+#if FXRT_PIXEL == FXRT_RGB565
+    o->px = render_565(c->rgb);
+#endif
+    o->ranged = false;
+#if FXRT_MAX_LIGHTS > 0
+    o->flat = c->mat.kind == MATERIAL_FLAT;
+#else
+    o->flat = true;
+#endif
+    /* Its records, by the form its kind takes (scene/kinds.h): a flat
+     * piece or a sphere's forms of their own, or box faces from the pool
+     * (boxes come last: the rest of the pool). */
+    switch (kind) {
+#define RENDER_RECORDS(K, k, ks, cap, solid, bounded, form, ...) FXRT_IF_##K(case GEOM_##K: RENDER_RECORDS_##form; break;)
+#define RENDER_RECORDS_FLAT o->u.flat = &r->flats[r->flats_used++]
+#define RENDER_RECORDS_ROUND o->u.sphere = &r->spheres[r->spheres_used++]
+#define RENDER_RECORDS_FACES o->u.face = &r->box_faces[r->box_used]
+        FXRT_KINDS(RENDER_RECORDS)
+#undef RENDER_RECORDS
+#undef RENDER_RECORDS_FLAT
+#undef RENDER_RECORDS_ROUND
+#undef RENDER_RECORDS_FACES
+    default: break;
+    }
+    render_setup_object(r, i);
+#if RENDER_SROWS
+    if (o->kind == RENDER_SPHERE && index < FXRT_COHERENT_SPHERES)
+        render_srow_setup(r, i);
+#endif
+#if RENDER_HINTS
+    if (o->kind == RENDER_FLAT || o->kind == RENDER_BOX) /* row coherence's guesses: a fixed start each frame */
+        for (int k = 0; k < o->nflat; k++)
+            for (int j = 0; j < 6; j++)
+                render_face(o, k)->hint[j] = 0;
+#endif
+#if RENDER_ESTEP && RENDER_EDGES > 0
+    /* The edges' row states, without columns yet this frame. */
+    if (o->kind != RENDER_SPHERE)
+        for (int k = 0; k < o->nflat; k++) {
+            render_flat_t *f = render_face(o, k);
+            f->es = f->edges ? &r->estep[r->estep_used] : NULL;
+            for (int j = 0; j < f->edges; j++) {
+                f->es[j].iy = RENDER_ESTEP_NONE;
+                f->es[j].dk = RENDER_ESTEP_NONE;
+                f->es[j].next = RENDER_ESTEP_NO_ROW;
+            }
+            r->estep_used = (uint16_t)(r->estep_used + f->edges);
+        }
+#endif
+    if (o->kind == RENDER_BOX || o->kind == RENDER_ALL)
+        r->box_used = (uint16_t)(r->box_used + o->nflat);
+}
+
+const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam)
+{
+    r->error = NULL;
+    if (cam->width > FXRT_RENDER_MAX_WIDTH)
+        return r->error = "image wider than FXRT_RENDER_MAX_WIDTH";
+    r->flats_used = r->spheres_used = r->box_used = r->estep_used = 0;
+    r->world = w;
+    r->cam = cam;
+    r->count = 0;
+    r->row_win = 0;
+#if FXRT_NUMBER == FXRT_Q16
+    r->scache = NULL;
+#endif
+    r->want_keys = false;
+#if FXRT_MAX_SAMPLES > 1
+    r->sampled = world_samples(w) > 1;
+#endif
+#if RENDER_VIS
+    r->track = world_samples(w) > 1;
+#if FXRT_MAX_LIGHTS > 0
+    r->track = r->track || w->n_lit > 0;
+#endif
+#endif
+#if FXRT_MAX_PLANES > 0
+    r->nplanes = w->n_planes;
+#else
+    r->nplanes = 0;
+#endif
+    for (int32_t x = 0; x < cam->width; x++)
+        r->owner[x] = 0;
+    r->stamp = 0;
+#if RENDER_MESH
+    render_cull_meshes(r); /* before the triangles are set up: culled ones are not */
+#endif
+#define RENDER_ADD_KIND(K, k, ks, ...) FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) render_add(r, GEOM_##K, i, &w->ks[i].obj);)
+    FXRT_KINDS(RENDER_ADD_KIND)
+#undef RENDER_ADD_KIND
+#if !FXRT_NO_ORDER
+    render_order(r);
+#endif
+#if RENDER_ROW_MASKS
+    render_row_masks(r);
+#endif
+    return r->error;
+}
