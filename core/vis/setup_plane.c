@@ -6,7 +6,7 @@
 /* Does plane f cover a pixel of the row of pixel offset iy? Along a row
  * N and D are linear, so their front test (one strict sign) holds on one
  * interval of columns, which is empty when it fails at both ends. */
-static bool render_plane_on_row(const cam_t *cam, const render_flat_t *f, int32_t iy)
+__attribute__((noinline)) static bool render_plane_on_row(const cam_t *cam, const render_flat_t *f, int32_t iy)
 {
     return render_flat_at(f, 1 - cam->width, iy) || render_flat_at(f, cam->width - 1, iy);
 }
