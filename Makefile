@@ -48,7 +48,12 @@ $(BUILD)/host/%.o: host/%.c
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CFLAGS_H) -c $< -o $@
 
-$(BUILD)/host/fx.o: core/math/fx.c
+# The Q16.16 library, the same in every number type (core/core.mk
+# CORE_FX), joined into one object (ld -r) that programs and tests link.
+$(BUILD)/host/fx.o: $(CORE_FX:%=$(BUILD)/host/fx/%.o)
+	@echo "  LD -r   $@"
+	$(Q)ld -r -o $@ $(filter %.o,$^)
+$(BUILD)/host/fx/%.o: core/%.c
 	@mkdir -p $(@D)
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CFLAGS_H) -c $< -o $@

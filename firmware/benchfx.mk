@@ -6,7 +6,7 @@
 # BENCHFX_UPDATE_DOCS=1 also the table in docs/BENCHMARKS.md.
 # (Included before firmware.mk: board variables are only used in recipes.)
 BENCHFX_BOARDS ?= $(BOARDS)
-BENCHFX_SRC := firmware/benchfx.c core/math/fx.c firmware/startup.c firmware/semihost.c firmware/counter.c
+BENCHFX_SRC := firmware/benchfx.c $(CORE_FX:%=core/%.c) firmware/startup.c firmware/semihost.c firmware/counter.c
 
 BENCHFX_HDR := firmware/benchfx.h firmware/benchfx_gen.h core/math/fx.h core/math/vec3.h core/math/num.h core/fxrt_config.h
 

@@ -58,7 +58,10 @@ DIFF_FUZZ_SAN    := -fsanitize=address,undefined -fno-sanitize-recover=all
 DIFF_FUZZ_CFLAGS := $(WARN) -O1 -g -D_POSIX_C_SOURCE=200809L -Icore $(DIFF_FUZZ_SAN) -fsanitize=fuzzer-no-link
 DIFF_FUZZ_OBJ    := $(DIFF_FUZZ_OBJDIR)/host/fx.o $(call multi_objs,$(DIFF_FUZZ_OBJDIR),diff,$(DIFF_NUMBERS))
 
-$(DIFF_FUZZ_OBJDIR)/host/fx.o: core/math/fx.c
+$(DIFF_FUZZ_OBJDIR)/host/fx.o: $(CORE_FX:%=$(DIFF_FUZZ_OBJDIR)/host/fx/%.o)
+	@echo "  LD -r   $@"
+	$(Q)ld -r -o $@ $(filter %.o,$^)
+$(DIFF_FUZZ_OBJDIR)/host/fx/%.o: core/%.c
 	@mkdir -p $(@D)
 	@echo "  FUZZCC  $<"
 	$(Q)$(DIFF_FUZZ_CC) $(DIFF_FUZZ_CFLAGS) -MMD -MP -c $< -o $@

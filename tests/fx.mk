@@ -13,7 +13,10 @@
 FX_NOHW_FLAGS := -DFX_HAVE_UDIV=0 -DFX_HAVE_CLZ=0 -DFX_HAVE_UMULL=0
 FX_JOBS ?= 2
 
-$(BUILD)/tests/fx-nohw.o: core/math/fx.c core/math/fx.h core/fxrt_config.h
+$(BUILD)/tests/fx-nohw.o: $(CORE_FX:%=$(BUILD)/tests/fx-nohw/%.o)
+	@echo "  LD -r   $@"
+	$(Q)ld -r -o $@ $(filter %.o,$^)
+$(BUILD)/tests/fx-nohw/%.o: core/%.c
 	@mkdir -p $(@D)
 	@echo "  CC nohw $<"
 	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -c $< -o $@
@@ -67,7 +70,10 @@ TEST_PREREQ  += $(BUILD)/tests/test_fx_nohw $(FX_EXH_BIN)
 include firmware/benchfx.mk
 
 # test_fx_nohw under ASan+UBSan too (tests/sanitize.sh runs tests.list).
-$(SAN_DIR)/tests/fx-nohw.o: core/math/fx.c
+$(SAN_DIR)/tests/fx-nohw.o: $(CORE_FX:%=$(SAN_DIR)/tests/fx-nohw/%.o)
+	@echo "  LD -r   $@"
+	$(Q)ld -r -o $@ $(filter %.o,$^)
+$(SAN_DIR)/tests/fx-nohw/%.o: core/%.c
 	@mkdir -p $(@D)
 	@echo "  CC san nohw $<"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) $(FX_NOHW_FLAGS) -c $< -o $@

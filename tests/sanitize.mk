@@ -41,7 +41,10 @@ $(SAN_DIR)/host/%.o: host/%.c
 	@echo "  CC san  $<"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -c $< -o $@
 
-$(SAN_DIR)/host/fx.o: core/math/fx.c
+$(SAN_DIR)/host/fx.o: $(CORE_FX:%=$(SAN_DIR)/host/fx/%.o)
+	@echo "  LD -r   $@"
+	$(Q)ld -r -o $@ $(filter %.o,$^)
+$(SAN_DIR)/host/fx/%.o: core/%.c
 	@mkdir -p $(@D)
 	@echo "  CC san  $<"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -c $< -o $@

@@ -2,7 +2,7 @@
  * API is render.h):
  *   render_setup.c  per-frame set-up: each object's camera-space forms,
  *                   screen bounds and depth range (render_setup)
- *   render_vis.c    visibility: depths from the forms, the nearest owner of
+ *   vis/depth.c    visibility: depths from the forms, the nearest owner of
  *                   a column, depth ranges and per-row order against planes
  *   render_row.c    the scanlines: stepping, spans, painting in the pixel
  *                   format (render_row, render_row_reference)
@@ -280,7 +280,7 @@ void render_setup_object(vis_t *r, uint16_t i);
 
 
 #if FXRT_NUMBER == FXRT_Q16
-/* render_vis.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
+/* vis/depth.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
  * and a denominator d > 0, truncated to 24 bits each. */
 render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
 
@@ -373,7 +373,7 @@ static inline int32_t render_depth_key(render_depth_t t)
 }
 #endif
 
-/* render_vis.c, for tests: object i's depth at pixel offsets (ix, iy),
+/* vis/depth.c, for tests: object i's depth at pixel offsets (ix, iy),
  * which it covers. */
 render_depth_t render_depth_test(const vis_t *r, uint16_t i, int32_t ix, int32_t iy);
 
@@ -393,11 +393,11 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
                             int32_t kmax, int32_t *pr, int32_t *pl);
 #endif
 
-/* render_vis.c, for tests: is object i's depth at pixel offsets (ix, iy),
+/* vis/depth.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */
 bool render_range_check(const vis_t *r, uint16_t i, int32_t ix, int32_t iy);
 
-/* render_vis.c: object oi also covers column x, owned so far by the owner
+/* vis/depth.c: object oi also covers column x, owned so far by the owner
  * entry cur; returns true when oi is nearer (or ties with a lower id) and
  * has taken the column. The newcomer's depth comes from its forms at the
  * pixel (render_resolve) or from values the scanline stepped. */
@@ -413,7 +413,7 @@ bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32
 #endif
 
 #if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
-/* render_vis.c: bounds lo, hi on object oi's depth at every column p..q of
+/* vis/depth.c: bounds lo, hi on object oi's depth at every column p..q of
  * row iy, all of which it covers (planes, triangles, boxes, spheres with
  * row forms): 1 both bounds, 2 (a sphere) only hi, with lo its smaller
  * end (its bound below, from low, lies lower), 0 none; with low, a
@@ -431,7 +431,7 @@ typedef struct {
     uint8_t state[RENDER_ROW_PLANES]; /* 0: not yet; 1: lo, hi hold; 2: the plane does not cover the row with one sign */
 } render_prow_t;
 
-/* render_vis.c: object i's depth order against the planes on row iy over
+/* vis/depth.c: object i's depth order against the planes on row iy over
  * columns x0..x1 (sets r->row_win); false when a plane hides it there. */
 bool render_row_order(vis_t *r, uint16_t i, int32_t x0, int32_t x1, int32_t iy, render_prow_t *pr);
 
