@@ -16,9 +16,7 @@
 #ifndef FXRT_NUMBER
 #define FXRT_NUMBER FXRT_Q16
 #endif
-#if FXRT_NUMBER != FXRT_Q16 && FXRT_NUMBER != FXRT_FLOAT && FXRT_NUMBER != FXRT_DOUBLE
-#error "FXRT_NUMBER must be FXRT_Q16 (1), FXRT_FLOAT (2) or FXRT_DOUBLE (3)"
-#endif
+FXRT_STATIC_ASSERT(FXRT_NUMBER == FXRT_Q16 || FXRT_NUMBER == FXRT_FLOAT || FXRT_NUMBER == FXRT_DOUBLE, "FXRT_NUMBER must be FXRT_Q16 (1), FXRT_FLOAT (2) or FXRT_DOUBLE (3)");
 
 /* World capacity per primitive kind (a static array each). 0 removes the
  * kind from the build: its intersection code is not compiled. Triangles
@@ -62,9 +60,7 @@
 #ifndef FXRT_RENDERER
 #define FXRT_RENDERER FXRT_RENDERER_FAST
 #endif
-#if FXRT_RENDERER < 1 || FXRT_RENDERER > 3
-#error "FXRT_RENDERER must be 1 (fast), 2 (reference) or 3 (raycast)"
-#endif
+FXRT_STATIC_ASSERT(1 <= FXRT_RENDERER && FXRT_RENDERER <= 3, "FXRT_RENDERER must be 1 (fast), 2 (reference) or 3 (raycast)");
 
 /* Largest image width or height in pixels. */
 #ifndef FXRT_MAX_DIM
@@ -80,15 +76,9 @@
  * keeps every pixel offset (|ix| <= width + 4) below 2^15, the domain of
  * fx.h's small-factor products (fx_smul_small, fx_umul64_small: cam_ray
  * and the scanline forms' evaluation on the M0). */
-#if FXRT_MAX_DIM < 1 || FXRT_MAX_DIM > 16384
-#error "FXRT_MAX_DIM must be in 1..16384: pixel offsets must stay below 2^15"
-#endif
-#if FXRT_MAX_PLANES < 0 || FXRT_MAX_SPHERES < 0 || FXRT_MAX_TRIANGLES < 0 || FXRT_MAX_BOXES < 0
-#error "FXRT_MAX_<KIND> capacities must be >= 0"
-#endif
-#if FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES > 65535
-#error "total object capacity (FXRT_MAX_PLANES + _SPHERES + _TRIANGLES + _BOXES) must be <= 65535: ids are uint16_t and 0xFFFF is the no-object sentinel"
-#endif
+FXRT_STATIC_ASSERT(1 <= FXRT_MAX_DIM && FXRT_MAX_DIM <= 16384, "FXRT_MAX_DIM must be in 1..16384: pixel offsets must stay below 2^15");
+FXRT_STATIC_ASSERT(FXRT_MAX_PLANES >= 0 && FXRT_MAX_SPHERES >= 0 && FXRT_MAX_TRIANGLES >= 0 && FXRT_MAX_BOXES >= 0, "FXRT_MAX_<KIND> capacities must be >= 0");
+FXRT_STATIC_ASSERT(FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES <= 65535, "total object capacity (FXRT_MAX_PLANES + _SPHERES + _TRIANGLES + _BOXES) must be <= 65535: ids are uint16_t and 0xFFFF is the no-object sentinel");
 
 /* Instruction-set features the fixed-point maths (core/fx.c, core/fx.h)
  * chooses its code paths by. The defaults follow the target: the
@@ -117,14 +107,10 @@
 #ifndef FXRT_RENDER_MAX_WIDTH
 #define FXRT_RENDER_MAX_WIDTH FXRT_MAX_DIM
 #endif
-#if FXRT_RENDER_MAX_WIDTH < 1 || FXRT_RENDER_MAX_WIDTH > FXRT_MAX_DIM
-#error "FXRT_RENDER_MAX_WIDTH must be 1..FXRT_MAX_DIM"
-#endif
+FXRT_STATIC_ASSERT(1 <= FXRT_RENDER_MAX_WIDTH && FXRT_RENDER_MAX_WIDTH <= FXRT_MAX_DIM, "FXRT_RENDER_MAX_WIDTH must be 1..FXRT_MAX_DIM");
 
 #define FXRT_RENDER_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
-#if FXRT_RENDER_MAX_OBJECTS < 1
-#error "the world must be able to hold at least one object"
-#endif
+FXRT_STATIC_ASSERT(FXRT_RENDER_MAX_OBJECTS >= 1, "the world must be able to hold at least one object");
 
 /* Box faces the renderer can hold per frame, over all boxes. A box seen
  * from outside in perspective needs at most 3; from inside, from its
@@ -133,9 +119,7 @@
 #ifndef FXRT_RENDER_BOX_FACES
 #define FXRT_RENDER_BOX_FACES (6 * FXRT_MAX_BOXES)
 #endif
-#if FXRT_MAX_BOXES > 0 && FXRT_RENDER_BOX_FACES < 1
-#error "FXRT_RENDER_BOX_FACES must be at least 1 when boxes are enabled"
-#endif
+FXRT_STATIC_ASSERT(FXRT_MAX_BOXES == 0 || FXRT_RENDER_BOX_FACES >= 1, "FXRT_RENDER_BOX_FACES must be at least 1 when boxes are enabled");
 
 /* Back faces of closed meshes (core/mesh.c, core/render_setup.c): in
  * worlds of 4 to FXRT_MESH_MAX triangles (at most 255), each triangle is
@@ -149,9 +133,7 @@
 #ifndef FXRT_MESH_MAX
 #define FXRT_MESH_MAX 128
 #endif
-#if FXRT_MESH_MAX < 0 || FXRT_MESH_MAX > 255
-#error "FXRT_MESH_MAX must be 0..255"
-#endif
+FXRT_STATIC_ASSERT(0 <= FXRT_MESH_MAX && FXRT_MESH_MAX <= 255, "FXRT_MESH_MAX must be 0..255");
 
 /* Objects alone on their row (the fast renderer fills their spans without
  * the per-column owner bookkeeping) are looked for only in worlds of at
@@ -160,9 +142,7 @@
 #ifndef FXRT_LONE_MAX
 #define FXRT_LONE_MAX 16
 #endif
-#if FXRT_LONE_MAX < 0 || FXRT_LONE_MAX > 65535
-#error "FXRT_LONE_MAX must be 0..65535"
-#endif
+FXRT_STATIC_ASSERT(0 <= FXRT_LONE_MAX && FXRT_LONE_MAX <= 65535, "FXRT_LONE_MAX must be 0..65535");
 
 /* The fast renderer visits the objects nearest first (render_setup sorts
  * them once per frame; FXRT_NO_ORDER below): in worlds of at most
@@ -173,9 +153,7 @@
 #ifndef FXRT_ORDER_MAX
 #define FXRT_ORDER_MAX 256
 #endif
-#if FXRT_ORDER_MAX < 0 || FXRT_ORDER_MAX > 4096
-#error "FXRT_ORDER_MAX must be 0..4096"
-#endif
+FXRT_STATIC_ASSERT(0 <= FXRT_ORDER_MAX && FXRT_ORDER_MAX <= 4096, "FXRT_ORDER_MAX must be 0..4096");
 
 /* Spheres that keep row-coherence state (fast Q16.16 renderer, about
  * 120 B each; FXRT_NO_COHERENCE below): the spheres with index 0 ..
@@ -191,9 +169,7 @@
 #ifndef FXRT_COHERENT_SPHERES
 #define FXRT_COHERENT_SPHERES (FXRT_MAX_SPHERES < FXRT_LONE_MAX ? FXRT_MAX_SPHERES : FXRT_LONE_MAX)
 #endif
-#if FXRT_COHERENT_SPHERES < 0 || FXRT_COHERENT_SPHERES > FXRT_MAX_SPHERES
-#error "FXRT_COHERENT_SPHERES must be 0..FXRT_MAX_SPHERES"
-#endif
+FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_MAX_SPHERES, "FXRT_COHERENT_SPHERES must be 0..FXRT_MAX_SPHERES");
 
 /* Ablation switches, for measuring what each optimisation of the fast
  * renderer saves (make bench-ablation); none changes a Q16.16 pixel:
@@ -263,9 +239,7 @@
 #ifndef FXRT_SPHERE_SEARCH
 #define FXRT_SPHERE_SEARCH (!FXRT_PORT_SMALL_ISA)
 #endif
-#if FXRT_SPHERE_SEARCH != 0 && FXRT_SPHERE_SEARCH != 1
-#error "FXRT_SPHERE_SEARCH must be 0 or 1"
-#endif
+FXRT_STATIC_ASSERT(FXRT_SPHERE_SEARCH == 0 || FXRT_SPHERE_SEARCH == 1, "FXRT_SPHERE_SEARCH must be 0 or 1");
 
 /* FXRT_FLOAT_STEP (float and double builds only; Q16.16 always steps,
  * exactly):
@@ -277,9 +251,7 @@
 #ifndef FXRT_FLOAT_STEP
 #define FXRT_FLOAT_STEP 0
 #endif
-#if FXRT_FLOAT_STEP != 0 && FXRT_FLOAT_STEP != 1
-#error "FXRT_FLOAT_STEP must be 0 or 1"
-#endif
+FXRT_STATIC_ASSERT(FXRT_FLOAT_STEP == 0 || FXRT_FLOAT_STEP == 1, "FXRT_FLOAT_STEP must be 0 or 1");
 
 /* Pixel format of the rows render_row writes:
  *   1 = FXRT_RGB888  3 bytes per pixel, R, G, B (default)
@@ -291,9 +263,7 @@
 #ifndef FXRT_PIXEL
 #define FXRT_PIXEL FXRT_RGB888
 #endif
-#if FXRT_PIXEL != FXRT_RGB888 && FXRT_PIXEL != FXRT_RGB565
-#error "FXRT_PIXEL must be FXRT_RGB888 (1) or FXRT_RGB565 (2)"
-#endif
+FXRT_STATIC_ASSERT(FXRT_PIXEL == FXRT_RGB888 || FXRT_PIXEL == FXRT_RGB565, "FXRT_PIXEL must be FXRT_RGB888 (1) or FXRT_RGB565 (2)");
 
 /* ---- lighting (core/light.h, core/shade.c, core/shadow.c) -------------- */
 
@@ -305,9 +275,7 @@
 #ifndef FXRT_MAX_LIGHTS
 #define FXRT_MAX_LIGHTS 8
 #endif
-#if FXRT_MAX_LIGHTS < 0 || FXRT_MAX_LIGHTS > 8
-#error "FXRT_MAX_LIGHTS must be in 0..8"
-#endif
+FXRT_STATIC_ASSERT(0 <= FXRT_MAX_LIGHTS && FXRT_MAX_LIGHTS <= 8, "FXRT_MAX_LIGHTS must be in 0..8");
 /* FXRT_SHADOWS 0 compiles shadow rays out (every light then reaches every
  * surface that faces it, whatever its shadows setting); 1 (default) casts
  * them for lights with shadows on. The scene compiler emits 0 when no
@@ -315,18 +283,14 @@
 #ifndef FXRT_SHADOWS
 #define FXRT_SHADOWS (FXRT_MAX_LIGHTS > 0)
 #endif
-#if FXRT_SHADOWS != 0 && FXRT_SHADOWS != 1
-#error "FXRT_SHADOWS must be 0 or 1"
-#endif
+FXRT_STATIC_ASSERT(FXRT_SHADOWS == 0 || FXRT_SHADOWS == 1, "FXRT_SHADOWS must be 0 or 1");
 /* FXRT_PHONG 0 compiles the specular term out (phong materials are then
  * refused with FXRT_ERR_MATERIAL); 1 (default) keeps it. The scene
  * compiler emits 0 when no object is phong. */
 #ifndef FXRT_PHONG
 #define FXRT_PHONG (FXRT_MAX_LIGHTS > 0)
 #endif
-#if FXRT_PHONG != 0 && FXRT_PHONG != 1
-#error "FXRT_PHONG must be 0 or 1"
-#endif
+FXRT_STATIC_ASSERT(FXRT_PHONG == 0 || FXRT_PHONG == 1, "FXRT_PHONG must be 0 or 1");
 /* FXRT_SHADOW_CULL 1 (default) gives each point and spot light, once per
  * frame, a cone around every bounded object (sphere, triangle, box) as
  * seen from the light, with a margin for every rounding: a shadow ray
@@ -337,12 +301,8 @@
 #ifndef FXRT_SHADOW_CULL
 #define FXRT_SHADOW_CULL 1
 #endif
-#if FXRT_SHADOW_CULL != 0 && FXRT_SHADOW_CULL != 1
-#error "FXRT_SHADOW_CULL must be 0 or 1"
-#endif
-#if FXRT_MAX_LIGHTS == 0 && (FXRT_SHADOWS || FXRT_PHONG)
-#error "FXRT_SHADOWS and FXRT_PHONG need FXRT_MAX_LIGHTS > 0"
-#endif
+FXRT_STATIC_ASSERT(FXRT_SHADOW_CULL == 0 || FXRT_SHADOW_CULL == 1, "FXRT_SHADOW_CULL must be 0 or 1");
+FXRT_STATIC_ASSERT(FXRT_MAX_LIGHTS > 0 || (!FXRT_SHADOWS && !FXRT_PHONG), "FXRT_SHADOWS and FXRT_PHONG need FXRT_MAX_LIGHTS > 0");
 /* FXRT_STATS 1 counts the shading work (core/fxrt_stats.h) for tests;
  * 0 (default) compiles the counters out. */
 #ifndef FXRT_STATS
@@ -367,12 +327,8 @@
 #define FXRT_MAX_DEPTH 0
 #endif
 #endif
-#if FXRT_MAX_DEPTH < 0 || FXRT_MAX_DEPTH > 16
-#error "FXRT_MAX_DEPTH must be in 0..16"
-#endif
-#if FXRT_MAX_DEPTH > 0 && FXRT_MAX_LIGHTS == 0
-#error "FXRT_MAX_DEPTH > 0 needs FXRT_MAX_LIGHTS > 0 (reflective and transparent materials)"
-#endif
+FXRT_STATIC_ASSERT(0 <= FXRT_MAX_DEPTH && FXRT_MAX_DEPTH <= 16, "FXRT_MAX_DEPTH must be in 0..16");
+FXRT_STATIC_ASSERT(FXRT_MAX_DEPTH == 0 || FXRT_MAX_LIGHTS > 0, "FXRT_MAX_DEPTH > 0 needs FXRT_MAX_LIGHTS > 0 (reflective and transparent materials)");
 /* FXRT_NO_CUTOFF 1 traces every secondary ray up to the depth, however
  * small its weight (a measurement switch for the cut-off's effect: make
  * cutoff, tests/cutoff.sh); 0 (default) is the model of issue 12: a ray
@@ -380,18 +336,14 @@
 #ifndef FXRT_NO_CUTOFF
 #define FXRT_NO_CUTOFF 0
 #endif
-#if FXRT_NO_CUTOFF != 0 && FXRT_NO_CUTOFF != 1
-#error "FXRT_NO_CUTOFF must be 0 or 1"
-#endif
+FXRT_STATIC_ASSERT(FXRT_NO_CUTOFF == 0 || FXRT_NO_CUTOFF == 1, "FXRT_NO_CUTOFF must be 0 or 1");
 /* Largest N of 'samples N' (N x N rays per pixel, 1..16). 1 compiles
  * supersampling out. The visibility pass then works on a camera N times
  * as wide, so N * width must stay within FXRT_RENDER_MAX_WIDTH. */
 #ifndef FXRT_MAX_SAMPLES
 #define FXRT_MAX_SAMPLES 16
 #endif
-#if FXRT_MAX_SAMPLES < 1 || FXRT_MAX_SAMPLES > 16
-#error "FXRT_MAX_SAMPLES must be in 1..16"
-#endif
+FXRT_STATIC_ASSERT(1 <= FXRT_MAX_SAMPLES && FXRT_MAX_SAMPLES <= 16, "FXRT_MAX_SAMPLES must be in 1..16");
 /* FXRT_SAMPLE_RUNS: the runs (one owner each) that the fast Q16.16
  * sampling pass may hold for the N fine rows of one output row when it
  * works from spans (core/render_sample.c, "run mode": every object on
@@ -401,9 +353,7 @@
 #ifndef FXRT_SAMPLE_RUNS
 #define FXRT_SAMPLE_RUNS (8 * FXRT_MAX_SAMPLES)
 #endif
-#if FXRT_SAMPLE_RUNS < 1 || FXRT_SAMPLE_RUNS > 4096
-#error "FXRT_SAMPLE_RUNS must be in 1..4096"
-#endif
+FXRT_STATIC_ASSERT(1 <= FXRT_SAMPLE_RUNS && FXRT_SAMPLE_RUNS <= 4096, "FXRT_SAMPLE_RUNS must be in 1..4096");
 /* FXRT_ADAPTIVE 1 allows 'samples N adaptive' (one ray per pixel where
  * the pixel's 3x3 neighbourhood has one key); 0 compiles it out. */
 #ifndef FXRT_ADAPTIVE
@@ -413,12 +363,8 @@
 #define FXRT_ADAPTIVE 0
 #endif
 #endif
-#if FXRT_ADAPTIVE != 0 && FXRT_ADAPTIVE != 1
-#error "FXRT_ADAPTIVE must be 0 or 1"
-#endif
-#if FXRT_ADAPTIVE && FXRT_MAX_SAMPLES == 1
-#error "FXRT_ADAPTIVE needs FXRT_MAX_SAMPLES > 1"
-#endif
+FXRT_STATIC_ASSERT(FXRT_ADAPTIVE == 0 || FXRT_ADAPTIVE == 1, "FXRT_ADAPTIVE must be 0 or 1");
+FXRT_STATIC_ASSERT(!FXRT_ADAPTIVE || FXRT_MAX_SAMPLES > 1, "FXRT_ADAPTIVE needs FXRT_MAX_SAMPLES > 1");
 /* Refraction index range ('index', transparent materials). */
 #define FXRT_INDEX_MIN 0.01
 #define FXRT_INDEX_MAX 100
@@ -436,16 +382,12 @@
 #ifndef FXRT_FB_MODE
 #define FXRT_FB_MODE FXRT_FB_FULL
 #endif
-#if FXRT_FB_MODE != FXRT_FB_FULL && FXRT_FB_MODE != FXRT_FB_STREAM
-#error "FXRT_FB_MODE must be FXRT_FB_FULL (1) or FXRT_FB_STREAM (2)"
-#endif
+FXRT_STATIC_ASSERT(FXRT_FB_MODE == FXRT_FB_FULL || FXRT_FB_MODE == FXRT_FB_STREAM, "FXRT_FB_MODE must be FXRT_FB_FULL (1) or FXRT_FB_STREAM (2)");
 /* Rows per band in streaming mode (1..any; RAM: 3 * width bytes a row). */
 #ifndef FXRT_BAND_ROWS
 #define FXRT_BAND_ROWS 1
 #endif
-#if FXRT_BAND_ROWS < 1
-#error "FXRT_BAND_ROWS must be at least 1"
-#endif
+FXRT_STATIC_ASSERT(FXRT_BAND_ROWS >= 1, "FXRT_BAND_ROWS must be at least 1");
 /* Bytes of the reserved stack (STACK_SIZE in linker/BOARD.ld) that a
  * firmware run must leave unused, read from the painted stack at the end
  * of the run: firmware/main.c and tests/onboard_main.c fail the run (exit
@@ -476,11 +418,7 @@
 #define FXRT_STACK_EXTRA (256 * FXRT_ADAPTIVE + FXRT_STACK_RAYCAST)
 #endif
 #endif
-#if FXRT_STACK_EXTRA < 0 || FXRT_STACK_EXTRA % 8 != 0
-#error "FXRT_STACK_EXTRA must be a multiple of 8, >= 0"
-#endif
-#if FXRT_FB_MODE == FXRT_FB_STREAM && FXRT_PIXEL != FXRT_RGB888
-#error "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer"
-#endif
+FXRT_STATIC_ASSERT(FXRT_STACK_EXTRA >= 0 && FXRT_STACK_EXTRA % 8 == 0, "FXRT_STACK_EXTRA must be a multiple of 8, >= 0");
+FXRT_STATIC_ASSERT(FXRT_FB_MODE != FXRT_FB_STREAM || FXRT_PIXEL == FXRT_RGB888, "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer");
 
 #endif

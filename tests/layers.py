@@ -129,7 +129,7 @@ def main():
                 bad += 1
                 continue
             units.append(f)
-            out = subprocess.run(['nm', obj], capture_output=True, text=True, check=True).stdout
+            out = subprocess.run([os.environ.get('NM', 'nm'), obj], capture_output=True, text=True, check=True).stdout
             for line in out.splitlines():
                 w = line.split()
                 if len(w) == 2 and w[0] == 'U':

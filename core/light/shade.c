@@ -1,10 +1,6 @@
 /* shade: the lighting model (see shade.h). */
 #include "light/shade_sum.h"
 
-#if FXRT_STATS
-fxrt_stats_t fxrt_stats;
-#endif
-
 #if FXRT_MAX_LIGHTS > 0
 
 /* Colour arithmetic of the light sum. Every term is at most 255 (1/255

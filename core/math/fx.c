@@ -11,7 +11,6 @@ static inline __attribute__((always_inline)) int fx_clz_even(uint32_t v)
     return fx_clz32(v) & ~1;
 }
 
-#if !FX_HAVE_UDIV
 /* round(2^23 / (i + 0.5)) for i = 128 .. 255: 2^31 / d1 for a 16-bit d1 in
  * [2^15, 2^16) indexed by its top 8 bits, within 2^-8 relative. */
 static const uint16_t fx_recip_tab[128] = {
@@ -35,18 +34,16 @@ static inline __attribute__((always_inline)) uint32_t fx_recip16(uint32_t d1)
     int32_t e = (int32_t)((1u << 31) - d1 * (uint32_t)v); /* |e| < 2^23 */
     return (uint32_t)(v + ((v * (e >> 8)) >> 23));
 }
-#endif
 
 /* q = floor(u / d1) and *r = u - q d1, for d1 in [2^15, 2^16). v is
  * fx_recip16(d1) on targets without a divide instruction (unused else). */
 static inline __attribute__((always_inline)) uint32_t fx_div32_16(uint32_t u, uint32_t d1, uint32_t v, uint32_t *r)
 {
-#if FX_HAVE_UDIV
-    (void)v;
-    uint32_t q = u / d1;
-    *r = u - q * d1;
-    return q;
-#else
+    if (FX_HAVE_UDIV) {
+        uint32_t q = u / d1;
+        *r = u - q * d1;
+        return q;
+    }
     /* u v / 2^31 in two 16-bit halves (no 64-bit product). It is at most a
      * few units below u / d1 (v is low by < 2^-15, and two truncations),
      * never above, so the exact remainder is small and non-negative. */
@@ -58,7 +55,6 @@ static inline __attribute__((always_inline)) uint32_t fx_div32_16(uint32_t u, ui
     }
     *r = rem;
     return q;
-#endif
 }
 
 /* One 16-bit quotient digit of Knuth's long division (TAOCP 4.3.1,
@@ -85,11 +81,7 @@ static inline __attribute__((always_inline)) uint32_t fx_div_digit(uint32_t u, u
  * the remainder. */
 static inline __attribute__((always_inline)) uint32_t fx_div64_32(uint64_t u, uint32_t d, uint32_t *rem)
 {
-#if FX_HAVE_UDIV
-    uint32_t v = 0;
-#else
-    uint32_t v = fx_recip16(d >> 16);
-#endif
+    uint32_t v = FX_HAVE_UDIV ? 0 : fx_recip16(d >> 16);
     uint32_t u1 = (uint32_t)(u >> 32), u0 = (uint32_t)u, r;
     uint32_t q1 = fx_div_digit(u1, u0 >> 16, d, v, &r);
     uint32_t q0 = fx_div_digit(r, u0 & 0xffffu, d, v, &r);
@@ -138,7 +130,6 @@ fx_t fx_div(fx_t a, fx_t b)
  * takes the top 32 bits of the normalised divisor, a 64/32 quotient of
  * n / 2 by them, at most one too large after undoing the shifts, and one
  * exact correction (Hacker's Delight, 9-5). */
-#if !FX_HAVE_UDIV
 static uint32_t fx_udiv64_round_sat(uint64_t n, uint64_t d)
 {
     uint32_t q;
@@ -168,7 +159,6 @@ static uint32_t fx_udiv64_round_sat(uint64_t n, uint64_t d)
     }
     return q + (r >= d - r ? 1u : 0u); /* 2r >= d without overflow */
 }
-#endif
 
 fx_t fx_recip(fx_t a)
 {
@@ -369,13 +359,9 @@ fx_t fxw_div(fxw_t a, fxw_t b)
             return fx_signed_sat(UINT64_MAX, neg);
         d = dr;
     }
-#if FX_HAVE_UDIV
-    /* libgcc's 64-bit division, built on UDIV, is a little faster here
-     * than fx_udiv64_round_sat (make bench-fx). */
-    return fx_signed_sat(fx_udiv_round(n, d), neg);
-#else
-    return fx_signed_sat(fx_udiv64_round_sat(n, d), neg);
-#endif
+    /* With UDIV, libgcc's 64-bit division is a little faster here than
+     * fx_udiv64_round_sat (make bench-fx). */
+    return fx_signed_sat(FX_HAVE_UDIV ? fx_udiv_round(n, d) : fx_udiv64_round_sat(n, d), neg);
 }
 
 bool fx_unit30(const fx_t v[3], int32_t out[3])

@@ -78,25 +78,11 @@ static inline fx_t fx_sat64(int64_t v)
  * tests/onboard_main.c checks them on the M0 against 64-bit C. */
 static inline fx_t fx_add(fx_t a, fx_t b)
 {
-#if FXRT_PORT_V6M_ASM
-    return PORT_SAT_ASM("adds", a, b);
-#else
-    fx_t s;
-    if (__builtin_add_overflow(a, b, &s))
-        return a < 0 ? FX_MIN : FX_MAX;
-    return s;
-#endif
+    return port_add_sat32(a, b);
 }
 static inline fx_t fx_sub(fx_t a, fx_t b)
 {
-#if FXRT_PORT_V6M_ASM
-    return PORT_SAT_ASM("subs", a, b);
-#else
-    fx_t s;
-    if (__builtin_sub_overflow(a, b, &s))
-        return a < 0 ? FX_MIN : FX_MAX;
-    return s;
-#endif
+    return port_sub_sat32(a, b);
 }
 static inline fx_t fx_neg(fx_t a)
 {
@@ -119,9 +105,8 @@ static inline uint32_t fx_uabs32(int32_t v)
  * Both are exact. */
 static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
 {
-#if FX_HAVE_UMULL
-    return (uint64_t)a * b;
-#else
+    if (FX_HAVE_UMULL)
+        return (uint64_t)a * b;
     uint32_t al = a & 0xffffu, ah = a >> 16, bl = b & 0xffffu, bh = b >> 16;
     uint32_t ll = al * bl, hh = ah * bh, lh = al * bh, hl = ah * bl;
     uint32_t mid = lh + hl;
@@ -129,7 +114,6 @@ static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
     uint32_t lo = ll + (mid << 16);
     hi += lo < ll ? 1u : 0u;
     return ((uint64_t)hi << 32) | lo;
-#endif
 }
 /* a^2, exact: fx_umul32(a, a). On the M0 three 16-bit products instead of
  * four: with a = h 2^16 + l, a^2 = h^2 2^32 + h l 2^17 + l^2, where h l <
@@ -137,26 +121,19 @@ static inline uint64_t fx_umul32(uint32_t a, uint32_t b)
  * for the high one. */
 static inline uint64_t fx_usqr32(uint32_t a)
 {
-#if FX_HAVE_UMULL
-    return (uint64_t)a * a;
-#else
+    if (FX_HAVE_UMULL)
+        return (uint64_t)a * a;
     uint32_t h = a >> 16, l = a & 0xffffu, m = h * l, ll = l * l;
     uint32_t lo = ll + (m << 17);
     uint32_t hi = h * h + (m >> 15) + (lo < ll ? 1u : 0u);
     return ((uint64_t)hi << 32) | lo;
-#endif
 }
 /* Signed: the unsigned product of the two's-complement patterns, minus
  * b 2^32 when a < 0 and a 2^32 when b < 0 (modulo 2^64). */
 static inline int64_t fx_smul32(int32_t a, int32_t b)
 {
-#if FX_HAVE_UMULL && FXRT_PORT_THUMB2_GCC
-    int32_t lo, hi;
-    PORT_SMULL(lo, hi, a, b);
-    return (int64_t)(((uint64_t)(uint32_t)hi << 32) | (uint32_t)lo);
-#elif FX_HAVE_UMULL
-    return (int64_t)a * b;
-#else
+    if (FX_HAVE_UMULL)
+        return port_smul32(a, b);
     uint64_t p = fx_umul32((uint32_t)a, (uint32_t)b);
     uint32_t hi = (uint32_t)(p >> 32);
     if (a < 0)
@@ -164,19 +141,14 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
     if (b < 0)
         hi -= (uint32_t)a;
     return (int64_t)(((uint64_t)hi << 32) | (uint32_t)p);
-#endif
 }
 /* acc + a b, where the caller has shown that the sum fits int64 (modulo
  * 2^64 otherwise, never undefined): one SMLAL on Thumb-2. */
 static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)
 {
-#if FX_HAVE_UMULL && FXRT_PORT_THUMB2_GCC
-    uint32_t lo = (uint32_t)acc, hi = (uint32_t)((uint64_t)acc >> 32);
-    PORT_SMLAL(lo, hi, a, b);
-    return (int64_t)(((uint64_t)hi << 32) | lo);
-#else
+    if (FX_HAVE_UMULL)
+        return port_smlal32(acc, a, b);
     return (int64_t)((uint64_t)acc + (uint64_t)fx_smul32(a, b));
-#endif
 }
 /* a * u, exact, for any a and u; fastest when |u| <= 2^16 = 1.0, a
  * component of a unit vector (normals, ray and light directions, 1.0
@@ -185,17 +157,13 @@ static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)
  * fx_smul32's four and its sign corrections. Any other u takes fx_smul32. */
 static inline int64_t fx_smul_unit(int32_t a, int32_t u)
 {
-#if FX_HAVE_UMULL
-    return fx_smul32(a, u);
-#else
     uint32_t ua = fx_uabs32(a), uu = fx_uabs32(u);
-    if (uu > 0x10000u)
+    if (FX_HAVE_UMULL || uu > 0x10000u)
         return fx_smul32(a, u);
     /* (ua >> 16) uu <= 2^15 2^16 and (ua & 0xffff) uu <= (2^16 - 1) 2^16:
      * both fit 32 bits, no overflow. */
     uint64_t p = ((uint64_t)((ua >> 16) * uu) << 16) + (uint64_t)((ua & 0xffffu) * uu);
     return (a < 0) != (u < 0) ? -(int64_t)p : (int64_t)p;
-#endif
 }
 
 /* a . u for two vectors whose components lie in [-2^18, 2^18) (unit
@@ -245,14 +213,12 @@ static inline bool fx_dot3_wide_ok(int32_t a0, int32_t a1, int32_t a2, int32_t u
  * in 16-bit halves, its high word modulo 2^32) instead of __aeabi_lmul. */
 static inline uint64_t fx_umul64_small(uint64_t a, int32_t i)
 {
-#if FX_HAVE_UMULL
-    return a * (uint64_t)(int64_t)i;
-#else
+    if (FX_HAVE_UMULL)
+        return a * (uint64_t)(int64_t)i;
     uint32_t al = (uint32_t)a, ah = (uint32_t)(a >> 32);
     int32_t a1 = (int32_t)(al >> 16), a0 = (int32_t)(al & 0xffffu);
     uint64_t lo = ((uint64_t)(int64_t)(a1 * i) << 16) + (uint64_t)(int64_t)(a0 * i); /* al * i */
     return lo + ((uint64_t)(ah * (uint32_t)i) << 32);
-#endif
 }
 /* w[0] + w[1] i + w[2] j modulo 2^64 for small factors, |i|, |j| < 2^15:
  * a linear form of the pixel offsets (the scanline loops' rlin_at). On
@@ -264,7 +230,7 @@ static inline uint64_t fx_umul64_small(uint64_t a, int32_t i)
  * (the M3, M4F) has its own below; other targets and compilers take the C
  * (fx_umul64_small). tests/onboard_main.c checks the assembly against
  * 64-bit C products on every board. */
-#if FXRT_PORT_V6M_ASM || FXRT_PORT_V7M_ASM
+#if PORT_HAVE_LIN2
 /* Armv6-M and Armv7-M: port/asm.h (port_lin2_small). */
 static inline __attribute__((always_inline)) uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
 {
@@ -281,13 +247,11 @@ static inline uint64_t fx_lin2_small(const int64_t w[3], int32_t i, int32_t j)
  * of four 16-bit ones. */
 static inline int64_t fx_smul_small(int32_t a, int32_t i)
 {
-#if FX_HAVE_UMULL
-    return (int64_t)a * i;
-#else
+    if (FX_HAVE_UMULL)
+        return (int64_t)a * i;
     int32_t hi = a >> 16; /* arithmetic shift: a = hi 2^16 + lo */
     int32_t lo = (int32_t)((uint32_t)a & 0xffffu);
     return (int64_t)((uint64_t)(int64_t)(hi * i) << 16) + lo * i;
-#endif
 }
 
 /* a * b, |error| <= 0.5 LSB, ties toward +infinity (-0.5 LSB -> 0),
@@ -325,9 +289,8 @@ static inline fx_t fxw_round(fxw_t w)
  * without 64-bit additions and shifts. */
 static inline __attribute__((always_inline)) fx_t fx_mul_unit_impl(fx_t a, fx_t u, bool sat)
 {
-#if !FX_HAVE_UMULL
     uint32_t ua = fx_uabs32(a), uu = fx_uabs32(u);
-    if (uu <= 0x10000u) {
+    if (!FX_HAVE_UMULL && uu <= 0x10000u) {
         uint32_t neg = (a < 0) != (u < 0) ? 1u : 0u;
         /* A <= 2^31 and the fraction's carry < 2^16: q < 2^32. */
         uint32_t q = (ua >> 16) * uu + (((ua & 0xffffu) * uu + 0x8000u - neg) >> 16);
@@ -335,7 +298,6 @@ static inline __attribute__((always_inline)) fx_t fx_mul_unit_impl(fx_t a, fx_t 
             return neg ? FX_MIN : FX_MAX; /* -2^31 itself is FX_MIN: no exception */
         return (fx_t)(neg ? 0u - q : q);
     }
-#endif
     int64_t w = fx_smul32(a, u);
     return sat ? fxw_round(w) : (fx_t)((w + FX_HALF) >> FX_FRAC_BITS);
 }
@@ -452,10 +414,12 @@ static inline void fx128_copy(fx128_t *dst, const fx128_t *src)
     dst->lo = src->lo;
     dst->hi = src->hi;
 }
-#if FXRT_PORT_V7M_ASM
+#if PORT_HAVE_CHAIN128
 static inline __attribute__((always_inline)) fx128_t fx128_add(fx128_t a, fx128_t b)
 {
-    PORT_CHAIN128(a, b, "adds", "adcs", "adc");
+    fx128_t r;
+    PORT_CHAIN128(r, a, b, "adds", "adcs", "adc");
+    return r;
 }
 #else
 static inline fx128_t fx128_add(fx128_t a, fx128_t b)
@@ -474,7 +438,7 @@ static inline fx128_t fx128_add(fx128_t a, fx128_t b)
  * flags; other compilers take the C. */
 static inline __attribute__((always_inline)) void fx128_add_to(fx128_t *a, const fx128_t *b)
 {
-#if FXRT_PORT_V6M_ASM
+#if PORT_HAVE_ADD128_TO
     PORT_ADD128_TO(a, b);
 #else
     *a = fx128_add(*a, *b);
@@ -487,10 +451,12 @@ static inline fx128_t fx128_neg(fx128_t a)
     r.hi = (int64_t)(~(uint64_t)a.hi + (r.lo == 0 ? 1u : 0u));
     return r;
 }
-#if FXRT_PORT_V7M_ASM
+#if PORT_HAVE_CHAIN128
 static inline __attribute__((always_inline)) fx128_t fx128_sub(fx128_t a, fx128_t b)
 {
-    PORT_CHAIN128(a, b, "subs", "sbcs", "sbc"); /* (PORT_CHAIN128: port/asm.h) */
+    fx128_t r;
+    PORT_CHAIN128(r, a, b, "subs", "sbcs", "sbc");
+    return r;
 }
 #else
 static inline fx128_t fx128_sub(fx128_t a, fx128_t b)

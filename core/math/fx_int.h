@@ -34,9 +34,8 @@ static inline uint64_t fx_udiv_round(uint64_t num, uint64_t den)
  * __clzsi2 costs more). FX_HAVE_CLZ in core/fxrt_config.h. */
 static inline __attribute__((always_inline)) int fx_clz32(uint32_t v)
 {
-#if FX_HAVE_CLZ
-    return __builtin_clz(v);
-#else
+    if (FX_HAVE_CLZ)
+        return __builtin_clz(v);
     int e = 0;
     if (v < (1u << 16)) {
         v <<= 16;
@@ -57,7 +56,6 @@ static inline __attribute__((always_inline)) int fx_clz32(uint32_t v)
     if (v < (1u << 31))
         e += 1;
     return e;
-#endif
 }
 
 #endif

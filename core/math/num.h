@@ -67,11 +67,9 @@ static inline numw_t numw_sub_exact(numw_t a, numw_t b) { return (numw_t)((uint6
  * sum fits numw_t: no saturation test (numw_add_exact's rule). */
 static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u)
 {
-#if FX_HAVE_UMULL
-    return fx_smlal32(acc, a, u);
-#else
+    if (FX_HAVE_UMULL)
+        return fx_smlal32(acc, a, u);
     return numw_add_exact(acc, fx_smul_unit(a, u));
-#endif
 }
 /* a . u for a unit vector u, given by components: numw_dot3_unit
  * (vec3_dotw_unit, any a) and numw_dot3_units (vec3_dotw_units, a unit
@@ -81,12 +79,9 @@ static inline numw_t numw_mla_unit(numw_t acc, num_t a, num_t u)
 static inline __attribute__((always_inline)) numw_t numw_dot3_with(num_t ax, num_t ay, num_t az, num_t ux, num_t uy,
                                                                    num_t uz, bool units)
 {
-#if !FX_HAVE_UMULL
-    if (units ? fx_dot3_small_ok(ax, ay, az, ux, uy, uz) : fx_dot3_wide_ok(ax, ay, az, ux, uy, uz))
+    if (!FX_HAVE_UMULL &&
+        (units ? fx_dot3_small_ok(ax, ay, az, ux, uy, uz) : fx_dot3_wide_ok(ax, ay, az, ux, uy, uz)))
         return units ? fx_dot3_small(ax, ay, az, ux, uy, uz) : fx_dot3_wide(ax, ay, az, ux, uy, uz);
-#else
-    (void)units;
-#endif
     return numw_mla_unit(numw_mla_unit(numw_mul_unit(ax, ux), ay, uy), az, uz);
 }
 static inline numw_t numw_dot3_unit(num_t ax, num_t ay, num_t az, num_t ux, num_t uy, num_t uz)

@@ -8,8 +8,6 @@
  *   FXRT_PORT_V6M_ASM    gcc on Armv6-M: Thumb-1 inline assembly
  *   FXRT_PORT_V7M_ASM    gcc on Armv7-M or Armv7E-M (Cortex-M3, M4):
  *                        Thumb-2 inline assembly
- *   FXRT_PORT_THUMB_ASM  gcc on any Thumb target
- *   FXRT_PORT_THUMB2_GCC gcc or clang on a Thumb-2 target (SMULL, SMLAL)
  * Assembly is gcc's only: clang rejects '.syntax divided', and takes the C. */
 #ifndef FXRT_PORT_H
 #define FXRT_PORT_H
@@ -30,15 +28,11 @@
 #else
 #define FXRT_PORT_V7M_ASM 0
 #endif
-#if defined(__GNUC__) && !defined(__clang__) && defined(__thumb__)
-#define FXRT_PORT_THUMB_ASM 1
+/* A compile-time check, in C11 and in a C++ program that includes fxrt.h. */
+#ifdef __cplusplus
+#define FXRT_STATIC_ASSERT(cond, msg) static_assert(cond, msg)
 #else
-#define FXRT_PORT_THUMB_ASM 0
-#endif
-#if defined(__thumb2__) && defined(__GNUC__)
-#define FXRT_PORT_THUMB2_GCC 1
-#else
-#define FXRT_PORT_THUMB2_GCC 0
+#define FXRT_STATIC_ASSERT(cond, msg) _Static_assert(cond, msg)
 #endif
 
 /* Inlining policy: FXRT_INLINE_WIDE marks functions that are inlined into

@@ -52,16 +52,7 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
             word_t *p = (word_t *)(void *)(rgb + 3 * x);
             int32_t groups = (xb - x + 1) / 4;
             x += 4 * groups;
-#if FXRT_PORT_THUMB_ASM
             PORT_STORE3_LOOP(p, p + 3 * groups, pat.w[0], pat.w[1], pat.w[2]);
-#else
-            uint32_t w0 = pat.w[0], w1 = pat.w[1], w2 = pat.w[2];
-            for (; groups > 0; groups--, p += 3) {
-                p[0] = w0;
-                p[1] = w1;
-                p[2] = w2;
-            }
-#endif
         }
     }
     for (; x <= xb; x++)

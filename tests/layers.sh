@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# The core's layers (docs/ARCHITECTURE.md): tests/layers.py reads every
+# #include line of core/ and the symbols of one object per core source,
+# and fails on an upward or sideways include, an upward or sideways call,
+# or a cycle among headers or among translation units.
+#
+# The core is compiled in the configurations below (every number type,
+# the M0's arithmetic, each feature on and off, the ablation switches,
+# Armv6-M and Armv7-M), each with -Werror, and checked in each: which
+# functions exist, and so which units call which, depends on the
+# configuration. Then the checker itself is shown to fail: a copy of the
+# core with an upward include, a sideways include, an include cycle and a
+# call cycle between two units.
+set -u
+. "$(dirname "$0")/lib.sh"
+out=$BUILD/tests/layers
+mkdir -p "$out"
+WFLAGS="-std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror -O1"
+SRCS=$(cd core && ls */*.c)
+
+# compile NAME CC FLAGS...: every core source into $out/NAME/, one object
+# each (named as layers.py expects); the log in $out/NAME.log.
+compile() {
+    local name=$1 cc=$2
+    shift 2
+    rm -rf "${out:?}/$name"
+    mkdir -p "$out/$name"
+    local f rc=0
+    for f in $SRCS; do
+        $cc $WFLAGS "$@" -Icore -c "core/$f" -o "$out/$name/$(tr / _ <<<"${f%.c}").o" || rc=1
+    done >"$out/$name.log" 2>&1
+    return $rc
+}
+
+# layers NAME CC NM FLAGS...: compile, then check.
+layers() {
+    local name=$1 cc=$2 nm=$3
+    shift 3
+    if ! compile "$name" "$cc" "$@"; then
+        bad "$name: the core does not compile ($out/$name.log)"
+        return
+    fi
+    if NM=$nm python3 tests/layers.py core "$out/$name" >"$out/$name.layers" 2>&1; then
+        ok
+    else
+        bad "$name: $(grep -v '^layers:' "$out/$name.layers" | head -n 5 | tr '\n' ';')"
+    fi
+}
+
+ALL="-DFXRT_MAX_LIGHTS=8 -DFXRT_MAX_DEPTH=4 -DFXRT_MAX_SAMPLES=4 -DFXRT_ADAPTIVE=1"
+NOHW="-DFX_HAVE_UDIV=0 -DFX_HAVE_CLZ=0 -DFX_HAVE_UMULL=0"
+ABLATE="-DFXRT_NO_BOUNDS=1 -DFXRT_NO_STEP=1 -DFXRT_NO_LONE=1 -DFXRT_NO_ZRANGE=1 -DFXRT_NO_SPANS=1 -DFXRT_NO_COHERENCE=1 -DFXRT_NO_HOIST=1 -DFXRT_NO_ORDER=1"
+host_configs=(
+    "q16:-DFXRT_NUMBER=1"
+    "q16-all:-DFXRT_NUMBER=1 $ALL"
+    "float-all:-DFXRT_NUMBER=2 $ALL -DFXRT_FLOAT_STEP=1"
+    "double-all:-DFXRT_NUMBER=3 $ALL -DFXRT_STATS=1"
+    "q16-nohw-all:-DFXRT_NUMBER=1 $NOHW $ALL"
+    "q16-unlit-565:-DFXRT_NUMBER=1 -DFXRT_MAX_LIGHTS=0 -DFXRT_MAX_SAMPLES=1 -DFXRT_PIXEL=2"
+    "float-lit-flat:-DFXRT_NUMBER=2 -DFXRT_SHADOWS=0 -DFXRT_PHONG=0 -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 -DFXRT_ADAPTIVE=0 -DFXRT_SHADOW_CULL=0"
+    "q16-ablate:-DFXRT_NUMBER=1 $ABLATE $ALL"
+    "q16-spheres-stream-reference:-DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=0 -DFXRT_MAX_TRIANGLES=0 -DFXRT_MAX_BOXES=0 -DFXRT_FB_MODE=2 -DFXRT_RENDERER=2 -DFXRT_MESH_MAX=0 -DFXRT_ORDER_MAX=0"
+    "double-raycast:-DFXRT_NUMBER=3 -DFXRT_RENDERER=3 -DFXRT_SPHERE_SEARCH=1 -DFXRT_COHERENT_SPHERES=0"
+)
+for c in "${host_configs[@]}"; do
+    layers "host-${c%%:*}" gcc nm ${c#*:}
+done
+if command -v arm-none-eabi-gcc >/dev/null; then
+    ARM="-ffreestanding -mthumb"
+    layers m0-q16 arm-none-eabi-gcc arm-none-eabi-nm $ARM -mcpu=cortex-m0 -DFXRT_NUMBER=1 $ALL
+    layers m3-q16 arm-none-eabi-gcc arm-none-eabi-nm $ARM -mcpu=cortex-m3 -DFXRT_NUMBER=1 $ALL
+    layers m4f-float arm-none-eabi-gcc arm-none-eabi-nm $ARM -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16 -DFXRT_NUMBER=2 $ALL
+else
+    bad "arm-none-eabi-gcc not found (make deps)"
+fi
+
+# The checker fails where it must: each fault in its own copy of the core.
+# fault NAME EXPECT FILE LINE: append LINE to FILE in a copy of core/;
+# layers.py must fail and print a line matching EXPECT.
+fault() {
+    local name=$1 expect=$2 file=$3 line=$4
+    local dir=$out/fault-$name
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    cp -r core "$dir/core"
+    printf '%s\n' "$line" >>"$dir/core/$file"
+    if python3 tests/layers.py "$dir/core" >"$dir.out" 2>&1; then
+        bad "fault $name: layers.py passed"
+    elif grep -qE "$expect" "$dir.out"; then
+        ok
+    else
+        bad "fault $name: no line matching '$expect' ($dir.out)"
+    fi
+}
+fault upward '^include: math/vec3.h -> scene/world.h \(upward' math/vec3.h '#include "scene/world.h"'
+fault sideways '^include: vis/fill.c -> light/shade.h \(sideways' vis/fill.c '#include "light/shade.h"'
+fault include-cycle '^cycle: includes among' scene/geom.h '#include "scene/world.h"'
+fault outside '^include: math/fx.c -> fx.h \(not a core file' math/fx.c '#include "fx.h"'
+# A call cycle: two units of one layer that call each other.
+dir=$out/fault-call-cycle
+rm -rf "$dir"
+mkdir -p "$dir/obj"
+cp -r core "$dir/core"
+printf 'void layers_fault_a(void);\nvoid layers_fault_b(void);\nvoid layers_fault_a(void) { layers_fault_b(); }\n' >>"$dir/core/math/fx.c"
+printf 'void layers_fault_a(void);\nvoid layers_fault_b(void);\nvoid layers_fault_b(void) { layers_fault_a(); }\n' >>"$dir/core/math/trig.c"
+for f in $SRCS; do
+    gcc -std=c11 -O2 -Icore -c "$dir/core/$f" -o "$dir/obj/$(tr / _ <<<"${f%.c}").o" || bad "fault call-cycle: $f does not compile"
+done 2>"$dir.log"
+if python3 tests/layers.py "$dir/core" "$dir/obj" >"$dir.out" 2>&1; then
+    bad "fault call-cycle: layers.py passed"
+elif grep -qE '^cycle: translation units math/fx.c math/trig.c' "$dir.out"; then
+    ok
+else
+    bad "fault call-cycle: no cycle line ($dir.out)"
+fi
+report layers
