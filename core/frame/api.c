@@ -88,10 +88,8 @@ fxrt_err_t fxrt_camera_orthographic(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t 
         return e;
     if (!(scale > NUM_ZERO && scale <= num_from_int(FXRT_RADIUS_LIMIT)))
         return FXRT_ERR_SCALE;
-#if FXRT_NUMBER != FXRT_Q16
-    if (scale < NUM(1.0 / 65536.0))
-        return FXRT_ERR_TINY;
-#endif
+    if (!NUM_EXACT && scale < NUM(1.0 / 65536.0))
+        return FXRT_ERR_TINY; /* (float and double: below Q16.16's step) */
     return fxrt_cam_err(cam_setup(cam, CAM_ORTHOGRAPHIC, eye, gaze, up, NUM(90), scale, width, height));
 }
 

@@ -25,10 +25,8 @@ static void raycast_row_samples(const world_t *w, const cam_t *cam, int32_t row,
                 color_t c = w->background;
                 if (world_hit(w, &ray, &hit)) {
                     c = hit.obj->color;
-#if FXRT_MAX_LIGHTS > 0
-                    if (hit.obj->mat.kind != MATERIAL_FLAT)
+                    if (FXRT_MAX_LIGHTS > 0 && geom_lit(hit.obj))
                         c = shade_object(w, hit.kind, hit.index, &ray, NULL);
-#endif
                 }
                 color_sum_add(&a[0], c.r, 1);
                 color_sum_add(&a[1], c.g, 1);
@@ -59,10 +57,8 @@ void raycast_row(const world_t *w, const cam_t *cam, int32_t row, uint8_t *rgb, 
         cam_ray(cam, x, y, &ray);
         bool found = world_hit(w, &ray, &hit);
         rgb8_t c = found ? hit.obj->rgb : w->background_rgb;
-#if FXRT_MAX_LIGHTS > 0
-        if (found && hit.obj->mat.kind != MATERIAL_FLAT)
+        if (FXRT_MAX_LIGHTS > 0 && found && geom_lit(hit.obj))
             c = color_to_rgb8(shade_object(w, hit.kind, hit.index, &ray, NULL));
-#endif
         rgb[3 * x + 0] = c.r;
         rgb[3 * x + 1] = c.g;
         rgb[3 * x + 2] = c.b;

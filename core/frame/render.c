@@ -107,9 +107,7 @@ rgb8_t render_pixel(const world_t *w, const ray_t *ray)
     hit_t hit;
     if (!world_hit(w, ray, &hit))
         return w->background_rgb;
-#if FXRT_MAX_LIGHTS > 0
-    if (hit.obj->mat.kind != MATERIAL_FLAT)
+    if (FXRT_MAX_LIGHTS > 0 && geom_lit(hit.obj))
         return color_to_rgb8(shade_object(w, hit.kind, hit.index, ray, NULL));
-#endif
     return hit.obj->rgb;
 }

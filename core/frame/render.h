@@ -123,12 +123,8 @@ static inline void render_set_keys(render_t *r, uint32_t *keys)
 
 /* The passes after the visibility pass (frame/render_shade.c,
  * frame/render_sample.c). */
-#if FXRT_MAX_LIGHTS > 0
-void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
-#endif
-#if FXRT_MAX_SAMPLES > 1
-void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference);
-#endif
+void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);                   /* FXRT_MAX_LIGHTS > 0 */
+void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference); /* FXRT_MAX_SAMPLES > 1 */
 
 #if FXRT_MAX_LIGHTS > 0 && FXRT_MAX_SAMPLES > 1
 /* The obj index of the world's object (kind, index): a search, as obj is

@@ -122,14 +122,8 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
 
 static void render_sample_put(uint8_t *rgb, int32_t x, uint8_t cr, uint8_t cg, uint8_t cb)
 {
-#if FXRT_PIXEL == FXRT_RGB565
     rgb8_t p = {cr, cg, cb};
-    ((uint16_t *)(void *)rgb)[x] = render_565(p);
-#else
-    rgb[3 * x + 0] = cr;
-    rgb[3 * x + 1] = cg;
-    rgb[3 * x + 2] = cb;
-#endif
+    render_put_pixel(rgb, x, p);
 }
 
 #if FXRT_ADAPTIVE

@@ -34,13 +34,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         if (!lit)
             continue;
         rgb8_t p = color_to_rgb8(c);
-#if FXRT_PIXEL == FXRT_RGB565
-        ((uint16_t *)(void *)rgb)[x] = render_565(p);
-#else
-        rgb[3 * x + 0] = p.r;
-        rgb[3 * x + 1] = p.g;
-        rgb[3 * x + 2] = p.b;
-#endif
+        render_put_pixel(rgb, x, p);
     }
 }
 #endif

@@ -24,21 +24,15 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
 #undef HIT_SURFACE
     default: break;
     }
-#if FXRT_NUMBER == FXRT_Q16
-    /* A camera ray (unit d, shade.h): for |t| < 16384, t d needs no
-     * saturation test (vec3_scale_unit_small, the same value; -0.75 % on
-     * the lit set on the M3). */
-    vec3_t p = t < num_from_int(16384) && t > -num_from_int(16384)
+    /* A camera ray (unit d, shade.h): in Q16.16, for |t| < 16384, t d
+     * needs no saturation test (vec3_scale_unit_small, the same value;
+     * -0.75 % on the lit set on the M3). */
+    vec3_t p = NUM_EXACT && t < num_from_int(16384) && t > -num_from_int(16384)
                    ? vec3_add(ray->o, vec3_scale_unit_small(ray->d, t))
                    : ray_at(ray, t);
-#else
-    vec3_t p = ray_at(ray, t);
-#endif
     color_t c = shade_sum(w, obj, kind, index, &p, &n, &ray->d, k, mask);
-#if FXRT_MAX_DEPTH > 0
-    if (material_bounces(obj->mat.kind))
+    if (FXRT_MAX_DEPTH > 0 && material_bounces(obj->mat.kind))
         c = trace_bounces(w, kind, index, ray, p, n, c);
-#endif
     return c;
 }
 #endif

@@ -8,36 +8,15 @@
  * terms per light stays below 255 (1 + 2 FXRT_MAX_LIGHTS) = 4335, far
  * inside Q16.16: the products are fx_mul's rounding without its
  * saturation checks, and the sums plain additions. Identical values. */
-#if FXRT_NUMBER == FXRT_Q16
-static inline num_t shade_mul(num_t a, num_t b)
-{
-#if !FX_HAVE_UMULL
-    /* The M0: a colour (a >= 0) times a fraction 0 <= b <= 1, the light
-     * sum's usual product, in two 32-bit products: (a_hi b) 2^16 + a_lo b
-     * with a_hi < 2^15 and a_lo b <= (2^16 - 1) 2^16, so a_lo b + 2^15
-     * fits 32 bits and the rounding is fx_smul32's. */
-    if (a >= 0 && (uint32_t)b <= 0x10000u)
-        return (fx_t)(((uint32_t)a >> 16) * (uint32_t)b + (((uint32_t)a & 0xffffu) * (uint32_t)b + 0x8000u) / 0x10000u);
-#endif
-    return (fx_t)((fx_smul32(a, b) + FX_HALF) >> FX_FRAC_BITS);
-}
-static inline num_t shade_add(num_t a, num_t b)
-{
-    return (fx_t)((uint32_t)a + (uint32_t)b);
-}
-#else
-static inline num_t shade_mul(num_t a, num_t b) { return a * b; }
-static inline num_t shade_add(num_t a, num_t b) { return a + b; }
-#endif
 static inline color_t shade_filter(color_t a, color_t f)
 {
-    return color_make(shade_mul(a.r, f.r), shade_mul(a.g, f.g), shade_mul(a.b, f.b));
+    return color_make(num_mul_fits(a.r, f.r), num_mul_fits(a.g, f.g), num_mul_fits(a.b, f.b));
 }
 /* c + a * s */
 static inline color_t shade_madd(color_t c, color_t a, num_t s)
 {
-    return color_make(shade_add(c.r, shade_mul(a.r, s)), shade_add(c.g, shade_mul(a.g, s)),
-                      shade_add(c.b, shade_mul(a.b, s)));
+    return color_make(num_add_fits(c.r, num_mul_fits(a.r, s)), num_add_fits(c.g, num_mul_fits(a.g, s)),
+                      num_add_fits(c.b, num_mul_fits(a.b, s)));
 }
 
 void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k)
@@ -162,15 +141,11 @@ __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_com
 
 #if FXRT_PHONG
 /* c plus Phong's term c_s (.) c_l (ks) max(0, r . e)^k for the light at l.
- * Out of line on the M0 only: there its temporaries, inlined, made
- * shade_lights' frame (the deepest on the shading path) larger than the
- * 16 KB boards' stack margin allows with shadow-ray culling. */
-#if FX_HAVE_UMULL
-#define SHADE_SPEC_INLINE inline __attribute__((always_inline))
-#else
-#define SHADE_SPEC_INLINE __attribute__((noinline))
-#endif
-static SHADE_SPEC_INLINE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
+ * Out of line on the M0 only (FXRT_INLINE_WIDE): there its temporaries,
+ * inlined, made shade_lights' frame (the deepest on the shading path)
+ * larger than the 16 KB boards' stack margin allows with shadow-ray
+ * culling. */
+static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
                                                 const color_t *ks, uint16_t exponent)
 {
     /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
@@ -188,11 +163,10 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
                      const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
                             uint8_t *mask)
 {
-#if FXRT_BOUND_NO_LIGHT_SUM
-    /* Measurement only (core/fxrt_config.h): no light sum at all. */
-    if (!mask && obj->mat.kind != MATERIAL_TRANSPARENT)
+    /* FXRT_BOUND_NO_LIGHT_SUM: a measurement (core/fxrt_config.h), no
+     * light sum at all. */
+    if (FXRT_BOUND_NO_LIGHT_SUM && !mask && obj->mat.kind != MATERIAL_TRANSPARENT)
         return obj->mat.kind == MATERIAL_FLAT || !k ? obj->color : k->ambient;
-#endif
     vec3_t p = *pp, n_geo = *n_geo_p, d = *dp;
     const material_t *m = &obj->mat;
     bool lit = m->kind != MATERIAL_FLAT;
@@ -202,9 +176,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     vec3_t n = inside ? vec3_neg_unit(n_geo) : n_geo;
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
-#if !FXRT_SHADOWS
     (void)kind, (void)index; /* only shadow rays need to know the object */
-#endif
     for (uint8_t i = 0; i < w->n_lights; i++) {
         const light_t *L = &w->lights[i];
         vec3_t l;
@@ -221,10 +193,8 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
              * less than the normalisation: -5 % on the spot scenes; the M0
              * pays +5 % for them, so it goes straight to the full test. */
             vec3_t v = vec3_sub(L->position, p);
-#if FX_HAVE_UMULL
-            if (L->kind == LIGHT_SPOT && shade_spot_surely_out(L, v))
+            if (FX_HAVE_UMULL && L->kind == LIGHT_SPOT && shade_spot_surely_out(L, v))
                 continue; /* outside the cone */
-#endif
             FXRT_COUNT(l_normalised);
             if (!vec3_unit_len(v, &l, &dist))
                 continue; /* the light is at p: no direction, no light */

@@ -86,6 +86,9 @@ static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
     return dot > (int32_t)((uint32_t)e->pt.lim << 14) + (1 << 17);
 }
 #endif
+typedef shadow_cull_t shadow_cull_row_t; /* a light's row of the table */
+#else
+typedef void shadow_cull_row_t;
 #endif
 
 /* What the light sum needs of one object that does not change within a
@@ -136,17 +139,11 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
  * blocks the light exactly when the light is outside it (always for a
  * directional light). Every other object is tested with the world-space
  * kernels, t limited to (0, dist), stopping at the first hit. */
-#if SHADOW_CULL
-typedef shadow_cull_t shadow_cull_row_t;
-#else
-typedef void shadow_cull_row_t;
-#endif
 /* obj: world_common(w, kind, index). cull: the light's row of the cull
  * table, or NULL (no culling). */
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
                     const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
 
-#if FXRT_NUMBER == FXRT_Q16
 /* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST
  * from p may lie beyond the range (shade_lights computes |v| within 0.5
  * LSB + 2^-24 relative, so |v| >= 32768 gives at least 129 LSB below
@@ -161,6 +158,5 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const ge
  * p too, so it changes no frame (tests/test_shade.c checks this near the
  * cone's edge). False for |v_i| >= 16384 (the full test decides). */
 bool shade_spot_surely_out(const light_t *L, vec3_t v);
-#endif
 
 #endif

@@ -4,11 +4,7 @@
 #if FXRT_MAX_LIGHTS > 0 && FXRT_SHADOWS
 
 /* Transparent objects cast no shadow (core/trace.h). */
-#if FXRT_MAX_DEPTH > 0
-#define SHADOW_CASTS(o) ((o).mat.kind != MATERIAL_TRANSPARENT)
-#else
-#define SHADOW_CASTS(o) true
-#endif
+#define SHADOW_CASTS(o) (FXRT_MAX_DEPTH == 0 || (o).mat.kind != MATERIAL_TRANSPARENT)
 
 /* Is the light's position strictly inside solid (kind, index)? */
 static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t index, const light_t *l)
@@ -44,13 +40,9 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
 /* The M0 (no 32x32->64 multiply) makes the cone test in 32-bit products
  * (shadow_cone_out16, shade.h; tests/test_shade.c checks it on the host). */
 #define SHADOW_CULL_DOT16 (FXRT_NUMBER == FXRT_Q16 && !FX_HAVE_UMULL)
-#if FXRT_NUMBER == FXRT_Q16
-#define CULL_REL NUM_ZERO
-#elif FXRT_NUMBER == FXRT_FLOAT
-#define CULL_REL NUM(1.0 / 262144) /* 2^-18: 64 ulp of float */
-#else
-#define CULL_REL NUM(1.0 / 1099511627776.0) /* 2^-40 */
-#endif
+/* Q16.16: none; float: 2^-18 (64 ulp); double: 2^-40. */
+#define CULL_REL                                                                                             \
+    (NUM_EXACT ? NUM_ZERO : FXRT_NUMBER == FXRT_FLOAT ? NUM(1.0 / 262144) : NUM(1.0 / 1099511627776.0))
 
 static num_t shadow_l1(vec3_t v)
 {
@@ -103,10 +95,8 @@ static void shadow_cull_entry(shadow_cull_t *e, const light_t *L, vec3_t c, num_
     num_t cosv = num_sub(num_sqrt(num_sub(NUM_ONE, s2)), NUM(1.0 / 2048));
     /* eps(dist) <= eps_cap for dist <= (eps_cap - 2^-15) 2^13. */
     num_t cap = num_mul_int(num_sub(eps_cap, NUM(1.0 / 32768)), 8192);
-#if FXRT_NUMBER == FXRT_Q16
-    if (cap >= SHADE_FAR_DIST)
+    if (NUM_EXACT && cap >= SHADE_FAR_DIST)
         cap = SHADE_FAR_DIST - 1; /* the far path (shade.h) is never culled */
-#endif
     /* s + eps >= |c - L| - R' with s < dist |ldir| <= dist (1 + 2^-12). */
     num_t near = num_sub(num_mul(num_sub(len, rho), NUM(1.0 - 1.0 / 4096)), NUM(1.0 / 32768));
 #if FXRT_NUMBER == FXRT_Q16
@@ -177,16 +167,6 @@ static SHADOW_CULLED_INLINE bool shadow_culled_pt(const shadow_ray_cull_t *rc, c
     return vec3_dotw_unit(rc->ldir, e->pt.u) > numw_from(e->pt.lim);
 #endif
 }
-/* |d| > lim for lim >= 0: Q16.16 in one unsigned comparison (d + lim
- * lies in [0, 2 lim] exactly when |d| <= lim; |d| < 2^50, no overflow). */
-static inline bool shadow_outside(numw_t d, numw_t lim)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    return (uint64_t)d + (uint64_t)lim > 2 * (uint64_t)lim;
-#else
-    return d > lim || d < -lim;
-#endif
-}
 /* A directional light: the point's projections against the object's. */
 static SHADOW_CULLED_INLINE bool shadow_culled_dir(const shadow_ray_cull_t *rc, const shadow_cull_t *e)
 {
@@ -195,8 +175,8 @@ static SHADOW_CULLED_INLINE bool shadow_culled_dir(const shadow_ray_cull_t *rc, 
 #else
     numw_t lim = e->dir.r;
 #endif
-    return shadow_outside(numw_sub_exact(rc->p1, e->dir.c1), lim) ||
-           shadow_outside(numw_sub_exact(rc->p2, e->dir.c2), lim);
+    return numw_abs_gt(numw_sub_exact(rc->p1, e->dir.c1), lim) ||
+           numw_abs_gt(numw_sub_exact(rc->p2, e->dir.c2), lim);
 }
 #else
 typedef void shadow_ray_cull_t;
@@ -303,15 +283,13 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const ge
         return true;
     ray_t ray = {*p, *ldir};
     num_t tmax = dist;
-#if FXRT_NUMBER == FXRT_Q16
-    if (dist >= SHADE_FAR_DIST && l->kind != LIGHT_DIRECTIONAL) {
+    if (NUM_EXACT && dist >= SHADE_FAR_DIST && l->kind != LIGHT_DIRECTIONAL) {
         /* The light may be beyond the range from p (shade.h): the same
          * segment from the light's end (never culled: d_cap is below). */
         ray.o = l->position;
         ray.d = vec3_neg(*ldir);
         tmax = NUM_MAX - 1;
     }
-#endif
     uint16_t id = obj->id;
 #if SHADOW_CULL
     if (cull) {

@@ -120,13 +120,9 @@ __attribute__((noinline)) static void trace_surface(const world_t *w, const trac
 /* Is a weight below the cut-off, 1/512, in every channel? */
 static bool trace_cut(color_t wt)
 {
-#if FXRT_NO_CUTOFF
-    (void)wt;
-    return false; /* measurement build: no cut-off (fxrt_config.h) */
-#else
     num_t c = NUM(1.0 / 512);
-    return wt.r < c && wt.g < c && wt.b < c;
-#endif
+    /* FXRT_NO_CUTOFF: a measurement build, no cut-off (fxrt_config.h). */
+    return !FXRT_NO_CUTOFF && wt.r < c && wt.g < c && wt.b < c;
 }
 
 /* Can a bounce ray with direction v be traced? Q16.16: the kernels'

@@ -43,7 +43,6 @@
 
 #include "scene/world.h"
 
-#if FXRT_MAX_DEPTH > 0
 /* The colour of a primary (or any) ray whose nearest hit is object
  * (kind, index) at point p with geometric normal n_geo, given that hit's
  * local colour `local` (shade_point_k, already with the caller's per-frame
@@ -53,6 +52,5 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const 
 
 /* Stack entries of the bounce loop (for the stack figures). */
 #define TRACE_STACK_ENTRIES FXRT_MAX_DEPTH
-#endif
 
 #endif

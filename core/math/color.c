@@ -11,11 +11,7 @@ static uint8_t color_channel(num_t c)
         return 0;
     if (c >= COLOR_MAX)
         return 255;
-#if FXRT_NUMBER == FXRT_Q16
-    return (uint8_t)(((uint32_t)c + FX_HALF) >> FX_FRAC_BITS);
-#else
-    return (uint8_t)(c + NUM(0.5));
-#endif
+    return (uint8_t)num_round_uint(c);
 }
 
 rgb8_t color_to_rgb8(color_t c)

@@ -31,6 +31,7 @@ typedef fxw_t numw_t;
 #define NUM_ZERO 0
 #define NUM_ONE FX_ONE
 #define NUM_MAX FX_MAX
+#define NUM_EXACT 1 /* integer arithmetic: exact sums and products, every rounding stated */
 
 static inline num_t num_add(num_t a, num_t b) { return fx_add(a, b); }
 static inline num_t num_sub(num_t a, num_t b) { return fx_sub(a, b); }
@@ -160,6 +161,47 @@ static inline num_t numw_pow_int(numw_t x, uint32_t k)
     return (fx_t)((acc + 0x4000u) >> 15);
 }
 
+/* a b and a + b for a result that fits (the caller's bound): num_mul's
+ * rounding without its saturation test, and a plain sum. On the M0 a
+ * product a b with a >= 0 and 0 <= b <= 1 (a colour times a fraction)
+ * takes two 32-bit products: (a_hi b) 2^16 + a_lo b with a_hi < 2^15 and
+ * a_lo b <= (2^16 - 1) 2^16, so a_lo b + 2^15 fits 32 bits and the
+ * rounding is fx_smul32's. */
+static inline num_t num_mul_fits(num_t a, num_t b)
+{
+    if (!FX_HAVE_UMULL && a >= 0 && (uint32_t)b <= 0x10000u)
+        return (fx_t)(((uint32_t)a >> 16) * (uint32_t)b + (((uint32_t)a & 0xffffu) * (uint32_t)b + 0x8000u) / 0x10000u);
+    return (fx_t)((fx_smul32(a, b) + FX_HALF) >> FX_FRAC_BITS);
+}
+static inline num_t num_add_fits(num_t a, num_t b) { return (fx_t)((uint32_t)a + (uint32_t)b); }
+/* |d| > lim for 0 <= lim, |d| < 2^62: in one unsigned comparison (d + lim
+ * lies in [0, 2 lim] exactly when |d| <= lim). */
+static inline bool numw_abs_gt(numw_t d, numw_t lim) { return (uint64_t)d + (uint64_t)lim > 2 * (uint64_t)lim; }
+/* c rounded to the nearest integer, ties up, for 0 < c < 32767. */
+static inline uint32_t num_round_uint(num_t c) { return ((uint32_t)c + FX_HALF) >> FX_FRAC_BITS; }
+/* v / |v| in place, each component within 0.504 LSB (fx_normalize3: no
+ * division, no 64-bit root), or false (v unchanged) for the zero vector;
+ * num_normalize3_len also gives |v| within 2^-24 relative + 0.5 LSB
+ * (fx_normalize3_len: no second root). */
+static inline bool num_normalize3(num_t v[3]) { return fx_normalize3(v); }
+static inline bool num_normalize3_len(num_t v[3], num_t *len) { return fx_normalize3_len(v, len); }
+/* A direction from an exact wide vector c (Q32.32): its components
+ * divided by 2^shift (numw_direction_part), shift from
+ * numw_direction_shift, scaled to 30 significant bits, so that a long c
+ * (beyond the Q16.16 range) and a short one (a few LSB) both keep their
+ * direction for normalising. */
+static inline int numw_direction_shift(const numw_t c[3])
+{
+    uint64_t m = 0;
+    for (int i = 0; i < 3; i++)
+        m |= c[i] < 0 ? (uint64_t)0 - (uint64_t)c[i] : (uint64_t)c[i];
+    int shift = 0;
+    while ((m >> shift) >= ((uint64_t)1 << 30))
+        shift++;
+    return shift;
+}
+static inline num_t numw_direction_part(numw_t c, int shift) { return (fx_t)(c / ((int64_t)1 << shift)); }
+
 #else /* float or double */
 
 #if FXRT_NUMBER == FXRT_FLOAT
@@ -168,16 +210,37 @@ typedef float num_t;
 #define NUM(x) ((float)(x))
 #define NUM_MAX __FLT_MAX__
 static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrtf(a) : 0.0f; }
+/* A 32-bit key that grows with a > 0: the bits of a positive IEEE number
+ * grow with it (a double's top 32 of them). */
+static inline int32_t num_order_key(num_t a)
+{
+    union {
+        float f;
+        int32_t i;
+    } u;
+    u.f = a;
+    return u.i;
+}
 #else
 typedef double num_t;
 #define NUM_NAME "double"
 #define NUM(x) ((double)(x))
 #define NUM_MAX __DBL_MAX__
 static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrt(a) : 0.0; }
+static inline int32_t num_order_key(num_t a)
+{
+    union {
+        double f;
+        int64_t i;
+    } u;
+    u.f = a;
+    return (int32_t)(u.i >> 32);
+}
 #endif
 typedef num_t numw_t;
 #define NUM_ZERO NUM(0)
 #define NUM_ONE NUM(1)
+#define NUM_EXACT 0
 /* 1 / sqrt(a), with the Q16.16 rule for a <= 0 (NUM_MAX). */
 static inline num_t num_rsqrt(num_t a) { return a > NUM_ZERO ? NUM_ONE / num_sqrt(a) : NUM_MAX; }
 
@@ -226,6 +289,39 @@ static inline num_t numw_div(numw_t a, numw_t b) { return num_div(a, b); }
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d) { return a * (num_t)m / (num_t)d; }
 static inline numw_t numw_mul_int(numw_t w, int32_t i) { return w * (num_t)i; }
 static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b) { return a < t * b; }
+static inline uint32_t num_round_uint(num_t c) { return (uint32_t)(c + NUM(0.5)); }
+static inline bool numw_abs_gt(numw_t d, numw_t lim) { return d > lim || d < -lim; }
+static inline num_t num_mul_fits(num_t a, num_t b) { return a * b; }
+static inline num_t num_add_fits(num_t a, num_t b) { return a + b; }
+/* v / |v| in place (one square root, one division), or false for the
+ * zero vector; with |v| into *len. */
+static inline bool num_normalize3_len(num_t v[3], num_t *len)
+{
+    num_t l = num_sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (l == 0)
+        return false;
+    num_t inv = num_div(NUM_ONE, l);
+    v[0] *= inv;
+    v[1] *= inv;
+    v[2] *= inv;
+    *len = l;
+    return true;
+}
+static inline bool num_normalize3(num_t v[3])
+{
+    num_t len;
+    return num_normalize3_len(v, &len);
+}
+static inline int numw_direction_shift(const numw_t c[3])
+{
+    (void)c;
+    return 0;
+}
+static inline num_t numw_direction_part(numw_t c, int shift)
+{
+    (void)shift;
+    return c;
+}
 /* x^k for x clamped to [0, 1], k >= 1, by repeated squaring (no pow). */
 static inline num_t numw_pow_int(numw_t x, uint32_t k)
 {

@@ -107,71 +107,38 @@ static inline num_t vec3_len(vec3_t a)
 {
     return numw_sqrt(vec3_dotw(a, a));
 }
-/* a / |a|: each component within 0.504 LSB in Q16.16 (fx_normalize3: no
- * division, no 64-bit root; about 100 instructions on the Cortex-M3, 375 on
- * the M0, make bench-fx). Returns false (and leaves *a unchanged) for the
- * zero vector. */
+/* a / |a| (num_normalize3: within 0.504 LSB per component in Q16.16).
+ * Returns false (and leaves *a unchanged) for the zero vector. */
 static inline bool vec3_normalize(vec3_t *a)
 {
-#if FXRT_NUMBER == FXRT_Q16
-    fx_t v[3] = {a->x, a->y, a->z};
-    if (!fx_normalize3(v))
+    num_t v[3] = {a->x, a->y, a->z};
+    if (!num_normalize3(v))
         return false;
     *a = vec3_make(v[0], v[1], v[2]);
     return true;
-#else
-    num_t len = vec3_len(*a);
-    if (len == 0)
-        return false;
-    num_t inv = num_div(NUM_ONE, len);
-    *a = vec3_scale(*a, inv);
-    return true;
-#endif
 }
 
 /* *u = a / |a| and *len = |a| in one go, or false (nothing written) for
- * the zero vector: a point light's direction and distance. Float and
- * double take one square root (the values of vec3_len and
- * vec3_normalize); Q16.16 takes the length from fx_normalize3's inverse
- * root (fx_normalize3_len: within 2^-24 relative, no second root). */
+ * the zero vector: a point light's direction and distance
+ * (num_normalize3_len). */
 static inline bool vec3_unit_len(vec3_t a, vec3_t *u, num_t *len)
 {
-#if FXRT_NUMBER == FXRT_Q16
-    fx_t v[3] = {a.x, a.y, a.z};
-    if (!fx_normalize3_len(v, len))
+    num_t v[3] = {a.x, a.y, a.z};
+    if (!num_normalize3_len(v, len))
         return false;
     *u = vec3_make(v[0], v[1], v[2]);
     return true;
-#else
-    num_t l = vec3_len(a);
-    if (l == 0)
-        return false;
-    *u = vec3_scale(a, num_div(NUM_ONE, l));
-    *len = l;
-    return true;
-#endif
 }
 
-/* a x b / |a x b|, or false when a and b are parallel. In Q16.16 the cross
- * product is formed exactly in Q32.32 and scaled to 30 significant bits
- * before normalising: only the direction matters, so long inputs (whose
- * cross product exceeds the Q16.16 range) and short or nearly parallel
- * ones (whose cross product is a few LSB) all keep their direction. */
+/* a x b / |a x b|, or false when a and b are parallel: the cross product
+ * formed exactly (Q32.32 in Q16.16) and made a direction
+ * (numw_direction_shift) before normalising. */
 static inline bool vec3_unit_cross(vec3_t a, vec3_t b, vec3_t *n)
 {
-#if FXRT_NUMBER == FXRT_Q16
     numw_t c[3] = {vec3_det2w(a.y, b.z, a.z, b.y), vec3_det2w(a.z, b.x, a.x, b.z), vec3_det2w(a.x, b.y, a.y, b.x)};
-    uint64_t m = 0;
-    for (int i = 0; i < 3; i++)
-        m |= c[i] < 0 ? (uint64_t)0 - (uint64_t)c[i] : (uint64_t)c[i];
-    int shift = 0;
-    while ((m >> shift) >= ((uint64_t)1 << 30))
-        shift++;
-    *n = vec3_make((fx_t)(c[0] / ((int64_t)1 << shift)), (fx_t)(c[1] / ((int64_t)1 << shift)),
-                   (fx_t)(c[2] / ((int64_t)1 << shift)));
-#else
-    *n = vec3_cross(a, b);
-#endif
+    int shift = numw_direction_shift(c);
+    *n = vec3_make(numw_direction_part(c[0], shift), numw_direction_part(c[1], shift),
+                   numw_direction_part(c[2], shift));
     return vec3_normalize(n);
 }
 

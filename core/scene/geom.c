@@ -8,10 +8,8 @@ fxrt_err_t geom_check_num(num_t v, int32_t limit)
 {
     if (!(num_abs(v) <= num_from_int(limit)))
         return FXRT_ERR_COORD;
-#if FXRT_NUMBER != FXRT_Q16
-    if (v != NUM_ZERO && num_abs(v) < NUM(1.0 / 65536.0))
-        return FXRT_ERR_TINY;
-#endif
+    if (!NUM_EXACT && v != NUM_ZERO && num_abs(v) < NUM(1.0 / 65536.0))
+        return FXRT_ERR_TINY; /* (float and double: below Q16.16's step) */
     return FXRT_OK;
 }
 
@@ -45,11 +43,9 @@ fxrt_err_t geom_check_color(color_t c)
     if (!(c.r >= NUM_ZERO && c.r <= COLOR_MAX && c.g >= NUM_ZERO && c.g <= COLOR_MAX && c.b >= NUM_ZERO &&
           c.b <= COLOR_MAX))
         return FXRT_ERR_COLOR;
-#if FXRT_NUMBER != FXRT_Q16
-    if (geom_check_num(c.r, FXRT_COORD_LIMIT) != FXRT_OK || geom_check_num(c.g, FXRT_COORD_LIMIT) != FXRT_OK ||
-        geom_check_num(c.b, FXRT_COORD_LIMIT) != FXRT_OK)
+    if (!NUM_EXACT && (geom_check_num(c.r, FXRT_COORD_LIMIT) != FXRT_OK || geom_check_num(c.g, FXRT_COORD_LIMIT) != FXRT_OK ||
+                       geom_check_num(c.b, FXRT_COORD_LIMIT) != FXRT_OK))
         return FXRT_ERR_TINY;
-#endif
     return FXRT_OK;
 }
 

@@ -58,6 +58,17 @@ typedef struct {
 #endif
 } geom_common_t;
 
+/* Is c's material lit (not MATERIAL_FLAT)? Always false without lights. */
+static inline bool geom_lit(const geom_common_t *c)
+{
+#if FXRT_MAX_LIGHTS > 0
+    return c->mat.kind != MATERIAL_FLAT;
+#else
+    (void)c;
+    return false;
+#endif
+}
+
 /* Component i (0 = x, 1 = y, 2 = z) of v. */
 static inline num_t geom_axis(vec3_t v, int i)
 {

@@ -25,9 +25,11 @@
 #if FXRT_NUMBER == FXRT_Q16
 typedef fx128_t mesh_vol_t;
 #define MESH_VOL_ZERO fx128_from64(0)
+static inline int mesh_vol_sign(const mesh_vol_t *v) { return v->hi < 0 ? -1 : (v->hi == 0 && v->lo == 0 ? 0 : 1); }
 #else
 typedef num_t mesh_vol_t;
 #define MESH_VOL_ZERO NUM_ZERO
+static inline int mesh_vol_sign(const mesh_vol_t *v) { return *v < 0 ? -1 : (*v > 0 ? 1 : 0); }
 #endif
 
 /* The side of p against the plane of (a, b, c): the sign of

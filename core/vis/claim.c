@@ -1,7 +1,7 @@
 /* claim: a run of columns of one object among the row's other objects:
  * free columns taken at once, stretches of one other owner settled by the
  * two objects' depth ranges, other columns each by its depths
- * (vis/render_vis.c). */
+ * (vis/depth.c). */
 #include "vis/scan.h"
 
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
@@ -45,21 +45,13 @@ static bool render_claim_free(vis_t *r, uint16_t oi, int32_t *pa, int32_t *pb, u
     *pb = b;
     return a <= b;
 }
-#endif
 
 /* Columns of one other owner, this many or more in a row, are settled by
  * the two objects' depth ranges over stretches of them (render_claim_span),
- * which stop halving below RENDER_SPAN_LEAF columns. Measured on the bench
- * set (make qemu): 3 to 8 and leaves of 8 to 16; 4 is 0.2 % fewer
- * instructions than 6 on the M3 but 1.5 % more on the M0 in cover and
- * room, 8 is 1.6 % more on the M3, leaves of 8 or 16 0.2 % and 0.7 % more. */
-#ifndef RENDER_SPAN_MIN
+ * which stop halving below RENDER_SPAN_LEAF columns (docs/BENCHMARKS.md
+ * has the measurements that chose them). */
 #define RENDER_SPAN_MIN 6
-#endif
-#ifndef RENDER_SPAN_LEAF
 #define RENDER_SPAN_LEAF (2 * RENDER_SPAN_MIN)
-#endif
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
 /* Columns a..b, all covered by object oi, each settled on its own: a flat
  * piece f's depth from N and D stepped along them (single: f is its
  * object's only piece; a box's depth is the nearest of its faces there,

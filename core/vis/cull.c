@@ -26,11 +26,7 @@ static int render_mesh_volume(const world_t *w, uint16_t k)
         if (mesh_root(w->mesh_up, (uint8_t)i) == k)
             (void)mesh_side(&t->a, &t->b, &t->c, ref, &vol, false);
     }
-#if FXRT_NUMBER == FXRT_Q16
-    return vol.hi < 0 ? -1 : (vol.hi == 0 && vol.lo == 0 ? 0 : 1);
-#else
-    return vol < 0 ? -1 : (vol > 0 ? 1 : 0);
-#endif
+    return mesh_vol_sign(&vol);
 }
 
 void render_cull_meshes(vis_t *r)

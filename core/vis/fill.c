@@ -6,16 +6,6 @@
 /* Fill pixels xa..xb of a row with colour c, in the pixel format, with
  * word stores where the row is aligned (RGB888: three words per four
  * pixels; RGB565: one word per two). */
-#if FXRT_PIXEL != FXRT_RGB565
-/* Pixel x of an RGB888 row, by byte stores (a 3-byte memcpy is a library
- * call on the Cortex-M0). */
-static inline void render_put3(uint8_t *rgb, int32_t x, rgb8_t c)
-{
-    rgb[3 * x + 0] = c.r;
-    rgb[3 * x + 1] = c.g;
-    rgb[3 * x + 2] = c.b;
-}
-#endif
 
 void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
 {
@@ -38,7 +28,7 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
         /* Aligned rows (the firmware's framebuffer and bands). may_alias:
          * the buffer is bytes. */
         for (; x <= xb && (x & 3); x++)
-            render_put3(rgb, x, c);
+            render_put_pixel(rgb, x, c);
         if (x + 3 <= xb) {
             union {
                 uint8_t b[12];
@@ -56,6 +46,6 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
         }
     }
     for (; x <= xb; x++)
-        render_put3(rgb, x, c);
+        render_put_pixel(rgb, x, c);
 #endif
 }

@@ -78,22 +78,16 @@ static void render_span_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0
 
 bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool strict, int32_t *pr, int32_t *pl)
 {
-#if RENDER_COHERENT
-    if (guess)
+    if (RENDER_COHERENT && guess)
         return render_split_near(a, b, kmax, guess, strict, pr, pl);
-#else
-    (void)guess;
-#endif
     return render_split_two(a, b, kmax, strict, pr, pl);
 }
 
-#if RENDER_ESTEP
 bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t x0, int32_t ix0, int32_t iy,
                             int32_t kmax, int32_t *pr, int32_t *pl)
 {
     return render_split_edge(st, ek, x0, ix0, iy, kmax, pr, pl);
 }
-#endif
 #endif
 
 /* A flat piece among others locates its runs from this many columns on;

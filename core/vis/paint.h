@@ -31,7 +31,6 @@ static inline bool render_free(const vis_t *r, uint32_t tag, uint32_t cur)
 
 /* Paint column x in object oi's colour (the row's pixel format). */
 #if FXRT_PIXEL == FXRT_RGB565
-typedef uint16_t __attribute__((may_alias)) render_px16_t;
 static inline void render_paint(vis_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
 #if RENDER_VIS

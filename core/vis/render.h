@@ -97,10 +97,22 @@
 #include "scene/cam.h"
 #include "scene/world.h"
 
+/* The number types of the forms: a coefficient (render_k_t), a sphere's
+ * k and r2 (render_k2_t), and a depth (render_depth_t: Q16.16 keeps t = n
+ * / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes: n in
+ * bits 0-23, e (signed) in bits 24-31, d in bits 32-55 (vis/depth.c packs
+ * and reads them); an integer rather than a struct: the M0's compiler
+ * copies an 8-byte struct with a memcpy call). */
 #if FXRT_NUMBER == FXRT_Q16
-typedef int64_t render_k_t; /* coefficient: a scaled integer */
+typedef int64_t render_k_t; /* a scaled integer */
+typedef fx128_t render_k2_t;
+typedef uint64_t render_depth_t;
 #else
 typedef num_t render_k_t;
+typedef num_t render_k2_t;
+typedef struct {
+    num_t t;
+} render_depth_t;
 #endif
 
 /* c + x ix + y iy */
@@ -141,6 +153,10 @@ typedef struct {
 
 /* Spheres with row-coherence state (r->srow). */
 #define RENDER_SROWS (RENDER_COHERENT && FXRT_COHERENT_SPHERES > 0)
+/* Spheres with index below this have it (1 where none has: a bound that
+ * no test of RENDER_SROWS && index < RENDER_SROW_SLOTS then finds
+ * always false). */
+#define RENDER_SROW_SLOTS (RENDER_SROWS ? FXRT_COHERENT_SPHERES : 1)
 
 /* Run mode of the sampling pass (core/render_sample.c): the coherent loop
  * can describe a fine row as runs of one owner each instead of one owner
@@ -151,7 +167,6 @@ typedef struct {
  * world's mesh links (mesh.h, WORLD_MESH): a bit per triangle. */
 #define RENDER_MESH WORLD_MESH
 
-#if RENDER_ESTEP
 /* An edge form G (the form, negated where it falls along the row, so G
  * rises by step = 2 |x| a column) on row iy: col is the first column with
  * G >= 0 (anywhere, not only on the piece's columns) and val = G(col), in
@@ -168,7 +183,6 @@ typedef struct {
 } render_estep_t;
 #define RENDER_ESTEP_NONE INT32_MIN
 #define RENDER_ESTEP_NO_ROW INT16_MIN /* (pixel offsets lie within +-2^15: FXRT_MAX_DIM) */
-#endif
 
 /* The visibility pass's records, by the form each kind takes (FORM and
  * EDGES in scene/kinds.h): flat pieces of their own (RENDER_FLATS),
@@ -213,31 +227,15 @@ typedef struct {
  * when some pass reads it. */
 #define RENDER_VIS (FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1)
 
-#if RENDER_RUNS
 /* Fine columns a..b (inclusive) of one fine row belong to object oi. */
 typedef struct {
     int16_t a, b;
     uint16_t oi;
 } render_run_t;
-#endif
 
 /* Output columns with samples > 1 (at most half the fine columns). */
 #define RENDER_OUT_COLS ((FXRT_RENDER_MAX_WIDTH + 1) / 2)
 
-/* A depth (ray parameter along the camera-space ray): Q16.16 keeps
- * t = n / d * 2^e with n, d in [2^23, 2^24) (n = 0: t = 0), in 8 bytes:
- * n in bits 0-23, e (signed) in bits 24-31, d in bits 32-55 (render_vis.c
- * packs and reads them). An integer rather than a struct: the M0's
- * compiler copies an 8-byte struct with a memcpy call. */
-#if FXRT_NUMBER == FXRT_Q16
-typedef uint64_t render_depth_t;
-#else
-typedef struct {
-    num_t t;
-} render_depth_t;
-#endif
-
-#if FXRT_NUMBER == FXRT_Q16
 /* A sphere on one row from a column x0 (core/render_row.c): the test
  * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the
  * row: in perspective c is, in orthographic b is, and c < 0 implies
@@ -273,7 +271,6 @@ typedef struct {
     render_depth_t pt;
 #endif
 } render_scache_t;
-#endif
 
 /* A sphere's forms. disc = r2 a - (px^2 + py^2 + pz^2) and c: with the
  * eye at o, centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
@@ -289,11 +286,7 @@ typedef struct {
     int8_t tc, ta; /* Q16.16: t = c / (b + s) * 2^tc = (b + s) / a * 2^ta */
     /* (k and r2 last: on a 32-bit target the small fields above fill the
      * padding before them) */
-#if FXRT_NUMBER == FXRT_Q16
-    fx128_t k, r2;
-#else
-    render_k_t k, r2;
-#endif
+    render_k2_t k, r2;
 } render_sphere_t;
 
 /* A box face: a flat piece with a fourth edge and its own pixel bounds

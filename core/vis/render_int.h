@@ -29,6 +29,19 @@ RENDER_MAYBE_UNUSED static uint16_t render_565(rgb8_t c)
 {
     return (uint16_t)(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
 }
+/* Pixel x of a row in the pixel format (FXRT_PIXEL); RGB888 by byte
+ * stores (a 3-byte memcpy is a library call on the Cortex-M0). */
+typedef uint16_t __attribute__((may_alias)) render_px16_t;
+static inline void render_put_pixel(uint8_t *rgb, int32_t x, rgb8_t c)
+{
+#if FXRT_PIXEL == FXRT_RGB565
+    ((render_px16_t *)(void *)rgb)[x] = render_565(c);
+#else
+    rgb[3 * x + 0] = c.r;
+    rgb[3 * x + 1] = c.g;
+    rgb[3 * x + 2] = c.b;
+#endif
+}
 
 /* Face i of a flat object (a box's faces carry a fourth edge). */
 static inline render_flat_t *render_face(const render_obj_t *o, int i)
@@ -66,30 +79,27 @@ void render_begin_row(vis_t *r, uint8_t *rgb);
 /* Fill pixels xa..xb of a row with colour c, in the pixel format. */
 void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c);
 
-#if RENDER_RUNS
 /* Fine row `row` as runs of one owner each, when every object on it is
  * flat and alone on its row (render_row_vis would fill spans there): into
  * out[0 .. n-1], sorted, one object's runs merged; returns n, or -1 when
  * some object is lit or not alone, or there are more than cap runs. */
 int render_row_runs(vis_t *r, int32_t row, render_run_t *out, int cap);
-#endif
-#if RENDER_SROWS
 /* Per frame, sphere object i (index < FXRT_COHERENT_SPHERES): its row
  * series starts afresh (r->srow). */
 void render_srow_setup(vis_t *r, uint16_t i);
-#endif
 
 
 static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTHOGRAPHIC; }
 
-/* ---- evaluation ----------------------------------------------------------
- * Q16.16: in uint64, so that no intermediate can be signed overflow; every
- * final value is known to fit int64 (the scales above guarantee it). */
+/* ---- the forms' numbers --------------------------------------------------
+ * Evaluation: Q16.16 in uint64, so that no intermediate can be signed
+ * overflow; every final value is known to fit int64 (the scales above
+ * guarantee it). ix and iy are pixel offsets, below 2^15 (fxrt_config.h
+ * bounds FXRT_MAX_DIM): small factors for fx_umul64_small. The quadratic
+ * in Horner form, c + x (fx + fxx x + fxy y) + y (fy + fyy y): five such
+ * products, the same value modulo 2^64. A sphere's c and disc (rsw_t):
+ * 128-bit in Q16.16, num otherwise. */
 #if FXRT_NUMBER == FXRT_Q16
-/* ix and iy are pixel offsets, below 2^15 (fxrt_config.h bounds
- * FXRT_MAX_DIM): small factors for fx_umul64_small. The quadratic in
- * Horner form, c + x (fx + fxx x + fxy y) + y (fy + fyy y): five such
- * products, the same value modulo 2^64. */
 #if FX_HAVE_UMULL
 #define RENDER_EVAL static inline
 #else
@@ -111,33 +121,18 @@ RENDER_EVAL render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
     g[2] = (int64_t)((uint64_t)f->y + fx_umul64_small((uint64_t)f->yy, iy));
     return (render_k_t)fx_lin2_small(g, ix, iy);
 }
-#else
-static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
-{
-    return f->c + f->x * (num_t)ix + f->y * (num_t)iy;
-}
-static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
-{
-    num_t x = (num_t)ix, y = (num_t)iy;
-    return f->c + f->x * x + f->y * y + f->xx * x * x + f->xy * x * y + f->yy * y * y;
-}
-#endif
-
-#if FXRT_NUMBER == FXRT_Q16
 /* a * m exactly (mod 2^128, so exact whenever the product fits). By
  * pointer, like render_quad_k's: the M0 passes a 16-byte value partly on
  * the stack, copied with memcpy. */
 RENDER_MAYBE_UNUSED static fx128_t render_mul128_small(const fx128_t *a, int32_t m)
 {
     uint32_t um = m < 0 ? 0u - (uint32_t)m : (uint32_t)m;
-#if FX_HAVE_UMULL
-    uint64_t p0 = (uint64_t)(uint32_t)a->lo * um, p1 = (a->lo >> 32) * um, ph = (uint64_t)a->hi * um;
-#else
-    /* 32 x 32 -> 64-bit products by fx_umul32 (four 16-bit multiplies),
-     * not 64 x 64 library calls; the top word's only mod 2^64. */
+    /* Without UMULL, 32 x 32 -> 64-bit products by fx_umul32 (four 16-bit
+     * multiplies), not 64 x 64 library calls; the top word's only mod 2^64. */
     uint64_t p0 = fx_umul32((uint32_t)a->lo, um), p1 = fx_umul32((uint32_t)(a->lo >> 32), um);
-    uint64_t ph = fx_umul32((uint32_t)(uint64_t)a->hi, um) + ((uint64_t)((uint32_t)((uint64_t)a->hi >> 32) * um) << 32);
-#endif
+    uint64_t ph = FX_HAVE_UMULL ? (uint64_t)a->hi * um
+                                : fx_umul32((uint32_t)(uint64_t)a->hi, um) +
+                                      ((uint64_t)((uint32_t)((uint64_t)a->hi >> 32) * um) << 32);
     fx128_t r;
     r.lo = p0 + (p1 << 32);
     r.hi = (int64_t)(ph + (p1 >> 32) + (r.lo < p0 ? 1u : 0u));
@@ -152,16 +147,131 @@ RENDER_MAYBE_UNUSED static fx128_t render_quad_k(const fx128_t *v, const fx128_t
 {
     return fx128_add(fx128_add(*v, render_mul128_small(d1, k)), render_mul128_small(d2, k * (k - 1) / 2));
 }
-#endif
-
-/* The sphere's c and disc: 128-bit in Q16.16, num otherwise. */
-#if FXRT_NUMBER == FXRT_Q16
 typedef fx128_t rsw_t;
 static inline bool rsw_neg(rsw_t v) { return v.hi < 0; }
+
+static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
+{
+    render_k_t a = rquad_at(o->u.sphere->a, ix, iy);
+    render_k_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
+         pz = rlin_at(&o->u.sphere->pz, ix, iy);
+    bool ortho = o->u.sphere->ortho;
+    fx128_t sq = fx128_add(fx128_add(fx128_sqr(px), fx128_sqr(py)), fx128_sqr(pz));
+    /* Orthographic: a = 1 exactly and r2 may use all 128 bits. */
+    fx128_t r2a = ortho ? o->u.sphere->r2 : fx128_mul(a, fx128_shr_round(o->u.sphere->r2, 0));
+    *disc_out = fx128_sub(r2a, sq);
+    if (ortho)
+        *c_out = fx128_add(o->u.sphere->k, sq);
+    else
+        fx128_copy(c_out, &o->u.sphere->k);
+}
+/* A row's sphere cache (render_scache_t) with nothing in it. */
+static inline void render_scache_reset(render_scache_t *sc)
+{
+    sc->oi = sc->loi = RENDER_VIS_NONE;
+#if RENDER_DIV_GUESS
+    sc->poi = RENDER_VIS_NONE;
+#endif
+}
+/* vis/depth.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
+ * and a denominator d > 0, truncated to 24 bits each. */
+render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
+
+#define RENDER_DEPTH_ONE (1u << 23)
+#define RENDER_DEPTH_EMAX 126 /* exponents clamp to +-126 (t beyond 2^+-126) */
+
+#define RENDER_DEPTH(n, d, e) ((uint64_t)(d) << 32 | (uint64_t)(uint8_t)(int8_t)(e) << 24 | (uint64_t)(n))
+static inline uint32_t render_depth_n(render_depth_t t) { return (uint32_t)t & 0xffffffu; }
+static inline int render_depth_e(render_depth_t t) { return (int8_t)(uint8_t)((uint32_t)t >> 24); }
+static inline uint32_t render_depth_d(render_depth_t t) { return (uint32_t)(t >> 32); }
+
+/* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
+ * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
+static inline __attribute__((always_inline)) bool render_depth_less(render_depth_t a, render_depth_t b)
+{
+    uint32_t an = render_depth_n(a), bn = render_depth_n(b);
+    if (an == 0 || bn == 0)
+        return an == 0 && bn != 0;
+    int32_t de = (int32_t)render_depth_e(a) - (int32_t)render_depth_e(b);
+    if (de >= 2)
+        return false;
+    if (de <= -2)
+        return true;
+    /* No 32 x 32 -> 64 multiply (Armv6-M): first the top 15 bits of each
+     * factor, whose products fit 32 bits; they bound the exact products
+     * (l / 2^18 in [l1, l2), g / 2^18 in [g1, g2)) and decide unless the
+     * two intervals meet. */
+    if (!FX_HAVE_UMULL) {
+        uint32_t a9 = an >> 9, b9 = bn >> 9, ad9 = render_depth_d(a) >> 9, bd9 = render_depth_d(b) >> 9;
+        uint32_t l1 = a9 * bd9, g1 = b9 * ad9, l2 = l1 + a9 + bd9 + 1, g2 = g1 + b9 + ad9 + 1; /* < 2^30 */
+        if (de == 1) {
+            l1 <<= 1;
+            l2 <<= 1;
+        } else if (de == -1) {
+            g1 <<= 1;
+            g2 <<= 1;
+        }
+        if (l2 <= g1)
+            return true;
+        if (l1 >= g2)
+            return false;
+    }
+    uint64_t l = fx_umul32(an, render_depth_d(b)), g = fx_umul32(bn, render_depth_d(a));
+    if (de == 1)
+        l <<= 1;
+    else if (de == -1)
+        g <<= 1;
+    return l < g;
+}
+/* A 32-bit key that grows with depth t = r 2^e (r = n / d in (1/2, 2)),
+ * for ordering objects: 2^16 (e + r), r to about 15 bits (n / d with d's
+ * top 16 bits). It grows with r within one e; where t grows from
+ * (e - 1, r') to (e, r), r > r' / 2 > r' - 1 (r' < 2), so e + r >
+ * e - 1 + r', and more so across larger steps of e. Depths closer than
+ * about 2^-14 of each other may come out in either order. t = 0 sorts
+ * first. */
+static inline int32_t render_depth_key(render_depth_t t)
+{
+    uint32_t n = render_depth_n(t);
+    if (n == 0)
+        return INT32_MIN;
+    uint32_t r = (n << 8) / (render_depth_d(t) >> 8); /* r 2^16, in (2^15, 2^17) */
+    return render_depth_e(t) * (1 << 16) + (int32_t)r;
+}
 #else
+static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
+{
+    return f->c + f->x * (num_t)ix + f->y * (num_t)iy;
+}
+static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy)
+{
+    num_t x = (num_t)ix, y = (num_t)iy;
+    return f->c + f->x * x + f->y * y + f->xx * x * x + f->xy * x * y + f->yy * y * y;
+}
 typedef render_k_t rsw_t;
 static inline bool rsw_neg(rsw_t v) { return v < 0; }
+
+static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
+{
+    render_k_t a = rquad_at(o->u.sphere->a, ix, iy);
+    render_k_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
+         pz = rlin_at(&o->u.sphere->pz, ix, iy);
+    bool ortho = o->u.sphere->ortho;
+    render_k_t sq = px * px + py * py + pz * pz;
+    *disc_out = o->u.sphere->r2 * a - sq;
+    *c_out = ortho ? o->u.sphere->k + sq : o->u.sphere->k;
+}
+static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
+/* (Float and double: num_order_key.) */
+static inline int32_t render_depth_key(render_depth_t t)
+{
+    if (!(t.t > NUM_ZERO))
+        return INT32_MIN;
+    return num_order_key(t.t);
+}
 #endif
+
+
 
 static inline bool render_sphere_vals(render_k_t b, rsw_t c, rsw_t disc)
 {
@@ -208,38 +318,7 @@ static inline bool render_flat_at(const render_flat_t *f, int32_t ix, int32_t iy
     return render_flat_vals(rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy), e, f->edges);
 }
 
-static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
-{
-    render_k_t a = rquad_at(o->u.sphere->a, ix, iy);
-    render_k_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
-         pz = rlin_at(&o->u.sphere->pz, ix, iy);
-    bool ortho = o->u.sphere->ortho;
-#if FXRT_NUMBER == FXRT_Q16
-    fx128_t sq = fx128_add(fx128_add(fx128_sqr(px), fx128_sqr(py)), fx128_sqr(pz));
-    /* Orthographic: a = 1 exactly and r2 may use all 128 bits. */
-    fx128_t r2a = ortho ? o->u.sphere->r2 : fx128_mul(a, fx128_shr_round(o->u.sphere->r2, 0));
-    *disc_out = fx128_sub(r2a, sq);
-    if (ortho)
-        *c_out = fx128_add(o->u.sphere->k, sq);
-    else
-        fx128_copy(c_out, &o->u.sphere->k);
-#else
-    render_k_t sq = px * px + py * py + pz * pz;
-    *disc_out = o->u.sphere->r2 * a - sq;
-    *c_out = ortho ? o->u.sphere->k + sq : o->u.sphere->k;
-#endif
-}
 
-#if FXRT_NUMBER == FXRT_Q16
-/* A row's sphere cache (render_scache_t) with nothing in it. */
-static inline void render_scache_reset(render_scache_t *sc)
-{
-    sc->oi = sc->loi = RENDER_VIS_NONE;
-#if RENDER_DIV_GUESS
-    sc->poi = RENDER_VIS_NONE;
-#endif
-}
-#endif
 
 /* The output row (0 = top) of the pixel-offset row iy (ray rows are
  * iy = 2 y - height + 1, y from the bottom). */
@@ -279,119 +358,22 @@ static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 void render_setup_object(vis_t *r, uint16_t i);
 
 
-#if FXRT_NUMBER == FXRT_Q16
-/* vis/depth.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
- * and a denominator d > 0, truncated to 24 bits each. */
-render_depth_t render_depth_make(uint64_t n_hi, uint64_t n_lo, uint64_t d, int e);
-
-#define RENDER_DEPTH_ONE (1u << 23)
-#define RENDER_DEPTH_EMAX 126 /* exponents clamp to +-126 (t beyond 2^+-126) */
-
-#define RENDER_DEPTH(n, d, e) ((uint64_t)(d) << 32 | (uint64_t)(uint8_t)(int8_t)(e) << 24 | (uint64_t)(n))
-static inline uint32_t render_depth_n(render_depth_t t) { return (uint32_t)t & 0xffffffu; }
-static inline int render_depth_e(render_depth_t t) { return (int8_t)(uint8_t)((uint32_t)t >> 24); }
-static inline uint32_t render_depth_d(render_depth_t t) { return (uint32_t)(t >> 32); }
-
-/* Strictly nearer. n / d lies in (1/2, 2), so exponents two apart decide
- * alone; otherwise 24 x 24-bit products (below 2^49 after one doubling). */
-static inline __attribute__((always_inline)) bool render_depth_less(render_depth_t a, render_depth_t b)
-{
-    uint32_t an = render_depth_n(a), bn = render_depth_n(b);
-    if (an == 0 || bn == 0)
-        return an == 0 && bn != 0;
-    int32_t de = (int32_t)render_depth_e(a) - (int32_t)render_depth_e(b);
-    if (de >= 2)
-        return false;
-    if (de <= -2)
-        return true;
-#if !FX_HAVE_UMULL
-    /* No 32 x 32 -> 64 multiply (Armv6-M): first the top 15 bits of each
-     * factor, whose products fit 32 bits; they bound the exact products
-     * (l / 2^18 in [l1, l2), g / 2^18 in [g1, g2)) and decide unless the
-     * two intervals meet. */
-    {
-        uint32_t a9 = an >> 9, b9 = bn >> 9, ad9 = render_depth_d(a) >> 9, bd9 = render_depth_d(b) >> 9;
-        uint32_t l1 = a9 * bd9, g1 = b9 * ad9, l2 = l1 + a9 + bd9 + 1, g2 = g1 + b9 + ad9 + 1; /* < 2^30 */
-        if (de == 1) {
-            l1 <<= 1;
-            l2 <<= 1;
-        } else if (de == -1) {
-            g1 <<= 1;
-            g2 <<= 1;
-        }
-        if (l2 <= g1)
-            return true;
-        if (l1 >= g2)
-            return false;
-    }
-#endif
-    uint64_t l = fx_umul32(an, render_depth_d(b)), g = fx_umul32(bn, render_depth_d(a));
-    if (de == 1)
-        l <<= 1;
-    else if (de == -1)
-        g <<= 1;
-    return l < g;
-}
-/* A 32-bit key that grows with depth t = r 2^e (r = n / d in (1/2, 2)),
- * for ordering objects: 2^16 (e + r), r to about 15 bits (n / d with d's
- * top 16 bits). It grows with r within one e; where t grows from
- * (e - 1, r') to (e, r), r > r' / 2 > r' - 1 (r' < 2), so e + r >
- * e - 1 + r', and more so across larger steps of e. Depths closer than
- * about 2^-14 of each other may come out in either order. t = 0 sorts
- * first. */
-static inline int32_t render_depth_key(render_depth_t t)
-{
-    uint32_t n = render_depth_n(t);
-    if (n == 0)
-        return INT32_MIN;
-    uint32_t r = (n << 8) / (render_depth_d(t) >> 8); /* r 2^16, in (2^15, 2^17) */
-    return render_depth_e(t) * (1 << 16) + (int32_t)r;
-}
-#else
-static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
-/* (Float and double: the bits of a positive IEEE number grow with it; a
- * double's top 32 of them.) */
-static inline int32_t render_depth_key(render_depth_t t)
-{
-    if (!(t.t > NUM_ZERO))
-        return INT32_MIN;
-#if FXRT_NUMBER == FXRT_FLOAT
-    union {
-        float f;
-        int32_t i;
-    } u;
-    u.f = t.t;
-    return u.i;
-#else
-    union {
-        double f;
-        int64_t i;
-    } u;
-    u.f = (double)t.t;
-    return (int32_t)(u.i >> 32);
-#endif
-}
-#endif
 
 /* vis/depth.c, for tests: object i's depth at pixel offsets (ix, iy),
  * which it covers. */
 render_depth_t render_depth_test(const vis_t *r, uint16_t i, int32_t ix, int32_t iy);
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
-/* render_row.c, for tests: where a + b k (k = 0..kmax) is > 0 and < 0
+/* vis/flat.c, for tests (Q16.16 with steps and spans): where a + b k (k = 0..kmax) is > 0 and < 0
  * (strict; else >= 0 and <= 0), as a flat piece's run search finds it:
  * the split *pr, *pl of render_split_two (guess NULL) or, in the coherent
  * loop, of render_split_near from the guess *guess. Returns true when the
  * form falls (> 0 on [0, *pl], < 0 on [*pr, kmax]; else the other way). */
 bool render_split_test(int64_t a, int64_t b, int32_t kmax, int16_t *guess, bool strict, int32_t *pr, int32_t *pl);
-#endif
-#if RENDER_ESTEP
-/* render_row.c, for tests: render_split_edge, edge form ek's split (not
+/* vis/flat.c, for tests (RENDER_ESTEP): render_split_edge, edge form ek's split (not
  * strict, as render_split_test's) on columns x0..x0 + kmax of row iy (ix0:
  * column x0's pixel offset), from and into its row state *st. */
 bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t x0, int32_t ix0, int32_t iy,
                             int32_t kmax, int32_t *pr, int32_t *pl);
-#endif
 
 /* vis/depth.c, for tests: is object i's depth at pixel offsets (ix, iy),
  * which it covers (render_covers), inside its range (or has it none)? */
@@ -402,7 +384,7 @@ bool render_range_check(const vis_t *r, uint16_t i, int32_t ix, int32_t iy);
  * has taken the column. The newcomer's depth comes from its forms at the
  * pixel (render_resolve) or from values the scanline stepped. */
 bool render_resolve(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy);
-#if RENDER_STEPPED
+/* The same with values the stepped loop has (RENDER_STEPPED). */
 bool render_resolve_flat(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                          render_k_t n, render_k_t d);
 /* A box, found covering the pixel by its face f, with f's N and D there. */
@@ -410,17 +392,14 @@ bool render_resolve_box(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t 
                         render_k_t n, render_k_t d);
 bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
                            const rsw_t *disc);
-#endif
 
-#if FXRT_NUMBER == FXRT_Q16 && RENDER_STEPPED && !FXRT_NO_SPANS
-/* vis/depth.c: bounds lo, hi on object oi's depth at every column p..q of
+/* vis/depth.c (Q16.16 with steps and spans): bounds lo, hi on object oi's depth at every column p..q of
  * row iy, all of which it covers (planes, triangles, boxes, spheres with
  * row forms): 1 both bounds, 2 (a sphere) only hi, with lo its smaller
  * end (its bound below, from low, lies lower), 0 none; with low, a
  * sphere's bound below alone, into lo (1) or none (0). */
 int render_span_range(const vis_t *r, uint16_t oi, int32_t p, int32_t q, int32_t iy, render_depth_t *lo,
                       render_depth_t *hi, bool low);
-#endif
 
 /* The first planes' depth ranges over the whole of the current row, each
  * worked out once, when render_row_order first needs it (render_row_vis

@@ -8,7 +8,6 @@
 
 #include "vis/scan.h"
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
 RENDER_MAYBE_UNUSED static inline render_iv_t render_iv_and(render_iv_t a, render_iv_t b)
 {
     render_iv_t r = {a.lo > b.lo ? a.lo : b.lo, a.hi < b.hi ? a.hi : b.hi};
@@ -51,7 +50,6 @@ static inline bool render_split_two(int64_t a, int64_t b, int32_t kmax, bool str
     return fall;
 }
 
-#if RENDER_COHERENT
 /* ub k for a column k in 0..kmax + 1 (< 2^15): fx_umul64_small, out of
  * line on the M0 (three 32-bit products instead of an __aeabi_lmul call;
  * inline, five forms' worth of them tripled render_runs_flat's frame). */
@@ -61,7 +59,6 @@ static FXRT_INLINE_WIDE uint64_t render_umul_k(uint64_t ub, int32_t k) { return 
  * flat piece's runs start from a quotient instead of the row before's
  * columns: within one column of the answer wherever it is on the row, so
  * one evaluation checks it. */
-#if RENDER_DIV_GUESS
 /* For ub > 0: a guess g of the first k in 0..kmax + 1 where ua + ub k
  * >= 0 (read as signed; kmax + 1: none on the row). Both are cut to the
  * 16 significant bits of ub (truncated by 2^s). With R = -ua / ub, the
@@ -93,7 +90,6 @@ static inline int32_t render_first_guess(uint64_t ua, uint64_t ub, int32_t kmax)
     uint32_t q = nl / bl;
     return q > (uint32_t)kmax ? kmax + 1 : (int32_t)q;
 }
-#endif
 
 /* render_split_two without a 64-bit division: from a guess of the first
  * column where the form, taken increasing (negated when b < 0), is >= 0,
@@ -109,35 +105,35 @@ static inline __attribute__((always_inline)) bool render_split_near(int64_t a, i
     bool flip = b < 0;
     uint64_t ua = (uint64_t)(flip ? -a : a), ub = (uint64_t)(flip ? -b : b);
 #define RENDER_GE(k) ((int64_t)(ua + render_umul_k(ub, k)) >= 0) /* k on the row: the value fits */
-    int32_t lo, hi, s = 1;
+    int32_t lo, hi, s = 1, k;
     bool exact;
-#if RENDER_DIV_GUESS
-    /* The guess from a 32-bit division, checked by one evaluation: the
-     * first k >= 0 is g (F(g) >= 0, F(g - 1) < 0) or g + 1; anything
-     * else (rows of 2^13 columns or more) takes the search below. */
-    (void)g;
-    int32_t k = render_first_guess(ua, ub, kmax);
-    if (k <= kmax) {
-        uint64_t v = ua + render_umul_k(ub, k);
-        if ((int64_t)v >= 0) {
-            if (k == 0 || (int64_t)(v - ub) < 0) {
-                hi = k;
-                exact = v == 0;
+    if (RENDER_DIV_GUESS) {
+        /* The guess from a 32-bit division, checked by one evaluation:
+         * the first k >= 0 is g (F(g) >= 0, F(g - 1) < 0) or g + 1;
+         * anything else (rows of 2^13 columns or more) takes the search
+         * below. */
+        k = render_first_guess(ua, ub, kmax);
+        if (k <= kmax) {
+            uint64_t v = ua + render_umul_k(ub, k);
+            if ((int64_t)v >= 0) {
+                if (k == 0 || (int64_t)(v - ub) < 0) {
+                    hi = k;
+                    exact = v == 0;
+                    goto found;
+                }
+            } else if (k == kmax || (int64_t)(v + ub) >= 0) {
+                hi = k + 1;
+                exact = k < kmax && v + ub == 0;
                 goto found;
             }
-        } else if (k == kmax || (int64_t)(v + ub) >= 0) {
-            hi = k + 1;
-            exact = k < kmax && v + ub == 0;
+        } else if (!RENDER_GE(kmax)) {
+            hi = kmax + 1;
+            exact = false;
             goto found;
         }
-    } else if (!RENDER_GE(kmax)) {
-        hi = kmax + 1;
-        exact = false;
-        goto found;
+    } else {
+        k = *g < 0 ? 0 : (*g > kmax + 1 ? kmax + 1 : *g);
     }
-#else
-    int32_t k = *g < 0 ? 0 : (*g > kmax + 1 ? kmax + 1 : *g);
-#endif
     if (k <= kmax && !RENDER_GE(k)) { /* the first >= 0 is to the right (kmax + 1: none) */
         for (lo = k;; lo = hi, s *= 2) {
             hi = lo + s;
@@ -167,11 +163,9 @@ static inline __attribute__((always_inline)) bool render_split_near(int64_t a, i
             lo = mid;
     }
     exact = hi <= kmax && ua + render_umul_k(ub, hi) == 0;
-#if RENDER_DIV_GUESS
-found:;
-#else
-    *g = (int16_t)hi;
-#endif
+    if (!RENDER_DIV_GUESS)
+        *g = (int16_t)hi;
+found:
 #undef RENDER_GE
     /* The increasing form F is >= 0 on [hi, kmax] (> 0 from hi + 1 when
      * it is 0 at hi), < 0 on [0, hi - 1] (<= 0 up to hi then). */
@@ -179,11 +173,13 @@ found:;
     *pl = !strict && exact ? hi : hi - 1;
     return flip;
 }
+/* The split of the scans: from a guess in the coherent loop, else by a
+ * division. */
+#if RENDER_COHERENT
 #define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl) render_split_near(a, b, kmax, hint, strict, pr, pl)
 #else
 #define RENDER_SPLIT(a, b, kmax, hint, strict, pr, pl) ((void)(hint), render_split_two(a, b, kmax, strict, pr, pl))
 #endif
-#if RENDER_ESTEP
 /* The first k >= -RENDER_ESTEP_REACH with ua + ub k >= 0 (read as signed;
  * ub > 0) when it is at most RENDER_ESTEP_REACH, into *pk, and the form's
  * value there into *pv; false otherwise (the caller searches). From
@@ -297,7 +293,6 @@ static inline __attribute__((always_inline)) bool render_split_edge(render_estep
     *pl = v == 0 ? col - x0 : col - x0 - 1;
     return st->fall;
 }
-#endif
 
 /* The > 0 and < 0 (strict; else >= 0 and <= 0) intervals of a form from
  * its split. */
@@ -327,6 +322,5 @@ static inline __attribute__((always_inline)) void render_edge_runs(bool fall, in
         le->hi = lk < le->hi ? lk : le->hi;
     }
 }
-#endif
 
 #endif

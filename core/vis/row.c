@@ -40,12 +40,11 @@ static bool render_resolve_ortho(vis_t *r, uint32_t cur, uint16_t oi, int32_t x,
 static void render_scan_sphere(vis_t *r, uint16_t oi, const render_obj_t *o, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
-#if RENDER_SROWS
-    if (lone && r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES) { /* the series needs three rows */
+    if (RENDER_SROWS && lone && r->cam->height >= 3 &&
+        o->index < RENDER_SROW_SLOTS) { /* the series needs three rows */
         render_lone_sphere(r, oi, o, iy, rgb);
         return;
     }
-#endif
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     /* The row's forms, in r->scache (render_row_vis's): kept for
      * render_depth_at while this row lasts (a lone sphere owns no column). */
@@ -71,30 +70,22 @@ static void render_scan_sphere(vis_t *r, uint16_t oi, const render_obj_t *o, int
             render_cover(r, oi, x, iy, rgb);
         return;
     }
-#if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_SROWS)
-#if RENDER_SROWS
-    bool rows = r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES;
-#else
-    bool rows = false;
-#endif
-    if (!sp->ortho && (rows || FXRT_SPHERE_SEARCH)) {
+    bool rows = RENDER_SROWS && r->cam->height >= 3 && o->index < RENDER_SROW_SLOTS;
+    if (!FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_SROWS) && !sp->ortho && (rows || FXRT_SPHERE_SEARCH)) {
         /* Perspective: its runs located exactly (from the row before's
          * where it keeps row state, else by render_sphere_runs' search),
          * then claimed like a flat piece's; a depth, where an owner needs
          * one, comes from r->scache. */
         render_iv_t run[2];
         int nrun;
-#if RENDER_SROWS
         if (rows)
             nrun = render_sphere_runs_at(r, o, render_row_of(r->cam, iy), sp, run);
         else
-#endif
             nrun = render_sphere_runs(o, sp, x0, x1, ix0, iy, run);
         for (int k = 0; k < nrun; k++)
             render_claim_run(r, oi, NULL, x0 + run[k].lo, x0 + run[k].hi, iy, rgb, true);
         return;
     }
-#endif
     bool ortho = sp->ortho, use_c = sp->use_c;
     fx128_t v, d1, d2;
     fx128_copy(&v, &sp->v);

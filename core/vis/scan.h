@@ -17,12 +17,10 @@ static inline void render_fill(vis_t *r, uint16_t oi, int32_t xa, int32_t xb, ui
     render_fill_rgb(rgb, xa, xb, r->obj[oi].rgb);
 }
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* Columns x0 + k, k in lo..hi (empty when lo > hi). */
 typedef struct {
     int32_t lo, hi;
 } render_iv_t;
-#endif
 
 /* A flat piece's guesses (render_split_near), where it keeps them. */
 #if RENDER_HINTS
@@ -53,14 +51,13 @@ RENDER_MAYBE_UNUSED static inline int32_t render_iy(const cam_t *cam, int32_t ro
     return 2 * (cam->height - 1 - row) - cam->height + 1;
 }
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
-/* vis/claim.c: columns a..b of object oi, all covered by it (f: the flat
- * piece, NULL for a sphere), claimed among the row's other objects. */
+/* The scans, each built where its loop is (Q16.16's exact steps, with or
+ * without spans and row coherence; float's and double's restarted
+ * differences with FXRT_FLOAT_STEP). vis/claim.c: columns a..b of object
+ * oi, all covered by it (f: the flat piece, NULL for a sphere), claimed
+ * among the row's other objects. */
 void render_claim_run(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t a, int32_t b, int32_t iy, uint8_t *rgb,
                       bool single);
-#endif
-
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* vis/flat.c: a flat piece across columns x0..x1 by spans where it is wide
  * enough (true; false: the caller steps it with render_step_flat). */
 bool render_scan_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy, uint8_t *rgb,
@@ -72,10 +69,15 @@ void render_step_flat(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t x0,
 void render_sphere_row(const vis_t *r, const render_obj_t *o, int32_t ix0, int32_t iy, render_srow_t *s);
 int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int32_t x0, int32_t x1, int32_t ix0, int32_t iy,
                        render_iv_t run[2]);
-#if RENDER_SROWS
+/* ... with row coherence (RENDER_SROWS) */
 void render_lone_sphere(vis_t *r, uint16_t oi, const render_obj_t *o, int32_t iy, uint8_t *rgb);
 int render_sphere_runs_at(vis_t *r, const render_obj_t *o, int32_t row, const render_srow_t *s, render_iv_t run[2]);
 void render_srow_start(vis_t *r, const render_obj_t *o, int32_t row);
+/* vis/flat.c: the float stepped scan of a flat piece. */
+void render_scan_flat_f(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy, uint8_t *rgb,
+                        bool lone);
+
+#if RENDER_SROWS
 
 /* One fine row down the series of render_sphere_row_at. */
 static inline void render_srow_step(vis_t *r, uint16_t si)
@@ -106,11 +108,6 @@ static inline __attribute__((always_inline)) int render_sphere_row_runs(vis_t *r
 {
     return render_sphere_runs_at(r, o, row, render_sphere_row_at(r, o, row), run);
 }
-#endif
-#endif
-#if FXRT_NUMBER != FXRT_Q16 && FXRT_FLOAT_STEP && !FXRT_NO_STEP
-void render_scan_flat_f(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy, uint8_t *rgb,
-                        bool lone);
 #endif
 
 #endif

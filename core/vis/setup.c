@@ -5,7 +5,6 @@
  * docs/ARCHITECTURE.md for the method. */
 #include "vis/setup.h"
 
-#if FXRT_NUMBER == FXRT_Q16
 /* Do N and D share one strict sign over columns x0..x1 of output rows
  * r0..r1? Both are linear in the pixel offsets, so their signs at the
  * rectangle's four corners (exact integer values) decide for every pixel
@@ -23,7 +22,6 @@ static bool render_flat_front(const cam_t *cam, const render_flat_t *f, int32_t 
     }
     return pos == 4 || neg == 4;
 }
-#endif
 
 /* (Re)compute object i's forms and bounds from its world object. */
 void render_setup_object(vis_t *r, uint16_t i)
@@ -42,13 +40,11 @@ void render_setup_object(vis_t *r, uint16_t i)
     }
     for (int k = 0; k < o->nflat && (o->kind == RENDER_FLAT || o->kind == RENDER_BOX); k++) {
         render_flat_t *f = render_face(o, k);
-        f->front = false;
-#if FXRT_NUMBER == FXRT_Q16
-        if (o->kind == RENDER_FLAT)
+        f->front = false; /* (Q16.16 alone uses it) */
+        if (NUM_EXACT && o->kind == RENDER_FLAT)
             f->front = render_flat_front(cam, f, o->x0, o->x1, o->r0, o->r1);
-        else
+        else if (NUM_EXACT)
             f->front = render_flat_front(cam, f, o->u.face[k].x0, o->u.face[k].x1, o->u.face[k].r0, o->u.face[k].r1);
-#endif
     }
 }
 
@@ -65,11 +61,7 @@ static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_co
     o->px = render_565(c->rgb);
 #endif
     o->ranged = false;
-#if FXRT_MAX_LIGHTS > 0
-    o->flat = c->mat.kind == MATERIAL_FLAT;
-#else
-    o->flat = true;
-#endif
+    o->flat = !geom_lit(c);
     /* Its records, by the form its kind takes (scene/kinds.h): a flat
      * piece or a sphere's forms of their own, or box faces from the pool
      * (boxes come last: the rest of the pool). */
@@ -86,10 +78,8 @@ static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_co
     default: break;
     }
     render_setup_object(r, i);
-#if RENDER_SROWS
-    if (o->kind == RENDER_SPHERE && index < FXRT_COHERENT_SPHERES)
+    if (RENDER_SROWS && o->kind == RENDER_SPHERE && index < RENDER_SROW_SLOTS)
         render_srow_setup(r, i);
-#endif
 #if RENDER_HINTS
     if (o->kind == RENDER_FLAT || o->kind == RENDER_BOX) /* row coherence's guesses: a fixed start each frame */
         for (int k = 0; k < o->nflat; k++)
@@ -145,17 +135,14 @@ const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam)
     for (int32_t x = 0; x < cam->width; x++)
         r->owner[x] = 0;
     r->stamp = 0;
-#if RENDER_MESH
-    render_cull_meshes(r); /* before the triangles are set up: culled ones are not */
-#endif
+    if (RENDER_MESH)
+        render_cull_meshes(r); /* before the triangles are set up: culled ones are not */
 #define RENDER_ADD_KIND(K, k, ks, ...) FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) render_add(r, GEOM_##K, i, &w->ks[i].obj);)
     FXRT_KINDS(RENDER_ADD_KIND)
 #undef RENDER_ADD_KIND
-#if !FXRT_NO_ORDER
-    render_order(r);
-#endif
-#if RENDER_ROW_MASKS
-    render_row_masks(r);
-#endif
+    if (!FXRT_NO_ORDER)
+        render_order(r);
+    if (RENDER_ROW_MASKS)
+        render_row_masks(r);
     return r->error;
 }

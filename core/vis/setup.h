@@ -99,9 +99,6 @@ static inline int rk_lin_bits(const rc_t *c, const rc_t *x, const rc_t *y, rext_
 
 int rlin_need(const rclin_t *f, rext_t ext, int target);
 
-#if FXRT_NUMBER == FXRT_Q16
-#endif
-
 /* Linear forms get 61 bits: values, steps and sums stay inside int64. */
 #define RENDER_LIN_BITS 61
 /* The sphere's pieces get 62 bits; b^2 - a c is formed in 128 bits. */
@@ -179,16 +176,11 @@ static inline void render_points_bounds(const cam_t *cam, const vec3_t *p, int n
 FXRT_KINDS(RENDER_SETUP_KIND)
 #undef RENDER_SETUP_KIND
 
-/* vis/cull.c: the back faces of closed meshes, per frame. */
-#if RENDER_MESH
+/* vis/cull.c: the back faces of closed meshes, per frame (RENDER_MESH). */
 void render_cull_meshes(vis_t *r);
-#endif
-/* vis/order.c: nearest first; the row blocks' masks. */
-#if !FXRT_NO_ORDER
+/* vis/order.c: nearest first (unless FXRT_NO_ORDER); the row blocks'
+ * masks (RENDER_ROW_MASKS). */
 void render_order(vis_t *r);
-#endif
-#if RENDER_ROW_MASKS
 void render_row_masks(vis_t *r);
-#endif
 
 #endif
