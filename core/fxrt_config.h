@@ -321,7 +321,7 @@ FXRT_STATIC_ASSERT(FXRT_MAX_LIGHTS > 0 || (!FXRT_SHADOWS && !FXRT_PHONG), "FXRT_
  * is linked. The scene compiler emits the scene's own depth, or 0 when no
  * object is reflective or transparent. */
 #ifndef FXRT_MAX_DEPTH
-#if FXRT_MAX_LIGHTS > 0
+#if FXRT_MAX_LIGHTS > 0 /* (a literal number: fxrt.h's FXRT_CONFIG_SYMBOL pastes it) */
 #define FXRT_MAX_DEPTH 16
 #else
 #define FXRT_MAX_DEPTH 0
@@ -357,7 +357,7 @@ FXRT_STATIC_ASSERT(1 <= FXRT_SAMPLE_RUNS && FXRT_SAMPLE_RUNS <= 4096, "FXRT_SAMP
 /* FXRT_ADAPTIVE 1 allows 'samples N adaptive' (one ray per pixel where
  * the pixel's 3x3 neighbourhood has one key); 0 compiles it out. */
 #ifndef FXRT_ADAPTIVE
-#if FXRT_MAX_SAMPLES > 1
+#if FXRT_MAX_SAMPLES > 1 /* (a literal number, as FXRT_MAX_DEPTH) */
 #define FXRT_ADAPTIVE 1
 #else
 #define FXRT_ADAPTIVE 0
@@ -412,11 +412,7 @@ FXRT_STATIC_ASSERT(FXRT_BAND_ROWS >= 1, "FXRT_BAND_ROWS must be at least 1");
  * for scenes/lit/coloured-lights.scene, over the 2 KB stack's margin;
  * 256 B more for it. */
 #define FXRT_STACK_RAYCAST (256 * (FXRT_RENDERER == FXRT_RENDERER_RAYCAST && FXRT_MAX_LIGHTS > 0))
-#if FXRT_MAX_DEPTH > 0
-#define FXRT_STACK_EXTRA (1024 + 48 * FXRT_MAX_DEPTH + 256 * FXRT_ADAPTIVE + FXRT_STACK_RAYCAST)
-#else
-#define FXRT_STACK_EXTRA (256 * FXRT_ADAPTIVE + FXRT_STACK_RAYCAST)
-#endif
+#define FXRT_STACK_EXTRA ((FXRT_MAX_DEPTH > 0 ? 1024 + 48 * FXRT_MAX_DEPTH : 0) + 256 * FXRT_ADAPTIVE + FXRT_STACK_RAYCAST)
 #endif
 FXRT_STATIC_ASSERT(FXRT_STACK_EXTRA >= 0 && FXRT_STACK_EXTRA % 8 == 0, "FXRT_STACK_EXTRA must be a multiple of 8, >= 0");
 FXRT_STATIC_ASSERT(FXRT_FB_MODE != FXRT_FB_STREAM || FXRT_PIXEL == FXRT_RGB888, "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer");

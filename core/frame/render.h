@@ -121,10 +121,28 @@ static inline void render_set_keys(render_t *r, uint32_t *keys)
     r->vis.want_keys = keys != NULL;
 }
 
-/* The passes after the visibility pass (frame/render_shade.c,
- * frame/render_sample.c). */
-void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);                   /* FXRT_MAX_LIGHTS > 0 */
-void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference); /* FXRT_MAX_SAMPLES > 1 */
+/* The shading pass (frame/render_shade.c, FXRT_MAX_LIGHTS > 0): its
+ * per-frame constants (after the visibility set-up) and a row. */
+void render_shade_setup(render_t *r, const world_t *w);
+void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
+/* The sampler (frame/render_sample.c, FXRT_MAX_SAMPLES > 1): its part of
+ * render_setup before the visibility set-up (*cam becomes the fine camera
+ * when the world's samples are more than 1; false, with r->error, when
+ * the frame cannot be sampled), the objects' one-sample colours after it,
+ * and an output row. */
+bool render_sample_setup(render_t *r, const world_t *w, const cam_t **cam);
+void render_sample_objects(render_t *r, const world_t *w);
+void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference);
+/* Are output rows sampled (samples > 1)? */
+static inline bool render_sampled(const render_t *r)
+{
+#if FXRT_MAX_SAMPLES > 1
+    return r->sample.samples > 1;
+#else
+    (void)r;
+    return false;
+#endif
+}
 
 #if FXRT_MAX_LIGHTS > 0 && FXRT_MAX_SAMPLES > 1
 /* The obj index of the world's object (kind, index): a search, as obj is

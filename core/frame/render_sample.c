@@ -27,6 +27,51 @@
 
 #if FXRT_MAX_SAMPLES > 1
 
+/* One sample of colour c, clamped, in the sampling pass's sum units. */
+static void render_sum_one(color_sum_t one[3], color_t c)
+{
+    one[0] = one[1] = one[2] = 0;
+    color_sum_add(&one[0], c.r, 1);
+    color_sum_add(&one[1], c.g, 1);
+    color_sum_add(&one[2], c.b, 1);
+}
+
+bool render_sample_setup(render_t *r, const world_t *w, const cam_t **cam)
+{
+    render_sample_t *s = &r->sample;
+    s->samples = (uint8_t)world_samples(w);
+    s->adaptive = world_adaptive(w);
+    s->out_cam = *cam;
+    if (s->samples > 1) {
+        if ((*cam)->width > FXRT_RENDER_MAX_WIDTH / s->samples) {
+            r->error = "samples x width wider than FXRT_RENDER_MAX_WIDTH";
+            return false;
+        }
+        if (cam_fine(*cam, s->samples, &s->fine) != CAM_OK) {
+            r->error = "samples x height beyond FXRT_MAX_DIM, or samples x height x cot(fov/2) beyond 32767";
+            return false;
+        }
+        *cam = &s->fine;
+        render_sum_one(s->bg_one, w->background);
+#if FXRT_ADAPTIVE
+        s->arow[0] = s->arow[1] = s->arow[2] = -1;
+#endif
+#if RENDER_RUNS
+        s->run_cap = FXRT_SAMPLE_RUNS;
+        s->run_rows = 0;
+#endif
+    }
+    return true;
+}
+
+void render_sample_objects(render_t *r, const world_t *w)
+{
+    render_sample_t *s = &r->sample;
+    if (s->samples > 1)
+        for (uint16_t i = 0; i < r->vis.count; i++)
+            render_sum_one(s->one[i], world_common(w, (geom_kind_t)r->vis.obj[i].geom, r->vis.obj[i].index)->color);
+}
+
 /* The colour of fine column X's sample (owner oi) on fine row y (counted
  * from the bottom), unclamped. */
 static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t y)

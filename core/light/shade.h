@@ -43,7 +43,6 @@
 enum { FXRT_KINDS(SHADOW_SLOT_ENUM) };
 #undef SHADOW_SLOT_ENUM
 #define SHADOW_CULL (FXRT_SHADOWS && FXRT_SHADOW_CULL && SHADOW_CULL_SLOTS > 0)
-#if SHADOW_CULL
 typedef union {
     struct {
         vec3_t u;     /* unit vector from the light towards the bounding sphere's centre (Q16.16: in Q2.30) */
@@ -87,9 +86,6 @@ static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
 }
 #endif
 typedef shadow_cull_t shadow_cull_row_t; /* a light's row of the table */
-#else
-typedef void shadow_cull_row_t;
-#endif
 
 /* What the light sum needs of one object that does not change within a
  * frame, computed once per frame and object (render_setup) instead of at

@@ -22,7 +22,6 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
     return false;
 }
 
-#if SHADOW_CULL
 /* Shadow-ray culling (shade.h; docs/ACCURACY.md, "Shadow-ray culling",
  * derives the margins). The shadow ray from p along ldir (unit, rounded)
  * with t in (0, dist) ends at L' = p + dist ldir, within eps(dist) of the
@@ -63,7 +62,7 @@ static numw_t shadow_proj(vec3_t v, vec3_t l, int k)
 }
 
 /* The entry for an object with bounding sphere (c, r) seen from L. */
-static void shadow_cull_entry(shadow_cull_t *e, const light_t *L, vec3_t c, num_t r)
+__attribute__((unused)) static void shadow_cull_entry(shadow_cull_t *e, const light_t *L, vec3_t c, num_t r)
 {
     /* R' = r (1 + 2^-8) + 2^-10 + CULL_REL (|c|_1 + |L|_1). */
     num_t rr = num_add(num_add(r, num_mul(r, NUM(1.0 / 256))), NUM(1.0 / 1024));
@@ -125,7 +124,7 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
     }))
         FXRT_KINDS(SHADOW_CULL_ROW)
 #undef SHADOW_CULL_ROW
-        (void)row, (void)c, (void)r;
+        (void)row, (void)c, (void)r, (void)L; /* (no bounded kind: no cull entry) */
     }
 }
 
@@ -150,7 +149,7 @@ typedef struct {
 #if FX_HAVE_UMULL || FXRT_NUMBER != FXRT_Q16
 #define SHADOW_CULLED_INLINE inline __attribute__((always_inline))
 #else
-#define SHADOW_CULLED_INLINE __attribute__((noinline))
+#define SHADOW_CULLED_INLINE __attribute__((noinline, unused))
 #endif
 /* A point or spot light: the cone and the distances. */
 static SHADOW_CULLED_INLINE bool shadow_culled_pt(const shadow_ray_cull_t *rc, const shadow_cull_t *e)
@@ -178,23 +177,19 @@ static SHADOW_CULLED_INLINE bool shadow_culled_dir(const shadow_ray_cull_t *rc, 
     return numw_abs_gt(numw_sub_exact(rc->p1, e->dir.c1), lim) ||
            numw_abs_gt(numw_sub_exact(rc->p2, e->dir.c2), lim);
 }
-#else
-typedef void shadow_ray_cull_t;
-typedef char shadow_cull_t; /* a placeholder: no table */
-#endif
 
 /* Which culling a loop makes: a constant in each instance of
  * shadow_occluded_loop, so that each has its test inlined and no test of
  * the light's kind or of a missing table per object. */
 enum { SHADOW_CULL_NONE, SHADOW_CULL_PT, SHADOW_CULL_DIR };
-#if SHADOW_CULL
-#define SHADOW_ROW(base) (mode != SHADOW_CULL_NONE ? rc->row + (base) : NULL)
+/* SHADOW_CULL as a constant for the per-kind loops (the macro expands the
+ * kinds table, which cannot be expanded inside itself). */
+enum { SHADOW_CULLS = SHADOW_CULL };
+#define SHADOW_ROW(base) (SHADOW_CULLS && mode != SHADOW_CULL_NONE ? rc->row + (base) : NULL)
 #define SHADOW_SKIP(e)                                                                                                 \
-    (mode == SHADOW_CULL_PT ? shadow_culled_pt(rc, e) : mode == SHADOW_CULL_DIR ? shadow_culled_dir(rc, e) : false)
-#else
-#define SHADOW_ROW(base) NULL
-#define SHADOW_SKIP(e) false
-#endif
+    (SHADOW_CULLS && (mode == SHADOW_CULL_PT    ? shadow_culled_pt(rc, e)                                              \
+                     : mode == SHADOW_CULL_DIR ? shadow_culled_dir(rc, e)                                             \
+                                               : false))
 /* The next object's cull entry. */
 #define SHADOW_NEXT(e) ((e) = mode != SHADOW_CULL_NONE ? (e) + 1 : (e))
 
@@ -206,18 +201,16 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
                                                                       int mode)
 {
     (void)rc, (void)mode;
-#if SHADOW_CULL
     /* A directional light's: a copy that no call can change, so that its
      * fields may stay in registers (course-lambert-directional on the M3:
      * 946.7 -> 941.7 instructions per pixel; a point light's copy costs
      * more than it saves; on the M0 the test is a call, and the copy only
      * costs). */
     shadow_ray_cull_t own;
-    if (mode == SHADOW_CULL_DIR && !SHADOW_CULL_DOT16) {
+    if (SHADOW_CULL && mode == SHADOW_CULL_DIR && !SHADOW_CULL_DOT16) {
         own = *rc;
         rc = &own;
     }
-#endif
     /* Per kind, its objects: an unbounded kind's have no cull entry. */
 #define SHADOW_LOOP(K, k, ks, cap, solid, bounded, ...) FXRT_IF_##K(SHADOW_LOOP_##bounded(K, k, ks))
 #define SHADOW_LOOP_0(K, k, ks)                                                                               \
@@ -247,7 +240,6 @@ static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint
 {
     return shadow_occluded_loop(w, ray, tmax, skip_id, NULL, SHADOW_CULL_NONE);
 }
-#if SHADOW_CULL
 static bool shadow_occluded_pt(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
                                const shadow_ray_cull_t *rc)
 {
@@ -272,7 +264,6 @@ static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const
 #endif
     return shadow_occluded_dir(w, ray, tmax, skip_id, rc);
 }
-#endif
 
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
                     const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
@@ -291,8 +282,7 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const ge
         tmax = NUM_MAX - 1;
     }
     uint16_t id = obj->id;
-#if SHADOW_CULL
-    if (cull) {
+    if (SHADOW_CULL && cull) {
         shadow_ray_cull_t rc;
         rc.row = cull;
         rc.ldir = *ldir;
@@ -301,9 +291,6 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const ge
             return shadow_blocked_dir(w, &ray, tmax, id, &rc, p, l->axes);
         return shadow_occluded_pt(w, &ray, tmax, id, &rc);
     }
-#else
-    (void)cull;
-#endif
     return shadow_occluded(w, &ray, tmax, id);
 }
 

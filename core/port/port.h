@@ -12,10 +12,17 @@
 #ifndef FXRT_PORT_H
 #define FXRT_PORT_H
 
+/* Inlining policy: FXRT_INLINE_WIDE marks functions that are inlined into
+ * their callers where the core has registers to spare (Armv7-M, the host)
+ * and kept out of line on Armv6-M, where inlining them spilled registers
+ * and grew their callers' frames beyond what the micro:bit's 2 KB stack
+ * holds. Each use says what it measured. */
 #if defined(__ARM_ARCH_6M__)
 #define FXRT_PORT_SMALL_ISA 1
+#define FXRT_INLINE_WIDE __attribute__((noinline))
 #else
 #define FXRT_PORT_SMALL_ISA 0
+#define FXRT_INLINE_WIDE inline __attribute__((always_inline))
 #endif
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__)
@@ -35,15 +42,5 @@
 #define FXRT_STATIC_ASSERT(cond, msg) _Static_assert(cond, msg)
 #endif
 
-/* Inlining policy: FXRT_INLINE_WIDE marks functions that are inlined into
- * their callers where the core has registers to spare (Armv7-M, the host)
- * and kept out of line on Armv6-M, where inlining them spilled registers
- * and grew their callers' frames beyond what the micro:bit's 2 KB stack
- * holds. Each use says what it measured. */
-#if FXRT_PORT_SMALL_ISA
-#define FXRT_INLINE_WIDE __attribute__((noinline))
-#else
-#define FXRT_INLINE_WIDE inline __attribute__((always_inline))
-#endif
 
 #endif

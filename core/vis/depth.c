@@ -127,7 +127,112 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
     render_k_t a = o->u.sphere->ortho ? 1 : rquad_at(o->u.sphere->a, ix, iy);
     return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere->ta);
 }
+
+/* Sphere oi's forms on row iy where the row has them (r->scache: the
+ * sphere scanned last among others; r->srow: its row state), with the
+ * pixel offset *ix0 of their column k = 0; NULL when it has none, or they
+ * are not the perspective disc from outside. */
+static const render_srow_t *render_sphere_rowforms(const vis_t *r, uint16_t oi, int32_t iy, int32_t *ix0)
+{
+    const render_scache_t *sc = r->scache;
+    const render_srow_t *q = NULL;
+    if (!sc)
+        return NULL;
+    if (sc->oi == oi && sc->iy == iy) {
+        q = &sc->s;
+        *ix0 = sc->ix0;
+    }
+#if RENDER_SROWS
+    const render_obj_t *o = &r->obj[oi];
+    if (!q && o->index < FXRT_COHERENT_SPHERES && r->cam->height >= 3 &&
+        r->srow[o->index].vrow == render_row_of(r->cam, iy)) {
+        q = &r->srow[o->index].cur;
+        *ix0 = 2 * o->x0 - r->cam->width + 1;
+    }
+#endif
+    return q && !q->ortho && !q->inside ? q : NULL;
+}
+
+/* A sphere's disc at a pixel from its forms on this row, when it has them
+ * (perspective; c is then the constant k): from r->scache (the sphere
+ * scanned last among others on this row) or, with row state, from its
+ * own (it was scanned on this row, as it covers the pixel). Owners are
+ * asked about column after column, so the last column's value and step
+ * give the next by two additions. False: no row forms. */
+__attribute__((noinline)) static bool render_sphere_disc_row(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy,
+                                                             rsw_t *disc)
+{
+    render_scache_t *sc = r->scache;
+    int32_t ix0 = 0;
+    const render_srow_t *q = render_sphere_rowforms(r, oi, iy, &ix0);
+    if (!q)
+        return false;
+    int32_t k = (ix - ix0) / 2;
+    if (sc->loi == oi && k == sc->lk + 1) {
+        if (!sc->lstepped) /* the step at lk, once a second column follows */
+            sc->lstep = fx128_add(q->d1, render_mul128_small(&q->d2, sc->lk));
+        sc->lq = fx128_add(sc->lq, sc->lstep);
+        sc->lstep = fx128_add(sc->lstep, q->d2);
+        sc->lstepped = true;
+    } else if (!(sc->loi == oi && k == sc->lk)) {
+        sc->lq = render_quad_k(&q->v, &q->d1, &q->d2, k);
+        sc->loi = oi;
+        sc->lstepped = false;
+    }
+    sc->lk = k;
+    disc->lo = sc->lq.lo; /* (halves: a struct copy is a memcpy call on the M0) */
+    disc->hi = sc->lq.hi;
+    return true;
+}
+
+/* t scaled by about (1 + 2^-16) (up) or (1 - 2^-16): a margin for the
+ * 24-bit truncation of depths between the ends of a segment. */
+static render_depth_t render_depth_widen(render_depth_t t, bool up)
+{
+    uint32_t n = render_depth_n(t);
+    int e = render_depth_e(t);
+    if (n == 0)
+        return t;
+    if (up) {
+        n += (n >> 16) + 1;
+        if (n >= 2 * RENDER_DEPTH_ONE) {
+            n >>= 1;
+            e++;
+        }
+    } else {
+        n -= (n >> 16) + 1;
+        if (n < RENDER_DEPTH_ONE) {
+            n <<= 1;
+            e--;
+        }
+    }
+    return render_depth_pack(n, render_depth_d(t), e);
+}
+
+/* Linear form f at pixel offsets (ixb, iy), given its value va 2 dk
+ * columns before: Q16.16 by one product (2 dk < 2 FXRT_MAX_DIM is a
+ * small factor: the same value), float and double afresh. */
+static inline render_k_t render_lin_from(const render_lin_t *f, render_k_t va, int32_t dk, int32_t ixb, int32_t iy)
+{
+    (void)ixb, (void)iy;
+    return (render_k_t)((uint64_t)va + fx_umul64_small((uint64_t)f->x, 2 * dk));
+}
 #else
+static bool render_sphere_disc_row(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, rsw_t *disc)
+{
+    (void)r, (void)oi, (void)ix, (void)iy, (void)disc;
+    return false; /* (Q16.16 alone keeps row forms) */
+}
+static render_depth_t render_depth_widen(render_depth_t t, bool up)
+{
+    t.t = up ? t.t * NUM(1.0001) : t.t * NUM(0.9999);
+    return t;
+}
+static inline render_k_t render_lin_from(const render_lin_t *f, render_k_t va, int32_t dk, int32_t ixb, int32_t iy)
+{
+    (void)va, (void)dk;
+    return rlin_at(f, ixb, iy);
+}
 static const render_depth_t render_depth_far = {NUM_MAX};
 static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, render_k_t d)
 {
@@ -195,64 +300,6 @@ __attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *
     render_sphere_cd(o, ix, iy, c, disc);
 }
 
-#if FXRT_NUMBER == FXRT_Q16
-/* Sphere oi's forms on row iy where the row has them (r->scache: the
- * sphere scanned last among others; r->srow: its row state), with the
- * pixel offset *ix0 of their column k = 0; NULL when it has none, or they
- * are not the perspective disc from outside. */
-static const render_srow_t *render_sphere_rowforms(const vis_t *r, uint16_t oi, int32_t iy, int32_t *ix0)
-{
-    const render_scache_t *sc = r->scache;
-    const render_srow_t *q = NULL;
-    if (!sc)
-        return NULL;
-    if (sc->oi == oi && sc->iy == iy) {
-        q = &sc->s;
-        *ix0 = sc->ix0;
-    }
-#if RENDER_SROWS
-    const render_obj_t *o = &r->obj[oi];
-    if (!q && o->index < FXRT_COHERENT_SPHERES && r->cam->height >= 3 &&
-        r->srow[o->index].vrow == render_row_of(r->cam, iy)) {
-        q = &r->srow[o->index].cur;
-        *ix0 = 2 * o->x0 - r->cam->width + 1;
-    }
-#endif
-    return q && !q->ortho && !q->inside ? q : NULL;
-}
-
-/* A sphere's disc at a pixel from its forms on this row, when it has them
- * (perspective; c is then the constant k): from r->scache (the sphere
- * scanned last among others on this row) or, with row state, from its
- * own (it was scanned on this row, as it covers the pixel). Owners are
- * asked about column after column, so the last column's value and step
- * give the next by two additions. False: no row forms. */
-__attribute__((noinline)) static bool render_sphere_disc_row(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy,
-                                                             rsw_t *disc)
-{
-    render_scache_t *sc = r->scache;
-    int32_t ix0 = 0;
-    const render_srow_t *q = render_sphere_rowforms(r, oi, iy, &ix0);
-    if (!q)
-        return false;
-    int32_t k = (ix - ix0) / 2;
-    if (sc->loi == oi && k == sc->lk + 1) {
-        if (!sc->lstepped) /* the step at lk, once a second column follows */
-            sc->lstep = fx128_add(q->d1, render_mul128_small(&q->d2, sc->lk));
-        sc->lq = fx128_add(sc->lq, sc->lstep);
-        sc->lstep = fx128_add(sc->lstep, q->d2);
-        sc->lstepped = true;
-    } else if (!(sc->loi == oi && k == sc->lk)) {
-        sc->lq = render_quad_k(&q->v, &q->d1, &q->d2, k);
-        sc->loi = oi;
-        sc->lstepped = false;
-    }
-    sc->lk = k;
-    disc->lo = sc->lq.lo; /* (halves: a struct copy is a memcpy call on the M0) */
-    disc->hi = sc->lq.hi;
-    return true;
-}
-#endif
 
 /* A sphere's depth at a pixel it covers. Its 128-bit forms in frames of
  * their own, one after the other: off the stack of the other kinds'
@@ -263,11 +310,9 @@ __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const vis
     const render_obj_t *o = &r->obj[oi];
     rsw_t c, disc;
     const rsw_t *cp = &c;
-#if FXRT_NUMBER == FXRT_Q16
     if (render_sphere_disc_row(r, oi, ix, iy, &disc))
         cp = &o->u.sphere->k;
     else
-#endif
         render_sphere_cd_full(o, ix, iy, &c, &disc);
     return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), cp, &disc);
 }
@@ -317,16 +362,12 @@ typedef struct {
 
 static render_depth_t render_raw_depth(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, const render_raw_t *raw)
 {
-#if RENDER_STEPPED
-    if (raw->how == RENDER_RAW_FLAT)
+    if (RENDER_STEPPED && raw->how == RENDER_RAW_FLAT)
         return render_flat_depth(raw->f, raw->n, raw->d);
-    if (raw->how == RENDER_RAW_BOX)
+    if (RENDER_STEPPED && raw->how == RENDER_RAW_BOX)
         return render_box_depth(r, &r->obj[oi], ix, iy, raw->f, raw->n, raw->d);
-    if (raw->how == RENDER_RAW_SPHERE)
+    if (RENDER_STEPPED && raw->how == RENDER_RAW_SPHERE)
         return render_sphere_depth(&r->obj[oi], ix, iy, raw->b, raw->c, raw->disc);
-#else
-    (void)raw;
-#endif
     return render_depth_at(r, oi, ix, iy);
 }
 
@@ -458,34 +499,6 @@ bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32
 }
 #endif
 
-/* t scaled by about (1 + 2^-16) (up) or (1 - 2^-16): a margin for the
- * 24-bit truncation of depths between the ends of a segment. */
-static render_depth_t render_depth_widen(render_depth_t t, bool up)
-{
-#if FXRT_NUMBER == FXRT_Q16
-    uint32_t n = render_depth_n(t);
-    int e = render_depth_e(t);
-    if (n == 0)
-        return t;
-    if (up) {
-        n += (n >> 16) + 1;
-        if (n >= 2 * RENDER_DEPTH_ONE) {
-            n >>= 1;
-            e++;
-        }
-    } else {
-        n -= (n >> 16) + 1;
-        if (n < RENDER_DEPTH_ONE) {
-            n <<= 1;
-            e--;
-        }
-    }
-    return render_depth_pack(n, render_depth_d(t), e);
-#else
-    t.t = up ? t.t * NUM(1.0001) : t.t * NUM(0.9999);
-    return t;
-#endif
-}
 
 /* Depth range of flat piece f over columns x0..x1 of row iy: 1 when it
  * is in front at both ends (N and D of one strict sign), so all along
@@ -496,14 +509,9 @@ static int render_flat_range(const vis_t *r, const render_flat_t *f, int32_t x0,
 {
     int32_t w = r->cam->width;
     render_k_t na = rlin_at(&f->n, 2 * x0 - w + 1, iy), da = rlin_at(&f->d, 2 * x0 - w + 1, iy);
-    /* The far end from the near one: one product each, not two (the same
-     * value: 2 (x1 - x0) < 2 FXRT_MAX_DIM is a small factor). */
-#if FXRT_NUMBER == FXRT_Q16
-    render_k_t nb = (render_k_t)((uint64_t)na + fx_umul64_small((uint64_t)f->n.x, 2 * (x1 - x0)));
-    render_k_t db = (render_k_t)((uint64_t)da + fx_umul64_small((uint64_t)f->d.x, 2 * (x1 - x0)));
-#else
-    render_k_t nb = rlin_at(&f->n, 2 * x1 - w + 1, iy), db = rlin_at(&f->d, 2 * x1 - w + 1, iy);
-#endif
+    /* The far end from the near one (render_lin_from). */
+    render_k_t nb = render_lin_from(&f->n, na, x1 - x0, 2 * x1 - w + 1, iy);
+    render_k_t db = render_lin_from(&f->d, da, x1 - x0, 2 * x1 - w + 1, iy);
     if (!((na > 0 && da > 0 && nb > 0 && db > 0) || (na < 0 && da < 0 && nb < 0 && db < 0)))
         return (na > 0 && da < 0 && nb > 0 && db < 0) || (na < 0 && da > 0 && nb < 0 && db > 0) ? 0 : -1;
     render_depth_t ta = render_flat_depth(f, na, da), tb = render_flat_depth(f, nb, db);

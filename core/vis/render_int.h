@@ -67,6 +67,12 @@ static inline render_estep_t *render_estep_k(render_flat_t *f, int k) { return &
 #define RENDER_VIS_NONE 0xFFFFu
 #if RENDER_VIS
 static inline bool render_tracks(const vis_t *r) { return r->track || r->want_keys; }
+#else
+static inline bool render_tracks(const vis_t *r)
+{
+    (void)r;
+    return false;
+}
 #endif
 
 /* The visibility pass alone (fast loop and reference loop): owners in

@@ -5,12 +5,12 @@
  * with the forms themselves stepped down the rows. */
 #include "vis/roots.h"
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
-#if FXRT_SPHERE_SEARCH
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* The columns k in 0..kmax where q(k) >= 0, for d2 < 0 (one run or none):
  * q rises while its step d1 + d2 k is positive, then falls, so the peak
- * and both ends are binary searches on monotone predicates. */
-static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t kmax)
+ * and both ends are binary searches on monotone predicates
+ * (FXRT_SPHERE_SEARCH, with spans). */
+RENDER_MAYBE_UNUSED static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t kmax)
 {
     render_iv_t none = {1, 0};
     int32_t lo = 0, hi = kmax; /* peak: first k whose step is <= 0 (or kmax) */
@@ -47,10 +47,6 @@ static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, fx128_t d2, int32_t 
     return run;
 }
 
-#endif
-#endif
-
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* render_sphere_cd out of line: render_sphere_row's three calls share it
  * (inline, its temporaries would grow render_sphere_row's frame). */
 __attribute__((noinline)) static void render_sphere_cd_row(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c,
@@ -78,8 +74,8 @@ __attribute__((noinline)) void render_sphere_row(const vis_t *r, const render_ob
     s->d2 = fx128_add(fx128_sub(f[2], fx128_add(f[1], f[1])), f[0]);
 }
 
-#if !FXRT_NO_SPANS && (FXRT_SPHERE_SEARCH || RENDER_SROWS)
-/* Where b > 0 (the centre's side of the eye) on columns k = 0..kmax. */
+/* Where b > 0 (the centre's side of the eye) on columns k = 0..kmax
+ * (spans, with FXRT_SPHERE_SEARCH or RENDER_SROWS). */
 RENDER_MAYBE_UNUSED static render_iv_t render_sphere_front(const render_obj_t *o, int32_t ix0, int32_t iy, int32_t kmax)
 {
     int32_t pr, pl;
@@ -87,7 +83,6 @@ RENDER_MAYBE_UNUSED static render_iv_t render_sphere_front(const render_obj_t *o
     render_iv_t pos = {fall ? 0 : pr, fall ? pl : kmax};
     return pos;
 }
-#endif
 
 /* The runs of a sphere over columns x0..x1 (k from x0; the same columns
  * the per-column test covers). At most two: b > 0 is a half-line and disc
@@ -102,15 +97,13 @@ int render_sphere_runs(const render_obj_t *o, const render_srow_t *s, int32_t x0
         run[0].hi = kmax;
         return 1;
     }
-#if !FXRT_NO_SPANS && FXRT_SPHERE_SEARCH
-    if (!s->ortho && s->d2.hi < 0) {
+    if (!FXRT_NO_SPANS && FXRT_SPHERE_SEARCH && !s->ortho && s->d2.hi < 0) {
         /* Perspective, disc concave along the row: its run is located by
          * exact evaluations (binary searches on the monotone sides of the
          * quadratic) instead of stepping. */
         run[0] = render_iv_and(render_sphere_run(s->v, s->d1, s->d2, kmax), render_sphere_front(o, ix0, iy, kmax));
         return run[0].lo <= run[0].hi;
     }
-#endif
     /* Stepping: one run when the covered set is an interval (orthographic,
      * or perspective with disc concave), then stop after it. */
     bool one_run = s->ortho || s->d2.hi < 0;
@@ -152,11 +145,6 @@ __attribute__((noinline)) void render_lone_sphere(vis_t *r, uint16_t oi, const r
     for (int k = 0; k < nrun; k++)
         render_fill(r, oi, o->x0 + run[k].lo, o->x0 + run[k].hi, rgb);
 }
-#endif
-#endif
-
-#if RENDER_COHERENT
-#if RENDER_SROWS
 
 void render_srow_setup(vis_t *r, uint16_t i)
 {
