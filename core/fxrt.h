@@ -57,20 +57,9 @@
 /* Bytes of one output row of `width` pixels: RGB888, 3 bytes per pixel,
  * or RGB565 (2 bytes) when the core is built with FXRT_PIXEL =
  * FXRT_RGB565. */
-#ifndef FXRT_ROW_BYTES
-#if defined(FXRT_RGB565) && defined(FXRT_PIXEL) && FXRT_PIXEL == FXRT_RGB565
-#define FXRT_ROW_BYTES(width) (2 * (width))
-#else
-#define FXRT_ROW_BYTES(width) (3 * (width))
-#endif
-#endif
+#define FXRT_ROW_BYTES(width) ((FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * (width))
 
 /* --- configuration check ------------------------------------------------ */
-#if defined(FXRT_PIXEL)
-#define FXRT_CONFIG_PIXEL FXRT_PIXEL
-#else
-#define FXRT_CONFIG_PIXEL 1
-#endif
 #define FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l, d, x, ad)                                                    \
     fxrt_config_n##n##_p##p##_s##s##_t##t##_b##b##_w##w##_px##px##_l##l##_d##d##_x##x##a##ad
 #define FXRT_CONFIG_CAT(n, p, s, t, b, w, px, l, d, x, ad) FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l, d, x, ad)
@@ -79,7 +68,7 @@
  * x: FXRT_MAX_SAMPLES, a: FXRT_ADAPTIVE). */
 #define FXRT_CONFIG_SYMBOL                                                                                    \
     FXRT_CONFIG_CAT(FXRT_NUMBER, FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES, FXRT_MAX_BOXES,       \
-                    FXRT_RENDER_MAX_WIDTH, FXRT_CONFIG_PIXEL, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES,    \
+                    FXRT_RENDER_MAX_WIDTH, FXRT_PIXEL, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES,    \
                     FXRT_ADAPTIVE)
 /* Defined once, in core/fxrt.c, for the configuration the core is built with. */
 extern const uint32_t FXRT_CONFIG_SYMBOL;

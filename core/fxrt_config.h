@@ -171,64 +171,69 @@ FXRT_STATIC_ASSERT(0 <= FXRT_ORDER_MAX && FXRT_ORDER_MAX <= 4096, "FXRT_ORDER_MA
 #endif
 FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_MAX_SPHERES, "FXRT_COHERENT_SPHERES must be 0..FXRT_MAX_SPHERES");
 
-/* Ablation switches, for measuring what each optimisation of the fast
- * renderer saves (make bench-ablation); none changes a Q16.16 pixel:
- *   FXRT_NO_BOUNDS  1 = step every object over the whole screen, and test
- *                   every bounded object against every secondary ray
- *   FXRT_NO_STEP    1 = evaluate every form from scratch at each pixel
- *   FXRT_NO_LONE    1 = always go through the owner bookkeeping
- *   FXRT_NO_SPANS   1 = step a lone flat piece pixel by pixel instead of
- *                   locating its runs on the row and filling them
- *   FXRT_NO_ZRANGE  1 = decide every overlap by computing both depths (no
- *                   depth ranges, no per-row order against planes)
- *   FXRT_NO_COHERENCE 1 = find runs on each row from scratch (a lone
- *                   sphere: three 128-bit form evaluations and binary
- *                   searches, or stepping on Armv6-M; a flat piece: a
- *                   64-bit division per form) instead of stepping a
- *                   sphere's forms down the rows and searching from the
- *                   row before's runs (RAM: 120 B per coherent sphere, 12 B
- *                   per flat piece)
- *   FXRT_NO_HOIST   1 = (reference loop) recompute each object's forms at
- *                   every pixel instead of once per frame
- *   FXRT_NO_ORDER   1 = visit the objects in scene order (kind after kind)
- *                   instead of nearest first (render_setup's sort)
- * 0 (default) = the optimisation is on. */
-#ifndef FXRT_NO_BOUNDS
-#define FXRT_NO_BOUNDS 0
+/* Measurement builds: FXRT_ABLATE switches parts of the renderer off,
+ * one bit each, to measure what each saves (make bench-ablation,
+ * bench-lit-bound, cutoff), e.g.
+ *   -DFXRT_ABLATE='(FXRT_ABLATE_STEP | FXRT_ABLATE_SPANS)'
+ * 0 (default): everything on. The first eight change no Q16.16 pixel:
+ *   FXRT_ABLATE_BOUNDS    step every object over the whole screen, and
+ *                         test every bounded object against every
+ *                         secondary ray
+ *   FXRT_ABLATE_STEP      evaluate every form from scratch at each pixel
+ *   FXRT_ABLATE_LONE      always go through the owner bookkeeping
+ *   FXRT_ABLATE_SPANS     step a lone flat piece pixel by pixel instead of
+ *                         locating its runs on the row and filling them
+ *   FXRT_ABLATE_ZRANGE    decide every overlap by computing both depths
+ *                         (no depth ranges, no per-row order against
+ *                         planes)
+ *   FXRT_ABLATE_COHERENCE find runs on each row from scratch (a lone
+ *                         sphere: three 128-bit form evaluations and
+ *                         binary searches, or stepping on Armv6-M; a flat
+ *                         piece: a 64-bit division per form) instead of
+ *                         stepping a sphere's forms down the rows and
+ *                         searching from the row before's runs (RAM: 120 B
+ *                         per coherent sphere, 12 B per flat piece)
+ *   FXRT_ABLATE_HOIST     (reference loop) recompute each object's forms
+ *                         at every pixel instead of once per frame
+ *   FXRT_ABLATE_ORDER     visit the objects in scene order (kind after
+ *                         kind) instead of nearest first
+ *   FXRT_ABLATE_CUTOFF    trace every secondary ray up to the depth,
+ *                         however small its weight (by default a ray
+ *                         whose weight is below 1/512 in every channel is
+ *                         not traced)
+ *   FXRT_ABLATE_LIGHT_SUM every lit pixel still gets its camera ray, hit
+ *                         point and normal, but its light sum stops before
+ *                         the first light (the ambient term alone): what a
+ *                         lit pixel costs before any light is summed; the
+ *                         frames are not the renderer's (host keys still
+ *                         get the full light loop)
+ * The renderer reads them as FXRT_NO_BOUNDS ... FXRT_NO_ORDER,
+ * FXRT_NO_CUTOFF and FXRT_BOUND_NO_LIGHT_SUM (0 or 1). */
+#define FXRT_ABLATE_BOUNDS 0x001
+#define FXRT_ABLATE_STEP 0x002
+#define FXRT_ABLATE_LONE 0x004
+#define FXRT_ABLATE_ZRANGE 0x008
+#define FXRT_ABLATE_SPANS 0x010
+#define FXRT_ABLATE_COHERENCE 0x020
+#define FXRT_ABLATE_HOIST 0x040
+#define FXRT_ABLATE_ORDER 0x080
+#define FXRT_ABLATE_CUTOFF 0x100
+#define FXRT_ABLATE_LIGHT_SUM 0x200
+#ifndef FXRT_ABLATE
+#define FXRT_ABLATE 0
 #endif
-#ifndef FXRT_NO_STEP
-#define FXRT_NO_STEP 0
-#endif
-#ifndef FXRT_NO_LONE
-#define FXRT_NO_LONE 0
-#endif
-#ifndef FXRT_NO_ZRANGE
-#define FXRT_NO_ZRANGE 0
-#endif
-#ifndef FXRT_NO_SPANS
-#define FXRT_NO_SPANS 0
-#endif
-#ifndef FXRT_NO_COHERENCE
-#define FXRT_NO_COHERENCE 0
-#endif
-#ifndef FXRT_NO_HOIST
-#define FXRT_NO_HOIST 0
-#endif
-#ifndef FXRT_NO_ORDER
-#define FXRT_NO_ORDER 0
-#endif
+FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0x3ff) == 0, "FXRT_ABLATE: an unknown bit (the FXRT_ABLATE_ names only)");
+#define FXRT_NO_BOUNDS (((FXRT_ABLATE) & FXRT_ABLATE_BOUNDS) != 0)
+#define FXRT_NO_STEP (((FXRT_ABLATE) & FXRT_ABLATE_STEP) != 0)
+#define FXRT_NO_LONE (((FXRT_ABLATE) & FXRT_ABLATE_LONE) != 0)
+#define FXRT_NO_ZRANGE (((FXRT_ABLATE) & FXRT_ABLATE_ZRANGE) != 0)
+#define FXRT_NO_SPANS (((FXRT_ABLATE) & FXRT_ABLATE_SPANS) != 0)
+#define FXRT_NO_COHERENCE (((FXRT_ABLATE) & FXRT_ABLATE_COHERENCE) != 0)
+#define FXRT_NO_HOIST (((FXRT_ABLATE) & FXRT_ABLATE_HOIST) != 0)
+#define FXRT_NO_ORDER (((FXRT_ABLATE) & FXRT_ABLATE_ORDER) != 0)
+#define FXRT_NO_CUTOFF (((FXRT_ABLATE) & FXRT_ABLATE_CUTOFF) != 0)
+#define FXRT_BOUND_NO_LIGHT_SUM (((FXRT_ABLATE) & FXRT_ABLATE_LIGHT_SUM) != 0)
 
-/* FXRT_BOUND_NO_LIGHT_SUM 1 = measurement only, for make bench-lit-bound
- * (docs/BENCHMARKS.md, "Lit scenes"): every lit pixel still gets its
- * camera ray, hit point and normal, but its light sum stops before the
- * first light (the ambient term alone: no light vectors, no n . l, no
- * Phong term, no shadow rays). What is left is what a lit pixel costs
- * before any light is summed; the frames are not the renderer's. Host
- * keys (fxrt render --keys) still get the full light loop. 0 (default) =
- * off. */
-#ifndef FXRT_BOUND_NO_LIGHT_SUM
-#define FXRT_BOUND_NO_LIGHT_SUM 0
-#endif
 
 /* FXRT_SPHERE_SEARCH: how the fast Q16.16 renderer finds the run of a
  * sphere alone on its row (the frame is the same either way):
@@ -329,14 +334,6 @@ FXRT_STATIC_ASSERT(FXRT_MAX_LIGHTS > 0 || (!FXRT_SHADOWS && !FXRT_PHONG), "FXRT_
 #endif
 FXRT_STATIC_ASSERT(0 <= FXRT_MAX_DEPTH && FXRT_MAX_DEPTH <= 16, "FXRT_MAX_DEPTH must be in 0..16");
 FXRT_STATIC_ASSERT(FXRT_MAX_DEPTH == 0 || FXRT_MAX_LIGHTS > 0, "FXRT_MAX_DEPTH > 0 needs FXRT_MAX_LIGHTS > 0 (reflective and transparent materials)");
-/* FXRT_NO_CUTOFF 1 traces every secondary ray up to the depth, however
- * small its weight (a measurement switch for the cut-off's effect: make
- * cutoff, tests/cutoff.sh); 0 (default) is the model of issue 12: a ray
- * whose weight is below 1/512 in every channel is not traced. */
-#ifndef FXRT_NO_CUTOFF
-#define FXRT_NO_CUTOFF 0
-#endif
-FXRT_STATIC_ASSERT(FXRT_NO_CUTOFF == 0 || FXRT_NO_CUTOFF == 1, "FXRT_NO_CUTOFF must be 0 or 1");
 /* Largest N of 'samples N' (N x N rays per pixel, 1..16). 1 compiles
  * supersampling out. The visibility pass then works on a camera N times
  * as wide, so N * width must stay within FXRT_RENDER_MAX_WIDTH. */

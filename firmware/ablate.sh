@@ -26,15 +26,15 @@ BOARD=${BOARD:-mps2-an385}
 SIZE=${ABLATE_SIZE:-160x120}
 M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
 variants=(
-    "reference, no hoisting|ablnohoist|-DFXRT_RENDERER=2 -DFXRT_NO_HOIST=1"
+    "reference, no hoisting|ablnohoist|-DFXRT_RENDERER=2 -DFXRT_ABLATE=FXRT_ABLATE_HOIST"
     "reference|ablref|-DFXRT_RENDERER=2"
-    "fast, no bounds|ablnobounds|-DFXRT_NO_BOUNDS=1"
-    "fast, no stepping|ablnostep|-DFXRT_NO_STEP=1"
-    "fast, no lone painting|ablnolone|-DFXRT_NO_LONE=1"
-    "fast, no spans|ablnospans|-DFXRT_NO_SPANS=1"
-    "fast, no depth ranges|ablnozrange|-DFXRT_NO_ZRANGE=1"
-    "fast, no row coherence|ablnocoh|-DFXRT_NO_COHERENCE=1"
-    "fast, scene order|ablnoorder|-DFXRT_NO_ORDER=1"
+    "fast, no bounds|ablnobounds|-DFXRT_ABLATE=FXRT_ABLATE_BOUNDS"
+    "fast, no stepping|ablnostep|-DFXRT_ABLATE=FXRT_ABLATE_STEP"
+    "fast, no lone painting|ablnolone|-DFXRT_ABLATE=FXRT_ABLATE_LONE"
+    "fast, no spans|ablnospans|-DFXRT_ABLATE=FXRT_ABLATE_SPANS"
+    "fast, no depth ranges|ablnozrange|-DFXRT_ABLATE=FXRT_ABLATE_ZRANGE"
+    "fast, no row coherence|ablnocoh|-DFXRT_ABLATE=FXRT_ABLATE_COHERENCE"
+    "fast, scene order|ablnoorder|-DFXRT_ABLATE=FXRT_ABLATE_ORDER"
     "fast||"
 )
 if [ -n "${ABLATE_SCENES:-}" ]; then

@@ -5,7 +5,7 @@
 # side by side in one run (QEMU -icount, instructions per pixel):
 #   float step          the best soft-float build (-DFXRT_FLOAT_STEP=1)
 #   q16                 the fast renderer
-#   q16, no light sum   the same with -DFXRT_BOUND_NO_LIGHT_SUM=1: camera
+#   q16, no light sum   the same with -DFXRT_ABLATE=FXRT_ABLATE_LIGHT_SUM: camera
 #                       ray, hit point and normal at every lit pixel, the
 #                       light sum stopped before its first light (no light
 #                       vector, n . l, Phong term or shadow ray)
@@ -25,8 +25,8 @@ M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
 builds=(
     "float step|float|step|-DFXRT_FLOAT_STEP=1"
     "q16|q16||"
-    "q16, no light sum|q16|bound|-DFXRT_BOUND_NO_LIGHT_SUM=1"
-    "float step, no light sum|float|stepbound|-DFXRT_FLOAT_STEP=1 -DFXRT_BOUND_NO_LIGHT_SUM=1"
+    "q16, no light sum|q16|bound|-DFXRT_ABLATE=FXRT_ABLATE_LIGHT_SUM"
+    "float step, no light sum|float|stepbound|-DFXRT_FLOAT_STEP=1 -DFXRT_ABLATE=FXRT_ABLATE_LIGHT_SUM"
 )
 declare -A ipp
 fail=0

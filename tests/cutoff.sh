@@ -2,7 +2,7 @@
 # The cut-off's effect (issue 12: "its effect against no cut-off is
 # measured and stated"): the scenes rendered by the normal host tool
 # (BUILD/fxrt: rays whose weight is below 1/512 in every channel are not
-# traced) and by one built with FXRT_NO_CUTOFF 1 (CUTOFF_FXRT, every ray
+# traced) and by one built with FXRT_ABLATE_CUTOFF (CUTOFF_FXRT, every ray
 # traced up to the depth), in double and Q16.16, compared pixel by pixel
 # with fxrt compare: pixels that differ, largest difference (1/255), PSNR.
 # Checked: the no-cut-off tool renders; the largest difference stays

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Nearest first (core/render_setup.c, render_order) changes the work, never
 # a pixel: every scene in scenes/ and its subfolders at 96x72, in q16,
-# float and double, with the host tool and with its FXRT_NO_ORDER build
+# float and double, with the host tool and with its FXRT_ABLATE_ORDER build
 # (tests/order.mk), byte for byte. The lit scenes and two bench scenes
 # are rendered again with `samples 2 adaptive` and lights on every
 # object: the adaptive sampler's one ray per pixel takes the shading
@@ -12,7 +12,7 @@ set -u
 NOORDER=${NOORDER:-$BUILD/noorder/fxrt}
 out=$BUILD/tests/order
 mkdir -p "$out"
-check "the FXRT_NO_ORDER build exists ($NOORDER)" test -x "$NOORDER"
+check "the FXRT_ABLATE_ORDER build exists ($NOORDER)" test -x "$NOORDER"
 scenes=()
 for f in scenes/*.scene scenes/*/*.scene; do
     [ -f "$f" ] && ! grep -q '^# expect: rejected:' "$f" && scenes+=("$f")

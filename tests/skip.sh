@@ -22,7 +22,7 @@
 #   samples 2 adaptive  world_hit is there (the control)
 #   run mode          samples 2 with one primitive kind at a time, M0 and
 #                     M3, compiled with the firmware's -Werror warnings
-#   ablation          each switch of make bench-ablation (FXRT_NO_*), M0
+#   ablation          each switch of make bench-ablation (FXRT_ABLATE), M0
 #                     and M3, the renderer compiled with -Werror
 # Then the counters of tests/test_skip.c (built with FXRT_STATS 1) run.
 set -u
@@ -109,16 +109,16 @@ for cpu in cortex-m0 cortex-m3; do
     done
 done
 # Every ablation switch of make bench-ablation (firmware/ablate.sh) compiles
-# with the firmware's -Werror on the M0 and the M3 (FXRT_NO_SPANS once left
+# with the firmware's -Werror on the M0 and the M3 (FXRT_ABLATE_SPANS once left
 # render_scan_flat's parameters unused and broke the ablation run).
 abl_dir=$out/ablation-caps
 mkdir -p "$abl_dir"
-abl_switches="FXRT_NO_BOUNDS FXRT_NO_STEP FXRT_NO_LONE FXRT_NO_SPANS FXRT_NO_ZRANGE FXRT_NO_COHERENCE FXRT_NO_HOIST FXRT_NO_ORDER"
+abl_switches="FXRT_ABLATE_BOUNDS FXRT_ABLATE_STEP FXRT_ABLATE_LONE FXRT_ABLATE_SPANS FXRT_ABLATE_ZRANGE FXRT_ABLATE_COHERENCE FXRT_ABLATE_HOIST FXRT_ABLATE_ORDER"
 for cpu in cortex-m0 cortex-m3; do # the 16 builds side by side (each in a directory of its own)
     for sw in $abl_switches; do
         mkdir -p "$abl_dir/$cpu-$sw"
         (cd "$abl_dir/$cpu-$sw" && arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes \
-            -Werror -O2 -mcpu=$cpu -mthumb -ffreestanding -c -DFXRT_NUMBER=1 -D$sw=1 -DFXRT_MAX_LIGHTS=0 \
+            -Werror -O2 -mcpu=$cpu -mthumb -ffreestanding -c -DFXRT_NUMBER=1 -DFXRT_ABLATE=$sw -DFXRT_MAX_LIGHTS=0 \
             -I"$OLDPWD/core" "$OLDPWD"/core/vis/*.c) \
             >"$abl_dir/$cpu-$sw.log" 2>&1 &
     done
@@ -127,7 +127,7 @@ wait
 for cpu in cortex-m0 cortex-m3; do
     for sw in $abl_switches; do
         log=$abl_dir/$cpu-$sw.log
-        check "$sw=1, $cpu: the renderer compiles with -Werror ($(grep -m1 error "$log"))" test ! -s "$log"
+        check "FXRT_ABLATE=$sw, $cpu: the renderer compiles with -Werror ($(grep -m1 error "$log"))" test ! -s "$log"
     done
 done
 flat=$(syms flat | grep -E "$LIGHTING" || true)

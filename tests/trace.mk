@@ -27,11 +27,11 @@ TEST_PREREQ   += $(TRACE_TEST_BIN)
 SAN_EXTRA_BIN += $(foreach n,$(NUMBERS),$(SAN_DIR)/tests/test_trace_$(n))
 
 # The cut-off's effect (tests/cutoff.sh): a second host tool built with
-# FXRT_NO_CUTOFF 1 in $(BUILD)/nocut, against the normal one. Not part of
+# FXRT_ABLATE_CUTOFF in $(BUILD)/nocut, against the normal one. Not part of
 # make test (the second build takes a minute).
 #
 #   make cutoff
 cutoff: deps $(BUILD)/fxrt
-	$(Q)$(MAKE) --no-print-directory BUILD=$(BUILD)/nocut HOSTCFLAGS="$(HOSTCFLAGS) -DFXRT_NO_CUTOFF=1" $(BUILD)/nocut/fxrt
+	$(Q)$(MAKE) --no-print-directory BUILD=$(BUILD)/nocut HOSTCFLAGS="$(HOSTCFLAGS) -DFXRT_ABLATE=FXRT_ABLATE_CUTOFF" $(BUILD)/nocut/fxrt
 	$(Q)BUILD=$(BUILD) CUTOFF_FXRT=$(BUILD)/nocut/fxrt tests/run.sh tests/cutoff.sh
 .PHONY: cutoff

@@ -144,7 +144,6 @@ static inline bool render_sampled(const render_t *r)
 #endif
 }
 
-#if FXRT_MAX_LIGHTS > 0 && FXRT_MAX_SAMPLES > 1
 /* The obj index of the world's object (kind, index): a search, as obj is
  * sorted nearest first each frame (render_setup); for the adaptive
  * sampler's one ray per pixel, whose world_hit costs far more. */
@@ -155,6 +154,5 @@ static inline uint16_t render_obj_of(const vis_t *r, geom_kind_t kind, uint16_t 
         i++;
     return i;
 }
-#endif
 
 #endif

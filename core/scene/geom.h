@@ -87,16 +87,6 @@ static inline bool geom_point_less(vec3_t p, vec3_t q)
     return p.z < q.z;
 }
 
-/* Colour channels: COLOR_MAX is full intensity and COLOR_FRAC(x) the
- * channel for an intensity fraction x in 0..1 (a constant initialiser).
- * Here a channel is the fraction itself; color.h may define both for
- * another representation, which then wins. */
-#ifndef COLOR_MAX
-#define COLOR_MAX NUM_ONE
-#endif
-#ifndef COLOR_FRAC
-#define COLOR_FRAC(x) NUM(x)
-#endif
 
 /* Domain checks: FXRT_OK, or the fxrt_err_t (fxrt_err.h) that says why the
  * renderer cannot take the value. They are what the scene parser checks,

@@ -4,11 +4,11 @@
  * for the sampler's run mode. */
 #include "vis/roots.h"
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP && !FXRT_NO_SPANS
-/* Inline into its callers (M3: 0.5 % fewer instructions on the bench
+#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+/* Runs (with spans, unless FXRT_ABLATE_SPANS). Inline into its callers (M3: 0.5 % fewer instructions on the bench
  * set), but out of line on Armv6-M, where it would grow
  * render_scan_flat's frame on the claiming path (the micro:bit's stack). */
-#define RENDER_RUNS_INLINE static FXRT_INLINE_WIDE
+#define RENDER_RUNS_INLINE static FXRT_INLINE_WIDE RENDER_MAYBE_UNUSED
 /* A flat piece's hits on columns x0..x1 as at most four runs (k from
  * x0, possibly overlapping), found exactly from its forms: the same sign
  * tests as the stepping loop (N and D of one strict sign, edges all >= 0
@@ -67,7 +67,7 @@ RENDER_RUNS_INLINE int render_runs_flat(const vis_t *r, render_flat_t *f, int32_
 }
 
 /* A lone flat piece: its runs filled. */
-static void render_span_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
+RENDER_MAYBE_UNUSED static void render_span_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb)
 {
     render_iv_t run[4];
@@ -88,7 +88,6 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
 {
     return render_split_edge(st, ek, x0, ix0, iy, kmax, pr, pl);
 }
-#endif
 
 /* A flat piece among others locates its runs from this many columns on;
  * below, stepping is as cheap. With the quotient's guesses (division and
@@ -97,7 +96,6 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
  * before). */
 #define RENDER_CLAIM_MIN (RENDER_DIV_GUESS ? 6 : 8)
 
-#if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
 /* A flat piece across columns x0..x1, by spans where it is wide enough
  * (true); false: the caller steps it (render_step_flat), each form linear,
  * so one exact 64-bit addition per form and pixel. */
@@ -105,25 +103,21 @@ bool render_scan_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32
                              uint8_t *rgb, bool lone)
 {
     bool single = r->obj[oi].kind == RENDER_FLAT;
-#if !FXRT_NO_SPANS
     /* Alone on the row and wide: runs located exactly, filled by words
      * (a division per form pays off from about 4 columns per form on the M3). */
-    if (lone && x1 - x0 >= 4 * (1 + f->edges)) {
+    if (!FXRT_NO_SPANS && lone && x1 - x0 >= 4 * (1 + f->edges)) {
         render_span_flat(r, oi, f, x0, x1, iy, rgb);
         return true;
     }
     /* Among others and wide: its runs located the same way, then each
      * covered column claimed (render_claim_run). */
-    if (x1 - x0 >= RENDER_CLAIM_MIN) {
+    if (!FXRT_NO_SPANS && x1 - x0 >= RENDER_CLAIM_MIN) {
         render_iv_t iv[4];
         int nrun = render_runs_flat(r, f, x0, x1, iy, RENDER_HINT(f), iv);
         for (int k = 0; k < nrun; k++)
             render_claim_run(r, oi, f, x0 + iv[k].lo, x0 + iv[k].hi, iy, rgb, single);
         return true;
     }
-#else
-    (void)r, (void)oi, (void)f, (void)x0, (void)x1, (void)iy, (void)rgb, (void)lone, (void)single;
-#endif
     return false;
 }
 

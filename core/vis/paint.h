@@ -33,17 +33,13 @@ static inline bool render_free(const vis_t *r, uint32_t tag, uint32_t cur)
 #if FXRT_PIXEL == FXRT_RGB565
 static inline void render_paint(vis_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
-#if RENDER_VIS
-    r->painted[x] = oi;
-#endif
+    render_mark(r, x, oi);
     ((render_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
 }
 #else
 static inline void render_paint(vis_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
-#if RENDER_VIS
-    r->painted[x] = oi;
-#endif
+    render_mark(r, x, oi);
     rgb8_t c = r->obj[oi].rgb;
     rgb[3 * x + 0] = c.r;
     rgb[3 * x + 1] = c.g;

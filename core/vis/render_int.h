@@ -67,12 +67,15 @@ static inline render_estep_t *render_estep_k(render_flat_t *f, int k) { return &
 #define RENDER_VIS_NONE 0xFFFFu
 #if RENDER_VIS
 static inline bool render_tracks(const vis_t *r) { return r->track || r->want_keys; }
+/* Record object oi (RENDER_VIS_NONE: none) as column x's painter. */
+static inline void render_mark(vis_t *r, int32_t x, uint16_t oi) { r->painted[x] = oi; }
 #else
 static inline bool render_tracks(const vis_t *r)
 {
     (void)r;
     return false;
 }
+static inline void render_mark(vis_t *r, int32_t x, uint16_t oi) { (void)r, (void)x, (void)oi; }
 #endif
 
 /* The visibility pass alone (fast loop and reference loop): owners in

@@ -8,11 +8,9 @@
  * background in every pixel, with word stores where the row is aligned. */
 void render_begin_row(vis_t *r, uint8_t *rgb)
 {
-#if RENDER_VIS
     if (render_tracks(r))
         for (int32_t x = 0; x < r->cam->width; x++)
-            r->painted[x] = RENDER_VIS_NONE;
-#endif
+            render_mark(r, x, RENDER_VIS_NONE);
     if (++r->stamp == RENDER_STAMP_LIMIT) {
         for (int32_t x = 0; x < r->cam->width; x++)
             r->owner[x] = 0;

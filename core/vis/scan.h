@@ -9,11 +9,9 @@
 /* Fill columns xa..xb with object oi's colour (and record it in vis). */
 static inline void render_fill(vis_t *r, uint16_t oi, int32_t xa, int32_t xb, uint8_t *rgb)
 {
-#if RENDER_VIS
-    if (render_tracks(r)) /* only the shading and sampling passes read vis */
+    if (render_tracks(r)) /* only the shading and sampling passes read painted[] */
         for (int32_t k = xa; k <= xb; k++)
-            r->painted[k] = oi;
-#endif
+            render_mark(r, k, oi);
     render_fill_rgb(rgb, xa, xb, r->obj[oi].rgb);
 }
 
