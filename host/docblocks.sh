@@ -34,6 +34,8 @@ blocks=(
     "golden|docs/TESTING.md|$L/golden.sh.log|suite tests/golden.sh"
     "oracle|docs/ACCURACY.md|$L/oracle.sh.log|suite tests/oracle.sh"
     "oracle-sweep|docs/ACCURACY.md|$L/oracle-sweep.log|make oracle"
+    "fx|docs/ACCURACY.md|$L/test_fx.log|suite $BUILD/tests/test_fx"
+    "fx-exhaustive|docs/ACCURACY.md|$L/fx-exhaustive.log|make fx-exhaustive"
     "diff|docs/ACCURACY.md|$L/test_diff.log|suite $BUILD/tests/test_diff"
     "stress|docs/ACCURACY.md|$L/stress.log|make stress"
     "bounce-growth|docs/ACCURACY.md|$L/bounce-growth.log|make bounce-growth"
@@ -45,6 +47,7 @@ blocks=(
     "cutoff|docs/TRACING.md|$L/cutoff.sh.log|make cutoff"
     "norecurse|docs/TRACING.md|$L/norecurse.sh.log|suite tests/norecurse.sh"
     "size|docs/FIRMWARE.md|$BUILD/size.md|make size"
+    "fit-message|docs/FIRMWARE.md|$L/fit-message.log|make fw SCENE=scenes/bench/mixed64.scene BOARD=microbit"
     "ablation|docs/BENCHMARKS.md|$BUILD/bench/ablation.md|make bench-ablation"
     "lit-bound|docs/BENCHMARKS.md|$BUILD/bench/lit-bound.md|make bench-lit-bound"
 )
@@ -60,6 +63,7 @@ field() { # NAME INDEX: one field of a block's entry
 shown() { # the command as a reader types it, in markdown
     case $1 in
     "suite $BUILD/tests/test_diff") echo "\`make test\` (its suite test_diff)" ;;
+    "suite $BUILD/tests/test_fx") echo "\`make test\` (its suite test_fx)" ;;
     "suite tests/lit.sh") echo "\`make lit\` (also in \`make test\`)" ;;
     "suite tests/trace.sh") echo "\`make trace\` (also in \`make test\`)" ;;
     "suite tests/norecurse.sh") echo "\`make norecurse\` (also in \`make test\`)" ;;
@@ -92,6 +96,10 @@ run_source() { # NAME: run the command that writes its source
     "make bench-ablation" | "make bench-lit-bound")
         make -s --no-print-directory BUILD="$BUILD" "${cmd#make }" >/dev/null ;;
     "make stress") make -s --no-print-directory BUILD="$BUILD" stress >/dev/null ;;
+    "make fw "*) # a scene that does not fit: the command fails, its message is the source
+        read -r -a args <<<"${cmd#make fw }"
+        make -s --no-print-directory BUILD="$BUILD" "$BUILD/fxrt" "$BUILD/fxrt-scenec" >/dev/null
+        make -s --no-print-directory BUILD="$BUILD" fw "${args[@]}" >"$src" 2>&1 && die "$1: $cmd fitted" || true ;;
     "make oracle") make -s --no-print-directory BUILD="$BUILD" "$BUILD/tests/oracle" >/dev/null
         # make oracle lists findings and exits non-zero while there are any.
         make -s --no-print-directory BUILD="$BUILD" oracle >"$src" 2>&1 || true ;;
@@ -232,6 +240,38 @@ fmt_diff() { # the summary tables test_diff prints, without its replay details
          on { sub(/, [0-9.]+ s$/, ""); print }' | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
 }
 
+fmt_fx() { # the worst error of each maths function, from test_fx's ERR lines
+    local log
+    log=$(cat)
+    grep -q '^ERR ' <<<"$log" || die "fx: no 'ERR FUNCTION WORST' lines in the log"
+    echo "| function | worst error measured (LSB) |"
+    echo "|---|---|"
+    sed -nE 's/^ERR ([a-z0-9_]+) (.*)$/\1 \2/p' <<<"$log" |
+        sed -E 's/_of_\(1\+1e-7\|x\|\)/ of its bound (1 LSB + 1e-7 relative)/' |
+        awk '{ f = $1; sub(/^[^ ]+ /, ""); gsub(/\|/, "\\|"); printf "| `%s` | %s |\n", f, $0 }'
+}
+
+fmt_fx_exhaustive() { # fx_exhaustive's summary lines, per code path
+    local log
+    log=$(cat)
+    grep -qE '^fx_(sqrt|rsqrt|sin_deg):' <<<"$log" || die "fx-exhaustive: no summary lines in the log"
+    echo '```'
+    sed -nE -e 's/^  EXHAUST .*\/(fx_exhaustive(_nohw)?) .*$/\1:/p' -e '/^(fx_|  first failure)/p' <<<"$log" |
+        sed -E -e 's/^fx_exhaustive:$/host and Armv7-M code path (UDIV, CLZ, UMULL):/' \
+            -e 's/^fx_exhaustive_nohw:$/Cortex-M0 code path (no UDIV, CLZ or UMULL):/' -e 's/^fx_/  fx_/'
+    echo '```'
+}
+
+fmt_fit_message() { # the fit check's message, as the terminal shows it
+    local log
+    log=$(grep -vE '^(make|  [A-Z]+  )' || true)
+    grep -q 'does not fit' <<<"$log" || die "fit-message: no 'does not fit' message in the log"
+    echo '```'
+    echo "\$ $(field fit-message 3)"
+    sed -n '/does not fit/,$p' <<<"$log" | grep -E '^(scenes/|  )'
+    echo '```'
+}
+
 fmt_table() { # the markdown table a command printed (its | lines, and the line before it)
     awk '/^\|/ { if (!t && prev != "") print prev "\n"; t = 1; print; next } { prev = $0 }' | grep -v '^\[' || true
 }
@@ -250,6 +290,9 @@ format() { # NAME < source
     cutoff) fmt_cutoff ;;
     norecurse) fmt_norecurse ;;
     size | ablation | lit-bound) cat ;;
+    fit-message) fmt_fit_message ;;
+    fx) fmt_fx ;;
+    fx-exhaustive) fmt_fx_exhaustive ;;
     *) die "no formatter for $1" ;;
     esac
 }
