@@ -298,12 +298,10 @@ format() { # NAME < source
 }
 
 block() { # NAME: the block's whole text
-    local name=$1 src cmd rev body
+    local name=$1 src cmd body
     src=$(field "$name" 2) cmd=$(shown "$(field "$name" 3)")
     body=$(format "$name" <"$src") || return 1
     [[ -n $body ]] || die "$name: nothing to show from $src"
-    rev=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-    [[ -n $(git status --porcelain --untracked-files=no 2>/dev/null) ]] && rev="$rev (with uncommitted changes)"
     echo "Generated from the output of $cmd by \`make doc-blocks DOC_BLOCKS=$name DOCS_UPDATE=1\`"
     echo "(host/docblocks.sh), at commit $rev. Do not edit by hand."
     echo
@@ -316,6 +314,11 @@ case ${1:-} in
 replace) [[ $# -eq 4 ]] || die "usage: host/docblocks.sh replace DOC NAME FILE"; replace "$2" "$3" "$4"; exit 0 ;;
 -*) die "unknown option $1" ;;
 esac
+
+# The commit the blocks are generated at, taken once, before any page is
+# rewritten (the rewrites themselves would mark the tree as changed).
+rev=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+[[ -n $(git status --porcelain --untracked-files=no 2>/dev/null) ]] && rev="$rev (with uncommitted changes)"
 
 names=("$@")
 [[ ${#names[@]} -gt 0 ]] || mapfile -t names < <(for b in "${blocks[@]}"; do echo "${b%%|*}"; done)
