@@ -78,9 +78,9 @@ replace() {
     local doc=$1 name=$2 file=$3
     grep -qxF "<!-- $name -->" "$doc" && grep -qxF "<!-- /$name -->" "$doc" ||
         die "$doc lacks the <!-- $name --> ... <!-- /$name --> markers"
-    awk -v f="$file" -v open="<!-- $name -->" -v close="<!-- /$name -->" '
-        $0 == open { print; while ((getline l < f) > 0) print l; close(f); skip = 1; next }
-        $0 == close { skip = 0 }
+    awk -v f="$file" -v begin="<!-- $name -->" -v end="<!-- /$name -->" '
+        $0 == begin { print; while ((getline l < f) > 0) print l; close(f); skip = 1; next }
+        $0 == end { skip = 0 }
         !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
 }
 
