@@ -81,7 +81,8 @@ replace() {
     awk -v f="$file" -v begin="<!-- $name -->" -v end="<!-- /$name -->" '
         $0 == begin { print; while ((getline l < f) > 0) print l; close(f); skip = 1; next }
         $0 == end { skip = 0 }
-        !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+        !skip' "$doc" >"$doc.tmp" || { rm -f "$doc.tmp"; die "$doc: rewriting <!-- $name --> failed"; }
+    mv "$doc.tmp" "$doc"
 }
 
 run_source() { # NAME: run the command that writes its source
