@@ -257,9 +257,10 @@ fmt_fx_exhaustive() { # fx_exhaustive's summary lines, per code path
     log=$(cat)
     grep -qE '^fx_(sqrt|rsqrt|sin_deg):' <<<"$log" || die "fx-exhaustive: no summary lines in the log"
     echo '```'
-    sed -nE -e 's/^  EXHAUST .*\/(fx_exhaustive(_nohw)?) .*$/\1:/p' -e '/^(fx_|  first failure)/p' <<<"$log" |
-        sed -E -e 's/^fx_exhaustive:$/host and Armv7-M code path (UDIV, CLZ, UMULL):/' \
-            -e 's/^fx_exhaustive_nohw:$/Cortex-M0 code path (no UDIV, CLZ or UMULL):/' -e 's/^fx_/  fx_/'
+    awk '/^  EXHAUST .*fx_exhaustive_nohw / { print "Cortex-M0 code path (no UDIV, CLZ or UMULL):"; next }
+         /^  EXHAUST .*fx_exhaustive / { print "host and Armv7-M code path (UDIV, CLZ, UMULL):"; next }
+         /^fx_exhaustive/ { next }
+         /^(fx_|  first failure)/ { print "  " $0 }' <<<"$log"
     echo '```'
 }
 
