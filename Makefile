@@ -152,7 +152,16 @@ demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) tests/demo.sh
 
 size: deps $(BUILD)/fxrt-scenec
-	$(Q)BUILD=$(BUILD) firmware/size.sh
+	$(Q)BUILD=$(BUILD) SIZE_UPDATE_DOCS=$(SIZE_UPDATE_DOCS) firmware/size.sh
+
+# The docs' generated blocks (host/docblocks.sh): make doc-blocks
+# [DOC_BLOCKS="lit trace"] [DOC_RUN=1: run their commands first]
+# [DOCS_UPDATE=1: rewrite them in docs/]. make doc-images redraws the
+# README's picture (host/docimages.sh).
+doc-blocks:
+	$(Q)BUILD=$(BUILD) DOC_RUN=$(DOC_RUN) DOCS_UPDATE=$(DOCS_UPDATE) host/docblocks.sh $(DOC_BLOCKS)
+doc-images: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) host/docimages.sh
 
 # Fuzzing (libFuzzer): each harness for FUZZ_SECONDS (default 60).
 FUZZ_SECONDS ?= 60
@@ -164,7 +173,7 @@ deps:
 clean:
 	rm -rf $(BUILD)
 
-.PHONY: all test test-build test-full demo size deps clean fuzz
+.PHONY: all test test-build test-full demo size doc-blocks doc-images deps clean fuzz
 # Dependency files of the host build. Firmware objects' ones are read by
 # firmware.mk for the one ELF being built: build/fw holds one directory per
 # ELF the tests and benchmarks made (over a thousand .d files), and reading

@@ -19,7 +19,9 @@
 #   fast                    the default build
 # Scenes: the seed scenes and, when present, scenes/bench/ (ABLATE_SCENES
 # overrides the list).
-# Prints a markdown table; exits non-zero if a frame differs.
+# Prints a markdown table and keeps it in BUILD/bench/ablation.md (the
+# <!-- ablation --> block of docs/BENCHMARKS.md: make doc-blocks
+# DOC_BLOCKS=ablation DOCS_UPDATE=1); exits non-zero if a frame differs.
 set -eu
 BUILD=${BUILD:-build}
 BOARD=${BOARD:-mps2-an385}
@@ -76,6 +78,8 @@ for v in "${variants[@]}"; do
         fi
     done
 done
+mkdir -p "$BUILD/bench"
+{
 echo "Q16.16 instructions per pixel on $BOARD at $SIZE (QEMU -icount); every variant's frame is byte-identical to the fast one."
 echo
 echo "$header geo. mean |"
@@ -92,4 +96,5 @@ for v in "${variants[@]}"; do
     gm=$(printf '%s\n' "${vals[@]}" | awk '{ s += log($1); n++ } END { printf "%.1f", exp(s / n) }')
     echo "$row $gm |"
 done
+} | tee "$BUILD/bench/ablation.md"
 exit $fail

@@ -361,8 +361,8 @@ END {
   m3 = cpuof("M3"); m0 = cpuof("M0"); m4 = cpuof("M4F")
 
   # 1. targets, one column per scene set
-  print "## TARGETS (issues 9 and 11)\n" > md
-  printf "All from this run at %s, fast renderers, geometric means over each set'"'"'s scenes (ratios are taken per scene on instructions per frame, then averaged geometrically). The **best float build** of a board is its float build (fast = direct evaluation, step = forward differences restarted per row or span, raycast = per-pixel ray caster) with the fewest instructions whose mean mismatched %% against the double reference is at most q16'"'"'s on the same scenes (on the M4F: hard float). Scenes that do not fit a board are left out of that board'"'"'s figures (see the per-board tables). The seed and bench goals are issue 9'"'"'s, the lit goals issue 11'"'"'s (lights, materials, shadows); \"-\": no goal for that set, the figure is for information.\n\n", size > md
+  print "## TARGETS\n" > md
+  printf "All from this run at %s, fast renderers, geometric means over each set'"'"'s scenes (ratios are taken per scene on instructions per frame, then averaged geometrically). The **best float build** of a board is its float build (fast = direct evaluation, step = forward differences restarted per row or span, raycast = per-pixel ray caster) with the fewest instructions whose mean mismatched %% against the double reference is at most q16'"'"'s on the same scenes (on the M4F: hard float). Scenes that do not fit a board are left out of that board'"'"'s figures (see the per-board tables). The seed and bench goals are those of the first speed work, the lit goals those of lighting (lights, materials, shadows); \"-\": no goal for that set, the figure is for information.\n\n", size > md
   hdr = "| measure |"; sep = "|---|"
   for (k = 1; k <= nsets; k++) { hdr = hdr " " SET[k] ": goal | " SET[k] ": measured | " SET[k] ": result |"; sep = sep "---:|---:|---|" }
   print hdr > md; print sep > md
@@ -379,13 +379,13 @@ END {
     line = line " " (goal == "" ? "-" : ">= 50x") " | " fmt(R_geo, "%.1fx") " | " verdict(R_geo, goal, 1) " |" }
   print line > md
   print "" > md
-  print "Extra rows, labelled for what they compare (not targets of issues 9 and 11):\n" > md
+  print "Extra rows, labelled for what they compare (not targets):\n" > md
   print hdr > md; print sep > md
   extra("q16 vs float fast (direct evaluation), M3: float / q16", m3, "float", "fast", "q16", "fast", 12, 1)
   extra("q16 vs float fast (direct evaluation), M0: float / q16", m0, "float", "fast", "q16", "fast", 8, 1)
   extra("q16 vs hard float fast (direct evaluation), M4F: q16 / float", m4, "q16", "fast", "float", "fast", 1.0, 0)
   extra("fast vs reference loop, q16 on the M3: reference / fast", m3, "q16", "reference", "q16", "fast", 5, 1)
-  print "\nGoals of the extra rows are the seed issue'"'"'s (float fast: >= 12x M3, >= 8x M0, <= 1.0x M4F; reference / fast >= 5x).\n" > md
+  print "\nGoals of the extra rows are the first release'"'"'s (float fast: >= 12x M3, >= 8x M0, <= 1.0x M4F; reference / fast >= 5x).\n" > md
 
   # 2. best float build per board and set
   print "## Best float build per board\n" > md

@@ -17,6 +17,9 @@
 # last column is what q16's may cost for 8x: float step / 8 - (q16, no
 # light sum). The no-light-sum builds' frames must differ from the
 # renderer's (the light sum really went); the script exits non-zero if not.
+# The table is also kept in BUILD/bench/lit-bound.md (the <!-- lit-bound -->
+# block of docs/BENCHMARKS.md: make doc-blocks DOC_BLOCKS=lit-bound
+# DOCS_UPDATE=1).
 set -euo pipefail
 BUILD=${BUILD:-build}
 BOARD=${BOARD:-microbit}
@@ -56,6 +59,8 @@ for s in "${scenes[@]}"; do
         fi
     done
 done
+mkdir -p "$BUILD/bench"
+{
 echo "Lit scenes on $BOARD at $SIZE, instructions per pixel (QEMU -icount), one run."
 echo
 echo "| scene | float step | q16 | float / q16 | float, no light sum | q16, no light sum | float / (q16, no light sum) | light sum: float | light sum: q16 | light sums: float / q16 | q16 light sum for 8x |"
@@ -70,4 +75,5 @@ done | awk 'function row(nm, f, q, z, fz) {
                     fz, z, f / z, f - fz, q - z, (f - fz) / (q - z), f / 8 - z }
             { row($1, $2, $3, $4, $5); lf += log($2); lq += log($3); lz += log($4); lfz += log($5); n++ }
             END { row("geometric mean", exp(lf / n), exp(lq / n), exp(lz / n), exp(lfz / n)) }'
+} | tee "$BUILD/bench/lit-bound.md"
 exit $fail

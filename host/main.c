@@ -48,7 +48,7 @@ static const char usage_render[] =
     "usage: fxrt render SCENE [-o OUT] [--size WxH] [--number q16|float|double]\n"
     "                         [--renderer fast|reference|raycast] [--keys KEYS]\n"
     "\n"
-    "Render SCENE (see README: scene format) and write the image.\n"
+    "Render SCENE (scene format: docs/SCENES.md) and write the image.\n"
     "\n"
     "  -o, --output OUT   output file; .png (libpng) or .ppm (binary P6), chosen\n"
     "                     by the extension. Written atomically (temporary file,\n"
