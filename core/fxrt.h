@@ -1,49 +1,39 @@
-/* fxrt.h: the public API for building a world and a camera in code and
- * rendering rows, for firmware authors. docs/EMBEDDING.md says which files
- * to compile and which macros must match; examples/orbit.c is a whole
- * program.
+/* fxrt.h: the public API. Every name it gives an application starts with
+ * fxrt_ or FXRT_; docs/EMBEDDING.md has the whole path from a world built
+ * in code to a board's display, examples/orbit.c is a whole program.
  *
- * Conventions (cam.h has them in full):
- *  - Right-handed scene coordinates in scene units. Every number is num_t:
- *    Q16.16 (fx_t, write constants as F16(1.5)) in the product build,
- *    float or double in the reference builds (FXRT_NUMBER).
- *  - The camera looks along gaze with up roughly up; up must not be
- *    parallel to gaze (to look straight down, gaze 0 -1 0, take up 0 0 -1).
- *  - Rows are numbered from the top (row 0 = top of the image); within a
- *    row, pixels go left to right.
- *
- * Life cycle, all memory owned by the caller (static arrays, no heap):
- *
- *   static world_t world;      // FXRT_MAX_<KIND> objects of each kind
- *   static render_t rs;        // per-frame forms, one entry per object
- *   cam_t cam;
- *   fxrt_world_init(&world, background);           // once
- *   world_add_sphere(&world, centre, radius, colour); ...  // ids 0, 1, ...
+ *   static fxrt_world_t world;   // FXRT_MAX_<KIND> objects of each kind
+ *   static fxrt_render_t rs;     // per-frame forms, one entry per object
+ *   fxrt_view_t view;            // a camera, set up
+ *   fxrt_world_init(&world, background);                  // once
+ *   fxrt_add(&world, &(fxrt_object_t){.kind = FXRT_SPHERE, ...});  // ids 0, 1, ...
  *   per frame:
- *     fxrt_camera_perspective(&cam, eye, gaze, up, fov, W, H);
- *     fxrt_render_setup(&rs, &world, &cam);
- *     for (row = 0; row < H; row++) fxrt_render_row(&rs, row, buf);
+ *     fxrt_camera_perspective(&view, eye, gaze, up, fov, W, H);
+ *     fxrt_render_setup(&rs, &world, &view);
+ *     for (row = 0; row < H; row++) fxrt_render_row(&rs, row, buf, sizeof buf);
  *
- * Every call that can refuse its input returns FXRT_OK (0) or an object
- * id (>= 0), or a negative fxrt_err_t (fxrt_err.h); fxrt_strerror(code)
- * gives the text. Values are checked against the domain in which the
- * Q16.16 renderer is exact (docs/ACCURACY.md): |coordinates| <=
- * FXRT_COORD_LIMIT, radius and orthographic scale in (0,
- * FXRT_RADIUS_LIMIT], colours 0..1, nonzero directions, box min <= max,
- * fov in (0, 180) degrees, image sides 1..FXRT_MAX_DIM. A value outside
- * it is refused, never rendered wrong.
+ * Every call that can refuse its input returns FXRT_OK (0), an id (>= 0)
+ * or a negative fxrt_err_t (fxrt_err.h), and a refused call changes
+ * nothing; fxrt_strerror(code) gives the text. Pointers may be NULL
+ * (FXRT_ERR_NULL), rows out of range (FXRT_ERR_ROW), a frame not set up
+ * (FXRT_ERR_SETUP), a row buffer short (FXRT_ERR_BUFFER): no input
+ * crashes the core. What C cannot check is left to the caller: a pointer
+ * to memory that is not the object it claims to be. Values are checked against
+ * the domain in which the Q16.16 renderer is exact (docs/ACCURACY.md).
+ *
+ * Numbers are fxrt_num_t: Q16.16 in the product build (constants:
+ * FXRT_NUM(1.5)), float or double in the reference builds (FXRT_NUMBER).
+ * Scene coordinates are right-handed; rows are numbered from the top.
  *
  * Configuration: the core and the application must be compiled with the
  * same FXRT_NUMBER, FXRT_MAX_<KIND>, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH,
- * FXRT_MAX_SAMPLES, FXRT_ADAPTIVE, FXRT_RENDER_MAX_WIDTH (and FXRT_PIXEL),
- * since they change world_t and render_t. fxrt_world_init
- * references a symbol whose name spells the application's configuration
- * (fxrt_config_n1_p4_s4_t4_b4_w64_px1_l0_d0_x1a0 ...); the core defines only the one
- * for its own, so a mismatch fails at link time with
+ * FXRT_MAX_SAMPLES, FXRT_ADAPTIVE, FXRT_RENDER_MAX_WIDTH and FXRT_PIXEL
+ * (they size fxrt_world_t and fxrt_render_t). fxrt_world_init refers to a
+ * symbol whose name spells the application's configuration, e.g.
  *   undefined reference to `fxrt_config_n1_p0_s8_t0_b0_w64_px1_l0_d0_x1a0'
- * and, should it link anyway, fxrt_world_init returns FXRT_ERR_CONFIG.
- * The macros must be plain decimal integers for the name to form.
- */
+ * so a mismatch fails at link time, and should it link anyway,
+ * fxrt_world_init returns FXRT_ERR_CONFIG. The macros must be plain
+ * decimal integers for the name to form. */
 #ifndef FXRT_H
 #define FXRT_H
 
@@ -58,6 +48,43 @@
  * or RGB565 (2 bytes) when the core is built with FXRT_PIXEL =
  * FXRT_RGB565. */
 #define FXRT_ROW_BYTES(width) ((FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * (width))
+
+/* --- types and constants ------------------------------------------------ */
+
+typedef num_t fxrt_num_t;           /* Q16.16 (int32_t), float or double */
+typedef vec3_t fxrt_vec3_t;         /* x, y, z */
+typedef color_t fxrt_color_t;       /* r, g, b in 1/255 units: 0 off, 255 full */
+typedef world_t fxrt_world_t;       /* the objects, lights and settings */
+typedef cam_t fxrt_view_t;          /* a camera, set up (fxrt_camera_*) */
+typedef render_t fxrt_render_t;     /* a frame's state (fxrt_render_setup) */
+typedef material_t fxrt_material_t; /* .kind, .exponent, .specular, .reflection, .index */
+
+/* A number literal: FXRT_NUM(0.5). */
+#define FXRT_NUM(x) NUM(x)
+/* A colour literal from intensity fractions 0..1, quantised as the scene
+ * loader does (0.7 is 178.5 of 255 in every build). */
+#define FXRT_RGB(r, g, b) fxrt_color(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
+/* A light's, the ambient or a specular colour: fractions, FXRT_NUM(1) full. */
+#define FXRT_FRACTIONS(r, g, b) fxrt_color(NUM(r), NUM(g), NUM(b))
+
+/* The kinds (FXRT_PLANE, FXRT_SPHERE, FXRT_TRIANGLE, FXRT_BOX: one per row
+ * of scene/kinds.h), materials (FXRT_MATERIAL_FLAT, _LAMBERT, _PHONG,
+ * _REFLECTIVE, _TRANSPARENT), lights (FXRT_LIGHT_POINT, _DIRECTIONAL,
+ * _SPOT) and cameras (FXRT_PERSPECTIVE, FXRT_ORTHOGRAPHIC) are the
+ * constants of these enumerations. */
+typedef geom_kind_t fxrt_kind_t;
+typedef material_kind_t fxrt_material_kind_t;
+typedef light_kind_t fxrt_light_kind_t;
+typedef cam_kind_t fxrt_camera_kind_t;
+
+/* Colours in 1/255 units, vectors, and the arithmetic an animation needs,
+ * in the build's number type. */
+static inline fxrt_color_t fxrt_color(fxrt_num_t r, fxrt_num_t g, fxrt_num_t b) { return color_make(r, g, b); }
+static inline fxrt_vec3_t fxrt_vec3(fxrt_num_t x, fxrt_num_t y, fxrt_num_t z) { return vec3_make(x, y, z); }
+static inline fxrt_vec3_t fxrt_vec3_add(fxrt_vec3_t a, fxrt_vec3_t b) { return vec3_add(a, b); }
+static inline fxrt_vec3_t fxrt_vec3_sub(fxrt_vec3_t a, fxrt_vec3_t b) { return vec3_sub(a, b); }
+static inline fxrt_num_t fxrt_mul(fxrt_num_t a, fxrt_num_t b) { return num_mul(a, b); }
+static inline fxrt_num_t fxrt_from_int(int32_t i) { return num_from_int(i); }
 
 /* --- configuration check ------------------------------------------------ */
 #define FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l, d, x, ad)                                                    \
@@ -82,100 +109,121 @@ fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t 
 /* --- world ---------------------------------------------------------------- */
 
 /* Empty world with a background colour (0..1 per channel). Returns FXRT_OK,
- * FXRT_ERR_COLOR, or FXRT_ERR_CONFIG when the core was built with another
- * configuration (see above; normally the link fails first). */
-static inline fxrt_err_t fxrt_world_init(world_t *w, color_t background)
+ * FXRT_ERR_NULL, FXRT_ERR_COLOR, or FXRT_ERR_CONFIG when the core was
+ * built with another configuration (see above; normally the link fails
+ * first). */
+static inline fxrt_err_t fxrt_world_init(fxrt_world_t *w, fxrt_color_t background)
 {
     return fxrt_world_init_checked(w, background, (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t),
                                    &FXRT_CONFIG_SYMBOL);
 }
 
-/* Adding objects: fxrt_add (below) returns the object's id (0, 1, 2, ...
- * in the order added, across all kinds; nearer wins, equal depth goes to
- * the lower id) or a negative fxrt_err_t: FXRT_ERR_FULL when
- * FXRT_MAX_<KIND> objects of that kind are there already (a kind with
- * capacity 0 is compiled out), FXRT_ERR_COORD, FXRT_ERR_DIRECTION,
- * FXRT_ERR_RADIUS, FXRT_ERR_COLOR, FXRT_ERR_BOX, FXRT_ERR_TINY. A refused
- * object leaves the world unchanged. A plane's normal need not be unit
- * length. A collinear triangle is accepted and never hit. */
-
-/* One object as data, for tables of objects (the scene compiler emits
- * them): scene/kinds.h's geom_desc_t. p[] holds: plane point, normal;
- * sphere centre; triangle a, b, c; box min, max. radius: spheres only. */
+/* One object as data (the scene compiler emits tables of them): .kind
+ * (FXRT_PLANE ...), .p[] (plane: point, normal; sphere: centre; triangle:
+ * a, b, c; box: min, max), .radius (spheres), .color, and .material (flat
+ * when left zero). */
 typedef geom_desc_t fxrt_object_t;
 
-/* world_add for o, then world_set_material when the material
- * is not flat. Returns the id or a negative fxrt_err_t (FXRT_ERR_KIND for
- * an unknown kind; a refused material removes nothing but leaves the
- * object flat, so check the code). */
-int32_t fxrt_add(world_t *w, const fxrt_object_t *o);
+/* Adds o and returns its id (0, 1, 2, ... in the order added, across all
+ * kinds; nearer wins, equal depth goes to the lower id) or a negative
+ * fxrt_err_t: FXRT_ERR_NULL, FXRT_ERR_KIND, FXRT_ERR_FULL when
+ * FXRT_MAX_<KIND> objects of that kind are there already (a kind with
+ * capacity 0 is compiled out), FXRT_ERR_COORD, _DIRECTION, _RADIUS,
+ * _COLOR, _BOX, _TINY, _MATERIAL. A refused object leaves the world
+ * unchanged. A plane's normal need not be unit length; a collinear
+ * triangle is accepted and never hit. */
+int32_t fxrt_add(fxrt_world_t *w, const fxrt_object_t *o);
+
+/* The number of objects: the id the next one gets (0 for NULL). */
+int32_t fxrt_count(const fxrt_world_t *w);
+
+/* The material of object id (default flat): FXRT_OK, FXRT_ERR_NULL,
+ * FXRT_ERR_ID, FXRT_ERR_MATERIAL (unknown kind, an exponent outside
+ * 1..FXRT_PHONG_MAX_EXPONENT, lighting or phong compiled out),
+ * FXRT_ERR_COLOR. */
+fxrt_err_t fxrt_set_material(fxrt_world_t *w, int32_t id, const fxrt_material_t *m);
+
+/* The ambient colour (fractions; only black with FXRT_MAX_LIGHTS 0). */
+fxrt_err_t fxrt_set_ambient(fxrt_world_t *w, fxrt_color_t ambient);
+
+/* The largest bounce of reflection and refraction, 0..FXRT_MAX_DEPTH
+ * (FXRT_ERR_DEPTH), and N x N rays per pixel, 1..FXRT_MAX_SAMPLES, adaptive
+ * only with FXRT_ADAPTIVE and N > 1 (FXRT_ERR_SAMPLES). */
+fxrt_err_t fxrt_set_depth(fxrt_world_t *w, int32_t depth);
+fxrt_err_t fxrt_set_samples(fxrt_world_t *w, int32_t samples, bool adaptive);
 
 /* --- lights ---------------------------------------------------------------
- * (world.h: world_set_ambient, world_set_material, world_add_light.) A
- * light as data, what the scene compiler emits: position for point and
- * spot, direction for directional and spot, angle_deg (the cone's
- * half-angle) for spot. */
+ * A light as data: .kind (FXRT_LIGHT_POINT, _DIRECTIONAL, _SPOT),
+ * .position (point, spot), .direction (directional, spot), .angle_deg (a
+ * spot's half-angle, (0, 90]), .color (fractions 0..1), .shadows. */
 typedef struct {
-    light_kind_t kind;
-    vec3_t position, direction;
-    num_t angle_deg;
-    color_t color; /* fractions 0..1 */
+    fxrt_light_kind_t kind;
+    fxrt_vec3_t position, direction;
+    fxrt_num_t angle_deg;
+    fxrt_color_t color;
     bool shadows;
 } fxrt_light_t;
 
-/* world_add_light for a description: the light's index or a negative
- * fxrt_err_t. */
-int32_t fxrt_add_light(world_t *w, const fxrt_light_t *l);
+/* The light's index (0..FXRT_MAX_LIGHTS - 1, its bit in a pixel's key) or
+ * a negative fxrt_err_t: FXRT_ERR_NULL, _FULL, _COORD, _DIRECTION, _ANGLE,
+ * _COLOR, _LIGHT. */
+int32_t fxrt_add_light(fxrt_world_t *w, const fxrt_light_t *l);
 
 /* --- camera --------------------------------------------------------------- */
 
 /* Perspective camera for a width x height image: fov_deg is the full
  * vertical opening angle in degrees, in (0, 180). eye within
  * +-FXRT_COORD_LIMIT, gaze and up nonzero, not parallel. Returns FXRT_OK or
- * FXRT_ERR_SIZE, _COORD, _DIRECTION, _UP, _FOV, _NARROW (height *
+ * FXRT_ERR_NULL, _SIZE, _COORD, _DIRECTION, _UP, _FOV, _NARROW (height *
  * cot(fov/2) > 32767: the rays would not fit Q16.16), _TINY; a camera
- * error cam.h has no FXRT_ERR_ name for comes back as FXRT_ERR_CAM_BASE +
- * its cam_err_t (fxrt_strerror gives cam_strerror's text). */
-fxrt_err_t fxrt_camera_perspective(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t up, num_t fov_deg,
-                                   int32_t width, int32_t height);
+ * error without an FXRT_ERR_ name comes back as FXRT_ERR_CAM_BASE minus
+ * its number (fxrt_strerror has its text). */
+fxrt_err_t fxrt_camera_perspective(fxrt_view_t *view, fxrt_vec3_t eye, fxrt_vec3_t gaze, fxrt_vec3_t up,
+                                   fxrt_num_t fov_deg, int32_t width, int32_t height);
 
 /* Orthographic camera: scale is the view height in scene units, in (0,
  * FXRT_RADIUS_LIMIT]; the view must stay inside +-FXRT_COORD_LIMIT
  * (FXRT_ERR_EXTENT). Other codes as for the perspective camera. */
-fxrt_err_t fxrt_camera_orthographic(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t up, num_t scale, int32_t width,
-                                    int32_t height);
+fxrt_err_t fxrt_camera_orthographic(fxrt_view_t *view, fxrt_vec3_t eye, fxrt_vec3_t gaze, fxrt_vec3_t up,
+                                    fxrt_num_t scale, int32_t width, int32_t height);
 
 /* A camera as data (what the scene compiler emits). */
 typedef struct {
-    cam_kind_t kind; /* CAM_PERSPECTIVE or CAM_ORTHOGRAPHIC */
-    vec3_t eye, gaze, up;
-    num_t fov_deg; /* perspective only */
-    num_t scale;   /* orthographic only */
+    fxrt_camera_kind_t kind; /* FXRT_PERSPECTIVE or FXRT_ORTHOGRAPHIC */
+    fxrt_vec3_t eye, gaze, up;
+    fxrt_num_t fov_deg; /* perspective only */
+    fxrt_num_t scale;   /* orthographic only */
     int32_t width, height;
 } fxrt_camera_t;
 
-/* fxrt_camera_perspective or _orthographic from a description. */
-fxrt_err_t fxrt_camera_setup(cam_t *cam, const fxrt_camera_t *c);
+/* fxrt_camera_perspective or _orthographic from a description
+ * (FXRT_ERR_CAMERA for an unknown kind). */
+fxrt_err_t fxrt_camera_setup(fxrt_view_t *view, const fxrt_camera_t *c);
 
 /* --- rendering ------------------------------------------------------------ */
 
 /* Per-frame set-up: the camera-space forms and screen bounds of every
  * object. Call it again after moving the camera or changing the world;
- * world and camera must stay alive and unchanged while rows are rendered.
- * Returns FXRT_OK, FXRT_ERR_WIDTH (camera wider than
- * FXRT_RENDER_MAX_WIDTH), FXRT_ERR_RENDER (render_setup refused the frame
- * otherwise) or FXRT_ERR_CONFIG. */
-static inline fxrt_err_t fxrt_render_setup(render_t *r, const world_t *w, const cam_t *cam)
+ * world and view must stay alive and unchanged while rows are rendered.
+ * Returns FXRT_OK, FXRT_ERR_NULL, FXRT_ERR_SIZE (a view never set up),
+ * FXRT_ERR_WIDTH (wider than FXRT_RENDER_MAX_WIDTH), FXRT_ERR_RENDER (the
+ * frame needs more than fxrt_render_t holds; fxrt_render_error says
+ * what) or FXRT_ERR_CONFIG. After a refusal, fxrt_render_row refuses
+ * every row until a set-up succeeds. */
+static inline fxrt_err_t fxrt_render_setup(fxrt_render_t *r, const fxrt_world_t *w, const fxrt_view_t *view)
 {
-    return fxrt_render_setup_checked(r, w, cam, (uint32_t)sizeof(render_t));
+    return fxrt_render_setup_checked(r, w, view, (uint32_t)sizeof(render_t));
 }
 
-/* Render output row `row` (0 = top, < height) into out, which holds
- * FXRT_ROW_BYTES(width) bytes. Rows may come in any order. */
-static inline void fxrt_render_row(render_t *r, int32_t row, uint8_t *out)
-{
-    render_row(r, row, out);
-}
+/* Why the last fxrt_render_setup returned FXRT_ERR_RENDER (NULL if not). */
+const char *fxrt_render_error(const fxrt_render_t *r);
+
+/* Render output row `row` (0 = top, < height) into out, out_bytes long
+ * (at least FXRT_ROW_BYTES(width); RGB565 rows 2-byte aligned). Rows may
+ * come in any order. FXRT_OK, or nothing written and FXRT_ERR_NULL,
+ * FXRT_ERR_SETUP (no successful fxrt_render_setup on r, or the view's size
+ * changed since), FXRT_ERR_ROW (row outside 0..height-1), FXRT_ERR_BUFFER. */
+fxrt_err_t fxrt_render_row(fxrt_render_t *r, int32_t row, uint8_t *out, size_t out_bytes);
 
 /* Short English text for an fxrt_err_t (or "ok" for any value >= 0). */
 const char *fxrt_strerror(int32_t err);

@@ -34,6 +34,10 @@ typedef enum {
     FXRT_ERR_LIGHT = -22,    /* unknown light kind */
     FXRT_ERR_DEPTH = -23,    /* bounce depth outside 0..FXRT_MAX_DEPTH */
     FXRT_ERR_SAMPLES = -24,  /* samples outside 1..FXRT_MAX_SAMPLES, or adaptive compiled out */
+    FXRT_ERR_NULL = -25,     /* a NULL pointer where the call needs an object */
+    FXRT_ERR_ROW = -26,      /* a row outside 0..height-1 */
+    FXRT_ERR_SETUP = -27,    /* fxrt_render_row before a successful fxrt_render_setup, or after the view changed */
+    FXRT_ERR_BUFFER = -28,   /* a row buffer smaller than FXRT_ROW_BYTES(width), or RGB565 rows not 2-byte aligned */
     /* Camera errors without a name above (cam_setup codes added later)
      * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
      * fxrt_strerror still tell them apart. */

@@ -13,19 +13,24 @@
 #define ORBIT_H 48
 #define ORBIT_FRAMES 16
 
-/* A colour from intensity fractions 0..1 (COLOR_FRAC: core/geom.h). */
-#define RGB(r, g, b) color_make(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
-
 /* Static storage, not the stack: the micro:bit reserves 2 KB of stack for
- * the core's own use (docs/BENCHMARKS.md, "RAM"). */
-static world_t world;              /* 5 objects: the capacities in examples.mk */
-static render_t rs;                /* per-frame forms of every object */
-static cam_t cam;                  /* set again for every frame */
+ * the core's own use (docs/EMBEDDING.md, "Stack"). */
+static fxrt_world_t world;         /* 5 objects: the capacities in examples.mk */
+static fxrt_render_t rs;           /* per-frame forms of every object */
+static fxrt_view_t view;           /* set again for every frame */
 static uint8_t row[FXRT_ROW_BYTES(ORBIT_W)];
 
-static vec3_t v3(fx_t x, fx_t y, fx_t z)
+#define V3(x, y, z) fxrt_vec3(FXRT_NUM(x), FXRT_NUM(y), FXRT_NUM(z))
+
+/* sin(k * 22.5 degrees) for k = 0..4; the others by symmetry. */
+static const fxrt_num_t sin_step[5] = {FXRT_NUM(0), FXRT_NUM(0.38268343), FXRT_NUM(0.70710678),
+                                       FXRT_NUM(0.92387953), FXRT_NUM(1)};
+
+static fxrt_num_t orbit_sin(int32_t k) /* sin(k * 22.5 degrees), any k >= 0 */
 {
-    return vec3_make(x, y, z);
+    k %= 16;
+    fxrt_num_t s = sin_step[k <= 4 ? k : k <= 8 ? 8 - k : k <= 12 ? k - 8 : 16 - k];
+    return k > 8 ? -s : s;
 }
 
 /* Stop at the first refusal, with the API's text. */
@@ -46,37 +51,36 @@ static void add(fxrt_object_t o, const char *what)
  * every frame's set-up as well. */
 __attribute__((noinline)) static void build_world(void)
 {
-    must(fxrt_world_init(&world, RGB(0.05, 0.1, 0.2)), "world");
-    add((fxrt_object_t){.kind = GEOM_PLANE, .p = {v3(0, F16(-1), 0), v3(0, F16(1), 0)}, .color = RGB(0.35, 0.55, 0.3)},
+    must(fxrt_world_init(&world, FXRT_RGB(0.05, 0.1, 0.2)), "world");
+    add((fxrt_object_t){.kind = FXRT_PLANE, .p = {V3(0, -1, 0), V3(0, 1, 0)}, .color = FXRT_RGB(0.35, 0.55, 0.3)},
         "plane");
-    add((fxrt_object_t){.kind = GEOM_SPHERE, .p = {v3(0, 0, 0)}, .radius = F16(0.9), .color = RGB(0.85, 0.3, 0.15)},
+    add((fxrt_object_t){.kind = FXRT_SPHERE, .p = {V3(0, 0, 0)}, .radius = FXRT_NUM(0.9),
+                        .color = FXRT_RGB(0.85, 0.3, 0.15)},
         "sphere");
-    add((fxrt_object_t){.kind = GEOM_SPHERE, .p = {v3(F16(1.6), F16(-0.5), F16(0.8))}, .radius = F16(0.5),
-                        .color = RGB(0.2, 0.45, 0.9)},
+    add((fxrt_object_t){.kind = FXRT_SPHERE, .p = {V3(1.6, -0.5, 0.8)}, .radius = FXRT_NUM(0.5),
+                        .color = FXRT_RGB(0.2, 0.45, 0.9)},
         "sphere");
-    add((fxrt_object_t){.kind = GEOM_BOX, .p = {v3(F16(-2.2), F16(-1), F16(-0.6)), v3(F16(-1.2), F16(0.2), F16(0.4))},
-                        .color = RGB(0.95, 0.8, 0.25)},
+    add((fxrt_object_t){.kind = FXRT_BOX, .p = {V3(-2.2, -1, -0.6), V3(-1.2, 0.2, 0.4)},
+                        .color = FXRT_RGB(0.95, 0.8, 0.25)},
         "box");
-    add((fxrt_object_t){.kind = GEOM_TRIANGLE,
-                        .p = {v3(F16(-0.5), F16(-1), F16(-2.2)), v3(F16(1.5), F16(-1), F16(-1.8)),
-                              v3(F16(0.4), F16(1.4), F16(-2))},
-                        .color = RGB(0.6, 0.25, 0.7)},
+    add((fxrt_object_t){.kind = FXRT_TRIANGLE, .p = {V3(-0.5, -1, -2.2), V3(1.5, -1, -1.8), V3(0.4, 1.4, -2)},
+                        .color = FXRT_RGB(0.6, 0.25, 0.7)},
         "triangle");
 }
 
 int orbit_main(void)
 {
     build_world();
-    const fx_t radius = F16(5.5), height = F16(1.8);
+    const fxrt_num_t radius = FXRT_NUM(5.5);
     for (int32_t f = 0; f < ORBIT_FRAMES; f++) {
         example_frame_begin(f, ORBIT_W, ORBIT_H);
-        fx_t deg = fx_mul_int(F16(22.5), f); /* 360 / 16 per frame */
-        vec3_t eye = v3(fx_mul(radius, fx_sin_deg(deg)), height, fx_mul(radius, fx_cos_deg(deg)));
-        vec3_t gaze = vec3_sub(v3(0, F16(-0.3), 0), eye); /* at the big sphere */
-        must(fxrt_camera_perspective(&cam, eye, gaze, v3(0, F16(1), 0), F16(50), ORBIT_W, ORBIT_H), "camera");
-        must(fxrt_render_setup(&rs, &world, &cam), "render set-up");
+        /* 360 / 16 degrees per frame */
+        fxrt_vec3_t eye = fxrt_vec3(fxrt_mul(radius, orbit_sin(f)), FXRT_NUM(1.8), fxrt_mul(radius, orbit_sin(f + 4)));
+        fxrt_vec3_t gaze = fxrt_vec3_sub(V3(0, -0.3, 0), eye); /* at the big sphere */
+        must(fxrt_camera_perspective(&view, eye, gaze, V3(0, 1, 0), FXRT_NUM(50), ORBIT_W, ORBIT_H), "camera");
+        must(fxrt_render_setup(&rs, &world, &view), "render set-up");
         for (int32_t r = 0; r < ORBIT_H; r++) {
-            fxrt_render_row(&rs, r, row);
+            must(fxrt_render_row(&rs, r, row, sizeof row), "row");
             example_row(row, sizeof row);
         }
         example_frame_end(f);

@@ -105,4 +105,19 @@ check "docs/EMBEDDING.md snippet builds with -Wall -Wextra -Wpedantic -Werror" \
     $CC -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 $ecfg -Icore -o "$mm/snippet" \
     "$mm/snippet.c" "$mm/snippet_main.c" $core
 check "docs/EMBEDDING.md snippet renders 16 frames of 48 rows" "$mm/snippet"
+
+# One prefix: what the example and the snippet take from the core are
+# fxrt_ and FXRT_ names only. A word of theirs (with an underscore or a
+# capital, outside comments and strings) that a core header also has must
+# carry the prefix, unless it is C's own (stdint.h, stddef.h, stdbool.h).
+for f in examples/orbit.c "$mm/snippet.c"; do
+    words=$(sed -E 's://.*$::; s/"([^"\\]|\\.)*"/""/g' "$f" | perl -0pe 's{/\*.*?\*/}{}gs' |
+        grep -oE '\b[A-Za-z_][A-Za-z0-9_]*\b' | grep -E '[_A-Z]' | sort -u |
+        grep -vxE '(fxrt|FXRT)_[A-Za-z0-9_]*|u?int(8|16|32|64)_t|size_t|bool|NULL|__attribute__|noinline' || true)
+    leaks=""
+    for w in $words; do
+        grep -qrw --include='*.h' -- "$w" core && leaks="$leaks $w"
+    done
+    check "$f uses only fxrt_/FXRT_ names of the core (others:${leaks:- none})" test -z "$leaks"
+done
 report examples

@@ -115,7 +115,7 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
         *p++ = *q;
     int bad = semihost_write(fd, hdr, (size_t)(p - hdr)) != 0;
     for (int32_t r = 0; r < cam.height; r++) {
-        fxrt_render_row(&rs, r, row);
+        bad |= fxrt_render_row(&rs, r, row, sizeof row) != FXRT_OK;
         bad |= semihost_write(fd, row, (size_t)FXRT_ROW_BYTES(cam.width)) != 0;
     }
     bad |= semihost_close(fd) != 0;

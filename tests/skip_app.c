@@ -58,7 +58,7 @@ int main(void)
 #endif
     fxrt_render_setup(&rs, &world, &cam);
     for (int y = 0; y < 24; y++) {
-        fxrt_render_row(&rs, y, row);
+        fxrt_render_row(&rs, y, row, sizeof row);
         skip_sink += row[0];
     }
     return 0;

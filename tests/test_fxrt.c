@@ -177,7 +177,7 @@ static void test_render_and_config(void)
     CHECK(fxrt_render_setup(&rs, &world, &cam) == FXRT_OK);
     uint8_t row[FXRT_ROW_BYTES(8)];
     CHECK(sizeof row == 3 * 8);
-    fxrt_render_row(&rs, 4, row);
+    CHECK(fxrt_render_row(&rs, 4, row, sizeof row) == FXRT_OK);
     rgb8_t want = world.spheres[0].obj.rgb;
     CHECK(row[3 * 4] == want.r && row[3 * 4 + 1] == want.g && row[3 * 4 + 2] == want.b); /* centre: the sphere */
     CHECK(row[0] == 0 && row[1] == 0 && row[2] == 0);                                      /* corner: background */
@@ -200,10 +200,10 @@ static void test_render_and_config(void)
 static void test_strerror(void)
 {
     /* Every code has its own text; unknown codes say so. */
-    for (int a = -1; a >= FXRT_ERR_RENDER; a--) {
+    for (int a = -1; a >= FXRT_ERR_BUFFER; a--) {
         const char *s = fxrt_strerror(a);
         CHECK_MSG(s && *s && strcmp(s, "unknown error") != 0, "code %d", a);
-        for (int b = a - 1; b >= FXRT_ERR_RENDER; b--)
+        for (int b = a - 1; b >= FXRT_ERR_BUFFER; b--)
             CHECK_MSG(strcmp(s, fxrt_strerror(b)) != 0, "codes %d and %d share a text", a, b);
     }
     CHECK(strcmp(fxrt_strerror(-1000), "unknown error") == 0);
@@ -352,6 +352,205 @@ static void test_random(long n)
     CHECK(accepted > n / 20 && refused > n / 20);
 }
 
+/* --- calls that cannot crash ---------------------------------------------
+ * NULL pointers, rows out of range, short buffers, rows before a set-up or
+ * after a refused one: each refused with its code, nothing written. */
+
+#define GUARD 0xA5
+static bool untouched(const uint8_t *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (b[i] != GUARD)
+            return false;
+    return true;
+}
+
+static void test_safety(void)
+{
+    static fxrt_render_t fresh; /* zeroed: never set up */
+    fxrt_view_t view, zero_view;
+    memset(&zero_view, 0, sizeof zero_view);
+    uint8_t buf[FXRT_ROW_BYTES(8) + 8];
+    memset(buf, GUARD, sizeof buf);
+    CHECK(fxrt_render_row(&fresh, 0, buf, sizeof buf) == FXRT_ERR_SETUP && untouched(buf, sizeof buf));
+    CHECK(fxrt_render_row(NULL, 0, buf, sizeof buf) == FXRT_ERR_NULL);
+    CHECK(fxrt_render_row(&fresh, 0, NULL, 24) == FXRT_ERR_NULL);
+
+    CHECK(fxrt_world_init(NULL, C(0, 0, 0)) == FXRT_ERR_NULL);
+    CHECK(fxrt_world_init(&world, C(0.2, 0.4, 0.6)) == FXRT_OK);
+    fxrt_object_t o = {.kind = FXRT_SPHERE, .p = {V(0, 0, -3)}, .radius = N(1), .color = C(0.7, 0.2, 1)};
+    CHECK(fxrt_add(NULL, &o) == FXRT_ERR_NULL && fxrt_add(&world, NULL) == FXRT_ERR_NULL && fxrt_count(&world) == 0);
+    CHECK(fxrt_count(NULL) == 0);
+    CHECK(fxrt_add(&world, &o) == 0 && fxrt_count(&world) == 1);
+    fxrt_material_t m = {.kind = FXRT_MATERIAL_FLAT};
+    CHECK(fxrt_set_material(NULL, 0, &m) == FXRT_ERR_NULL && fxrt_set_material(&world, 0, NULL) == FXRT_ERR_NULL);
+    CHECK(fxrt_set_ambient(NULL, C(0, 0, 0)) == FXRT_ERR_NULL);
+    CHECK(fxrt_set_depth(NULL, 0) == FXRT_ERR_NULL && fxrt_set_samples(NULL, 1, false) == FXRT_ERR_NULL);
+    fxrt_light_t l = {.kind = FXRT_LIGHT_POINT, .position = V(0, 5, 0), .color = C(1, 1, 1)};
+    CHECK(fxrt_add_light(NULL, &l) == FXRT_ERR_NULL && fxrt_add_light(&world, NULL) == FXRT_ERR_NULL);
+    CHECK(fxrt_camera_perspective(NULL, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(45), 8, 8) == FXRT_ERR_NULL);
+    CHECK(fxrt_camera_orthographic(NULL, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(4), 8, 8) == FXRT_ERR_NULL);
+    CHECK(fxrt_camera_setup(&view, NULL) == FXRT_ERR_NULL);
+    CHECK(fxrt_render_setup(NULL, &world, &view) == FXRT_ERR_NULL);
+    CHECK(fxrt_render_setup(&rs, NULL, &view) == FXRT_ERR_NULL);
+    CHECK(fxrt_render_setup(&rs, &world, NULL) == FXRT_ERR_NULL);
+    CHECK(fxrt_render_setup(&rs, &world, &zero_view) == FXRT_ERR_SIZE); /* a view never set up */
+    CHECK(fxrt_render_row(&rs, 0, buf, sizeof buf) == FXRT_ERR_SETUP && untouched(buf, sizeof buf));
+
+    /* A good frame, then rows outside it and short buffers. */
+    CHECK(fxrt_camera_perspective(&view, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(45), 8, 6) == FXRT_OK);
+    CHECK(fxrt_render_setup(&rs, &world, &view) == FXRT_OK);
+    const int32_t rows[] = {-1, 6, 7, INT32_MIN, INT32_MAX, -6};
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
+        CHECK_MSG(fxrt_render_row(&rs, rows[i], buf, sizeof buf) == FXRT_ERR_ROW && untouched(buf, sizeof buf),
+                  "row %ld", (long)rows[i]);
+    CHECK(fxrt_render_row(&rs, 0, buf, FXRT_ROW_BYTES(8) - 1) == FXRT_ERR_BUFFER && untouched(buf, sizeof buf));
+    CHECK(fxrt_render_row(&rs, 0, buf, 0) == FXRT_ERR_BUFFER && untouched(buf, sizeof buf));
+    CHECK(fxrt_render_row(&rs, 5, buf, FXRT_ROW_BYTES(8)) == FXRT_OK);
+    CHECK(untouched(buf + FXRT_ROW_BYTES(8), 8) && !untouched(buf, FXRT_ROW_BYTES(8)));
+
+    /* A refused camera call leaves the view (and the frame on it) alone. */
+    fxrt_view_t before = view;
+    CHECK(fxrt_camera_perspective(&view, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(180), 8, 6) == FXRT_ERR_FOV);
+    CHECK(fxrt_camera_orthographic(&view, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(-1), 8, 6) == FXRT_ERR_SCALE);
+    CHECK(memcmp(&before, &view, sizeof view) == 0);
+    CHECK(fxrt_render_row(&rs, 3, buf, sizeof buf) == FXRT_OK);
+    /* The view resized under a set-up frame: its rows are refused until the
+     * next set-up (the forms and bounds are the old size's). */
+    CHECK(fxrt_camera_perspective(&view, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(45), 4, 3) == FXRT_OK);
+    memset(buf, GUARD, sizeof buf);
+    CHECK(fxrt_render_row(&rs, 0, buf, sizeof buf) == FXRT_ERR_SETUP && untouched(buf, sizeof buf));
+    CHECK(fxrt_render_setup(&rs, &world, &view) == FXRT_OK && fxrt_render_row(&rs, 2, buf, sizeof buf) == FXRT_OK);
+    CHECK(untouched(buf + FXRT_ROW_BYTES(4), sizeof buf - FXRT_ROW_BYTES(4)));
+    /* A refused set-up: no rows until one succeeds. */
+    fxrt_view_t too_wide = view;
+    too_wide.width = FXRT_RENDER_MAX_WIDTH + 1;
+    CHECK(fxrt_render_setup(&rs, &world, &too_wide) == FXRT_ERR_WIDTH);
+    CHECK(fxrt_render_row(&rs, 0, buf, sizeof buf) == FXRT_ERR_SETUP);
+    CHECK(fxrt_render_error(NULL) == NULL);
+#if FXRT_MAX_SAMPLES > 1
+    /* With samples the rows are the output image's, not the fine camera's. */
+    CHECK(fxrt_set_samples(&world, 2, false) == FXRT_OK);
+    CHECK(fxrt_render_setup(&rs, &world, &view) == FXRT_OK);
+    CHECK(fxrt_render_row(&rs, 2, buf, sizeof buf) == FXRT_OK && fxrt_render_row(&rs, 3, buf, sizeof buf) == FXRT_ERR_ROW);
+    CHECK(fxrt_set_samples(&world, 1, false) == FXRT_OK);
+#endif
+}
+
+/* A random sequence of API calls, every argument drawn over more than its
+ * range (NULL pointers, unknown kinds, ids and rows out of range, sizes
+ * from 0, buffers short or long), run under ASan and UBSan by make test.
+ * The model kept here (not the core's state) says what each row call
+ * must return: whether the last set-up succeeded and the view's size has
+ * not changed since, the row's range, the buffer's length. An accepted
+ * row writes exactly its FXRT_ROW_BYTES; a refused one writes nothing. */
+static long pick(long n)
+{
+    return (long)(check_rng_next(&rng) % (uint64_t)n);
+}
+static double unit_draw(void)
+{
+    return uni(-1.5, 1.5);
+}
+
+static void test_api_sequence(long n)
+{
+    static fxrt_render_t fr;
+    static fxrt_world_t fw;
+    fxrt_view_t view;
+    memset(&view, 0, sizeof view);
+    memset(&fr, 0, sizeof fr);
+    bool ready = false;           /* the last set-up on fr succeeded */
+    int32_t set_w = 0, set_h = 0; /* the view's size then */
+    uint8_t buf[FXRT_ROW_BYTES(24) + 16];
+    long ok_rows = 0, refused = 0;
+    CHECK(fxrt_world_init(&fw, C(0, 0, 0)) == FXRT_OK);
+    for (long i = 0; i < n; i++) {
+        switch (pick(9)) {
+        case 0: /* world again */
+            fxrt_world_init(pick(16) ? &fw : NULL, C(uni(-0.2, 1.2), uni(0, 1), uni(0, 1)));
+            break;
+        case 1: { /* an object, any kind number, any material */
+            fxrt_object_t o;
+            memset(&o, 0, sizeof o);
+            o.kind = (geom_kind_t)pick(GEOM_KINDS + 2);
+            for (int k = 0; k < 3; k++)
+                o.p[k] = V(uni(-8, 8), uni(-8, 8), uni(-12, 2));
+            o.radius = N(uni(-0.5, 3));
+            o.color = C(uni(-0.1, 1.1), uni(0, 1), uni(0, 1));
+            o.material.kind = (uint8_t)pick(7);
+            o.material.exponent = (uint16_t)pick(1100);
+            o.material.specular = C(uni(0, 1), uni(0, 1), uni(0, 1));
+            o.material.index = N(uni(0, 3));
+            int32_t id = fxrt_add(pick(16) ? &fw : NULL, pick(16) ? &o : NULL);
+            CHECK_SWEEP(id < fxrt_count(&fw) || id < 0, "call %ld: id %ld of %ld", i, (long)id, (long)fxrt_count(&fw));
+            break;
+        }
+        case 2: { /* a material for any id */
+            fxrt_material_t m = {.kind = (uint8_t)pick(7), .exponent = (uint16_t)pick(1100),
+                                 .specular = C(uni(0, 1.2), uni(0, 1), uni(0, 1)),
+                                 .reflection = C(uni(0, 1), uni(0, 1), uni(0, 1)), .index = N(uni(-1, 120))};
+            fxrt_set_material(&fw, (int32_t)pick(fxrt_count(&fw) + 4) - 2, pick(16) ? &m : NULL);
+            break;
+        }
+        case 3: { /* a light of any kind number */
+            fxrt_light_t l = {.kind = (light_kind_t)pick(5), .position = V(uni(-9, 9), uni(-9, 9), uni(-9, 9)),
+                              .direction = V(unit_draw(), unit_draw(), unit_draw()), .angle_deg = N(uni(-10, 100)),
+                              .color = C(uni(0, 1.1), uni(0, 1), uni(0, 1)), .shadows = pick(2) != 0};
+            fxrt_add_light(&fw, &l);
+            fxrt_set_ambient(&fw, C(uni(0, 1.1), uni(0, 1), uni(0, 1)));
+            break;
+        }
+        case 4: /* depth and samples, in and out of range */
+            fxrt_set_depth(&fw, (int32_t)pick(FXRT_MAX_DEPTH + 4) - 1);
+            fxrt_set_samples(&fw, (int32_t)pick(5) - 1, pick(2) != 0);
+            break;
+        case 5: { /* a camera: sizes from 0, any fov and scale */
+            int32_t w = (int32_t)pick(25), h = (int32_t)pick(26);
+            fxrt_vec3_t eye = V(uni(-4, 4), uni(-4, 4), uni(0, 8)), gaze = V(unit_draw(), unit_draw(), -1),
+                        up = V(unit_draw(), 1, unit_draw());
+            fxrt_err_t e = pick(3) ? fxrt_camera_perspective(&view, eye, gaze, up, N(uni(-10, 200)), w, h)
+                                   : fxrt_camera_orthographic(&view, eye, gaze, up, N(uni(-1, 20)), w, h);
+            if (e == FXRT_OK)
+                CHECK_SWEEP(view.width == w && view.height == h, "call %ld: camera %dx%d", i, (int)w, (int)h);
+            break;
+        }
+        case 6: { /* the set-up */
+            int z = (int)pick(24);
+            fxrt_err_t e = fxrt_render_setup(z == 0 ? NULL : &fr, z == 1 ? NULL : &fw, z == 2 ? NULL : &view);
+            if (z != 0) {
+                ready = e == FXRT_OK;
+                set_w = view.width;
+                set_h = view.height;
+            }
+            CHECK_SWEEP((e == FXRT_ERR_NULL) == (z <= 2), "call %ld: set-up %d (%s)", i, (int)e, fxrt_strerror(e));
+            CHECK_SWEEP(e != FXRT_OK || (view.width <= 24 && view.height <= 25), "call %ld", i);
+            break;
+        }
+        default: { /* a row: any row, any buffer length */
+            int32_t row = pick(8) == 0 ? (int32_t)(pick(2) ? INT32_MAX : INT32_MIN) : (int32_t)pick(30) - 2;
+            size_t len = pick(2) && set_w > 0 ? (size_t)FXRT_ROW_BYTES(set_w) + (size_t)pick(3) - 1
+                                            : (size_t)pick(FXRT_ROW_BYTES(24) + 1);
+            bool null_out = pick(32) == 0;
+            memset(buf, GUARD, sizeof buf);
+            fxrt_err_t e = fxrt_render_row(&fr, row, null_out ? NULL : buf, len);
+            fxrt_err_t want = null_out                                            ? FXRT_ERR_NULL
+                              : !ready || view.width != set_w || view.height != set_h ? FXRT_ERR_SETUP
+                              : row < 0 || row >= set_h                           ? FXRT_ERR_ROW
+                              : len < (size_t)FXRT_ROW_BYTES(set_w)               ? FXRT_ERR_BUFFER
+                                                                                  : FXRT_OK;
+            CHECK_SWEEP(e == want, "call %ld: row %ld len %zu: got %d (%s), want %d", i, (long)row, len, (int)e,
+                        fxrt_strerror(e), (int)want);
+            size_t wrote = e == FXRT_OK ? (size_t)FXRT_ROW_BYTES(set_w) : 0;
+            CHECK_SWEEP(untouched(buf + wrote, sizeof buf - wrote), "call %ld: wrote past its row", i);
+            e == FXRT_OK ? ok_rows++ : refused++;
+        }
+        }
+    }
+    printf("api sequence: %ld calls, %ld rows rendered, %ld refused\n", n, ok_rows, refused);
+    CHECK(ok_rows > n / 200 && refused > n / 200); /* both sides exercised */
+}
+
 int main(void)
 {
     test_ids();
@@ -361,5 +560,7 @@ int main(void)
     test_render_and_config();
     test_strerror();
     test_random(200000);
+    test_safety();
+    test_api_sequence(100000);
     return check_report("test_fxrt_" NUM_NAME);
 }

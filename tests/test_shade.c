@@ -202,7 +202,7 @@ static void check_frame(const char *name, const scene_t *s)
 {
     CHECK_MSG(build(s, W, H), "%s: set-up refused", name);
     for (int y = 0; y < H; y++)
-        fxrt_render_row(&rnd, y, &img[y][0][0]);
+        CHECK(fxrt_render_row(&rnd, y, &img[y][0][0], sizeof img[y]) == FXRT_OK);
     static double ref[H][W][3];
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
@@ -269,7 +269,7 @@ static void check_centre(const char *name, const scene_t *s, const double expect
 {
     CHECK_MSG(build(s, 1, 1), "%s: set-up refused", name);
     uint8_t px[3];
-    fxrt_render_row(&rnd, 0, px);
+    CHECK(fxrt_render_row(&rnd, 0, px, sizeof px) == FXRT_OK);
     double e = 0;
     for (int i = 0; i < 3; i++)
         e = fmax(e, fabs(px[i] - expect[i]));

@@ -336,7 +336,7 @@ static void check_frame(const char *name, const scene_t *s)
 {
     CHECK_MSG(build(s, W, H), "%s: set-up refused", name);
     for (int y = 0; y < H; y++)
-        fxrt_render_row(&rnd, y, &img[y][0][0]);
+        CHECK(fxrt_render_row(&rnd, y, &img[y][0][0], sizeof img[y]) == FXRT_OK);
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
             ray_t r;

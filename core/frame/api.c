@@ -9,6 +9,8 @@ const uint32_t FXRT_CONFIG_SYMBOL = 1;
 fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t world_size, uint32_t render_size,
                                    const uint32_t *config)
 {
+    if (w == NULL)
+        return FXRT_ERR_NULL;
     if (world_size != sizeof(world_t) || render_size != sizeof(render_t) || config != &FXRT_CONFIG_SYMBOL)
         return FXRT_ERR_CONFIG;
     fxrt_err_t e = geom_check_color(background);
@@ -20,6 +22,8 @@ fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t worl
 
 int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
 {
+    if (w == NULL || o == NULL)
+        return FXRT_ERR_NULL;
     int32_t id = world_add(w, o);
     if (id >= 0 && o->material.kind != MATERIAL_FLAT) {
 #if FXRT_MAX_LIGHTS > 0
@@ -33,8 +37,37 @@ int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
     return id;
 }
 
+int32_t fxrt_count(const world_t *w)
+{
+    return w == NULL ? 0 : world_count(w);
+}
+
+fxrt_err_t fxrt_set_material(world_t *w, int32_t id, const material_t *m)
+{
+    if (w == NULL || m == NULL)
+        return FXRT_ERR_NULL;
+    return world_set_material(w, id, m);
+}
+
+fxrt_err_t fxrt_set_ambient(world_t *w, color_t ambient)
+{
+    return w == NULL ? FXRT_ERR_NULL : world_set_ambient(w, ambient);
+}
+
+fxrt_err_t fxrt_set_depth(world_t *w, int32_t depth)
+{
+    return w == NULL ? FXRT_ERR_NULL : world_set_depth(w, depth);
+}
+
+fxrt_err_t fxrt_set_samples(world_t *w, int32_t samples, bool adaptive)
+{
+    return w == NULL ? FXRT_ERR_NULL : world_set_samples(w, samples, adaptive);
+}
+
 int32_t fxrt_add_light(world_t *w, const fxrt_light_t *l)
 {
+    if (w == NULL || l == NULL)
+        return FXRT_ERR_NULL;
     return world_add_light(w, l->kind, l->position, l->direction, l->angle_deg, l->color, l->shadows);
 }
 
@@ -55,6 +88,19 @@ static fxrt_err_t fxrt_cam_err(cam_err_t e)
     return (fxrt_err_t)(FXRT_ERR_CAM_BASE + (int)e);
 }
 
+/* cam_setup into a copy, kept only when it succeeds: a refused camera
+ * leaves the caller's view as it was (a frame set up with it still
+ * renders). */
+static fxrt_err_t fxrt_cam_set(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t up, num_t fov_deg,
+                               num_t scale, int32_t width, int32_t height)
+{
+    cam_t c;
+    fxrt_err_t e = fxrt_cam_err(cam_setup(&c, kind, eye, gaze, up, fov_deg, scale, width, height));
+    if (e == FXRT_OK)
+        *cam = c;
+    return e;
+}
+
 /* What both camera kinds check before cam_setup: the image size, and eye,
  * gaze and up inside the domain. */
 static fxrt_err_t fxrt_camera_common(vec3_t eye, vec3_t gaze, vec3_t up, int32_t width, int32_t height)
@@ -72,17 +118,21 @@ static fxrt_err_t fxrt_camera_common(vec3_t eye, vec3_t gaze, vec3_t up, int32_t
 fxrt_err_t fxrt_camera_perspective(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t up, num_t fov_deg,
                                    int32_t width, int32_t height)
 {
+    if (cam == NULL)
+        return FXRT_ERR_NULL;
     fxrt_err_t e = fxrt_camera_common(eye, gaze, up, width, height);
     if (e != FXRT_OK)
         return e;
     if (!(fov_deg > NUM_ZERO && fov_deg < NUM(180)))
         return FXRT_ERR_FOV;
-    return fxrt_cam_err(cam_setup(cam, CAM_PERSPECTIVE, eye, gaze, up, fov_deg, NUM_ONE, width, height));
+    return fxrt_cam_set(cam, CAM_PERSPECTIVE, eye, gaze, up, fov_deg, NUM_ONE, width, height);
 }
 
 fxrt_err_t fxrt_camera_orthographic(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t up, num_t scale, int32_t width,
                                     int32_t height)
 {
+    if (cam == NULL)
+        return FXRT_ERR_NULL;
     fxrt_err_t e = fxrt_camera_common(eye, gaze, up, width, height);
     if (e != FXRT_OK)
         return e;
@@ -90,11 +140,13 @@ fxrt_err_t fxrt_camera_orthographic(cam_t *cam, vec3_t eye, vec3_t gaze, vec3_t 
         return FXRT_ERR_SCALE;
     if (!NUM_EXACT && scale < NUM(1.0 / 65536.0))
         return FXRT_ERR_TINY; /* (float and double: below Q16.16's step) */
-    return fxrt_cam_err(cam_setup(cam, CAM_ORTHOGRAPHIC, eye, gaze, up, NUM(90), scale, width, height));
+    return fxrt_cam_set(cam, CAM_ORTHOGRAPHIC, eye, gaze, up, NUM(90), scale, width, height);
 }
 
 fxrt_err_t fxrt_camera_setup(cam_t *cam, const fxrt_camera_t *c)
 {
+    if (c == NULL)
+        return FXRT_ERR_NULL;
     if (c->kind == CAM_PERSPECTIVE)
         return fxrt_camera_perspective(cam, c->eye, c->gaze, c->up, c->fov_deg, c->width, c->height);
     if (c->kind == CAM_ORTHOGRAPHIC)
@@ -104,11 +156,59 @@ fxrt_err_t fxrt_camera_setup(cam_t *cam, const fxrt_camera_t *c)
 
 fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t *cam, uint32_t render_size)
 {
+    if (r == NULL)
+        return FXRT_ERR_NULL;
+    r->vis.world = NULL; /* not set up until render_setup succeeds */
+    r->error = NULL;
+    if (w == NULL || cam == NULL)
+        return FXRT_ERR_NULL;
     if (render_size != sizeof(render_t))
         return FXRT_ERR_CONFIG;
     if (cam->width > FXRT_RENDER_MAX_WIDTH)
         return FXRT_ERR_WIDTH;
-    return render_setup(r, w, cam) ? FXRT_OK : FXRT_ERR_RENDER;
+    if (cam->width < 1 || cam->height < 1 || cam->height > FXRT_MAX_DIM)
+        return FXRT_ERR_SIZE; /* a view the camera calls never set up */
+    if (render_setup(r, w, cam)) {
+        r->out_width = (uint16_t)cam->width;
+        r->out_height = (uint16_t)cam->height;
+        return FXRT_OK;
+    }
+    const char *why = r->error;
+    r->vis.world = NULL;
+    r->error = why;
+    return FXRT_ERR_RENDER;
+}
+
+const char *fxrt_render_error(const render_t *r)
+{
+    return r == NULL ? NULL : r->error;
+}
+
+/* The output camera: the set-up one, or the sampler's output camera. */
+static const cam_t *fxrt_out_cam(const render_t *r)
+{
+#if FXRT_MAX_SAMPLES > 1
+    if (render_sampled(r))
+        return r->sample.out_cam;
+#endif
+    return r->vis.cam;
+}
+
+fxrt_err_t fxrt_render_row(render_t *r, int32_t row, uint8_t *out, size_t out_bytes)
+{
+    if (r == NULL || out == NULL)
+        return FXRT_ERR_NULL;
+    if (r->vis.world == NULL || r->error != NULL)
+        return FXRT_ERR_SETUP;
+    const cam_t *cam = fxrt_out_cam(r);
+    if (cam->width != r->out_width || cam->height != r->out_height)
+        return FXRT_ERR_SETUP; /* the view changed since the set-up */
+    if (row < 0 || row >= cam->height)
+        return FXRT_ERR_ROW;
+    if (out_bytes < (size_t)FXRT_ROW_BYTES(cam->width) || (FXRT_PIXEL == FXRT_RGB565 && ((uintptr_t)out & 1u)))
+        return FXRT_ERR_BUFFER;
+    render_row(r, row, out);
+    return FXRT_OK;
 }
 
 const char *fxrt_strerror(int32_t err)
@@ -148,6 +248,10 @@ const char *fxrt_strerror(int32_t err)
                "FXRT_MAX_LIGHTS, FXRT_PHONG)";
     case FXRT_ERR_ID: return "no object with this id";
     case FXRT_ERR_LIGHT: return "unknown light kind";
+    case FXRT_ERR_NULL: return "a NULL pointer where an object is needed";
+    case FXRT_ERR_ROW: return "row outside 0..height-1";
+    case FXRT_ERR_SETUP: return "no successful fxrt_render_setup on this fxrt_render_t since its view last changed";
+    case FXRT_ERR_BUFFER: return "row buffer smaller than FXRT_ROW_BYTES(width) (or, RGB565, not 2-byte aligned)";
     case FXRT_ERR_DEPTH: return "depth outside 0..FXRT_MAX_DEPTH (largest number of bounces)";
     case FXRT_ERR_SAMPLES:
         return "samples outside 1..FXRT_MAX_SAMPLES, or adaptive with fewer than 2 samples or compiled out "

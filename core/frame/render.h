@@ -79,6 +79,10 @@ typedef struct {
      * key (render_key) into keys[0 .. width-1]. */
     uint32_t *keys;
     const char *error; /* why render_setup failed, or NULL */
+    /* The output image's size at the last set-up through the API
+     * (frame/api.c: fxrt_render_row refuses rows once the view has changed
+     * under the frame, so a changed view cannot write past a row). */
+    uint16_t out_width, out_height;
 } render_t;
 
 /* Per-frame set-up: camera-space forms and screen bounds of every object.

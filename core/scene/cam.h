@@ -28,7 +28,13 @@
  * them, so no error cap can hold (docs/ACCURACY.md, "Camera"). */
 #define CAM_UP_MIN_SIN_SHIFT 6
 
-typedef enum { CAM_PERSPECTIVE, CAM_ORTHOGRAPHIC } cam_kind_t;
+/* (The FXRT_ names are the public API's spelling, core/fxrt.h.) */
+typedef enum {
+    CAM_PERSPECTIVE,
+    CAM_ORTHOGRAPHIC,
+    FXRT_PERSPECTIVE = CAM_PERSPECTIVE,
+    FXRT_ORTHOGRAPHIC = CAM_ORTHOGRAPHIC
+} cam_kind_t;
 
 typedef enum {
     CAM_OK = 0,

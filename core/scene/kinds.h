@@ -66,7 +66,10 @@
 #define FXRT_WHEN_1_NOT(...)
 
 #define GEOM_KIND_ENUM(K, ...) GEOM_##K,
-typedef enum { FXRT_KINDS(GEOM_KIND_ENUM) GEOM_KINDS } geom_kind_t;
+/* GEOM_PLANE ..., and the public API's spelling FXRT_PLANE ... (fxrt.h). */
+#define GEOM_KIND_PUBLIC(K, ...) FXRT_##K = GEOM_##K,
+typedef enum { FXRT_KINDS(GEOM_KIND_ENUM) GEOM_KINDS, FXRT_KINDS(GEOM_KIND_PUBLIC) } geom_kind_t;
+#undef GEOM_KIND_PUBLIC
 #undef GEOM_KIND_ENUM
 
 /* Bit GEOM_KIND is set for each solid kind. */

@@ -9,7 +9,15 @@
 
 #include "scene/geom.h"
 
-typedef enum { LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_SPOT } light_kind_t;
+/* (The FXRT_ names are the public API's spelling, core/fxrt.h.) */
+typedef enum {
+    LIGHT_POINT,
+    LIGHT_DIRECTIONAL,
+    LIGHT_SPOT,
+    FXRT_LIGHT_POINT = LIGHT_POINT,
+    FXRT_LIGHT_DIRECTIONAL = LIGHT_DIRECTIONAL,
+    FXRT_LIGHT_SPOT = LIGHT_SPOT
+} light_kind_t;
 
 typedef struct {
     uint8_t kind;    /* light_kind_t */
