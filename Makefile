@@ -125,7 +125,7 @@ TEST_FULL_PREREQ :=
 -include tests/qemu_trace.mk
 -include tests/order.mk
 
-SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/layers.sh tests/qemu.sh \
+SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/layers.sh tests/doclinks.sh tests/qemu.sh \
           $(SUITES_EXTRA)
 
 # make test builds what the suites need with TEST_JOBS parallel jobs (the

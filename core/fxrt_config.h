@@ -77,10 +77,10 @@ FXRT_STATIC_ASSERT(1 <= FXRT_RENDERER && FXRT_RENDERER <= 3, "FXRT_RENDERER must
  * fx.h's small-factor products (fx_smul_small, fx_umul64_small: cam_ray
  * and the scanline forms' evaluation on the M0). */
 FXRT_STATIC_ASSERT(1 <= FXRT_MAX_DIM && FXRT_MAX_DIM <= 16384, "FXRT_MAX_DIM must be in 1..16384: pixel offsets must stay below 2^15");
-FXRT_STATIC_ASSERT(FXRT_MAX_PLANES >= 0 && FXRT_MAX_SPHERES >= 0 && FXRT_MAX_TRIANGLES >= 0 && FXRT_MAX_BOXES >= 0, "FXRT_MAX_<KIND> capacities must be >= 0");
-FXRT_STATIC_ASSERT(FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES <= 65535, "total object capacity (FXRT_MAX_PLANES + _SPHERES + _TRIANGLES + _BOXES) must be <= 65535: ids are uint16_t and 0xFFFF is the no-object sentinel");
+/* (The capacities' checks, each >= 0 and their total in 1..65535, are
+ * made from the kinds table: scene/kinds.h.) */
 
-/* Instruction-set features the fixed-point maths (core/fx.c, core/fx.h)
+/* Instruction-set features the fixed-point maths (math/fx.c, math/fx.h)
  * chooses its code paths by. The defaults follow the target: the
  * Cortex-M0 (ARMv6-M) has no divide, no CLZ and no 32x32->64 multiply; the
  * M3/M4 and the host have all three. Results are identical on every path
@@ -109,8 +109,9 @@ FXRT_STATIC_ASSERT(FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXR
 #endif
 FXRT_STATIC_ASSERT(1 <= FXRT_RENDER_MAX_WIDTH && FXRT_RENDER_MAX_WIDTH <= FXRT_MAX_DIM, "FXRT_RENDER_MAX_WIDTH must be 1..FXRT_MAX_DIM");
 
-#define FXRT_RENDER_MAX_OBJECTS (FXRT_MAX_PLANES + FXRT_MAX_SPHERES + FXRT_MAX_TRIANGLES + FXRT_MAX_BOXES)
-FXRT_STATIC_ASSERT(FXRT_RENDER_MAX_OBJECTS >= 1, "the world must be able to hold at least one object");
+/* Objects a world holds, over every kind (the sum of the kinds table's
+ * capacities, scene/kinds.h). */
+#define FXRT_RENDER_MAX_OBJECTS (0 FXRT_KINDS(FXRT_KIND_CAPACITY))
 
 /* Box faces the renderer can hold per frame, over all boxes. A box seen
  * from outside in perspective needs at most 3; from inside, from its
@@ -121,7 +122,7 @@ FXRT_STATIC_ASSERT(FXRT_RENDER_MAX_OBJECTS >= 1, "the world must be able to hold
 #endif
 FXRT_STATIC_ASSERT(FXRT_MAX_BOXES == 0 || FXRT_RENDER_BOX_FACES >= 1, "FXRT_RENDER_BOX_FACES must be at least 1 when boxes are enabled");
 
-/* Back faces of closed meshes (core/mesh.c, core/render_setup.c): in
+/* Back faces of closed meshes (scene/mesh.c, vis/cull.c): in
  * worlds of 4 to FXRT_MESH_MAX triangles (at most 255), each triangle is
  * matched edge to edge with the earlier ones as it is added
  * (world_add_triangle: about T^2 / 2 vertex compares for the world), and
@@ -270,7 +271,7 @@ FXRT_STATIC_ASSERT(FXRT_FLOAT_STEP == 0 || FXRT_FLOAT_STEP == 1, "FXRT_FLOAT_STE
 #endif
 FXRT_STATIC_ASSERT(FXRT_PIXEL == FXRT_RGB888 || FXRT_PIXEL == FXRT_RGB565, "FXRT_PIXEL must be FXRT_RGB888 (1) or FXRT_RGB565 (2)");
 
-/* ---- lighting (core/light.h, core/shade.c, core/shadow.c) -------------- */
+/* ---- lighting (scene/light.h, light/shade.c, light/shadow.c) -------------- */
 
 /* Lights a world can hold (0..8). 0 compiles lighting out: every object is
  * drawn in its flat colour, material and light calls return
@@ -300,7 +301,7 @@ FXRT_STATIC_ASSERT(FXRT_PHONG == 0 || FXRT_PHONG == 1, "FXRT_PHONG must be 0 or 
  * frame, a cone around every bounded object (sphere, triangle, box) as
  * seen from the light, with a margin for every rounding: a shadow ray
  * outside the cone, or ending before the object, skips that object's
- * exact test (core/shadow.c; docs/ACCURACY.md, "Shadow-ray culling"). It
+ * exact test (light/shadow.c; docs/ACCURACY.md, "Shadow-ray culling"). It
  * changes no decision of an exact kernel that is right (and skips some
  * that are not); 0 compiles it out. */
 #ifndef FXRT_SHADOW_CULL
@@ -317,11 +318,11 @@ FXRT_STATIC_ASSERT(FXRT_MAX_LIGHTS > 0 || (!FXRT_SHADOWS && !FXRT_PHONG), "FXRT_
 /* Largest Phong exponent (the scene format allows 1..1024). */
 #define FXRT_PHONG_MAX_EXPONENT 1024
 
-/* ---- secondary rays and supersampling (core/trace.c, render_sample.c) -- */
+/* ---- secondary rays and supersampling (light/trace.c, render_sample.c) -- */
 
 /* Largest bounce depth a world may ask for (world_set_depth, the scene's
  * 'depth', 0..16). The bounce loop's stack of pending rays has this many
- * entries (core/trace.h). 0 compiles bounces out: reflective materials
+ * entries (light/trace.h). 0 compiles bounces out: reflective materials
  * keep their Phong term, transparent ones show black, and no bounce code
  * is linked. The scene compiler emits the scene's own depth, or 0 when no
  * object is reflective or transparent. */

@@ -31,6 +31,7 @@ die() { echo "docblocks: $*" >&2; exit 1; }
 # name | page | source (the command's output) | command that writes the source
 blocks=(
     "orbit|docs/EMBEDDING.md|$L/examples.sh.log|suite tests/examples.sh"
+    "core|docs/ARCHITECTURE.md|$L/layers.sh.log|suite tests/layers.sh"
     "golden|docs/TESTING.md|$L/golden.sh.log|suite tests/golden.sh"
     "oracle|docs/ACCURACY.md|$L/oracle.sh.log|suite tests/oracle.sh"
     "oracle-sweep|docs/ACCURACY.md|$L/oracle-sweep.log|make oracle"
@@ -274,6 +275,37 @@ fmt_fit_message() { # the fit check's message, as the terminal shows it
     echo '```'
 }
 
+fmt_core() { # tests/layers.sh's core-stats lines: the folders' table
+    local log
+    log=$(cat)
+    grep -q '^core-stats: folder=' <<<"$log" || die "core: no core-stats lines in the log"
+    echo "| folder | layer | files | lines | largest file | \`#if\` lines |"
+    echo "|---|---|---:|---:|---|---:|"
+    awk -v q='`' '
+        BEGIN {
+            what["."] = "configuration, error codes, public API header"
+            what["port"] = "the target: architecture tests, inline assembly"
+            what["math"] = "Q16.16, the number types, vectors, colours"
+            what["scene"] = "cameras, the kinds of object, meshes, the world"
+            what["vis"] = "the visibility pass"
+            what["light"] = "the light sum, shadow rays, secondary rays"
+            what["frame"] = "a frame'"'"'s passes, the public API'"'"'s entry points"
+        }
+        function commas(n,  s) { s = sprintf("%d", n); while (s ~ /[0-9][0-9][0-9][0-9]/) sub(/[0-9][0-9][0-9]($|,)/, ",&", s); return s }
+        /^core-stats: folder=/ {
+            for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
+            name = v["folder"] == "." ? q "core/" q " (top)" : q "core/" v["folder"] "/" q
+            big = v["largest"]; sub(/\(/, " (", big)
+            printf "| %s | %s | %d | %s | %s | %d |\n", name, what[v["folder"]], v["files"], commas(v["lines"]), big, v["if_lines"]
+            files += v["files"]; lines += v["lines"]; ifs += v["if_lines"]
+        }
+        /^core-stats: total_if_lines=/ { split($2, kv, "="); total = kv[2]; split($3, c, "="); cap = c[2] }
+        END {
+            printf "| all | | %d | %s | | %d |\n", files, commas(lines), ifs
+            printf "\n%s lines count %s, %s, %s and %s, include guards among them; make test fails above %d.\n", q "#if" q, q "#if" q, q "#ifdef" q, q "#ifndef" q, q "#elif" q, cap
+        }' <<<"$log"
+}
+
 fmt_table() { # the markdown table a command printed (its | lines, and the line before it)
     awk '/^\|/ { if (!t && prev != "") print prev "\n"; t = 1; print; next } { prev = $0 }' | grep -v '^\[' || true
 }
@@ -281,6 +313,7 @@ fmt_table() { # the markdown table a command printed (its | lines, and the line 
 format() { # NAME < source
     case $1 in
     orbit) fmt_orbit ;;
+    core) fmt_core ;;
     golden) fmt_golden ;;
     oracle | oracle-sweep) fmt_oracle ;;
     diff | stress) fmt_diff ;;

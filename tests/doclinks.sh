@@ -8,14 +8,14 @@
 #   - every generated block <!-- NAME --> ... <!-- /NAME --> is closed,
 #     not nested, has a known generator (host/docblocks.sh --names, or the
 #     firmware scripts' own blocks) and is not empty.
-# A link to a page in DOCLINKS_PENDING (default docs/ARCHITECTURE.md, which
-# the core's restructuring adds) passes with a note while the page is
-# missing, and is checked like any other once it exists. Not part of
-# make test yet; run it alone: BUILD=build tests/run.sh tests/doclinks.sh
+#   - every path to a project file a page names exists (docs/HISTORY.md
+#     excepted: it keeps the names of their time).
+# A link to a page in DOCLINKS_PENDING (default none) passes with a note
+# while the page is missing. Part of make test.
 set -u
 . "$(dirname "$0")/lib.sh"
 cd "$(dirname "$0")/.." || exit 1
-pending=${DOCLINKS_PENDING-docs/ARCHITECTURE.md}
+pending=${DOCLINKS_PENDING-}
 known="$(host/docblocks.sh --names) bench:header bench:tables bench:samples frontier benchfx:table benchfx:versus ram:table"
 pages=(README.md)
 while IFS= read -r f; do pages+=("$f"); done < <(find docs -name '*.md' | sort)
@@ -112,4 +112,16 @@ for page in sys.argv[1:]:
         print("FAIL %s:%d: block <!-- %s --> is never closed" % (page, start, name))
 PY
 )
+
+# Every path to a project file that a page names (core/vis/row.c,
+# tests/layers.sh, ...) exists: a file moved or renamed must take its
+# mentions along. docs/HISTORY.md is history and keeps the old names;
+# placeholders (KIND, <...>, *) are not paths.
+for page in "${pages[@]}"; do
+    [ "$page" = docs/HISTORY.md ] && continue
+    while IFS= read -r path; do
+        case $path in *KIND* | *BOARD* | *'<'* | *'*'*) continue ;; esac
+        if [ -e "$path" ]; then ok; else bad "$page names $path, which does not exist"; fi
+    done < <(grep -oP '(?<![/\w.-])(core|host|firmware|tests|examples|linker|scenes|docs)/[\w./-]+\.(c|h|sh|py|mk|ld|scene|md)\b' "$page" | sort -u)
+done
 report doclinks.sh

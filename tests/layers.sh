@@ -113,4 +113,25 @@ elif grep -qE '^cycle: translation units math/fx.c math/trig.c' "$dir.out"; then
 else
     bad "fault call-cycle: no cycle line ($dir.out)"
 fi
+
+# The layout in numbers (docs/ARCHITECTURE.md's generated block "core"):
+# per folder its files, lines, largest file and #if lines (#if, #ifdef,
+# #ifndef, #elif; include guards among them). The total of #if lines is
+# capped: a conditional added must replace one, or raise the cap here on
+# purpose.
+IF_CAP=255
+if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
+total_if=0
+for d in . port math scene vis light frame; do
+    if [ "$d" = . ]; then files=$(ls core/*.h); else files=$(ls core/$d/*.[ch]); fi
+    n=$(wc -w <<<"$files")
+    lines=$(cat $files | wc -l)
+    big=$(wc -l $files | grep -v ' total$' | sort -n | tail -n 1 | awk '{ sub(".*/", "", $2); print $2 "(" $1 ")" }')
+    ifs=$(if_lines $files)
+    total_if=$((total_if + ifs))
+    echo "core-stats: folder=$d files=$n lines=$lines largest=$big if_lines=$ifs"
+done
+echo "core-stats: total_if_lines=$total_if cap=$IF_CAP"
+check "#if lines in core/: $total_if <= $IF_CAP" test "$total_if" -le $IF_CAP
+
 report layers

@@ -2129,9 +2129,9 @@ static void test_render_span_ranges(void)
             continue;
         for (int32_t row = 0; row < OH; row++) {
             render_row(&state, row, rgb);
-            render_scache_t sc; /* none: the spheres' ranges come from their row state */
-            render_scache_reset(&sc);
-            state.vis.scache = &sc;
+            render_sphere_cache_t sc; /* none: the spheres' ranges come from their row state */
+            render_sphere_cache_reset(&sc);
+            state.vis.sphere_cache = &sc;
             int32_t iy = OH - 1 - 2 * row;
             for (uint16_t i = 0; i < state.vis.count; i++) {
                 const render_obj_t *o = &state.vis.obj[i];
@@ -2155,7 +2155,7 @@ static void test_render_span_ranges(void)
                         /* The same from an empty cache (a sphere's range
                          * reuses the depth of the stretch before's first
                          * column): the cache must not change a range. */
-                        render_scache_reset(&sc);
+                        render_sphere_cache_reset(&sc);
                         int got2 = render_span_range(&state.vis, i, p, q, iy, &lo2, &hi2, false);
                         if (got2 != got || (got && (render_depth_less(lo, lo2) || render_depth_less(lo2, lo) ||
                                                     render_depth_less(hi, hi2) || render_depth_less(hi2, hi)))) {
@@ -2181,7 +2181,7 @@ static void test_render_span_ranges(void)
                     a = b + 1;
                 }
             }
-            state.vis.scache = NULL;
+            state.vis.sphere_cache = NULL;
         }
     }
     printf("stretch ranges: %ld spheres, %ld boxes, %ld triangles, %ld planes; %ld columns checked, %ld outside\n",

@@ -28,7 +28,7 @@ typedef struct {
     cam_t fine;
     uint8_t fine_rgb[(FXRT_PIXEL == FXRT_RGB565 ? 2 : 3) * FXRT_RENDER_MAX_WIDTH] __attribute__((aligned(4)));
     color_sum_t acc[3 * RENDER_OUT_COLS];
-    uint16_t uni[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
+    uint16_t sole_owner[RENDER_OUT_COLS]; /* render_sample.c: the one flat owner of a pixel's samples so far */
 #if RENDER_RUNS
     /* Run mode: the runs of fine row j of the current output row are
      * runs[run_at[j] .. run_at[j + 1] - 1], sorted, not overlapping; gaps
@@ -43,11 +43,11 @@ typedef struct {
 #endif
 #if FXRT_ADAPTIVE
     /* Adaptive: keys and colours of output rows at one sample per pixel
-     * (a ring of three rows: slot row % 3 holds row arow[row % 3]), and
+     * (a ring of three rows: slot row % 3 holds row coarse_row[row % 3]), and
      * per column whether the pixel takes the N x N rays. */
-    uint32_t akeys[3][RENDER_OUT_COLS];
-    rgb8_t argb[3][RENDER_OUT_COLS];
-    int32_t arow[3];
+    uint32_t coarse_keys[3][RENDER_OUT_COLS];
+    rgb8_t coarse_rgb[3][RENDER_OUT_COLS];
+    int32_t coarse_row[3];
     bool need[RENDER_OUT_COLS];
 #endif
 } render_sample_t;
@@ -92,7 +92,7 @@ typedef struct {
 bool render_setup(render_t *r, const world_t *w, const cam_t *cam);
 
 /* A pixel's key: the nearest object's scene id and the set of lights that
- * reach its hit point (bit i for light i; core/shade.c), id << 8 | mask.
+ * reach its hit point (bit i for light i; light/shade.c), id << 8 | mask.
  * A pixel that shows the background has RENDER_KEY_MISS. Two neighbouring
  * pixels with different keys mark a discontinuity (silhouette, shadow
  * edge, spot-cone edge, terminator): host/compare.c. */

@@ -1,4 +1,4 @@
-/* render_sample: supersampling, samples N > 1 (issue 12).
+/* render_sample: supersampling, samples N > 1.
  *
  * Each pixel's N x N rays go through the centres of the N x N equal cells
  * of the pixel square. Those are exactly the pixel centres of a camera N
@@ -54,7 +54,7 @@ bool render_sample_setup(render_t *r, const world_t *w, const cam_t **cam)
         *cam = &s->fine;
         render_sum_one(s->bg_one, w->background);
 #if FXRT_ADAPTIVE
-        s->arow[0] = s->arow[1] = s->arow[2] = -1;
+        s->coarse_row[0] = s->coarse_row[1] = s->coarse_row[2] = -1;
 #endif
 #if RENDER_RUNS
         s->run_cap = FXRT_SAMPLE_RUNS;
@@ -102,11 +102,11 @@ static inline const color_sum_t *render_sample_one(const render_t *r, uint16_t o
     return oi == RENDER_VIS_NONE ? r->sample.bg_one : r->sample.one[oi];
 }
 
-/* uni[x] while an output pixel's samples so far all had one flat owner
- * (or the background): that owner; RENDER_UNI_MIXED once they did not (its
+/* sole_owner[x] while an output pixel's samples so far all had one flat owner
+ * (or the background): that owner; RENDER_OWNER_MIXED once they did not (its
  * sum is then in acc). A pixel that stays uniform is that owner's colour,
  * exactly what the mean of N x N equal samples rounds to, with no sums. */
-#define RENDER_UNI_MIXED 0xFFFEu
+#define RENDER_OWNER_MIXED 0xFFFEu
 
 /* Fine row j of output row `row`: visibility, then each output pixel that
  * wants its samples (need == NULL: all) checks or adds them. */
@@ -122,12 +122,12 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
             continue;
         const uint16_t *v = &r->vis.painted[X0];
         color_sum_t *a = &r->sample.acc[3 * x];
-        uint16_t u = j == 0 ? v[0] : r->sample.uni[x]; /* row 0 starts the pixel afresh */
-        if (u != RENDER_UNI_MIXED) {
+        uint16_t u = j == 0 ? v[0] : r->sample.sole_owner[x]; /* row 0 starts the pixel afresh */
+        if (u != RENDER_OWNER_MIXED) {
             bool same = true;
             if (j == 0) {
-                r->sample.uni[x] = u;
-                same = render_sample_flat(r, u); /* uni holds flat owners only */
+                r->sample.sole_owner[x] = u;
+                same = render_sample_flat(r, u); /* sole_owner holds flat owners only */
             }
             for (int32_t i = 0; i < n && same; i++)
                 same = v[i] == u;
@@ -143,7 +143,7 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
                 a[1] = c[1] * (color_sum_t)n * nj;
                 a[2] = c[2] * (color_sum_t)n * nj;
             }
-            r->sample.uni[x] = RENDER_UNI_MIXED;
+            r->sample.sole_owner[x] = RENDER_OWNER_MIXED;
         }
         uint16_t oi = v[0];
         bool one = true;
@@ -177,7 +177,7 @@ static void render_sample_put(uint8_t *rgb, int32_t x, uint8_t cr, uint8_t cg, u
 static void render_adaptive_row(render_t *r, int32_t row)
 {
     int32_t s = row % 3;
-    if (r->sample.arow[s] == row)
+    if (r->sample.coarse_row[s] == row)
         return;
     const cam_t *cam = r->sample.out_cam;
     const world_t *w = r->vis.world;
@@ -199,10 +199,10 @@ static void render_adaptive_row(render_t *r, int32_t row)
 #endif
             key = render_key(hit.obj->id, mask);
         }
-        r->sample.akeys[s][x] = key;
-        r->sample.argb[s][x] = c;
+        r->sample.coarse_keys[s][x] = key;
+        r->sample.coarse_rgb[s][x] = c;
     }
-    r->sample.arow[s] = row;
+    r->sample.coarse_row[s] = row;
 }
 
 /* Which pixels of output row `row` take N x N rays; false when none. */
@@ -214,14 +214,14 @@ static bool render_adaptive_need(render_t *r, int32_t row)
     for (int32_t q = r0; q <= r1; q++)
         render_adaptive_row(r, q);
     bool any = false;
-    const uint32_t *mid = r->sample.akeys[row % 3];
+    const uint32_t *mid = r->sample.coarse_keys[row % 3];
     for (int32_t x = 0; x < w; x++) {
         uint32_t k = mid[x];
         int32_t x0 = x > 0 ? x - 1 : x, x1 = x < w - 1 ? x + 1 : x;
         bool differ = false;
         for (int32_t q = r0; q <= r1 && !differ; q++)
             for (int32_t xx = x0; xx <= x1; xx++)
-                differ |= r->sample.akeys[q % 3][xx] != k;
+                differ |= r->sample.coarse_keys[q % 3][xx] != k;
         r->sample.need[x] = differ;
         any |= differ;
     }
@@ -341,7 +341,7 @@ void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
 #if FXRT_ADAPTIVE
     if (r->sample.adaptive) {
         bool any = render_adaptive_need(r, row);
-        const rgb8_t *one = r->sample.argb[row % 3];
+        const rgb8_t *one = r->sample.coarse_rgb[row % 3];
         for (int32_t x = 0; x < w; x++)
             render_sample_put(rgb, x, one[x].r, one[x].g, one[x].b);
         if (!any)
@@ -359,8 +359,8 @@ void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
     for (int32_t x = 0; x < w; x++) {
         if (need && !need[x])
             continue;
-        uint16_t u = r->sample.uni[x];
-        if (u != RENDER_UNI_MIXED) {
+        uint16_t u = r->sample.sole_owner[x];
+        if (u != RENDER_OWNER_MIXED) {
             rgb8_t c = u == RENDER_VIS_NONE ? r->vis.world->background_rgb : r->vis.obj[u].rgb;
             render_sample_put(rgb, x, c.r, c.g, c.b);
             continue;

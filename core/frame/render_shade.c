@@ -1,7 +1,6 @@
-/* render_shade: the shading pass. The visibility pass (render_row.c,
- * render_vis.c) leaves in r->vis the object that owns each column of the
+/* render_shade: the shading pass. The visibility pass (vis/) leaves in r->vis the object that owns each column of the
  * row; here each pixel owned by a lit object gets its colour from the
- * lighting model (core/shade.c): the pixel's camera ray (cam_ray), the
+ * lighting model (light/shade.c): the pixel's camera ray (cam_ray), the
  * owner's surface point and normal (geom_<kind>_surface: one object, no
  * search), and the light sum. Flat objects keep the colour the visibility
  * pass painted. With r->keys set, every pixel's key is written too. */

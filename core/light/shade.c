@@ -105,7 +105,7 @@ bool shade_spot_surely_out(const light_t *L, vec3_t v)
  * its length; it returns l, or the zero vector when the spot does not
  * reach p. The caller then passes the distance SHADE_FAR_DIST, and
  * shadow_blocked casts the shadow ray from the light's end of the
- * segment (core/shadow.c). Rare, so out of line. */
+ * segment (light/shadow.c). Rare, so out of line. */
 static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, vec3_t p)
 {
     vec3_t pos = L->position, l = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);

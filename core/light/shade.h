@@ -1,4 +1,4 @@
-/* shade: the lighting model, per hit point (issue 11; docs/ACCURACY.md
+/* shade: the lighting model, per hit point (docs/ACCURACY.md
  * "Shading" has its error bound).
  *
  * With hit point p, unit normal n turned towards the incoming ray (surfaces
@@ -13,7 +13,7 @@
  * A light reaches p when n . l > 0, p is inside its cone (spot: (-l) . s >=
  * cos(angle), cosines compared, no acos) and, for a light with shadows on,
  * no object is hit along the ray from p towards it with 0 < t < distance
- * (any t > 0 for a directional light; core/shadow.c). Each channel is
+ * (any t > 0 for a directional light; light/shadow.c). Each channel is
  * summed unclamped; color_to_rgb8 clamps and rounds. No distance
  * attenuation. The double build is the reference: this code, in doubles.
  */
@@ -24,7 +24,7 @@
 
 #include "scene/world.h"
 
-/* Shadow-ray culling (FXRT_SHADOW_CULL; core/shadow.c): for each point or
+/* Shadow-ray culling (FXRT_SHADOW_CULL; light/shadow.c): for each point or
  * spot light and each bounded object (slot: spheres, then triangles, then
  * boxes, by index), the cone from the light that holds every shadow ray
  * the object's exact test could find blocked. A ray towards the light
@@ -61,7 +61,7 @@ typedef union {
 void shadow_cull_setup(const world_t *w, shadow_cull_t *table);
 #if FXRT_NUMBER == FXRT_Q16
 /* A point or spot light's cone test, ldir . u > lim (shadow_culled_pt,
- * core/shadow.c). Q16.16 keeps u in Q2.30 and lim in Q18.14 rounded up,
+ * light/shadow.c). Q16.16 keeps u in Q2.30 and lim in Q18.14 rounded up,
  * so that the test needs only the high word of the Q18.46 dot: with S =
  * ldir . u 2^46 exact in int64, floor(S / 2^32) > lim14 gives S / 2^46 >=
  * (lim14 + 1) 2^-14 > lim. (Rounding lim up, by at most 3 2^-16, and

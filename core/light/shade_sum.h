@@ -18,7 +18,7 @@ color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t ki
 /* The light sum for object obj (= world_common(w, kind, index)), looked
  * up once by the caller. Inlined into its two callers where the core has
  * 32x32->64-bit multiplies (the M3 and M4F: one call fewer per pixel,
- * about -1 % on the lit scenes when it was measured); the M0
+ * about -1 % on the lit scenes); the M0
  * keeps the call (inlined, its callers' register pressure cost it +1 %). */
 static inline __attribute__((always_inline)) color_t shade_sum_inline(const world_t *w, const geom_common_t *obj,
                                                                     geom_kind_t kind, uint16_t index, const vec3_t *p,
@@ -28,7 +28,7 @@ static inline __attribute__((always_inline)) color_t shade_sum_inline(const worl
     const material_t *m = &obj->mat;
     FXRT_COUNT(shaded);
     bool lit = m->kind != MATERIAL_FLAT;
-    /* Transparent: no local term (core/trace.c adds what it transmits and
+    /* Transparent: no local term (light/trace.c adds what it transmits and
      * reflects); the light loop runs only for a pixel's key. */
     bool clear = m->kind == MATERIAL_TRANSPARENT;
     if ((!lit || clear) && !mask)

@@ -3,7 +3,7 @@
 
 #if FXRT_MAX_LIGHTS > 0 && FXRT_SHADOWS
 
-/* Transparent objects cast no shadow (core/trace.h). */
+/* Transparent objects cast no shadow (light/trace.h). */
 #define SHADOW_CASTS(o) (FXRT_MAX_DEPTH == 0 || (o).mat.kind != MATERIAL_TRANSPARENT)
 
 /* Is the light's position strictly inside solid (kind, index)? */
@@ -53,7 +53,7 @@ static num_t shadow_l1(vec3_t v)
  * two products), so every point p + t ldir of a shadow ray has p's value:
  * an object whose bounding sphere (c, R') it meets has |value(p) -
  * value(c)| <= R' |ldir x e_k| <= R'. In Q16.16 vec3_det2w is exact. The
- * two axes used are the light's (light_dir_axes, core/light.h), found
+ * two axes used are the light's (light_dir_axes, scene/light.h), found
  * once in world_add_light. */
 static numw_t shadow_proj(vec3_t v, vec3_t l, int k)
 {
@@ -202,10 +202,9 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
 {
     (void)rc, (void)mode;
     /* A directional light's: a copy that no call can change, so that its
-     * fields may stay in registers (course-lambert-directional on the M3:
-     * 946.7 -> 941.7 instructions per pixel; a point light's copy costs
-     * more than it saves; on the M0 the test is a call, and the copy only
-     * costs). */
+     * fields may stay in registers (0.5 % fewer instructions on the M3's
+     * directional scenes; a point light's copy costs more than it saves;
+     * on the M0 the test is a call, and the copy only costs). */
     shadow_ray_cull_t own;
     if (SHADOW_CULL && mode == SHADOW_CULL_DIR && !SHADOW_CULL_DOT16) {
         own = *rc;

@@ -1,43 +1,20 @@
-/* trace: secondary rays, reflection and refraction (issue 12), without
- * recursion.
+/* trace: secondary rays, reflection and refraction, without recursion.
  *
- * The colour seen along a ray is, at its nearest hit (material m, incoming
- * unit direction d, unit normal n turned towards the ray, e = -d):
- *   flat, lambert, phong   the local colour (core/shade.c)
+ * At a ray's nearest hit (material m, unit direction d, unit normal n
+ * turned towards the ray):
+ *   flat, lambert, phong   the local colour (light/shade.c)
  *   reflective             the Phong colour + c_r (.) trace(reflected)
- *   transparent            R trace(reflected) + (1 - R) c_d (.) trace(transmitted)
- *                          (no local term), or trace(reflected) alone under
- *                          total internal reflection
- * with reflected direction d - 2 (d.n) n; for glass the ratio q = 1/eta
- * entering (d . n_geometric < 0) and eta leaving, cos_i = -d.n,
- * cos2_t = 1 - q^2 (1 - cos_i^2) (< 0: total internal reflection),
- * transmitted direction q d + (q cos_i - cos_t) n, and Schlick's
- * R = R0 + (1 - R0)(1 - cos)^5, R0 = ((1 - eta)/(1 + eta))^2, cos = cos_i
- * entering and cos_t leaving. A miss sees the background.
- *
- * Bounces: the primary ray is bounce 0, a child has its parent's bounce + 1
- * and is traced only when that is at most the world's depth (else it
- * contributes black). A ray's weight is the product of the factors on its
- * path (c_r, R, (1 - R) c_d); a ray whose weight is below 1/512 in every
- * channel is not traced (black). Colours are summed unclamped; the
- * caller clamps the sample.
- *
- * No recursion: the tree is walked depth first with one explicit stack of
- * pending rays (origin, direction, weight, bounce and the medium: the
- * solid the ray travels inside, if any). A node pushes at most one sibling
- * and the entries on the stack have distinct bounces 1..depth, so
- * FXRT_MAX_DEPTH entries always suffice (asserted by construction: the
- * push is guarded).
- *
- * Self-intersection (no offset, no epsilon, as for shadow rays): a ray that
- * leaves a convex surface towards the side it came from, or any flat
- * surface, never meets that object again and does not test it; a ray that
- * goes into a solid (sphere, box) meets it only where it leaves it
- * (geom_<kind>_exit). Secondary rays use the world-space kernels; bounded
- * objects (spheres, triangles, boxes) are tested only when the ray meets
- * the sphere around their box (world_t.bc, br2, padded one unit; a
- * division-free test, FXRT_NO_BOUNDS turns it off).
- */
+ *   transparent            R trace(reflected) + (1 - R) c_d (.) trace(transmitted),
+ *                          or trace(reflected) alone under total internal reflection
+ * reflected d - 2 (d.n) n; transmitted by Snell's law with q = 1/eta
+ * entering and eta leaving; Schlick's R = R0 + (1 - R0)(1 - cos)^5. A ray
+ * is traced while its bounce is at most the world's depth and some channel
+ * of its weight (the product of c_r, R, (1 - R) c_d on its path) is at
+ * least 1/512. The tree is walked depth first with one explicit stack of
+ * at most FXRT_MAX_DEPTH pending rays. No offset and no epsilon: a ray
+ * that leaves a surface does not test that object again, except a ray
+ * into a solid, which meets it where it leaves (geom_<kind>_exit).
+ * docs/TRACING.md, "The model" and "How it runs", has it in full. */
 #ifndef FXRT_TRACE_H
 #define FXRT_TRACE_H
 

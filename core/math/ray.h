@@ -8,7 +8,7 @@ typedef struct {
     vec3_t o; /* origin, scene units */
     vec3_t d; /* direction, unit length (within 1 LSB per component in Q16.16;
                * a refracted bounce ray's is not renormalised and may be
-               * longer: core/trace.c bounds it, trace_dir_ok) */
+               * longer: light/trace.c bounds it, trace_dir_ok) */
 } ray_t;
 
 /* The point o + t d. */

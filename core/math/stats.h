@@ -19,7 +19,7 @@ typedef struct {
     uint32_t phong;        /* Phong powers evaluated */
     uint32_t pow_products; /* products inside those powers */
     uint32_t cosines;      /* cosines computed (spot cones) */
-    uint32_t secondary_rays; /* reflected and transmitted rays traced (core/trace.c) */
+    uint32_t secondary_rays; /* reflected and transmitted rays traced (light/trace.c) */
     uint32_t bounds_skips;   /* of those, rays that missed the bounds box */
 } fxrt_stats_t;
 extern fxrt_stats_t fxrt_stats;

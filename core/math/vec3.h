@@ -41,7 +41,7 @@ static inline vec3_t vec3_scale_unit(vec3_t u, num_t s)
 /* u * s for u a unit vector (|u_i| <= 1.25) and |s| < 16384 (2^30 LSB in
  * Q16.16): vec3_scale_unit's value, which then always fits, without its
  * saturation tests (Phong's r = 2 (n . l) n - l). Not for bounce ray
- * directions: a refracted one is not renormalised (core/trace.c). */
+ * directions: a refracted one is not renormalised (light/trace.c). */
 static inline vec3_t vec3_scale_unit_small(vec3_t u, num_t s)
 {
     return vec3_make(num_mul_unit_fits(s, u.x), num_mul_unit_fits(s, u.y), num_mul_unit_fits(s, u.z));

@@ -14,7 +14,7 @@
 #include "fxrt_err.h"
 #include "math/ray.h"
 
-/* How a surface responds to light (core/shade.c and core/trace.c have
+/* How a surface responds to light (light/shade.c and light/trace.c have
  * the formulas):
  *   MATERIAL_FLAT         its colour as is, whatever the lights (the default)
  *   MATERIAL_LAMBERT      ambient + diffuse

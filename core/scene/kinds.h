@@ -72,6 +72,15 @@ typedef enum { FXRT_KINDS(GEOM_KIND_ENUM) GEOM_KINDS, FXRT_KINDS(GEOM_KIND_PUBLI
 #undef GEOM_KIND_PUBLIC
 #undef GEOM_KIND_ENUM
 
+/* The capacities: each >= 0, their sum FXRT_RENDER_MAX_OBJECTS
+ * (fxrt_config.h) in 1..65535: ids are uint16_t and 0xFFFF is the "no
+ * object" sentinel. */
+#define FXRT_KIND_CAPACITY(K, k, ks, cap, ...) +(cap)
+#define FXRT_KIND_CAPACITY_OK(K, k, ks, cap, ...) &&(cap) >= 0
+FXRT_STATIC_ASSERT(1 FXRT_KINDS(FXRT_KIND_CAPACITY_OK), "FXRT_MAX_<KIND> capacities must be >= 0");
+FXRT_STATIC_ASSERT(FXRT_RENDER_MAX_OBJECTS >= 1, "the world must be able to hold at least one object");
+FXRT_STATIC_ASSERT(FXRT_RENDER_MAX_OBJECTS <= 65535, "total object capacity (the FXRT_MAX_<KIND> summed) must be <= 65535: ids are uint16_t and 0xFFFF is the no-object sentinel");
+
 /* Bit GEOM_KIND is set for each solid kind. */
 #define GEOM_SOLID_BIT(K, k, ks, cap, solid, ...) | (solid << GEOM_##K)
 #define GEOM_SOLID_KINDS (0u FXRT_KINDS(GEOM_SOLID_BIT))

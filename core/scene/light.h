@@ -1,4 +1,4 @@
-/* light: the lights of a world (core/shade.c applies them).
+/* light: the lights of a world (light/shade.c applies them).
  *
  * A light's colour, like the ambient colour and a material's specular
  * colour, is a fraction per channel: NUM_ONE is full intensity (a scaling
@@ -23,7 +23,7 @@ typedef struct {
     uint8_t kind;    /* light_kind_t */
     bool shadows;    /* cast shadow rays (FXRT_SHADOWS 1 only) */
     uint8_t axes[2]; /* directional: the two axes of its shadow rays'
-                      * projections (light_dir_axes; core/shadow.c) */
+                      * projections (light_dir_axes; light/shadow.c) */
     vec3_t position; /* point and spot: where it is */
     vec3_t dir;      /* directional: unit vector towards the light,
                       * -direction / |direction|, computed once (no
@@ -41,7 +41,7 @@ typedef struct {
 } light_t;
 
 /* The axes k1 < k2 for a directional light's shadow-ray projections
- * (core/shadow.c): v . (l x e_k), largest where |l x e_k|^2 = 1 - l_k^2
+ * (light/shadow.c): v . (l x e_k), largest where |l x e_k|^2 = 1 - l_k^2
  * is, so all but the axis of l's largest component. */
 static inline void light_dir_axes(vec3_t l, uint8_t axes[2])
 {

@@ -1,6 +1,6 @@
 /* mesh: which triangles of a world form closed meshes, worked out once
  * when the triangles are added (world_add_triangle), so that a frame's
- * set-up (render_cull_meshes in core/render_setup.c) only has to ask
+ * set-up (render_cull_meshes in vis/cull.c) only has to ask
  * which of a closed mesh's triangles face away from the eye.
  *
  * "Closed mesh": a connected set of triangles (sharing edges with the

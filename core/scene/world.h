@@ -40,7 +40,7 @@ typedef struct {
     light_t lights[FXRT_MAX_LIGHTS];
 #endif
 #if FXRT_MAX_DEPTH > 0
-    /* Secondary rays (core/trace.c): the largest bounce (world_set_depth,
+    /* Secondary rays (light/trace.c): the largest bounce (world_set_depth,
      * default 4 or FXRT_MAX_DEPTH if smaller), how many objects have a
      * reflective or transparent material, and the box around every
      * bounded object (spheres, triangles, boxes; grown by world_add_*),
@@ -50,7 +50,7 @@ typedef struct {
     bool bounded;  /* some bounded object exists: bmin, bmax are valid */
     vec3_t bmin, bmax;
     vec3_t bc;     /* the sphere around that box: centre and squared */
-    numw_t br2;    /* radius, padded (core/trace.c) */
+    numw_t br2;    /* radius, padded (light/trace.c) */
 #endif
 #if FXRT_MAX_SAMPLES > 1
     /* Supersampling (core/render_sample.c): N x N rays per pixel, 1 by
@@ -166,7 +166,7 @@ bool world_hit(const world_t *w, const ray_t *ray, hit_t *hit);
 /* Shadow rays: true when some object is hit along the ray with
  * 0 < t < tmax (any t > 0 when tmax is NUM_MAX), stopping at the first
  * such hit (any-hit, not nearest). Object `skip_id` is not tested (the
- * surface the ray starts on; core/shadow.c has the self-shadowing rule). */
+ * surface the ray starts on; light/shadow.c has the self-shadowing rule). */
 bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id);
 
 #endif

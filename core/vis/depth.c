@@ -114,11 +114,11 @@ static uint64_t render_sqrt128(const fx128_t *vp)
 }
 
 /* c and disc by pointer: the M0 copies a 16-byte value with memcpy. */
-static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const rsw_t *c,
-                                          const rsw_t *disc)
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const render_wide_t *c,
+                                          const render_wide_t *disc)
 {
     uint64_t s = render_sqrt128(disc);
-    if (!rsw_neg(*c)) /* outside: the near root, b > 0 */
+    if (!render_wide_neg(*c)) /* outside: the near root, b > 0 */
         return render_depth_make((uint64_t)c->hi, c->lo, (uint64_t)b + s, o->u.sphere->tc);
     if (b < 0) { /* inside, looking away from the centre: (-c) / (s - b) */
         fx128_t nc = fx128_neg(*c);
@@ -128,13 +128,13 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
     return render_depth_make(0, (uint64_t)b + s, (uint64_t)a, o->u.sphere->ta);
 }
 
-/* Sphere oi's forms on row iy where the row has them (r->scache: the
+/* Sphere oi's forms on row iy where the row has them (r->sphere_cache: the
  * sphere scanned last among others; r->srow: its row state), with the
  * pixel offset *ix0 of their column k = 0; NULL when it has none, or they
  * are not the perspective disc from outside. */
 static const render_srow_t *render_sphere_rowforms(const vis_t *r, uint16_t oi, int32_t iy, int32_t *ix0)
 {
-    const render_scache_t *sc = r->scache;
+    const render_sphere_cache_t *sc = r->sphere_cache;
     const render_srow_t *q = NULL;
     if (!sc)
         return NULL;
@@ -154,34 +154,34 @@ static const render_srow_t *render_sphere_rowforms(const vis_t *r, uint16_t oi, 
 }
 
 /* A sphere's disc at a pixel from its forms on this row, when it has them
- * (perspective; c is then the constant k): from r->scache (the sphere
+ * (perspective; c is then the constant k): from r->sphere_cache (the sphere
  * scanned last among others on this row) or, with row state, from its
  * own (it was scanned on this row, as it covers the pixel). Owners are
  * asked about column after column, so the last column's value and step
  * give the next by two additions. False: no row forms. */
 __attribute__((noinline)) static bool render_sphere_disc_row(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy,
-                                                             rsw_t *disc)
+                                                             render_wide_t *disc)
 {
-    render_scache_t *sc = r->scache;
+    render_sphere_cache_t *sc = r->sphere_cache;
     int32_t ix0 = 0;
     const render_srow_t *q = render_sphere_rowforms(r, oi, iy, &ix0);
     if (!q)
         return false;
     int32_t k = (ix - ix0) / 2;
-    if (sc->loi == oi && k == sc->lk + 1) {
-        if (!sc->lstepped) /* the step at lk, once a second column follows */
-            sc->lstep = fx128_add(q->d1, render_mul128_small(&q->d2, sc->lk));
-        sc->lq = fx128_add(sc->lq, sc->lstep);
-        sc->lstep = fx128_add(sc->lstep, q->d2);
-        sc->lstepped = true;
-    } else if (!(sc->loi == oi && k == sc->lk)) {
-        sc->lq = render_quad_k(&q->v, &q->d1, &q->d2, k);
-        sc->loi = oi;
-        sc->lstepped = false;
+    if (sc->disc_obj == oi && k == sc->disc_k + 1) {
+        if (!sc->disc_stepped) /* the step at lk, once a second column follows */
+            sc->disc_step = fx128_add(q->d1, render_mul128_small(&q->d2, sc->disc_k));
+        sc->disc = fx128_add(sc->disc, sc->disc_step);
+        sc->disc_step = fx128_add(sc->disc_step, q->d2);
+        sc->disc_stepped = true;
+    } else if (!(sc->disc_obj == oi && k == sc->disc_k)) {
+        sc->disc = render_quad_k(&q->v, &q->d1, &q->d2, k);
+        sc->disc_obj = oi;
+        sc->disc_stepped = false;
     }
-    sc->lk = k;
-    disc->lo = sc->lq.lo; /* (halves: a struct copy is a memcpy call on the M0) */
-    disc->hi = sc->lq.hi;
+    sc->disc_k = k;
+    disc->lo = sc->disc.lo; /* (halves: a struct copy is a memcpy call on the M0) */
+    disc->hi = sc->disc.hi;
     return true;
 }
 
@@ -218,7 +218,7 @@ static inline render_k_t render_lin_from(const render_lin_t *f, render_k_t va, i
     return (render_k_t)((uint64_t)va + fx_umul64_small((uint64_t)f->x, 2 * dk));
 }
 #else
-static bool render_sphere_disc_row(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, rsw_t *disc)
+static bool render_sphere_disc_row(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_wide_t *disc)
 {
     (void)r, (void)oi, (void)ix, (void)iy, (void)disc;
     return false; /* (Q16.16 alone keeps row forms) */
@@ -240,10 +240,10 @@ static render_depth_t render_flat_depth(const render_flat_t *f, render_k_t n, re
     render_depth_t t = {num_div(n, d)};
     return t;
 }
-static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const rsw_t *cp,
-                                          const rsw_t *discp)
+static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int32_t iy, render_k_t b, const render_wide_t *cp,
+                                          const render_wide_t *discp)
 {
-    rsw_t c = *cp;
+    render_wide_t c = *cp;
     num_t s = num_sqrt(*discp);
     render_depth_t t;
     if (!(c < 0))
@@ -256,12 +256,12 @@ static render_depth_t render_sphere_depth(const render_obj_t *o, int32_t ix, int
 }
 #endif
 
-/* Depth of box (or RENDER_ALL) o at a pixel it covers: the nearest of
+/* Depth of box (or RENDER_INSIDE_BOX) o at a pixel it covers: the nearest of
  * its faces that cover it. known: a face known to cover it, with its N
  * and D there (NULL: none). A face's pixel rectangle rules most faces out
  * at once; since the box covers the pixel, when neither known nor an
  * earlier candidate face does, the last candidate must: its coverage is
- * not tested (a RENDER_ALL box's always is). */
+ * not tested (a RENDER_INSIDE_BOX box's always is). */
 #define RENDER_BOX_SIDES 6 /* faces a box can have set up */
 __attribute__((noinline)) static render_depth_t render_box_depth(const vis_t *r, const render_obj_t *o, int32_t ix,
                                                                  int32_t iy, const render_flat_t *known, render_k_t kn,
@@ -279,7 +279,7 @@ __attribute__((noinline)) static render_depth_t render_box_depth(const vis_t *r,
     bool any = known != NULL;
     for (int k = 0; k < nc; k++) {
         const render_flat_t *f = &cand[k]->f;
-        bool test = any || k < nc - 1 || o->kind == RENDER_ALL;
+        bool test = any || k < nc - 1 || o->kind == RENDER_INSIDE_BOX;
         if (test && !render_edges_in(f, ix, iy))
             continue;
         render_k_t n = rlin_at(&f->n, ix, iy), d = rlin_at(&f->d, ix, iy);
@@ -294,8 +294,8 @@ __attribute__((noinline)) static render_depth_t render_box_depth(const vis_t *r,
 }
 
 /* render_sphere_cd in a frame of its own. */
-__attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c,
-                                                            rsw_t *disc)
+__attribute__((noinline)) static void render_sphere_cd_full(const render_obj_t *o, int32_t ix, int32_t iy, render_wide_t *c,
+                                                            render_wide_t *disc)
 {
     render_sphere_cd(o, ix, iy, c, disc);
 }
@@ -308,8 +308,8 @@ __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const vis
                                                                        int32_t iy)
 {
     const render_obj_t *o = &r->obj[oi];
-    rsw_t c, disc;
-    const rsw_t *cp = &c;
+    render_wide_t c, disc;
+    const render_wide_t *cp = &c;
     if (render_sphere_disc_row(r, oi, ix, iy, &disc))
         cp = &o->u.sphere->k;
     else
@@ -357,7 +357,7 @@ typedef struct {
     enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_BOX, RENDER_RAW_SPHERE } how;
     const render_flat_t *f;
     render_k_t n, d, b;
-    const rsw_t *c, *disc;
+    const render_wide_t *c, *disc;
 } render_raw_t;
 
 static render_depth_t render_raw_depth(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, const render_raw_t *raw)
@@ -484,8 +484,8 @@ bool render_resolve_box(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t 
 {
     return render_resolve_nd(r, cur, oi, x, iy, f, n, d, true);
 }
-bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
-                           const rsw_t *disc)
+bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const render_wide_t *c,
+                           const render_wide_t *disc)
 {
     int q = render_settle_quick(r, cur, oi, x);
     if (q >= 0)
@@ -565,8 +565,8 @@ __attribute__((noinline)) static int render_sphere_span(const vis_t *r, uint16_t
     uint64_t bq = (uint64_t)rlin_at(&sp->b, ixq, iy), bp = 0;
 #if RENDER_DIV_GUESS
     /* The depth at p kept from the range before (which found p covered). */
-    render_scache_t *sc = r->scache;
-    bool kept = !low && sc->poi == oi && sc->px == p;
+    render_sphere_cache_t *sc = r->sphere_cache;
+    bool kept = !low && sc->span_obj == oi && sc->span_x == p;
 #else
     bool kept = false;
 #endif
@@ -580,12 +580,12 @@ __attribute__((noinline)) static int render_sphere_span(const vis_t *r, uint16_t
         render_depth_t tp, tq = render_sphere_near(sp, bq + render_sqrt128(&dq));
 #if RENDER_DIV_GUESS
         if (kept) {
-            tp = sc->pt;
+            tp = sc->span_t;
         } else {
             tp = render_sphere_near(sp, bp + render_sqrt128(&dp));
-            sc->poi = oi;
-            sc->px = p;
-            sc->pt = tp;
+            sc->span_obj = oi;
+            sc->span_x = p;
+            sc->span_t = tp;
         }
 #else
         tp = render_sphere_near(sp, bp + render_sqrt128(&dp));

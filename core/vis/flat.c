@@ -92,8 +92,7 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
 /* A flat piece among others locates its runs from this many columns on;
  * below, stepping is as cheap. With the quotient's guesses (division and
  * CLZ instructions: the M3, M4F) 4 and 6 are 0.4 % fewer instructions
- * than 8 on the bench set; on the M0, 6 and 8 measure alike (0 to 16 did
- * before). */
+ * than 8 on the bench set; on the M0, 6 and 8 measure alike. */
 #define RENDER_CLAIM_MIN (RENDER_DIV_GUESS ? 6 : 8)
 
 /* A flat piece across columns x0..x1, by spans where it is wide enough
@@ -240,7 +239,7 @@ int render_row_runs(vis_t *r, int32_t row, render_run_t *out, int cap)
             return -1;
         render_iv_t iv[4];
         switch (o->kind) {
-        case RENDER_ALL:
+        case RENDER_INSIDE_BOX:
             iv[0].lo = 0;
             iv[0].hi = o->x1 - o->x0;
             n = render_runs_push(out, n, cap, o->x0, iv, 1, i);

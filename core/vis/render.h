@@ -1,96 +1,16 @@
-/* render: the scanline renderer for primary rays.
+/* render: the visibility pass of the scanline renderer (primary rays):
+ * its per-frame records and state (vis_t) and its entry points.
  *
- * Coverage. Primary rays are coherent: in camera space the ray through
- * pixel offsets (ix, iy) = (2x - W + 1, 2y - H + 1) is
- *   perspective   o = 0,                r = (ix, iy, -F)   (F = H cot(fov/2))
- *   orthographic  o = (su ix, sv iy, 0), r = (0, 0, -1)
- * so whether a ray hits an object is the sign of a few polynomials of
- * degree <= 2 in (ix, iy), whose coefficients render_setup computes once
- * per frame (the ray-invariant work, hoisted):
- *   sphere     b = oc.r (linear, oc = C - o), c = |oc|^2 - R^2 (inside
- *              when < 0), disc = R^2 |r|^2 - |oc x r|^2 (= b^2 - a c
- *              without its cancellation; oc x r is linear, a = |r|^2)
- *              hit = c < 0 || (b > 0 && disc >= 0)
- *   flat       N = n.(A - o), D = n.r; in front when N, D have one strict
- *              sign; a triangle or box face adds one linear edge form per
- *              side, inside when no two edges have opposite strict signs.
- *              In perspective N is one constant: a plane or triangle whose
- *              plane holds the eye (the kernels' n.(A - e) is 0) covers
- *              nothing, and N takes the sign of the kernels' n.(A - e)
- *              where the camera-space rounding disagrees
- *   box        the union of its faces that a ray can cross at t > 0:
- *              the front faces seen from outside in perspective, every
- *              non-degenerate face when the eye is on its surface (except
- *              the faces whose plane holds the eye: a ray leaves them at
- *              t = 0, so a ray that leaves the box at once misses it, as
- *              in the kernels) or the camera is orthographic (ray origins
- *              spread over a plane that may cut the box); every pixel
- *              when the eye is strictly inside
- * In the Q16.16 build the coefficients are integers (rounded once, with a
- * per-form power-of-two scale), so every value along a scanline is exact:
- * forward differencing (one 64-bit addition per linear form and pixel,
- * two 128-bit additions for a sphere's quadratic) gives exactly what
- * evaluating the polynomial from scratch gives. That is what lets the fast
- * renderer skip and step while staying byte-identical to the reference
- * loop (render_row_reference), which evaluates every object's polynomials
- * at every pixel. The float and double builds use the same set-up and
- * evaluate each polynomial directly, or, with FXRT_FLOAT_STEP, step them
- * in floating point from a direct evaluation at the start of each object's
- * row segment (that drifts; it is the baseline a float programmer writes).
- *
- * Visibility. Where two objects cover a pixel, the nearer wins; ties go to
- * the object that comes first in the scene (lower id). Depth is the ray
- * parameter t along the camera-space ray r above (the same r for every
- * object at a pixel), formed from the coverage forms themselves, never by
- * casting the pixel's ray:
- *   flat       t = N / D
- *   sphere     t = c / (b + s) outside (the near root without
- *              cancellation), s = sqrt(disc); inside, the far root
- *              (b + s) / a, or (-c) / (s - b) when b < 0
- *   box        the smallest t of its faces that cover the pixel
- * Q16.16 keeps t as n / d * 2^e with n and d the top 24 bits of the exact
- * integer numerator and denominator (s: the integer square root of the top
- * bits of disc), and compares two depths exactly by cross-multiplication
- * (24 x 24-bit products). This depth, a deterministic function of the
- * object's integer forms at the pixel, is the depth rule of both loops.
- * Each column keeps its owner and, once a second object has asked, the
- * owner's depth, so a further object costs one compare. Objects claim a
- * row's columns nearest first (render_setup sorts them by their near
- * depth bound each frame; planes first, a mesh's triangles together), so
- * a farther one mostly loses shared columns without painting them. Most
- * overlaps need no depth at all: every bounded object has a depth range
- * from its camera-space z (t = -z / F, orthographic -z) with a margin,
- * and per row each object's range is compared with each plane's range
- * over the object's columns (t = N / D is monotone along a row), which
- * decides "in front of that plane on this whole row" or hides the object
- * on the row.
- * Where a newcomer crosses a stretch of columns of one other owner, the
- * two objects' depth ranges over the stretch (flat: N / D at its ends;
- * sphere: t at its ends above, below from a bound on disc; box: its
- * faces') settle the whole stretch when they do not meet.
- * These shortcuts only skip computations whose result they already know,
- * so the image is what the per-pixel compare gives (FXRT_NO_ZRANGE turns
- * them off; the frames are byte-identical).
- *
- * What is exact: coverage (every form value, in integers); the depth
- * compare of the 24-bit depths. What is rounded: the forms' coefficients
- * (once per frame) and the 24-bit truncation of n, d and s, so two
- * surfaces closer than about 2^-22 of their distance may be ordered
- * differently from exact arithmetic (a world-space ray caster in Q16.16
- * resolves far less).
- *
- * Screen bounds: each object also gets a conservative pixel rectangle (its
- * projected bounding box plus a margin, or the whole screen when it
- * straddles the eye plane); planes span every column, and their rows stop
- * at the horizon (render_setup bisects for it once per frame, exactly:
- * render_plane_rows). Pixels no object can cover are never tested, and an
- * object whose rectangle meets no other's on a row paints its hits
- * without any bookkeeping.
- *
- * Memory: per-kind records (render_sphere_t, render_flat_t, render_face_t) in
- * arrays sized by the per-kind capacities of fxrt_config.h, plus per column
- * an owner word and an 8-byte depth.
- */
+ * Whether the ray through pixel offsets (ix, iy) hits an object is the
+ * sign of a few polynomials of degree <= 2 in (ix, iy) (a sphere's b, c
+ * and disc; a flat piece's N, D and edge forms), set up once per frame
+ * (render_vis_setup); depth is the camera-space ray parameter t formed from
+ * the same forms (flat N / D, sphere c / (b + sqrt(disc))), compared
+ * exactly in Q16.16, ties to the lower scene id. In Q16.16 the forms'
+ * coefficients are integers, so stepping along a row is exact and the fast
+ * loop is byte-identical to the reference loop (render_row_reference_vis).
+ * docs/ARCHITECTURE.md, "The visibility pass in one page", has the method;
+ * docs/RENDERER.md the details and their measurements. */
 #ifndef FXRT_RENDER_H
 #define FXRT_RENDER_H
 
@@ -134,14 +54,14 @@ typedef struct {
      !FXRT_NO_COHERENCE)
 
 /* Where division and CLZ are instructions (the M3, M4F and host), a flat
- * piece's run search starts from a quotient (core/render_row.c) and keeps
+ * piece's run search starts from a quotient (vis/flat.c) and keeps
  * no guesses; on the M0 each flat piece keeps the row before's
  * (render_flat_t's hint). */
 #define RENDER_DIV_GUESS (FX_HAVE_UDIV && FX_HAVE_CLZ)
 #define RENDER_HINTS (RENDER_COHERENT && !RENDER_DIV_GUESS)
 /* There, too, each edge form keeps where it changed sign on the row before
  * (render_estep_t), so that the next row's column is one exact step away
- * (core/render_row.c: render_split_edge). 32 bytes per edge: not on the
+ * (vis/flat.c: render_split_edge). 32 bytes per edge: not on the
  * M0, whose micro:bit has 16 KB of RAM. */
 #define RENDER_ESTEP (RENDER_COHERENT && RENDER_DIV_GUESS)
 
@@ -236,7 +156,7 @@ typedef struct {
 /* Output columns with samples > 1 (at most half the fine columns). */
 #define RENDER_OUT_COLS ((FXRT_RENDER_MAX_WIDTH + 1) / 2)
 
-/* A sphere on one row from a column x0 (core/render_row.c): the test
+/* A sphere on one row from a column x0 (vis/sphere.c): the test
  * c < 0 || (b > 0 && disc >= 0) splits by what is constant along the
  * row: in perspective c is, in orthographic b is, and c < 0 implies
  * disc > 0. v, d1, d2: the form that decides (c, when use_c, or disc) at
@@ -254,23 +174,24 @@ typedef struct {
     render_srow_t s;
     int32_t ix0, iy;
     uint16_t oi;
-    /* The last disc so computed for a sphere among others on this row
-     * (render_vis.c; loi is reset at each row): sphere loi's q(lk) and,
-     * when lstepped, its step q(lk + 1) - q(lk), so the next column's is
-     * two additions. */
-    uint16_t loi;
-    bool lstepped;
-    int32_t lk;
-    fx128_t lq, lstep;
+    /* The last disc computed for a sphere among others on this row
+     * (vis/depth.c; disc_obj is reset at each row): sphere disc_obj's
+     * disc q(disc_k) and, when disc_stepped, its step q(disc_k + 1) -
+     * q(disc_k), so the next column's is two additions. */
+    uint16_t disc_obj;
+    bool disc_stepped;
+    int32_t disc_k;
+    fx128_t disc, disc_step;
 #if RENDER_DIV_GUESS
     /* The last sphere depth range's first column (render_sphere_span:
-     * sphere poi's depth at column px, on this row; poi is reset at each
-     * row), which a stretch halved starts from again. */
-    uint16_t poi;
-    int32_t px;
-    render_depth_t pt;
+     * sphere span_obj's depth span_t at column span_x, on this row;
+     * span_obj is reset at each row), which a stretch halved starts from
+     * again. */
+    uint16_t span_obj;
+    int32_t span_x;
+    render_depth_t span_t;
 #endif
-} render_scache_t;
+} render_sphere_cache_t;
 
 /* A sphere's forms. disc = r2 a - (px^2 + py^2 + pz^2) and c: with the
  * eye at o, centre C and direction r, disc = R^2 |r|^2 - |(C - o) x r|^2
@@ -298,13 +219,16 @@ typedef struct {
     int16_t x0, x1, r0, r1;
 } render_face_t;
 
-typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_ALL } render_kind_t;
+/* What the row loop makes of an object: a sphere, one flat piece, a box
+ * seen from outside (its front faces), or a box with the eye inside (every
+ * pixel: its nearest exit face). */
+typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_INSIDE_BOX } render_kind_t;
 
 typedef struct {
     render_depth_t tlo, thi; /* first: 8-byte aligned in Q16.16, no padding before them */
     uint8_t kind;      /* render_kind_t */
     uint8_t geom;      /* geom_kind_t: which world array */
-    uint8_t nflat;     /* RENDER_FLAT: 1, RENDER_BOX and RENDER_ALL: faces */
+    uint8_t nflat;     /* RENDER_FLAT: 1, RENDER_BOX and RENDER_INSIDE_BOX: faces */
     bool ranged;       /* tlo, thi bound its depth (not for planes) */
     uint16_t index;    /* index there */
     uint16_t id;       /* scene order, for ties */
@@ -318,7 +242,7 @@ typedef struct {
     union {
         render_sphere_t *sphere; /* RENDER_SPHERE */
         render_flat_t *flat;     /* RENDER_FLAT: a plane or triangle */
-        render_face_t *face;     /* RENDER_BOX and RENDER_ALL: nflat faces */
+        render_face_t *face;     /* RENDER_BOX and RENDER_INSIDE_BOX: nflat faces */
     } u;
 } render_obj_t;
 
@@ -363,7 +287,7 @@ typedef struct {
     uint8_t row_shift;
 #endif
 #if FXRT_NUMBER == FXRT_Q16
-    render_scache_t *scache; /* during render_row_vis: on its stack (else NULL) */
+    render_sphere_cache_t *sphere_cache; /* during render_row_vis: on its stack (else NULL) */
 #endif
 #if RENDER_MESH
     /* Bit i % 8 of byte i / 8: triangle i is a back face of a closed mesh

@@ -1,15 +1,8 @@
-/* render_int: what the renderer's three parts share (private; the public
- * API is render.h):
- *   render_setup.c  per-frame set-up: each object's camera-space forms,
- *                   screen bounds and depth range (render_setup)
- *   vis/depth.c    visibility: depths from the forms, the nearest owner of
- *                   a column, depth ranges and per-row order against planes
- *   render_row.c    the scanlines: stepping, spans, painting in the pixel
- *                   format (render_row, render_row_reference)
- *   render_shade.c  the shading pass: lit pixels and keys (render_shade_row)
- *   render_sample.c supersampling: N fine rows per output row, averaged
- *                   (render_sample_row); secondary rays are core/trace.c
- */
+/* render_int: what the visibility pass's files share (private to vis/;
+ * the pass's own interface is vis/render.h): the number types of the
+ * evaluation, 128-bit steps, sphere values and depths, the per-frame
+ * set-up's entry points per kind, and the row loop's helpers. Which file
+ * does what: docs/ARCHITECTURE.md. */
 #ifndef FXRT_RENDER_INT_H
 #define FXRT_RENDER_INT_H
 
@@ -106,7 +99,7 @@ static inline bool render_ortho(const cam_t *cam) { return cam->kind == CAM_ORTH
  * guarantee it). ix and iy are pixel offsets, below 2^15 (fxrt_config.h
  * bounds FXRT_MAX_DIM): small factors for fx_umul64_small. The quadratic
  * in Horner form, c + x (fx + fxx x + fxy y) + y (fy + fyy y): five such
- * products, the same value modulo 2^64. A sphere's c and disc (rsw_t):
+ * products, the same value modulo 2^64. A sphere's c and disc (render_wide_t):
  * 128-bit in Q16.16, num otherwise. */
 #if FXRT_NUMBER == FXRT_Q16
 #if FX_HAVE_UMULL
@@ -156,10 +149,10 @@ RENDER_MAYBE_UNUSED static fx128_t render_quad_k(const fx128_t *v, const fx128_t
 {
     return fx128_add(fx128_add(*v, render_mul128_small(d1, k)), render_mul128_small(d2, k * (k - 1) / 2));
 }
-typedef fx128_t rsw_t;
-static inline bool rsw_neg(rsw_t v) { return v.hi < 0; }
+typedef fx128_t render_wide_t;
+static inline bool render_wide_neg(render_wide_t v) { return v.hi < 0; }
 
-static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
+static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, render_wide_t *c_out, render_wide_t *disc_out)
 {
     render_k_t a = rquad_at(o->u.sphere->a, ix, iy);
     render_k_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
@@ -174,12 +167,12 @@ static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t i
     else
         fx128_copy(c_out, &o->u.sphere->k);
 }
-/* A row's sphere cache (render_scache_t) with nothing in it. */
-static inline void render_scache_reset(render_scache_t *sc)
+/* A row's sphere cache (render_sphere_cache_t) with nothing in it. */
+static inline void render_sphere_cache_reset(render_sphere_cache_t *sc)
 {
-    sc->oi = sc->loi = RENDER_VIS_NONE;
+    sc->oi = sc->disc_obj = RENDER_VIS_NONE;
 #if RENDER_DIV_GUESS
-    sc->poi = RENDER_VIS_NONE;
+    sc->span_obj = RENDER_VIS_NONE;
 #endif
 }
 /* vis/depth.c: the depth n / d * 2^e from a numerator (n_hi:n_lo >= 0)
@@ -257,10 +250,10 @@ static inline render_k_t rquad_at(const render_quad_t *f, int32_t ix, int32_t iy
     num_t x = (num_t)ix, y = (num_t)iy;
     return f->c + f->x * x + f->y * y + f->xx * x * x + f->xy * x * y + f->yy * y * y;
 }
-typedef render_k_t rsw_t;
-static inline bool rsw_neg(rsw_t v) { return v < 0; }
+typedef render_k_t render_wide_t;
+static inline bool render_wide_neg(render_wide_t v) { return v < 0; }
 
-static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c_out, rsw_t *disc_out)
+static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t iy, render_wide_t *c_out, render_wide_t *disc_out)
 {
     render_k_t a = rquad_at(o->u.sphere->a, ix, iy);
     render_k_t px = rlin_at(&o->u.sphere->px, ix, iy), py = rlin_at(&o->u.sphere->py, ix, iy),
@@ -282,9 +275,9 @@ static inline int32_t render_depth_key(render_depth_t t)
 
 
 
-static inline bool render_sphere_vals(render_k_t b, rsw_t c, rsw_t disc)
+static inline bool render_sphere_vals(render_k_t b, render_wide_t c, render_wide_t disc)
 {
-    return rsw_neg(c) || (b > 0 && !rsw_neg(disc));
+    return render_wide_neg(c) || (b > 0 && !render_wide_neg(disc));
 }
 
 /* c = k + px^2 + py^2 and disc = b^2 - a c at one pixel, exactly (Q16.16:
@@ -340,11 +333,11 @@ static inline int32_t render_row_of(const cam_t *cam, int32_t iy)
 static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 {
     switch (o->kind) {
-    case RENDER_ALL:
+    case RENDER_INSIDE_BOX:
         return true;
     case RENDER_SPHERE: {
         render_k_t b = rlin_at(&o->u.sphere->b, ix, iy);
-        rsw_t c, disc;
+        render_wide_t c, disc;
         render_sphere_cd(o, ix, iy, &c, &disc);
         return render_sphere_vals(b, c, disc);
     }
@@ -363,7 +356,7 @@ static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 #define RENDER_STAMP_SHIFT 17
 #define RENDER_STAMP_LIMIT 0x8000u
 
-/* render_setup.c: (re)compute object i's forms and bounds. */
+/* vis/setup.c: (re)compute object i's forms and bounds. */
 void render_setup_object(vis_t *r, uint16_t i);
 
 
@@ -399,8 +392,8 @@ bool render_resolve_flat(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t
 /* A box, found covering the pixel by its face f, with f's N and D there. */
 bool render_resolve_box(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, const render_flat_t *f,
                         render_k_t n, render_k_t d);
-bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const rsw_t *c,
-                           const rsw_t *disc);
+bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const render_wide_t *c,
+                           const render_wide_t *disc);
 
 /* vis/depth.c (Q16.16 with steps and spans): bounds lo, hi on object oi's depth at every column p..q of
  * row iy, all of which it covers (planes, triangles, boxes, spheres with

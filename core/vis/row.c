@@ -44,12 +44,12 @@ static void render_scan_sphere(vis_t *r, uint16_t oi, const render_obj_t *o, int
         return;
     }
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
-    /* The row's forms, in r->scache (render_row_vis's): kept for
+    /* The row's forms, in r->sphere_cache (render_row_vis's): kept for
      * render_depth_at while this row lasts (a lone sphere owns no column). */
-    render_srow_t *sp = &r->scache->s;
-    r->scache->ix0 = ix0;
-    r->scache->iy = iy;
-    r->scache->oi = lone ? RENDER_VIS_NONE : oi;
+    render_srow_t *sp = &r->sphere_cache->s;
+    r->sphere_cache->ix0 = ix0;
+    r->sphere_cache->iy = iy;
+    r->sphere_cache->oi = lone ? RENDER_VIS_NONE : oi;
 #if RENDER_SROWS
     if (!lone && r->cam->height >= 3 && o->index < FXRT_COHERENT_SPHERES) /* stepped from the row before */
         *sp = *render_sphere_row_at(r, o, render_row_of(r->cam, iy));
@@ -73,7 +73,7 @@ static void render_scan_sphere(vis_t *r, uint16_t oi, const render_obj_t *o, int
         /* Perspective: its runs located exactly (from the row before's
          * where it keeps row state, else by render_sphere_runs' search),
          * then claimed like a flat piece's; a depth, where an owner needs
-         * one, comes from r->scache. */
+         * one, comes from r->sphere_cache. */
         render_iv_t run[2];
         int nrun;
         if (rows)
@@ -180,9 +180,9 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
     int32_t w = cam->width, y = cam->height - 1 - row;
     int32_t iy = 2 * y - cam->height + 1;
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
-    render_scache_t scache;
-    render_scache_reset(&scache);
-    r->scache = &scache;
+    render_sphere_cache_t sphere_cache;
+    render_sphere_cache_reset(&sphere_cache);
+    r->sphere_cache = &sphere_cache;
 #endif
     render_prow_t prow;
     for (int j = 0; j < RENDER_ROW_PLANES; j++)
@@ -213,7 +213,7 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
          * every object's columns so far on this row). */
         int32_t dlo = r->dirty_lo, dhi = r->dirty_hi;
         switch (o->kind) {
-        case RENDER_ALL:
+        case RENDER_INSIDE_BOX:
             for (int32_t x = x0; x <= x1; x++)
                 RENDER_HIT(r, i, x, iy, rgb, lone);
             break;
@@ -245,6 +245,6 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
         r->dirty_hi = x1 > dhi ? x1 : dhi;
     }
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
-    r->scache = NULL;
+    r->sphere_cache = NULL;
 #endif
 }

@@ -100,7 +100,7 @@ static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_co
             r->estep_used = (uint16_t)(r->estep_used + f->edges);
         }
 #endif
-    if (o->kind == RENDER_BOX || o->kind == RENDER_ALL)
+    if (o->kind == RENDER_BOX || o->kind == RENDER_INSIDE_BOX)
         r->box_used = (uint16_t)(r->box_used + o->nflat);
 }
 
@@ -115,7 +115,7 @@ const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam)
     r->count = 0;
     r->row_win = 0;
 #if FXRT_NUMBER == FXRT_Q16
-    r->scache = NULL;
+    r->sphere_cache = NULL;
 #endif
     r->want_keys = false;
 #if FXRT_MAX_SAMPLES > 1

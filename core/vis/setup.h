@@ -26,20 +26,20 @@ static inline rc_t rc_shl64(int64_t v, int s)
 /* Out of line (many callers), a copy in each set-up file that uses it:
  * static, so that gcc returns the 16-byte value without a copy (the M0
  * copies one with memcpy). */
-__attribute__((noinline, unused)) static rc_t rc_n(num_t a) { return rc_shl64(a, 32); }
-static inline rc_t rc_w(numw_t w) { return rc_shl64(w, 16); }
-__attribute__((noinline, unused)) static rc_t rc_nn(num_t a, num_t b) { return rc_shl64(fx_smul32(a, b), 16); }
-static inline rc_t rc_nw(num_t a, numw_t w) { return fx128_mul(a, w); }
+__attribute__((noinline, unused)) static rc_t rc_from_num(num_t a) { return rc_shl64(a, 32); }
+static inline rc_t rc_from_wide(numw_t w) { return rc_shl64(w, 16); }
+__attribute__((noinline, unused)) static rc_t rc_mul(num_t a, num_t b) { return rc_shl64(fx_smul32(a, b), 16); }
+static inline rc_t rc_mul_wide(num_t a, numw_t w) { return fx128_mul(a, w); }
 static inline rc_t rc_add(rc_t a, rc_t b) { return fx128_add(a, b); }
 static inline rc_t rc_neg(rc_t a) { return fx128_neg(a); }
 static inline rc_t rc_zero(void) { return fx128_from64(0); }
 static inline bool rc_is_neg(rc_t a) { return a.hi < 0; }
 #else
 typedef num_t rc_t;
-static inline rc_t rc_n(num_t a) { return a; }
-static inline rc_t rc_w(numw_t w) { return w; }
-static inline rc_t rc_nn(num_t a, num_t b) { return a * b; }
-static inline rc_t rc_nw(num_t a, numw_t w) { return a * w; }
+static inline rc_t rc_from_num(num_t a) { return a; }
+static inline rc_t rc_from_wide(numw_t w) { return w; }
+static inline rc_t rc_mul(num_t a, num_t b) { return a * b; }
+static inline rc_t rc_mul_wide(num_t a, numw_t w) { return a * w; }
 static inline rc_t rc_add(rc_t a, rc_t b) { return a + b; }
 static inline rc_t rc_neg(rc_t a) { return -a; }
 static inline rc_t rc_zero(void) { return NUM_ZERO; }
@@ -72,9 +72,9 @@ static inline int rk_shift(int need, int target)
     need += 3;
     return need > target ? need - target : 0;
 }
-static inline render_k_t rk_of(const rc_t *c, int k) { return fx128_shr_round(*c, k); }
+static inline render_k_t rk_round(const rc_t *c, int k) { return fx128_shr_round(*c, k); }
 #else
-static inline render_k_t rk_of(const rc_t *c, int k) { (void)k; return *c; }
+static inline render_k_t rk_round(const rc_t *c, int k) { (void)k; return *c; }
 #endif
 
 /* The coefficients by pointer, the result into *r: on the M0 a 16-byte

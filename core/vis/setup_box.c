@@ -81,7 +81,7 @@ void render_setup_box(vis_t *r, rext_t ext, const geom_box_t *b, render_obj_t *o
     if (inside) {
         /* Every ray covers the box; its faces (all of them, from inside)
          * give the depth of the exit point. */
-        o->kind = RENDER_ALL;
+        o->kind = RENDER_INSIDE_BOX;
         render_set_full(cam, o);
         return;
     }

@@ -7,9 +7,9 @@
  * value passed or returned by value is copied with memcpy. */
 void rlin_scaled(render_lin_t *r, const rclin_t *f, int k)
 {
-    r->c = rk_of(&f->c, k);
-    r->x = rk_of(&f->x, k);
-    r->y = rk_of(&f->y, k);
+    r->c = rk_round(&f->c, k);
+    r->x = rk_round(&f->x, k);
+    r->y = rk_round(&f->y, k);
 }
 
 int rlin_need(const rclin_t *f, rext_t ext, int target)
@@ -41,10 +41,10 @@ void render_flat_nd(const cam_t *cam, rext_t ext, vec3_t n, vec3_t a, render_fla
 {
     bool ortho = render_ortho(cam);
     num_t focal = ortho ? NUM_ONE : cam->focal;
-    rclin_t nf = {rc_add(rc_add(rc_nn(n.x, a.x), rc_nn(n.y, a.y)), rc_nn(n.z, a.z)),
-                  ortho ? rc_nw(num_neg(n.x), cam->step_u) : rc_zero(),
-                  ortho ? rc_nw(num_neg(n.y), cam->step_v) : rc_zero()};
-    rclin_t df = {rc_nn(n.z, num_neg(focal)), ortho ? rc_zero() : rc_n(n.x), ortho ? rc_zero() : rc_n(n.y)};
+    rclin_t nf = {rc_add(rc_add(rc_mul(n.x, a.x), rc_mul(n.y, a.y)), rc_mul(n.z, a.z)),
+                  ortho ? rc_mul_wide(num_neg(n.x), cam->step_u) : rc_zero(),
+                  ortho ? rc_mul_wide(num_neg(n.y), cam->step_v) : rc_zero()};
+    rclin_t df = {rc_mul(n.z, num_neg(focal)), ortho ? rc_zero() : rc_from_num(n.x), ortho ? rc_zero() : rc_from_num(n.y)};
     int kn = rlin_need(&nf, ext, RENDER_LIN_BITS), kd = rlin_need(&df, ext, RENDER_LIN_BITS);
     rlin_scaled(&f->n, &nf, kn);
     rlin_scaled(&f->d, &df, kd);
@@ -101,13 +101,13 @@ void render_edge(render_lin_t *e, const cam_t *cam, rext_t ext, vec3_t p, vec3_t
     numw_t gy = numw_sub(numw_mul(p.z, q.x), numw_mul(p.x, q.z));
     numw_t gz = numw_sub(numw_mul(p.x, q.y), numw_mul(p.y, q.x));
     rclin_t f;
-    f.c = rc_nw(num_neg(focal), gz);
+    f.c = rc_mul_wide(num_neg(focal), gz);
     if (ortho) {
-        f.x = rc_nw(num_sub(q.y, p.y), cam->step_u);
-        f.y = rc_nw(num_sub(p.x, q.x), cam->step_v);
+        f.x = rc_mul_wide(num_sub(q.y, p.y), cam->step_u);
+        f.y = rc_mul_wide(num_sub(p.x, q.x), cam->step_v);
     } else {
-        f.x = rc_w(gx);
-        f.y = rc_w(gy);
+        f.x = rc_from_wide(gx);
+        f.y = rc_from_wide(gy);
     }
     if (swap) {
         f.c = rc_neg(f.c);

@@ -9,12 +9,12 @@
 #if FXRT_MAX_SPHERES > 0
 static void rquad_scaled(render_quad_t *r, const rcquad_t *f, int k)
 {
-    r->c = rk_of(&f->c, k);
-    r->x = rk_of(&f->x, k);
-    r->y = rk_of(&f->y, k);
-    r->xx = rk_of(&f->xx, k);
-    r->xy = rk_of(&f->xy, k);
-    r->yy = rk_of(&f->yy, k);
+    r->c = rk_round(&f->c, k);
+    r->x = rk_round(&f->x, k);
+    r->y = rk_round(&f->y, k);
+    r->xx = rk_round(&f->xx, k);
+    r->xy = rk_round(&f->xy, k);
+    r->yy = rk_round(&f->yy, k);
 }
 
 #if FXRT_NUMBER == FXRT_Q16
@@ -32,7 +32,7 @@ __attribute__((noinline)) static void render_sphere_scale(vis_t *r, rext_t ext, 
     bool ortho = sp->ortho;
     /* Scales: the p pieces share kp, so disc is in units of 2^(2 kp - 96)
      * and r2 is R^2 a brought to those units; b only matters by its sign. */
-    rclin_t radl = {rc_n(rad), rc_zero(), rc_zero()};
+    rclin_t radl = {rc_from_num(rad), rc_zero(), rc_zero()};
     int kp = rlin_need(px, ext, RENDER_SPHERE_BITS), n;
     n = rlin_need(b, ext, RENDER_SPHERE_BITS); /* b + sqrt(disc) is formed for depth */
     kp = kp > n ? kp : n;
@@ -127,8 +127,8 @@ void render_setup_sphere(vis_t *r, rext_t ext, const geom_sphere_t *s, render_ob
     const cam_t *cam = r->cam;
     vec3_t c = render_to_cam(cam, s->center);
     num_t rad = s->radius;
-    rc_t r2 = rc_w(s->radius2);
-    rc_t cc = rc_sub(rc_add(rc_add(rc_nn(c.x, c.x), rc_nn(c.y, c.y)), rc_nn(c.z, c.z)), r2);
+    rc_t r2 = rc_from_wide(s->radius2);
+    rc_t cc = rc_sub(rc_add(rc_add(rc_mul(c.x, c.x), rc_mul(c.y, c.y)), rc_mul(c.z, c.z)), r2);
     static const rclin_t zero; /* all coefficients 0 (static: no stack copy) */
     static const rcquad_t zero_q;
     rclin_t b = zero, px = zero, py = zero, pz = zero;
@@ -142,29 +142,29 @@ void render_setup_sphere(vis_t *r, rext_t ext, const geom_sphere_t *s, render_ob
         /* o = (su ix, sv iy, 0), r = (0, 0, -1): b = -cz, a = 1, the ray's
          * offset from the centre is (cx - su ix, cy - sv iy), so
          * disc = R^2 - px^2 - py^2 and c = cz^2 - R^2 + px^2 + py^2. */
-        b.c = rc_n(num_neg(c.z));
-        a.c = rc_n(NUM_ONE);
-        px.c = rc_n(c.x);
-        px.x = rc_neg(rc_w(cam->step_u));
-        py.c = rc_n(c.y);
-        py.y = rc_neg(rc_w(cam->step_v));
-        k = rc_sub(rc_nn(c.z, c.z), r2);
+        b.c = rc_from_num(num_neg(c.z));
+        a.c = rc_from_num(NUM_ONE);
+        px.c = rc_from_num(c.x);
+        px.x = rc_neg(rc_from_wide(cam->step_u));
+        py.c = rc_from_num(c.y);
+        py.y = rc_neg(rc_from_wide(cam->step_v));
+        k = rc_sub(rc_mul(c.z, c.z), r2);
     } else {
         /* o = 0, r = (ix, iy, -F): b = C.r, a = |r|^2, p = C x r =
          * (-cy F - cz iy, cz ix + cx F, cx iy - cy ix), c = |C|^2 - R^2. */
         num_t f = cam->focal;
-        b.c = rc_nn(c.z, num_neg(f));
-        b.x = rc_n(c.x);
-        b.y = rc_n(c.y);
-        px.c = rc_nn(c.y, num_neg(f));
-        px.y = rc_n(num_neg(c.z));
-        py.c = rc_nn(c.x, f);
-        py.x = rc_n(c.z);
-        pz.x = rc_n(num_neg(c.y));
-        pz.y = rc_n(c.x);
-        a.c = rc_nn(f, f);
-        a.xx = rc_n(NUM_ONE);
-        a.yy = rc_n(NUM_ONE);
+        b.c = rc_mul(c.z, num_neg(f));
+        b.x = rc_from_num(c.x);
+        b.y = rc_from_num(c.y);
+        px.c = rc_mul(c.y, num_neg(f));
+        px.y = rc_from_num(num_neg(c.z));
+        py.c = rc_mul(c.x, f);
+        py.x = rc_from_num(c.z);
+        pz.x = rc_from_num(num_neg(c.y));
+        pz.y = rc_from_num(c.x);
+        a.c = rc_mul(f, f);
+        a.xx = rc_from_num(NUM_ONE);
+        a.yy = rc_from_num(NUM_ONE);
         k = cc;
     }
 #if FXRT_NUMBER == FXRT_Q16

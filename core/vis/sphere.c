@@ -49,8 +49,8 @@ RENDER_MAYBE_UNUSED static render_iv_t render_sphere_run(fx128_t v, fx128_t d1, 
 
 /* render_sphere_cd out of line: render_sphere_row's three calls share it
  * (inline, its temporaries would grow render_sphere_row's frame). */
-__attribute__((noinline)) static void render_sphere_cd_row(const render_obj_t *o, int32_t ix, int32_t iy, rsw_t *c,
-                                                           rsw_t *disc)
+__attribute__((noinline)) static void render_sphere_cd_row(const render_obj_t *o, int32_t ix, int32_t iy, render_wide_t *c,
+                                                           render_wide_t *disc)
 {
     render_sphere_cd(o, ix, iy, c, disc);
 }
@@ -66,7 +66,7 @@ __attribute__((noinline)) void render_sphere_row(const vis_t *r, const render_ob
     for (int k = 0; k < 3; k++)
         render_sphere_cd_row(o, ix0 + 2 * k, iy, &c[k], &q[k]);
     s->ortho = render_ortho(r->cam);
-    s->inside = !s->ortho && rsw_neg(c[0]);
+    s->inside = !s->ortho && render_wide_neg(c[0]);
     s->use_c = s->ortho && !(o->u.sphere->b.c > 0);
     const fx128_t *f = s->use_c ? c : q;
     s->v = f[0];
