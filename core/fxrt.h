@@ -29,8 +29,9 @@
  * same FXRT_NUMBER, FXRT_MAX_<KIND>, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH,
  * FXRT_MAX_SAMPLES, FXRT_ADAPTIVE, FXRT_RENDER_MAX_WIDTH and FXRT_PIXEL
  * (they size fxrt_world_t and fxrt_render_t). fxrt_world_init refers to a
- * symbol whose name spells the application's configuration, e.g.
- *   undefined reference to `fxrt_config_n1_p0_s8_t0_b0_w64_px1_l0_d0_x1a0'
+ * symbol whose name spells the application's configuration, and one per
+ * kind for its capacity, e.g.
+ *   undefined reference to `fxrt_capacity_spheres_8'
  * so a mismatch fails at link time, and should it link anyway,
  * fxrt_world_init returns FXRT_ERR_CONFIG. The macros must be plain
  * decimal integers for the name to form. */
@@ -87,23 +88,32 @@ static inline fxrt_num_t fxrt_mul(fxrt_num_t a, fxrt_num_t b) { return num_mul(a
 static inline fxrt_num_t fxrt_from_int(int32_t i) { return num_from_int(i); }
 
 /* --- configuration check ------------------------------------------------ */
-#define FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l, d, x, ad)                                                    \
-    fxrt_config_n##n##_p##p##_s##s##_t##t##_b##b##_w##w##_px##px##_l##l##_d##d##_x##x##a##ad
-#define FXRT_CONFIG_CAT(n, p, s, t, b, w, px, l, d, x, ad) FXRT_CONFIG_CAT_(n, p, s, t, b, w, px, l, d, x, ad)
-/* The configuration as a link-time name, e.g.
- * fxrt_config_n1_p64_s64_t64_b64_w4096_px1_l8_d16_x16a1 (l: FXRT_MAX_LIGHTS, d: FXRT_MAX_DEPTH,
- * x: FXRT_MAX_SAMPLES, a: FXRT_ADAPTIVE). */
+#define FXRT_CONFIG_CAT_(n, w, px, l, d, x, ad) fxrt_config_n##n##_w##w##_px##px##_l##l##_d##d##_x##x##a##ad
+#define FXRT_CONFIG_CAT(n, w, px, l, d, x, ad) FXRT_CONFIG_CAT_(n, w, px, l, d, x, ad)
+/* The configuration as link-time names: one for the number type and the
+ * options, e.g. fxrt_config_n1_w4096_px1_l8_d16_x16a1 (n: FXRT_NUMBER, w:
+ * FXRT_RENDER_MAX_WIDTH, px: FXRT_PIXEL, l: FXRT_MAX_LIGHTS, d:
+ * FXRT_MAX_DEPTH, x: FXRT_MAX_SAMPLES, a: FXRT_ADAPTIVE), and one per kind
+ * for its capacity, e.g. fxrt_capacity_spheres_64 (from the kinds table). */
 #define FXRT_CONFIG_SYMBOL                                                                                    \
-    FXRT_CONFIG_CAT(FXRT_NUMBER, FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES, FXRT_MAX_BOXES,       \
-                    FXRT_RENDER_MAX_WIDTH, FXRT_PIXEL, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES,    \
-                    FXRT_ADAPTIVE)
-/* Defined once, in core/fxrt.c, for the configuration the core is built with. */
+    FXRT_CONFIG_CAT(FXRT_NUMBER, FXRT_RENDER_MAX_WIDTH, FXRT_PIXEL, FXRT_MAX_LIGHTS, FXRT_MAX_DEPTH,           \
+                    FXRT_MAX_SAMPLES, FXRT_ADAPTIVE)
+#define FXRT_CAPACITY_CAT_(ks, cap) fxrt_capacity_##ks##_##cap
+#define FXRT_CAPACITY_CAT(ks, cap) FXRT_CAPACITY_CAT_(ks, cap)
+#define FXRT_CAPACITY_SYMBOL(ks, cap) FXRT_CAPACITY_CAT(ks, cap)
+/* Defined once, in core/frame/api.c, for the configuration the core is
+ * built with. */
 extern const uint32_t FXRT_CONFIG_SYMBOL;
+#define FXRT_CAPACITY_DECLARE(K, k, ks, cap, ...) extern const uint32_t FXRT_CAPACITY_SYMBOL(ks, cap);
+FXRT_KINDS(FXRT_CAPACITY_DECLARE)
+#undef FXRT_CAPACITY_DECLARE
+#define FXRT_CAPACITY_ADDRESS(K, k, ks, cap, ...) &FXRT_CAPACITY_SYMBOL(ks, cap),
 
 /* The checked entry points behind the inline wrappers below: they compare
- * the sizes and configuration the application saw with the core's. */
+ * the sizes and configuration the application saw with the core's
+ * (capacities: one address per kind, in the table's order). */
 fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t world_size, uint32_t render_size,
-                                   const uint32_t *config);
+                                   const uint32_t *config, const uint32_t *const *capacities);
 fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t *cam, uint32_t render_size);
 
 /* --- world ---------------------------------------------------------------- */
@@ -114,8 +124,9 @@ fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t 
  * first). */
 static inline fxrt_err_t fxrt_world_init(fxrt_world_t *w, fxrt_color_t background)
 {
+    static const uint32_t *const capacities[] = {FXRT_KINDS(FXRT_CAPACITY_ADDRESS)};
     return fxrt_world_init_checked(w, background, (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t),
-                                   &FXRT_CONFIG_SYMBOL);
+                                   &FXRT_CONFIG_SYMBOL, capacities);
 }
 
 /* One object as data (the scene compiler emits tables of them): .kind

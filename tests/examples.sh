@@ -78,11 +78,12 @@ if $CC -o "$mm/orbit" "$mm/orbit.o" "$mm/io_host.o" $core 2>"$mm/link.log"; then
 else
     ok
 fi
-sed 's/^/  link: /' "$mm/link.log" | grep -m2 fxrt_config
-check "the link error names the application's configuration (fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8_d0_x1a0)" \
-    grep -q "fxrt_config_n1_p1_s8_t1_b1_w64_px1_l8_d0_x1a0" "$mm/link.log"
-check "the core defines its own (fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8_d0_x1a0)" \
-    bash -c "nm '$BUILD/examples/host/core/frame/api.o' | grep -q ' R fxrt_config_n1_p1_s2_t1_b1_w64_px1_l8_d0_x1a0$'"
+sed 's/^/  link: /' "$mm/link.log" | grep -m2 fxrt_capacity
+check "the link error names the application's sphere capacity (fxrt_capacity_spheres_8)" \
+    grep -q "fxrt_capacity_spheres_8" "$mm/link.log"
+check "the core defines its own (fxrt_capacity_spheres_2, fxrt_config_n1_w64_px1_l8_d0_x1a0)" \
+    bash -c "nm '$BUILD/examples/host/core/frame/api.o' | grep -q ' R fxrt_capacity_spheres_2$' &&
+             nm '$BUILD/examples/host/core/frame/api.o' | grep -q ' R fxrt_config_n1_w64_px1_l8_d0_x1a0$'"
 # And the matching build links (the check above is not a link that always fails).
 $CC -std=c11 -O2 $(sed 's/SPHERES=8/SPHERES=2/' <<<"$CFG_APP") -Icore -c examples/orbit.c -o "$mm/orbit-ok.o"
 check "the same files with matching macros link" $CC -o "$mm/orbit-ok" "$mm/orbit-ok.o" "$mm/io_host.o" $core

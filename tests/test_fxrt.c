@@ -184,15 +184,25 @@ static void test_render_and_config(void)
 
     /* The first-call check, for a program that links with the wrong layout
      * anyway: sizes and the configuration symbol must be the core's. */
+    static const uint32_t *const caps[] = {FXRT_KINDS(FXRT_CAPACITY_ADDRESS)};
     CHECK(fxrt_world_init_checked(&world, C(0, 0, 0), (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t),
-                                  &FXRT_CONFIG_SYMBOL) == FXRT_OK);
+                                  &FXRT_CONFIG_SYMBOL, caps) == FXRT_OK);
     static const uint32_t other = 1;
+    /* Another capacity for the last kind: its address is not the core's. */
+    const uint32_t *wrong[GEOM_KINDS];
+    for (int k = 0; k < GEOM_KINDS; k++)
+        wrong[k] = caps[k];
+    wrong[GEOM_KINDS - 1] = &other;
+    CHECK(fxrt_world_init_checked(&world, C(0, 0, 0), (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t),
+                                  &FXRT_CONFIG_SYMBOL, wrong) == FXRT_ERR_CONFIG);
+    CHECK(fxrt_world_init_checked(&world, C(0, 0, 0), (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t),
+                                  &FXRT_CONFIG_SYMBOL, NULL) == FXRT_ERR_CONFIG);
     CHECK(fxrt_world_init_checked(&world, C(0, 0, 0), (uint32_t)sizeof(world_t) - 8, (uint32_t)sizeof(render_t),
-                                  &FXRT_CONFIG_SYMBOL) == FXRT_ERR_CONFIG);
+                                  &FXRT_CONFIG_SYMBOL, caps) == FXRT_ERR_CONFIG);
     CHECK(fxrt_world_init_checked(&world, C(0, 0, 0), (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t) + 4,
-                                  &FXRT_CONFIG_SYMBOL) == FXRT_ERR_CONFIG);
-    CHECK(fxrt_world_init_checked(&world, C(0, 0, 0), (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t), &other) ==
-          FXRT_ERR_CONFIG);
+                                  &FXRT_CONFIG_SYMBOL, caps) == FXRT_ERR_CONFIG);
+    CHECK(fxrt_world_init_checked(&world, C(0, 0, 0), (uint32_t)sizeof(world_t), (uint32_t)sizeof(render_t), &other,
+                                  caps) == FXRT_ERR_CONFIG);
     CHECK(fxrt_render_setup_checked(&rs, &world, &cam, (uint32_t)sizeof(render_t) / 2) == FXRT_ERR_CONFIG);
     CHECK(strstr(fxrt_strerror(FXRT_ERR_CONFIG), "configuration") != NULL);
 }

@@ -1,17 +1,22 @@
 /* fxrt: the public API's checked entry points (see fxrt.h). */
 #include "fxrt.h"
 
-/* The configuration this core is built with, as a link-time name that
- * fxrt_world_init (inline, compiled in the application) refers to. The
- * value is unused; the name is the check. */
+/* The configuration this core is built with, as link-time names that
+ * fxrt_world_init (inline, compiled in the application) refers to: the
+ * options, and each kind's capacity. The values are the capacities; the
+ * names are the check. */
 const uint32_t FXRT_CONFIG_SYMBOL = 1;
+#define FXRT_CAPACITY_DEFINE(K, k, ks, cap, ...) const uint32_t FXRT_CAPACITY_SYMBOL(ks, cap) = cap;
+FXRT_KINDS(FXRT_CAPACITY_DEFINE)
+#define FXRT_CAPACITY_SAME(K, k, ks, cap, ...) &&capacities[GEOM_##K] == &FXRT_CAPACITY_SYMBOL(ks, cap)
 
 fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t world_size, uint32_t render_size,
-                                   const uint32_t *config)
+                                   const uint32_t *config, const uint32_t *const *capacities)
 {
     if (w == NULL)
         return FXRT_ERR_NULL;
-    if (world_size != sizeof(world_t) || render_size != sizeof(render_t) || config != &FXRT_CONFIG_SYMBOL)
+    if (world_size != sizeof(world_t) || render_size != sizeof(render_t) || config != &FXRT_CONFIG_SYMBOL ||
+        capacities == NULL || !(true FXRT_KINDS(FXRT_CAPACITY_SAME)))
         return FXRT_ERR_CONFIG;
     fxrt_err_t e = geom_check_color(background);
     if (e != FXRT_OK)
