@@ -189,23 +189,13 @@ const char *fxrt_render_error(const render_t *r)
     return r == NULL ? NULL : r->error;
 }
 
-/* The output camera: the set-up one, or the sampler's output camera. */
-static const cam_t *fxrt_out_cam(const render_t *r)
-{
-#if FXRT_MAX_SAMPLES > 1
-    if (render_sampled(r))
-        return r->sample.out_cam;
-#endif
-    return r->vis.cam;
-}
-
 fxrt_err_t fxrt_render_row(render_t *r, int32_t row, uint8_t *out, size_t out_bytes)
 {
     if (r == NULL || out == NULL)
         return FXRT_ERR_NULL;
     if (r->vis.world == NULL || r->error != NULL)
         return FXRT_ERR_SETUP;
-    const cam_t *cam = fxrt_out_cam(r);
+    const cam_t *cam = RENDER_OUT_CAM(r);
     if (cam->width != r->out_width || cam->height != r->out_height)
         return FXRT_ERR_SETUP; /* the view changed since the set-up */
     if (row < 0 || row >= cam->height)

@@ -51,6 +51,13 @@ typedef struct {
     bool need[RENDER_OUT_COLS];
 #endif
 } render_sample_t;
+/* Are output rows sampled (render_sampled, below)? The output image's
+ * camera (with samples, vis.cam is the fine one). */
+#define RENDER_SAMPLED(r) ((r)->sample.samples > 1)
+#define RENDER_OUT_CAM(r) (RENDER_SAMPLED(r) ? (r)->sample.out_cam : (r)->vis.cam)
+#else
+#define RENDER_SAMPLED(r) ((void)(r), false)
+#define RENDER_OUT_CAM(r) ((r)->vis.cam)
 #endif
 
 #if FXRT_MAX_LIGHTS > 0
@@ -64,6 +71,10 @@ typedef struct {
     shadow_cull_t cull[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
 #endif
 } render_shade_t;
+/* Object oi's shading constants (NULL without lighting). */
+#define RENDER_SHADE_K(r, oi) (&(r)->shade.k[oi])
+#else
+#define RENDER_SHADE_K(r, oi) ((void)(oi), (const shade_k_t *)NULL)
 #endif
 
 typedef struct {
@@ -140,12 +151,7 @@ void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference);
 /* Are output rows sampled (samples > 1)? */
 static inline bool render_sampled(const render_t *r)
 {
-#if FXRT_MAX_SAMPLES > 1
-    return r->sample.samples > 1;
-#else
-    (void)r;
-    return false;
-#endif
+    return RENDER_SAMPLED(r);
 }
 
 /* The obj index of the world's object (kind, index): a search, as obj is

@@ -79,15 +79,11 @@ static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t 
     if (oi == RENDER_VIS_NONE)
         return r->vis.world->background;
     const render_obj_t *o = &r->vis.obj[oi];
-#if FXRT_MAX_LIGHTS > 0
-    if (!o->flat) {
+    if (FXRT_MAX_LIGHTS > 0 && !o->flat) {
         ray_t ray;
         cam_ray(r->vis.cam, X, y, &ray);
-        return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, &r->shade.k[oi], NULL);
+        return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, RENDER_SHADE_K(r, oi), NULL);
     }
-#else
-    (void)X, (void)y;
-#endif
     return world_common(r->vis.world, (geom_kind_t)o->geom, o->index)->color;
 }
 
@@ -190,13 +186,14 @@ static void render_adaptive_row(render_t *r, int32_t row)
         rgb8_t c = w->background_rgb;
         if (world_hit(w, &ray, &hit)) {
             uint8_t mask = 0;
-#if FXRT_MAX_LIGHTS > 0
-            uint16_t oi = render_obj_of(&r->vis, hit.kind, hit.index);
-            bool lit = hit.obj->mat.kind != MATERIAL_FLAT;
-            c = color_to_rgb8(shade_object_k(w, hit.kind, hit.index, &ray, lit ? &r->shade.k[oi] : NULL, &mask));
-#else
-            c = hit.obj->rgb;
-#endif
+            if (FXRT_MAX_LIGHTS > 0) {
+                uint16_t oi = render_obj_of(&r->vis, hit.kind, hit.index);
+                bool lit = geom_lit(hit.obj);
+                c = color_to_rgb8(
+                    shade_object_k(w, hit.kind, hit.index, &ray, lit ? RENDER_SHADE_K(r, oi) : NULL, &mask));
+            } else {
+                c = hit.obj->rgb;
+            }
             key = render_key(hit.obj->id, mask);
         }
         r->sample.coarse_keys[s][x] = key;

@@ -250,6 +250,11 @@ typedef struct {
     const world_t *world;
     const cam_t *cam;
     uint16_t count;
+    /* The world's samples are more than 1: rows are the sampler's fine
+     * rows, whose pixels it reads from painted[], not from the row (false
+     * with FXRT_MAX_SAMPLES 1; the byte sits in count's padding, so it
+     * costs no RAM in any build). */
+    bool sampled;
     render_obj_t obj[FXRT_RENDER_MAX_OBJECTS];
     /* The records, by form (scene/kinds.h), sized by the capacities of the
      * kinds of each form; *_used: how many this frame's objects took. */
@@ -321,11 +326,6 @@ typedef struct {
     /* Set by the frame (frame/render.h): a key is wanted for every pixel
      * of the row, so vis[] is recorded whatever track says. */
     bool want_keys;
-#if FXRT_MAX_SAMPLES > 1
-    /* The world's samples are more than 1: rows are the sampler's fine
-     * rows, whose pixels it reads from painted[], not from the row. */
-    bool sampled;
-#endif
     int16_t dirty_lo, dirty_hi; /* this row: columns outside have no owner yet */
 } vis_t;
 

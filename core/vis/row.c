@@ -16,10 +16,8 @@ void render_begin_row(vis_t *r, uint8_t *rgb)
             r->owner[x] = 0;
         r->stamp = 1;
     }
-#if FXRT_MAX_SAMPLES > 1
-    if (r->sampled)
+    if (FXRT_MAX_SAMPLES > 1 && r->sampled)
         return; /* the sampling pass reads vis, not the painted scratch row */
-#endif
     render_fill_rgb(rgb, 0, r->cam->width - 1, r->world->background_rgb);
 }
 

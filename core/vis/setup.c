@@ -118,9 +118,8 @@ const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam)
     r->sphere_cache = NULL;
 #endif
     r->want_keys = false;
-#if FXRT_MAX_SAMPLES > 1
-    r->sampled = world_samples(w) > 1;
-#endif
+    if (FXRT_MAX_SAMPLES > 1) /* (read only then) */
+        r->sampled = world_samples(w) > 1;
 #if RENDER_VIS
     r->track = world_samples(w) > 1;
 #if FXRT_MAX_LIGHTS > 0
