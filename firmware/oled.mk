@@ -8,6 +8,7 @@
 #                  run it with a screendump after every frame: DIR/P-FF.ppm
 #   make oled-host (same variables) OLED_OUT=DIR
 #                  the same program on the host: DIR/frame-FF.ppm (RGB)
+#   make test-oled tests/oled.sh and the dithering unit test
 # Everything under build/oled/ (build/fxrt-oled: the host tool).
 
 OLED_SRC_DIR := firmware/oled
@@ -27,6 +28,13 @@ $(OLED_TOOL): $(OLED_BUILD)/host/oled_tool.o $(OLED_BUILD)/host/dither.o $(BUILD
 
 test_oled_dither_DEPS := $(OLED_BUILD)/host/dither.o
 $(BUILD)/tests/test_oled_dither.o: CFLAGS_H += -I$(OLED_SRC_DIR)
+# Its ASan+UBSan twin, which tests/sanitize.sh runs (tests/sanitize.mk).
+$(SAN_DIR)/oled/host/%.o: $(OLED_SRC_DIR)/%.c
+	@mkdir -p $(@D)
+	@echo "  CC san  $<"
+	$(Q)$(SAN_CC) $(SAN_CFLAGS) -I$(OLED_SRC_DIR) -c $< -o $@
+$(SAN_DIR)/tests/test_oled_dither.o: SAN_CFLAGS += -I$(OLED_SRC_DIR)
+SAN_EXTRA_BIN += $(SAN_DIR)/tests/test_oled_dither
 
 # --- firmware and its host twin, one directory per configuration ----------
 OLED_SCENE  ?= scenes/abb6-sphere.scene
@@ -95,9 +103,13 @@ oled-host: oled-check $(OLED_HOST)
 	@mkdir -p $(OLED_OUT)
 	$(Q)$(OLED_HOST) $(OLED_OUT)
 
-# The suites; the hook line below puts them into make test.
-OLED_SUITES := $(BUILD)/tests/test_oled_dither
+# The suites (tests/run.sh runs tests/oled.sh in its second lane: it
+# builds only under build/oled/ and build/fw/lm3s6965evb/, which no other
+# suite uses). The hook: this one line puts them into make test.
+OLED_SUITES := $(BUILD)/tests/test_oled_dither tests/oled.sh
 SUITES_EXTRA += $(OLED_SUITES)
 TEST_PREREQ  += $(OLED_TOOL) $(BUILD)/tests/test_oled_dither
+test-oled: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(OLED_TOOL) $(BUILD)/tests/test_oled_dither
+	$(Q)BUILD=$(BUILD) tests/run.sh $(OLED_SUITES)
 
-.PHONY: oled-check oled-fw oled-qemu oled-host
+.PHONY: oled-check oled-fw oled-qemu oled-host test-oled
