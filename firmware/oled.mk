@@ -1,5 +1,5 @@
 # The LM3S6965 evaluation board's OLED (SSD0323, 128x64, 16 greys) in QEMU
-# (firmware/oled/). Included by the top Makefile.
+# (firmware/oled/, docs/OLED.md). Included by the top Makefile.
 #   make oled-fw   OLED_SCENE=S [OLED_FRAMES=N OLED_TURN=DEG OLED_METHOD=M]
 #                  the OLED firmware for scene S at 128x64 (frames, degrees
 #                  the camera turns a frame, dithering: none bayer4 bayer8 fs,
@@ -8,6 +8,10 @@
 #                  run it with a screendump after every frame: DIR/P-FF.ppm
 #   make oled-host (same variables) OLED_OUT=DIR
 #                  the same program on the host: DIR/frame-FF.ppm (RGB)
+#   make oled-demo the seed sphere and a lit scene on the display, and a
+#                  turntable: build/demo/oled-*.png (firmware/oled/oled-demo.sh)
+#   make oled-table  each dithering method's error (firmware/oled/oled-table.sh)
+#                  OLED_UPDATE_DOCS=1 (for both): rewrite docs/OLED.md's blocks
 #   make test-oled tests/oled.sh and the dithering unit test
 # Everything under build/oled/ (build/fxrt-oled: the host tool).
 
@@ -103,6 +107,11 @@ oled-host: oled-check $(OLED_HOST)
 	@mkdir -p $(OLED_OUT)
 	$(Q)$(OLED_HOST) $(OLED_OUT)
 
+oled-demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(OLED_TOOL)
+	$(Q)BUILD=$(BUILD) OLED_UPDATE_DOCS=$(OLED_UPDATE_DOCS) firmware/oled/oled-demo.sh
+oled-table: $(BUILD)/fxrt $(OLED_TOOL)
+	$(Q)BUILD=$(BUILD) OLED_UPDATE_DOCS=$(OLED_UPDATE_DOCS) firmware/oled/oled-table.sh
+
 # The suites (tests/run.sh runs tests/oled.sh in its second lane: it
 # builds only under build/oled/ and build/fw/lm3s6965evb/, which no other
 # suite uses). The hook: this one line puts them into make test.
@@ -112,4 +121,4 @@ TEST_PREREQ  += $(OLED_TOOL) $(BUILD)/tests/test_oled_dither
 test-oled: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(OLED_TOOL) $(BUILD)/tests/test_oled_dither
 	$(Q)BUILD=$(BUILD) tests/run.sh $(OLED_SUITES)
 
-.PHONY: oled-check oled-fw oled-qemu oled-host test-oled
+.PHONY: oled-check oled-fw oled-qemu oled-host oled-demo oled-table test-oled

@@ -15,6 +15,8 @@
  *       block, M = 4 in QEMU 7.2's hw/display/ssd0323.c) back to levels:
  *       every block must be one colour, a grey n * 17 (else exit 2 naming
  *       the first bad block). OUT as for grey.
+ *   fxrt-oled magnify IN -o OUT.png|OUT.ppm --scale N
+ *       IN with each pixel an N x N block (for sheets beside screendumps).
  *   fxrt-oled measure [--markdown] SET=IMAGE...
  *       each method's error against the ideal grey, in 8-bit grey units
  *       (display level n is 17 n, the ideal Y / 256): mean absolute error
@@ -150,7 +152,7 @@ static int positive(const char *opt, const char *s)
     return (int)v;
 }
 
-/* grey, ideal, unscale: IN -o OUT and options. */
+/* grey, ideal, unscale, magnify: IN -o OUT and options. */
 static int cmd_convert(const char *cmd, int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
@@ -176,6 +178,21 @@ static int cmd_convert(const char *cmd, int argc, char **argv)
     image_t img;
     read_image(in, &img);
     levels_t lv = {0, 0, NULL};
+    if (!strcmp(cmd, "magnify")) {
+        char err[ERRLEN];
+        image_t big;
+        if (image_alloc(&big, img.width * scale, img.height * scale, err, sizeof err) != 0)
+            die("%s", err);
+        for (int y = 0; y < big.height; y++)
+            for (int x = 0; x < big.width; x++)
+                memcpy(&big.rgb[3 * ((size_t)y * big.width + x)],
+                       &img.rgb[3 * ((size_t)(y / scale) * img.width + x / scale)], 3);
+        if (image_write(out, &big, err, sizeof err) != 0)
+            die("%s", err);
+        image_free(&big);
+        image_free(&img);
+        return 0;
+    }
     if (!strcmp(cmd, "grey")) {
         dither_image(&img, m, &lv);
     } else if (!strcmp(cmd, "unscale")) {
@@ -355,8 +372,13 @@ static int cmd_measure(int argc, char **argv)
     for (int i = 0; i < nin; i++) {
         image_t img;
         read_image(path[i], &img);
-        const char *base = strrchr(path[i], '/');
-        base = base ? base + 1 : path[i];
+        /* The file's base name without its extension names the row. */
+        const char *slash = strrchr(path[i], '/');
+        char base[256];
+        snprintf(base, sizeof base, "%s", slash ? slash + 1 : path[i]);
+        char *dot = strrchr(base, '.');
+        if (dot && dot != base)
+            *dot = 0;
         for (int m = 0; m < OLED_DITHER_METHODS; m++) {
             acc_t a;
             memset(&a, 0, sizeof a);
@@ -374,6 +396,7 @@ static const char usage[] =
     "usage: fxrt-oled grey IN -o OUT.bin|OUT.png|OUT.ppm [--dither none|bayer4|bayer8|fs] [--scale N]\n"
     "       fxrt-oled ideal IN -o OUT.png|OUT.ppm [--scale N]\n"
     "       fxrt-oled unscale DUMP -o OUT.bin|OUT.png|OUT.ppm [--magnify M] [--scale N]\n"
+    "       fxrt-oled magnify IN -o OUT.png|OUT.ppm --scale N\n"
     "       fxrt-oled measure [--markdown] SET=IMAGE...\n"
     "RGB images to the SSD0323's 4-bit greys with the firmware's dithering (firmware/oled/dither.c),\n"
     "QEMU screendumps of the display back to levels, and each method's error against the ideal grey.\n"
@@ -385,9 +408,10 @@ int main(int argc, char **argv)
         fputs(usage, argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
-    if (!strcmp(argv[1], "grey") || !strcmp(argv[1], "ideal") || !strcmp(argv[1], "unscale"))
+    if (!strcmp(argv[1], "grey") || !strcmp(argv[1], "ideal") || !strcmp(argv[1], "unscale") ||
+        !strcmp(argv[1], "magnify"))
         return cmd_convert(argv[1], argc - 2, argv + 2);
     if (!strcmp(argv[1], "measure"))
         return cmd_measure(argc - 2, argv + 2);
-    die("unknown command '%s' (grey, ideal, unscale, measure)", argv[1]);
+    die("unknown command '%s' (grey, ideal, unscale, magnify, measure)", argv[1]);
 }
