@@ -32,8 +32,9 @@
 #define OLED_HANDSHAKE 1
 #endif
 
-/* Instructions between two looks for the host's file: the look itself is
- * a host call, cheap for the guest, but there is no point in many. */
+/* Spin-loop turns (a few instructions each) between two looks for the
+ * host's file: a look is a host call, cheap for the guest, but the host
+ * needs milliseconds for a screendump, so there is no point in many. */
 #define ACK_POLL_SPIN 20000
 
 #if FXRT_STACK_EXTRA > 0
