@@ -124,6 +124,7 @@ TEST_FULL_PREREQ :=
 -include tests/growth.mk
 -include tests/qemu_trace.mk
 -include tests/order.mk
+-include firmware/oled.mk
 
 SUITES := $(TEST_BIN) tests/cli.sh tests/golden.sh tests/stress_scenes.sh tests/renderers.sh tests/freestanding.sh tests/layers.sh tests/doclinks.sh tests/qemu.sh \
           $(SUITES_EXTRA)
