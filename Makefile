@@ -149,8 +149,9 @@ include firmware/firmware.mk
 include firmware/bench.mk
 
 # --- demo ----------------------------------------------------------------
-demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
+demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(OLED_TOOL)
 	$(Q)BUILD=$(BUILD) tests/demo.sh
+	$(Q)BUILD=$(BUILD) firmware/oled/oled-demo.sh
 
 size: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) SIZE_UPDATE_DOCS=$(SIZE_UPDATE_DOCS) firmware/size.sh

@@ -4,6 +4,8 @@
 #       Phong scene: Q16.16 on the Cortex-M3 in QEMU | the host's double
 #       render | their difference (build/demo/course-phong-point-sheet.png)
 #   docs/img/demo-reflection.png          the same for the reflection scene
+#   docs/img/oled-shadows-sheet.png       make demo's OLED sheet of lit/shadows:
+#       host | host dithered | QEMU's display (firmware/oled/oled-demo.sh)
 #   docs/lit/*.png, docs/trace/*.png      Q16.16 host renders at 320x240,
 #       side by side under their names (fxrt render, fxrt sheet)
 # DOC_IMAGES_NO_DEMO=1 skips make demo (the lit and trace sheets only).
@@ -17,6 +19,7 @@ if [[ ${DOC_IMAGES_NO_DEMO:-0} != 1 ]]; then
     make -s --no-print-directory BUILD="$BUILD" demo
     cp "$BUILD/demo/course-phong-point-sheet.png" docs/img/demo-course-phong-point.png
     cp "$BUILD/demo/reflection-sheet.png" docs/img/demo-reflection.png
+    cp "$BUILD/demo/oled-shadows-sheet.png" docs/img/oled-shadows-sheet.png
 fi
 
 # sheet OUT SCENE[=LABEL]...: each scene rendered in Q16.16 at 320x240
