@@ -29,7 +29,7 @@ typedef enum {
     FXRT_ERR_CONFIG = -17,   /* core and application built with different configurations */
     FXRT_ERR_RENDER = -18,   /* render_setup refused the frame for another reason (render_t capacity) */
     FXRT_ERR_ANGLE = -19,    /* spot light half-angle outside (0, 90] degrees */
-    FXRT_ERR_MATERIAL = -20, /* unknown material, exponent outside 1..1024, or lighting compiled out */
+    FXRT_ERR_MATERIAL = -20, /* unknown material, or its lighting compiled out (FXRT_MAX_LIGHTS 0, FXRT_PHONG 0) */
     FXRT_ERR_ID = -21,       /* no object with this id */
     FXRT_ERR_LIGHT = -22,    /* unknown light kind */
     FXRT_ERR_DEPTH = -23,    /* bounce depth outside 0..FXRT_MAX_DEPTH */
@@ -37,7 +37,11 @@ typedef enum {
     FXRT_ERR_NULL = -25,     /* a NULL pointer where the call needs an object */
     FXRT_ERR_ROW = -26,      /* a row outside 0..height-1 */
     FXRT_ERR_SETUP = -27,    /* fxrt_render_row before a successful fxrt_render_setup, or after the view changed */
-    FXRT_ERR_BUFFER = -28,   /* a row buffer smaller than FXRT_ROW_BYTES(width), or RGB565 rows not 2-byte aligned */
+    FXRT_ERR_BUFFER = -28,
+    FXRT_ERR_INIT = -29,     /* a world that fxrt_world_init has not set up */
+    FXRT_ERR_EXPONENT = -30, /* phong or reflective exponent outside 1..FXRT_PHONG_MAX_EXPONENT */
+    FXRT_ERR_INDEX = -31,    /* refraction index outside FXRT_INDEX_MIN..FXRT_INDEX_MAX */
+    FXRT_ERR_LIGHTS = -32,   /* FXRT_MAX_LIGHTS lights are there already */   /* a row buffer smaller than FXRT_ROW_BYTES(width), or RGB565 rows not 2-byte aligned */
     /* Camera errors without a name above (cam_setup codes added later)
      * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
      * fxrt_strerror still tell them apart. */

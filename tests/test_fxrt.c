@@ -210,10 +210,10 @@ static void test_render_and_config(void)
 static void test_strerror(void)
 {
     /* Every code has its own text; unknown codes say so. */
-    for (int a = -1; a >= FXRT_ERR_BUFFER; a--) {
+    for (int a = -1; a >= FXRT_ERR_LIGHTS; a--) {
         const char *s = fxrt_strerror(a);
         CHECK_MSG(s && *s && strcmp(s, "unknown error") != 0, "code %d", a);
-        for (int b = a - 1; b >= FXRT_ERR_BUFFER; b--)
+        for (int b = a - 1; b >= FXRT_ERR_LIGHTS; b--)
             CHECK_MSG(strcmp(s, fxrt_strerror(b)) != 0, "codes %d and %d share a text", a, b);
     }
     CHECK(strcmp(fxrt_strerror(-1000), "unknown error") == 0);
@@ -386,7 +386,44 @@ static void test_safety(void)
     CHECK(fxrt_render_row(NULL, 0, buf, sizeof buf) == FXRT_ERR_NULL);
     CHECK(fxrt_render_row(&fresh, 0, NULL, 24) == FXRT_ERR_NULL);
 
+    /* A world fxrt_world_init never set up: every call refuses it. */
+    static fxrt_world_t raw;
+    fxrt_object_t s0 = {.kind = FXRT_SPHERE, .p = {V(0, 0, -3)}, .radius = N(1), .color = C(0.5, 0.5, 0.5)};
+    fxrt_material_t m0 = {.kind = FXRT_MATERIAL_FLAT};
+    fxrt_light_t l0 = {.kind = FXRT_LIGHT_POINT, .position = V(0, 5, 0), .color = FXRT_FRACTIONS(1, 1, 1)};
+    CHECK(fxrt_add(&raw, &s0) == FXRT_ERR_INIT && fxrt_count(&raw) == 0);
+    CHECK(fxrt_set_material(&raw, 0, &m0) == FXRT_ERR_INIT && fxrt_add_light(&raw, &l0) == FXRT_ERR_INIT);
+    CHECK(fxrt_set_ambient(&raw, C(0, 0, 0)) == FXRT_ERR_INIT && fxrt_set_depth(&raw, 0) == FXRT_ERR_INIT);
+    CHECK(fxrt_set_samples(&raw, 1, false) == FXRT_ERR_INIT);
+    CHECK(fxrt_camera_perspective(&view, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(45), 8, 6) == FXRT_OK);
+    CHECK(fxrt_render_setup(&rs, &raw, &view) == FXRT_ERR_INIT);
+    CHECK(fxrt_world_init(&raw, C(2, 0, 0)) == FXRT_ERR_COLOR && fxrt_add(&raw, &s0) == FXRT_ERR_INIT);
+    CHECK(fxrt_world_init(&raw, C(0, 0, 0)) == FXRT_OK && fxrt_add(&raw, &s0) == 0);
+
     CHECK(fxrt_world_init(NULL, C(0, 0, 0)) == FXRT_ERR_NULL);
+
+    /* Specific codes: the exponent, the index, the lights' room, and a
+     * view too wide for its samples. */
+    fxrt_material_t bad = {.kind = FXRT_MATERIAL_PHONG, .exponent = 0, .specular = C(1, 1, 1)};
+    CHECK(fxrt_set_material(&raw, 0, &bad) == FXRT_ERR_EXPONENT);
+    bad.exponent = FXRT_PHONG_MAX_EXPONENT + 1;
+    CHECK(fxrt_set_material(&raw, 0, &bad) == FXRT_ERR_EXPONENT);
+    bad = (fxrt_material_t){.kind = FXRT_MATERIAL_TRANSPARENT, .index = N(FXRT_INDEX_MAX * 1.5)};
+    CHECK(fxrt_set_material(&raw, 0, &bad) == FXRT_ERR_INDEX);
+    bad.kind = 9;
+    CHECK(fxrt_set_material(&raw, 0, &bad) == FXRT_ERR_MATERIAL && fxrt_set_material(&raw, 7, &m0) == FXRT_ERR_ID);
+    for (int i = 0; i < FXRT_MAX_LIGHTS; i++)
+        CHECK(fxrt_add_light(&raw, &l0) == i);
+    CHECK(fxrt_add_light(&raw, &l0) == FXRT_ERR_LIGHTS);
+#if FXRT_MAX_SAMPLES > 1
+    CHECK(fxrt_set_samples(&raw, 2, false) == FXRT_OK);
+    fxrt_view_t half;
+    int32_t hw = FXRT_RENDER_MAX_WIDTH / 2 + 1;
+    if (hw <= FXRT_MAX_DIM) {
+        CHECK(fxrt_camera_perspective(&half, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(45), hw, 4) == FXRT_OK);
+        CHECK(fxrt_render_setup(&rs, &raw, &half) == FXRT_ERR_WIDTH);
+    }
+#endif
     CHECK(fxrt_world_init(&world, C(0.2, 0.4, 0.6)) == FXRT_OK);
     fxrt_object_t o = {.kind = FXRT_SPHERE, .p = {V(0, 0, -3)}, .radius = N(1), .color = C(0.7, 0.2, 1)};
     CHECK(fxrt_add(NULL, &o) == FXRT_ERR_NULL && fxrt_add(&world, NULL) == FXRT_ERR_NULL && fxrt_count(&world) == 0);

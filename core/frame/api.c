@@ -25,10 +25,21 @@ fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t worl
     return FXRT_OK;
 }
 
+/* A world the caller may use: FXRT_OK, FXRT_ERR_NULL, FXRT_ERR_INIT. */
+static fxrt_err_t fxrt_world_ok(const world_t *w)
+{
+    if (w == NULL)
+        return FXRT_ERR_NULL;
+    return w->ready == WORLD_READY ? FXRT_OK : FXRT_ERR_INIT;
+}
+
 int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
 {
-    if (w == NULL || o == NULL)
+    if (o == NULL)
         return FXRT_ERR_NULL;
+    fxrt_err_t ok = fxrt_world_ok(w);
+    if (ok != FXRT_OK)
+        return ok;
     int32_t id = world_add(w, o);
     if (id >= 0 && o->material.kind != MATERIAL_FLAT) {
 #if FXRT_MAX_LIGHTS > 0
@@ -44,35 +55,40 @@ int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
 
 int32_t fxrt_count(const world_t *w)
 {
-    return w == NULL ? 0 : world_count(w);
+    return fxrt_world_ok(w) == FXRT_OK ? world_count(w) : 0;
 }
 
 fxrt_err_t fxrt_set_material(world_t *w, int32_t id, const material_t *m)
 {
-    if (w == NULL || m == NULL)
-        return FXRT_ERR_NULL;
-    return world_set_material(w, id, m);
+    fxrt_err_t ok = m == NULL ? FXRT_ERR_NULL : fxrt_world_ok(w);
+    return ok != FXRT_OK ? ok : world_set_material(w, id, m);
 }
 
 fxrt_err_t fxrt_set_ambient(world_t *w, color_t ambient)
 {
-    return w == NULL ? FXRT_ERR_NULL : world_set_ambient(w, ambient);
+    fxrt_err_t ok = fxrt_world_ok(w);
+    return ok != FXRT_OK ? ok : world_set_ambient(w, ambient);
 }
 
 fxrt_err_t fxrt_set_depth(world_t *w, int32_t depth)
 {
-    return w == NULL ? FXRT_ERR_NULL : world_set_depth(w, depth);
+    fxrt_err_t ok = fxrt_world_ok(w);
+    return ok != FXRT_OK ? ok : world_set_depth(w, depth);
 }
 
 fxrt_err_t fxrt_set_samples(world_t *w, int32_t samples, bool adaptive)
 {
-    return w == NULL ? FXRT_ERR_NULL : world_set_samples(w, samples, adaptive);
+    fxrt_err_t ok = fxrt_world_ok(w);
+    return ok != FXRT_OK ? ok : world_set_samples(w, samples, adaptive);
 }
 
 int32_t fxrt_add_light(world_t *w, const fxrt_light_t *l)
 {
-    if (w == NULL || l == NULL)
+    if (l == NULL)
         return FXRT_ERR_NULL;
+    fxrt_err_t ok = fxrt_world_ok(w);
+    if (ok != FXRT_OK)
+        return ok;
     return world_add_light(w, l->kind, l->position, l->direction, l->angle_deg, l->color, l->shadows);
 }
 
@@ -167,10 +183,12 @@ fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t 
     r->error = NULL;
     if (w == NULL || cam == NULL)
         return FXRT_ERR_NULL;
+    if (w->ready != WORLD_READY)
+        return FXRT_ERR_INIT;
     if (render_size != sizeof(render_t))
         return FXRT_ERR_CONFIG;
-    if (cam->width > FXRT_RENDER_MAX_WIDTH)
-        return FXRT_ERR_WIDTH;
+    if ((int64_t)cam->width * world_samples(w) > FXRT_RENDER_MAX_WIDTH)
+        return FXRT_ERR_WIDTH; /* (the renderer holds samples x width columns) */
     if (cam->width < 1 || cam->height < 1 || cam->height > FXRT_MAX_DIM)
         return FXRT_ERR_SIZE; /* a view the camera calls never set up */
     if (render_setup(r, w, cam)) {
@@ -214,10 +232,10 @@ const char *fxrt_strerror(int32_t err)
         return cam_strerror((cam_err_t)(err - FXRT_ERR_CAM_BASE));
     switch ((fxrt_err_t)err) {
     case FXRT_OK: return "ok";
-    case FXRT_ERR_FULL: return "no room for another object of this kind (FXRT_MAX_<KIND>; 0 compiles the kind out)";
-    case FXRT_ERR_COORD: return "coordinate beyond the limit +-FXRT_COORD_LIMIT";
+    case FXRT_ERR_FULL: return "no room for another object of this kind (its FXRT_MAX_<KIND>; 0 compiles the kind out)";
+    case FXRT_ERR_COORD: return "coordinate beyond +-FXRT_COORD_LIMIT";
     case FXRT_ERR_TINY: return "nonzero value below 2^-16 (it would be 0 in Q16.16)";
-    case FXRT_ERR_DIRECTION: return "direction (normal, gaze or up) has zero length";
+    case FXRT_ERR_DIRECTION: return "direction (normal, gaze, up or light direction) has zero length";
     case FXRT_ERR_RADIUS: return "radius must be in (0, FXRT_RADIUS_LIMIT]";
     case FXRT_ERR_COLOR: return "colour channel outside 0..1";
     case FXRT_ERR_BOX: return "box min > max on some axis";
@@ -229,24 +247,30 @@ const char *fxrt_strerror(int32_t err)
     case FXRT_ERR_NARROW: return cam_strerror(CAM_ERR_NARROW);
     case FXRT_ERR_SCALE: return "orthographic scale must be in (0, FXRT_RADIUS_LIMIT]";
     case FXRT_ERR_EXTENT: return cam_strerror(CAM_ERR_EXTENT);
-    case FXRT_ERR_CAMERA: return "unknown camera kind";
+    case FXRT_ERR_CAMERA: return "unknown camera kind (FXRT_PERSPECTIVE or FXRT_ORTHOGRAPHIC)";
     case FXRT_ERR_CAM_BASE: break;
-    case FXRT_ERR_WIDTH: return "image wider than FXRT_RENDER_MAX_WIDTH";
-    case FXRT_ERR_KIND: return "unknown object kind";
+    case FXRT_ERR_WIDTH:
+        return "image wider than FXRT_RENDER_MAX_WIDTH columns (with samples N, the renderer holds N x width "
+               "columns)";
+    case FXRT_ERR_KIND: return "unknown object kind (FXRT_PLANE, FXRT_SPHERE, FXRT_TRIANGLE or FXRT_BOX)";
     case FXRT_ERR_CONFIG:
         return "core and application built with different configurations (FXRT_NUMBER, FXRT_MAX_*, "
                "FXRT_RENDER_MAX_WIDTH, FXRT_PIXEL must match)";
-    case FXRT_ERR_RENDER: return "the renderer cannot set this frame up (render_t capacity)";
+    case FXRT_ERR_RENDER: return "the frame needs more than fxrt_render_t holds (fxrt_render_error says what)";
     case FXRT_ERR_ANGLE: return "spot light half-angle must be in (0, 90] degrees";
     case FXRT_ERR_MATERIAL:
-        return "material not available (unknown kind, phong exponent outside 1..1024, or lighting compiled out: "
-               "FXRT_MAX_LIGHTS, FXRT_PHONG)";
-    case FXRT_ERR_ID: return "no object with this id";
-    case FXRT_ERR_LIGHT: return "unknown light kind";
+        return "unknown material kind, or its lighting compiled out (FXRT_MAX_LIGHTS 0; phong and reflective: "
+               "FXRT_PHONG 0)";
+    case FXRT_ERR_ID: return "no object with this id (ids run from 0 to fxrt_count() - 1)";
+    case FXRT_ERR_LIGHT: return "unknown light kind (FXRT_LIGHT_POINT, _DIRECTIONAL or _SPOT)";
+    case FXRT_ERR_INIT: return "the world was not set up with fxrt_world_init";
     case FXRT_ERR_NULL: return "a NULL pointer where an object is needed";
     case FXRT_ERR_ROW: return "row outside 0..height-1";
     case FXRT_ERR_SETUP: return "no successful fxrt_render_setup on this fxrt_render_t since its view last changed";
     case FXRT_ERR_BUFFER: return "row buffer smaller than FXRT_ROW_BYTES(width) (or, RGB565, not 2-byte aligned)";
+    case FXRT_ERR_EXPONENT: return "phong exponent outside 1..FXRT_PHONG_MAX_EXPONENT (1024)";
+    case FXRT_ERR_INDEX: return "refraction index outside FXRT_INDEX_MIN..FXRT_INDEX_MAX (0.01..100)";
+    case FXRT_ERR_LIGHTS: return "no room for another light (FXRT_MAX_LIGHTS; 0 compiles lighting out)";
     case FXRT_ERR_DEPTH: return "depth outside 0..FXRT_MAX_DEPTH (largest number of bounces)";
     case FXRT_ERR_SAMPLES:
         return "samples outside 1..FXRT_MAX_SAMPLES, or adaptive with fewer than 2 samples or compiled out "

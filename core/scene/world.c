@@ -5,6 +5,7 @@ void world_init(world_t *w, color_t background)
 {
     w->background = background;
     w->background_rgb = color_to_rgb8(background);
+    w->ready = WORLD_READY;
 #define WORLD_EMPTY(K, k, ks, ...) FXRT_IF_##K(w->n_##ks = 0;)
     FXRT_KINDS(WORLD_EMPTY)
 #undef WORLD_EMPTY
@@ -238,8 +239,10 @@ fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
     else if (m->kind == MATERIAL_LAMBERT)
         ;
     else if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) {
-        if (!FXRT_PHONG || m->exponent < 1 || m->exponent > FXRT_PHONG_MAX_EXPONENT)
+        if (!FXRT_PHONG)
             return FXRT_ERR_MATERIAL;
+        if (m->exponent < 1 || m->exponent > FXRT_PHONG_MAX_EXPONENT)
+            return FXRT_ERR_EXPONENT;
         fxrt_err_t e = light_check_fraction(m->specular);
         if (e == FXRT_OK && m->kind == MATERIAL_REFLECTIVE)
             e = light_check_fraction(m->reflection);
@@ -248,7 +251,7 @@ fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
     } else if (m->kind == MATERIAL_TRANSPARENT) {
         /* (x >= lo && x <= hi) also refuses NaN */
         if (!(m->index >= NUM(FXRT_INDEX_MIN) && m->index <= NUM(FXRT_INDEX_MAX)))
-            return FXRT_ERR_MATERIAL;
+            return FXRT_ERR_INDEX;
     } else
         return FXRT_ERR_MATERIAL;
 #if FXRT_MAX_LIGHTS > 0
@@ -295,7 +298,7 @@ int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t d
         return e;
 #if FXRT_MAX_LIGHTS > 0
     if (w->n_lights >= FXRT_MAX_LIGHTS)
-        return FXRT_ERR_FULL;
+        return FXRT_ERR_LIGHTS;
     light_t *l = &w->lights[w->n_lights];
     l->kind = (uint8_t)kind;
     l->shadows = shadows;
@@ -325,6 +328,6 @@ int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t d
     return w->n_lights++;
 #else
     (void)w, (void)shadows;
-    return FXRT_ERR_FULL;
+    return FXRT_ERR_LIGHTS;
 #endif
 }

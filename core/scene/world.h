@@ -18,9 +18,13 @@
  * capacity, so that RAM grows with it alone: firmware/fit.sh). */
 #define WORLD_MESH_N (FXRT_MAX_TRIANGLES < FXRT_MESH_MAX ? FXRT_MAX_TRIANGLES : FXRT_MESH_MAX)
 
+/* world_t.ready once world_init has run. */
+#define WORLD_READY 0xA5u
+
 typedef struct {
     color_t background;
     rgb8_t background_rgb;
+    uint8_t ready; /* WORLD_READY once world_init ran (the API refuses other worlds; in padding) */
     /* Per kind: how many, and the records (scene/kinds.h). */
 #define WORLD_KIND_FIELDS(K, k, ks, cap, ...) FXRT_IF_##K(uint16_t n_##ks; geom_##k##_t ks[cap];)
     FXRT_KINDS(WORLD_KIND_FIELDS)
