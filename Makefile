@@ -149,6 +149,16 @@ include firmware/firmware.mk
 include firmware/bench.mk
 
 # --- demo ----------------------------------------------------------------
+# make help: every target with its one-line use, read from docs/TARGETS.md
+# (the page and the list cannot drift apart).
+help:
+	@echo "fxrt: make TARGET [VAR=value ...]  (docs/TARGETS.md has each in full)"
+	@awk -F'|' '/^## / { sub(/^## /, ""); printf "\n%s\n", $$0 } \
+	    /^\| `make/ { c = $$2; w = $$3; gsub(/`/, "", c); gsub(/^ +| +$$/, "", c); gsub(/`/, "", w); \
+	    gsub(/\]\([^)]*\)/, "", w); gsub(/\[/, "", w); gsub(/^ +| +$$/, "", w); if (length(w) > 90) w = substr(w, 1, 87) "..."; \
+	    printf "  %-34s %s\n", c, w }' docs/TARGETS.md
+.PHONY: help
+
 demo: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec $(OLED_TOOL)
 	$(Q)BUILD=$(BUILD) tests/demo.sh
 	$(Q)BUILD=$(BUILD) firmware/oled/oled-demo.sh
