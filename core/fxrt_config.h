@@ -413,6 +413,17 @@ FXRT_STATIC_ASSERT(FXRT_BAND_ROWS >= 1, "FXRT_BAND_ROWS must be at least 1");
 #define FXRT_STACK_EXTRA ((FXRT_MAX_DEPTH > 0 ? 1024 + 48 * FXRT_MAX_DEPTH : 0) + 256 * FXRT_ADAPTIVE + FXRT_STACK_RAYCAST)
 #endif
 FXRT_STATIC_ASSERT(FXRT_STACK_EXTRA >= 0 && FXRT_STACK_EXTRA % 8 == 0, "FXRT_STACK_EXTRA must be a multiple of 8, >= 0");
+/* 1: the core reserves those FXRT_STACK_EXTRA bytes itself (frame/api.c's
+ * fxrt_stack_extra, in the section .stack_extra), and refers to the symbol
+ * fxrt_stack_extra_needs_linker_script_keep, which a linker script
+ * defines where it keeps .stack_extra at the bottom of the stack
+ * (linker/sections.ld does). A firmware whose script does not fails to
+ * link with that name, instead of running out of stack at its first
+ * bounce (docs/EMBEDDING.md, "Stack"). Default: on bare-metal Arm when
+ * FXRT_STACK_EXTRA > 0; 0 for a program that reserves the stack itself. */
+#ifndef FXRT_STACK_RESERVE
+#define FXRT_STACK_RESERVE (FXRT_PORT_BARE && FXRT_STACK_EXTRA > 0)
+#endif
 FXRT_STATIC_ASSERT(FXRT_FB_MODE != FXRT_FB_STREAM || FXRT_PIXEL == FXRT_RGB888, "streaming mode sends RGB888 rows; FXRT_RGB565 is for the full framebuffer");
 
 #endif

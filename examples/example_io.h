@@ -16,7 +16,9 @@ void example_frame_end(int32_t n);
 /* Report "what: msg" and end the program with a non-zero status. */
 void example_fail(const char *what, const char *msg) __attribute__((noreturn));
 
-/* The example itself (examples/orbit.c). */
-int orbit_main(void);
+/* The example itself (examples/orbit.c, examples/lit.c): its name (the
+ * frames' file names, NAME-00.ppm ...) and its program. */
+extern const char example_name[];
+int example_main(void);
 
 #endif

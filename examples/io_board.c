@@ -1,5 +1,5 @@
 /* io_board: the examples' frames streamed to the host over semihosting,
- * one file per frame (orbit-NN.ppm.part in QEMU's working directory;
+ * one file per frame (NAME-NN.ppm.part in QEMU's working directory;
  * tests/examples.sh renames them after a clean exit), and the instructions
  * each frame takes: camera set-up, render set-up and every row, counted
  * with the SysTick counter (firmware/counter.c) between opening and
@@ -15,7 +15,8 @@ static uint64_t t0, total;
 
 void example_fail(const char *what, const char *msg)
 {
-    semihost_puts("orbit: ");
+    semihost_puts(example_name);
+    semihost_puts(": ");
     semihost_puts(what);
     semihost_puts(": ");
     semihost_puts(msg);
@@ -45,7 +46,11 @@ static void send(const void *buf, size_t len)
 
 void example_frame_begin(int32_t n, int32_t width, int32_t height)
 {
-    char name[32] = "orbit-", *p = put_dec(name + 6, (uint32_t)n, 2);
+    char name[48], *p = name;
+    for (const char *q = example_name; *q && p < name + 24; q++)
+        *p++ = *q;
+    *p++ = '-';
+    p = put_dec(p, (uint32_t)n, 2);
     const char *ext = ".ppm.part";
     while (*ext)
         *p++ = *ext++;
@@ -87,7 +92,7 @@ void example_frame_end(int32_t n)
 int main(void)
 {
     counter_start();
-    int rc = orbit_main();
+    int rc = example_main();
     semihost_puts("ticks=");
     semihost_put_u64(total);
     semihost_puts(" ram_static=");

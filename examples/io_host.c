@@ -1,5 +1,5 @@
 /* io_host: the examples' frames as binary PPM files on the host:
- *   build/examples/host/orbit OUTDIR  ->  OUTDIR/orbit-00.ppm ... orbit-15.ppm
+ *   build/examples/host/NAME OUTDIR  ->  OUTDIR/NAME-00.ppm, NAME-01.ppm ...
  * Each file is written under a temporary name and renamed when complete. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,7 +12,7 @@ static char path[1024], tmp[1100];
 
 void example_fail(const char *what, const char *msg)
 {
-    fprintf(stderr, "orbit: %s: %s\n", what, msg);
+    fprintf(stderr, "%s: %s: %s\n", example_name, what, msg);
     if (frame) {
         fclose(frame);
         remove(tmp);
@@ -22,7 +22,7 @@ void example_fail(const char *what, const char *msg)
 
 void example_frame_begin(int32_t n, int32_t width, int32_t height)
 {
-    snprintf(path, sizeof path, "%s/orbit-%02d.ppm", outdir, (int)n);
+    snprintf(path, sizeof path, "%s/%s-%02d.ppm", outdir, example_name, (int)n);
     snprintf(tmp, sizeof tmp, "%s.part", path);
     frame = fopen(tmp, "wb");
     if (!frame)
@@ -54,5 +54,5 @@ int main(int argc, char **argv)
         return 2;
     }
     outdir = argv[1];
-    return orbit_main();
+    return example_main();
 }

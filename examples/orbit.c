@@ -68,7 +68,9 @@ __attribute__((noinline)) static void build_world(void)
         "triangle");
 }
 
-int orbit_main(void)
+const char example_name[] = "orbit";
+
+int example_main(void)
 {
     build_world();
     const fxrt_num_t radius = FXRT_NUM(5.5);

@@ -40,11 +40,9 @@
 #define RENDER_ROW(st, row, out) render_row(st, row, out)
 #endif
 
-#if FXRT_STACK_EXTRA > 0
-/* More stack for the bounce loop: linker/sections.ld puts this section
- * inside the stack, below STACK_SIZE (never referenced, only reserved). */
-static uint8_t stack_extra[FXRT_STACK_EXTRA] __attribute__((section(".stack_extra"), used, aligned(8)));
-#endif
+/* The bounce loop's stack (FXRT_STACK_EXTRA) is the core's own
+ * reservation (frame/api.c, FXRT_STACK_RESERVE), kept inside the stack by
+ * linker/sections.ld. */
 
 static render_t render_state;
 static world_t world; /* built at boot from scene_objects */

@@ -115,24 +115,35 @@ run_source() { # NAME: run the command that writes its source
 kv() { awk -v k="$1" '{ for (i = 1; i <= NF; i++) if (index($i, k "=") == 1) { print substr($i, length(k) + 2); exit } }' <<<"$2"; }
 commas() { awk -v n="$1" 'BEGIN { s = sprintf("%d", n); while (s ~ /[0-9][0-9][0-9][0-9]/) sub(/[0-9][0-9][0-9]([^0-9]|$)/, ",&", s); print s }'; }
 
-fmt_orbit() {
-    local log n=0 sum=0 min= max= x run elf
+fmt_orbit() { # tests/examples.sh's log: each example's frames and report lines
+    local log name what n sum min max x run elf
     log=$(cat)
-    while read -r x; do
-        n=$((n + 1)) sum=$((sum + x))
-        [[ -z $min || $x -lt $min ]] && min=$x
-        [[ -z $max || $x -gt $max ]] && max=$x
-    done < <(sed -nE 's/^frame=[0-9]+ instructions=([0-9]+)$/\1/p' <<<"$log")
-    run=$(grep '^micro:bit orbit: ' <<<"$log" | tail -n 1)
-    elf=$(grep '^micro:bit orbit.elf: ' <<<"$log" | tail -n 1)
-    [[ $n -gt 0 && -n $run && -n $elf ]] || die "orbit: no frame counts or report lines in the log"
-    echo "| orbit, micro:bit (Cortex-M0), 64×48, 5 objects | value |"
-    echo "|---|---:|"
-    echo "| instructions per frame, mean of $n (camera and render set-up included) | $(commas "$(kv instructions_per_frame "$run")") |"
-    echo "| range over the $n frames | $(commas "$min") – $(commas "$max") |"
-    echo "| flash (everything linked, the core's default configuration: lighting, bounces and supersampling compiled in) | $(commas "$(kv flash "$elf")") B |"
-    echo "| RAM, static (\`.data\` + \`.bss\`) | $(commas "$(kv ram_static "$elf")") B |"
-    echo "| stack used (painted) of $(commas "$(kv stack_size "$run")") B reserved | $(commas "$(kv stack_used "$run")") B |"
+    echo "| example on the micro:bit (Cortex-M0) | orbit | lit |"
+    echo "|---|---:|---:|"
+    declare -A row
+    for name in orbit lit; do
+        n=0 sum=0 min= max=
+        while read -r x; do
+            n=$((n + 1)) sum=$((sum + x))
+            [[ -z $min || $x -lt $min ]] && min=$x
+            [[ -z $max || $x -gt $max ]] && max=$x
+        done < <(sed -nE "s/^$name frame=[0-9]+ instructions=([0-9]+)\$/\\1/p" <<<"$log")
+        run=$(grep "^micro:bit $name: " <<<"$log" | tail -n 1)
+        elf=$(grep "^micro:bit $name.elf: " <<<"$log" | tail -n 1)
+        [[ $n -gt 0 && -n $run && -n $elf ]] || die "orbit: no frame counts or report lines for $name in the log"
+        row[frames]+=" | $n"
+        row[mean]+=" | $(commas "$(kv instructions_per_frame "$run")")"
+        row[range]+=" | $(commas "$min") – $(commas "$max")"
+        row[flash]+=" | $(commas "$(kv flash "$elf")") B"
+        row[ram]+=" | $(commas "$(kv ram_static "$elf")") B"
+        row[stack]+=" | $(commas "$(kv stack_used "$run")") of $(commas "$(kv stack_size "$run")") B"
+    done
+    echo "| frames${row[frames]} |"
+    echo "| instructions per frame, mean (camera and render set-up included)${row[mean]} |"
+    echo "| range over the frames${row[range]} |"
+    echo "| flash (everything linked)${row[flash]} |"
+    echo "| RAM, static (\`.data\` + \`.bss\`)${row[ram]} |"
+    echo "| stack used (painted) of the reservation${row[stack]} |"
 }
 
 fmt_golden() {

@@ -1,66 +1,100 @@
 #!/usr/bin/env bash
-# examples/ (issue 10, section 4): the orbit example built with the public
-# API runs on the host and on the micro:bit in QEMU, every frame set up on
-# the board, and the board's 16 frames equal the host build's byte for
-# byte. Also: a configuration mismatch between the core and the
-# application fails at link time with the configuration in the message.
+# examples/: the orbit example (flat, 16 frames) and the lit example
+# (lights, a mirror and a glass sphere, depth 4, 2 x 2 adaptive samples)
+# built with the public API run on the host and on the micro:bit in QEMU,
+# every frame set up on the board, and the board's frames equal the host
+# build's byte for byte. Also: a configuration mismatch between the core
+# and the application fails at link time with the configuration in the
+# message; a linker script without the stack's .stack_extra fails by name;
+# the examples and docs/EMBEDDING.md's snippet use the fxrt_ names only.
 set -u
 . "$(dirname "$0")/lib.sh"
 out=$BUILD/tests/examples
 rm -rf "$out"
-mkdir -p "$out/host" "$out/microbit"
-FRAMES=16
+mkdir -p "$out"
 
-# Host build: writes orbit-00.ppm ... orbit-15.ppm.
-check "host orbit runs" "$BUILD/examples/host/orbit" "$out/host"
-n=$(ls "$out/host"/orbit-*.ppm 2>/dev/null | wc -l)
-check "host orbit wrote $FRAMES frames (found $n)" test "$n" -eq $FRAMES
-# The camera moves: consecutive frames differ, and no frame is blank.
-for f in $(seq 1 $((FRAMES - 1))); do
-    a=$(printf '%s/host/orbit-%02d.ppm' "$out" $((f - 1)))
-    b=$(printf '%s/host/orbit-%02d.ppm' "$out" $f)
-    check "frames $((f - 1)) and $f differ" bash -c "! cmp -s '$a' '$b'"
-done
-
-# The micro:bit: same program, streamed over semihosting (-icount as
-# firmware/qemu-run.sh, whose tick conversion this reuses).
-elf=$BUILD/examples/microbit/orbit.elf
-log=$out/microbit/qemu.log
-(cd "$out/microbit" && timeout "${FXRT_QEMU_TIMEOUT:-300}" qemu-system-arm -M microbit -nographic -monitor none \
-    -serial none -semihosting-config enable=on,target=native -icount shift=5 -kernel "$(realpath "$OLDPWD/$elf")" \
-    </dev/null) >"$log" 2>&1
-rc=$?
-check "micro:bit orbit exits 0 (exit $rc: $(tail -n 2 "$log" | tr '\n' ' '))" test $rc -eq 0
-# instructions = ticks * 62.5 ns / 32 ns (16 MHz SysTick, -icount shift=5)
-awk '/frame=/ { for (i = 1; i <= NF; i++) if ($i ~ /^frame_tick_count=/) { split($i, a, "="); t = a[2] }
-                printf "%s instructions=%.0f\n", $1, t * 62.5 / 32 }' "$log"
-tail -n 1 "$log"
-nf=$(grep -c 'frame_tick_count=' "$log")
-check "micro:bit reported $FRAMES frames (got $nf)" test "$nf" -eq $FRAMES
-for f in $(seq 0 $((FRAMES - 1))); do
-    name=$(printf 'orbit-%02d.ppm' $f)
-    if [ $rc -eq 0 ] && [ -f "$out/microbit/$name.part" ]; then
-        mv "$out/microbit/$name.part" "$out/microbit/$name"
+# example NAME FRAMES: the host build writes NAME-00.ppm ...; the
+# micro:bit build streams the same frames over semihosting (-icount as
+# firmware/qemu-run.sh, whose tick conversion this reuses); every board
+# frame must equal the host's byte for byte, and the board's stack use
+# must leave FXRT_STACK_MARGIN of its reservation.
+example() {
+    local name=$1 frames=$2 f n a b elf log rc nf su ss sm ticks sz heap
+    mkdir -p "$out/$name/host" "$out/$name/microbit"
+    check "host $name runs" "$BUILD/examples/host/$name" "$out/$name/host"
+    n=$(ls "$out/$name/host"/"$name"-*.ppm 2>/dev/null | wc -l)
+    check "host $name wrote $frames frames (found $n)" test "$n" -eq "$frames"
+    # The camera moves: consecutive frames differ.
+    for f in $(seq 1 $((frames - 1))); do
+        a=$(printf '%s/%s/host/%s-%02d.ppm' "$out" "$name" "$name" $((f - 1)))
+        b=$(printf '%s/%s/host/%s-%02d.ppm' "$out" "$name" "$name" $f)
+        check "$name: frames $((f - 1)) and $f differ" bash -c "! cmp -s '$a' '$b'"
+    done
+    elf=$BUILD/examples/microbit/$name.elf
+    log=$out/$name/microbit/qemu.log
+    (cd "$out/$name/microbit" && timeout "${FXRT_QEMU_TIMEOUT:-300}" qemu-system-arm -M microbit -nographic \
+        -monitor none -serial none -semihosting-config enable=on,target=native -icount shift=5 \
+        -kernel "$(realpath "$OLDPWD/$elf")" </dev/null) >"$log" 2>&1
+    rc=$?
+    check "micro:bit $name exits 0 (exit $rc: $(tail -n 2 "$log" | tr '\n' ' '))" test $rc -eq 0
+    # instructions = ticks * 62.5 ns / 32 ns (16 MHz SysTick, -icount shift=5)
+    awk -v name="$name" '/frame=/ { for (i = 1; i <= NF; i++) if ($i ~ /^frame_tick_count=/) { split($i, a, "="); t = a[2] }
+                    printf "%s %s instructions=%.0f\n", name, $1, t * 62.5 / 32 }' "$log"
+    tail -n 1 "$log"
+    nf=$(grep -c 'frame_tick_count=' "$log")
+    check "micro:bit $name reported $frames frames (got $nf)" test "$nf" -eq "$frames"
+    for f in $(seq 0 $((frames - 1))); do
+        a=$(printf '%s-%02d.ppm' "$name" $f)
+        if [ $rc -eq 0 ] && [ -f "$out/$name/microbit/$a.part" ]; then
+            mv "$out/$name/microbit/$a.part" "$out/$name/microbit/$a"
+        fi
+        check "micro:bit $a byte-identical to the host's" cmp -s "$out/$name/host/$a" "$out/$name/microbit/$a"
+    done
+    su=$(sed -nE 's/.* stack_used=([0-9]+).*/\1/p' "$log" | tail -n 1)
+    ss=$(sed -nE 's/.* stack_size=([0-9]+).*/\1/p' "$log" | tail -n 1)
+    sm=$(sed -nE 's/^#define FXRT_STACK_MARGIN ([0-9]+).*/\1/p' core/fxrt_config.h)
+    check "micro:bit $name: stack used (${su:-?} B) + FXRT_STACK_MARGIN (${sm:-?} B) <= reserved (${ss:-?} B)" \
+        test -n "$su" -a -n "$ss" -a -n "$sm" -a "$((${su:-0} + ${sm:-0}))" -le "${ss:-0}"
+    ticks=$(sed -nE 's/^ticks=([0-9]+) .*/\1/p' "$log")
+    if [ -n "$ticks" ]; then
+        echo "micro:bit $name: instructions_per_frame=$(awk -v t="$ticks" -v f="$frames" 'BEGIN { printf "%.0f", t * 62.5 / 32 / f }')" \
+            "$(sed -nE 's/^ticks=[0-9]+ //p' "$log")"
     fi
-    check "micro:bit $name byte-identical to the host's" cmp -s "$out/host/$name" "$out/microbit/$name"
-done
-# The micro:bit's stack reservation is sized from measured use with
-# FXRT_STACK_MARGIN to spare (docs/BENCHMARKS.md, "RAM"): the example too.
-su=$(sed -nE 's/.* stack_used=([0-9]+).*/\1/p' "$log" | tail -n 1)
-ss=$(sed -nE 's/.* stack_size=([0-9]+).*/\1/p' "$log" | tail -n 1)
-sm=$(sed -nE 's/^#define FXRT_STACK_MARGIN ([0-9]+).*/\1/p' core/fxrt_config.h)
-check "micro:bit orbit: stack used (${su:-?} B) + FXRT_STACK_MARGIN (${sm:-?} B) <= reserved (${ss:-?} B)" \
-    test -n "$su" -a -n "$ss" -a -n "$sm" -a "$((${su:-0} + ${sm:-0}))" -le "${ss:-0}"
-ticks=$(sed -nE 's/^ticks=([0-9]+) .*/\1/p' "$log")
-if [ -n "$ticks" ]; then
-    echo "micro:bit orbit: instructions_per_frame=$(awk -v t="$ticks" -v f=$FRAMES 'BEGIN { printf "%.0f", t * 62.5 / 32 / f }')" \
-        "$(sed -nE 's/^ticks=[0-9]+ //p' "$log")"
+    sz=$(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" || $1 == ".rodata" { f += $2 } $1 == ".data" { f += $2; r += $2 }
+        $1 == ".bss" { r += $2 } END { printf "flash=%d ram_static=%d", f, r }')
+    echo "micro:bit $name.elf: $sz"
+    heap=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' | grep -xE 'malloc|_malloc_r|_sbrk|_sbrk_r|free|_free_r' || true)
+    check "$name.elf: no malloc/_sbrk (found: $heap)" test -z "$heap"
+}
+example orbit 16
+example lit 2
+# The lit example's bounce stack is the core's own reservation
+# (FXRT_STACK_RESERVE), inside the stack: fxrt_stack_extra lies between
+# _sstack and _estack.
+stack_syms=$(arm-none-eabi-nm "$BUILD/examples/microbit/lit.elf" | awk '$3 == "_sstack" || $3 == "_estack" || $3 == "fxrt_stack_extra" { print $3 "=" $1 }')
+sstack=$(sed -n 's/^_sstack=//p' <<<"$stack_syms") estack=$(sed -n 's/^_estack=//p' <<<"$stack_syms")
+extra=$(sed -n 's/^fxrt_stack_extra=//p' <<<"$stack_syms")
+check "lit.elf: fxrt_stack_extra (0x${extra:-?}) inside the stack (0x${sstack:-?}..0x${estack:-?})" \
+    test -n "$extra" -a -n "$sstack" -a -n "$estack" -a $((16#${extra:-0})) -ge $((16#${sstack:-1})) -a $((16#${extra:-0})) -lt $((16#${estack:-0}))
+
+# A firmware whose linker script does not keep the core's .stack_extra in
+# the stack (its own script, written without docs/EMBEDDING.md's lines):
+# the link fails and names what to add.
+ls_dir=$out/nostack
+mkdir -p "$ls_dir"
+grep -v -e 'fxrt_stack_extra_needs_linker_script_keep' -e 'KEEP(\*(.stack_extra))' linker/sections.ld >"$ls_dir/sections.ld"
+sed 's/^INCLUDE sections.ld/INCLUDE nostack-sections.ld/' linker/microbit.ld >"$ls_dir/board.ld"
+mv "$ls_dir/sections.ld" "$ls_dir/nostack-sections.ld"
+lit_objs=$(find "$BUILD/examples/obj/microbit-lit" -name '*.o' | while read -r o; do s=${o#"$BUILD/examples/obj/microbit-lit/"};
+    case $s in core/*) [ -f "${s%.o}.c" ] && echo "$o" ;; fw/*) [ -f "firmware/${s#fw/}" ] || [ -f "firmware/$(basename "${s%.o}").c" ] && echo "$o" ;; *) echo "$o" ;; esac; done)
+if arm-none-eabi-gcc -mcpu=cortex-m0 -mthumb -o "$ls_dir/lit.elf" $lit_objs -nostartfiles --specs=nano.specs \
+    --specs=nosys.specs -Wl,--gc-sections -L"$ls_dir" -T"$ls_dir/board.ld" 2>"$ls_dir/link.log"; then
+    bad "lit linked with a script that does not keep .stack_extra"
+else
+    ok
 fi
-sz=$(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" || $1 == ".rodata" { f += $2 } $1 == ".data" { f += $2; r += $2 }
-    $1 == ".bss" { r += $2 } END { printf "flash=%d ram_static=%d", f, r }')
-echo "micro:bit orbit.elf: $sz"
-heap=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' | grep -xE 'malloc|_malloc_r|_sbrk|_sbrk_r|free|_free_r' || true)
-check "orbit.elf: no malloc/_sbrk (found: $heap)" test -z "$heap"
+check "the link error names fxrt_stack_extra_needs_linker_script_keep" \
+    grep -q "undefined reference to .fxrt_stack_extra_needs_linker_script_keep" "$ls_dir/link.log"
 
 # A configuration mismatch: the application compiled with 8 spheres, the
 # core with the example's 2. The link must fail and name the configuration.
@@ -72,7 +106,7 @@ $CC -std=c11 -O2 $CFG_APP -Icore -c examples/orbit.c -o "$mm/orbit.o"
 $CC -std=c11 -O2 -c examples/io_host.c -Icore -o "$mm/io_host.o"
 # The objects of the core's current sources (a stale object of a removed
 # source must not be linked).
-core=$(find "$BUILD/examples/host/core" -name '*.o' | while read -r o; do s=${o#"$BUILD/examples/host/"}; [ -f "${s%.o}.c" ] && echo "$o"; done)
+core=$(find "$BUILD/examples/obj/host-orbit/core" -name '*.o' | while read -r o; do s=${o#"$BUILD/examples/obj/host-orbit/"}; [ -f "${s%.o}.c" ] && echo "$o"; done)
 if $CC -o "$mm/orbit" "$mm/orbit.o" "$mm/io_host.o" $core 2>"$mm/link.log"; then
     bad "a core with 2 spheres and an application with 8 must not link"
 else
@@ -82,8 +116,8 @@ sed 's/^/  link: /' "$mm/link.log" | grep -m2 fxrt_capacity
 check "the link error names the application's sphere capacity (fxrt_capacity_spheres_8)" \
     grep -q "fxrt_capacity_spheres_8" "$mm/link.log"
 check "the core defines its own (fxrt_capacity_spheres_2, fxrt_config_n1_w64_px1_l8_d0_x1a0)" \
-    bash -c "nm '$BUILD/examples/host/core/frame/api.o' | grep -q ' R fxrt_capacity_spheres_2$' &&
-             nm '$BUILD/examples/host/core/frame/api.o' | grep -q ' R fxrt_config_n1_w64_px1_l8_d0_x1a0$'"
+    bash -c "nm '$BUILD/examples/obj/host-orbit/core/frame/api.o' | grep -q ' R fxrt_capacity_spheres_2$' &&
+             nm '$BUILD/examples/obj/host-orbit/core/frame/api.o' | grep -q ' R fxrt_config_n1_w64_px1_l8_d0_x1a0$'"
 # And the matching build links (the check above is not a link that always fails).
 $CC -std=c11 -O2 $(sed 's/SPHERES=8/SPHERES=2/' <<<"$CFG_APP") -Icore -c examples/orbit.c -o "$mm/orbit-ok.o"
 check "the same files with matching macros link" $CC -o "$mm/orbit-ok" "$mm/orbit-ok.o" "$mm/io_host.o" $core

@@ -8,11 +8,23 @@
 const uint32_t FXRT_CONFIG_SYMBOL = 1;
 #define FXRT_CAPACITY_DEFINE(K, k, ks, cap, ...) const uint32_t FXRT_CAPACITY_SYMBOL(ks, cap) = cap;
 FXRT_KINDS(FXRT_CAPACITY_DEFINE)
+/* The bounce loop's stack (FXRT_STACK_RESERVE, fxrt_config.h): reserved
+ * here, placed by the linker script, which marks that it did. */
+#if FXRT_STACK_RESERVE
+uint8_t fxrt_stack_extra[FXRT_STACK_EXTRA] __attribute__((section(".stack_extra"), aligned(8)));
+#endif
+extern uint8_t fxrt_stack_extra[];
+extern const uint8_t fxrt_stack_extra_needs_linker_script_keep[];
+
 #define FXRT_CAPACITY_SAME(K, k, ks, cap, ...) &&capacities[GEOM_##K] == &FXRT_CAPACITY_SYMBOL(ks, cap)
 
 fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t world_size, uint32_t render_size,
                                    const uint32_t *config, const uint32_t *const *capacities)
 {
+    if (FXRT_STACK_RESERVE) {
+        PORT_KEEP(fxrt_stack_extra);
+        PORT_KEEP(fxrt_stack_extra_needs_linker_script_keep);
+    }
     if (w == NULL)
         return FXRT_ERR_NULL;
     if (world_size != sizeof(world_t) || render_size != sizeof(render_t) || config != &FXRT_CONFIG_SYMBOL ||

@@ -25,6 +25,17 @@
 #define FXRT_INLINE_WIDE inline __attribute__((always_inline))
 #endif
 
+/* FXRT_PORT_BARE: a bare-metal Arm target (arm-none-eabi), where the
+ * program's linker script owns the stack (fxrt_config.h's
+ * FXRT_STACK_RESERVE). PORT_KEEP(p): p is used (no code but its address
+ * in a register), so that what it points to is linked in. */
+#if defined(__arm__) && !defined(__linux__)
+#define FXRT_PORT_BARE 1
+#else
+#define FXRT_PORT_BARE 0
+#endif
+#define PORT_KEEP(p) __asm__ volatile("" : : "r"(p))
+
 #if defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__)
 #define FXRT_PORT_V6M_ASM 1
 #else

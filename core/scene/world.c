@@ -22,10 +22,7 @@ void world_init(world_t *w, color_t background)
     w->n_bounce = 0;
     w->bounded = false;
 #endif
-#if FXRT_MAX_SAMPLES > 1
-    w->samples = 1;
-    w->adaptive = false;
-#endif
+    (void)world_set_samples(w, 1, false); /* (always accepted) */
 }
 
 /* Grow the bounds of the bounded objects by the box lo..hi. */

@@ -141,24 +141,13 @@ static inline int32_t world_depth(const world_t *w)
     return 0;
 #endif
 }
-static inline int32_t world_samples(const world_t *w)
-{
 #if FXRT_MAX_SAMPLES > 1
-    return w->samples;
+static inline int32_t world_samples(const world_t *w) { return w->samples; }
+static inline bool world_adaptive(const world_t *w) { return w->adaptive; }
 #else
-    (void)w;
-    return 1;
+static inline int32_t world_samples(const world_t *w) { return (void)w, 1; }
+static inline bool world_adaptive(const world_t *w) { return (void)w, false; }
 #endif
-}
-static inline bool world_adaptive(const world_t *w)
-{
-#if FXRT_MAX_SAMPLES > 1
-    return w->adaptive;
-#else
-    (void)w;
-    return false;
-#endif
-}
 fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m);
 int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t direction, num_t angle_deg,
                         color_t color, bool shadows);
