@@ -21,7 +21,8 @@
 # generated" and names the command. Other generators keep their own blocks:
 # firmware/bench.sh (bench:header, bench:tables), firmware/bench-samples.sh
 # (bench:samples), firmware/frontier-report.sh (frontier),
-# firmware/benchfx.sh (benchfx:table, benchfx:versus), firmware/fit.sh
+# firmware/benchfx.sh (benchfx:table, benchfx:versus), firmware/oled/oled-table.sh and
+# oled-demo.sh (oled:table, oled:frames), firmware/fit.sh
 # (ram:table), firmware/size.sh (size; through `replace` below).
 set -euo pipefail
 BUILD=${BUILD:-build}

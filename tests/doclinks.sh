@@ -16,7 +16,7 @@ set -u
 . "$(dirname "$0")/lib.sh"
 cd "$(dirname "$0")/.." || exit 1
 pending=${DOCLINKS_PENDING-}
-known="$(host/docblocks.sh --names) bench:header bench:tables bench:samples frontier benchfx:table benchfx:versus ram:table"
+known="$(host/docblocks.sh --names) bench:header bench:tables bench:samples frontier benchfx:table benchfx:versus ram:table oled:table oled:frames"
 pages=(README.md)
 while IFS= read -r f; do pages+=("$f"); done < <(find docs -name '*.md' | sort)
 

@@ -72,7 +72,7 @@ $(BUILD)/tests/test_fxrt_$(1): tests/test_fxrt.c $(BUILD)/host/fx.o $(CORE_NUM:%
 endef
 $(foreach n,$(NUMBERS),$(eval $(call test_fxrt_rule,$(n))))
 
-SUITES_EXTRA += $(TEST_FXRT_BIN) tests/examples.sh
+SUITES_EXTRA += $(TEST_FXRT_BIN) tests/examples.sh tests/cmake.sh
 TEST_PREREQ  += $(TEST_FXRT_BIN) $(foreach e,$(EXAMPLES),$(EX_HOST)/$(e) $(EX_MB)/$(e).elf)
 .PHONY: examples
 
