@@ -142,8 +142,8 @@ else
 fw: $(FW_ELF)
 
 # Run in QEMU: deterministic (-icount), with a timeout; prints instructions=N.
-qemu: $(FW_ELF)
-	$(Q)BOARD=$(BOARD) QEMU_M=$(QEMU_M_$(BOARD)) TICK_NS=$(TICK_NS_$(BOARD)) \
+qemu: $(FW_ELF) $(BUILD)/fxrt
+	$(Q)BOARD=$(BOARD) QEMU_M=$(QEMU_M_$(BOARD)) TICK_NS=$(TICK_NS_$(BOARD)) FXRT=$(BUILD)/fxrt \
 	  firmware/qemu-run.sh $(FW_ELF) $(BUILD)/qemu/$(BOARD) $(FW_OUT)
 endif
 

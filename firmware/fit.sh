@@ -218,7 +218,14 @@ if [[ ${1:-} == link ]]; then
         [[ ${FIT_REPORT:-0} == 1 ]] && cat "$WORK/report"
     fi
     if [[ $NEED_RAM -gt $RAM_LEN && $FIXED -ge $RAM_LEN ]]; then
-        echo "${SCENE:-$DIR}: does not fit $BOARD ($RAM_LEN B RAM): needs $NEED_RAM B; even without objects the frame, stack and renderer state take $FIXED B, so no object fits: use a smaller frame or streaming mode (FB=stream)." >&2
+        # What to change: the samples' width when there are samples, a
+        # smaller frame, and streaming unless the build already streams.
+        samples=$(sed -nE 's/^#define FXRT_MAX_SAMPLES ([0-9]+).*/\1/p' "$DIR/scene_config.h")
+        width=$(sed -nE 's/^#define SCENE_WIDTH ([0-9]+).*/\1/p' "$DIR/scene_config.h")
+        advice="a smaller frame (SIZE=WxH)"
+        [[ ${samples:-1} -gt 1 ]] && advice="fewer samples or a narrower frame: with samples ${samples}, the renderer holds ${samples} x ${width} = $((samples * width)) columns; or $advice"
+        grep -q -- '-DFXRT_FB_MODE=2' "$DIR/fit-cflags" || advice+=", or streaming mode (FB=stream)"
+        echo "${SCENE:-$DIR}: does not fit $BOARD ($RAM_LEN B RAM): needs $NEED_RAM B; even without objects the frame, stack and renderer state take $FIXED B, so no object fits: use $advice." >&2
         rm -rf "$WORK"/*-*/
         exit 1
     fi

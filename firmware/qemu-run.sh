@@ -6,7 +6,9 @@
 # so instructions = ticks * TICK_NS / 32: a resolution of 1.25 instructions
 # on the 25 MHz MPS2 boards and 1.95 on the 16 MHz micro:bit. The firmware
 # writes NAME.ppm.part, renamed only after a clean exit: a failed run
-# leaves no image. A hang hits the timeout (FXRT_QEMU_TIMEOUT, default 300 s).
+# leaves no image; with FXRT (the host tool) set, NAME.png is written
+# beside it. A run over 10 s prints a progress line every 10 s on stderr.
+# A hang hits the timeout (FXRT_QEMU_TIMEOUT, default 300 s).
 set -u
 elf=$1 outdir=$2 out=$3
 shift_=5
@@ -16,8 +18,18 @@ log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 [ "$out" != - ] && rm -f "$outdir/$out.part"
 abs_elf=$(realpath "$elf")
-(cd "$outdir" && timeout "$timeout_s" qemu-system-arm -M "$QEMU_M" -nographic -monitor none -serial none \
-    -semihosting-config enable=on,target=native -icount shift=$shift_ -kernel "$abs_elf" </dev/null) >"$log" 2>&1
+(cd "$outdir" && exec timeout "$timeout_s" qemu-system-arm -M "$QEMU_M" -nographic -monitor none -serial none \
+    -semihosting-config enable=on,target=native -icount shift=$shift_ -kernel "$abs_elf" </dev/null) >"$log" 2>&1 &
+pid=$!
+start=$SECONDS
+while kill -0 "$pid" 2>/dev/null; do
+    sleep 1
+    t=$((SECONDS - start))
+    if [ $t -ge 10 ] && [ $((t % 10)) -eq 0 ] && kill -0 "$pid" 2>/dev/null; then
+        echo "qemu: $BOARD: $(basename "$elf"): running, ${t} s" >&2
+    fi
+done
+wait "$pid"
 rc=$?
 if [ $rc -eq 124 ]; then
     echo "qemu: $BOARD: $elf: timed out after ${timeout_s}s (hang?)" >&2
@@ -42,5 +54,10 @@ pixels=$(sed -nE 's/.*pixels=([0-9]+).*/\1/p' <<<"$rest")
 per_px=""
 [ -n "$pixels" ] && per_px=" instructions_per_pixel=$(awk -v i="$instr" -v p="$pixels" 'BEGIN { printf "%.1f", i / p }')"
 echo "board=$BOARD instructions=$instr$per_px $rest"
-[ "$out" != - ] && echo "wrote $outdir/$out"
+if [ "$out" != - ]; then
+    echo "wrote $outdir/$out"
+    if [ -n "${FXRT:-}" ] && [[ $out == *.ppm ]]; then
+        "$FXRT" sheet -o "$outdir/${out%.ppm}.png" "$outdir/$out" --no-labels && echo "wrote $outdir/${out%.ppm}.png"
+    fi
+fi
 exit 0

@@ -252,12 +252,12 @@ static int engine_setup_error(fxrt_err_t e, const render_t *state, const char *p
                               int32_t samples, char *err, size_t errlen)
 {
     const char *why = e == FXRT_ERR_RENDER && state->error ? state->error : fxrt_strerror(e);
-    if (e == FXRT_ERR_RENDER && samples > 1 && sc->samples_line > 0) {
-        if ((int64_t)samples * width > FXRT_RENDER_MAX_WIDTH)
-            snprintf(err, errlen, "%s:%d: samples %d at width %d: %s (%d)", path, sc->samples_line, (int)samples,
-                     width, why, FXRT_RENDER_MAX_WIDTH);
-        else
-            snprintf(err, errlen, "%s:%d: samples %d: %s", path, sc->samples_line, (int)samples, why);
+    bool too_wide = samples > 1 && (int64_t)samples * width > FXRT_RENDER_MAX_WIDTH;
+    if ((e == FXRT_ERR_RENDER || e == FXRT_ERR_WIDTH) && too_wide && sc->samples_line > 0) {
+        snprintf(err, errlen, "%s:%d: samples %d at width %d: samples x width wider than FXRT_RENDER_MAX_WIDTH (%d)",
+                 path, sc->samples_line, (int)samples, width, FXRT_RENDER_MAX_WIDTH);
+    } else if (e == FXRT_ERR_RENDER && samples > 1 && sc->samples_line > 0) {
+        snprintf(err, errlen, "%s:%d: samples %d: %s", path, sc->samples_line, (int)samples, why);
     } else if (e == FXRT_ERR_RENDER) {
         snprintf(err, errlen, "%s: %s", path, why);
     } else {

@@ -65,6 +65,14 @@ check "samples 7 at 640 wide: refused" fails "$FXRT" render "$out/samples7.scene
 check "samples 7 at 640 wide: FILE:LINE: and the reason ($(head -c 200 "$out/stderr.txt"))" \
     grep -q "^$out/samples7.scene:$s7line: samples 7 at width 640: samples x width wider than" "$out/stderr.txt"
 check "samples 7 at 640 wide: no image" test ! -e "$out/s7.png"
+# The scene compiler refuses it too, at the samples line, before the
+# board would (a firmware's renderer holds at most FXRT_MAX_DIM columns).
+mkdir -p "$out/s7fw"
+check "fxrt-scenec: samples 7 at 640 wide refused" fails "$BUILD/fxrt-scenec" "$out/samples7.scene" --number q16 \
+    --size 640x8 --out "$out/s7fw"
+check "fxrt-scenec: samples 7 at 640 wide: FILE:LINE: ($(head -c 200 "$out/stderr.txt"))" \
+    grep -q "^$out/samples7.scene:$s7line: samples 7 at width 640: samples x width (4480) wider than FXRT_MAX_DIM" "$out/stderr.txt"
+check "fxrt-scenec: no half-written output" test -z "$(ls -A "$out/s7fw")"
 check "samples 7 at 580 wide renders" "$FXRT" render "$out/samples7.scene" --size 580x20 -o "$out/s7.png"
 check "samples 7 at 600 high: refused" fails "$FXRT" render "$out/samples7.scene" --size 100x600 -o "$out/s7h.png"
 check "samples 7 at 600 high: the samples line and the height reason ($(head -c 200 "$out/stderr.txt"))" \
