@@ -37,19 +37,22 @@ fxrt_err_t fxrt_world_init_checked(world_t *w, color_t background, uint32_t worl
     return FXRT_OK;
 }
 
-/* A world the caller may use: FXRT_OK, FXRT_ERR_NULL, FXRT_ERR_INIT. */
-static fxrt_err_t fxrt_world_ok(const world_t *w)
+/* A world the caller may use, and (when not NULL already) the object a
+ * call takes: FXRT_OK, FXRT_ERR_NULL, FXRT_ERR_INIT. */
+static fxrt_err_t fxrt_world_ok_with(const world_t *w, const void *arg)
 {
-    if (w == NULL)
+    if (w == NULL || arg == NULL)
         return FXRT_ERR_NULL;
     return w->ready == WORLD_READY ? FXRT_OK : FXRT_ERR_INIT;
+}
+static fxrt_err_t fxrt_world_ok(const world_t *w)
+{
+    return fxrt_world_ok_with(w, w);
 }
 
 int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
 {
-    if (o == NULL)
-        return FXRT_ERR_NULL;
-    fxrt_err_t ok = fxrt_world_ok(w);
+    fxrt_err_t ok = fxrt_world_ok_with(w, o);
     if (ok != FXRT_OK)
         return ok;
     int32_t id = world_add(w, o);
@@ -72,7 +75,7 @@ int32_t fxrt_count(const world_t *w)
 
 fxrt_err_t fxrt_set_material(world_t *w, int32_t id, const material_t *m)
 {
-    fxrt_err_t ok = m == NULL ? FXRT_ERR_NULL : fxrt_world_ok(w);
+    fxrt_err_t ok = fxrt_world_ok_with(w, m);
     return ok != FXRT_OK ? ok : world_set_material(w, id, m);
 }
 
@@ -96,9 +99,7 @@ fxrt_err_t fxrt_set_samples(world_t *w, int32_t samples, bool adaptive)
 
 int32_t fxrt_add_light(world_t *w, const fxrt_light_t *l)
 {
-    if (l == NULL)
-        return FXRT_ERR_NULL;
-    fxrt_err_t ok = fxrt_world_ok(w);
+    fxrt_err_t ok = fxrt_world_ok_with(w, l);
     if (ok != FXRT_OK)
         return ok;
     return world_add_light(w, l->kind, l->position, l->direction, l->angle_deg, l->color, l->shadows);
