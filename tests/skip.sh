@@ -34,6 +34,10 @@ LIGHTING='^(shade_point|shade_point_k|shade_object|shade_object_k|shade_consts|r
 SHADOW='^(shadow_[a-z0-9_]+|world_occluded)([.].*)?$' # all of core/shadow.c
 LIBM='^(pow|powf|acos|acosf|cos|cosf|sin|sinf|sqrt|sqrtf|exp|log)$'
 
+# NAME.elf: skip_app with the core, linked without a board's linker script
+# (its symbols are all that is read), so without the core's stack
+# reservation (FXRT_STACK_RESERVE 0), as a program that reserves its stack
+# some other way.
 build() { # NAME FLAGS...
     local name=$1
     shift
@@ -41,7 +45,7 @@ build() { # NAME FLAGS...
     for f in $CORE; do srcs+=(core/$f.c); done
     arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Werror -O2 -mcpu=cortex-m0 -mthumb -ffreestanding -ffunction-sections -fdata-sections \
         -DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=1 -DFXRT_MAX_SPHERES=1 -DFXRT_MAX_TRIANGLES=1 -DFXRT_MAX_BOXES=1 \
-        -DFXRT_RENDER_MAX_WIDTH=32 "$@" -Icore tests/skip_app.c "${srcs[@]}" \
+        -DFXRT_RENDER_MAX_WIDTH=32 -DFXRT_STACK_RESERVE=0 "$@" -Icore tests/skip_app.c "${srcs[@]}" \
         -nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Wl,-e,main \
         -o "$out/$name.elf" 2>"$out/$name.log"
 }
