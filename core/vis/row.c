@@ -234,7 +234,7 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
             /* Float and double (and FXRT_NO_STEP) evaluate every form directly: stepping by
              * additions would accumulate rounding error across the row. */
             for (int32_t x = x0, ix = 2 * x0 - w + 1; x <= x1; x++, ix += 2)
-                if (render_covers(o, ix, iy))
+                if (render_covers_call(o, ix, iy))
                     RENDER_HIT(r, i, x, iy, rgb, lone);
             break;
 #endif
