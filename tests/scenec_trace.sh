@@ -3,7 +3,7 @@
 # (FXRT_MAX_DEPTH = the scene's depth when some object is reflective or
 # transparent, else 0; FXRT_MAX_SAMPLES = the scene's samples; FXRT_ADAPTIVE
 # 1 only for 'samples N adaptive'; FXRT_PHONG also for reflective objects;
-# FXRT_RENDER_MAX_WIDTH = samples x width, at most FXRT_MAX_DIM), and the
+# FXRT_RENDER_MAX_WIDTH = samples x width; beyond FXRT_MAX_DIM refused), and the
 # emitted tables (materials' reflection and index, scene_depth,
 # scene_samples, scene_adaptive) compile with the core's headers and hold
 # the same values in q16, float and double (read back by a small host
@@ -77,10 +77,21 @@ expect transparent-depth-0 32x24 "$cam
 depth 0
 $sphere $glass
 $plane $refl" 0 1 0 1 32
-# samples x width beyond FXRT_MAX_DIM (4096) is capped there.
-expect wide 1024x8 "$cam
+# samples x width up to FXRT_MAX_DIM (4096) is what the renderer holds;
+# beyond it the scene is refused at its samples line, with no output (a
+# board could not set the frame up).
+expect wide 256x8 "$cam
 samples 16
 $sphere" 0 16 0 0 4096
+mkdir -p "$tmp/too-wide"
+printf '%s\nsamples 16\n%s\n' "$cam" "$sphere" >"$tmp/too-wide.scene"
+if "$SCENEC" "$tmp/too-wide.scene" --number q16 --size 1024x8 --out "$tmp/too-wide" 2>"$tmp/too-wide.err"; then
+    bad "too-wide: fxrt-scenec accepted samples 16 at width 1024"
+else
+    check "too-wide: FILE:LINE: samples x width ($(head -c 160 "$tmp/too-wide.err"))" \
+        grep -q "^$tmp/too-wide.scene:2: samples 16 at width 1024: samples x width (16384) wider than FXRT_MAX_DIM (4096)" "$tmp/too-wide.err"
+    check "too-wide: no output" test -z "$(ls -A "$tmp/too-wide")"
+fi
 
 # The emitted tables, compiled per number type against the core's headers
 # (so the emitted macros must pass core/fxrt_config.h's checks) and printed
