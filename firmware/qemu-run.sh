@@ -21,16 +21,19 @@ abs_elf=$(realpath "$elf")
 (cd "$outdir" && exec timeout "$timeout_s" qemu-system-arm -M "$QEMU_M" -nographic -monitor none -serial none \
     -semihosting-config enable=on,target=native -icount shift=$shift_ -kernel "$abs_elf" </dev/null) >"$log" 2>&1 &
 pid=$!
-start=$SECONDS
-while kill -0 "$pid" 2>/dev/null; do
-    sleep 1
-    t=$((SECONDS - start))
-    if [ $t -ge 10 ] && [ $((t % 10)) -eq 0 ] && kill -0 "$pid" 2>/dev/null; then
-        echo "qemu: $BOARD: $(basename "$elf"): running, ${t} s" >&2
-    fi
-done
+# The progress lines come from a ticker beside QEMU, so a short run ends
+# as soon as QEMU does (no polling).
+(trap 'kill $s 2>/dev/null; exit 0' TERM
+ t=0
+ while sleep 10 & s=$!; wait $s; do
+     t=$((t + 10))
+     echo "qemu: $BOARD: $(basename "$elf"): running, ${t} s" >&2
+ done) &
+ticker=$!
 wait "$pid"
 rc=$?
+kill "$ticker" 2>/dev/null
+wait "$ticker" 2>/dev/null
 if [ $rc -eq 124 ]; then
     echo "qemu: $BOARD: $elf: timed out after ${timeout_s}s (hang?)" >&2
 elif [ $rc -ne 0 ]; then

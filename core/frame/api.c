@@ -209,9 +209,7 @@ fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t 
         r->out_height = (uint16_t)cam->height;
         return FXRT_OK;
     }
-    const char *why = r->error;
-    r->vis.world = NULL;
-    r->error = why;
+    r->vis.world = NULL; /* (r->error keeps render_setup's reason) */
     return FXRT_ERR_RENDER;
 }
 
