@@ -54,7 +54,7 @@
 
 typedef num_t fxrt_num_t;           /* Q16.16 (int32_t), float or double */
 typedef vec3_t fxrt_vec3_t;         /* x, y, z */
-typedef color_t fxrt_color_t;       /* r, g, b in 1/255 units: 0 off, 255 full */
+typedef color_t fxrt_color_t;       /* r, g, b in 1/255 units: 0 off, 255 full (every colour) */
 typedef world_t fxrt_world_t;       /* the objects, lights and settings */
 typedef cam_t fxrt_view_t;          /* a camera, set up (fxrt_camera_*) */
 typedef render_t fxrt_render_t;     /* a frame's state (fxrt_render_setup) */
@@ -63,10 +63,10 @@ typedef material_t fxrt_material_t; /* .kind, .exponent, .specular, .reflection,
 /* A number literal: FXRT_NUM(0.5). */
 #define FXRT_NUM(x) NUM(x)
 /* A colour literal from intensity fractions 0..1, quantised as the scene
- * loader does (0.7 is 178.5 of 255 in every build). */
+ * loader does (0.7 is 178.5 of 255 in every build). One unit serves every
+ * colour: objects, the background, lights, the ambient, specular and
+ * reflection colours. */
 #define FXRT_RGB(r, g, b) fxrt_color(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
-/* A light's, the ambient or a specular colour: fractions, FXRT_NUM(1) full. */
-#define FXRT_FRACTIONS(r, g, b) fxrt_color(NUM(r), NUM(g), NUM(b))
 
 /* The kinds (FXRT_PLANE, FXRT_SPHERE, FXRT_TRIANGLE, FXRT_BOX: one per row
  * of scene/kinds.h), materials (FXRT_MATERIAL_FLAT, _LAMBERT, _PHONG,
@@ -78,7 +78,8 @@ typedef material_kind_t fxrt_material_kind_t;
 typedef light_kind_t fxrt_light_kind_t;
 typedef cam_kind_t fxrt_camera_kind_t;
 
-/* Colours in 1/255 units, vectors, and the arithmetic an animation needs,
+/* Colours in 1/255 units (0..255 per channel, FXRT_ERR_COLOR outside; a
+ * channel need not be a whole number: 178.5 is 0.7), vectors, and the arithmetic an animation needs,
  * in the build's number type. */
 static inline fxrt_color_t fxrt_color(fxrt_num_t r, fxrt_num_t g, fxrt_num_t b) { return color_make(r, g, b); }
 static inline fxrt_vec3_t fxrt_vec3(fxrt_num_t x, fxrt_num_t y, fxrt_num_t z) { return vec3_make(x, y, z); }
@@ -118,7 +119,7 @@ fxrt_err_t fxrt_render_setup_checked(render_t *r, const world_t *w, const cam_t 
 
 /* --- world ---------------------------------------------------------------- */
 
-/* Empty world with a background colour (0..1 per channel). Returns FXRT_OK,
+/* Empty world with a background colour. Returns FXRT_OK,
  * FXRT_ERR_NULL, FXRT_ERR_COLOR, or FXRT_ERR_CONFIG when the core was
  * built with another configuration (see above; normally the link fails
  * first). */
@@ -140,7 +141,8 @@ typedef geom_desc_t fxrt_object_t;
  * fxrt_err_t: FXRT_ERR_NULL, FXRT_ERR_KIND, FXRT_ERR_FULL when
  * FXRT_MAX_<KIND> objects of that kind are there already (a kind with
  * capacity 0 is compiled out), FXRT_ERR_COORD, _DIRECTION, _RADIUS,
- * _COLOR, _BOX, _TINY, _MATERIAL. A refused object leaves the world
+ * _COLOR, _BOX, _TINY, and the material's codes (fxrt_set_material's
+ * but _ID), checked before the object is added. A refused object leaves the world
  * unchanged. A plane's normal need not be unit length; a collinear
  * triangle is accepted and never hit. */
 int32_t fxrt_add(fxrt_world_t *w, const fxrt_object_t *o);
@@ -149,12 +151,13 @@ int32_t fxrt_add(fxrt_world_t *w, const fxrt_object_t *o);
 int32_t fxrt_count(const fxrt_world_t *w);
 
 /* The material of object id (default flat): FXRT_OK, FXRT_ERR_NULL,
- * FXRT_ERR_ID, FXRT_ERR_MATERIAL (unknown kind, an exponent outside
- * 1..FXRT_PHONG_MAX_EXPONENT, lighting or phong compiled out),
- * FXRT_ERR_COLOR. */
+ * FXRT_ERR_ID, FXRT_ERR_MATERIAL (unknown kind, lighting or phong compiled
+ * out), FXRT_ERR_EXPONENT (outside 1..FXRT_PHONG_MAX_EXPONENT),
+ * FXRT_ERR_INDEX (outside FXRT_INDEX_MIN..FXRT_INDEX_MAX), FXRT_ERR_COLOR
+ * (the specular or reflection colour). */
 fxrt_err_t fxrt_set_material(fxrt_world_t *w, int32_t id, const fxrt_material_t *m);
 
-/* The ambient colour (fractions; only black with FXRT_MAX_LIGHTS 0). */
+/* The ambient colour (only black with FXRT_MAX_LIGHTS 0). */
 fxrt_err_t fxrt_set_ambient(fxrt_world_t *w, fxrt_color_t ambient);
 
 /* The largest bounce of reflection and refraction, 0..FXRT_MAX_DEPTH
@@ -166,7 +169,7 @@ fxrt_err_t fxrt_set_samples(fxrt_world_t *w, int32_t samples, bool adaptive);
 /* --- lights ---------------------------------------------------------------
  * A light as data: .kind (FXRT_LIGHT_POINT, _DIRECTIONAL, _SPOT),
  * .position (point, spot), .direction (directional, spot), .angle_deg (a
- * spot's half-angle, (0, 90]), .color (fractions 0..1), .shadows. */
+ * spot's half-angle, (0, 90]), .color, .shadows. */
 typedef struct {
     fxrt_light_kind_t kind;
     fxrt_vec3_t position, direction;

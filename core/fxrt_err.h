@@ -15,7 +15,7 @@ typedef enum {
     FXRT_ERR_TINY = -3,      /* float/double: a nonzero value below 2^-16, 0 in Q16.16 */
     FXRT_ERR_DIRECTION = -4, /* a zero normal, gaze or up vector */
     FXRT_ERR_RADIUS = -5,    /* sphere radius outside (0, FXRT_RADIUS_LIMIT] */
-    FXRT_ERR_COLOR = -6,     /* a colour channel outside 0..1 */
+    FXRT_ERR_COLOR = -6,     /* a colour channel outside 0..255 (1/255 units) */
     FXRT_ERR_BOX = -7,       /* box min > max on some axis */
     FXRT_ERR_SIZE = -8,      /* image width or height outside 1..FXRT_MAX_DIM */
     FXRT_ERR_UP = -9,        /* up parallel to the gaze */

@@ -6,10 +6,9 @@
  * throughout; the board's frames equal the host's byte for byte
  * (tests/examples.sh).
  *
- * Colours: an object's colour with FXRT_RGB (fractions of full intensity,
- * quantised as a scene file's), lights, the ambient, specular and
- * reflection colours with FXRT_FRACTIONS (the light's intensity per
- * channel).
+ * Colours: every colour (objects, lights, the ambient, specular and
+ * reflection) with FXRT_RGB, fractions of full intensity quantised as a
+ * scene file's.
  *
  * Build (the capacities must be the same for the core and this file, see
  * docs/EMBEDDING.md): tests/examples.mk, or CMake (examples/cmake/). */
@@ -42,18 +41,18 @@ static void add(fxrt_object_t o, const char *what)
 __attribute__((noinline)) static void build_world(void)
 {
     must(fxrt_world_init(&world, FXRT_RGB(0.08, 0.1, 0.2)), "world");
-    must(fxrt_set_ambient(&world, FXRT_FRACTIONS(0.12, 0.12, 0.15)), "ambient");
+    must(fxrt_set_ambient(&world, FXRT_RGB(0.12, 0.12, 0.15)), "ambient");
     const fxrt_material_t lambert = {.kind = FXRT_MATERIAL_LAMBERT};
     const fxrt_material_t phong = {.kind = FXRT_MATERIAL_PHONG, .exponent = 40,
-                                   .specular = FXRT_FRACTIONS(0.8, 0.8, 0.8)};
+                                   .specular = FXRT_RGB(0.8, 0.8, 0.8)};
     add((fxrt_object_t){.kind = FXRT_PLANE, .p = {V3(0, -1, 0), V3(0, 1, 0)}, .color = FXRT_RGB(0.55, 0.6, 0.5),
                         .material = lambert},
         "floor");
     add((fxrt_object_t){.kind = FXRT_SPHERE, .p = {V3(-0.9, -0.2, -0.6)}, .radius = FXRT_NUM(0.8),
                         .color = FXRT_RGB(0.9, 0.9, 0.95),
                         .material = {.kind = FXRT_MATERIAL_REFLECTIVE, .exponent = 80,
-                                     .specular = FXRT_FRACTIONS(1, 1, 1),
-                                     .reflection = FXRT_FRACTIONS(0.7, 0.7, 0.7)}},
+                                     .specular = FXRT_RGB(1, 1, 1),
+                                     .reflection = FXRT_RGB(0.7, 0.7, 0.7)}},
         "mirror sphere");
     add((fxrt_object_t){.kind = FXRT_SPHERE, .p = {V3(0.9, -0.4, 0.7)}, .radius = FXRT_NUM(0.6),
                         .color = FXRT_RGB(0.85, 0.95, 0.9),
@@ -66,11 +65,11 @@ __attribute__((noinline)) static void build_world(void)
                         .color = FXRT_RGB(0.55, 0.3, 0.75), .material = lambert},
         "triangle");
     must(fxrt_add_light(&world, &(fxrt_light_t){.kind = FXRT_LIGHT_POINT, .position = V3(3, 4, 3),
-                                               .color = FXRT_FRACTIONS(0.8, 0.8, 0.75), .shadows = true}),
+                                               .color = FXRT_RGB(0.8, 0.8, 0.75), .shadows = true}),
          "point light");
     must(fxrt_add_light(&world, &(fxrt_light_t){.kind = FXRT_LIGHT_SPOT, .position = V3(-3, 5, 2),
                                                .direction = V3(0.6, -1, -0.5), .angle_deg = FXRT_NUM(30),
-                                               .color = FXRT_FRACTIONS(0.6, 0.5, 0.3), .shadows = true}),
+                                               .color = FXRT_RGB(0.6, 0.5, 0.3), .shadows = true}),
          "spot light");
     must(fxrt_set_depth(&world, 4), "depth");
     must(fxrt_set_samples(&world, 2, true), "samples");

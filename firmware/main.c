@@ -92,7 +92,7 @@ static void build_scene(void)
 #if FXRT_MAX_LIGHTS > 0
     /* After the objects, as engine_build does: ambient, then the lights in
      * scene order (light i gets index i, its bit in a pixel's key). */
-    e = world_set_ambient(&world, scene_ambient);
+    e = fxrt_set_ambient(&world, scene_ambient);
     if (e != FXRT_OK)
         fail2("ambient: ", fxrt_strerror(e));
     for (int32_t i = 0; i < SCENE_LIGHTS; i++) {

@@ -43,21 +43,6 @@ static color_t engine_color(const double c[3])
     return color_make(engine_channel(c[0]), engine_channel(c[1]), engine_channel(c[2]));
 }
 
-/* A fraction (light colour, ambient, specular, reflection: NUM_ONE is full intensity)
- * quantised to 2^-16: round(x * 65536) / 65536. It has at most 17
- * significant bits, so Q16.16, float and double all hold the same value
- * (engine_channel does the same for colours in 1/255 units). */
-num_t ENGINE_SYM(engine_fraction)(double x)
-{
-    return ENGINE_SYM(engine_num)(floor(x * 65536.0 + 0.5) / 65536.0);
-}
-
-static color_t engine_fraction3(const double c[3])
-{
-    return color_make(ENGINE_SYM(engine_fraction)(c[0]), ENGINE_SYM(engine_fraction)(c[1]),
-                      ENGINE_SYM(engine_fraction)(c[2]));
-}
-
 /* The refraction index quantised like a fraction (round(x * 65536) /
  * 65536: at most 23 significant bits up to FXRT_INDEX_MAX = 100, so every
  * build holds it exactly), but not below FXRT_INDEX_MIN: 0.01 would round
@@ -83,8 +68,8 @@ static material_t engine_material(const scene_obj_t *o)
     }
     /* Fields a material does not use: zero, as world_set_material stores them. */
     m.exponent = (uint16_t)(phong_terms ? o->exponent : 0);
-    m.specular = phong_terms ? engine_fraction3(o->specular) : black;
-    m.reflection = o->material == SCENE_MAT_REFLECTIVE ? engine_fraction3(o->reflection) : black;
+    m.specular = phong_terms ? engine_color(o->specular) : black;
+    m.reflection = o->material == SCENE_MAT_REFLECTIVE ? engine_color(o->reflection) : black;
     m.index = o->material == SCENE_MAT_TRANSPARENT ? ENGINE_SYM(engine_index)(o->index) : NUM_ZERO;
     return m;
 }
@@ -123,7 +108,7 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
     d->depth = sc->depth;
     d->samples = sc->samples;
     d->adaptive = sc->adaptive != 0;
-    d->ambient = engine_fraction3(sc->ambient);
+    d->ambient = engine_color(sc->ambient);
     d->nlights = sc->nlights;
     for (int i = 0; i < sc->nlights; i++) {
         const scene_light_t *l = &sc->light[i];
@@ -135,7 +120,7 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
         t->position = l->kind == SCENE_LIGHT_DIRECTIONAL ? zero : engine_vec(l->position);
         t->direction = l->kind == SCENE_LIGHT_POINT ? zero : engine_vec(l->direction);
         t->angle_deg = l->kind == SCENE_LIGHT_SPOT ? ENGINE_SYM(engine_num)(l->angle_deg) : NUM_ZERO;
-        t->color = engine_fraction3(l->color);
+        t->color = engine_color(l->color);
         t->shadows = l->shadows != 0;
     }
     return 0;
@@ -182,7 +167,7 @@ int ENGINE_SYM(engine_build)(const char *path, const scene_t *sc, int width, int
     }
     /* Default ambient (black) is always accepted, also with lighting
      * compiled out. */
-    fxrt_err_t ae = world_set_ambient(w, d.ambient);
+    fxrt_err_t ae = fxrt_set_ambient(w, d.ambient);
     if (ae != FXRT_OK) {
         snprintf(err, errlen, "%s:%d: ambient cannot be set in %s: %s", path, sc->ambient_line, NUM_NAME,
                  fxrt_strerror(ae));

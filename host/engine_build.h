@@ -34,11 +34,6 @@ typedef struct {
     bool bounces;  /* some object is reflective or transparent */
 } engine_desc_t;
 
-/* A fraction (light colour, ambient, specular, reflection) x in 0..1 as
- * the build stores it: round(x * 65536) / 65536, the same value in every
- * build. */
-num_t ENGINE_SYM(engine_fraction)(double x);
-
 /* A refraction index x in [FXRT_INDEX_MIN, FXRT_INDEX_MAX] as the build
  * stores it: round(x * 65536) / 65536, but at least the smallest multiple
  * of 2^-16 that is >= FXRT_INDEX_MIN (0.01 -> 656/65536, since 655/65536

@@ -244,7 +244,7 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
         fputs("    {.kind = GEOM_SPHERE},\n", data);
     fputs("};\n", data);
 
-    /* Ambient and lights, which the firmware adds with world_set_ambient
+    /* Ambient and lights (1/255 units), which the firmware adds with fxrt_set_ambient
      * and fxrt_add_light when FXRT_MAX_LIGHTS > 0 (SCENE_LIGHTS of them;
      * none when lighting is compiled out, where they change no pixel). */
     fputs("static const color_t scene_ambient = ", data);

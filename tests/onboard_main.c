@@ -70,7 +70,7 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
     }
     /* Black ambient is accepted also with lighting compiled out. */
     if (e == FXRT_OK)
-        e = world_set_ambient(&world, *s->ambient);
+        e = fxrt_set_ambient(&world, *s->ambient);
     for (int32_t i = 0; e == FXRT_OK && i < s->nlights; i++) {
         int32_t li = fxrt_add_light(&world, &s->lights[i]);
         e = li == i ? FXRT_OK : (li < 0 ? li : FXRT_ERR_LIGHT);

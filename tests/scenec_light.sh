@@ -115,8 +115,11 @@ done
 check "lit-keywords: 3 lights and 4 materials read back" test "$(grep -c '^light' "$tmp/rb-q16.txt") $(grep -c '^object' "$tmp/rb-q16.txt")" = "3 4"
 check "lit-keywords: q16 and float tables agree" cmp -s "$tmp/rb-q16.txt" "$tmp/rb-float.txt"
 check "lit-keywords: q16 and double tables agree" cmp -s "$tmp/rb-q16.txt" "$tmp/rb-double.txt"
-# 0.1 is 6554/65536 in every type, not 0.1.
-check "ambient 0.1 is quantised to 6554/65536" grep -qx "ambient $(awk 'BEGIN{printf "%.17g", 6554/65536}') $(awk 'BEGIN{printf "%.17g", 6554/65536}') $(awk 'BEGIN{printf "%.17g", 6554/65536}')" "$tmp/rb-double.txt"
-check "phong exponent and white specular on the sphere" grep -qx "object 1 material 2 exponent 64 specular 1 1 1" "$tmp/rb-float.txt"
+# Every colour is emitted in 1/255 units, as the API takes it (the world
+# holds a light's or the ambient's as a fraction: tests/test_fxrt.c,
+# test_scene_light.c). 0.1 is round(0.1 * 255 * 65536) / 65536 = 25.5 in
+# every type.
+check "ambient 0.1 is 25.5 of 255" grep -qx "ambient 25.5 25.5 25.5" "$tmp/rb-double.txt"
+check "phong exponent and white specular on the sphere" grep -qx "object 1 material 2 exponent 64 specular 255 255 255" "$tmp/rb-float.txt"
 
 report scenec_light

@@ -154,16 +154,18 @@ check "readback: q16 and double tables agree" cmp -s "$tmp/rb-q16.txt" "$tmp/rb-
 check "depth, samples and adaptive read back" grep -qx "depth 7 samples 3 adaptive 1" "$tmp/rb-q16.txt"
 check "config: depth 7, samples 3, adaptive" grep -qx "config depth 7 samples 3 adaptive 1" "$tmp/rb-float.txt"
 q() { awk -v n="$1" 'BEGIN { printf "%.17g", n / 65536 }'; }
-# 0.3 -> 19661/65536; 0.5 -> 32768; 0.999999 -> 65536; 0.00002 -> 1.
-check "reflective: kind, exponent, specular and reflection as multiples of 2^-16" \
-    grep -qx "object 0 material 3 exponent 64 specular 1 $(q 19661) 0 reflection 0.5 1 $(q 1) index 0" "$tmp/rb-double.txt"
+# Colours in 1/255 units, quantised to 2^-16 of a unit: round(x * 255 *
+# 65536): 0.3 -> 5013504 (76.5); 0.5 -> 127.5; 0.999999 -> 16711663.29 ->
+# 16711663; 0.00002 -> 334.23 -> 334.
+check "reflective: kind, exponent, specular and reflection as multiples of 2^-16 of 1/255" \
+    grep -qx "object 0 material 3 exponent 64 specular 255 76.5 0 reflection 127.5 $(q 16711663) $(q 334) index 0" "$tmp/rb-double.txt"
 # 1.33 -> 87162.88 -> 87163/65536; 0.01 -> 656/65536 (655 is below 0.01); 100 exact.
 check "transparent 1.33: index 87163/65536, nothing else" \
     grep -qx "object 1 material 4 exponent 0 specular 0 0 0 reflection 0 0 0 index $(q 87163)" "$tmp/rb-double.txt"
 check "transparent 0.01: index 656/65536" grep -q "^object 2 material 4 .* index $(q 656)\$" "$tmp/rb-float.txt"
 check "transparent 100: index 100" grep -q "^object 3 material 4 .* index 100\$" "$tmp/rb-q16.txt"
 check "phong: no reflection, no index" \
-    grep -qx "object 4 material 2 exponent 8 specular 1 1 1 reflection 0 0 0 index 0" "$tmp/rb-q16.txt"
+    grep -qx "object 4 material 2 exponent 8 specular 255 255 255 reflection 0 0 0 index 0" "$tmp/rb-q16.txt"
 check "flat: all zero" grep -qx "object 5 material 0 exponent 0 specular 0 0 0 reflection 0 0 0 index 0" "$tmp/rb-q16.txt"
 # Defaults when the scene has no depth or samples line.
 check "defaults: scene_depth 4, scene_samples 1, not adaptive" \

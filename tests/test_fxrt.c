@@ -390,7 +390,7 @@ static void test_safety(void)
     static fxrt_world_t raw;
     fxrt_object_t s0 = {.kind = FXRT_SPHERE, .p = {V(0, 0, -3)}, .radius = N(1), .color = C(0.5, 0.5, 0.5)};
     fxrt_material_t m0 = {.kind = FXRT_MATERIAL_FLAT};
-    fxrt_light_t l0 = {.kind = FXRT_LIGHT_POINT, .position = V(0, 5, 0), .color = FXRT_FRACTIONS(1, 1, 1)};
+    fxrt_light_t l0 = {.kind = FXRT_LIGHT_POINT, .position = V(0, 5, 0), .color = C(1, 1, 1)};
     CHECK(fxrt_add(&raw, &s0) == FXRT_ERR_INIT && fxrt_count(&raw) == 0);
     CHECK(fxrt_set_material(&raw, 0, &m0) == FXRT_ERR_INIT && fxrt_add_light(&raw, &l0) == FXRT_ERR_INIT);
     CHECK(fxrt_set_ambient(&raw, C(0, 0, 0)) == FXRT_ERR_INIT && fxrt_set_depth(&raw, 0) == FXRT_ERR_INIT);
@@ -529,8 +529,10 @@ static void test_api_sequence(long n)
             o.material.exponent = (uint16_t)pick(1100);
             o.material.specular = C(uni(0, 1), uni(0, 1), uni(0, 1));
             o.material.index = N(uni(0, 3));
+            int32_t before = fxrt_count(&fw);
             int32_t id = fxrt_add(pick(16) ? &fw : NULL, pick(16) ? &o : NULL);
             CHECK_SWEEP(id < fxrt_count(&fw) || id < 0, "call %ld: id %ld of %ld", i, (long)id, (long)fxrt_count(&fw));
+            CHECK_SWEEP(id >= 0 || fxrt_count(&fw) == before, "call %ld: refused (%ld) but the world grew", i, (long)id);
             break;
         }
         case 2: { /* a material for any id */
@@ -598,6 +600,67 @@ static void test_api_sequence(long n)
     CHECK(ok_rows > n / 200 && refused > n / 200); /* both sides exercised */
 }
 
+/* One colour unit: every colour the API takes is in 1/255 units. A
+ * light's, the ambient's, a specular and a reflection colour given as the
+ * level of a fraction x must be held as the fraction a scene file's x
+ * gives, round(65536 x) / 65536, computed here from x directly (not via
+ * levels), for x drawn over 0..1 with up to 5 decimals, and for every
+ * whole level k / 255. */
+static void test_color_unit(void)
+{
+    static fxrt_world_t cw;
+    int checked = 0;
+    for (int i = 0; i < 20000; i++) {
+        double x[3];
+        for (int k = 0; k < 3; k++)
+            x[k] = i < 256 * 3 ? (double)((i + k * 97) % 256) / 255.0 : (double)pick(100001) / 100000.0;
+        /* The level as the scene loader stores it (COLOR_FRAC). */
+        color_t lv = color_make(N(floor(x[0] * 255 * 65536 + 0.5) / 65536), N(floor(x[1] * 255 * 65536 + 0.5) / 65536),
+                                N(floor(x[2] * 255 * 65536 + 0.5) / 65536));
+        CHECK_SWEEP(fxrt_world_init(&cw, C(0, 0, 0)) == FXRT_OK, "init");
+        fxrt_object_t o = {.kind = FXRT_SPHERE, .p = {V(0, 0, -3)}, .radius = N(1), .color = lv};
+        o.material = (fxrt_material_t){.kind = FXRT_MATERIAL_REFLECTIVE, .exponent = 8, .specular = lv, .reflection = lv};
+        fxrt_light_t l = {.kind = FXRT_LIGHT_POINT, .position = V(0, 5, 0), .color = lv};
+#if FXRT_MAX_LIGHTS > 0 && FXRT_PHONG
+        CHECK_SWEEP(fxrt_add(&cw, &o) == 0 && fxrt_add_light(&cw, &l) == 0 && fxrt_set_ambient(&cw, lv) == FXRT_OK,
+                    "x %.6f: refused", x[0]);
+        checked++;
+        const material_t *m = &world_common(&cw, GEOM_SPHERE, 0)->mat;
+        for (int k = 0; k < 3; k++) {
+            double want = floor(x[k] * 65536 + 0.5) / 65536;
+            double got[4] = {D((&cw.lights[0].color.r)[k]), D((&cw.ambient.r)[k]), D((&m->specular.r)[k]),
+                             D((&m->reflection.r)[k])};
+            for (int j = 0; j < 4; j++)
+                CHECK_SWEEP(got[j] == want, "x %.6f: colour %d channel %d holds %.9f, want %.9f", x[k], j, k, got[j],
+                            want);
+        }
+#else
+        (void)l;
+        CHECK_SWEEP(fxrt_add(&cw, &o) == FXRT_ERR_MATERIAL && fxrt_count(&cw) == 0, "lighting compiled out");
+        checked++;
+#endif
+    }
+    CHECK(checked == 20000);
+    /* Out of the unit: each refused with FXRT_ERR_COLOR, nothing added. */
+    CHECK(fxrt_world_init(&cw, C(0, 0, 0)) == FXRT_OK);
+    const double bad[] = {-0.5, 255.5, 1e6};
+    for (size_t b = 0; b < sizeof bad / sizeof bad[0]; b++) {
+        color_t c = color_make(N(0), N(bad[b]), N(0));
+        fxrt_object_t o = {.kind = FXRT_SPHERE, .p = {V(0, 0, -3)}, .radius = N(1), .color = c};
+        CHECK(fxrt_add(&cw, &o) == FXRT_ERR_COLOR);
+        o.color = C(1, 1, 1);
+        o.material = (fxrt_material_t){.kind = FXRT_MATERIAL_PHONG, .exponent = 8, .specular = c};
+        fxrt_light_t l = {.kind = FXRT_LIGHT_POINT, .position = V(0, 5, 0), .color = c};
+#if FXRT_MAX_LIGHTS > 0 && FXRT_PHONG
+        CHECK(fxrt_add(&cw, &o) == FXRT_ERR_COLOR && fxrt_add_light(&cw, &l) == FXRT_ERR_COLOR);
+        CHECK(fxrt_set_ambient(&cw, c) == FXRT_ERR_COLOR);
+#else
+        (void)l;
+#endif
+        CHECK(fxrt_count(&cw) == 0);
+    }
+}
+
 int main(void)
 {
     test_ids();
@@ -607,6 +670,7 @@ int main(void)
     test_render_and_config();
     test_strerror();
     test_random(200000);
+    test_color_unit();
     test_safety();
     test_api_sequence(100000);
     return check_report("test_fxrt_" NUM_NAME);

@@ -53,17 +53,23 @@ static void test_describe(void)
     CHECK_MSG(scene_parse("t", lit, strlen(lit), &sc, err, sizeof err) == 0, "%s", err);
     CHECK(ENGINE_SYM(engine_describe)(&sc, 64, 48, &d) == 0);
     /* 0.1 * 65536 = 6553.6 -> 6554; 0.00002 * 65536 = 1.31 -> 1. */
-    CHECK(is_q(d.ambient.r, 6554) && is_q(d.ambient.g, 1) && is_q(d.ambient.b, 65536));
+    /* The description holds every colour in 1/255 units, as the API takes
+     * it (0.1 -> 25.5); the world holds the fraction (color_fractions). */
+    CHECK(D(d.ambient.r) == 25.5);
+    color_t a = color_fractions(d.ambient);
+    CHECK(is_q(a.r, 6554) && is_q(a.g, 1) && is_q(a.b, 65536));
     CHECK(d.nlights == 3);
     const fxrt_light_t *l = &d.lights[0];
     CHECK(l->kind == LIGHT_POINT && vec_is(l->position, 4, 3.5, -2) && vec_is(l->direction, 0, 0, 0));
     CHECK(l->angle_deg == NUM_ZERO && l->shadows);
     /* 0.7 -> 45875.2 -> 45875; 0.3 -> 19660.8 -> 19661. */
-    CHECK(is_q(l->color.r, 45875) && is_q(l->color.g, 19661) && is_q(l->color.b, 65536));
+    color_t c = color_fractions(l->color);
+    CHECK(is_q(c.r, 45875) && is_q(c.g, 19661) && is_q(c.b, 65536));
     l = &d.lights[1];
     CHECK(l->kind == LIGHT_DIRECTIONAL && vec_is(l->direction, -1, -2, -2) && vec_is(l->position, 0, 0, 0));
     CHECK(l->angle_deg == NUM_ZERO && !l->shadows);
-    CHECK(is_q(l->color.r, 1) && is_q(l->color.g, 0) && is_q(l->color.b, 32768));
+    c = color_fractions(l->color);
+    CHECK(is_q(c.r, 1) && is_q(c.g, 0) && is_q(c.b, 32768));
     l = &d.lights[2];
     CHECK(l->kind == LIGHT_SPOT && vec_is(l->position, 4, 4, 4) && vec_is(l->direction, -1, -1, -1));
     CHECK(l->shadows);
@@ -73,7 +79,8 @@ static void test_describe(void)
      * up to full), 0.1 -> 6554; lambert and flat with zero extras. */
     const material_t *m = &d.obj[0].material;
     CHECK(m->kind == MATERIAL_PHONG && m->exponent == 64);
-    CHECK(is_q(m->specular.r, 19661) && is_q(m->specular.g, 65536) && is_q(m->specular.b, 6554));
+    c = color_fractions(m->specular);
+    CHECK(is_q(c.r, 19661) && is_q(c.g, 65536) && is_q(c.b, 6554));
     m = &d.obj[1].material;
     CHECK(m->kind == MATERIAL_LAMBERT && m->exponent == 0 && is_q(m->specular.r, 0) && is_q(m->specular.b, 0));
     m = &d.obj[2].material;
@@ -89,10 +96,12 @@ static void test_build(void)
     CHECK_MSG(ENGINE_SYM(engine_build)("t", &sc, 64, 48, &w, &cam, err, sizeof err) == 0, "%s", err);
 #if FXRT_MAX_LIGHTS > 0
     CHECK(w.n_lights == 3 && w.n_lit == 2);
-    CHECK(w.ambient.r == d.ambient.r && w.ambient.g == d.ambient.g && w.ambient.b == d.ambient.b);
+    color_t a = color_fractions(d.ambient);
+    CHECK(w.ambient.r == a.r && w.ambient.g == a.g && w.ambient.b == a.b);
     for (int i = 0; i < 3; i++) {
         CHECK(w.lights[i].kind == (uint8_t)d.lights[i].kind && w.lights[i].shadows == d.lights[i].shadows);
-        CHECK(w.lights[i].color.r == d.lights[i].color.r && w.lights[i].color.b == d.lights[i].color.b);
+        color_t c = color_fractions(d.lights[i].color);
+        CHECK(w.lights[i].color.r == c.r && w.lights[i].color.b == c.b);
     }
     /* Directional: the unit vector towards the light, (1, 2, 2) / 3. */
     CHECK_MSG(fabs(D(w.lights[1].dir.x) - 1.0 / 3) < 1e-4 && fabs(D(w.lights[1].dir.y) - 2.0 / 3) < 1e-4 &&
@@ -105,7 +114,7 @@ static void test_build(void)
     uint16_t idx;
     CHECK(world_find(&w, 0, &k, &idx) && k == GEOM_SPHERE);
     const geom_common_t *c = world_common(&w, k, idx);
-    CHECK(c->mat.kind == MATERIAL_PHONG && c->mat.exponent == 64 && c->mat.specular.r == d.obj[0].material.specular.r);
+    CHECK(c->mat.kind == MATERIAL_PHONG && c->mat.exponent == 64 && c->mat.specular.r == color_fractions(d.obj[0].material.specular).r);
 #endif
 }
 

@@ -1,7 +1,8 @@
 /* test_scene_trace: the reflection, refraction and supersampling part of a
  * scene's description (host/engine.c engine_describe, engine_build,
  * engine_render) in one number type (built once per type):
- *   - reflection is a fraction quantised to 2^-16 like specular, the index
+ *   - reflection is a fraction quantised to 2^-16 like specular (the
+ *     description holds both in 1/255 units, the world the fraction), the index
  *     is quantised to 2^-16 too (never below FXRT_INDEX_MIN), so every
  *     build holds the same values, written here as hand-computed multiples
  *     of 2^-16; fields a material does not use are 0;
@@ -75,16 +76,16 @@ static void test_describe(void)
      * 32768, 0.999999 -> 65535.93 -> 65536, 0.00002 -> 1.31 -> 1; no index. */
     const material_t *m = &d.obj[0].material;
     CHECK(m->kind == MATERIAL_REFLECTIVE && m->exponent == 64);
-    CHECK(color_q(m->specular, 65536, 19661, 0) && color_q(m->reflection, 32768, 65536, 1) && is_q(m->index, 0));
+    CHECK(color_q(color_fractions(m->specular), 65536, 19661, 0) && color_q(color_fractions(m->reflection), 32768, 65536, 1) && is_q(m->index, 0));
     /* Transparent 1.33 -> 87162.88 -> 87163; no Phong terms, no reflection. */
     m = &d.obj[1].material;
     CHECK(m->kind == MATERIAL_TRANSPARENT && m->exponent == 0 && is_q(m->index, 87163));
-    CHECK(color_q(m->specular, 0, 0, 0) && color_q(m->reflection, 0, 0, 0));
+    CHECK(color_q(color_fractions(m->specular), 0, 0, 0) && color_q(color_fractions(m->reflection), 0, 0, 0));
     /* The colour tints what it transmits: still in 1/255 units. */
     CHECK(D(d.obj[1].color.r) == 255.0);
     m = &d.obj[2].material;
-    CHECK(m->kind == MATERIAL_REFLECTIVE && m->exponent == 1 && color_q(m->specular, 0, 0, 0));
-    CHECK(color_q(m->reflection, 32768, 32768, 32768));
+    CHECK(m->kind == MATERIAL_REFLECTIVE && m->exponent == 1 && color_q(color_fractions(m->specular), 0, 0, 0));
+    CHECK(color_q(color_fractions(m->reflection), 32768, 32768, 32768));
     /* 0.01 * 65536 = 655.36 would round to 655 (< 0.01): the smallest
      * multiple of 2^-16 not below 0.01 is 656. 100 is 6553600 exactly. */
     m = &d.obj[3].material;
@@ -94,7 +95,7 @@ static void test_describe(void)
     CHECK(m->kind == MATERIAL_TRANSPARENT && is_q(m->index, 6553600));
     /* Phong keeps no reflection and no index. */
     m = &d.obj[5].material;
-    CHECK(m->kind == MATERIAL_PHONG && m->exponent == 8 && color_q(m->reflection, 0, 0, 0) && is_q(m->index, 0));
+    CHECK(m->kind == MATERIAL_PHONG && m->exponent == 8 && color_q(color_fractions(m->reflection), 0, 0, 0) && is_q(m->index, 0));
     /* engine_index directly: ties and the clamp. 1.5 -> 98304; 0.010009 ->
      * 655.95 -> 656; 0.0100099 -> 656.01 -> 656; 0.0101 -> 661.9 -> 662. */
     CHECK(is_q(ENGINE_SYM(engine_index)(1.5), 98304));
@@ -122,10 +123,12 @@ static void test_build(void)
     uint16_t idx;
     for (int i = 0; i < d.count; i++) {
         CHECK(world_find(&w, i, &k, &idx));
+        /* The world holds the description's colours (1/255 units) as fractions. */
         const material_t *a = &world_common(&w, k, idx)->mat, *b = &d.obj[i].material;
+        color_t br = color_fractions(b->reflection), bs = color_fractions(b->specular);
         CHECK_MSG(a->kind == b->kind && a->exponent == b->exponent && a->index == b->index &&
-                      a->reflection.r == b->reflection.r && a->reflection.g == b->reflection.g &&
-                      a->reflection.b == b->reflection.b && a->specular.g == b->specular.g,
+                      a->reflection.r == br.r && a->reflection.g == br.g && a->reflection.b == br.b &&
+                      a->specular.g == bs.g,
                   "object %d", i);
     }
 #endif

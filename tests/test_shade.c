@@ -179,14 +179,14 @@ static bool build(const scene_t *s, int w, int h)
         fo.color = color_make(N(chan(o->color[0])), N(chan(o->color[1])), N(chan(o->color[2])));
         fo.material.kind = (uint8_t)o->material;
         fo.material.exponent = (uint16_t)o->exponent;
-        fo.material.specular = color_make(N(o->specular[0]), N(o->specular[1]), N(o->specular[2]));
+        fo.material.specular = color_make(N(chan(o->specular[0])), N(chan(o->specular[1])), N(chan(o->specular[2])));
         if (fxrt_add(&world, &fo) != j)
             return false;
     }
     for (int k = 0; k < s->n_lights; k++) {
         const lgt_t *L = &s->light[k];
         fxrt_light_t fl = {L->kind, V(L->pos), V(L->dir), N(L->angle),
-                           color_make(N(L->color[0]), N(L->color[1]), N(L->color[2])), L->shadows};
+                           color_make(N(chan(L->color[0])), N(chan(L->color[1])), N(chan(L->color[2]))), L->shadows};
         if (fxrt_add_light(&world, &fl) != k)
             return false;
     }

@@ -273,8 +273,8 @@ static bool build(const scene_t *s, int w, int h)
         fo.color = color_make(N(chan(o->color[0])), N(chan(o->color[1])), N(chan(o->color[2])));
         fo.material.kind = (uint8_t)o->material;
         fo.material.exponent = (uint16_t)(o->exponent ? o->exponent : 1);
-        fo.material.specular = color_make(N(o->specular[0]), N(o->specular[1]), N(o->specular[2]));
-        fo.material.reflection = color_make(N(o->reflection[0]), N(o->reflection[1]), N(o->reflection[2]));
+        fo.material.specular = color_make(N(chan(o->specular[0])), N(chan(o->specular[1])), N(chan(o->specular[2])));
+        fo.material.reflection = color_make(N(chan(o->reflection[0])), N(chan(o->reflection[1])), N(chan(o->reflection[2])));
         fo.material.index = N(o->index);
         int32_t id = fxrt_add(&world, &fo);
         if (id != j) {
@@ -285,7 +285,7 @@ static bool build(const scene_t *s, int w, int h)
     for (int k = 0; k < s->n_lights; k++) {
         const lgt_t *L = &s->light[k];
         fxrt_light_t fl = {LIGHT_POINT, V(L->pos), vec3_make(0, 0, 0), 0,
-                           color_make(N(L->color[0]), N(L->color[1]), N(L->color[2])), L->shadows};
+                           color_make(N(chan(L->color[0])), N(chan(L->color[1])), N(chan(L->color[2]))), L->shadows};
         if (fxrt_add_light(&world, &fl) != k)
             return false;
     }

@@ -50,21 +50,38 @@ static fxrt_err_t fxrt_world_ok(const world_t *w)
     return fxrt_world_ok_with(w, w);
 }
 
+/* The API's colours are all in 1/255 units; the world keeps a light's,
+ * the ambient, specular and reflection colours as fractions
+ * (color_fractions: exactly the fraction the scene loader would hold). A
+ * colour outside 0..255 stays as it is, outside 0..1 too, for the world's
+ * own checks to refuse in their order. */
+static color_t fxrt_fractions(color_t c)
+{
+    return geom_check_color(c) == FXRT_OK ? color_fractions(c) : c;
+}
+
+static material_t fxrt_material(const material_t *m)
+{
+    material_t f = *m;
+    f.specular = fxrt_fractions(m->specular);
+    f.reflection = fxrt_fractions(m->reflection);
+    return f;
+}
+
 int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
 {
     fxrt_err_t ok = fxrt_world_ok_with(w, o);
     if (ok != FXRT_OK)
         return ok;
+    /* The material is checked first: a refused object leaves the world
+     * unchanged. */
+    material_t m = fxrt_material(&o->material);
+    fxrt_err_t e = world_check_material(&m);
+    if (e != FXRT_OK)
+        return e;
     int32_t id = world_add(w, o);
-    if (id >= 0 && o->material.kind != MATERIAL_FLAT) {
-#if FXRT_MAX_LIGHTS > 0
-        fxrt_err_t e = world_set_material(w, id, &o->material);
-        if (e != FXRT_OK)
-            return e;
-#else
-        return FXRT_ERR_MATERIAL; /* lighting compiled out */
-#endif
-    }
+    if (id >= 0 && m.kind != MATERIAL_FLAT)
+        (void)world_set_material(w, id, &m); /* checked above: FXRT_OK */
     return id;
 }
 
@@ -76,13 +93,16 @@ int32_t fxrt_count(const world_t *w)
 fxrt_err_t fxrt_set_material(world_t *w, int32_t id, const material_t *m)
 {
     fxrt_err_t ok = fxrt_world_ok_with(w, m);
-    return ok != FXRT_OK ? ok : world_set_material(w, id, m);
+    if (ok != FXRT_OK)
+        return ok;
+    material_t f = fxrt_material(m);
+    return world_set_material(w, id, &f);
 }
 
 fxrt_err_t fxrt_set_ambient(world_t *w, color_t ambient)
 {
     fxrt_err_t ok = fxrt_world_ok(w);
-    return ok != FXRT_OK ? ok : world_set_ambient(w, ambient);
+    return ok != FXRT_OK ? ok : world_set_ambient(w, fxrt_fractions(ambient));
 }
 
 fxrt_err_t fxrt_set_depth(world_t *w, int32_t depth)
@@ -102,7 +122,8 @@ int32_t fxrt_add_light(world_t *w, const fxrt_light_t *l)
     fxrt_err_t ok = fxrt_world_ok_with(w, l);
     if (ok != FXRT_OK)
         return ok;
-    return world_add_light(w, l->kind, l->position, l->direction, l->angle_deg, l->color, l->shadows);
+    return world_add_light(w, l->kind, l->position, l->direction, l->angle_deg, fxrt_fractions(l->color),
+                           l->shadows);
 }
 
 /* cam_setup's codes in the API's terms. */
@@ -248,7 +269,7 @@ const char *fxrt_strerror(int32_t err)
     case FXRT_ERR_TINY: return "nonzero value below 2^-16 (it would be 0 in Q16.16)";
     case FXRT_ERR_DIRECTION: return "direction (normal, gaze, up or light direction) has zero length";
     case FXRT_ERR_RADIUS: return "radius must be in (0, FXRT_RADIUS_LIMIT]";
-    case FXRT_ERR_COLOR: return "colour channel outside 0..1";
+    case FXRT_ERR_COLOR: return "colour channel outside 0..255 (1/255 units; 0..1 in a scene file)";
     case FXRT_ERR_BOX: return "box min > max on some axis";
     /* The camera's texts are cam_setup's, so the host tool's messages do
      * not depend on which layer refused. */

@@ -77,6 +77,15 @@ static inline color_t color_scale(color_t a, num_t s)
  * floor(c + 1/2), exactly in every build. */
 rgb8_t color_to_rgb8(color_t c);
 
+/* The fractions a colour in 1/255 units stands for (lights, ambient,
+ * specular and reflection colours are kept as fractions, NUM_ONE full):
+ * c / 255 per channel, quantised as the scene loader quantises a written
+ * fraction, round(65536 c / 255) / 65536 of c taken to 2^-16 first, in
+ * every build. For c = COLOR_FRAC(x) it is round(65536 x) / 65536, the
+ * fraction x itself as the loader holds it (255 is odd: no tie moves).
+ * Channels 0..255 only (geom_check_color). */
+color_t color_fractions(color_t c);
+
 /* Supersampling: the sum of a pixel's samples, one channel, each sample
  * clamped to 0..255 (1/255 units) first; the output is the mean rounded
  * half up, floor(sum / n2 + 1/2), as color_to_rgb8 rounds one sample.

@@ -42,6 +42,10 @@ static inline num_t num_sqrt(num_t a) { return fx_sqrt(a); }
 /* 1 / sqrt(a) for a > 0 (fx_rsqrt: within 0.502 LSB; a <= 0 gives NUM_MAX). */
 static inline num_t num_rsqrt(num_t a) { return fx_rsqrt(a); }
 static inline num_t num_from_int(int32_t i) { return fx_from_int(i); }
+/* A value and its Q16.16 bits (identities here; float and double round
+ * half up to 2^-16 and hold every Q16.16 value below 2^24 exactly). */
+static inline int32_t num_to_q16(num_t a) { return a; }
+static inline num_t num_from_q16(int32_t q) { return q; }
 /* a * i, exact for Q16.16 (the integer factor adds no rounding). */
 static inline num_t num_mul_int(num_t a, int32_t i) { return fx_mul_int(a, i); }
 /* a / 2, rounded to nearest, ties toward +infinity. */
@@ -257,6 +261,15 @@ static inline num_t num_div(num_t a, num_t b)
     return a / b;
 }
 static inline num_t num_from_int(int32_t i) { return (num_t)i; }
+static inline int32_t num_to_q16(num_t a)
+{
+    num_t t = a * NUM(65536); /* exact: a power of two */
+    int32_t i = (int32_t)t;
+    if ((num_t)i > t)
+        i--; /* floor */
+    return t - (num_t)i >= NUM(0.5) ? i + 1 : i;
+}
+static inline num_t num_from_q16(int32_t q) { return (num_t)q * NUM(1.0 / 65536); }
 static inline num_t num_mul_int(num_t a, int32_t i) { return a * (num_t)i; }
 static inline num_t num_half(num_t a) { return a * NUM(0.5); }
 num_t num_cot_deg(num_t deg);

@@ -225,17 +225,15 @@ fxrt_err_t world_set_ambient(world_t *w, color_t ambient)
 #endif
 }
 
-fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
+fxrt_err_t world_check_material(const material_t *m)
 {
-    geom_kind_t kind;
-    uint16_t index;
-    if (id < 0 || id > 0xFFFF || !world_find(w, (uint16_t)id, &kind, &index))
-        return FXRT_ERR_ID;
     if (m->kind == MATERIAL_FLAT)
-        ; /* always possible */
-    else if (m->kind == MATERIAL_LAMBERT)
-        ;
-    else if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) {
+        return FXRT_OK; /* always possible */
+    if (FXRT_MAX_LIGHTS == 0)
+        return FXRT_ERR_MATERIAL; /* lighting compiled out */
+    if (m->kind == MATERIAL_LAMBERT)
+        return FXRT_OK;
+    if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) {
         if (!FXRT_PHONG)
             return FXRT_ERR_MATERIAL;
         if (m->exponent < 1 || m->exponent > FXRT_PHONG_MAX_EXPONENT)
@@ -243,14 +241,23 @@ fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
         fxrt_err_t e = light_check_fraction(m->specular);
         if (e == FXRT_OK && m->kind == MATERIAL_REFLECTIVE)
             e = light_check_fraction(m->reflection);
-        if (e != FXRT_OK)
-            return e;
-    } else if (m->kind == MATERIAL_TRANSPARENT) {
+        return e;
+    }
+    if (m->kind == MATERIAL_TRANSPARENT)
         /* (x >= lo && x <= hi) also refuses NaN */
-        if (!(m->index >= NUM(FXRT_INDEX_MIN) && m->index <= NUM(FXRT_INDEX_MAX)))
-            return FXRT_ERR_INDEX;
-    } else
-        return FXRT_ERR_MATERIAL;
+        return m->index >= NUM(FXRT_INDEX_MIN) && m->index <= NUM(FXRT_INDEX_MAX) ? FXRT_OK : FXRT_ERR_INDEX;
+    return FXRT_ERR_MATERIAL;
+}
+
+fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
+{
+    geom_kind_t kind;
+    uint16_t index;
+    if (id < 0 || id > 0xFFFF || !world_find(w, (uint16_t)id, &kind, &index))
+        return FXRT_ERR_ID;
+    fxrt_err_t e = world_check_material(m);
+    if (e != FXRT_OK)
+        return e;
 #if FXRT_MAX_LIGHTS > 0
     geom_common_t *c = (geom_common_t *)world_common(w, kind, index);
     bool was = c->mat.kind != MATERIAL_FLAT, is = m->kind != MATERIAL_FLAT;
@@ -271,10 +278,10 @@ fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
     w->n_bounce = (uint16_t)(w->n_bounce + is_b - was_b);
 #endif
     w->n_lit = (uint16_t)(w->n_lit + is - was);
-    return FXRT_OK;
 #else
-    return m->kind == MATERIAL_FLAT ? FXRT_OK : FXRT_ERR_MATERIAL;
+    (void)kind, (void)index; /* flat: nothing to store */
 #endif
+    return FXRT_OK;
 }
 
 int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t direction, num_t angle_deg,

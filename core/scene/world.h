@@ -115,7 +115,8 @@ void world_mesh_update(world_t *w);
  * world_set_material: the material of object `id` (default flat). FXRT_OK,
  * FXRT_ERR_ID, FXRT_ERR_MATERIAL (unknown kind, a phong exponent outside
  * 1..FXRT_PHONG_MAX_EXPONENT, or phong with FXRT_PHONG 0) or
- * FXRT_ERR_COLOR (specular).
+ * FXRT_ERR_COLOR (specular, reflection: fractions).
+ * world_check_material: world_set_material's checks of m alone.
  * world_add_light: a light, checked: position inside the domain
  * (FXRT_ERR_COORD), a nonzero direction (FXRT_ERR_DIRECTION), a spot
  * half-angle in (0, 90] degrees (FXRT_ERR_ANGLE), colour fractions
@@ -149,6 +150,7 @@ static inline int32_t world_samples(const world_t *w) { return (void)w, 1; }
 static inline bool world_adaptive(const world_t *w) { return (void)w, false; }
 #endif
 fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m);
+fxrt_err_t world_check_material(const material_t *m);
 int32_t world_add_light(world_t *w, light_kind_t kind, vec3_t position, vec3_t direction, num_t angle_deg,
                         color_t color, bool shadows);
 
