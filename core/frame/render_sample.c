@@ -27,6 +27,11 @@
 
 #if FXRT_MAX_SAMPLES > 1
 
+/* Adaptive sampling (FXRT_ADAPTIVE) and run mode (RENDER_RUNS), below:
+ * their state's reset at set-up; stubs when compiled out. */
+static void render_adaptive_reset(render_sample_t *s);
+static void render_runs_reset(render_sample_t *s);
+
 /* One sample of colour c, clamped, in the sampling pass's sum units. */
 static void render_sum_one(color_sum_t one[3], color_t c)
 {
@@ -53,13 +58,8 @@ bool render_sample_setup(render_t *r, const world_t *w, const cam_t **cam)
         }
         *cam = &s->fine;
         render_sum_one(s->bg_one, w->background);
-#if FXRT_ADAPTIVE
-        s->coarse_row[0] = s->coarse_row[1] = s->coarse_row[2] = -1;
-#endif
-#if RENDER_RUNS
-        s->run_cap = FXRT_SAMPLE_RUNS;
-        s->run_rows = 0;
-#endif
+        render_adaptive_reset(s);
+        render_runs_reset(s);
     }
     return true;
 }
@@ -168,6 +168,11 @@ static void render_sample_put(uint8_t *rgb, int32_t x, uint8_t cr, uint8_t cg, u
 }
 
 #if FXRT_ADAPTIVE
+static void render_adaptive_reset(render_sample_t *s)
+{
+    s->coarse_row[0] = s->coarse_row[1] = s->coarse_row[2] = -1;
+}
+
 /* One sample per pixel of output row `row` into ring slot row % 3: the
  * pixel-centre ray's key and colour. */
 static void render_adaptive_row(render_t *r, int32_t row)
@@ -224,9 +229,20 @@ static bool render_adaptive_need(render_t *r, int32_t row)
     }
     return any;
 }
+#else
+static void render_adaptive_reset(render_sample_t *s)
+{
+    (void)s;
+}
 #endif
 
 #if RENDER_RUNS
+static void render_runs_reset(render_sample_t *s)
+{
+    s->run_cap = FXRT_SAMPLE_RUNS;
+    s->run_rows = 0;
+}
+
 /* Run mode (the fast Q16.16 loop, when every object on the N fine rows of
  * output row `row` is flat and alone on its row): each fine row as runs
  * of one owner (render_row_runs), no per-column owners. Walking the N
@@ -329,6 +345,16 @@ __attribute__((noinline)) static bool render_sample_runs(render_t *r, int32_t ro
     r->sample.run_rows++;
     return true;
 }
+#else
+static void render_runs_reset(render_sample_t *s)
+{
+    (void)s;
+}
+static bool render_sample_runs(render_t *r, int32_t row, uint8_t *rgb, const bool *need)
+{
+    (void)r, (void)row, (void)rgb, (void)need;
+    return false;
+}
 #endif
 
 void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
@@ -346,10 +372,8 @@ void render_sample_row(render_t *r, int32_t row, uint8_t *rgb, bool reference)
         need = r->sample.need;
     }
 #endif
-#if RENDER_RUNS
     if (!reference && render_sample_runs(r, row, rgb, need))
         return;
-#endif
     for (int32_t j = 0; j < n; j++)
         render_sample_fine(r, row, j, reference, need);
     uint32_t n2 = (uint32_t)(n * n);

@@ -1,6 +1,41 @@
 /* world: nearest-hit search over the static object arrays. */
 #include "scene/world.h"
 
+/* Lighting's part of the world (FXRT_MAX_LIGHTS > 0): none of it, and
+ * only a black ambient, when lighting is compiled out. */
+#if FXRT_MAX_LIGHTS > 0
+static void world_lights_init(world_t *w)
+{
+    w->ambient = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    w->n_lights = 0;
+    w->n_lit = 0;
+}
+fxrt_err_t world_set_ambient(world_t *w, color_t ambient)
+{
+    fxrt_err_t e = light_check_fraction(ambient);
+    if (e != FXRT_OK)
+        return e;
+    w->ambient = ambient;
+    return FXRT_OK;
+}
+#else
+static void world_lights_init(world_t *w)
+{
+    (void)w;
+}
+fxrt_err_t world_set_ambient(world_t *w, color_t ambient)
+{
+    fxrt_err_t e = light_check_fraction(ambient);
+    if (e != FXRT_OK)
+        return e;
+    (void)w;
+    return ambient.r == NUM_ZERO && ambient.g == NUM_ZERO && ambient.b == NUM_ZERO ? FXRT_OK : FXRT_ERR_MATERIAL;
+}
+#endif
+/* Secondary rays' and the meshes' parts (below). */
+static void world_bounce_init(world_t *w);
+static void world_mesh_init(world_t *w);
+
 void world_init(world_t *w, color_t background)
 {
     w->background = background;
@@ -9,26 +44,28 @@ void world_init(world_t *w, color_t background)
 #define WORLD_EMPTY(K, k, ks, ...) FXRT_IF_##K(w->n_##ks = 0;)
     FXRT_KINDS(WORLD_EMPTY)
 #undef WORLD_EMPTY
-#if WORLD_MESH
-    w->mesh_n = 0;
-#endif
-#if FXRT_MAX_LIGHTS > 0
-    w->ambient = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    w->n_lights = 0;
-    w->n_lit = 0;
-#endif
-#if FXRT_MAX_DEPTH > 0
-    w->depth = FXRT_MAX_DEPTH < 4 ? FXRT_MAX_DEPTH : 4;
-    w->n_bounce = 0;
-    w->bounded = false;
-#endif
+    world_mesh_init(w);
+    world_lights_init(w);
+    world_bounce_init(w);
     (void)world_set_samples(w, 1, false); /* (always accepted) */
 }
 
+/* Secondary rays' part of the world (FXRT_MAX_DEPTH > 0): the default
+ * depth, and the bounds of the bounded objects. */
+#if FXRT_MAX_DEPTH > 0
+static void world_bounce_init(world_t *w)
+{
+    w->depth = FXRT_MAX_DEPTH < 4 ? FXRT_MAX_DEPTH : 4;
+    w->n_bounce = 0;
+    w->bounded = false;
+}
+static void world_depth_store(world_t *w, int32_t depth)
+{
+    w->depth = (uint8_t)depth;
+}
 /* Grow the bounds of the bounded objects by the box lo..hi. */
 __attribute__((unused)) static void world_grow(world_t *w, vec3_t lo, vec3_t hi)
 {
-#if FXRT_MAX_DEPTH > 0
     if (!w->bounded) {
         w->bmin = lo;
         w->bmax = hi;
@@ -49,20 +86,27 @@ __attribute__((unused)) static void world_grow(world_t *w, vec3_t lo, vec3_t hi)
                      vec3_make(num_half(w->bmax.x), num_half(w->bmax.y), num_half(w->bmax.z)));
     num_t r = num_add(num_mul_int(numw_sqrt(vec3_dotw(h, h)), 2), NUM_ONE);
     w->br2 = numw_mul(r, r);
-#else
-    (void)w, (void)lo, (void)hi;
-#endif
 }
+#else
+static void world_bounce_init(world_t *w)
+{
+    (void)w;
+}
+static void world_depth_store(world_t *w, int32_t depth)
+{
+    (void)w, (void)depth;
+}
+__attribute__((unused)) static void world_grow(world_t *w, vec3_t lo, vec3_t hi)
+{
+    (void)w, (void)lo, (void)hi;
+}
+#endif
 
 fxrt_err_t world_set_depth(world_t *w, int32_t depth)
 {
     if (depth < 0 || depth > FXRT_MAX_DEPTH)
         return FXRT_ERR_DEPTH;
-#if FXRT_MAX_DEPTH > 0
-    w->depth = (uint8_t)depth;
-#else
-    (void)w;
-#endif
+    world_depth_store(w, depth);
     return FXRT_OK;
 }
 
@@ -89,7 +133,12 @@ uint16_t world_count(const world_t *w)
     return (uint16_t)n;
 }
 
+/* The closed meshes of the triangles (WORLD_MESH). */
 #if WORLD_MESH
+static void world_mesh_init(world_t *w)
+{
+    w->mesh_n = 0;
+}
 /* Link triangles mesh_n .. n_triangles - 1 (up to WORLD_MESH_N) into the
  * meshes of those before them. */
 static void world_mesh_link_rest(world_t *w)
@@ -99,7 +148,22 @@ static void world_mesh_link_rest(world_t *w)
         w->mesh_n++;
     }
 }
+void world_mesh_update(world_t *w)
+{
+    w->mesh_n = 0;
+    world_mesh_link_rest(w);
+}
+#else
+static void world_mesh_init(world_t *w)
+{
+    (void)w;
+}
+void world_mesh_update(world_t *w)
+{
+    (void)w;
+}
 #endif
+
 
 /* A kind with capacity 0 is compiled out: adding one reports FXRT_ERR_FULL
  * without referencing its checks or constructor, so none of its code is
@@ -135,16 +199,6 @@ int32_t world_add(world_t *w, const geom_desc_t *d)
         world_mesh_link_rest(w);
 #endif
     return id;
-}
-
-void world_mesh_update(world_t *w)
-{
-#if WORLD_MESH
-    w->mesh_n = 0;
-    world_mesh_link_rest(w);
-#else
-    (void)w;
-#endif
 }
 
 /* Keep candidate (t, obj) if it is nearer than the best so far, or as near
@@ -211,19 +265,6 @@ fxrt_err_t light_check_fraction(color_t c)
     return geom_check_color(c);
 }
 
-fxrt_err_t world_set_ambient(world_t *w, color_t ambient)
-{
-    fxrt_err_t e = light_check_fraction(ambient);
-    if (e != FXRT_OK)
-        return e;
-#if FXRT_MAX_LIGHTS > 0
-    w->ambient = ambient;
-    return FXRT_OK;
-#else
-    (void)w;
-    return ambient.r == NUM_ZERO && ambient.g == NUM_ZERO && ambient.b == NUM_ZERO ? FXRT_OK : FXRT_ERR_MATERIAL;
-#endif
-}
 
 fxrt_err_t world_check_material(const material_t *m)
 {

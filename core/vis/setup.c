@@ -126,11 +126,7 @@ const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam)
     r->track = r->track || w->n_lit > 0;
 #endif
 #endif
-#if FXRT_MAX_PLANES > 0
-    r->nplanes = w->n_planes;
-#else
-    r->nplanes = 0;
-#endif
+    r->nplanes = 0 FXRT_IF_PLANE(+w->n_planes);
     for (int32_t x = 0; x < cam->width; x++)
         r->owner[x] = 0;
     r->stamp = 0;
