@@ -63,6 +63,8 @@ static color_t fxrt_fractions(color_t c)
 static material_t fxrt_material(const material_t *m)
 {
     material_t f = *m;
+    if (FXRT_MAX_LIGHTS == 0)
+        return f; /* refused as it is (world_check_material): nothing to convert */
     f.specular = fxrt_fractions(m->specular);
     f.reflection = fxrt_fractions(m->reflection);
     return f;
@@ -80,7 +82,7 @@ int32_t fxrt_add(world_t *w, const fxrt_object_t *o)
     if (e != FXRT_OK)
         return e;
     int32_t id = world_add(w, o);
-    if (id >= 0 && m.kind != MATERIAL_FLAT)
+    if (id >= 0 && FXRT_MAX_LIGHTS > 0 && m.kind != MATERIAL_FLAT)
         (void)world_set_material(w, id, &m); /* checked above: FXRT_OK */
     return id;
 }
