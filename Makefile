@@ -24,7 +24,7 @@ include core/core.mk
 .SECONDARY:
 .SECONDEXPANSION:
 include host/multi.mk
-HOST_SRC := main scene image errf compare engine_select args
+HOST_SRC := main scene image errf compare engine_select args obj
 
 # --- host tool -----------------------------------------------------------
 # (host/multi.mk: the three number types' objects, each joined into one.)
@@ -75,12 +75,13 @@ endef
 $(foreach n,$(NUMBERS),$(eval $(call number_rules,$(n))))
 
 # --- tests ---------------------------------------------------------------
-UNIT_TESTS := test_fx test_image test_compare test_scene
+UNIT_TESTS := test_fx test_image test_compare test_scene test_obj
 TEST_BIN   := $(UNIT_TESTS:%=$(BUILD)/tests/%)
 test_fx_DEPS      := $(BUILD)/host/fx.o
 test_image_DEPS   := $(BUILD)/host/image.o $(BUILD)/host/errf.o
 test_compare_DEPS := $(BUILD)/host/compare.o $(BUILD)/host/image.o $(BUILD)/host/errf.o
 test_scene_DEPS   := $(BUILD)/host/scene.o $(BUILD)/host/errf.o
+test_obj_DEPS     := $(BUILD)/host/obj.o $(BUILD)/host/errf.o
 
 $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(@D)

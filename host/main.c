@@ -12,6 +12,7 @@
 #include "compare.h"
 #include "engine.h"
 #include "image.h"
+#include "obj.h"
 #include "scene.h"
 #include "version.h"
 
@@ -37,6 +38,7 @@ static const char usage_main[] =
     "  sheet -o OUT IMAGE[=LABEL]... [--no-labels]\n"
     "                 place labelled images of equal height side by side\n"
     "  size SCENE     print the scene's image size as WxH (its 'image' line)\n"
+    "  obj FILE       check an OBJ mesh and print what it holds\n"
     "\n"
     "  -h, --help     this text; 'fxrt COMMAND --help' for a command's options\n"
     "  --version      print the version\n"
@@ -131,6 +133,16 @@ static const char usage_size[] =
     "Check SCENE and print its image size as WxH: the 'image' line, or 160x120\n"
     "without one (make qemu uses it when SIZE= is not given).\n"
     "Exit status: 0, or 2 for a bad scene (FILE:LINE: message).\n";
+
+static const char usage_obj[] =
+    "usage: fxrt obj FILE\n"
+    "\n"
+    "Read the Wavefront OBJ mesh FILE as a scene's mesh statement would\n"
+    "(docs/SCENES.md, \"OBJ files\") and print one 'name value' line each: its\n"
+    "faces, triangles (each face fanned from its first vertex), vertices,\n"
+    "texture coordinates, normals, the triangle corners whose normal is the\n"
+    "file's vn (the others take the smooth-shading normal), and the bounds.\n"
+    "Exit status: 0, or 2 for a bad file (FILE:LINE: message).\n";
 
 /* A usage error: one line "fxrt: [CMD: ]message" and a pointer to the help
  * on stderr; returns the exit status 2. cmd is NULL for the top level. */
@@ -586,13 +598,15 @@ done:
     return rc;
 }
 
-static int cmd_size(int argc, char **argv)
+/* A command's one path argument (named `what` in messages) into *path:
+ * 0, or the exit status of a usage error. --help prints `usage` and
+ * leaves *path NULL (exit 0). */
+static int one_path(const char *cmd, const char *what, const char *usage, int argc, char **argv, const char **path)
 {
-    static const char cmd[] = "size";
-    const char *scene_path = NULL;
     bool opts = true;
+    *path = NULL;
     if (wants_help(argc, argv)) {
-        fputs(usage_size, stdout);
+        fputs(usage, stdout);
         return 0;
     }
     for (int i = 0; i < argc; i++) {
@@ -601,13 +615,22 @@ static int cmd_size(int argc, char **argv)
             opts = false;
         else if (opts && a[0] == '-' && a[1])
             return usage_error(cmd, "unknown option '%s'", a);
-        else if (!scene_path)
-            scene_path = a;
+        else if (!*path)
+            *path = a;
         else
-            return usage_error(cmd, "unexpected argument '%s' (one SCENE only)", a);
+            return usage_error(cmd, "unexpected argument '%s' (one %s only)", a, what);
     }
-    if (!scene_path)
-        return usage_error(cmd, "no SCENE given");
+    if (!*path)
+        return usage_error(cmd, "no %s given", what);
+    return 0;
+}
+
+static int cmd_size(int argc, char **argv)
+{
+    const char *scene_path;
+    int u = one_path("size", "SCENE", usage_size, argc, argv, &scene_path);
+    if (u || !scene_path)
+        return u;
     char err[ERR_LEN];
     static scene_t scene;
     if (scene_load(scene_path, &scene, err, sizeof err)) {
@@ -618,11 +641,48 @@ static int cmd_size(int argc, char **argv)
     return 0;
 }
 
+static int cmd_obj(int argc, char **argv)
+{
+    const char *path;
+    int u = one_path("obj", "FILE", usage_obj, argc, argv, &path);
+    if (u || !path)
+        return u;
+    char err[ERR_LEN];
+    obj_t o;
+    if (obj_load(path, &o, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        obj_free(&o);
+        return 2;
+    }
+    obj_vec_t *n = malloc(sizeof *n * 3 * o.ntri);
+    size_t from_file = 0;
+    if (n == NULL || obj_smooth_normals(&o, n, &from_file)) {
+        fprintf(stderr, "%s: out of memory\n", path);
+        free(n);
+        obj_free(&o);
+        return 2;
+    }
+    obj_vec_t lo = o.v[o.tri[0].v[0]], hi = lo;
+    for (size_t i = 0; i < o.ntri; i++)
+        for (int k = 0; k < 3; k++) {
+            obj_vec_t p = o.v[o.tri[i].v[k]];
+            lo = (obj_vec_t){p.x < lo.x ? p.x : lo.x, p.y < lo.y ? p.y : lo.y, p.z < lo.z ? p.z : lo.z};
+            hi = (obj_vec_t){p.x > hi.x ? p.x : hi.x, p.y > hi.y ? p.y : hi.y, p.z > hi.z ? p.z : hi.z};
+        }
+    printf("faces %zu\ntriangles %zu\nvertices %zu\ntexcoords %zu\nnormals %zu\n", o.nfaces, o.ntri, o.nv, o.nvt,
+           o.nvn);
+    printf("corners_with_vn %zu of %zu\n", from_file, 3 * o.ntri);
+    printf("bounds %.9g %.9g %.9g %.9g %.9g %.9g\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    free(n);
+    obj_free(&o);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     image_cleanup_signals();
     if (argc < 2)
-        return usage_error(NULL, "missing command (render, compare, sheet or size)");
+        return usage_error(NULL, "missing command (render, compare, sheet, size or obj)");
     const char *cmd = argv[1];
     if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help") || !strcmp(cmd, "help")) {
         fputs(usage_main, stdout);
@@ -646,6 +706,8 @@ int main(int argc, char **argv)
         return cmd_sheet(argc - 2, argv + 2);
     if (!strcmp(cmd, "size"))
         return cmd_size(argc - 2, argv + 2);
+    if (!strcmp(cmd, "obj"))
+        return cmd_obj(argc - 2, argv + 2);
     if (cmd[0] == '-')
         return usage_error(NULL, "unknown option '%s'", cmd);
     return usage_error(NULL, "unknown command '%s'", cmd);

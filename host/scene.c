@@ -26,6 +26,7 @@
  * the rules. */
 #include "scene.h"
 
+#include "decimal.h"
 #include "errf.h"
 
 #include <errno.h>
@@ -295,43 +296,6 @@ static int scene_looks_numeric(scene_tok_t t)
     return scene_tok_starts_ci(t, i, "nan") || scene_tok_starts_ci(t, i, "inf");
 }
 
-/* Plain decimal: [+-] digits [. digits] [(e|E) [+-] digits], with at least
- * one mantissa digit. Checked before strtod because strtod also accepts hex
- * floats, "inf", "nan(...)" and leading spaces, none of which belong in a
- * scene file. */
-static int scene_is_decimal(scene_tok_t t)
-{
-    size_t i = 0, digits = 0, exp_digits = 0;
-
-    if (i < t.n && (t.s[i] == '+' || t.s[i] == '-'))
-        i++;
-    while (i < t.n && scene_is_digit(t.s[i])) {
-        i++;
-        digits++;
-    }
-    if (i < t.n && t.s[i] == '.') {
-        i++;
-        while (i < t.n && scene_is_digit(t.s[i])) {
-            i++;
-            digits++;
-        }
-    }
-    if (digits == 0)
-        return 0;
-    if (i < t.n && (t.s[i] == 'e' || t.s[i] == 'E')) {
-        i++;
-        if (i < t.n && (t.s[i] == '+' || t.s[i] == '-'))
-            i++;
-        while (i < t.n && scene_is_digit(t.s[i])) {
-            i++;
-            exp_digits++;
-        }
-        if (exp_digits == 0)
-            return 0;
-    }
-    return i == t.n;
-}
-
 /* Parse one number of field `what`. Range checks belong to the caller;
  * this rejects what no field accepts: non-numbers, NaN/infinity, hex, and
  * nonzero values too small for Q16.16. Overflow ("1e99999") comes back as
@@ -342,17 +306,14 @@ static int scene_number(scene_parser_t *p, const char *what, scene_tok_t t, doub
     char buf[SCENE_MAX_LINE + 1];
     scene_quote_t q = scene_quote(t);
     char *end;
-    size_t i;
     double d;
     int range_err;
 
-    if (!scene_is_decimal(t)) {
-        i = (t.n > 0 && (t.s[0] == '+' || t.s[0] == '-')) ? 1 : 0;
-        if (scene_tok_starts_ci(t, i, "nan") || scene_tok_starts_ci(t, i, "inf"))
-            return scene_fail(p, "%s: NaN or infinity not allowed: '%s'", what, q.s);
-        if (scene_tok_starts_ci(t, i, "0x"))
-            return scene_fail(p, "%s: hexadecimal numbers not allowed: '%s'", what, q.s);
-        return scene_fail(p, "%s: '%s' is not a number", what, q.s);
+    if (!decimal_is_plain(t.s, t.n)) {
+        const char *why = decimal_why_not(t.s, t.n);
+        if (why == NULL)
+            return scene_fail(p, "%s: '%s' is not a number", what, q.s);
+        return scene_fail(p, "%s: %s: '%s'", what, why, q.s);
     }
     /* Cannot happen after the line length check; keeps buf safe regardless. */
     if (t.n > SCENE_MAX_LINE)

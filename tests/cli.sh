@@ -125,13 +125,13 @@ usage_err() {
     "$@" >"$out/stdout.txt" 2>"$out/stderr.txt"
     rc=$?
     local try="Try 'fxrt --help'."
-    case ${2:-} in render | compare | sheet | size) try="Try 'fxrt $2 --help'." ;; esac
+    case ${2:-} in render | compare | sheet | size | obj) try="Try 'fxrt $2 --help'." ;; esac
     check "$desc: exit 2 (got $rc)" test $rc -eq 2
     check "$desc: nothing on stdout" test ! -s "$out/stdout.txt"
     check "$desc: stderr is '$want' + '$try' (got: $(head -c 300 "$out/stderr.txt"))" \
         test "$(cat "$out/stderr.txt")" = "$want"$'\n'"$try"
 }
-usage_err "no command" "fxrt: missing command (render, compare, sheet or size)" "$FXRT"
+usage_err "no command" "fxrt: missing command (render, compare, sheet, size or obj)" "$FXRT"
 usage_err "unknown command" "fxrt: unknown command 'paint'" "$FXRT" paint
 usage_err "unknown top option" "fxrt: unknown option '--fast'" "$FXRT" --fast
 usage_err "render bad --size" "fxrt: render: bad --size 'x' (want WxH, each 1..4096)" "$FXRT" render $good --size x
@@ -145,6 +145,8 @@ usage_err "compare bad --max-pct" "fxrt: compare: bad --max-pct 'lots' (want a n
 usage_err "compare one image" "fxrt: compare: needs two images A and B" "$FXRT" compare "$out/a.png"
 usage_err "sheet no image" "fxrt: sheet: no IMAGE given" "$FXRT" sheet -o "$out/s.png"
 usage_err "size no scene" "fxrt: size: no SCENE given" "$FXRT" size
+usage_err "obj no file" "fxrt: obj: no FILE given" "$FXRT" obj
+usage_err "obj two files" "fxrt: obj: unexpected argument 'b.obj' (one FILE only)" "$FXRT" obj a.obj b.obj
 
 # --- a repeated option is an error (also under its other spelling)
 usage_err "render --size twice" "fxrt: render: --size given twice" \
@@ -396,6 +398,21 @@ check "BOM scene renders as without it" cmp -s "$out/bom.ppm" "$out/nobom.ppm"
 check "BOM scene: fxrt size reads its image line" test "$("$FXRT" size "$out/bom.scene")" = 640x430
 { printf '%s\r\n' "${bom}image 20 10"; printf 'camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45\r\n'; } >"$out/bomcrlf.scene"
 check "BOM + CRLF scene: image line read" test "$("$FXRT" size "$out/bomcrlf.scene")" = 20x10
+
+# fxrt obj: an OBJ mesh's counts, and its errors with the OBJ's FILE:LINE.
+printf 'v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nvn 0 0 1\r\nf 1//1 2//1 3//1 4//1\r\n' >"$out/quad.obj"
+"$FXRT" obj "$out/quad.obj" >"$out/quad.txt"
+check "fxrt obj: exit 0" test $? -eq 0
+check "fxrt obj: a quad is one face, two triangles" bash -c "grep -qx 'faces 1' '$out/quad.txt' && grep -qx 'triangles 2' '$out/quad.txt'"
+check "fxrt obj: corners with the file's normal" grep -qx "corners_with_vn 6 of 6" "$out/quad.txt"
+check "fxrt obj: bounds" grep -qx "bounds 0 0 0 1 1 0" "$out/quad.txt"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 0\n' >"$out/zero.obj"
+"$FXRT" obj "$out/zero.obj" >"$out/zero.txt" 2>"$out/zero.err"
+check "fxrt obj: index 0 exits 2" test $? -eq 2
+check "fxrt obj: index 0 names FILE:LINE" grep -q "^$out/zero.obj:4: f: vertex index 0" "$out/zero.err"
+check "fxrt obj: nothing on stdout after an error" test ! -s "$out/zero.txt"
+check "fxrt obj: a missing file exits 2" fails "$FXRT" obj "$out/none.obj"
+check "fxrt obj --help" bash -c "'$FXRT' obj --help | grep -q '^usage: fxrt obj FILE'"
 { head -n 2 $good; printf '%s' "$bom"; tail -n +3 $good; } >"$out/bom3.scene"
 "$FXRT" render "$out/bom3.scene" -o "$out/bom3.png" 2>"$out/stderr.txt"
 check "BOM on line 3: exit 2" test $? -eq 2
