@@ -26,22 +26,16 @@ static uint8_t row[FXRT_ROW_BYTES(LIT_W)];
 
 #define V3(x, y, z) fxrt_vec3(FXRT_NUM(x), FXRT_NUM(y), FXRT_NUM(z))
 
-static void must(int32_t r, const char *what)
-{
-    if (r < 0)
-        example_fail(what, fxrt_strerror(r));
-}
-
 /* One object with its material. */
 static void add(fxrt_object_t o, const char *what)
 {
-    must(fxrt_add(&world, &o), what);
+    example_must(fxrt_add(&world, &o), what);
 }
 
 __attribute__((noinline)) static void build_world(void)
 {
-    must(fxrt_world_init(&world, FXRT_RGB(0.08, 0.1, 0.2)), "world");
-    must(fxrt_set_ambient(&world, FXRT_RGB(0.12, 0.12, 0.15)), "ambient");
+    example_must(fxrt_world_init(&world, FXRT_RGB(0.08, 0.1, 0.2)), "world");
+    example_must(fxrt_set_ambient(&world, FXRT_RGB(0.12, 0.12, 0.15)), "ambient");
     const fxrt_material_t lambert = {.kind = FXRT_MATERIAL_LAMBERT};
     const fxrt_material_t phong = {.kind = FXRT_MATERIAL_PHONG, .exponent = 40,
                                    .specular = FXRT_RGB(0.8, 0.8, 0.8)};
@@ -64,15 +58,15 @@ __attribute__((noinline)) static void build_world(void)
     add((fxrt_object_t){.kind = FXRT_TRIANGLE, .p = {V3(-2.6, -1, -2.4), V3(-1.2, -1, -2.6), V3(-1.9, 1.2, -2.5)},
                         .color = FXRT_RGB(0.55, 0.3, 0.75), .material = lambert},
         "triangle");
-    must(fxrt_add_light(&world, &(fxrt_light_t){.kind = FXRT_LIGHT_POINT, .position = V3(3, 4, 3),
+    example_must(fxrt_add_light(&world, &(fxrt_light_t){.kind = FXRT_LIGHT_POINT, .position = V3(3, 4, 3),
                                                .color = FXRT_RGB(0.8, 0.8, 0.75), .shadows = true}),
          "point light");
-    must(fxrt_add_light(&world, &(fxrt_light_t){.kind = FXRT_LIGHT_SPOT, .position = V3(-3, 5, 2),
+    example_must(fxrt_add_light(&world, &(fxrt_light_t){.kind = FXRT_LIGHT_SPOT, .position = V3(-3, 5, 2),
                                                .direction = V3(0.6, -1, -0.5), .angle_deg = FXRT_NUM(30),
                                                .color = FXRT_RGB(0.6, 0.5, 0.3), .shadows = true}),
          "spot light");
-    must(fxrt_set_depth(&world, 4), "depth");
-    must(fxrt_set_samples(&world, 2, true), "samples");
+    example_must(fxrt_set_depth(&world, 4), "depth");
+    example_must(fxrt_set_samples(&world, 2, true), "samples");
 }
 
 const char example_name[] = "lit";
@@ -87,10 +81,10 @@ int example_main(void)
         example_frame_begin(f, LIT_W, LIT_H);
         fxrt_vec3_t eye = fxrt_vec3(eyes[f].x, eyes[f].y, eyes[f].z);
         fxrt_vec3_t gaze = fxrt_vec3_sub(V3(0, -0.4, -0.5), eye);
-        must(fxrt_camera_perspective(&view, eye, gaze, V3(0, 1, 0), FXRT_NUM(45), LIT_W, LIT_H), "camera");
-        must(fxrt_render_setup(&rs, &world, &view), "render set-up");
+        example_must(fxrt_camera_perspective(&view, eye, gaze, V3(0, 1, 0), FXRT_NUM(45), LIT_W, LIT_H), "camera");
+        example_must(fxrt_render_setup(&rs, &world, &view), "render set-up");
         for (int32_t r = 0; r < LIT_H; r++) {
-            must(fxrt_render_row(&rs, r, row, sizeof row), "row");
+            example_must(fxrt_render_row(&rs, r, row, sizeof row), "row");
             example_row(row, sizeof row);
         }
         example_frame_end(f);

@@ -33,25 +33,18 @@ static fxrt_num_t orbit_sin(int32_t k) /* sin(k * 22.5 degrees), any k >= 0 */
     return k > 8 ? -s : s;
 }
 
-/* Stop at the first refusal, with the API's text. */
-static void must(int32_t r, const char *what)
-{
-    if (r < 0)
-        example_fail(what, fxrt_strerror(r));
-}
-
 /* One object of the world (fxrt_object_t: the kind's points in p[], a
  * sphere's radius). */
 static void add(fxrt_object_t o, const char *what)
 {
-    must(fxrt_add(&world, &o), what);
+    example_must(fxrt_add(&world, &o), what);
 }
 
 /* Out of line: its objects then take stack only while it runs, not during
  * every frame's set-up as well. */
 __attribute__((noinline)) static void build_world(void)
 {
-    must(fxrt_world_init(&world, FXRT_RGB(0.05, 0.1, 0.2)), "world");
+    example_must(fxrt_world_init(&world, FXRT_RGB(0.05, 0.1, 0.2)), "world");
     add((fxrt_object_t){.kind = FXRT_PLANE, .p = {V3(0, -1, 0), V3(0, 1, 0)}, .color = FXRT_RGB(0.35, 0.55, 0.3)},
         "plane");
     add((fxrt_object_t){.kind = FXRT_SPHERE, .p = {V3(0, 0, 0)}, .radius = FXRT_NUM(0.9),
@@ -79,10 +72,10 @@ int example_main(void)
         /* 360 / 16 degrees per frame */
         fxrt_vec3_t eye = fxrt_vec3(fxrt_mul(radius, orbit_sin(f)), FXRT_NUM(1.8), fxrt_mul(radius, orbit_sin(f + 4)));
         fxrt_vec3_t gaze = fxrt_vec3_sub(V3(0, -0.3, 0), eye); /* at the big sphere */
-        must(fxrt_camera_perspective(&view, eye, gaze, V3(0, 1, 0), FXRT_NUM(50), ORBIT_W, ORBIT_H), "camera");
-        must(fxrt_render_setup(&rs, &world, &view), "render set-up");
+        example_must(fxrt_camera_perspective(&view, eye, gaze, V3(0, 1, 0), FXRT_NUM(50), ORBIT_W, ORBIT_H), "camera");
+        example_must(fxrt_render_setup(&rs, &world, &view), "render set-up");
         for (int32_t r = 0; r < ORBIT_H; r++) {
-            must(fxrt_render_row(&rs, r, row, sizeof row), "row");
+            example_must(fxrt_render_row(&rs, r, row, sizeof row), "row");
             example_row(row, sizeof row);
         }
         example_frame_end(f);
