@@ -160,11 +160,7 @@ done
 cat "$md"
 if [ "${BENCH_UPDATE_DOCS:-0}" = 1 ]; then
     doc=docs/BENCHMARKS.md
-    grep -q '<!-- bench:samples -->' "$doc" || { echo "bench-samples: no <!-- bench:samples --> block in $doc" >&2; exit 1; }
-    awk -v f="$md" '
-        /<!-- bench:samples -->/ { print; while ((getline l < f) > 0) print l; skip = 1; next }
-        /<!-- \/bench:samples -->/ { skip = 0 }
-        !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+    host/replace-block.sh "$doc" bench:samples "$md" || exit 1
     echo "bench-samples: updated $doc"
 fi
 [ "$fails" -eq 0 ] || { echo "bench-samples: $fails runs failed (see above)" >&2; exit 1; }

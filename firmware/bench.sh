@@ -518,17 +518,9 @@ plots() { # DIR
 if [[ ${BENCH_UPDATE_DOCS:-0} == 1 ]]; then
     doc=docs/BENCHMARKS.md
     [[ -f $doc ]] || die "$doc is missing: it holds the hand-written template around the generated blocks"
-    for m in header tables; do
-        grep -q "^<!-- bench:$m -->" "$doc" && grep -q "^<!-- /bench:$m -->" "$doc" ||
-            die "$doc lacks the <!-- bench:$m --> ... <!-- /bench:$m --> markers"
-    done
     header >"$OUT/doc-header.md"
     { cat "$OUT/tables.md"; plots "bench/"; } >"$OUT/doc-tables.md"
-    awk -v h="$OUT/doc-header.md" -v t="$OUT/doc-tables.md" '
-        /^<!-- bench:header -->/ { print; while ((getline l < h) > 0) print l; skip = 1; next }
-        /^<!-- bench:tables -->/ { print; while ((getline l < t) > 0) print l; skip = 1; next }
-        /^<!-- \/bench:(header|tables) -->/ { skip = 0 }
-        !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+    host/replace-block.sh "$doc" bench:header "$OUT/doc-header.md" bench:tables "$OUT/doc-tables.md" || exit 1
     mkdir -p docs/bench
     rm -f docs/bench/pareto-*.png
     for p in "${plots_made[@]}"; do cp "$OUT/$p" docs/bench/; done

@@ -128,20 +128,7 @@ cat "$out/benchfx-versus.md"
 # docs/BENCHMARKS.md (the rest of the file is left as it is).
 if [ "${BENCHFX_UPDATE_DOCS:-0}" = 1 ]; then
     doc=docs/BENCHMARKS.md
-    # Both markers first, so that a missing one leaves the file as it was.
-    for mark in table versus; do
-        if ! grep -q "<!-- benchfx:$mark -->" "$doc" || ! grep -q "<!-- /benchfx:$mark -->" "$doc"; then
-            echo "bench-fx: no <!-- benchfx:$mark --> ... <!-- /benchfx:$mark --> in $doc" >&2
-            exit 1
-        fi
-    done
-    for block in table:benchfx.md versus:benchfx-versus.md; do
-        mark=${block%%:*} tab=$out/${block#*:}
-        awk -v tab="$tab" -v m="benchfx:$mark" '
-            $0 == "<!-- " m " -->" { print; while ((getline l < tab) > 0) print l; skip = 1; next }
-            $0 == "<!-- /" m " -->" { skip = 0 }
-            !skip { print }' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
-    done
+    host/replace-block.sh "$doc" benchfx:table "$out/benchfx.md" benchfx:versus "$out/benchfx-versus.md" || exit 1
     echo "bench-fx: updated $doc"
 fi
 echo

@@ -295,10 +295,7 @@ if [[ ${1:-} == table ]]; then
     cat "$tab"
     if [[ ${RAM_UPDATE_DOCS:-0} == 1 ]]; then
         doc=docs/BENCHMARKS.md
-        grep -q '^<!-- ram:table -->' "$doc" && grep -q '^<!-- /ram:table -->' "$doc" ||
-            die "$doc lacks the <!-- ram:table --> ... <!-- /ram:table --> markers"
-        awk -v t="$tab" '/^<!-- ram:table -->/ { print; print ""; while ((getline l < t) > 0) print l; print ""; skip = 1; next }
-            /^<!-- \/ram:table -->/ { skip = 0 } !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+        host/replace-block.sh --pad "$doc" ram:table "$tab" || exit 1
         echo "fit: updated the RAM table in $doc" >&2
     fi
     exit 0

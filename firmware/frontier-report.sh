@@ -158,12 +158,7 @@ intro() { # PLOTDIR
 
 if [[ ${FRONTIER_UPDATE_DOCS:-${BENCH_UPDATE_DOCS:-0}} == 1 ]]; then
     doc=docs/BENCHMARKS.md
-    grep -q '^<!-- frontier -->' "$doc" && grep -q '^<!-- /frontier -->' "$doc" ||
-        { echo "frontier: $doc lacks the <!-- frontier --> ... <!-- /frontier --> markers" >&2; exit 1; }
-    awk -v t="$OUT/doc-section.md" '
-        /^<!-- frontier -->/ { print; while ((getline l < t) > 0) print l; skip = 1; next }
-        /^<!-- \/frontier -->/ { skip = 0 }
-        !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+    host/replace-block.sh "$doc" frontier "$OUT/doc-section.md" || exit 1
     mkdir -p docs/frontier
     rm -f docs/frontier/frontier-*.png
     for p in "${plots[@]}"; do cp "$OUT/$p" docs/frontier/; done

@@ -77,14 +77,7 @@ shown() { # the command as a reader types it, in markdown
 # replace DOC NAME FILE: FILE between "<!-- NAME -->" and "<!-- /NAME -->";
 # both markers are checked first, so a missing one leaves DOC as it was.
 replace() {
-    local doc=$1 name=$2 file=$3
-    grep -qxF "<!-- $name -->" "$doc" && grep -qxF "<!-- /$name -->" "$doc" ||
-        die "$doc lacks the <!-- $name --> ... <!-- /$name --> markers"
-    awk -v f="$file" -v begin="<!-- $name -->" -v end="<!-- /$name -->" '
-        $0 == begin { print; while ((getline l < f) > 0) print l; close(f); skip = 1; next }
-        $0 == end { skip = 0 }
-        !skip' "$doc" >"$doc.tmp" || { rm -f "$doc.tmp"; die "$doc: rewriting <!-- $name --> failed"; }
-    mv "$doc.tmp" "$doc"
+    host/replace-block.sh "$1" "$2" "$3" || exit 2
 }
 
 run_source() { # NAME: run the command that writes its source

@@ -399,6 +399,20 @@ check "BOM scene: fxrt size reads its image line" test "$("$FXRT" size "$out/bom
 { printf '%s\r\n' "${bom}image 20 10"; printf 'camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45\r\n'; } >"$out/bomcrlf.scene"
 check "BOM + CRLF scene: image line read" test "$("$FXRT" size "$out/bomcrlf.scene")" = 20x10
 
+# host/replace-block.sh: the docs' generated blocks are written through it.
+printf 'top\n<!-- a -->\nold a\n<!-- /a -->\nmid\n<!-- b -->\nold b\n<!-- /b -->\nend\n' >"$out/doc.md"
+printf 'new a 1\nnew a 2\n' >"$out/a.txt"
+printf 'new b\n' >"$out/b.txt"
+cp "$out/doc.md" "$out/doc0.md"
+check "replace-block: a missing marker exits 2" bash -c "! host/replace-block.sh '$out/doc.md' a '$out/a.txt' c '$out/b.txt' 2>/dev/null"
+check "replace-block: ... and leaves the doc as it was, also its other blocks" cmp -s "$out/doc.md" "$out/doc0.md"
+host/replace-block.sh "$out/doc.md" a "$out/a.txt" b "$out/b.txt"
+check "replace-block: two blocks replaced, the rest kept" test "$(tr '\n' '|' <"$out/doc.md")" = \
+    "top|<!-- a -->|new a 1|new a 2|<!-- /a -->|mid|<!-- b -->|new b|<!-- /b -->|end|"
+host/replace-block.sh --pad "$out/doc.md" b "$out/b.txt"
+check "replace-block --pad: a blank line before and after" test "$(tr '\n' '|' <"$out/doc.md")" = \
+    "top|<!-- a -->|new a 1|new a 2|<!-- /a -->|mid|<!-- b -->||new b||<!-- /b -->|end|"
+
 # fxrt obj: an OBJ mesh's counts, and its errors with the OBJ's FILE:LINE.
 printf 'v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nvn 0 0 1\r\nf 1//1 2//1 3//1 4//1\r\n' >"$out/quad.obj"
 "$FXRT" obj "$out/quad.obj" >"$out/quad.txt"

@@ -128,10 +128,7 @@ ram+=("turntable ($name): $(get ram_static "$tot") B of static RAM, $(get stack_
 } >>"$md"
 if [ "${OLED_UPDATE_DOCS:-0}" = 1 ]; then
     doc=docs/OLED.md
-    grep -q '^<!-- oled:frames -->' "$doc" && grep -q '^<!-- /oled:frames -->' "$doc" ||
-        { echo "oled-demo: $doc lacks the <!-- oled:frames --> ... <!-- /oled:frames --> markers" >&2; exit 2; }
-    awk -v t="$md" '/^<!-- oled:frames -->/ { print; print ""; while ((getline l < t) > 0) print l; print ""; skip = 1; next }
-        /^<!-- \/oled:frames -->/ { skip = 0 } !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+    host/replace-block.sh --pad "$doc" oled:frames "$md" || exit 2
     echo "oled-demo: updated the frame figures in $doc"
 fi
 echo

@@ -36,9 +36,6 @@ nseed=$(ls scenes/abb*.scene | wc -l) nlit=$(ls scenes/lit/*.scene | wc -l)
 cat "$tab"
 if [ "${OLED_UPDATE_DOCS:-0}" = 1 ]; then
     doc=docs/OLED.md
-    grep -q '^<!-- oled:table -->' "$doc" && grep -q '^<!-- /oled:table -->' "$doc" ||
-        { echo "oled-table: $doc lacks the <!-- oled:table --> ... <!-- /oled:table --> markers" >&2; exit 2; }
-    awk -v t="$tab" '/^<!-- oled:table -->/ { print; print ""; while ((getline l < t) > 0) print l; print ""; skip = 1; next }
-        /^<!-- \/oled:table -->/ { skip = 0 } !skip' "$doc" >"$doc.tmp" && mv "$doc.tmp" "$doc"
+    host/replace-block.sh --pad "$doc" oled:table "$tab" || exit 2
     echo "oled-table: updated the table in $doc" >&2
 fi
