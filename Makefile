@@ -24,13 +24,15 @@ include core/core.mk
 .SECONDARY:
 .SECONDEXPANSION:
 include host/multi.mk
-HOST_SRC := main scene image errf compare engine_select args obj
+HOST_SRC := main scene image errf compare engine_select args obj xform
+# The scene loader and what it needs (OBJ meshes, node transforms, messages).
+SCENE_LIB = $(BUILD)/host/scene.o $(BUILD)/host/obj.o $(BUILD)/host/xform.o $(BUILD)/host/errf.o
 
 # --- host tool -----------------------------------------------------------
 # (host/multi.mk: the three number types' objects, each joined into one.)
 HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),fxrt,$(NUMBERS))
 
-SCENEC_OBJ := $(BUILD)/host/scenec.o $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
+SCENEC_OBJ := $(BUILD)/host/scenec.o $(SCENE_LIB) $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
               $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),scenec,$(NUMBERS))
 
 all: $(BUILD)/fxrt $(BUILD)/fxrt-scenec
@@ -75,13 +77,14 @@ endef
 $(foreach n,$(NUMBERS),$(eval $(call number_rules,$(n))))
 
 # --- tests ---------------------------------------------------------------
-UNIT_TESTS := test_fx test_image test_compare test_scene test_obj
+UNIT_TESTS := test_fx test_image test_compare test_scene test_obj test_node
 TEST_BIN   := $(UNIT_TESTS:%=$(BUILD)/tests/%)
 test_fx_DEPS      := $(BUILD)/host/fx.o
 test_image_DEPS   := $(BUILD)/host/image.o $(BUILD)/host/errf.o
 test_compare_DEPS := $(BUILD)/host/compare.o $(BUILD)/host/image.o $(BUILD)/host/errf.o
-test_scene_DEPS   := $(BUILD)/host/scene.o $(BUILD)/host/errf.o
+test_scene_DEPS   := $(SCENE_LIB)
 test_obj_DEPS     := $(BUILD)/host/obj.o $(BUILD)/host/errf.o
+test_node_DEPS    := $(SCENE_LIB)
 
 $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(@D)

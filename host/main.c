@@ -286,6 +286,9 @@ static int cmd_render(int argc, char **argv)
         fprintf(stderr, "%s\n", err);
         return 2;
     }
+    if (scene.mesh_dropped > 0)
+        fprintf(stderr, "%s: note: %ld zero-area mesh triangle%s left out\n", scene_path, scene.mesh_dropped,
+                scene.mesh_dropped == 1 ? "" : "s");
     if (!w) {
         w = scene.width;
         h = scene.height;
@@ -671,6 +674,12 @@ static int cmd_obj(int argc, char **argv)
         }
     printf("faces %zu\ntriangles %zu\nvertices %zu\ntexcoords %zu\nnormals %zu\n", o.nfaces, o.ntri, o.nv, o.nvt,
            o.nvn);
+    size_t zero = 0;
+    for (size_t i = 0; i < o.ntri; i++) {
+        obj_vec_t c = obj_face_normal(&o, i);
+        zero += c.x == 0.0 && c.y == 0.0 && c.z == 0.0;
+    }
+    printf("zero_area %zu\n", zero);
     printf("corners_with_vn %zu of %zu\n", from_file, 3 * o.ntri);
     printf("bounds %.9g %.9g %.9g %.9g %.9g %.9g\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
     free(n);

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 typedef struct {
     const char *s;
@@ -340,6 +341,13 @@ int obj_load(const char *path, obj_t *o, char *err, size_t errlen)
     FILE *f = fopen(path, "rb");
     if (f == NULL)
         return obj_fail(&c, "cannot open: %s", strerror(errno));
+    /* A device or pipe ("/dev/zero", "/dev/stdin") could block or never
+     * end: only regular files are read. */
+    struct stat st;
+    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
+        fclose(f);
+        return obj_fail(&c, "not a regular file");
+    }
     /* One byte more than allowed, so "exactly the limit" and "larger" differ. */
     char *buf = malloc(OBJ_MAX_FILE_BYTES + 1);
     if (buf == NULL) {

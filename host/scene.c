@@ -28,6 +28,8 @@
 
 #include "decimal.h"
 #include "errf.h"
+#include "obj.h"
+#include "xform.h"
 
 #include <errno.h>
 #include <math.h>
@@ -90,7 +92,8 @@ typedef enum {
     SCENE_F_INDEX,  /* 1 value in [FXRT_INDEX_MIN, FXRT_INDEX_MAX] (refraction index) */
     SCENE_F_EXPONENT, /* 1 integer in 1..SCENE_MAX_EXPONENT */
     SCENE_F_MATERIAL, /* 1 word: flat, lambert, phong, reflective or transparent */
-    SCENE_F_ONOFF     /* 1 word: on or off */
+    SCENE_F_ONOFF,    /* 1 word: on or off */
+    SCENE_F_SHADING   /* 1 word: smooth or flat (a mesh's) */
 } scene_ftype_t;
 
 typedef struct {
@@ -152,6 +155,11 @@ static const scene_shape_t scene_shape_ortho = {
     "orthographic camera", 4,
     {{"eye", SCENE_F_POINT, 0}, {"gaze", SCENE_F_DIR, 0}, {"up", SCENE_F_DIR, 0}, {"scale", SCENE_F_SCALE, 0}}};
 
+/* A mesh, after 'mesh file PATH': its shading (default smooth), colour
+ * and material. */
+static const scene_shape_t scene_shape_mesh = {
+    "mesh", 2 + SCENE_N_MATERIAL_FIELDS, {{"shading", SCENE_F_SHADING, 1}, {"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}};
+
 /* Every field name of every statement. A run of values ends at any of
  * them, so "center 0 0 radius 1" reports "got 2" rather than trying to read
  * "radius" as a number. */
@@ -165,7 +173,7 @@ static const scene_shape_t scene_shape_ortho = {
 static const char *const scene_all_fields[] = {FXRT_KINDS(SCENE_KIND_FIELDS) "color",
                                                 "eye",   "gaze",   "up",     "fov",    "scale",
                                                 "material", "specular", "exponent", "position", "direction",
-                                                "angle", "shadows", "reflection", "index"};
+                                                "angle", "shadows", "reflection", "index", "shading", "file"};
 
 /* Word values, indexed like scene_material_t. */
 static const char *const scene_material_names[] = {"flat", "lambert", "phong", "reflective", "transparent"};
@@ -198,6 +206,12 @@ typedef struct {
     scene_t *out;
     int camera_line, image_line, background_line, ambient_line, depth_line, samples_line; /* 0 = not seen yet */
     int kind_count[SCENE_KINDS];
+    /* Open nodes: node_xf[d] is the transform of depth d's contents (its
+     * own after its parent's), node_xf[0] the identity; node_line[d] the
+     * line of depth d's 'node'. */
+    int node_depth;
+    int node_line[SCENE_MAX_NODE_DEPTH + 1];
+    xform_t node_xf[SCENE_MAX_NODE_DEPTH + 1];
     int ntok;
     scene_tok_t tok[SCENE_MAX_TOKENS];
 } scene_parser_t;
@@ -386,6 +400,7 @@ static int scene_check_value(scene_parser_t *p, const char *what, scene_ftype_t 
     case SCENE_F_EXPONENT:
     case SCENE_F_MATERIAL:
     case SCENE_F_ONOFF:
+    case SCENE_F_SHADING:
         break; /* not numbers: scene_parse_word */
     }
     return 0;
@@ -407,6 +422,7 @@ static int scene_ftype_count(scene_ftype_t type)
     case SCENE_F_EXPONENT:
     case SCENE_F_MATERIAL:
     case SCENE_F_ONOFF:
+    case SCENE_F_SHADING:
         break;
     }
     return 1;
@@ -414,7 +430,8 @@ static int scene_ftype_count(scene_ftype_t type)
 
 static int scene_is_word_type(scene_ftype_t type)
 {
-    return type == SCENE_F_EXPONENT || type == SCENE_F_MATERIAL || type == SCENE_F_ONOFF;
+    return type == SCENE_F_EXPONENT || type == SCENE_F_MATERIAL || type == SCENE_F_ONOFF ||
+           type == SCENE_F_SHADING;
 }
 
 static int scene_parse_uint(scene_tok_t t, long *v);
@@ -440,6 +457,12 @@ static int scene_parse_word(scene_parser_t *p, const scene_field_t *fd, scene_to
             return 0;
         }
         return scene_fail(p, "%s must be on or off, got '%s'", fd->name, q.s);
+    case SCENE_F_SHADING:
+        if (scene_tok_is(t, "smooth") || scene_tok_is(t, "flat")) {
+            fv->word = scene_tok_is(t, "smooth");
+            return 0;
+        }
+        return scene_fail(p, "%s must be smooth or flat, got '%s'", fd->name, q.s);
     case SCENE_F_EXPONENT:
         if (scene_parse_uint(t, &fv->iv) != 0)
             return scene_fail(p, "%s must be an integer in 1..%d, got '%s'", fd->name, SCENE_MAX_EXPONENT, q.s);
@@ -518,6 +541,7 @@ static int scene_parse_fields(scene_parser_t *p, const scene_shape_t *sh, int fi
                 return scene_fail(p, "'%s' needs a value (%s)", fd->name,
                                   fd->type == SCENE_F_MATERIAL ? SCENE_MATERIAL_LIST
                                   : fd->type == SCENE_F_ONOFF  ? "on or off"
+                                  : fd->type == SCENE_F_SHADING ? "smooth or flat"
                                                                : "an integer");
             vals[f].t[0] = p->tok[i];
             if (scene_parse_word(p, fd, p->tok[i], &vals[f]) != 0)
@@ -766,6 +790,117 @@ static int scene_parse_light(scene_parser_t *p)
     return 0;
 }
 
+/* An object's colour and material from its fields: vals[color_field] is
+ * its colour, the material fields follow it. Fields a material does not
+ * use stay 0 (scene_check_material has refused them). */
+static void scene_set_surface(scene_obj_t *o, const scene_fval_t *vals, int color_field)
+{
+    const scene_fval_t *m = &vals[color_field + 1];
+
+    for (int k = 0; k < 3; k++)
+        o->color[k] = vals[color_field].v[k];
+    o->material = m[0].seen ? (scene_material_t)m[0].word : SCENE_MAT_FLAT;
+    if (o->material == SCENE_MAT_PHONG || o->material == SCENE_MAT_REFLECTIVE) {
+        for (int k = 0; k < 3; k++)
+            o->specular[k] = m[1].v[k];
+        o->exponent = (int)m[2].iv;
+    }
+    if (o->material == SCENE_MAT_REFLECTIVE)
+        for (int k = 0; k < 3; k++)
+            o->reflection[k] = m[3].v[k];
+    if (o->material == SCENE_MAT_TRANSPARENT)
+        o->index = m[4].v[0];
+}
+
+/* Object o (its kind's fields in p[] and radius, as read) through the
+ * open nodes' transform, then checked against the domain again. Points
+ * map as points; a DIR field is a normal (inverse transpose, normalised);
+ * a RADIUS needs a similarity (else the sphere would be an ellipsoid); a
+ * MAX point and the point before it are a box's corners, which need a
+ * transform that maps axes onto axes (else the box would turn). where
+ * names a mesh triangle's face ("PATH:LINE") in messages, or is NULL.
+ * Outside nodes nothing moves, and only a mesh's vertices need the range
+ * check. */
+static int scene_place(scene_parser_t *p, scene_obj_t *o, const char *where)
+{
+    static const char axis[3] = {'x', 'y', 'z'};
+    const scene_shape_t *sh = &scene_kind_shape[o->kind];
+    int nf = sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS, d = p->node_depth, nl = p->node_line[d];
+    const xform_t *x = &p->node_xf[d];
+    char at[600] = "", after[64] = "";
+
+    if (d == 0 && where == NULL)
+        return 0;
+    if (where != NULL)
+        snprintf(at, sizeof at, " (face %s)", where);
+    if (d > 0)
+        snprintf(after, sizeof after, " after the node on line %d", nl);
+    for (int f = 0; d > 0 && f < nf; f++) {
+        scene_ftype_t type = sh->field[f].type;
+        if (type == SCENE_F_POINT && f + 1 < nf && sh->field[f + 1].type == SCENE_F_MAX)
+            continue; /* with the MAX after it */
+        if (type == SCENE_F_POINT) {
+            o->p[f] = xform_point(x, o->p[f]);
+        } else if (type == SCENE_F_DIR) {
+            if (xform_normal(x, o->p[f], &o->p[f]) != 0)
+                return scene_fail(p, "%s %s cannot be transformed by the node on line %d (its scales underflow)",
+                                  sh->label, sh->field[f].name, nl);
+            if (scene_check_turn(p, sh->field[f].name, o->p[f]) != 0)
+                return -1;
+        } else if (type == SCENE_F_RADIUS) {
+            double sc;
+            if (!xform_similar(x, &sc))
+                return scene_fail(p, "a %s in a node that scales unevenly (node on line %d) would be an ellipsoid, "
+                                     "which fxrt does not render yet; scale it by one number",
+                                  sh->label, nl);
+            o->radius *= sc;
+            if (!(o->radius >= SCENE_Q16_EPS && o->radius <= FXRT_RADIUS_LIMIT))
+                return scene_fail(p, "%s %s is %g after the node on line %d: outside [1/65536, %g]", sh->label,
+                                  sh->field[f].name, o->radius, nl, (double)FXRT_RADIUS_LIMIT);
+        } else if (type == SCENE_F_MAX) {
+            scene_vec_t lo = o->p[f - 1], hi = o->p[f], a, b;
+            if (!xform_axis_aligned(x))
+                return scene_fail(p, "a %s in a node that turns it by other than a multiple of 90 degrees (node on "
+                                     "line %d) would be an oriented box, which fxrt does not render yet; a mesh of "
+                                     "a cube turns freely",
+                                  sh->label, nl);
+            /* The corners' images, per axis their least and greatest. */
+            for (int c = 0; c < 8; c++) {
+                scene_vec_t q = {(c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z};
+                q = xform_point(x, q);
+                if (c == 0) {
+                    a = b = q;
+                    continue;
+                }
+                a.x = fmin(a.x, q.x), a.y = fmin(a.y, q.y), a.z = fmin(a.z, q.z);
+                b.x = fmax(b.x, q.x), b.y = fmax(b.y, q.y), b.z = fmax(b.z, q.z);
+            }
+            o->p[f - 1] = a;
+            o->p[f] = b;
+        }
+    }
+    for (int f = 0; f < nf; f++) {
+        scene_ftype_t type = sh->field[f].type;
+        if (d > 0 && type != SCENE_F_RADIUS) {
+            /* What Q16.16 rounds to 0 is 0 in every build (a rotation's
+             * rounding leaves values like 1e-17 where 0 is meant), and
+             * never -0. */
+            double *c[3] = {&o->p[f].x, &o->p[f].y, &o->p[f].z};
+            for (int k = 0; k < 3; k++)
+                if (fabs(*c[k]) < SCENE_Q16_EPS / 2)
+                    *c[k] = 0.0;
+        }
+        if (type != SCENE_F_POINT && type != SCENE_F_MAX)
+            continue;
+        double v[3] = {o->p[f].x, o->p[f].y, o->p[f].z};
+        for (int k = 0; k < 3; k++)
+            if (!(fabs(v[k]) <= FXRT_COORD_LIMIT))
+                return scene_fail(p, "%s %s%s is %g on %c%s: out of range (|coordinate| <= %g)", sh->label,
+                                  sh->field[f].name, at, v[k], axis[k], after, (double)FXRT_COORD_LIMIT);
+    }
+    return 0;
+}
+
 static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_shape_t *sh)
 {
     scene_fval_t vals[SCENE_MAX_FIELDS];
@@ -828,25 +963,196 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
         else
             o->p[f] = scene_vec(&vals[f]);
     }
-    o->color[0] = vals[color_field].v[0];
-    o->color[1] = vals[color_field].v[1];
-    o->color[2] = vals[color_field].v[2];
-    o->material = vals[mat_field].seen ? (scene_material_t)vals[mat_field].word : SCENE_MAT_FLAT;
-    /* Fields a material does not use stay 0 (scene_check_material has
-     * refused them). */
-    if (o->material == SCENE_MAT_PHONG || o->material == SCENE_MAT_REFLECTIVE) {
-        for (f = 0; f < 3; f++)
-            o->specular[f] = vals[mat_field + 1].v[f];
-        o->exponent = (int)vals[mat_field + 2].iv;
-    }
-    if (o->material == SCENE_MAT_REFLECTIVE)
-        for (f = 0; f < 3; f++)
-            o->reflection[f] = vals[mat_field + 3].v[f];
-    if (o->material == SCENE_MAT_TRANSPARENT)
-        o->index = vals[mat_field + 4].v[0];
+    scene_set_surface(o, vals, color_field);
+    if (scene_place(p, o, NULL) != 0)
+        return -1;
     p->out->count++;
     p->kind_count[kind]++;
     return 0;
+}
+
+/* ---- nodes and meshes ---------------------------------------------------- */
+
+/* Token i of a node line as a number in [-limit, limit] (what names it in
+ * messages); 0 for a scale is refused. */
+static int scene_node_number(scene_parser_t *p, const char *what, int i, double limit, double *v)
+{
+    scene_quote_t q;
+
+    if (i >= p->ntok || !scene_looks_numeric(p->tok[i]))
+        return scene_fail(p, "'%s' needs %s", what,
+                          strcmp(what, "scale") == 0 ? "1 or 3 numbers" : strcmp(what, "rotate") == 0 ? "x, y or z and an angle in degrees" : "3 numbers");
+    if (scene_number(p, what, p->tok[i], v) != 0)
+        return -1;
+    q = scene_quote(p->tok[i]);
+    if (!(fabs(*v) <= limit))
+        return scene_fail(p, "%s %s out of range (|value| <= %g)", what, q.s, limit);
+    if (*v == 0.0 && strcmp(what, "scale") == 0)
+        return scene_fail(p, "scale %s: a node may not scale by 0 (it would flatten its contents)", q.s);
+    return 0;
+}
+
+/* 'node [scale S | scale SX SY SZ] [rotate x|y|z DEG] [translate X Y Z] ...':
+ * opens a node whose contents are transformed by its steps in the order
+ * written, then by its parent's. */
+static int scene_parse_node(scene_parser_t *p)
+{
+    xform_t own, step;
+    int i = 1;
+
+    if (p->node_depth >= SCENE_MAX_NODE_DEPTH)
+        return scene_fail(p, "nodes nested deeper than %d (the outermost open one is on line %d)",
+                          SCENE_MAX_NODE_DEPTH, p->node_line[1]);
+    xform_identity(&own);
+    while (i < p->ntok) {
+        scene_tok_t t = p->tok[i++];
+        double v[3];
+        if (scene_tok_is(t, "scale")) {
+            int n = 0;
+            while (n < 3 && i + n < p->ntok && scene_looks_numeric(p->tok[i + n]))
+                n++;
+            if (n == 2)
+                return scene_fail(p, "'scale' needs 1 or 3 numbers, got 2");
+            for (int k = 0; k < (n == 3 ? 3 : 1); k++)
+                if (scene_node_number(p, "scale", i + k, FXRT_COORD_LIMIT, &v[k]) != 0)
+                    return -1;
+            if (n != 3)
+                v[1] = v[2] = v[0];
+            i += n == 3 ? 3 : 1;
+            xform_scale(&step, v[0], v[1], v[2]);
+        } else if (scene_tok_is(t, "rotate")) {
+            int axis = i >= p->ntok                     ? -1
+                       : scene_tok_is(p->tok[i], "x") ? 0
+                       : scene_tok_is(p->tok[i], "y") ? 1
+                       : scene_tok_is(p->tok[i], "z") ? 2
+                                                        : -1;
+            if (axis < 0) {
+                if (i >= p->ntok)
+                    return scene_fail(p, "'rotate' needs x, y or z and an angle in degrees");
+                scene_quote_t q = scene_quote(p->tok[i]);
+                return scene_fail(p, "'rotate' needs an axis x, y or z, got '%s'", q.s);
+            }
+            if (scene_node_number(p, "rotate", i + 1, SCENE_MAX_ROTATE, &v[0]) != 0)
+                return -1;
+            i += 2;
+            xform_rotate(&step, axis, v[0]);
+        } else if (scene_tok_is(t, "translate")) {
+            for (int k = 0; k < 3; k++)
+                if (scene_node_number(p, "translate", i + k, FXRT_COORD_LIMIT, &v[k]) != 0)
+                    return -1;
+            if (i + 3 < p->ntok && scene_looks_numeric(p->tok[i + 3]))
+                return scene_fail(p, "'translate' needs 3 numbers, got more");
+            i += 3;
+            xform_translate(&step, v[0], v[1], v[2]);
+        } else {
+            scene_quote_t q = scene_quote(t);
+            return scene_fail(p, "unexpected '%s' in node (expected scale, rotate or translate)", q.s);
+        }
+        xform_after(&own, &step, &own);
+    }
+    p->node_depth++;
+    xform_after(&p->node_xf[p->node_depth], &p->node_xf[p->node_depth - 1], &own);
+    p->node_line[p->node_depth] = p->line;
+    return 0;
+}
+
+static int scene_parse_end(scene_parser_t *p)
+{
+    if (p->node_depth == 0)
+        return scene_fail(p, "'end' without 'node'");
+    if (p->ntok != 1) {
+        scene_quote_t q = scene_quote(p->tok[1]);
+        return scene_fail(p, "unexpected '%s' after end ('end' stands alone)", q.s);
+    }
+    p->node_depth--;
+    return 0;
+}
+
+/* 'mesh file PATH [shading smooth|flat] color R G B [material ...]': the
+ * OBJ file's triangles (PATH relative to the scene file's folder), each
+ * an object of the triangle kind with the mesh's colour and material,
+ * through the open nodes' transform. Zero-area triangles are left out and
+ * counted. Either every triangle is added or none. */
+static int scene_parse_mesh(scene_parser_t *p)
+{
+    enum { MESH_SHADING, MESH_COLOR, MESH_MATERIAL };
+    scene_fval_t vals[SCENE_MAX_FIELDS];
+    char path[4096], err[1024];
+    obj_t m;
+    size_t keep = 0, dropped = 0, i;
+    int cap = scene_kind_capacity[SCENE_TRIANGLE], rc = 0;
+
+    if (p->ntok < 3 || !scene_tok_is(p->tok[1], "file"))
+        return scene_fail(p, "'mesh' needs 'file PATH' first: mesh file PATH [shading smooth|flat] color R G B");
+    if (scene_parse_fields(p, &scene_shape_mesh, 3, vals) != 0)
+        return -1;
+    if (scene_check_material(p, &scene_shape_mesh, &vals[MESH_MATERIAL]) != 0)
+        return -1;
+    if (!vals[MESH_SHADING].seen || vals[MESH_SHADING].word == 1)
+        return scene_fail(p, "smooth shading (the default) is not implemented yet: add 'shading flat'");
+    if (vals[MESH_MATERIAL].seen && vals[MESH_MATERIAL].word == SCENE_MAT_TRANSPARENT)
+        return scene_fail(p, "a transparent mesh is not implemented yet (glass needs a closed solid)");
+    if (cap <= 0)
+        return scene_fail(p, "meshes are made of triangles, which are not in this build (%s is 0)",
+                          scene_kind_macro[SCENE_TRIANGLE]);
+    {
+        /* The folder of the scene file's name, up to its last '/'. */
+        const char *slash = strrchr(p->name, '/');
+        scene_tok_t t = p->tok[2];
+        int dir = t.s[0] == '/' || slash == NULL ? 0 : (int)(slash - p->name) + 1;
+        if ((size_t)dir + t.n >= sizeof path) {
+            scene_quote_t q = scene_quote(t);
+            return scene_fail(p, "mesh file path too long: '%s'", q.s);
+        }
+        memcpy(path, p->name, (size_t)dir);
+        memcpy(path + dir, t.s, t.n);
+        path[(size_t)dir + t.n] = '\0';
+    }
+    if (obj_load(path, &m, err, sizeof err) != 0) {
+        errf_set(p->err, p->errlen, "%s (the mesh on %s:%d)", err, p->name, p->line);
+        return -1;
+    }
+    for (i = 0; i < m.ntri; i++) {
+        obj_vec_t n = obj_face_normal(&m, i);
+        if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
+            dropped++;
+        else
+            keep++;
+    }
+    if (keep > (size_t)(cap - p->kind_count[SCENE_TRIANGLE]) ||
+        keep > (size_t)(SCENE_MAX_OBJECTS - p->out->count)) {
+        rc = scene_fail(p, "too many triangles (capacity %d): the mesh %s has %zu, %d more fit", cap, path, keep,
+                        cap - p->kind_count[SCENE_TRIANGLE]);
+        goto done;
+    }
+    for (i = 0, keep = 0; i < m.ntri; i++) {
+        const obj_tri_t *tr = &m.tri[i];
+        obj_vec_t n = obj_face_normal(&m, i);
+        scene_obj_t *o = &p->out->obj[p->out->count + keep];
+        char where[sizeof path + 16];
+        if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
+            continue;
+        memset(o, 0, sizeof *o);
+        o->kind = SCENE_TRIANGLE;
+        o->line = p->line;
+        for (int k = 0; k < 3; k++) {
+            const obj_vec_t *v = &m.v[tr->v[k]];
+            o->p[k].x = v->x;
+            o->p[k].y = v->y;
+            o->p[k].z = v->z;
+        }
+        scene_set_surface(o, vals, MESH_COLOR);
+        snprintf(where, sizeof where, "%s:%ld", path, (long)tr->line);
+        if ((rc = scene_place(p, o, where)) != 0)
+            goto done;
+        keep++;
+    }
+    p->out->count += (int)keep;
+    p->kind_count[SCENE_TRIANGLE] += (int)keep;
+    p->out->mesh_dropped += (long)dropped;
+done:
+    obj_free(&m);
+    return rc;
 }
 
 /* Non-negative decimal integer without sign; saturates so that absurdly
@@ -1044,6 +1350,20 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
     if (p->ntok == 0)
         return 0;
     kw = p->tok[0];
+    if (scene_tok_is(kw, "node"))
+        return scene_parse_node(p);
+    if (scene_tok_is(kw, "end"))
+        return scene_parse_end(p);
+    if (scene_tok_is(kw, "mesh"))
+        return scene_parse_mesh(p);
+    if (p->node_depth > 0) {
+        static const char *const global[] = {"image", "background", "ambient", "light", "depth", "samples", "camera"};
+        for (size_t k = 0; k < sizeof global / sizeof global[0]; k++)
+            if (scene_tok_is(kw, global[k]))
+                return scene_fail(p, "'%s' is not allowed inside a node (node on line %d): image, background, "
+                                     "ambient, camera, lights, depth and samples belong to the whole scene",
+                                  global[k], p->node_line[p->node_depth]);
+    }
     if (scene_tok_is(kw, "image"))
         return scene_parse_image(p);
     if (scene_tok_is(kw, "background"))
@@ -1074,7 +1394,7 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
         }
         scene_quote_t q = scene_quote(kw);
         return scene_fail(p, "unknown keyword '%s' (expected image, background, ambient, camera, "
-                             "light, depth, samples, %s)", q.s, kinds);
+                             "light, depth, samples, node, end, mesh, %s)", q.s, kinds);
     }
 }
 
@@ -1085,6 +1405,7 @@ int scene_parse(const char *name, const char *text, size_t len, scene_t *out, ch
     size_t pos = 0;
 
     memset(&p, 0, sizeof p);
+    xform_identity(&p.node_xf[0]);
     p.name = name != NULL ? name : "<scene>";
     p.err = err;
     p.errlen = errlen;
@@ -1125,6 +1446,10 @@ int scene_parse(const char *name, const char *text, size_t len, scene_t *out, ch
             return -1;
     }
 
+    if (p.node_depth > 0) {
+        p.line = p.node_line[p.node_depth];
+        return scene_fail(&p, "'node' without 'end'");
+    }
     if (!p.camera_line) {
         /* Whole-file problem: reported at the last line, where the reader
          * would have added the missing statement. */

@@ -36,6 +36,11 @@ typedef enum {
     SCENE_MAT_TRANSPARENT /* index required */
 } scene_material_t;
 
+/* 'node ... end' nests at most this deep; 'rotate AXIS DEG' takes |DEG|
+ * up to SCENE_MAX_ROTATE. */
+#define SCENE_MAX_NODE_DEPTH 16
+#define SCENE_MAX_ROTATE 36000
+
 /* 'depth N' (bounces per primary ray) and 'samples N [adaptive]'. */
 #define SCENE_DEFAULT_DEPTH 4
 #define SCENE_MAX_DEPTH 16
@@ -90,6 +95,7 @@ typedef struct {
     int adaptive;          /* 1 for 'samples N adaptive' */
     int samples_line;      /* line of 'samples', 0 when absent */
     int nlights;
+    long mesh_dropped;     /* zero-area triangles the meshes' files held, left out */
     scene_light_t light[SCENE_MAX_LIGHTS > 0 ? SCENE_MAX_LIGHTS : 1]; /* in file order */
 } scene_t;
 

@@ -420,6 +420,16 @@ check "fxrt obj: exit 0" test $? -eq 0
 check "fxrt obj: a quad is one face, two triangles" bash -c "grep -qx 'faces 1' '$out/quad.txt' && grep -qx 'triangles 2' '$out/quad.txt'"
 check "fxrt obj: corners with the file's normal" grep -qx "corners_with_vn 6 of 6" "$out/quad.txt"
 check "fxrt obj: bounds" grep -qx "bounds 0 0 0 1 1 0" "$out/quad.txt"
+check "fxrt obj: no zero-area triangle in a quad" grep -qx "zero_area 0" "$out/quad.txt"
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\nf 4 4 2\n' >"$out/flat.obj"
+"$FXRT" obj "$out/flat.obj" >"$out/flat.txt"
+check "fxrt obj: collinear and repeated corners are zero-area" grep -qx "zero_area 2" "$out/flat.txt"
+# A scene's mesh: zero-area triangles left out, with a note on stderr.
+printf '%s\n' "camera perspective eye 0 0 5 gaze 0 0 -1 up 0 1 0 fov 45" \
+    "node translate 0 0 -1" "mesh file flat.obj shading flat color 1 0 0" "end" >"$out/mesh.scene"
+"$FXRT" render "$out/mesh.scene" -o "$out/mesh.png" 2>"$out/mesh.err"
+check "fxrt render: a mesh with zero-area triangles renders (exit 0)" test $? -eq 0
+check "fxrt render: ... and notes the two left out" grep -qx "$out/mesh.scene: note: 2 zero-area mesh triangles left out" "$out/mesh.err"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 0\n' >"$out/zero.obj"
 "$FXRT" obj "$out/zero.obj" >"$out/zero.txt" 2>"$out/zero.err"
 check "fxrt obj: index 0 exits 2" test $? -eq 2

@@ -2,7 +2,7 @@
 # 0.0001, parsed, built and rendered by all three builds, gives the same
 # 8-bit value (docs/ACCURACY.md, "Colour"). Included by the top Makefile.
 COLOR_BIN := $(BUILD)/tests/test_color
-test_color_DEPS := $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/engine_select.o $(BUILD)/host/fx.o \
+test_color_DEPS := $(SCENE_LIB) $(BUILD)/host/engine_select.o $(BUILD)/host/fx.o \
                    $(call multi_objs,$(BUILD),fxrt,$(NUMBERS))
 
 SUITES_EXTRA += $(COLOR_BIN)

@@ -72,12 +72,17 @@ static long fuzz_line_count(const uint8_t *d, size_t n)
 #define FUZZ_LINE_AMBIENT 6
 #define FUZZ_LINE_DEPTH 7
 #define FUZZ_LINE_SAMPLES 8
-#define FUZZ_LINE_OTHER 9
+#define FUZZ_LINE_MESH 9
+#define FUZZ_LINE_OTHER 10
+/* Added to a line's kind when it lies inside a node (between 'node' and
+ * its 'end'). */
+#define FUZZ_IN_NODE 16
 
 static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, long lines)
 {
     static const char *const kw[] = {"plane", "sphere",  "triangle", "box",    "camera",
-                                     "light", "ambient", "depth",    "samples"};
+                                     "light", "ambient", "depth",    "samples", "mesh"};
+    int depth = 0;
     /* scene_parse skips a UTF-8 byte-order mark at the start of the text
      * (line 1's keyword follows it); so does this. */
     size_t i = n >= 3 && memcmp(d, "\xef\xbb\xbf", 3) == 0 ? 3 : 0;
@@ -97,6 +102,12 @@ static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, lo
         for (k = 0; k < (int)(sizeof kw / sizeof kw[0]); k++)
             if (len == strlen(kw[k]) && memcmp(d + start, kw[k], len) == 0)
                 kinds[l] = (unsigned char)k;
+        if (depth > 0 && kinds[l] != FUZZ_LINE_OTHER)
+            kinds[l] |= FUZZ_IN_NODE;
+        if (len == 4 && memcmp(d + start, "node", 4) == 0)
+            depth++;
+        else if (len == 3 && memcmp(d + start, "end", 3) == 0 && depth > 0)
+            depth--;
         while (i < n && d[i] != '\n')
             i++;
         if (i < n)
@@ -104,14 +115,27 @@ static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, lo
     }
 }
 
-/* "NAME:LINE: message", one line of printable ASCII, LINE in 1..lines. */
+/* "NAME:LINE: message", one line of printable ASCII, LINE in 1..lines;
+ * or, for an error in a mesh's OBJ file, "OBJ...: message (the mesh on
+ * NAME:LINE)". */
 static void fuzz_check_error(const char *err, long lines)
 {
+    static const char mesh[] = " (the mesh on " FUZZ_NAME ":";
     size_t nl = strlen(FUZZ_NAME), i;
-    const char *s;
+    const char *s, *m;
     long line = 0;
 
     FUZZ_CHECK(memchr(err, '\0', FUZZ_ERR_LEN) != NULL, NULL);
+    if (strncmp(err, FUZZ_NAME ":", nl + 1) != 0 && (m = strstr(err, mesh)) != NULL) {
+        for (s = m + sizeof mesh - 1; *s >= '0' && *s <= '9'; s++) {
+            FUZZ_CHECK(line < 100000000L, err);
+            line = line * 10 + (*s - '0');
+        }
+        FUZZ_CHECK(line >= 1 && line <= lines && strcmp(s, ")") == 0, err);
+        for (i = 0; err[i] != '\0'; i++)
+            FUZZ_CHECK(err[i] >= 0x20 && err[i] < 0x7f, err);
+        return;
+    }
     FUZZ_CHECK(strncmp(err, FUZZ_NAME ":", nl + 1) == 0, err);
     s = err + nl + 1;
     FUZZ_CHECK(*s >= '1' && *s <= '9', err);
@@ -144,6 +168,19 @@ static void fuzz_check_vec(scene_vec_t v)
     fuzz_check_num(v.z, FXRT_COORD_LIMIT);
 }
 
+/* A value a node's transform made (host/scene.c, scene_place): finite,
+ * within the limit, 0 or at least half of 2^-16 (what Q16.16 does not
+ * round to 0), never -0. */
+static void fuzz_check_placed(scene_vec_t v)
+{
+    double c[3] = {v.x, v.y, v.z};
+    for (int k = 0; k < 3; k++) {
+        FUZZ_CHECK(isfinite(c[k]) && fabs(c[k]) <= FXRT_COORD_LIMIT, NULL);
+        FUZZ_CHECK(!(c[k] == 0.0 && signbit(c[k])), NULL);
+        FUZZ_CHECK(c[k] == 0.0 || fabs(c[k]) >= 0.5 / 65536.0, NULL);
+    }
+}
+
 static void fuzz_check_color(const double *c)
 {
     int k;
@@ -167,6 +204,7 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
     long l, cameras = 0;
     int kind_count[4] = {0, 0, 0, 0};
     int file_count[4] = {0, 0, 0, 0};
+    int meshes = 0;
     int i, k, prev_line = 0;
 
     FUZZ_CHECK(kinds != NULL, NULL);
@@ -179,8 +217,10 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
     for (l = 1; l <= lines; l++) {
         if (kinds[l] == FUZZ_LINE_CAMERA)
             cameras++;
-        else if (kinds[l] < 4)
-            file_count[kinds[l]]++;
+        else if ((kinds[l] & ~FUZZ_IN_NODE) < 4)
+            file_count[kinds[l] & ~FUZZ_IN_NODE]++;
+        else if ((kinds[l] & ~FUZZ_IN_NODE) == FUZZ_LINE_MESH)
+            meshes++;
     }
     FUZZ_CHECK(cameras == 1, NULL);
     FUZZ_CHECK(cam->line >= 1 && cam->line <= lines, NULL);
@@ -213,13 +253,22 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
     for (i = 0; i < s->count; i++) {
         const scene_obj_t *o = &s->obj[i];
         FUZZ_CHECK(o->kind >= SCENE_PLANE && o->kind <= SCENE_BOX, NULL);
-        FUZZ_CHECK(o->line > prev_line && o->line <= lines, NULL);
+        FUZZ_CHECK(o->line >= 1 && o->line <= lines, NULL);
+        int placed = (kinds[o->line] & FUZZ_IN_NODE) != 0, base = kinds[o->line] & ~FUZZ_IN_NODE;
+        /* A mesh's triangles share its line. */
+        if (base == FUZZ_LINE_MESH)
+            FUZZ_CHECK(o->line >= prev_line && o->kind == SCENE_TRIANGLE, NULL);
+        else
+            FUZZ_CHECK(o->line > prev_line && base == (int)o->kind, NULL);
         prev_line = o->line;
-        FUZZ_CHECK(kinds[o->line] == (unsigned char)o->kind, NULL);
         kind_count[o->kind]++;
         fuzz_check_color(o->color);
-        for (k = 0; k < 3; k++)
-            fuzz_check_vec(o->p[k]);
+        for (k = 0; k < 3; k++) {
+            if (placed || base == FUZZ_LINE_MESH)
+                fuzz_check_placed(o->p[k]);
+            else
+                fuzz_check_vec(o->p[k]);
+        }
         switch (o->kind) {
         case SCENE_PLANE:
             FUZZ_CHECK(!fuzz_is_zero(o->p[1]), NULL);
@@ -243,7 +292,10 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
     }
     for (k = 0; k < 4; k++) {
         FUZZ_CHECK(kind_count[k] <= cap[k], NULL);
-        FUZZ_CHECK(kind_count[k] == file_count[k], NULL);
+        if (k == SCENE_TRIANGLE && meshes > 0)
+            FUZZ_CHECK(kind_count[k] >= file_count[k], NULL);
+        else
+            FUZZ_CHECK(kind_count[k] == file_count[k], NULL);
     }
 
     /* Materials: flat by default; specular and exponent only for phong

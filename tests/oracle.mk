@@ -11,7 +11,7 @@
 
 ORACLE_NUMBERS := q16 double
 ORACLE_BIN     := $(BUILD)/tests/oracle
-ORACLE_OBJ     := $(BUILD)/tests/oracle.o $(BUILD)/tests/randscene.o $(BUILD)/host/scene.o $(BUILD)/host/errf.o $(BUILD)/host/fx.o \
+ORACLE_OBJ     := $(BUILD)/tests/oracle.o $(BUILD)/tests/randscene.o $(SCENE_LIB) $(BUILD)/host/fx.o \
                   $(call multi_objs,$(BUILD),oracle,$(ORACLE_NUMBERS))
 
 define oracle_number_rules

@@ -142,7 +142,7 @@ $(FUZZ_DIR)/obj/fuzz_scene.o: tests/fuzz_scene.c
 	@echo "  CC fuzz $<"
 	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -Ihost -Icore -c $< -o $@
 
-$(FUZZ_SCENE_BIN): $(FUZZ_DIR)/obj/fuzz_scene.o $(FUZZ_DIR)/obj/scene.o $(FUZZ_DIR)/obj/errf.o
+$(FUZZ_SCENE_BIN): $(FUZZ_DIR)/obj/fuzz_scene.o $(FUZZ_DIR)/obj/scene.o $(FUZZ_DIR)/obj/obj.o $(FUZZ_DIR)/obj/xform.o $(FUZZ_DIR)/obj/errf.o
 	@echo "  LD fuzz $@"
 	$(Q)$(FUZZ_CC) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $(filter %.o,$^) -lm
 
@@ -153,7 +153,8 @@ FUZZ_SCENE_DICT_WORDS := image background camera perspective orthographic plane 
     1e-5 1e99999 1e-400 -0 0.5 1 nan inf 0x1 32767 65536 \
     ambient light directional spot position direction angle shadows on off material flat lambert \
     phong specular exponent 90 90.0001 1024 1025 64.0 \
-    reflective transparent reflection index depth samples adaptive 0.01 0.00999 100 100.0001 1.33 16 17
+    reflective transparent reflection index depth samples adaptive 0.01 0.00999 100 100.0001 1.33 16 17 \
+    node end mesh file shading smooth rotate translate x y z 36000 36000.0001 scenes/models/cube.obj
 
 $(FUZZ_DIR)/scene.dict: tests/sanitize.mk
 	@mkdir -p $(@D)

@@ -4,7 +4,7 @@
 # (tests/scenec_light.sh). Included by the top Makefile.
 SCENE_LIGHT_BIN := $(foreach n,$(NUMBERS),$(BUILD)/tests/test_scene_light_$(n))
 define scene_light_rules
-$(BUILD)/tests/test_scene_light_$(1): tests/test_scene_light.c tests/check.h $(BUILD)/host/scene.o $(BUILD)/host/errf.o \
+$(BUILD)/tests/test_scene_light_$(1): tests/test_scene_light.c tests/check.h $(SCENE_LIB) \
     $(BUILD)/host/fx.o $(BUILD)/host/engine-$(1).o $(CORE_NUM:%=$(BUILD)/host/$(1)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(1) $$@"

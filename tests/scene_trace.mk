@@ -5,7 +5,7 @@
 # (tests/scenec_trace.sh). Included by the top Makefile.
 SCENE_TRACE_BIN := $(foreach n,$(NUMBERS),$(BUILD)/tests/test_scene_trace_$(n))
 define scene_trace_rules
-$(BUILD)/tests/test_scene_trace_$(1): tests/test_scene_trace.c tests/check.h $(BUILD)/host/scene.o $(BUILD)/host/errf.o \
+$(BUILD)/tests/test_scene_trace_$(1): tests/test_scene_trace.c tests/check.h $(SCENE_LIB) \
     $(BUILD)/host/fx.o $(BUILD)/host/engine-$(1).o $(CORE_NUM:%=$(BUILD)/host/$(1)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(1) $$@"

@@ -1,0 +1,468 @@
+/* Tests for nodes and meshes in scene files (host/scene.c, host/xform.c;
+ * docs/SCENES.md, "Nodes" and "Meshes"). Random nested nodes with random
+ * steps hold random objects; each object the loader returns is checked
+ * against the same object moved by an independent computation: every
+ * step applied to the point in turn, innermost node first, by its own
+ * formula (no matrices, no composition), a plane's normal from the cross
+ * product of two moved tangents, a box from its moved corners. Meshes
+ * come from generated OBJ files with degenerate triangles among them. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "scene.h"
+
+#define CAM "camera perspective eye 0 0 9 gaze 0 0 -1 up 0 1 0 fov 45\n"
+
+static scene_t g_scene;
+static char g_err[1024];
+static uint64_t g_rng = 0x9e3779b97f4a7c15u;
+
+static uint64_t rnd(void)
+{
+    g_rng ^= g_rng << 13;
+    g_rng ^= g_rng >> 7;
+    g_rng ^= g_rng << 17;
+    return g_rng;
+}
+
+/* Uniform in [lo, hi], written with 4 decimals and read back, so the
+ * test's value is exactly the file's. */
+static double draw(double lo, double hi, char *out, size_t size)
+{
+    double v = lo + (hi - lo) * (double)(rnd() >> 11) / 9007199254740992.0;
+    snprintf(out, size, "%.4f", v);
+    return strtod(out, NULL);
+}
+
+/* One step of a node, as the test applies it. */
+typedef struct {
+    int type; /* 0 scale, 1 rotate, 2 translate */
+    int axis;
+    double v[3];
+} step_t;
+
+typedef struct {
+    int n;
+    step_t s[5];
+} node_t;
+
+static void apply_step(const step_t *st, double p[3], int linear)
+{
+    if (st->type == 0) {
+        for (int k = 0; k < 3; k++)
+            p[k] *= st->v[k];
+    } else if (st->type == 1) {
+        /* counter-clockwise seen from +axis: about z, x goes to y */
+        int i = (st->axis + 1) % 3, j = (st->axis + 2) % 3;
+        double a = st->v[0] * (3.14159265358979323846 / 180.0), c = cos(a), s = sin(a);
+        double pi = p[i], pj = p[j];
+        p[i] = c * pi - s * pj;
+        p[j] = s * pi + c * pj;
+    } else if (!linear) {
+        for (int k = 0; k < 3; k++)
+            p[k] += st->v[k];
+    }
+}
+
+/* Nodes nest[0] (outermost) .. nest[depth-1]: innermost first. */
+static void apply_nodes(const node_t *nest, int depth, double p[3], int linear)
+{
+    for (int d = depth - 1; d >= 0; d--)
+        for (int k = 0; k < nest[d].n; k++)
+            apply_step(&nest[d].s[k], p, linear);
+}
+
+/* What a node's steps may be: kinds of scale and rotation allowed. */
+enum { ANY, SIMILAR, AXES };
+
+/* A random node line into buf. */
+static void random_node(node_t *nd, int allowed, char *buf, size_t size)
+{
+    char t[3][32];
+    size_t used = (size_t)snprintf(buf, size, "node");
+    nd->n = (int)(rnd() % 4);
+    for (int k = 0; k < nd->n; k++) {
+        step_t *st = &nd->s[k];
+        st->type = (int)(rnd() % 3);
+        if (st->type == 0) {
+            int three = allowed != SIMILAR && rnd() % 2;
+            for (int a = 0; a < 3; a++) {
+                st->v[a] = draw(0.2, 2.5, t[a], sizeof t[a]);
+                if (rnd() % 4 == 0) {
+                    st->v[a] = -st->v[a];
+                    memmove(t[a] + 1, t[a], strlen(t[a]) + 1);
+                    t[a][0] = '-';
+                }
+            }
+            if (three)
+                used += (size_t)snprintf(buf + used, size - used, " scale %s %s %s", t[0], t[1], t[2]);
+            else {
+                used += (size_t)snprintf(buf + used, size - used, " scale %s", t[0]);
+                st->v[1] = st->v[2] = st->v[0];
+            }
+        } else if (st->type == 1) {
+            st->axis = (int)(rnd() % 3);
+            if (allowed == AXES || rnd() % 3 == 0) {
+                st->v[0] = 90.0 * (double)((int)(rnd() % 9) - 4);
+                snprintf(t[0], sizeof t[0], "%g", st->v[0]);
+            } else {
+                st->v[0] = draw(-400, 400, t[0], sizeof t[0]);
+            }
+            used += (size_t)snprintf(buf + used, size - used, " rotate %c %s", "xyz"[st->axis], t[0]);
+        } else {
+            for (int a = 0; a < 3; a++)
+                st->v[a] = draw(-6, 6, t[a], sizeof t[a]);
+            used += (size_t)snprintf(buf + used, size - used, " translate %s %s %s", t[0], t[1], t[2]);
+        }
+    }
+    snprintf(buf + used, size - used, "\n");
+}
+
+static double sign_det(const node_t *nest, int depth)
+{
+    double s = 1;
+    for (int d = 0; d < depth; d++)
+        for (int k = 0; k < nest[d].n; k++)
+            if (nest[d].s[k].type == 0)
+                s *= nest[d].s[k].v[0] * nest[d].s[k].v[1] * nest[d].s[k].v[2] < 0 ? -1 : 1;
+    return s;
+}
+
+static int close_to(double got, double want, double scale)
+{
+    return fabs(got - want) <= 1e-9 * (1.0 + scale);
+}
+
+static int vec_close(scene_vec_t v, const double w[3], double scale)
+{
+    return close_to(v.x, w[0], scale) && close_to(v.y, w[1], scale) && close_to(v.z, w[2], scale);
+}
+
+/* A scene of nested random nodes around one object line; depth nodes. */
+static void nest_scene(char *text, size_t size, node_t *nest, int depth, int allowed, const char *object)
+{
+    size_t used = (size_t)snprintf(text, size, "%s", CAM);
+    for (int d = 0; d < depth; d++) {
+        random_node(&nest[d], allowed, text + used, size - used);
+        used += strlen(text + used);
+    }
+    used += (size_t)snprintf(text + used, size - used, "%s\n", object);
+    for (int d = 0; d < depth; d++)
+        used += (size_t)snprintf(text + used, size - used, "end\n");
+}
+
+static void test_triangles_and_planes(void)
+{
+    long bad = 0;
+    for (int iter = 0; iter < 4000; iter++) {
+        node_t nest[4];
+        int depth = 1 + (int)(rnd() % 4);
+        char text[4096], obj[512], t[9][32];
+        double p[3][3];
+        int plane = iter % 2;
+        for (int k = 0; k < 9; k++)
+            p[k / 3][k % 3] = draw(-4, 4, t[k], sizeof t[k]);
+        if (plane)
+            snprintf(obj, sizeof obj, "plane point %s %s %s normal %s %s %s color 0.3 0.5 0.7", t[0], t[1], t[2],
+                     t[3], t[4], t[5]);
+        else
+            snprintf(obj, sizeof obj, "triangle a %s %s %s b %s %s %s c %s %s %s color 0.3 0.5 0.7", t[0], t[1],
+                     t[2], t[3], t[4], t[5], t[6], t[7], t[8]);
+        nest_scene(text, sizeof text, nest, depth, ANY, obj);
+        if (scene_parse("t", text, strlen(text), &g_scene, g_err, sizeof g_err) != 0 || g_scene.count != 1) {
+            CHECK_SWEEP(0, "%s: %s", text, g_err);
+            bad++;
+            continue;
+        }
+        const scene_obj_t *o = &g_scene.obj[0];
+        int ok;
+        if (plane) {
+            /* Two tangents of the normal n: n x e for two axes e. */
+            double n[3] = {p[1][0], p[1][1], p[1][2]}, t1[3], t2[3], pt[3] = {p[0][0], p[0][1], p[0][2]};
+            int ax = fabs(n[0]) < fabs(n[1]) ? (fabs(n[0]) < fabs(n[2]) ? 0 : 2) : (fabs(n[1]) < fabs(n[2]) ? 1 : 2);
+            double e[3] = {0, 0, 0};
+            e[ax] = 1;
+            t1[0] = n[1] * e[2] - n[2] * e[1], t1[1] = n[2] * e[0] - n[0] * e[2], t1[2] = n[0] * e[1] - n[1] * e[0];
+            t2[0] = n[1] * t1[2] - n[2] * t1[1], t2[1] = n[2] * t1[0] - n[0] * t1[2], t2[2] = n[0] * t1[1] - n[1] * t1[0];
+            /* t1 x t2 points along n: (n x e) x (n x (n x e)) = |n x e|^2 n. */
+            apply_nodes(nest, depth, pt, 0);
+            apply_nodes(nest, depth, t1, 1);
+            apply_nodes(nest, depth, t2, 1);
+            double m[3] = {t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2], t1[0] * t2[1] - t1[1] * t2[0]};
+            double len = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]), sg = sign_det(nest, depth);
+            for (int k = 0; k < 3; k++)
+                m[k] *= sg / len;
+            ok = o->kind == SCENE_PLANE && vec_close(o->p[0], pt, 100) && vec_close(o->p[1], m, 1);
+        } else {
+            ok = o->kind == SCENE_TRIANGLE;
+            for (int v = 0; v < 3; v++) {
+                apply_nodes(nest, depth, p[v], 0);
+                ok = ok && vec_close(o->p[v], p[v], 100);
+            }
+        }
+        ok = ok && o->color[0] == 0.3 && o->color[2] == 0.7;
+        CHECK_SWEEP(ok, "%s", text);
+        bad += !ok;
+    }
+    CHECK_MSG(bad == 0, "4000 triangles and planes in random nodes: %ld wrong", bad);
+}
+
+static void test_spheres(void)
+{
+    long bad = 0, refused = 0;
+    for (int iter = 0; iter < 3000; iter++) {
+        node_t nest[4];
+        int depth = 1 + (int)(rnd() % 4), uneven = iter % 3 == 0;
+        char text[4096], obj[256], t[4][32];
+        double c[3], r = draw(0.1, 3, t[3], sizeof t[3]);
+        for (int k = 0; k < 3; k++)
+            c[k] = draw(-3, 3, t[k], sizeof t[k]);
+        snprintf(obj, sizeof obj, "sphere center %s %s %s radius %s color 1 0.5 0", t[0], t[1], t[2], t[3]);
+        nest_scene(text, sizeof text, nest, depth, SIMILAR, obj);
+        if (uneven) {
+            /* One more node that scales by 1, 1.5, 1 on the inside. */
+            char *at = strstr(text, "sphere");
+            char tail[1024];
+            snprintf(tail, sizeof tail, "%s", at);
+            snprintf(at, sizeof text - (size_t)(at - text), "node scale 1 1.5 1\n%.*send\n%s",
+                     (int)(strchr(tail, '\n') - tail + 1), tail, strchr(tail, '\n') + 1);
+        }
+        int rc = scene_parse("t", text, strlen(text), &g_scene, g_err, sizeof g_err);
+        if (uneven) {
+            int ok = rc != 0 && strstr(g_err, "would be an ellipsoid") != NULL;
+            CHECK_SWEEP(ok, "%s: %s", text, g_err);
+            refused += ok;
+            continue;
+        }
+        double s = 1;
+        for (int d = 0; d < depth; d++)
+            for (int k = 0; k < nest[d].n; k++)
+                if (nest[d].s[k].type == 0)
+                    s *= fabs(nest[d].s[k].v[0]);
+        apply_nodes(nest, depth, c, 0);
+        int ok = rc == 0 && g_scene.count == 1 && g_scene.obj[0].kind == SCENE_SPHERE &&
+                 vec_close(g_scene.obj[0].p[0], c, 100) && close_to(g_scene.obj[0].radius, r * s, r * s);
+        CHECK_SWEEP(ok, "%s: %s", text, rc ? g_err : "");
+        bad += !ok;
+    }
+    CHECK_MSG(bad == 0, "2000 spheres in similar nodes: %ld wrong", bad);
+    CHECK_MSG(refused == 1000, "1000 spheres in an uneven node refused as ellipsoids: %ld", refused);
+}
+
+static void test_boxes(void)
+{
+    long bad = 0, refused = 0;
+    for (int iter = 0; iter < 3000; iter++) {
+        node_t nest[4];
+        int depth = 1 + (int)(rnd() % 4), turned = iter % 3 == 0;
+        char text[4096], obj[256], t[6][32];
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; k++) {
+            lo[k] = draw(-3, 0, t[k], sizeof t[k]);
+            hi[k] = draw(0, 3, t[k + 3], sizeof t[k + 3]);
+        }
+        snprintf(obj, sizeof obj, "box min %s %s %s max %s %s %s color 0 0 1", t[0], t[1], t[2], t[3], t[4], t[5]);
+        nest_scene(text, sizeof text, nest, depth, AXES, obj);
+        if (turned) {
+            char *at = strstr(text, "box");
+            char tail[1024];
+            snprintf(tail, sizeof tail, "%s", at);
+            snprintf(at, sizeof text - (size_t)(at - text), "node rotate %c 30\n%.*send\n%s", "xyz"[iter % 3],
+                     (int)(strchr(tail, '\n') - tail + 1), tail, strchr(tail, '\n') + 1);
+        }
+        int rc = scene_parse("t", text, strlen(text), &g_scene, g_err, sizeof g_err);
+        if (turned) {
+            int ok = rc != 0 && strstr(g_err, "would be an oriented box") != NULL;
+            CHECK_SWEEP(ok, "%s: %s", text, g_err);
+            refused += ok;
+            continue;
+        }
+        double a[3] = {INFINITY, INFINITY, INFINITY}, b[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (int c = 0; c < 8; c++) {
+            double q[3] = {(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]};
+            apply_nodes(nest, depth, q, 0);
+            for (int k = 0; k < 3; k++)
+                a[k] = fmin(a[k], q[k]), b[k] = fmax(b[k], q[k]);
+        }
+        int ok = rc == 0 && g_scene.count == 1 && g_scene.obj[0].kind == SCENE_BOX &&
+                 vec_close(g_scene.obj[0].p[0], a, 100) && vec_close(g_scene.obj[0].p[1], b, 100);
+        CHECK_SWEEP(ok, "%s: %s", text, rc ? g_err : "");
+        bad += !ok;
+    }
+    CHECK_MSG(bad == 0, "2000 boxes in nodes that keep axes: %ld wrong", bad);
+    CHECK_MSG(refused == 1000, "1000 boxes turned by 30 degrees refused as oriented boxes: %ld", refused);
+}
+
+/* The README's example order: scale, then rotate, then translate; and a
+ * nested node's transform first, then its parent's. Exact values. */
+static void test_order(void)
+{
+    const char *s = CAM "node translate 0 1 -5\nnode rotate z 90\nnode scale 2 1 1\n"
+                        "triangle a 1 0 0 b 0 1 0 c 0 0 1 color 1 1 1\nend\nend\nend\n";
+    const char *f = CAM "node scale 2 1 1 rotate z 90 translate 0 1 -5\n"
+                        "triangle a 1 0 0 b 0 1 0 c 0 0 1 color 1 1 1\nend\n";
+    for (int k = 0; k < 2; k++) {
+        const char *text = k ? s : f;
+        int rc = scene_parse("t", text, strlen(text), &g_scene, g_err, sizeof g_err);
+        /* a = (1,0,0): scaled (2,0,0), turned (0,2,0), moved (0,3,-5);
+         * b = (0,1,0): (0,1,0), (-1,0,0), (-1,1,-5); c: (0,0,1) -> (0,1,-4). */
+        const scene_obj_t *o = &g_scene.obj[0];
+        CHECK_MSG(rc == 0 && o->p[0].x == 0 && o->p[0].y == 3 && o->p[0].z == -5 && o->p[1].x == -1 &&
+                      o->p[1].y == 1 && o->p[1].z == -5 && o->p[2].x == 0 && o->p[2].y == 1 && o->p[2].z == -4,
+                  "%s: %s", k ? "nested" : "one line", g_err);
+    }
+}
+
+static void test_depth_cap(void)
+{
+    char text[4096];
+    for (int depth = SCENE_MAX_NODE_DEPTH; depth <= SCENE_MAX_NODE_DEPTH + 1; depth++) {
+        size_t used = (size_t)snprintf(text, sizeof text, "%s", CAM);
+        for (int d = 0; d < depth; d++)
+            used += (size_t)snprintf(text + used, sizeof text - used, "node translate 0 0 -0.1\n");
+        used += (size_t)snprintf(text + used, sizeof text - used, "sphere center 0 0 0 radius 1 color 1 1 1\n");
+        for (int d = 0; d < depth; d++)
+            used += (size_t)snprintf(text + used, sizeof text - used, "end\n");
+        int rc = scene_parse("t", text, used, &g_scene, g_err, sizeof g_err);
+        if (depth == SCENE_MAX_NODE_DEPTH)
+            CHECK_MSG(rc == 0 && fabs(g_scene.obj[0].p[0].z + 0.1 * depth) < 1e-12, "%s", g_err);
+        else
+            CHECK_MSG(rc != 0 && strstr(g_err, "nested deeper than") != NULL, "%s", g_err);
+    }
+}
+
+/* ---- meshes ---- */
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "wb");
+    if (f == NULL || fputs(text, f) < 0 || fclose(f) != 0) {
+        fprintf(stderr, "cannot write %s\n", path);
+        exit(2);
+    }
+}
+
+static void test_meshes(const char *dir)
+{
+    char objpath[512], scpath[512], sub[512];
+    long bad = 0;
+    snprintf(sub, sizeof sub, "%s/scenes", dir);
+    snprintf(objpath, sizeof objpath, "%s/m.obj", dir);
+    snprintf(scpath, sizeof scpath, "%s/scenes/s.scene", dir);
+    if (mkdir(sub, 0700) != 0) {
+        CHECK_MSG(0, "mkdir %s failed", sub);
+        return;
+    }
+    for (int iter = 0; iter < 300; iter++) {
+        /* nv vertices, nt triangles, some of them degenerate (a repeated
+         * vertex index, or three collinear vertices). */
+        static char obj[1 << 16], text[8192];
+        double v[40][3];
+        int nv = 3 + (int)(rnd() % 30), nt = 1 + (int)(rnd() % 40), tri[40][3], zero = 0;
+        size_t used = 0;
+        char t[3][32];
+        for (int i = 0; i < nv; i++) {
+            for (int k = 0; k < 3; k++)
+                v[i][k] = draw(-2, 2, t[k], sizeof t[k]);
+            used += (size_t)snprintf(obj + used, sizeof obj - used, "v %s %s %s\n", t[0], t[1], t[2]);
+        }
+        for (int i = 0; i < nt; i++) {
+            for (int k = 0; k < 3; k++)
+                tri[i][k] = (int)(rnd() % (uint64_t)nv);
+            double u[3], w[3];
+            for (int k = 0; k < 3; k++)
+                u[k] = v[tri[i][1]][k] - v[tri[i][0]][k], w[k] = v[tri[i][2]][k] - v[tri[i][0]][k];
+            double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+            zero += c[0] == 0 && c[1] == 0 && c[2] == 0;
+            used += (size_t)snprintf(obj + used, sizeof obj - used, "f %d %d %d\n", tri[i][0] + 1, tri[i][1] + 1,
+                                     tri[i][2] + 1);
+        }
+        write_text(objpath, obj);
+        node_t nest[3];
+        int depth = (int)(rnd() % 4);
+        nest_scene(text, sizeof text, nest, depth, ANY,
+                   "mesh file ../m.obj shading flat color 0.2 0.4 0.6 material phong specular 0.5 0.5 0.5 "
+                   "exponent 20");
+        write_text(scpath, text);
+        int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
+        int ok = rc == 0 && g_scene.count == nt - zero && g_scene.mesh_dropped == zero;
+        for (int i = 0, j = 0; ok && i < nt; i++) {
+            double c[3][3];
+            int degenerate = 1;
+            for (int k = 0; k < 3; k++)
+                memcpy(c[k], v[tri[i][k]], sizeof c[k]);
+            {
+                double u[3], w[3];
+                for (int k = 0; k < 3; k++)
+                    u[k] = c[1][k] - c[0][k], w[k] = c[2][k] - c[0][k];
+                degenerate = u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 &&
+                             u[0] * w[1] - u[1] * w[0] == 0;
+            }
+            if (degenerate)
+                continue;
+            const scene_obj_t *o = &g_scene.obj[j++];
+            ok = o->kind == SCENE_TRIANGLE && o->material == SCENE_MAT_PHONG && o->exponent == 20 &&
+                 o->specular[1] == 0.5 && o->color[1] == 0.4;
+            for (int k = 0; k < 3; k++) {
+                apply_nodes(nest, depth, c[k], 0);
+                ok = ok && vec_close(o->p[k], c[k], 100);
+            }
+        }
+        CHECK_SWEEP(ok, "mesh %d: %s", iter, rc ? g_err : text);
+        bad += !ok;
+    }
+    CHECK_MSG(bad == 0, "300 generated meshes in random nodes: %ld wrong", bad);
+
+    /* Capacity: exactly the triangles that fit, then one more; a refused
+     * mesh names the count. */
+    for (int extra = 0; extra < 2; extra++) {
+        static char obj[1 << 20];
+        size_t used = 0;
+        int n = FXRT_MAX_TRIANGLES + extra;
+        for (int i = 0; i < n; i++)
+            used += (size_t)snprintf(obj + used, sizeof obj - used, "v %d 0 0\nv %d 1 0\nv %d 0 1\nf -3 -2 -1\n", i,
+                                     i, i);
+        write_text(objpath, obj);
+        write_text(scpath, CAM "mesh file ../m.obj shading flat color 1 1 1\n");
+        int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
+        if (extra == 0)
+            CHECK_MSG(rc == 0 && g_scene.count == n, "%d triangles fit: %s", n, g_err);
+        else
+            CHECK_MSG(rc != 0 && strstr(g_err, "too many triangles") != NULL,
+                      "%s", g_err);
+    }
+    /* An OBJ error names the OBJ's own file and line first. */
+    write_text(objpath, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n");
+    write_text(scpath, CAM "mesh file ../m.obj shading flat color 1 1 1\n");
+    char named[600];
+    snprintf(named, sizeof named, "%s/../m.obj:4: ", sub);
+    CHECK_MSG(scene_load(scpath, &g_scene, g_err, sizeof g_err) != 0 && strncmp(g_err, named, strlen(named)) == 0 &&
+                  strstr(g_err, "s.scene:2)") != NULL,
+              "%s", g_err);
+    unlink(objpath);
+    unlink(scpath);
+    rmdir(sub);
+}
+
+int main(void)
+{
+    char dir[] = "/tmp/fxrt-test-node-XXXXXX";
+    test_order();
+    test_triangles_and_planes();
+    test_spheres();
+    test_boxes();
+    test_depth_cap();
+    if (mkdtemp(dir) == NULL) {
+        CHECK_MSG(0, "mkdtemp failed");
+    } else {
+        test_meshes(dir);
+        rmdir(dir);
+    }
+    return check_report("test_node");
+}
