@@ -36,6 +36,18 @@ FXRT_STATIC_ASSERT(FXRT_NUMBER == FXRT_Q16 || FXRT_NUMBER == FXRT_FLOAT || FXRT_
 #define FXRT_MAX_BOXES 64
 #endif
 
+/* Smooth shading (a mesh's 'shading smooth', docs/SCENES.md "Meshes"): a
+ * triangle may carry a unit normal per vertex (fxrt_object_t's .smooth
+ * and .vn[]), interpolated across it at every hit (scene/smooth.c). 1 adds
+ * the normals and a flag to every triangle record and to fxrt_object_t
+ * (40 B in Q16.16); 0 compiles it out. Default: 1 on the host, 0 on
+ * bare-metal boards (the scene compiler sets it to whether the scene has
+ * a smooth triangle). Needs triangles (FXRT_MAX_TRIANGLES > 0). */
+#ifndef FXRT_SMOOTH
+#define FXRT_SMOOTH (!FXRT_PORT_BARE && FXRT_MAX_TRIANGLES > 0)
+#endif
+FXRT_STATIC_ASSERT(!FXRT_SMOOTH || FXRT_MAX_TRIANGLES > 0, "FXRT_SMOOTH must be 0, or 1 with FXRT_MAX_TRIANGLES > 0");
+
 /* The documented input domain (scene units). Inside it, no intermediate of
  * the Q16.16 renderer overflows; scene loaders reject values outside it.
  *   FXRT_COORD_LIMIT   |coordinate| of any point, eye or corner

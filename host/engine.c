@@ -104,6 +104,8 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
         t->radius = ENGINE_SYM(engine_num)(o->radius);
         t->material = engine_material(o);
         d->bounces |= material_bounces(t->material.kind);
+        FXRT_IF_SMOOTH(t->smooth = o->smooth != 0;
+                       for (int k = 0; k < 3; k++) t->vn[k] = o->smooth ? engine_vec(o->vn[k]) : vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);)
     }
     d->depth = sc->depth;
     d->samples = sc->samples;

@@ -1088,8 +1088,9 @@ static int scene_parse_mesh(scene_parser_t *p)
         return -1;
     if (scene_check_material(p, &scene_shape_mesh, &vals[MESH_MATERIAL]) != 0)
         return -1;
-    if (!vals[MESH_SHADING].seen || vals[MESH_SHADING].word == 1)
-        return scene_fail(p, "smooth shading (the default) is not implemented yet: add 'shading flat'");
+    int smooth = !vals[MESH_SHADING].seen || vals[MESH_SHADING].word == 1;
+    if (smooth && !FXRT_SMOOTH)
+        return scene_fail(p, "smooth shading is not in this build (FXRT_SMOOTH is 0): add 'shading flat'");
     if (vals[MESH_MATERIAL].seen && vals[MESH_MATERIAL].word == SCENE_MAT_TRANSPARENT)
         return scene_fail(p, "a transparent mesh is not implemented yet (glass needs a closed solid)");
     if (cap <= 0)
@@ -1119,6 +1120,14 @@ static int scene_parse_mesh(scene_parser_t *p)
         else
             keep++;
     }
+    obj_vec_t *vn = NULL;
+    if (smooth) {
+        vn = malloc(sizeof *vn * 3 * (m.ntri ? m.ntri : 1));
+        if (vn == NULL || obj_smooth_normals(&m, vn, NULL) != 0) {
+            rc = scene_fail(p, "out of memory for the mesh's normals");
+            goto done;
+        }
+    }
     if (keep > (size_t)(cap - p->kind_count[SCENE_TRIANGLE]) ||
         keep > (size_t)(SCENE_MAX_OBJECTS - p->out->count)) {
         rc = scene_fail(p, "too many triangles (capacity %d): the mesh %s has %zu, %d more fit", cap, path, keep,
@@ -1143,6 +1152,22 @@ static int scene_parse_mesh(scene_parser_t *p)
         }
         scene_set_surface(o, vals, MESH_COLOR);
         snprintf(where, sizeof where, "%s:%ld", path, (long)tr->line);
+        for (int k = 0; smooth && k < 3; k++) {
+            /* Normals move by the nodes' inverse transpose, normalised;
+             * outside nodes they are normalised as they are. */
+            const obj_vec_t *c = &vn[3 * i + k];
+            scene_vec_t v = {c->x, c->y, c->z};
+            double len = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+            if (!(len > 0.0) || !isfinite(len) ||
+                (p->node_depth > 0 && xform_normal(&p->node_xf[p->node_depth], v, &v) != 0)) {
+                rc = scene_fail(p, "mesh: the normal of corner %d of face %s is zero", k + 1, where);
+                goto done;
+            }
+            if (p->node_depth == 0)
+                v.x /= len, v.y /= len, v.z /= len;
+            o->vn[k] = v;
+        }
+        o->smooth = smooth;
         if ((rc = scene_place(p, o, where)) != 0)
             goto done;
         keep++;
@@ -1151,6 +1176,7 @@ static int scene_parse_mesh(scene_parser_t *p)
     p->kind_count[SCENE_TRIANGLE] += (int)keep;
     p->out->mesh_dropped += (long)dropped;
 done:
+    free(vn);
     obj_free(&m);
     return rc;
 }

@@ -57,6 +57,8 @@ typedef struct {
     int exponent;       /* phong, reflective: 1..SCENE_MAX_EXPONENT, else 0 */
     double reflection[3]; /* reflective only: fractions 0..1, else 0 */
     double index;       /* transparent only: FXRT_INDEX_MIN..FXRT_INDEX_MAX, else 0 */
+    int smooth;         /* a triangle of a 'shading smooth' mesh: vn[] holds its unit vertex normals */
+    scene_vec_t vn[3];
 } scene_obj_t;
 
 typedef enum { SCENE_LIGHT_POINT, SCENE_LIGHT_DIRECTIONAL, SCENE_LIGHT_SPOT } scene_light_kind_t;

@@ -109,6 +109,11 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
 #undef SCENEC_CAPACITY
     fprintf(cfg, "#define SCENE_WIDTH %d\n#define SCENE_HEIGHT %d\n", width, height);
     fprintf(cfg, "#define SCENE_OBJECTS %d\n", d.count);
+    /* Smooth shading only where a triangle has vertex normals. */
+    int smooth = 0;
+    for (int i = 0; i < sc->count; i++)
+        smooth |= sc->obj[i].smooth;
+    fprintf(cfg, "#define FXRT_SMOOTH %d\n", smooth);
     /* A sphere's row-coherence state (120 B) steps its row forms down the
      * rows; where RAM is short, only in a world of at most FXRT_LONE_MAX
      * objects, where a sphere can be alone on its row and gain most. The
@@ -235,6 +240,16 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
             if (o->material.kind == MATERIAL_TRANSPARENT) {
                 fputs(", .index = ", data);
                 emit_num(data, o->material.index);
+            }
+            fputs("}", data);
+        }
+        if (sc->obj[i].smooth) {
+            /* (FXRT_SMOOTH is 1 in this scene's configuration, below.) */
+            fputs(", .smooth = true, .vn = {", data);
+            for (int k = 0; k < 3; k++) {
+                if (k)
+                    fputs(", ", data);
+                FXRT_IF_SMOOTH(emit_vec(data, o->vn[k]));
             }
             fputs("}", data);
         }

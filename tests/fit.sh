@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The bench scene set and the firmware fit check.
-#  - scenes/bench/: the generated scenes equal scenes/bench/mkscenes.sh's
+#  - scenes/bench/ and scenes/models/: the generated scenes and models
+#    equal scenes/bench/mkscenes.sh's and scenes/models/mkmodels.sh's
 #    output; every bench scene renders on the host with the fast renderer
 #    byte-identical to the reference loop; the meshes and the 48-object
 #    scene hold what their names promise.
@@ -31,6 +32,16 @@ if scenes/bench/mkscenes.sh "$out/gen" 2>"$out/gen.err"; then
     done
 else
     bad "scenes/bench/mkscenes.sh failed: $(cat "$out/gen.err")"
+fi
+
+if scenes/models/mkmodels.sh "$out/models" 2>"$out/models.err"; then
+    ok
+    for f in "$out"/models/*.obj; do
+        check "scenes/models/$(basename "$f") equals scenes/models/mkmodels.sh output" \
+            cmp -s "$f" "scenes/models/$(basename "$f")"
+    done
+else
+    bad "scenes/models/mkmodels.sh failed: $(cat "$out/models.err")"
 fi
 
 count() { grep -cE "^$1 " "$2"; }

@@ -157,6 +157,26 @@ static void nest_scene(char *text, size_t size, node_t *nest, int depth, int all
         used += (size_t)snprintf(text + used, size - used, "end\n");
 }
 
+/* Where a node takes normal n (not unit): the cross product of two moved
+ * tangents, oriented by the sign of the linear part's determinant,
+ * normalised. */
+static void moved_normal(const node_t *nest, int depth, const double n_in[3], double m[3])
+{
+    double n[3] = {n_in[0], n_in[1], n_in[2]}, t1[3], t2[3];
+    int ax = fabs(n[0]) < fabs(n[1]) ? (fabs(n[0]) < fabs(n[2]) ? 0 : 2) : (fabs(n[1]) < fabs(n[2]) ? 1 : 2);
+    double e[3] = {0, 0, 0};
+    e[ax] = 1;
+    t1[0] = n[1] * e[2] - n[2] * e[1], t1[1] = n[2] * e[0] - n[0] * e[2], t1[2] = n[0] * e[1] - n[1] * e[0];
+    t2[0] = n[1] * t1[2] - n[2] * t1[1], t2[1] = n[2] * t1[0] - n[0] * t1[2], t2[2] = n[0] * t1[1] - n[1] * t1[0];
+    /* t1 x t2 points along n: (n x e) x (n x (n x e)) = |n x e|^2 n. */
+    apply_nodes(nest, depth, t1, 1);
+    apply_nodes(nest, depth, t2, 1);
+    m[0] = t1[1] * t2[2] - t1[2] * t2[1], m[1] = t1[2] * t2[0] - t1[0] * t2[2], m[2] = t1[0] * t2[1] - t1[1] * t2[0];
+    double len = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]), sg = sign_det(nest, depth);
+    for (int k = 0; k < 3; k++)
+        m[k] *= sg / len;
+}
+
 static void test_triangles_and_planes(void)
 {
     long bad = 0;
@@ -183,21 +203,9 @@ static void test_triangles_and_planes(void)
         const scene_obj_t *o = &g_scene.obj[0];
         int ok;
         if (plane) {
-            /* Two tangents of the normal n: n x e for two axes e. */
-            double n[3] = {p[1][0], p[1][1], p[1][2]}, t1[3], t2[3], pt[3] = {p[0][0], p[0][1], p[0][2]};
-            int ax = fabs(n[0]) < fabs(n[1]) ? (fabs(n[0]) < fabs(n[2]) ? 0 : 2) : (fabs(n[1]) < fabs(n[2]) ? 1 : 2);
-            double e[3] = {0, 0, 0};
-            e[ax] = 1;
-            t1[0] = n[1] * e[2] - n[2] * e[1], t1[1] = n[2] * e[0] - n[0] * e[2], t1[2] = n[0] * e[1] - n[1] * e[0];
-            t2[0] = n[1] * t1[2] - n[2] * t1[1], t2[1] = n[2] * t1[0] - n[0] * t1[2], t2[2] = n[0] * t1[1] - n[1] * t1[0];
-            /* t1 x t2 points along n: (n x e) x (n x (n x e)) = |n x e|^2 n. */
+            double pt[3] = {p[0][0], p[0][1], p[0][2]}, m[3];
             apply_nodes(nest, depth, pt, 0);
-            apply_nodes(nest, depth, t1, 1);
-            apply_nodes(nest, depth, t2, 1);
-            double m[3] = {t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2], t1[0] * t2[1] - t1[1] * t2[0]};
-            double len = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]), sg = sign_det(nest, depth);
-            for (int k = 0; k < 3; k++)
-                m[k] *= sg / len;
+            moved_normal(nest, depth, p[1], m);
             ok = o->kind == SCENE_PLANE && vec_close(o->p[0], pt, 100) && vec_close(o->p[1], m, 1);
         } else {
             ok = o->kind == SCENE_TRIANGLE;
@@ -418,6 +426,51 @@ static void test_meshes(const char *dir)
         bad += !ok;
     }
     CHECK_MSG(bad == 0, "300 generated meshes in random nodes: %ld wrong", bad);
+
+    /* Smooth meshes: the file's vn per corner, moved by the nodes as
+     * normals; without vn, a lone triangle's corners take its own normal. */
+    long bad_vn = 0;
+    for (int iter = 0; iter < 500; iter++) {
+        static char obj[4096], text[8192];
+        double v[3][3], n[3][3];
+        char t[6][32];
+        size_t used = 0;
+        int given = iter % 4 != 0;
+        for (int i = 0; i < 3; i++) {
+            for (int k = 0; k < 3; k++)
+                v[i][k] = draw(-2, 2, t[k], sizeof t[k]);
+            for (int k = 0; k < 3; k++)
+                n[i][k] = draw(-1, 1, t[k + 3], sizeof t[k + 3]);
+            if (fabs(n[i][0]) + fabs(n[i][1]) + fabs(n[i][2]) < 0.1)
+                n[i][2] = 1, snprintf(t[5], sizeof t[5], "1");
+            used += (size_t)snprintf(obj + used, sizeof obj - used, "v %s %s %s\nvn %s %s %s\n", t[0], t[1], t[2],
+                                     t[3], t[4], t[5]);
+        }
+        snprintf(obj + used, sizeof obj - used, given ? "f 1//1 2//2 3//3\n" : "f 1 2 3\n");
+        if (!given) {
+            double u[3], w[3];
+            for (int k = 0; k < 3; k++)
+                u[k] = v[1][k] - v[0][k], w[k] = v[2][k] - v[0][k];
+            double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+            for (int i = 0; i < 3; i++)
+                memcpy(n[i], c, sizeof c);
+        }
+        write_text(objpath, obj);
+        node_t nest[3];
+        int depth = (int)(rnd() % 4);
+        nest_scene(text, sizeof text, nest, depth, ANY, "mesh file ../m.obj color 0.2 0.4 0.6 material lambert");
+        write_text(scpath, text);
+        int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
+        int ok = rc == 0 && g_scene.count == 1 && g_scene.obj[0].smooth;
+        for (int i = 0; ok && i < 3; i++) {
+            double m[3];
+            moved_normal(nest, depth, n[i], m);
+            ok = vec_close(g_scene.obj[0].vn[i], m, 1);
+        }
+        CHECK_SWEEP(ok, "smooth mesh %d: %s", iter, rc ? g_err : text);
+        bad_vn += !ok;
+    }
+    CHECK_MSG(bad_vn == 0, "500 smooth one-triangle meshes in random nodes: %ld with wrong vertex normals", bad_vn);
 
     /* Capacity: exactly the triangles that fit, then one more; a refused
      * mesh names the count. */

@@ -44,7 +44,9 @@ typedef struct {
 
 typedef struct {
     int n_obj, n_lights;
-    obj_t obj[8];
+    obj_t obj[32];
+    bool smooth[32];      /* triangle j has vertex normals vn[j] (any length) */
+    double vn[32][3][3];
     lgt_t light[4];
     double ambient[3];
     double eye[3], gaze[3], up[3], fov;
@@ -63,6 +65,13 @@ static bool ref_inside(const obj_t *o, const double q[3])
         return q[0] > o->p[0][0] && q[0] < o->p[1][0] && q[1] > o->p[0][1] && q[1] < o->p[1][1] &&
                q[2] > o->p[0][2] && q[2] < o->p[1][2];
     return false;
+}
+
+static void cross3(const double a[3], const double b[3], double r[3])
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
 }
 
 /* The colour (1/255 units, clamped) of the ray's nearest hit; background 0. */
@@ -92,6 +101,36 @@ static void ref_shade(const scene_t *s, const double org[3], const double d[3], 
     if (inside)
         for (int i = 0; i < 3; i++)
             n[i] = -n[i];
+    double nf[3] = {n[0], n[1], n[2]}; /* the flat face's normal, turned to the ray */
+    if (s->smooth[best]) {
+        /* Barycentric weights from 3D triple products (the core projects
+         * onto a plane instead), then n = normalise(sum w_k n_k), turned
+         * towards the ray on its own. */
+        const double *a = o->p[0], *b = o->p[1], *c = o->p[2];
+        double ab[3], ac[3], A[3], w[3];
+        for (int i = 0; i < 3; i++)
+            ab[i] = b[i] - a[i], ac[i] = c[i] - a[i];
+        cross3(ab, ac, A);
+        const double *q[3][2] = {{b, c}, {c, a}, {a, b}};
+        for (int k = 0; k < 3; k++) {
+            double u[3], v[3], x[3];
+            for (int i = 0; i < 3; i++)
+                u[i] = q[k][0][i] - p[i], v[i] = q[k][1][i] - p[i];
+            cross3(u, v, x);
+            w[k] = dot(x, A) / dot(A, A);
+        }
+        double ns[3] = {0, 0, 0};
+        for (int k = 0; k < 3; k++) {
+            double vk[3] = {s->vn[best][k][0], s->vn[best][k][1], s->vn[best][k][2]};
+            unit(vk);
+            for (int i = 0; i < 3; i++)
+                ns[i] += w[k] * vk[i];
+        }
+        unit(ns);
+        double sg = dot(ns, d) > 0 ? -1 : 1;
+        for (int i = 0; i < 3; i++)
+            n[i] = sg * ns[i];
+    }
     if (o->material == MATERIAL_FLAT) {
         memcpy(out, cd, sizeof cd);
         return;
@@ -119,6 +158,8 @@ static void ref_shade(const scene_t *s, const double org[3], const double d[3], 
         double ndl = dot(n, l);
         if (ndl <= 0)
             continue;
+        if (s->smooth[best] && L->shadows && dot(nf, l) <= 0)
+            continue; /* the terminator: behind the flat face */
         if (L->shadows) {
             bool blocked = false;
             bool solid = o->kind == GEOM_SPHERE || o->kind == GEOM_BOX;
@@ -180,6 +221,7 @@ static bool build(const scene_t *s, int w, int h)
         fo.material.kind = (uint8_t)o->material;
         fo.material.exponent = (uint16_t)o->exponent;
         fo.material.specular = color_make(N(chan(o->specular[0])), N(chan(o->specular[1])), N(chan(o->specular[2])));
+        FXRT_IF_SMOOTH(fo.smooth = s->smooth[j]; for (int k = 0; k < 3; k++) fo.vn[k] = V(s->vn[j][k]);)
         if (fxrt_add(&world, &fo) != j)
             return false;
     }
@@ -818,6 +860,89 @@ static void test_cone_boundary(void)
 }
 #endif
 
+#if FXRT_SMOOTH
+/* Smooth triangles (scene/smooth.c, light/shade.c): an icosahedron whose
+ * vertex normals point away from its centre, on a floor, under a point
+ * light with shadows and a directional one without, in Phong, against the
+ * reference's own interpolation and terminator; then single pixels. */
+static void test_smooth(void)
+{
+    static const int face[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    double g = (1 + sqrt(5.0)) / 2, v[12][3] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                                                {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                                                {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    for (int material = MATERIAL_LAMBERT; material <= MATERIAL_PHONG; material++) {
+        scene_t s = course(material);
+        s.obj[0].material = MATERIAL_LAMBERT;
+        s.n_obj = 1;
+        for (int f = 0; f < 20; f++) {
+            int j = s.n_obj++;
+            obj_t *o = &s.obj[j];
+            *o = s.obj[1]; /* the sphere's colour and material */
+            o->kind = GEOM_TRIANGLE;
+            s.smooth[j] = true;
+            for (int k = 0; k < 3; k++)
+                for (int i = 0; i < 3; i++) {
+                    double c[3] = {0.6, 1.2, 0.4};
+                    o->p[k][i] = c[i] + 0.6 * v[face[f][k]][i] / sqrt(1 + g * g);
+                    s.vn[j][k][i] = v[face[f][k]][i]; /* not unit: the core normalises */
+                }
+        }
+        s.n_lights = 2;
+        check_frame(material == MATERIAL_PHONG ? "smooth icosahedron, phong" : "smooth icosahedron, lambert", &s);
+    }
+    /* A triangle facing the camera (+z) at the origin; the centre pixel
+     * has weights (1/4, 1/4, 1/2): with normals (0,0,1), (0,0,1),
+     * (0,1,1)/sqrt 2 its normal is (0, 0.38268, 0.92388). */
+    scene_t b;
+    memset(&b, 0, sizeof b);
+    set3(b.eye, 0, 0, 5);
+    set3(b.gaze, 0, 0, -1);
+    set3(b.up, 0, 1, 0);
+    b.fov = 10;
+    set3(b.ambient, 0.1, 0.1, 0.1);
+    b.obj[0] = (obj_t){GEOM_TRIANGLE, {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}, 0, {0.5, 0.5, 0.5}, MATERIAL_LAMBERT,
+                       {0, 0, 0}, 0, {0, 0, 0}, 0};
+    b.smooth[0] = true;
+    set3(b.vn[0][0], 0, 0, 1);
+    set3(b.vn[0][1], 0, 0, 2);
+    set3(b.vn[0][2], 0, 1, 1);
+    b.n_obj = 1;
+    b.n_lights = 1;
+    double c = chan(0.5), e3[3], k = 0.1 + 0.92387953;
+    b.light[0] = (lgt_t){LIGHT_DIRECTIONAL, {0, 0, 0}, {0, 0, -1}, 0, {1, 1, 1}, true};
+    set3(e3, c * k, c * k, c * k);
+    check_centre("smooth triangle, interpolated normal", &b, e3);
+    /* Normals all (1, 0, 1): a point light at (10, 0, -2) is in front of
+     * them (n . l = 8 / sqrt 208) but behind the face: with shadows on the
+     * face blocks it (the terminator), with shadows off it lights p. */
+    for (int j = 0; j < 3; j++)
+        set3(b.vn[0][j], 1, 0, 1);
+    b.light[0] = (lgt_t){LIGHT_POINT, {10, 0, -2}, {0, 0, 0}, 0, {1, 1, 1}, true};
+    set3(e3, c * 0.1, c * 0.1, c * 0.1);
+    check_centre("smooth triangle, light behind its face, shadows on", &b, e3);
+    b.light[0].shadows = false;
+    k = 0.1 + 8 / sqrt(208.0);
+    set3(e3, c * k, c * k, c * k);
+    check_centre("the same, shadows off", &b, e3);
+    /* The API: normals only on triangles, and nonzero; a refusal adds nothing. */
+    fxrt_world_init(&world, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+    fxrt_object_t fo = {.kind = FXRT_SPHERE, .radius = NUM_ONE, .smooth = true};
+    fo.vn[0] = fo.vn[1] = fo.vn[2] = vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO);
+    CHECK(fxrt_add(&world, &fo) == FXRT_ERR_KIND && fxrt_count(&world) == 0);
+    fo.kind = FXRT_TRIANGLE;
+    fo.p[1] = vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO);
+    fo.p[2] = vec3_make(NUM_ZERO, NUM_ONE, NUM_ZERO);
+    fo.vn[2] = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    CHECK(fxrt_add(&world, &fo) == FXRT_ERR_DIRECTION && fxrt_count(&world) == 0);
+    fo.vn[2] = vec3_make(NUM_ZERO, NUM_ZERO, N(3));
+    CHECK(fxrt_add(&world, &fo) == 0 && world.triangles[0].smooth && world.triangles[0].vn[2].z == NUM_ONE);
+}
+#endif
+
 int main(void)
 {
     probe_material_reset();
@@ -850,6 +975,10 @@ int main(void)
     s.n_lights = 4;
     set3(s.ambient, 0.05, 0.1, 0.15);
     check_frame("coloured lights", &s);
+
+#if FXRT_SMOOTH
+    test_smooth();
+#endif
 
     /* Single pixels. A grey lambert sphere (0.5: 127.5) at the origin,
      * radius 1, camera on +z looking at it, ambient 0.1. */

@@ -174,6 +174,13 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     /* Two-sided: n faces the incoming ray. */
     bool inside = vec3_dotw_units(d, n_geo) > 0;
     vec3_t n = inside ? vec3_neg_unit(n_geo) : n_geo;
+    /* A smooth triangle (scene/smooth.c): the interpolated normal n_s,
+     * turned towards the ray on its own; the flat face's normal, turned
+     * towards the ray (n_face), keeps a light with shadows on that lies
+     * behind the face from p (the terminator: the face blocks it). */
+    FXRT_IF_SMOOTH(vec3_t n_face = n; vec3_t ns;
+                   bool smooth = kind == GEOM_TRIANGLE && geom_smooth_normal(&w->triangles[index], p, &ns);
+                   if (smooth) n = vec3_dotw_units(d, ns) > 0 ? vec3_neg_unit(ns) : ns;)
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
     (void)kind, (void)index; /* only shadow rays need to know the object */
@@ -222,6 +229,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
         if (ndlw <= 0)
             continue; /* behind the surface: no shadow ray either */
 #if FXRT_SHADOWS
+        FXRT_IF_SMOOTH(if (smooth && L->shadows && vec3_dotw_units(n_face, l) <= 0) continue;) /* the terminator */
 #if SHADOW_CULL
         const shadow_cull_t *cull = k && k->cull ? k->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
 #else

@@ -134,13 +134,8 @@ static bool trace_cut(color_t wt)
  * every ray, as the model says. */
 static bool trace_dir_ok(vec3_t v)
 {
-#if FXRT_NUMBER == FXRT_Q16
-    const fx_t lim = (fx_t)1 << 30;
-    return v.x < lim && v.x > -lim && v.y < lim && v.y > -lim && v.z < lim && v.z > -lim;
-#else
-    (void)v;
-    return true;
-#endif
+    const num_t lim = (num_t)((fx_t)1 << 30);
+    return !NUM_EXACT || (v.x < lim && v.x > -lim && v.y < lim && v.y > -lim && v.z < lim && v.z > -lim);
 }
 
 /* One node of the tree: a hit and the ray that reached it. */
@@ -205,6 +200,13 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     return k;
 }
 
+/* A smooth triangle (scene/smooth.c) reflects about its interpolated
+ * normal at p; *n keeps the flat face's where there is none. */
+FXRT_IF_SMOOTH(static void trace_smooth(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t *n) {
+    if (kind == GEOM_TRIANGLE)
+        (void)geom_smooth_normal(&w->triangles[index], p, n);
+})
+
 color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
                       color_t local)
 {
@@ -213,6 +215,7 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const 
     color_t acc = local; /* the primary hit's weight is 1 */
     trace_node_t nd = {world_common(w, kind, index), p, n_geo, ray->d,
                        color_make(NUM_ONE, NUM_ONE, NUM_ONE), 0};
+    FXRT_IF_SMOOTH(trace_smooth(w, kind, index, p, &nd.n_geo);)
     bool have = true; /* nd holds a node whose children are still to be made */
     for (;;) {
         trace_ray_t next;
@@ -246,6 +249,7 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const 
         nd.w = next.w;
         nd.bounce = next.bounce;
         color_t c = shade_point_k(w, h.kind, h.index, nd.p, n, nd.d, NULL, NULL);
+        FXRT_IF_SMOOTH(trace_smooth(w, h.kind, h.index, nd.p, &nd.n_geo);)
         acc = color_add(acc, color_mul(c, nd.w));
         have = true;
     }

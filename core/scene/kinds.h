@@ -56,6 +56,14 @@
 #define FXRT_IF_BOX(...)
 #endif
 
+/* FXRT_IF_SMOOTH(...): its arguments where smooth shading is compiled in
+ * (FXRT_SMOOTH, fxrt_config.h). */
+#if FXRT_SMOOTH
+#define FXRT_IF_SMOOTH(...) __VA_ARGS__
+#else
+#define FXRT_IF_SMOOTH(...)
+#endif
+
 /* Helpers for the tables' users: FXRT_WHEN(FLAG, ...) keeps its
  * arguments when FLAG is 1 (a SOLID or BOUNDED column), drops them when 0. */
 #define FXRT_WHEN(flag, ...) FXRT_WHEN_##flag(__VA_ARGS__)
@@ -94,6 +102,9 @@ typedef struct {
     num_t radius;
     color_t color;
     material_t material; /* all zero: MATERIAL_FLAT */
+    /* A triangle's vertex normals (any nonzero length; normalised when
+     * added) where smooth is true: it is shaded smooth (scene/smooth.c). */
+    FXRT_IF_SMOOTH(bool smooth; vec3_t vn[3];)
 } geom_desc_t;
 
 /* ---- the records --------------------------------------------------------- */
@@ -116,6 +127,7 @@ typedef struct {
     vec3_t n;        /* unit normal, zero when degenerate */
     bool degenerate; /* collinear vertices: never hit */
     geom_common_t obj;
+    FXRT_IF_SMOOTH(bool smooth; vec3_t vn[3];) /* unit vertex normals, where smooth */
 } geom_triangle_t;
 
 typedef struct {
@@ -132,6 +144,18 @@ fxrt_err_t geom_plane_check(vec3_t point, vec3_t normal, color_t color);
 fxrt_err_t geom_sphere_check(vec3_t center, num_t radius, color_t color);
 fxrt_err_t geom_triangle_check(vec3_t a, vec3_t b, vec3_t c, color_t color);
 fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color);
+/* Smooth triangles (scene/smooth.c; called only where FXRT_SMOOTH):
+ *   geom_smooth_check  d's vertex normals, where d->smooth: FXRT_OK,
+ *                      FXRT_ERR_KIND (smooth on another kind),
+ *                      FXRT_ERR_COORD or FXRT_ERR_DIRECTION (a zero normal)
+ *   geom_smooth_set    t's normals from d (checked), normalised
+ *   geom_smooth_normal the shading normal at p, a point of t's plane:
+ *                      normalise(w_a n_a + w_b n_b + w_c n_c), w the
+ *                      barycentric weights of p; false (n unchanged) when
+ *                      t is not smooth or the sum is zero */
+fxrt_err_t geom_smooth_check(const geom_desc_t *d);
+void geom_smooth_set(geom_triangle_t *t, const geom_desc_t *d);
+bool geom_smooth_normal(const geom_triangle_t *t, vec3_t p, vec3_t *n);
 /* geom_box_hit that also gives the face hit: axis * 2 + (1 for the max
  * side), 0..5. */
 bool geom_box_hit_face(const geom_box_t *b, const ray_t *ray, num_t *t, uint8_t *face);

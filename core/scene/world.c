@@ -174,6 +174,7 @@ int32_t world_add(world_t *w, const geom_desc_t *d)
     fxrt_err_t e;
     vec3_t lo, hi;
     (void)lo, (void)hi, (void)id, (void)e;
+    FXRT_IF_SMOOTH(if ((e = geom_smooth_check(d)) != FXRT_OK) return e;)
     switch (d->kind) {
 #define WORLD_ADD(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                         \
     case GEOM_##K:                                                                                            \
@@ -194,6 +195,7 @@ int32_t world_add(world_t *w, const geom_desc_t *d)
     default:
         return FXRT_ERR_KIND;
     }
+    FXRT_IF_SMOOTH(if (d->kind == GEOM_TRIANGLE) geom_smooth_set(&w->triangles[w->n_triangles - 1], d);)
 #if WORLD_MESH
     if (d->kind == GEOM_TRIANGLE && w->mesh_n == (uint16_t)(w->n_triangles - 1)) /* (else linked by world_mesh_update only) */
         world_mesh_link_rest(w);
