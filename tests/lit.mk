@@ -11,3 +11,13 @@ lit: deps $(BUILD)/fxrt
 
 .PHONY: lit
 SUITES_EXTRA += tests/lit.sh
+
+# The node and mesh scenes (scenes/nodes/) through the same checks with the
+# mesh issue's accuracy figures: tests/nodes.sh.
+#
+#   make nodes      run tests/nodes.sh alone
+nodes: deps $(BUILD)/fxrt
+	$(Q)BUILD=$(BUILD) tests/run.sh tests/nodes.sh
+
+.PHONY: nodes
+SUITES_EXTRA += tests/nodes.sh
