@@ -44,9 +44,9 @@ typedef struct {
 
 typedef struct {
     int n_obj, n_lights;
-    obj_t obj[32];
-    bool smooth[32];      /* triangle j has vertex normals vn[j] (any length) */
-    double vn[32][3][3];
+    obj_t obj[96];
+    bool smooth[96];      /* triangle j has vertex normals vn[j] (any length) */
+    double vn[96][3][3];
     lgt_t light[4];
     double ambient[3];
     double eye[3], gaze[3], up[3], fov;
@@ -242,7 +242,7 @@ static bool build(const scene_t *s, int w, int h)
 /* Render the scene at W x H; compare every pixel with the reference. */
 static void check_frame(const char *name, const scene_t *s)
 {
-    CHECK_MSG(build(s, W, H), "%s: set-up refused", name);
+    CHECK_MSG(build(s, W, H), "%s: set-up refused (%s)", name, fxrt_render_error(&rnd) ? fxrt_render_error(&rnd) : "");
     for (int y = 0; y < H; y++)
         CHECK(fxrt_render_row(&rnd, y, &img[y][0][0], sizeof img[y]) == FXRT_OK);
     static double ref[H][W][3];
@@ -893,6 +893,68 @@ static void test_smooth(void)
         }
         s.n_lights = 2;
         check_frame(material == MATERIAL_PHONG ? "smooth icosahedron, phong" : "smooth icosahedron, lambert", &s);
+    }
+    /* A closed mesh's own triangles (an icosphere of 80, flat and smooth)
+     * from 24 viewpoints around it, lit from above with shadows (so its
+     * triangles shadow each other and the floor): no pixel away from a
+     * discontinuity off (check_frame). */
+    {
+        double vv[42][3];
+        int nv = 12, tri[80][3], nt = 0;
+        for (int i = 0; i < 12; i++) {
+            double l = sqrt(1 + g * g);
+            for (int k = 0; k < 3; k++)
+                vv[i][k] = v[i][k] / l;
+        }
+        int mids[12][12];
+        memset(mids, -1, sizeof mids);
+        for (int f = 0; f < 20; f++) {
+            int m[3];
+            for (int e = 0; e < 3; e++) {
+                int a = face[f][e], b = face[f][(e + 1) % 3], lo = a < b ? a : b, hi = a < b ? b : a;
+                if (mids[lo][hi] < 0) {
+                    double q[3], l = 0;
+                    for (int k = 0; k < 3; k++)
+                        q[k] = (vv[a][k] + vv[b][k]) / 2, l += q[k] * q[k];
+                    for (int k = 0; k < 3; k++)
+                        vv[nv][k] = q[k] / sqrt(l);
+                    mids[lo][hi] = nv++;
+                }
+                m[e] = mids[lo][hi];
+            }
+            int sub[4][3] = {{face[f][0], m[0], m[2]}, {face[f][1], m[1], m[0]}, {face[f][2], m[2], m[1]}, {m[0], m[1], m[2]}};
+            memcpy(tri[nt], sub, sizeof sub);
+            nt += 4;
+        }
+        long bad_frames = 0;
+        for (int view = 0; view < 24; view++) {
+            scene_t m;
+            memset(&m, 0, sizeof m);
+            double az = 0.1 + view * 0.2618, el = 0.3 + 0.05 * (view % 5); /* (no coordinate below 2^-16) */
+            set3(m.eye, 3.2 * cos(el) * sin(az), 3.2 * sin(el), 3.2 * cos(el) * cos(az));
+            set3(m.gaze, -m.eye[0], -m.eye[1] + 0.3, -m.eye[2]);
+            set3(m.up, 0, 1, 0);
+            m.fov = 40;
+            set3(m.ambient, 0.1, 0.1, 0.1);
+            m.obj[0] = (obj_t){GEOM_PLANE, {{0, -1.2, 0}, {0, 1, 0}}, 0, {0.8, 0.8, 0.8}, MATERIAL_LAMBERT, {0, 0, 0}, 0, {0, 0, 0}, 0};
+            m.n_obj = 1;
+            for (int f = 0; f < nt; f++) {
+                int j = m.n_obj++;
+                m.obj[j] = (obj_t){GEOM_TRIANGLE, {{0}}, 0, {0.9, 0.4, 0.3}, MATERIAL_PHONG, {0.6, 0.6, 0.6}, 30, {0, 0, 0}, 0};
+                m.smooth[j] = view % 2 == 1;
+                for (int k = 0; k < 3; k++)
+                    for (int i = 0; i < 3; i++)
+                        m.obj[j].p[k][i] = m.vn[j][k][i] = vv[tri[f][k]][i];
+            }
+            m.light[0] = (lgt_t){LIGHT_POINT, {2.5, 4, 1.5 + 0.2 * view}, {0, 0, 0}, 0, {1, 1, 1}, true};
+            m.n_lights = 1;
+            long before = check_failed_count;
+            char name[64];
+            snprintf(name, sizeof name, "icosphere of 80, %s, view %d", m.smooth[1] ? "smooth" : "flat", view);
+            check_frame(name, &m);
+            bad_frames += check_failed_count != before;
+        }
+        CHECK_MSG(bad_frames == 0, "%ld of 24 icosphere views off the reference", bad_frames);
     }
     /* A triangle facing the camera (+z) at the origin; the centre pixel
      * has weights (1/4, 1/4, 1/2): with normals (0,0,1), (0,0,1),
