@@ -24,25 +24,8 @@ M="make -s --no-print-directory BUILD=$BUILD"
 SIZE=160x120
 
 # --- generated scenes are the generator's output --------------------------
-if scenes/bench/mkscenes.sh "$out/gen" 2>"$out/gen.err"; then
-    ok
-    for f in "$out"/gen/*.scene; do
-        check "scenes/bench/$(basename "$f") equals scenes/bench/mkscenes.sh output" \
-            cmp -s "$f" "scenes/bench/$(basename "$f")"
-    done
-else
-    bad "scenes/bench/mkscenes.sh failed: $(cat "$out/gen.err")"
-fi
-
-if scenes/models/mkmodels.sh "$out/models" 2>"$out/models.err"; then
-    ok
-    for f in "$out"/models/*.obj; do
-        check "scenes/models/$(basename "$f") equals scenes/models/mkmodels.sh output" \
-            cmp -s "$f" "scenes/models/$(basename "$f")"
-    done
-else
-    bad "scenes/models/mkmodels.sh failed: $(cat "$out/models.err")"
-fi
+generated scenes/bench/mkscenes.sh "$out/gen"
+generated scenes/models/mkmodels.sh "$out/models"
 
 count() { grep -cE "^$1 " "$2"; }
 check "mesh-cube has 12 triangles" test "$(count triangle scenes/bench/mesh-cube.scene)" -eq 12

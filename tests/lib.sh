@@ -28,6 +28,21 @@ report() {
     echo "$1: $PASSED passed, $FAILED failed"
     [ "$FAILED" -eq 0 ]
 }
+# generated GENERATOR OUT: the files GENERATOR writes into OUT are the
+# committed ones beside it (one check per file; the generator's own
+# failure is one failed check).
+generated() {
+    local gen=$1 dir f
+    dir=$(dirname "$gen")
+    if "$gen" "$2" 2>"$2.err"; then
+        ok
+        for f in "$2"/*; do
+            check "$dir/$(basename "$f") equals $gen output" cmp -s "$f" "$dir/$(basename "$f")"
+        done
+    else
+        bad "$gen failed: $(cat "$2.err")"
+    fi
+}
 # full: true under make test-full (FXRT_TEST_FULL=1). make test runs each
 # suite's quick scope; a suite puts its long sweeps behind `if full`.
 full() { [ "${FXRT_TEST_FULL:-0}" = 1 ]; }

@@ -860,6 +860,20 @@ static void test_cone_boundary(void)
 }
 #endif
 
+/* The single-pixel tests' view: the camera on +z at 5 looking at the
+ * origin, a narrow fov, ambient 0.1, nothing else yet. */
+static scene_t centre_scene(void)
+{
+    scene_t b;
+    memset(&b, 0, sizeof b);
+    set3(b.eye, 0, 0, 5);
+    set3(b.gaze, 0, 0, -1);
+    set3(b.up, 0, 1, 0);
+    b.fov = 10;
+    set3(b.ambient, 0.1, 0.1, 0.1);
+    return b;
+}
+
 #if FXRT_SMOOTH
 /* Smooth triangles (scene/smooth.c, light/shade.c): an icosahedron whose
  * vertex normals point away from its centre, on a floor, under a point
@@ -959,13 +973,7 @@ static void test_smooth(void)
     /* A triangle facing the camera (+z) at the origin; the centre pixel
      * has weights (1/4, 1/4, 1/2): with normals (0,0,1), (0,0,1),
      * (0,1,1)/sqrt 2 its normal is (0, 0.38268, 0.92388). */
-    scene_t b;
-    memset(&b, 0, sizeof b);
-    set3(b.eye, 0, 0, 5);
-    set3(b.gaze, 0, 0, -1);
-    set3(b.up, 0, 1, 0);
-    b.fov = 10;
-    set3(b.ambient, 0.1, 0.1, 0.1);
+    scene_t b = centre_scene();
     b.obj[0] = (obj_t){GEOM_TRIANGLE, {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}, 0, {0.5, 0.5, 0.5}, MATERIAL_LAMBERT,
                        {0, 0, 0}, 0, {0, 0, 0}, 0};
     b.smooth[0] = true;
@@ -1044,13 +1052,7 @@ int main(void)
 
     /* Single pixels. A grey lambert sphere (0.5: 127.5) at the origin,
      * radius 1, camera on +z looking at it, ambient 0.1. */
-    scene_t b;
-    memset(&b, 0, sizeof b);
-    set3(b.eye, 0, 0, 5);
-    set3(b.gaze, 0, 0, -1);
-    set3(b.up, 0, 1, 0);
-    b.fov = 10;
-    set3(b.ambient, 0.1, 0.1, 0.1);
+    scene_t b = centre_scene();
     b.obj[0] = (obj_t){GEOM_SPHERE, {{0, 0, 0}}, 1, {0.5, 0.5, 0.5}, MATERIAL_LAMBERT, {0, 0, 0}, 0, {0, 0, 0}, 0};
     b.n_obj = 1;
     b.n_lights = 1;

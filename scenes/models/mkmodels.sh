@@ -17,21 +17,9 @@ mkdir -p "$dir"
 me="scenes/models/mkmodels.sh"
 
 ico() {
-    awk -v splits="$1" -v me="$me" '
-    function vert(x, y, z,   l) { l = sqrt(x * x + y * y + z * z); VX[nv] = x / l; VY[nv] = y / l; VZ[nv] = z / l; return nv++ }
-    # the midpoint vertex of edge (a, b), made once per edge
-    function mid(a, b,   k) {
-        k = a < b ? a "," b : b "," a
-        if (!(k in M)) M[k] = vert((VX[a] + VX[b]) / 2, (VY[a] + VY[b]) / 2, (VZ[a] + VZ[b]) / 2)
-        return M[k]
-    }
+    awk -v splits="$1" -v me="$me" -f "$(dirname "$0")/ico.awk" -f /dev/stdin <<'AWK'
     BEGIN {
-        g = (1 + sqrt(5)) / 2; nv = 0
-        vert(-1, g, 0); vert(1, g, 0); vert(-1, -g, 0); vert(1, -g, 0)
-        vert(0, -1, g); vert(0, 1, g); vert(0, -1, -g); vert(0, 1, -g)
-        vert(g, 0, -1); vert(g, 0, 1); vert(-g, 0, -1); vert(-g, 0, 1)
-        nf = split("0 11 5|0 5 1|0 1 7|0 7 10|0 10 11|1 5 9|5 11 4|11 10 2|10 7 6|7 1 8|" \
-                   "3 9 4|3 4 2|3 2 6|3 6 8|3 8 9|4 9 5|2 4 11|6 2 10|8 6 7|9 8 1", F, "|")
+        nf = ico_base()
         for (f = 1; f <= nf; f++) { split(F[f], t, " "); A[f] = t[1]; B[f] = t[2]; C[f] = t[3] }
         for (s = 0; s < splits; s++) {
             n = 0
@@ -51,7 +39,8 @@ ico() {
         printf "# A unit icosphere of %d triangles, counter-clockwise seen from outside.\n", nf
         for (v = 0; v < nv; v++) printf "v %.6f %.6f %.6f\n", VX[v], VY[v], VZ[v]
         for (f = 1; f <= nf; f++) printf "f %d %d %d\n", A[f] + 1, B[f] + 1, C[f] + 1
-    }'
+    }
+AWK
 }
 
 ico 0 >"$dir/ico20.obj"
