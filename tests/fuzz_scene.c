@@ -126,7 +126,11 @@ static void fuzz_check_error(const char *err, long lines)
     long line = 0;
 
     FUZZ_CHECK(memchr(err, '\0', FUZZ_ERR_LEN) != NULL, NULL);
-    if (strncmp(err, FUZZ_NAME ":", nl + 1) != 0 && (m = strstr(err, mesh)) != NULL) {
+    /* The last " (the mesh on NAME:" (a path may hold the words too). */
+    m = NULL;
+    for (const char *q = strstr(err, mesh); q != NULL; q = strstr(q + 1, mesh))
+        m = q;
+    if (m != NULL && err[strlen(err) - 1] == ')') {
         for (s = m + sizeof mesh - 1; *s >= '0' && *s <= '9'; s++) {
             FUZZ_CHECK(line < 100000000L, err);
             line = line * 10 + (*s - '0');

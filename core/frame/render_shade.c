@@ -12,17 +12,12 @@ void render_shade_setup(render_t *r, const world_t *w)
 {
     render_shade_t *sh = &r->shade;
     sh->any_lit = w->n_lit > 0;
-#if SHADOW_CULL
-    if (sh->any_lit)
-        shadow_cull_setup(w, sh->cull);
-#endif
+    SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull);)
     for (uint16_t i = 0; sh->any_lit && i < r->vis.count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->vis.obj[i].geom, r->vis.obj[i].index);
         if (c->mat.kind != MATERIAL_FLAT) {
             shade_consts(w, c, &sh->k[i]);
-#if SHADOW_CULL
-            sh->k[i].cull = sh->cull;
-#endif
+            SHADE_IF_CULL(sh->k[i].cull = sh->cull;)
         }
     }
 }

@@ -22,9 +22,7 @@ static inline color_t shade_madd(color_t c, color_t a, num_t s)
 void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k)
 {
     k->ambient = shade_filter(obj->color, w->ambient);
-#if SHADOW_CULL
-    k->cull = NULL;
-#endif
+    SHADE_IF_CULL(k->cull = NULL;)
     for (uint8_t i = 0; i < w->n_lights; i++) {
         k->kd[i] = shade_filter(obj->color, w->lights[i].color);
 #if FXRT_PHONG

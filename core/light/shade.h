@@ -99,6 +99,10 @@ typedef struct {
 #endif
 #if SHADOW_CULL
     const shadow_cull_t *cull; /* the frame's cull table (NULL: none) */
+/* SHADE_IF_CULL(...): its arguments where the field above exists. */
+#define SHADE_IF_CULL(...) __VA_ARGS__
+#else
+#define SHADE_IF_CULL(...)
 #endif
 } shade_k_t;
 

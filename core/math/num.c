@@ -1,9 +1,7 @@
 /* num: the few number-type operations that are not inline. */
 #include "math/num.h"
 
-#if FXRT_STATS
 fxrt_stats_t fxrt_stats; /* math/stats.h */
-#endif
 
 #if FXRT_NUMBER != FXRT_Q16
 /* cot(deg degrees) from sine and cosine Taylor series in num_t, the same

@@ -10,7 +10,6 @@
 
 #include "fxrt_config.h"
 
-#if FXRT_STATS
 typedef struct {
     uint32_t shaded;       /* shade_point calls */
     uint32_t shadow_rays;  /* shadow_blocked calls */
@@ -22,7 +21,8 @@ typedef struct {
     uint32_t secondary_rays; /* reflected and transmitted rays traced (light/trace.c) */
     uint32_t bounds_skips;   /* of those, rays that missed the bounds box */
 } fxrt_stats_t;
-extern fxrt_stats_t fxrt_stats;
+extern fxrt_stats_t fxrt_stats; /* (defined always; unused and dropped by the linker unless FXRT_STATS) */
+#if FXRT_STATS
 #define FXRT_COUNT(field) ((void)(fxrt_stats.field++))
 #else
 #define FXRT_COUNT(field) ((void)0)
