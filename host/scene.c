@@ -1121,18 +1121,18 @@ static int scene_parse_mesh(scene_parser_t *p)
             keep++;
     }
     obj_vec_t *vn = NULL;
+    if (keep > (size_t)(cap - p->kind_count[SCENE_TRIANGLE]) ||
+        keep > (size_t)(SCENE_MAX_OBJECTS - p->out->count)) {
+        rc = scene_fail(p, "too many triangles (capacity %d): the mesh %s has %zu, %d more fit", cap, path, keep,
+                        cap - p->kind_count[SCENE_TRIANGLE]);
+        goto done;
+    }
     if (smooth) {
         vn = malloc(sizeof *vn * 3 * (m.ntri ? m.ntri : 1));
         if (vn == NULL || obj_smooth_normals(&m, vn, NULL) != 0) {
             rc = scene_fail(p, "out of memory for the mesh's normals");
             goto done;
         }
-    }
-    if (keep > (size_t)(cap - p->kind_count[SCENE_TRIANGLE]) ||
-        keep > (size_t)(SCENE_MAX_OBJECTS - p->out->count)) {
-        rc = scene_fail(p, "too many triangles (capacity %d): the mesh %s has %zu, %d more fit", cap, path, keep,
-                        cap - p->kind_count[SCENE_TRIANGLE]);
-        goto done;
     }
     for (i = 0, keep = 0; i < m.ntri; i++) {
         const obj_tri_t *tr = &m.tri[i];

@@ -243,16 +243,16 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
             }
             fputs("}", data);
         }
-        if (sc->obj[i].smooth) {
-            /* (FXRT_SMOOTH is 1 in this scene's configuration, below.) */
+        /* (A smooth triangle makes FXRT_SMOOTH 1 in this scene's
+         * configuration, above; the parser refuses one where it is 0.) */
+        FXRT_IF_SMOOTH(if (o->smooth) {
             fputs(", .smooth = true, .vn = {", data);
             for (int k = 0; k < 3; k++) {
-                if (k)
-                    fputs(", ", data);
-                FXRT_IF_SMOOTH(emit_vec(data, o->vn[k]));
+                fputs(k ? ", " : "", data);
+                emit_vec(data, o->vn[k]);
             }
             fputs("}", data);
-        }
+        })
         fprintf(data, "}, /* id %d, line %d */\n", i, sc->obj[i].line);
     }
     if (d.count == 0)

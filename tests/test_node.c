@@ -231,16 +231,10 @@ static void test_spheres(void)
         double c[3], r = draw(0.1, 3, t[3], sizeof t[3]);
         for (int k = 0; k < 3; k++)
             c[k] = draw(-3, 3, t[k], sizeof t[k]);
-        snprintf(obj, sizeof obj, "sphere center %s %s %s radius %s color 1 0.5 0", t[0], t[1], t[2], t[3]);
+        /* (uneven: inside one more node, that scales by 1, 1.5, 1) */
+        snprintf(obj, sizeof obj, "%ssphere center %s %s %s radius %s color 1 0.5 0%s", uneven ? "node scale 1 1.5 1\n" : "",
+                 t[0], t[1], t[2], t[3], uneven ? "\nend" : "");
         nest_scene(text, sizeof text, nest, depth, SIMILAR, obj);
-        if (uneven) {
-            /* One more node that scales by 1, 1.5, 1 on the inside. */
-            char *at = strstr(text, "sphere");
-            char tail[1024];
-            snprintf(tail, sizeof tail, "%s", at);
-            snprintf(at, sizeof text - (size_t)(at - text), "node scale 1 1.5 1\n%.*send\n%s",
-                     (int)(strchr(tail, '\n') - tail + 1), tail, strchr(tail, '\n') + 1);
-        }
         int rc = scene_parse("t", text, strlen(text), &g_scene, g_err, sizeof g_err);
         if (uneven) {
             int ok = rc != 0 && strstr(g_err, "would be an ellipsoid") != NULL;
@@ -275,15 +269,13 @@ static void test_boxes(void)
             lo[k] = draw(-3, 0, t[k], sizeof t[k]);
             hi[k] = draw(0, 3, t[k + 3], sizeof t[k + 3]);
         }
-        snprintf(obj, sizeof obj, "box min %s %s %s max %s %s %s color 0 0 1", t[0], t[1], t[2], t[3], t[4], t[5]);
+        /* (turned: inside one more node, that turns it by 30 degrees) */
+        char turn[32] = "";
+        if (turned)
+            snprintf(turn, sizeof turn, "node rotate %c 30\n", "xyz"[iter % 3]);
+        snprintf(obj, sizeof obj, "%sbox min %s %s %s max %s %s %s color 0 0 1%s", turn, t[0], t[1], t[2], t[3], t[4],
+                 t[5], turned ? "\nend" : "");
         nest_scene(text, sizeof text, nest, depth, AXES, obj);
-        if (turned) {
-            char *at = strstr(text, "box");
-            char tail[1024];
-            snprintf(tail, sizeof tail, "%s", at);
-            snprintf(at, sizeof text - (size_t)(at - text), "node rotate %c 30\n%.*send\n%s", "xyz"[iter % 3],
-                     (int)(strchr(tail, '\n') - tail + 1), tail, strchr(tail, '\n') + 1);
-        }
         int rc = scene_parse("t", text, strlen(text), &g_scene, g_err, sizeof g_err);
         if (turned) {
             int ok = rc != 0 && strstr(g_err, "would be an oriented box") != NULL;

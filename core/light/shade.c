@@ -177,7 +177,8 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
      * towards the ray (n_face), keeps a light with shadows on that lies
      * behind the face from p (the terminator: the face blocks it). */
     FXRT_IF_SMOOTH(vec3_t n_face = n; vec3_t ns;
-                   bool smooth = kind == GEOM_TRIANGLE && geom_smooth_normal(&w->triangles[index], p, &ns);
+                   bool smooth = kind == GEOM_TRIANGLE && w->triangles[index].smooth &&
+                                 geom_smooth_normal(&w->triangles[index], p, &ns);
                    if (smooth) n = vec3_dotw_units(d, ns) > 0 ? vec3_neg_unit(ns) : ns;)
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;

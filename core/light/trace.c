@@ -203,7 +203,7 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
 /* A smooth triangle (scene/smooth.c) reflects about its interpolated
  * normal at p; *n keeps the flat face's where there is none. */
 FXRT_IF_SMOOTH(static void trace_smooth(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t *n) {
-    if (kind == GEOM_TRIANGLE)
+    if (kind == GEOM_TRIANGLE && w->triangles[index].smooth) /* (no call for a flat one) */
         (void)geom_smooth_normal(&w->triangles[index], p, n);
 })
 
