@@ -129,7 +129,7 @@ fi
 # option's default, the triangle record's fields, scene/smooth.c), and
 # five went (trace.c's direction check, the cull field's SHADE_IF_CULL,
 # the stats counters defined always).
-IF_CAP=233
+IF_CAP=234
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0
 for d in . port math scene vis light frame; do

@@ -1,0 +1,606 @@
+/* bvh: the ray queries on a mesh in constant data (scene/bvh.h): the ray
+ * mapped to mesh space once, then the tree walked nearer child first with
+ * a fixed stack, and each leaf's triangles tested by their edges.
+ *
+ * Q16.16 works in integers, exactly (NUM_EXACT): the ray's origin in mesh
+ * units of 2^-f (f = 8 .. 0, as many as keep |o| <= 2^30), its direction
+ * scaled to a largest component in [2^29, 2^30), a vertex shifted by f.
+ * Then for vertices a, b, c relative to the origin (below 2^31):
+ *   edge values  E(p, q) = d . (p x q)   (p x q exact in 64 bits, the dot in 128)
+ *   t            = a . n / d . n, n = (b - a) x (c - a) (exact in 64 bits)
+ *   weights      w_a = E(b, c) / sum, ..., sum = E(b, c) + E(c, a) + E(a, b) (= d . n 2^2f)
+ * and a box is hit where max over axes of the entry quotients is at most
+ * the least exit quotient, compared by cross-multiplying (64 bits). Float
+ * and double evaluate the same formulas in their own arithmetic, with the
+ * boxes widened by a relative margin. */
+#include "scene/bvh.h"
+#include "scene/geom.h"
+
+/* ---- the ray in mesh space ------------------------------------------------ */
+
+#define BVH_O_MAX ((int64_t)1 << 30) /* |origin| in units of 2^-f */
+#define BVH_F_MAX 8
+
+typedef struct {
+    /* Q16.16 */
+    int64_t o[3]; /* origin, mesh units of 2^-f */
+    int64_t d[3]; /* direction, largest |component| in [2^29, 2^30) */
+    int f;
+    int tshift;   /* world t = mesh t 2^tshift */
+    /* float, double */
+    num_t fo[3], fd[3];
+    /* the nearest hit so far or tmax, as the quotient ln / ld (ld 0: none) */
+    int64_t ln, ld;
+    num_t ft;     /* float, double: the same, NUM_MAX for none */
+} bvh_ray_t;
+
+/* v 2^s, s of either sign (right shifts round half up). */
+static int64_t bvh_shift(int64_t v, int s)
+{
+    if (s >= 0)
+        return (int64_t)((uint64_t)v << s);
+    return (v + ((int64_t)1 << (-s - 1))) >> -s;
+}
+
+static int bvh_bits64(int64_t v)
+{
+    uint64_t u = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+    return u ? 64 - __builtin_clzll(u) : 0;
+}
+
+/* m 2^-e as a number (float, double). */
+static num_t bvh_minv(const bvh_inst_t *in, int j, int k)
+{
+    num_t s = (num_t)in->m[j][k];
+    for (int i = 0; i < in->e; i++)
+        s = s * (num_t)0.5;
+    return s;
+}
+
+static bool bvh_ray_make(const bvh_inst_t *in, const ray_t *ray, num_t tmax, bvh_ray_t *r)
+{
+    const num_t o[3] = {ray->o.x, ray->o.y, ray->o.z}, d[3] = {ray->d.x, ray->d.y, ray->d.z},
+                t[3] = {in->t.x, in->t.y, in->t.z};
+    if (!NUM_EXACT) {
+        for (int j = 0; j < 3; j++) {
+            r->fo[j] = r->fd[j] = NUM_ZERO;
+            for (int k = 0; k < 3; k++) {
+                r->fo[j] = r->fo[j] + bvh_minv(in, j, k) * (o[k] - t[k]);
+                r->fd[j] = r->fd[j] + bvh_minv(in, j, k) * d[k];
+            }
+        }
+        r->ft = tmax;
+        return true;
+    }
+    int64_t po[3], pd[3];
+    int bd = 0;
+    for (int j = 0; j < 3; j++) {
+        po[j] = pd[j] = 0;
+        for (int k = 0; k < 3; k++) {
+            /* |o - t| < 2^31 (coordinates within FXRT_COORD_LIMIT), |m| < 2^30 */
+            po[j] += (int64_t)in->m[j][k] * ((int64_t)num_to_q16(o[k]) - num_to_q16(t[k]));
+            pd[j] += (int64_t)in->m[j][k] * num_to_q16(d[k]);
+        }
+        int b = bvh_bits64(pd[j]);
+        bd = b > bd ? b : bd;
+    }
+    if (bd == 0)
+        return false;
+    /* po is the origin in mesh units times 2^(16 + e). */
+    int f = BVH_F_MAX;
+    for (;; f--) {
+        bool fits = true;
+        for (int j = 0; j < 3; j++) {
+            int64_t v = bvh_shift(po[j], f - 16 - in->e);
+            fits = fits && v <= BVH_O_MAX && v >= -BVH_O_MAX && bvh_bits64(po[j]) + f - 16 - in->e <= 62;
+            r->o[j] = v;
+        }
+        if (fits)
+            break;
+        if (f == 0)
+            return false; /* farther than 2^30 mesh units: bvh.h */
+    }
+    int sd = 30 - bd;
+    for (int j = 0; j < 3; j++)
+        r->d[j] = bvh_shift(pd[j], sd);
+    r->f = f;
+    /* o + t d in mesh units 2^-f is r->o + t (pd 2^(f - 16 - e)) = r->o + t 2^(f - 16 - e - sd) r->d */
+    r->tshift = in->e + 16 + sd - f;
+    /* tmax as a quotient of mesh t: tmax_raw / 2^(16 + tshift) */
+    r->ld = 0;
+    if (tmax != NUM_MAX) {
+        int s = 16 + r->tshift;
+        int64_t n = num_to_q16(tmax);
+        if (s > 62) {
+            r->ln = (n >> (s - 62)) + 1; /* rounded up: a bound that only admits more */
+            r->ld = (int64_t)1 << 62;
+        } else if (s >= 0) {
+            r->ln = n;
+            r->ld = (int64_t)1 << s;
+        } else if (bvh_bits64(n) - s <= 62) {
+            r->ln = n << -s;
+            r->ld = 1;
+        }
+    }
+    return true;
+}
+
+/* ---- 128-bit helpers ------------------------------------------------------- */
+
+static bool bvh_lt128(fx128_t a, fx128_t b) { return a.hi != b.hi ? a.hi < b.hi : a.lo < b.lo; }
+static int bvh_sign128(fx128_t a) { return a.hi < 0 ? -1 : (a.hi == 0 && a.lo == 0 ? 0 : 1); }
+
+/* n / d 2^sh in Q16.16 (n >= 0, d > 0), saturating. */
+static num_t bvh_ratio(fx128_t n, fx128_t d, int sh)
+{
+    if (sh >= 0) {
+        if (fx128_bits(n) + sh > 126)
+            return NUM_MAX;
+        n = fx128_shl(n, sh);
+    } else {
+        if (fx128_bits(d) - sh > 126)
+            return NUM_ZERO;
+        d = fx128_shl(d, -sh);
+    }
+    int bn = fx128_bits(n), bdd = fx128_bits(d), s = (bn > bdd ? bn : bdd) - 62;
+    if (s > 0) {
+        n = fx128_shr128(n, s);
+        d = fx128_shr128(d, s);
+    }
+    if (d.lo == 0)
+        return NUM_MAX;
+    return num_from_q16(fxw_div((int64_t)n.lo, (int64_t)d.lo));
+}
+
+/* (n, d) both shifted right until they fit 62 bits, d then at least 1. */
+static void bvh_reduce(fx128_t n, fx128_t d, int64_t *rn, int64_t *rd)
+{
+    int bn = fx128_bits(n), bdd = fx128_bits(d), s = (bn > bdd ? bn : bdd) - 62;
+    if (s > 0) {
+        n = fx128_shr128(n, s);
+        d = fx128_shr128(d, s);
+    }
+    *rn = (int64_t)n.lo;
+    *rd = d.lo ? (int64_t)d.lo : 1;
+}
+
+/* ---- a box ---------------------------------------------------------------- */
+
+/* Is the node's box met at a t in [0, the limit]? *en / *ed: its entry t
+ * (Q16.16) or *fen (float, double), for the order of the walk. */
+static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int64_t *en, int64_t *ed, num_t *fen)
+{
+    if (!NUM_EXACT) {
+        num_t lo = NUM_ZERO, hi = r->ft;
+        for (int i = 0; i < 3; i++) {
+            num_t a = (num_t)nd->lo[i], b = (num_t)nd->hi[i];
+            if (r->fd[i] == NUM_ZERO) {
+                if (r->fo[i] < a || r->fo[i] > b)
+                    return false;
+                continue;
+            }
+            num_t t0 = (a - r->fo[i]) / r->fd[i], t1 = (b - r->fo[i]) / r->fd[i];
+            if (t0 > t1) {
+                num_t s = t0;
+                t0 = t1;
+                t1 = s;
+            }
+            /* widened by a relative margin against the rounding of the quotients */
+            num_t eps = (num_t)(sizeof(num_t) == sizeof(float) ? 1e-5 : 1e-13);
+            t0 = t0 - (t0 > 0 ? t0 : -t0) * eps - eps;
+            t1 = t1 + (t1 > 0 ? t1 : -t1) * eps + eps;
+            lo = t0 > lo ? t0 : lo;
+            hi = t1 < hi ? t1 : hi;
+        }
+        *fen = lo;
+        return lo <= hi;
+    }
+    int64_t n0 = 0, d0 = 1;      /* entry, from t = 0 */
+    int64_t n1 = 0, d1 = 0;      /* exit (d1 0: none yet) */
+    for (int i = 0; i < 3; i++) {
+        int64_t a = (int64_t)nd->lo[i] << r->f, b = (int64_t)nd->hi[i] << r->f, o = r->o[i], d = r->d[i];
+        if (d == 0) {
+            if (o < a || o > b)
+                return false;
+            continue;
+        }
+        int64_t ne = d > 0 ? a - o : o - b, nx = d > 0 ? b - o : o - a, ad = d > 0 ? d : -d;
+        if (ne * d0 > n0 * ad) { /* |n| < 2^31, |d| < 2^30 */
+            n0 = ne;
+            d0 = ad;
+        }
+        if (d1 == 0 || nx * d1 < n1 * ad) {
+            n1 = nx;
+            d1 = ad;
+        }
+    }
+    if (d1 != 0 && n0 * d1 > n1 * d0)
+        return false;
+    if (r->ld != 0 && bvh_lt128(fx128_mul(r->ln, d0), fx128_mul(n0, r->ld)))
+        return false; /* enters beyond the limit */
+    *en = n0;
+    *ed = d0;
+    return true;
+}
+
+/* Is box entry 1 before entry 2? */
+static bool bvh_before(int64_t n1, int64_t d1, num_t f1, int64_t n2, int64_t d2, num_t f2)
+{
+    return NUM_EXACT ? n1 * d2 < n2 * d1 : f1 < f2;
+}
+
+/* ---- a triangle ----------------------------------------------------------- */
+
+/* Vertex k's opposite edge runs from vertex bvh_next[k] to bvh_next[k + 1]. */
+static const uint8_t bvh_next[4] = {1, 2, 0, 1};
+
+typedef struct {
+    fx128_t e[3], tn, det; /* Q16.16: edge values (weights of a, b, c), t's numerator and denominator */
+    num_t fe[3], ftn, fdet; /* float, double: the same (fe only for the signs) */
+} bvh_cand_t;
+
+static void bvh_cross64(const int64_t p[3], const int64_t q[3], int64_t c[3])
+{
+    c[0] = p[1] * q[2] - p[2] * q[1];
+    c[1] = p[2] * q[0] - p[0] * q[2];
+    c[2] = p[0] * q[1] - p[1] * q[0];
+}
+
+static fx128_t bvh_dot128(const int64_t d[3], const int64_t c[3])
+{
+    fx128_t s = fx128_mul(d[0], c[0]);
+    s = fx128_add(s, fx128_mul(d[1], c[1]));
+    return fx128_add(s, fx128_mul(d[2], c[2]));
+}
+
+static void bvh_crossf(const num_t p[3], const num_t q[3], num_t c[3])
+{
+    c[0] = p[1] * q[2] - p[2] * q[1];
+    c[1] = p[2] * q[0] - p[0] * q[2];
+    c[2] = p[0] * q[1] - p[1] * q[0];
+}
+
+/* Does the ray's line pass through triangle i (its edges, either winding,
+ * a zero on an edge counting), in front of the origin? c: the values, with
+ * det > 0. */
+static bool bvh_triangle(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, bvh_cand_t *c)
+{
+    uint32_t vi[3];
+    bvh_tri(m, i, vi);
+    if (!NUM_EXACT) {
+        num_t p[3][3], x[3][3];
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++)
+                p[k][j] = (num_t)m->v[vi[k]][j] - r->fo[j];
+        for (int k = 0; k < 3; k++) { /* edge (k+1, k+2): weight of vertex k */
+            int a = bvh_next[k], b = bvh_next[k + 1];
+            bool swap = vi[b] < vi[a];
+            bvh_crossf(p[swap ? b : a], p[swap ? a : b], x[k]);
+            num_t e = r->fd[0] * x[k][0] + r->fd[1] * x[k][1] + r->fd[2] * x[k][2];
+            c->fe[k] = swap ? -e : e;
+        }
+        bool neg = c->fe[0] < 0 || c->fe[1] < 0 || c->fe[2] < 0, pos = c->fe[0] > 0 || c->fe[1] > 0 || c->fe[2] > 0;
+        if (neg && pos)
+            return false;
+        num_t sum = c->fe[0] + c->fe[1] + c->fe[2], e1[3], e2[3], n[3];
+        for (int j = 0; j < 3; j++) {
+            e1[j] = (num_t)m->v[vi[1]][j] - (num_t)m->v[vi[0]][j];
+            e2[j] = (num_t)m->v[vi[2]][j] - (num_t)m->v[vi[0]][j];
+        }
+        bvh_crossf(e1, e2, n);
+        c->fdet = r->fd[0] * n[0] + r->fd[1] * n[1] + r->fd[2] * n[2];
+        c->ftn = p[0][0] * n[0] + p[0][1] * n[1] + p[0][2] * n[2];
+        if (sum == NUM_ZERO || c->fdet == NUM_ZERO)
+            return false;
+        return c->ftn / c->fdet > 0;
+    }
+    int64_t p[3][3], x[3];
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 3; j++)
+            p[k][j] = ((int64_t)m->v[vi[k]][j] << r->f) - r->o[j];
+    int pos = 0, neg = 0;
+    for (int k = 0; k < 3; k++) {
+        int a = bvh_next[k], b = bvh_next[k + 1];
+        bool swap = vi[b] < vi[a];
+        bvh_cross64(p[swap ? b : a], p[swap ? a : b], x);
+        fx128_t e = bvh_dot128(r->d, x);
+        c->e[k] = swap ? fx128_neg(e) : e;
+        int s = bvh_sign128(c->e[k]);
+        pos |= s > 0;
+        neg |= s < 0;
+        if (pos && neg)
+            return false;
+    }
+    /* the plane: n = (b - a) x (c - a) in mesh units (exact below 2^34);
+     * E(b, c) + E(c, a) + E(a, b) = d . n 2^2f exactly */
+    int64_t e1[3], e2[3], n[3];
+    for (int j = 0; j < 3; j++) {
+        e1[j] = (int64_t)m->v[vi[1]][j] - m->v[vi[0]][j];
+        e2[j] = (int64_t)m->v[vi[2]][j] - m->v[vi[0]][j];
+    }
+    bvh_cross64(e1, e2, n);
+    c->det = bvh_dot128(r->d, n);
+    int sd = bvh_sign128(c->det);
+    if (sd == 0)
+        return false;
+    c->tn = bvh_dot128(p[0], n);
+    if (sd < 0) {
+        c->det = fx128_neg(c->det);
+        c->tn = fx128_neg(c->tn);
+        for (int k = 0; k < 3; k++)
+            c->e[k] = fx128_neg(c->e[k]);
+    }
+    return bvh_sign128(c->tn) > 0;
+}
+
+/* Float, double: the weights of the hit point p = o + t d in triangle i,
+ * from its own edges: w_a = n . ((c - b) x (p - b)) / n . n, ... (the
+ * edge values, relative to a distant origin, carry too much rounding). */
+static void bvh_weights_f(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, num_t t, num_t w[3])
+{
+    uint32_t vi[3];
+    bvh_tri(m, i, vi);
+    num_t v[3][3], e1[3], e2[3], n[3], p[3];
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 3; j++)
+            v[k][j] = (num_t)m->v[vi[k]][j];
+    for (int j = 0; j < 3; j++) {
+        e1[j] = v[1][j] - v[0][j];
+        e2[j] = v[2][j] - v[0][j];
+        p[j] = r->fo[j] + t * r->fd[j];
+    }
+    bvh_crossf(e1, e2, n);
+    num_t nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    for (int k = 0; k < 3; k++) {
+        const num_t *a = v[bvh_next[k]], *b = v[bvh_next[k + 1]];
+        num_t ab[3], ap[3], x[3];
+        for (int j = 0; j < 3; j++) {
+            ab[j] = b[j] - a[j];
+            ap[j] = p[j] - a[j];
+        }
+        bvh_crossf(ab, ap, x);
+        w[k] = (n[0] * x[0] + n[1] * x[1] + n[2] * x[2]) / nn;
+    }
+}
+
+/* The candidate's world t (Q16.16: from its quotient; 0 for one below
+ * 1 LSB, which is no hit). */
+static num_t bvh_cand_t_world(const bvh_ray_t *r, const bvh_cand_t *c)
+{
+    return NUM_EXACT ? bvh_ratio(c->tn, c->det, r->tshift) : c->ftn / c->fdet;
+}
+
+/* ---- the walk --------------------------------------------------------------- */
+
+/* The walk, for the nearest hit (nearest) or any (!nearest). */
+static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bool nearest, bvh_hit_t *hit)
+{
+    const bvh_mesh_t *m = in->mesh;
+    bvh_ray_t r;
+    if (!bvh_ray_make(in, ray, tmax, &r))
+        return false;
+    uint32_t stack[BVH_MAX_DEPTH];
+    int sp = 0;
+    uint32_t ni = 0;
+    int64_t en0, ed0, en1, ed1;
+    num_t fe0 = NUM_ZERO, fe1 = NUM_ZERO;
+    bool found = false;
+    bvh_cand_t best, c;
+    num_t best_t = NUM_MAX;
+    if (!bvh_box(&r, &m->node[0], &en0, &ed0, &fe0))
+        return false;
+    for (;;) {
+        const bvh_node_t *nd = &m->node[ni];
+        uint32_t cnt = nd->link & 15u, first = nd->link >> 4;
+        if (cnt) {
+            for (uint32_t i = first; i < first + cnt; i++) {
+                if (i == skip || !bvh_triangle(m, &r, i, &c))
+                    continue;
+                if (NUM_EXACT && r.ld != 0) {
+                    int64_t cn, cd;
+                    bvh_reduce(c.tn, c.det, &cn, &cd);
+                    if (!bvh_lt128(fx128_mul(cn, r.ld), fx128_mul(r.ln, cd)))
+                        continue; /* not before the limit (the nearest so far, or tmax) */
+                }
+                num_t t = bvh_cand_t_world(&r, &c);
+                if (!NUM_EXACT && !(t < r.ft))
+                    continue;
+                if (NUM_EXACT && (t <= NUM_ZERO || !(t < tmax)))
+                    continue; /* below 1 LSB, or at tmax after rounding */
+                if (!nearest)
+                    return true;
+                found = true;
+                for (int k = 0; k < 3; k++) /* what the weights need */
+                    fx128_copy(&best.e[k], &c.e[k]);
+                fx128_copy(&best.det, &c.det);
+                best_t = t;
+                hit->tri = i;
+                if (NUM_EXACT)
+                    bvh_reduce(c.tn, c.det, &r.ln, &r.ld);
+                else
+                    r.ft = t;
+            }
+        } else if (first + 1 < m->n_nodes) {
+            bool h0 = bvh_box(&r, &m->node[first], &en0, &ed0, &fe0);
+            bool h1 = bvh_box(&r, &m->node[first + 1], &en1, &ed1, &fe1);
+            if (h0 && h1 && sp < BVH_MAX_DEPTH) {
+                bool second = bvh_before(en1, ed1, fe1, en0, ed0, fe0);
+                stack[sp++] = second ? first : first + 1;
+                ni = second ? first + 1 : first;
+                continue;
+            }
+            if (h0 || h1) {
+                ni = h0 ? first : first + 1;
+                continue;
+            }
+        }
+        /* the next node on the stack whose box is still met */
+        for (;;) {
+            if (sp == 0) {
+                if (found) {
+                    hit->t = best_t;
+                    if (!NUM_EXACT)
+                        bvh_weights_f(m, &r, hit->tri, best_t, hit->w);
+                    for (int k = 0; k < 3 && NUM_EXACT; k++)
+                        hit->w[k] = bvh_ratio(best.e[k], best.det, -2 * r.f);
+                }
+                return found;
+            }
+            ni = stack[--sp];
+            if (bvh_box(&r, &m->node[ni], &en0, &ed0, &fe0))
+                break;
+        }
+    }
+}
+
+bool bvh_nearest(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bvh_hit_t *hit)
+{
+    return bvh_walk(in, ray, tmax, skip, true, hit);
+}
+
+bool bvh_any(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip)
+{
+    bvh_hit_t unused;
+    return bvh_walk(in, ray, tmax, skip, false, &unused);
+}
+
+/* ---- normals ---------------------------------------------------------------- */
+
+/* The world direction of mesh-space normal v (M^-T v = m^T v 2^-e),
+ * normalised. */
+static bool bvh_world_normal(const bvh_inst_t *in, const int64_t v[3], const num_t fv[3], vec3_t *n)
+{
+    num_t out[3];
+    if (!NUM_EXACT) {
+        for (int j = 0; j < 3; j++)
+            out[j] = bvh_minv(in, 0, j) * fv[0] + bvh_minv(in, 1, j) * fv[1] + bvh_minv(in, 2, j) * fv[2];
+    } else {
+        int b = 0;
+        for (int j = 0; j < 3; j++)
+            b = bvh_bits64(v[j]) > b ? bvh_bits64(v[j]) : b;
+        int64_t s[3], w[3];
+        for (int j = 0; j < 3; j++)
+            s[j] = bvh_shift(v[j], b > 30 ? 30 - b : 0); /* |s| <= 2^30, |m| < 2^30: the sums fit */
+        b = 0;
+        for (int j = 0; j < 3; j++) {
+            w[j] = (int64_t)in->m[0][j] * s[0] + (int64_t)in->m[1][j] * s[1] + (int64_t)in->m[2][j] * s[2];
+            b = bvh_bits64(w[j]) > b ? bvh_bits64(w[j]) : b;
+        }
+        for (int j = 0; j < 3; j++)
+            out[j] = num_from_q16((int32_t)bvh_shift(w[j], 30 - b)); /* direction only: any scale */
+    }
+    if (!num_normalize3(out))
+        return false;
+    *n = vec3_make(out[0], out[1], out[2]);
+    return true;
+}
+
+bool bvh_normal(const bvh_inst_t *in, const bvh_hit_t *hit, bool smooth, vec3_t *n)
+{
+    const bvh_mesh_t *m = in->mesh;
+    uint32_t vi[3];
+    bvh_tri(m, hit->tri, vi);
+    int64_t v[3];
+    num_t fv[3];
+    if (!smooth || !m->vn) {
+        /* (b - a) x (c - a), exact in 64 bits */
+        int64_t e1[3], e2[3];
+        for (int j = 0; j < 3; j++) {
+            e1[j] = (int64_t)m->v[vi[1]][j] - m->v[vi[0]][j];
+            e2[j] = (int64_t)m->v[vi[2]][j] - m->v[vi[0]][j];
+        }
+        bvh_cross64(e1, e2, v);
+        for (int j = 0; j < 3; j++)
+            fv[j] = (num_t)v[j];
+        return bvh_world_normal(in, v, fv, n);
+    }
+    /* smooth: each vertex normal to the world, normalised, then blended by
+     * the weights and normalised (docs/LIGHTING.md) */
+    vec3_t sum = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    for (int k = 0; k < 3; k++) {
+        vec3_t nk;
+        for (int j = 0; j < 3; j++) {
+            v[j] = m->vn[vi[k]][j];
+            fv[j] = (num_t)v[j];
+        }
+        if (!bvh_world_normal(in, v, fv, &nk))
+            return false;
+        sum = vec3_add(sum, vec3_scale_unit(nk, hit->w[k]));
+    }
+    num_t s[3] = {sum.x, sum.y, sum.z};
+    if (!num_normalize3(s))
+        return false;
+    *n = vec3_make(s[0], s[1], s[2]);
+    return true;
+}
+
+/* ---- the check -------------------------------------------------------------- */
+
+static bool bvh_in_box(const bvh_node_t *nd, const int16_t p[3])
+{
+    for (int j = 0; j < 3; j++)
+        if (p[j] < nd->lo[j] || p[j] > nd->hi[j])
+            return false;
+    return true;
+}
+
+bool bvh_check(const bvh_inst_t *in)
+{
+    if (!in || !in->mesh || in->e < 0 || in->e > 62)
+        return false;
+    for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++)
+            if (in->m[j][k] >= (1 << 30) || in->m[j][k] <= -(1 << 30))
+                return false;
+    if (geom_check_point(in->t) != FXRT_OK)
+        return false;
+    const bvh_mesh_t *m = in->mesh;
+    if (!m->v || !m->node || m->n_nodes == 0 || m->n_triangles == 0 || m->n_vertices == 0 ||
+        (m->tri16 ? m->tri32 != NULL || m->n_vertices > 65536u : m->tri32 == NULL))
+        return false;
+    for (uint32_t i = 0; i < m->n_vertices; i++)
+        for (int j = 0; j < 3; j++)
+            if (m->v[i][j] < -BVH_Q_MAX || (m->vn && m->vn[i][0] == 0 && m->vn[i][1] == 0 && m->vn[i][2] == 0))
+                return false;
+    /* depth first, left child first: the leaves' triangles must follow
+     * one another from 0, each once */
+    uint32_t stack[BVH_MAX_DEPTH + 1], next = 0;
+    uint8_t depth[BVH_MAX_DEPTH + 1];
+    int sp = 0;
+    stack[sp] = 0;
+    depth[sp++] = 0;
+    while (sp > 0) {
+        sp--;
+        uint32_t ni = stack[sp];
+        uint8_t dp = depth[sp];
+        const bvh_node_t *nd = &m->node[ni];
+        for (int j = 0; j < 3; j++)
+            if (nd->lo[j] > nd->hi[j])
+                return false;
+        uint32_t cnt = nd->link & 15u, first = nd->link >> 4;
+        if (cnt) {
+            if (first != next || cnt > m->n_triangles - next)
+                return false;
+            for (uint32_t i = first; i < first + cnt; i++) {
+                uint32_t vi[3];
+                bvh_tri(m, i, vi);
+                for (int k = 0; k < 3; k++)
+                    if (vi[k] >= m->n_vertices || !bvh_in_box(nd, m->v[vi[k]]))
+                        return false;
+            }
+            next += cnt;
+            continue;
+        }
+        if (first <= ni || first >= m->n_nodes - 1 || dp >= BVH_MAX_DEPTH)
+            return false;
+        for (uint32_t c = first; c <= first + 1; c++)
+            for (int j = 0; j < 3; j++)
+                if (m->node[c].lo[j] < nd->lo[j] || m->node[c].hi[j] > nd->hi[j])
+                    return false;
+        stack[sp] = first + 1; /* right after left */
+        depth[sp++] = (uint8_t)(dp + 1);
+        stack[sp] = first;
+        depth[sp++] = (uint8_t)(dp + 1);
+    }
+    return next == m->n_triangles;
+}
