@@ -33,6 +33,7 @@ SCENE_LIB = $(BUILD)/host/scene.o $(BUILD)/host/obj.o $(BUILD)/host/xform.o $(BU
 HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),fxrt,$(NUMBERS))
 
 SCENEC_OBJ := $(BUILD)/host/scenec.o $(SCENE_LIB) $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
+              $(BUILD)/host/meshbuild.o $(BUILD)/host/meshemit.o \
               $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),scenec,$(NUMBERS))
 
 all: $(BUILD)/fxrt $(BUILD)/fxrt-scenec
@@ -163,6 +164,7 @@ test-full: deps
 # --- firmware (firmware/firmware.mk) ----------------------------------------
 include firmware/firmware.mk
 include firmware/bench.mk
+include firmware/meshq.mk
 
 # --- demo ----------------------------------------------------------------
 # make help: every target with its one-line use, read from docs/TARGETS.md

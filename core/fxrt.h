@@ -43,6 +43,7 @@
 #include "scene/cam.h"
 #include "fxrt_err.h"
 #include "frame/render.h"
+#include "scene/bvh.h"
 #include "scene/world.h"
 
 /* Bytes of one output row of `width` pixels: RGB888, 3 bytes per pixel,
@@ -59,6 +60,8 @@ typedef world_t fxrt_world_t;       /* the objects, lights and settings */
 typedef cam_t fxrt_view_t;          /* a camera, set up (fxrt_camera_*) */
 typedef render_t fxrt_render_t;     /* a frame's state (fxrt_render_setup) */
 typedef material_t fxrt_material_t; /* .kind, .exponent, .specular, .reflection, .index */
+typedef bvh_mesh_t fxrt_mesh_t;     /* a mesh in constant data (docs/MESHES.md; fxrt-scenec --mesh writes one) */
+typedef bvh_node_t fxrt_mesh_node_t;
 
 /* A number literal: FXRT_NUM(0.5). */
 #define FXRT_NUM(x) NUM(x)

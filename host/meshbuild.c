@@ -9,10 +9,15 @@
 
 /* The tree: binned surface-area heuristic (MB_BINS bins per axis), a
  * triangle test costing MB_COST_TRI box tests; a leaf where no split is
- * cheaper, at most BVH_LEAF_MAX triangles. Near the depth cap a node is
+ * cheaper or at most MB_LEAF_MIN triangles remain, at most BVH_LEAF_MAX. Near the depth cap a node is
  * split at its median instead, which keeps every leaf within the cap. */
 #define MB_BINS 16
 #define MB_COST_TRI 2.0
+/* Nodes of at most this many triangles are leaves (nodes are 16 bytes,
+ * triangles 6: fewer, fuller leaves keep the data near 20 bytes a
+ * triangle). */
+#define MB_LEAF_MIN 4
+#define MB_FACE_DOT (1 - 1e-7)
 
 typedef struct {
     int32_t lo[3], hi[3];
@@ -96,7 +101,7 @@ static void mb_build(mb_ctx_t *c, uint32_t ni, uint32_t first, uint32_t n, int d
     int best_axis = -1, best_bin = 0;
     double best = (double)n * MB_COST_TRI, area = mb_area(&box);
     bool median = depth + mb_ceil_log2((n + BVH_LEAF_MAX - 1) / BVH_LEAF_MAX) + 1 >= BVH_MAX_DEPTH;
-    if (n <= 1)
+    if (n <= MB_LEAF_MIN)
         best_axis = -2; /* a leaf */
     for (int a = 0; a < 3 && !median && best_axis != -2 && area > 0; a++) {
         int64_t lo = cbox.lo[a], ext = (int64_t)cbox.hi[a] - lo;
@@ -242,6 +247,31 @@ int meshbuild(const obj_t *o, bool smooth, meshbuild_t *mb, char *err, size_t er
                 key[c].n[1] = mb_q16(cn[c].y / l * BVH_N_ONE);
                 key[c].n[2] = mb_q16(cn[c].z / l * BVH_N_ONE);
             }
+        }
+    }
+    /* Normals that are their faces' own (a file whose vn repeat each
+     * face's normal, as Spot's do, to its 6 decimals): within MB_FACE_DOT
+     * (an angle of 4.5e-4: n . l moves by at most that, 0.11 of a level)
+     * the same as a flat mesh, which needs no normals and no split
+     * vertices. */
+    if (smooth) {
+        bool faces = true;
+        for (size_t i = 0; i < o->ntri && faces; i++) {
+            obj_vec_t f = obj_face_normal(o, i);
+            double l = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
+            if (!(l > 0))
+                continue; /* dropped below */
+            for (int k = 0; k < 3 && faces; k++) {
+                const obj_vec_t *c = &cn[3 * i + k];
+                double lc = sqrt(c->x * c->x + c->y * c->y + c->z * c->z);
+                faces = lc > 0 && (f.x * c->x + f.y * c->y + f.z * c->z) / (l * lc) >= MB_FACE_DOT;
+            }
+        }
+        if (faces) {
+            smooth = false;
+            mb->face_normals = true;
+            for (size_t c = 0; c < 3 * o->ntri; c++)
+                memset(key[c].n, 0, sizeof key[c].n);
         }
     }
     qsort(key, 3 * o->ntri, sizeof *key, mb_cmp_key);

@@ -22,6 +22,8 @@ typedef struct {
     double origin[3]; /* a model point x is origin + step q */
     double step;
     size_t dropped;   /* triangles of zero area (in the file, or once quantised) left out */
+    bool face_normals; /* smooth asked, but every corner's normal was its face's (within a
+                        * stored step): built flat, which shades the same */
     int depth;        /* the tree's depth (the root 0) */
     uint32_t *src;    /* src[i]: the OBJ triangle that tree triangle i comes from */
 } meshbuild_t;

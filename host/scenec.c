@@ -14,11 +14,22 @@
 
 #include "args.h"
 #include "engine.h"
+#include "meshbuild.h"
+#include "meshemit.h"
 #include "scenec.h"
 
 static const char usage[] =
     "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR [--all-kinds]\n"
     "                   [--sphere-rows]\n"
+    "       fxrt-scenec --mesh OBJ --out FILE.c [--name NAME] [--flat] [--max-bytes N]\n"
+    "                   [--index16]\n"
+    "\n"
+    "--mesh writes the OBJ model as constant data in C (docs/MESHES.md): quantised\n"
+    "vertices, vertex normals (not with --flat), triangles and a BVH, and\n"
+    "`const fxrt_mesh_t NAME` (default: the file's name, then _mesh). It prints\n"
+    "one line: triangles, vertices, nodes, depth, bytes, bytes per triangle. It\n"
+    "refuses a mesh of more than N bytes (--max-bytes) or, with --index16, one\n"
+    "whose vertices need 32-bit indices.\n"
     "\n"
     "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT/OBJECTS/LIGHTS,\n"
     "FXRT_SHADOWS, FXRT_PHONG, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES, FXRT_ADAPTIVE) and\n"
@@ -48,8 +59,98 @@ static int fail(const char *msg, const char *arg)
     return 2;
 }
 
+/* fxrt-scenec --mesh OBJ --out FILE.c [--name NAME] [--flat] [--max-bytes N] [--index16] */
+static int mesh_main(int argc, char **argv)
+{
+    const char *obj = NULL, *out = NULL, *name = NULL;
+    bool smooth = true, index16 = false;
+    long long max_bytes = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        bool value = !strcmp(a, "--mesh") || !strcmp(a, "--out") || !strcmp(a, "--name") || !strcmp(a, "--max-bytes");
+        if (value && i + 1 >= argc)
+            return fail("missing value for ", a);
+        if (!strcmp(a, "--mesh")) {
+            obj = argv[++i];
+        } else if (!strcmp(a, "--out")) {
+            out = argv[++i];
+        } else if (!strcmp(a, "--name")) {
+            name = argv[++i];
+            bool ok = (name[0] == '_' || (name[0] | 32) >= 'a') && (name[0] | 32) <= 'z';
+            for (const char *c = name; *c && ok; c++)
+                ok = *c == '_' || (*c >= '0' && *c <= '9') || ((*c | 32) >= 'a' && (*c | 32) <= 'z');
+            if (!ok)
+                return fail("bad --name (a C identifier) ", name);
+        } else if (!strcmp(a, "--max-bytes")) {
+            char *end;
+            max_bytes = strtoll(argv[++i], &end, 10);
+            if (*argv[i] == 0 || *end || max_bytes < 0)
+                return fail("bad --max-bytes ", argv[i]);
+        } else if (!strcmp(a, "--flat")) {
+            smooth = false;
+        } else if (!strcmp(a, "--index16")) {
+            index16 = true;
+        } else {
+            return fail("unexpected argument ", a);
+        }
+    }
+    if (!obj || !out)
+        return fail("--mesh needs OBJ and --out", "");
+    char defname[256];
+    if (!name) {
+        const char *base = strrchr(obj, '/');
+        base = base ? base + 1 : obj;
+        size_t k = 0;
+        if (*base >= '0' && *base <= '9')
+            defname[k++] = '_';
+        for (; *base && *base != '.' && k + 6 < sizeof defname; base++)
+            defname[k++] = (char)((*base >= '0' && *base <= '9') || ((*base | 32) >= 'a' && (*base | 32) <= 'z') ? *base : '_');
+        snprintf(defname + k, sizeof defname - k, "_mesh");
+        name = defname;
+    }
+    static obj_t o;
+    static meshbuild_t mb;
+    char err[512];
+    if (obj_load(obj, &o, err, sizeof err) || meshbuild(&o, smooth, &mb, err, sizeof err)) {
+        fprintf(stderr, "%s%s%s\n", strncmp(err, obj, strlen(obj)) ? obj : "", strncmp(err, obj, strlen(obj)) ? ": " : "", err);
+        return 2;
+    }
+    obj_free(&o);
+    size_t bytes = meshbuild_bytes(&mb);
+    if (index16 && !mb.mesh.tri16) {
+        fprintf(stderr, "%s: the mesh needs 32-bit indices: %u vertices, at most 65,536 with 16-bit ones (--index16)\n",
+                obj, mb.mesh.n_vertices);
+        return 2;
+    }
+    if (max_bytes >= 0 && (long long)bytes > max_bytes) {
+        fprintf(stderr, "%s: the mesh needs %zu bytes of constant data, at most %lld fit (--max-bytes)\n", obj, bytes,
+                max_bytes);
+        return 2;
+    }
+    char tmp[1100];
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", out, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    int rc = !f || meshemit_c(f, &mb, name, obj) != 0;
+    if (f && fclose(f))
+        rc = 1;
+    if (!rc && rename(tmp, out))
+        rc = 1;
+    if (rc) {
+        remove(tmp);
+        fprintf(stderr, "fxrt-scenec: cannot write %s\n", out);
+        meshbuild_free(&mb);
+        return 2;
+    }
+    meshemit_summary(stdout, &mb, obj);
+    meshbuild_free(&mb);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--mesh"))
+            return mesh_main(argc, argv);
     const char *path = NULL, *out = NULL;
     engine_number_t num = ENGINE_Q16;
     int w = 0, h = 0;

@@ -735,8 +735,52 @@ static void cap_test(void)
     meshbuild_free(&mb);
 }
 
+/* Normals that are the faces' own (each corner's vn its face's normal, to
+ * 6 decimals, as Spot's): built flat, without split vertices; one corner
+ * turned by 10^-3 keeps the mesh smooth. */
+static void face_normal_test(void)
+{
+    for (int turn = 0; turn < 2; turn++) {
+        buf_t b = {0};
+        icosphere(&b, 1, 1.5);
+        obj_t o;
+        char err[200];
+        if (obj_parse("ico.obj", b.s, b.n, &o, err, sizeof err)) {
+            CHECK_MSG(0, "%s", err);
+            return;
+        }
+        buf_t c = {0};
+        for (size_t i = 0; i < o.nv; i++)
+            bprintf(&c, "v %.6f %.6f %.6f\n", o.v[i].x, o.v[i].y, o.v[i].z);
+        for (size_t i = 0; i < o.ntri; i++) {
+            obj_vec_t n = obj_face_normal(&o, i);
+            double l = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+            bprintf(&c, "vn %.6f %.6f %.6f\n", n.x / l + (turn && i == 7 ? 1e-3 : 0), n.y / l, n.z / l);
+        }
+        for (size_t i = 0; i < o.ntri; i++)
+            bprintf(&c, "f %d//%zu %d//%zu %d//%zu\n", o.tri[i].v[0] + 1, i + 1, o.tri[i].v[1] + 1, i + 1,
+                    o.tri[i].v[2] + 1, i + 1);
+        obj_t o2;
+        meshbuild_t mb;
+        if (obj_parse("ico-vn.obj", c.s, c.n, &o2, err, sizeof err) || meshbuild(&o2, true, &mb, err, sizeof err)) {
+            CHECK_MSG(0, "%s", err);
+        } else {
+            CHECK_MSG(turn ? mb.mesh.vn != NULL && !mb.face_normals && mb.mesh.n_vertices > o.nv
+                           : mb.mesh.vn == NULL && mb.face_normals && mb.mesh.n_vertices == o.nv,
+                      "turn %d: vn %p face_normals %d vertices %u", turn, (const void *)mb.mesh.vn, mb.face_normals,
+                      mb.mesh.n_vertices);
+            meshbuild_free(&mb);
+            obj_free(&o2);
+        }
+        obj_free(&o);
+        free(b.s);
+        free(c.s);
+    }
+}
+
 int main(void)
 {
+    face_normal_test();
     cap_test();
     edge_test();
     chain_test();

@@ -8,6 +8,8 @@
 #   ico320  split twice
 #
 #   scenes/models/mkmodels.sh [DIR]   (default: the directory of this script)
+#   scenes/models/mkmodels.sh DIR S...  icoN.obj split S times each (N = 20 4^S;
+#                                       firmware/meshq.sh's larger models)
 #
 # Only bash and POSIX awk; tests/fit.sh checks that the committed files
 # equal this script's output.
@@ -43,6 +45,11 @@ ico() {
 AWK
 }
 
+if [ $# -gt 1 ]; then
+    shift
+    for s in "$@"; do ico "$s" >"$dir/ico$((20 * 4 ** s)).obj"; done
+    exit 0
+fi
 ico 0 >"$dir/ico20.obj"
 ico 1 >"$dir/ico80.obj"
 ico 2 >"$dir/ico320.obj"

@@ -1,0 +1,20 @@
+/* meshemit: a mesh built by host/meshbuild.c written as C: const arrays
+ * (flash on a board) and a const fxrt_mesh_t that names them, for a
+ * user's firmware or the scene compiler (docs/MESHES.md). */
+#ifndef FXRT_HOST_MESHEMIT_H
+#define FXRT_HOST_MESHEMIT_H
+
+#include <stdio.h>
+
+#include "meshbuild.h"
+
+/* Write mb as C into f: NAME_v, NAME_vn (smooth), NAME_tri, NAME_node and
+ * `const fxrt_mesh_t NAME`, with a comment naming src and the sizes. 0, or
+ * -1 on a write error. */
+int meshemit_c(FILE *f, const meshbuild_t *mb, const char *name, const char *src);
+
+/* One line about mb: triangles, vertices, nodes, depth, bytes, bytes per
+ * triangle, triangles dropped. */
+void meshemit_summary(FILE *f, const meshbuild_t *mb, const char *src);
+
+#endif

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Meshes in constant data on the boards (docs/MESHES.md):
+#   - fxrt-scenec --mesh: the C it writes, its summary line, and its
+#     refusals (a bad OBJ with the OBJ's FILE:LINE, --max-bytes,
+#     --index16, a bad --name), each with nothing written;
+#   - firmware/meshq.c, built for the host and for the M3, M4F and M0
+#     with a model in flash (the cube flat, an icosphere of 320 triangles
+#     smooth), answers the same rays with byte-identical results (the
+#     FNV hash of every triangle, t, weight and any-hit), and its RAM is
+#     the same for both models (a mesh costs no RAM of its own).
+set -u
+cd "$(dirname "$0")/.."
+. tests/lib.sh
+M="make --no-print-directory -s BUILD=$BUILD"
+SCENEC=$BUILD/fxrt-scenec
+tmp=$BUILD/tests/meshq
+rm -rf "$tmp"
+mkdir -p "$tmp"
+
+# --- fxrt-scenec --mesh ------------------------------------------------------
+out=$("$SCENEC" --mesh scenes/models/ico80.obj --out "$tmp/ico80.c" 2>&1)
+check "--mesh ico80 writes C" test -s "$tmp/ico80.c"
+check "--mesh summary: $out" grep -q '^mesh=scenes/models/ico80.obj triangles=80 vertices=42 .* index_bits=16 dropped=0 normals=smooth$' <<<"$out"
+check "--mesh C names ico80_mesh" grep -q '^const fxrt_mesh_t ico80_mesh = {42, 80, ' "$tmp/ico80.c"
+check "--mesh C compiles" gcc -std=c11 -Wall -Wextra -Werror -Icore -c "$tmp/ico80.c" -o "$tmp/ico80.o"
+out=$("$SCENEC" --mesh scenes/models/cube.obj --flat --name my_cube --out "$tmp/cube.c" 2>&1)
+check "--flat --name: no normals, the name given" bash -c "grep -q 'normals=flat' <<<'$out' && grep -q '^const fxrt_mesh_t my_cube = {8, 12, [0-9]*, my_cube_v, NULL, my_cube_tri, NULL, my_cube_node};' '$tmp/cube.c'"
+refuse() { # refuse DESCRIPTION EXPECTED-MESSAGE-REGEX ARGS...
+    local desc=$1 want=$2 msg rc
+    shift 2
+    rm -f "$tmp/r.c"
+    msg=$("$SCENEC" "$@" --out "$tmp/r.c" 2>&1)
+    rc=$?
+    check "$desc: exit 2 ($rc)" test $rc -eq 2
+    check "$desc: message '$msg'" grep -qE "$want" <<<"$msg"
+    check "$desc: nothing written" bash -c "! ls '$tmp' | grep -q '^r\\.c'"
+}
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n' >"$tmp/bad.obj"
+refuse "an index out of range" "^$tmp/bad.obj:4: " --mesh "$tmp/bad.obj"
+refuse "--max-bytes" "^scenes/models/ico320.obj: the mesh needs [0-9]+ bytes of constant data, at most 1000 fit" \
+    --mesh scenes/models/ico320.obj --max-bytes 1000
+refuse "a bad --name" "bad --name" --mesh scenes/models/ico20.obj --name 9lives
+# 257 x 256 vertices in strips: more than 16-bit indices hold
+awk 'BEGIN { for (j = 0; j < 256; j++) for (i = 0; i < 257; i++) printf "v %d %d %d\n", i, j, (i * j) % 7
+             for (j = 0; j < 255; j++) for (i = 0; i < 256; i++) { a = j * 257 + i + 1; printf "f %d %d %d\n", a, a + 1, a + 258 } }' >"$tmp/big.obj"
+refuse "--index16 on 65,791 vertices" "needs 32-bit indices: 657[0-9]{2} vertices" --mesh "$tmp/big.obj" --flat --index16
+out=$("$SCENEC" --mesh "$tmp/big.obj" --flat --out "$tmp/big.c" 2>&1)
+check "32-bit indices where 16 do not hold: $out" grep -q 'vertices=657[0-9][0-9] .*index_bits=32' <<<"$out"
+
+# --- the same queries on the host and the boards -----------------------------
+for spec in cube:scenes/models/cube.obj:--flat ico320:scenes/models/ico320.obj:; do
+    IFS=: read -r name obj flat <<<"$spec"
+    args=(MESHQ_OBJ="$obj" MESHQ_RAYS=300 MESHQ_FLAT="$flat")
+    progress "meshq.sh: $name on the host"
+    if ! $M "$BUILD/meshq/$name/host" "${args[@]}" >"$tmp/$name-build.log" 2>&1; then
+        bad "$name: host build: $(tail -n 3 "$tmp/$name-build.log")"
+        continue
+    fi
+    want=$("$BUILD/meshq/$name/host")
+    check "$name: the host's queries ($want)" grep -qE '^meshq rays=300 hits=[1-9][0-9]* anys=[1-9][0-9]* fnv=[0-9a-f]{16}$' <<<"$want"
+    for b in mps2-an385 mps2-an386 microbit; do
+        progress "meshq.sh: $name on $b"
+        if ! $M "$BUILD/meshq/$name/$b.elf" "${args[@]}" >"$tmp/$name-$b-build.log" 2>&1; then
+            bad "$name $b: build: $(tail -n 3 "$tmp/$name-$b-build.log")"
+            continue
+        fi
+        got=$(timeout 300 qemu-system-arm -M "$b" -nographic -monitor none -serial none \
+            -semihosting-config enable=on,target=native -icount shift=5 -kernel "$BUILD/meshq/$name/$b.elf" </dev/null 2>&1)
+        check "$name $b: the same results as the host (${got%%$'\n'*})" test "${got%%$'\n'*}" = "$want"
+        ram=$(sed -nE 's/.* ram=([0-9]+)$/\1/p' <<<"$got")
+        eval "ram_${name}_${b//-/_}=\${ram:-x}"
+        echo "meshq: $name $b ${got#*$'\n'}"
+    done
+done
+for b in mps2-an385 mps2-an386 microbit; do
+    v1=ram_cube_${b//-/_} v2=ram_ico320_${b//-/_}
+    check "$b: RAM the same for 12 and 320 triangles (${!v1:-?} B, ${!v2:-?} B)" test "${!v1:-x}" = "${!v2:-y}"
+done
+report meshq.sh
