@@ -48,7 +48,7 @@ out=$("$SCENEC" --mesh "$tmp/big.obj" --flat --out "$tmp/big.c" 2>&1)
 check "32-bit indices where 16 do not hold: $out" grep -q 'vertices=657[0-9][0-9] .*index_bits=32' <<<"$out"
 
 # --- the same queries on the host and the boards -----------------------------
-for spec in cube:scenes/models/cube.obj:--flat ico320:scenes/models/ico320.obj:; do
+for spec in t-cube:scenes/models/cube.obj:--flat t-ico320:scenes/models/ico320.obj:; do
     IFS=: read -r name obj flat <<<"$spec"
     args=(MESHQ_OBJ="$obj" MESHQ_RAYS=300 MESHQ_FLAT="$flat")
     progress "meshq.sh: $name on the host"
@@ -68,12 +68,12 @@ for spec in cube:scenes/models/cube.obj:--flat ico320:scenes/models/ico320.obj:;
             -semihosting-config enable=on,target=native -icount shift=5 -kernel "$BUILD/meshq/$name/$b.elf" </dev/null 2>&1)
         check "$name $b: the same results as the host (${got%%$'\n'*})" test "${got%%$'\n'*}" = "$want"
         ram=$(sed -nE 's/.* ram=([0-9]+)$/\1/p' <<<"$got")
-        eval "ram_${name}_${b//-/_}=\${ram:-x}"
+        eval "ram_${name//-/_}_${b//-/_}=\${ram:-x}"
         echo "meshq: $name $b ${got#*$'\n'}"
     done
 done
 for b in mps2-an385 mps2-an386 microbit; do
-    v1=ram_cube_${b//-/_} v2=ram_ico320_${b//-/_}
+    v1=ram_t_cube_${b//-/_} v2=ram_t_ico320_${b//-/_}
     check "$b: RAM the same for 12 and 320 triangles (${!v1:-?} B, ${!v2:-?} B)" test "${!v1:-x}" = "${!v2:-y}"
 done
 report meshq.sh

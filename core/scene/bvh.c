@@ -23,15 +23,17 @@
 
 typedef struct {
     /* Q16.16 */
-    int64_t o[3]; /* origin, mesh units of 2^-f */
-    int64_t d[3]; /* direction, largest |component| in [2^29, 2^30) */
+    int32_t o[3]; /* origin, mesh units of 2^-f (|o| <= 2^30) */
+    int32_t d[3]; /* direction, largest |component| in [2^29, 2^30) */
     int f;
     int tshift;   /* world t = mesh t 2^tshift */
+    /* The boxes' limit: the nearest hit so far or tmax, as a quotient
+     * ln / ld of mesh t, both below 2^31 (ln rounded up, ld down: a box
+     * beyond it is surely beyond the limit); ld 0: none. */
+    int32_t ln, ld;
     /* float, double */
     num_t fo[3], fd[3];
-    /* the nearest hit so far or tmax, as the quotient ln / ld (ld 0: none) */
-    int64_t ln, ld;
-    num_t ft;     /* float, double: the same, NUM_MAX for none */
+    num_t ft;     /* the limit, NUM_MAX for none */
 } bvh_ray_t;
 
 /* v 2^s, s of either sign (right shifts round half up). */
@@ -47,6 +49,8 @@ static int bvh_bits64(int64_t v)
     uint64_t u = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
     return u ? 64 - __builtin_clzll(u) : 0;
 }
+
+static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d);
 
 /* m 2^-e as a number (float, double). */
 static num_t bvh_minv(const bvh_inst_t *in, int j, int k)
@@ -102,7 +106,7 @@ static bool bvh_ray_make(const bvh_inst_t *in, const ray_t *ray, num_t tmax, bvh
     }
     int sd = 30 - bd;
     for (int j = 0; j < 3; j++)
-        r->d[j] = bvh_shift(pd[j], sd);
+        r->d[j] = (int32_t)bvh_shift(pd[j], sd);
     r->f = f;
     /* o + t d in mesh units 2^-f is r->o + t (pd 2^(f - 16 - e)) = r->o + t 2^(f - 16 - e - sd) r->d */
     r->tshift = in->e + 16 + sd - f;
@@ -110,17 +114,12 @@ static bool bvh_ray_make(const bvh_inst_t *in, const ray_t *ray, num_t tmax, bvh
     r->ld = 0;
     if (tmax != NUM_MAX) {
         int s = 16 + r->tshift;
-        int64_t n = num_to_q16(tmax);
-        if (s > 62) {
-            r->ln = (n >> (s - 62)) + 1; /* rounded up: a bound that only admits more */
-            r->ld = (int64_t)1 << 62;
-        } else if (s >= 0) {
-            r->ln = n;
-            r->ld = (int64_t)1 << s;
-        } else if (bvh_bits64(n) - s <= 62) {
-            r->ln = n << -s;
-            r->ld = 1;
-        }
+        fx128_t ln = fx128_from64(num_to_q16(tmax)), ld = fx128_from64(1);
+        if (s >= 0)
+            ld = fx128_shl(ld, s);
+        else
+            ln = fx128_shl(ln, -s);
+        bvh_limit(r, ln, ld);
     }
     return true;
 }
@@ -164,11 +163,34 @@ static void bvh_reduce(fx128_t n, fx128_t d, int64_t *rn, int64_t *rd)
     *rd = d.lo ? (int64_t)d.lo : 1;
 }
 
+/* The boxes' limit from the quotient n / d (n, d > 0): both shifted right
+ * until they fit 31 bits, n rounded up and d down, so that ln / ld >= n /
+ * d; none where d vanishes. */
+static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d)
+{
+    int bn = fx128_bits(n), bdd = fx128_bits(d), s = (bn > bdd ? bn : bdd) - 31;
+    if (s > 0) {
+        n = fx128_add(n, fx128_from64(((int64_t)1 << (s < 62 ? s : 62)) - 1)); /* (s < bn <= 127) */
+        if (s >= 64) {
+            n.lo = (uint64_t)n.hi >> (s - 64);
+            d.lo = (uint64_t)d.hi >> (s - 64);
+        } else {
+            n.lo = (n.lo >> s) | ((uint64_t)n.hi << (64 - s));
+            d.lo = (d.lo >> s) | ((uint64_t)d.hi << (64 - s));
+        }
+        n.lo += s >= 62 ? 1 : 0; /* (rounding up past 2^62 approximately: one more) */
+    }
+    r->ln = n.lo >= ((uint64_t)1 << 31) ? INT32_MAX : (int32_t)n.lo;
+    r->ld = (int32_t)(d.lo & 0x7FFFFFFFu);
+    if (n.lo >= ((uint64_t)1 << 31))
+        r->ld = 0; /* (cannot happen once both fit 31 bits; no limit rather than a wrong one) */
+}
+
 /* ---- a box ---------------------------------------------------------------- */
 
 /* Is the node's box met at a t in [0, the limit]? *en / *ed: its entry t
  * (Q16.16) or *fen (float, double), for the order of the walk. */
-static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int64_t *en, int64_t *ed, num_t *fen)
+static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32_t *ed, num_t *fen)
 {
     if (!NUM_EXACT) {
         num_t lo = NUM_ZERO, hi = r->ft;
@@ -195,28 +217,30 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int64_t *en, int64
         *fen = lo;
         return lo <= hi;
     }
-    int64_t n0 = 0, d0 = 1;      /* entry, from t = 0 */
-    int64_t n1 = 0, d1 = 0;      /* exit (d1 0: none yet) */
+    /* |lo, hi 2^f| <= 2^23 and |o| <= 2^30: every quotient's numerator
+     * fits 31 bits, its denominator 30, each cross product 61 */
+    int32_t n0 = 0, d0 = 1; /* entry, from t = 0 */
+    int32_t n1 = 0, d1 = 0; /* exit (d1 0: none yet) */
     for (int i = 0; i < 3; i++) {
-        int64_t a = (int64_t)nd->lo[i] << r->f, b = (int64_t)nd->hi[i] << r->f, o = r->o[i], d = r->d[i];
+        int32_t a = (int32_t)nd->lo[i] * (1 << r->f), b = (int32_t)nd->hi[i] * (1 << r->f), o = r->o[i], d = r->d[i];
         if (d == 0) {
             if (o < a || o > b)
                 return false;
             continue;
         }
-        int64_t ne = d > 0 ? a - o : o - b, nx = d > 0 ? b - o : o - a, ad = d > 0 ? d : -d;
-        if (ne * d0 > n0 * ad) { /* |n| < 2^31, |d| < 2^30 */
+        int32_t ne = d > 0 ? a - o : o - b, nx = d > 0 ? b - o : o - a, ad = d > 0 ? d : -d;
+        if (fx_smul32(ne, d0) > fx_smul32(n0, ad)) {
             n0 = ne;
             d0 = ad;
         }
-        if (d1 == 0 || nx * d1 < n1 * ad) {
+        if (d1 == 0 || fx_smul32(nx, d1) < fx_smul32(n1, ad)) {
             n1 = nx;
             d1 = ad;
         }
     }
-    if (d1 != 0 && n0 * d1 > n1 * d0)
+    if (d1 != 0 && fx_smul32(n0, d1) > fx_smul32(n1, d0))
         return false;
-    if (r->ld != 0 && bvh_lt128(fx128_mul(r->ln, d0), fx128_mul(n0, r->ld)))
+    if (r->ld != 0 && fx_smul32(r->ln, d0) < fx_smul32(n0, r->ld))
         return false; /* enters beyond the limit */
     *en = n0;
     *ed = d0;
@@ -224,33 +248,57 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int64_t *en, int64
 }
 
 /* Is box entry 1 before entry 2? */
-static bool bvh_before(int64_t n1, int64_t d1, num_t f1, int64_t n2, int64_t d2, num_t f2)
+static bool bvh_before(int32_t n1, int32_t d1, num_t f1, int32_t n2, int32_t d2, num_t f2)
 {
-    return NUM_EXACT ? n1 * d2 < n2 * d1 : f1 < f2;
+    return NUM_EXACT ? fx_smul32(n1, d2) < fx_smul32(n2, d1) : f1 < f2;
 }
 
 /* ---- a triangle ----------------------------------------------------------- */
 
-/* Vertex k's opposite edge runs from vertex bvh_next[k] to bvh_next[k + 1]. */
-static const uint8_t bvh_next[4] = {1, 2, 0, 1};
-
 typedef struct {
-    fx128_t e[3], tn, det; /* Q16.16: edge values (weights of a, b, c), t's numerator and denominator */
-    num_t fe[3], ftn, fdet; /* float, double: the same (fe only for the signs) */
+    fx128_t tn, det;        /* Q16.16: t's numerator and denominator (det > 0) */
+    num_t fe[3], ftn, fdet; /* float, double: the edge values (for their signs), t's numerator and denominator */
 } bvh_cand_t;
 
-static void bvh_cross64(const int64_t p[3], const int64_t q[3], int64_t c[3])
+/* p x q exactly (|p|, |q| < 2^31: each product below 2^62, each
+ * difference below 2^63). */
+static void bvh_cross32(const int32_t p[3], const int32_t q[3], int64_t c[3])
 {
-    c[0] = p[1] * q[2] - p[2] * q[1];
-    c[1] = p[2] * q[0] - p[0] * q[2];
-    c[2] = p[0] * q[1] - p[1] * q[0];
+    c[0] = fx_smul32(p[1], q[2]) - fx_smul32(p[2], q[1]);
+    c[1] = fx_smul32(p[2], q[0]) - fx_smul32(p[0], q[2]);
+    c[2] = fx_smul32(p[0], q[1]) - fx_smul32(p[1], q[0]);
 }
 
-static fx128_t bvh_dot128(const int64_t d[3], const int64_t c[3])
+/* The high part of d . c: with c = h 2^32 + l (l in [0, 2^32)), the sum of
+ * d h. d . c = that 2^32 + the sum of d l, whose size is below
+ * 3 2^30 2^32 (|d| < 2^30). */
+static int64_t bvh_dot_high(const int32_t d[3], const int64_t c[3])
 {
-    fx128_t s = fx128_mul(d[0], c[0]);
-    s = fx128_add(s, fx128_mul(d[1], c[1]));
-    return fx128_add(s, fx128_mul(d[2], c[2]));
+    return fx_smul32(d[0], (int32_t)(c[0] >> 32)) + fx_smul32(d[1], (int32_t)(c[1] >> 32)) +
+           fx_smul32(d[2], (int32_t)(c[2] >> 32));
+}
+
+/* d . c exactly (|d| < 2^31, c any int64). */
+static fx128_t bvh_dot_wide(const int32_t d[3], const int64_t c[3])
+{
+    fx128_t s = fx128_shl(fx128_from64(bvh_dot_high(d, c)), 32);
+    for (int j = 0; j < 3; j++) {
+        uint64_t u = fx_umul32(fx_uabs32(d[j]), (uint32_t)c[j]); /* below 2^63 */
+        s = fx128_add(s, fx128_from64(d[j] < 0 ? -(int64_t)u : (int64_t)u));
+    }
+    return s;
+}
+
+/* The sign of d . c (|d| < 2^30): the high part alone decides unless it is
+ * within 3 2^30 of zero (bvh_dot_high), then the exact sum. */
+static int bvh_dot_sign(const int32_t d[3], const int64_t c[3])
+{
+    int64_t h = bvh_dot_high(d, c);
+    if (h > 3 * ((int64_t)1 << 30))
+        return 1;
+    if (h < -3 * ((int64_t)1 << 30))
+        return -1;
+    return bvh_sign128(bvh_dot_wide(d, c));
 }
 
 static void bvh_crossf(const num_t p[3], const num_t q[3], num_t c[3])
@@ -260,14 +308,37 @@ static void bvh_crossf(const num_t p[3], const num_t q[3], num_t c[3])
     c[2] = p[0] * q[1] - p[1] * q[0];
 }
 
+/* Vertex k's opposite edge runs from vertex bvh_next[k] to bvh_next[k + 1]. */
+static const uint8_t bvh_next[4] = {1, 2, 0, 1};
+
+/* Q16.16: triangle i's vertices relative to the origin, in units of 2^-f
+ * (|v 2^f| <= 2^23, |o| <= 2^30: below 2^31), and its vertex indices. */
+static void bvh_rel(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, int32_t p[3][3], uint32_t vi[3])
+{
+    bvh_tri(m, i, vi);
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 3; j++)
+            p[k][j] = (int32_t)m->v[vi[k]][j] * (1 << r->f) - r->o[j];
+}
+
+/* Q16.16: the cross product of edge k (the edge opposite vertex k), in
+ * the order of its vertex indices, and whether that order is reversed. */
+static bool bvh_edge_cross(int32_t p[3][3], const uint32_t vi[3], int k, int64_t x[3])
+{
+    int a = bvh_next[k], b = bvh_next[k + 1];
+    bool swap = vi[b] < vi[a];
+    bvh_cross32(p[swap ? b : a], p[swap ? a : b], x);
+    return swap;
+}
+
 /* Does the ray's line pass through triangle i (its edges, either winding,
- * a zero on an edge counting), in front of the origin? c: the values, with
- * det > 0. */
+ * a zero on an edge counting), in front of the origin? c: t's quotient,
+ * with det > 0. */
 static bool bvh_triangle(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, bvh_cand_t *c)
 {
     uint32_t vi[3];
-    bvh_tri(m, i, vi);
     if (!NUM_EXACT) {
+        bvh_tri(m, i, vi);
         num_t p[3][3], x[3][3];
         for (int k = 0; k < 3; k++)
             for (int j = 0; j < 3; j++)
@@ -294,43 +365,61 @@ static bool bvh_triangle(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, bv
             return false;
         return c->ftn / c->fdet > 0;
     }
-    int64_t p[3][3], x[3];
-    for (int k = 0; k < 3; k++)
-        for (int j = 0; j < 3; j++)
-            p[k][j] = ((int64_t)m->v[vi[k]][j] << r->f) - r->o[j];
+    int32_t p[3][3];
+    int64_t x[3];
+    bvh_rel(m, r, i, p, vi);
     int pos = 0, neg = 0;
     for (int k = 0; k < 3; k++) {
-        int a = bvh_next[k], b = bvh_next[k + 1];
-        bool swap = vi[b] < vi[a];
-        bvh_cross64(p[swap ? b : a], p[swap ? a : b], x);
-        fx128_t e = bvh_dot128(r->d, x);
-        c->e[k] = swap ? fx128_neg(e) : e;
-        int s = bvh_sign128(c->e[k]);
-        pos |= s > 0;
-        neg |= s < 0;
+        bool swap = bvh_edge_cross(p, vi, k, x);
+        int sg = bvh_dot_sign(r->d, x);
+        sg = swap ? -sg : sg;
+        pos |= sg > 0;
+        neg |= sg < 0;
         if (pos && neg)
             return false;
     }
-    /* the plane: n = (b - a) x (c - a) in mesh units (exact below 2^34);
+    /* the plane: n = (b - a) x (c - a) in mesh units (exact, below 2^34);
      * E(b, c) + E(c, a) + E(a, b) = d . n 2^2f exactly */
-    int64_t e1[3], e2[3], n[3];
+    int32_t e1[3], e2[3];
+    int64_t n[3];
     for (int j = 0; j < 3; j++) {
-        e1[j] = (int64_t)m->v[vi[1]][j] - m->v[vi[0]][j];
-        e2[j] = (int64_t)m->v[vi[2]][j] - m->v[vi[0]][j];
+        e1[j] = (int32_t)m->v[vi[1]][j] - m->v[vi[0]][j];
+        e2[j] = (int32_t)m->v[vi[2]][j] - m->v[vi[0]][j];
     }
-    bvh_cross64(e1, e2, n);
-    c->det = bvh_dot128(r->d, n);
+    bvh_cross32(e1, e2, n);
+    c->det = bvh_dot_wide(r->d, n);
     int sd = bvh_sign128(c->det);
     if (sd == 0)
         return false;
-    c->tn = bvh_dot128(p[0], n);
+    c->tn = bvh_dot_wide(p[0], n);
     if (sd < 0) {
         c->det = fx128_neg(c->det);
         c->tn = fx128_neg(c->tn);
-        for (int k = 0; k < 3; k++)
-            c->e[k] = fx128_neg(c->e[k]);
     }
     return bvh_sign128(c->tn) > 0;
+}
+
+/* Q16.16: the weights of the hit in triangle i, its exact edge values over
+ * their sum. */
+static void bvh_weights_q(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, num_t w[3])
+{
+    int32_t p[3][3];
+    int64_t x[3];
+    uint32_t vi[3];
+    fx128_t e[3];
+    bvh_rel(m, r, i, p, vi);
+    for (int k = 0; k < 3; k++) {
+        bool swap = bvh_edge_cross(p, vi, k, x);
+        e[k] = bvh_dot_wide(r->d, x);
+        if (swap)
+            e[k] = fx128_neg(e[k]);
+    }
+    fx128_t sum = fx128_add(fx128_add(e[0], e[1]), e[2]);
+    bool neg = bvh_sign128(sum) < 0;
+    if (neg)
+        sum = fx128_neg(sum);
+    for (int k = 0; k < 3; k++)
+        w[k] = bvh_ratio(neg ? fx128_neg(e[k]) : e[k], sum, 0);
 }
 
 /* Float, double: the weights of the hit point p = o + t d in triangle i,
@@ -382,11 +471,12 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
     uint32_t stack[BVH_MAX_DEPTH];
     int sp = 0;
     uint32_t ni = 0;
-    int64_t en0, ed0, en1, ed1;
+    int32_t en0 = 0, ed0 = 1, en1 = 0, ed1 = 1;
     num_t fe0 = NUM_ZERO, fe1 = NUM_ZERO;
     bool found = false;
-    bvh_cand_t best, c;
+    bvh_cand_t c;
     num_t best_t = NUM_MAX;
+    int64_t bn = 0, bd = 1; /* Q16.16: the nearest so far, t's quotient reduced to 62 bits */
     if (!bvh_box(&r, &m->node[0], &en0, &ed0, &fe0))
         return false;
     for (;;) {
@@ -396,11 +486,11 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
             for (uint32_t i = first; i < first + cnt; i++) {
                 if (i == skip || !bvh_triangle(m, &r, i, &c))
                     continue;
-                if (NUM_EXACT && r.ld != 0) {
-                    int64_t cn, cd;
+                int64_t cn = 0, cd = 1;
+                if (NUM_EXACT && found) {
                     bvh_reduce(c.tn, c.det, &cn, &cd);
-                    if (!bvh_lt128(fx128_mul(cn, r.ld), fx128_mul(r.ln, cd)))
-                        continue; /* not before the limit (the nearest so far, or tmax) */
+                    if (!bvh_lt128(fx128_mul(cn, bd), fx128_mul(bn, cd)))
+                        continue; /* not before the nearest so far (to 2^-60) */
                 }
                 num_t t = bvh_cand_t_world(&r, &c);
                 if (!NUM_EXACT && !(t < r.ft))
@@ -410,15 +500,17 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
                 if (!nearest)
                     return true;
                 found = true;
-                for (int k = 0; k < 3; k++) /* what the weights need */
-                    fx128_copy(&best.e[k], &c.e[k]);
-                fx128_copy(&best.det, &c.det);
                 best_t = t;
                 hit->tri = i;
-                if (NUM_EXACT)
-                    bvh_reduce(c.tn, c.det, &r.ln, &r.ld);
-                else
+                if (NUM_EXACT) {
+                    if (cd == 1 && cn == 0)
+                        bvh_reduce(c.tn, c.det, &cn, &cd);
+                    bn = cn;
+                    bd = cd;
+                    bvh_limit(&r, c.tn, c.det);
+                } else {
                     r.ft = t;
+                }
             }
         } else if (first + 1 < m->n_nodes) {
             bool h0 = bvh_box(&r, &m->node[first], &en0, &ed0, &fe0);
@@ -439,10 +531,10 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
             if (sp == 0) {
                 if (found) {
                     hit->t = best_t;
-                    if (!NUM_EXACT)
+                    if (NUM_EXACT)
+                        bvh_weights_q(m, &r, hit->tri, hit->w);
+                    else
                         bvh_weights_f(m, &r, hit->tri, best_t, hit->w);
-                    for (int k = 0; k < 3 && NUM_EXACT; k++)
-                        hit->w[k] = bvh_ratio(best.e[k], best.det, -2 * r.f);
                 }
                 return found;
             }
@@ -504,12 +596,12 @@ bool bvh_normal(const bvh_inst_t *in, const bvh_hit_t *hit, bool smooth, vec3_t 
     num_t fv[3];
     if (!smooth || !m->vn) {
         /* (b - a) x (c - a), exact in 64 bits */
-        int64_t e1[3], e2[3];
+        int32_t e1[3], e2[3];
         for (int j = 0; j < 3; j++) {
-            e1[j] = (int64_t)m->v[vi[1]][j] - m->v[vi[0]][j];
-            e2[j] = (int64_t)m->v[vi[2]][j] - m->v[vi[0]][j];
+            e1[j] = (int32_t)m->v[vi[1]][j] - m->v[vi[0]][j];
+            e2[j] = (int32_t)m->v[vi[2]][j] - m->v[vi[0]][j];
         }
-        bvh_cross64(e1, e2, v);
+        bvh_cross32(e1, e2, v);
         for (int j = 0; j < 3; j++)
             fv[j] = (num_t)v[j];
         return bvh_world_normal(in, v, fv, n);
