@@ -61,7 +61,7 @@ static num_t bvh_minv(const bvh_inst_t *in, int j, int k)
     return s;
 }
 
-static bool bvh_ray_make(const bvh_inst_t *in, const ray_t *ray, num_t tmax, bvh_ray_t *r)
+__attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const ray_t *ray, num_t tmax, bvh_ray_t *r)
 {
     const num_t o[3] = {ray->o.x, ray->o.y, ray->o.z}, d[3] = {ray->d.x, ray->d.y, ray->d.z},
                 t[3] = {in->t.x, in->t.y, in->t.z};
@@ -334,7 +334,7 @@ static bool bvh_edge_cross(int32_t p[3][3], const uint32_t vi[3], int k, int64_t
 /* Does the ray's line pass through triangle i (its edges, either winding,
  * a zero on an edge counting), in front of the origin? c: t's quotient,
  * with det > 0. */
-static bool bvh_triangle(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, bvh_cand_t *c)
+__attribute__((noinline)) static bool bvh_triangle(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, bvh_cand_t *c)
 {
     uint32_t vi[3];
     if (!NUM_EXACT) {
@@ -401,7 +401,7 @@ static bool bvh_triangle(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, bv
 
 /* Q16.16: the weights of the hit in triangle i, its exact edge values over
  * their sum. */
-static void bvh_weights_q(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, num_t w[3])
+__attribute__((noinline)) static void bvh_weights_q(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, num_t w[3])
 {
     int32_t p[3][3];
     int64_t x[3];
