@@ -94,6 +94,13 @@ profile: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) firmware/profile.sh '$(SCENE)' $(BOARD) $(NUMBER) $(or $(PROFILE_SIZE),80x60) '$(FW_EXTRA)'
 .PHONY: profile
 
+# Estimated cycles of one frame (firmware/cycles.sh; docs/BENCHMARKS.md, "Cycles"):
+#   make cycles SCENE=scenes/lit/room.scene BOARD=mps2-an385 NUMBER=q16 [CYCLES_SIZE=80x60]
+cycles: deps $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) firmware/cycles.sh '$(SCENE)' $(BOARD) $(NUMBER) $(or $(CYCLES_SIZE),80x60)
+.PHONY: cycles
+SUITES += tests/cycles.sh
+
 # A refactor's proof (tests/same-frames.sh, firmware/same-code.sh): every
 # host frame, and the firmware's code function by function, against the
 # revision BASE: make same-frames BASE=REV; make same-code BASE=REV

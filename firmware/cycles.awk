@@ -1,0 +1,146 @@
+# cycles.awk: estimated cycles of a QEMU run, from its log of translated
+# blocks and executions (qemu-system-arm -d in_asm,exec,nochain), each
+# instruction priced by its class with the cycle counts of the core's
+# technical reference manual (docs/BENCHMARKS.md, "Cycles"). Each price is
+# a range, low..high (a multiply's early termination, a branch's pipeline
+# refill of 1 to 3 cycles, a load that pipelines after another); the
+# estimate is the middle of the range.
+#   awk -v core=m0|m3|m4 -f firmware/cycles.awk q.log
+# Prints, one line per class and a total:
+#   class=NAME count=N low=L high=H
+#   total instructions=N low=L high=H estimate=E cpi=C
+# A conditional branch is taken when the next block executed does not
+# start right after it (the log holds every execution: nochain).
+
+function price(cls, kind) {
+    # kind 0: low, 1: high
+    return kind ? PH[cls] : PL[cls]
+}
+function set(cls, lo, hi) { PL[cls] = lo; PH[cls] = hi }
+function hex(h,   i, v, c) {
+    v = 0; h = tolower(h); sub(/^0x/, "", h)
+    for (i = 1; i <= length(h); i++) { c = index("0123456789abcdef", substr(h, i, 1)) - 1; v = v * 16 + c }
+    return v
+}
+function nregs(ops,   s, n, i, parts, a, b, ab, cnt) {
+    # registers in a list {r4, r5, lr} or {r4-r7}
+    s = ops; sub(/^[^{]*\{/, "", s); sub(/\}.*$/, "", s)
+    n = split(s, parts, /, */)
+    cnt = 0
+    for (i = 1; i <= n; i++) {
+        if (parts[i] ~ /-/) {
+            split(parts[i], ab, "-"); a = ab[1]; b = ab[2]
+            gsub(/[^0-9]/, "", a); gsub(/[^0-9]/, "", b)
+            cnt += (b - a + 1)
+        } else if (parts[i] != "") {
+            cnt++
+        }
+    }
+    return cnt
+}
+# The class of one instruction: its mnemonic (without condition and
+# width suffixes where they do not change the price) and operands.
+function classify(m, ops,   base) {
+    base = m
+    sub(/\.(w|n)$/, "", base)
+    if (base ~ /^v/) {
+        if (base ~ /^v(div|sqrt)/) return "fp_div"
+        if (base ~ /^v(n?ml[as]|fn?m[as])/) return "fp_mac"
+        if (base ~ /^v(ldm|stm|push|pop)/) return "fp_ldm"
+        if (base ~ /^v(ldr|str)/) return "fp_ldr"
+        return "fp"
+    }
+    if (base ~ /^(smull|umull)/) return "mull"
+    if (base ~ /^(smlal|umlal)/) return "mlal"
+    if (base ~ /^(sdiv|udiv)/) return "div"
+    if (base ~ /^(mla|mls)/) return "mla"
+    if (base ~ /^muls?$/ || base ~ /^mul(eq|ne|cs|cc|mi|pl|hs|lo|hi|ls|ge|lt|gt|le)$/) return "mul"
+    if (base ~ /^pop/ && ops ~ /pc/) { NREG = nregs(ops); return "pop_pc" }
+    if (base ~ /^(pop|ldm)/) { NREG = nregs(ops); return "ldm" }
+    if (base ~ /^(push|stm)/) { NREG = nregs(ops); return "stm" }
+    if (base ~ /^ldrd/ || base ~ /^strd/) return "ldrd"
+    if (base ~ /^ldr/ && ops ~ /^pc,/) return "ldr_pc"
+    if (base ~ /^ldr/) return "ldr"
+    if (base ~ /^str/) return "str"
+    if (base ~ /^(cbz|cbnz)$/) return "bcond"
+    if (base ~ /^bl$/ || base ~ /^blx$/) return "bl"
+    if (base ~ /^bx$/) return "bx"
+    if (base ~ /^b$/) return "b"
+    if (base ~ /^b(eq|ne|cs|cc|mi|pl|vs|vc|hi|ls|ge|lt|gt|le|hs|lo)$/) return "bcond"
+    if (base ~ /^it/) return "it"
+    if (base ~ /^tb[bh]$/) return "tb"
+    if (base ~ /^(mov|add)/ && ops ~ /^pc,/) return "bx"
+    return "alu"
+}
+BEGIN {
+    # Per core: low and high cycles per class. ldm/stm/pop_pc and fp_ldm
+    # add one per register (N) below.
+    set("alu", 1, 1); set("it", 0, 1)
+    set("ldr", 1, 2); set("str", 1, 2); set("ldrd", 3, 3); set("ldr_pc", 3, 5); set("tb", 3, 5)
+    set("ldm", 1, 1); set("stm", 1, 1)
+    set("b", 2, 4); set("bl", 2, 4); set("bx", 2, 4); set("pop_pc", 2, 4)
+    set("bcond_taken", 2, 4); set("bcond_not", 1, 1)
+    set("mul", 1, 1); set("mla", 2, 2); set("mull", 3, 5); set("mlal", 4, 7); set("div", 2, 12)
+    set("fp", 1, 1); set("fp_mac", 3, 3); set("fp_div", 14, 14); set("fp_ldr", 2, 2); set("fp_ldm", 1, 1)
+    if (core == "m0") {
+        # Cortex-M0: no pipelined loads; a taken branch 3, BL 4, a pop
+        # that loads pc 3 + N or 4 + N (N with pc or without: the manual's
+        # count is read both ways); the nRF51's single-cycle multiplier.
+        set("ldr", 2, 2); set("str", 2, 2); set("ldr_pc", 5, 5)
+        set("b", 3, 3); set("bl", 4, 4); set("bx", 3, 3); set("pop_pc", 3, 4)
+        set("bcond_taken", 3, 3); set("it", 1, 1)
+    } else if (core == "m4") {
+        # Cortex-M4: 64-bit products and accumulates in one cycle.
+        set("mull", 1, 1); set("mlal", 1, 1); set("mla", 1, 1)
+    } else if (core != "m3") {
+        print "cycles.awk: core must be m0, m3 or m4" > "/dev/stderr"; exit 2
+    }
+}
+/^IN:/ { inb = 1; start = ""; n = 0; next }
+inb && /^0x[0-9a-f]+:/ {
+    addr = substr($1, 1, length($1) - 1)
+    # the encoding: one or two groups of 4 hex digits
+    size = 2; f = 3
+    if ($3 ~ /^[0-9a-f][0-9a-f][0-9a-f][0-9a-f]$/) { size = 4; f = 4 }
+    m = $f; ops = ""
+    for (i = f + 1; i <= NF; i++) ops = ops (i > f + 1 ? " " : "") $i
+    NREG = 0
+    cls = classify(m, ops)
+    if (start == "") start = addr
+    n++
+    B_cls[start, n] = cls; B_nr[start, n] = NREG
+    B_n[start] = n
+    B_next[start] = sprintf("0x%08x", hex(addr) + size)
+    next
+}
+inb && /^$/ { inb = 0; next }
+/^Trace / {
+    s = $0; sub(/^[^[]*\[/, "", s); split(s, fld, "/"); pc = "0x" fld[2]
+    # the block before: its conditional branch taken or not
+    if (pend != "") {
+        if (pc == pend_next) { C["bcond_not"]++ } else { C["bcond_taken"]++ }
+        pend = ""
+    }
+    if (!(pc in B_n)) { unknown++; next }
+    nb = B_n[pc]
+    for (k = 1; k <= nb; k++) {
+        cls = B_cls[pc, k]
+        if (cls == "bcond" && k == nb) { pend = pc; pend_next = B_next[pc]; continue }
+        if (cls == "bcond") { C["bcond_not"]++; continue } # (not at a block's end: fell through)
+        C[cls]++
+        if (cls == "ldm" || cls == "stm" || cls == "pop_pc" || cls == "fp_ldm") REGS[cls] += B_nr[pc, k]
+    }
+    next
+}
+END {
+    if (pend != "") C["bcond_not"]++
+    tot = 0; lo = 0; hi = 0
+    for (cl in C) {
+        l = C[cl] * PL[cl] + REGS[cl]; h = C[cl] * PH[cl] + REGS[cl]
+        printf "class=%s count=%d low=%d high=%d\n", cl, C[cl], l, h
+        tot += C[cl]; lo += l; hi += h
+    }
+    est = (lo + hi) / 2
+    printf "total instructions=%d low=%d high=%d estimate=%d cpi=%.3f\n", tot, lo, hi, est, tot ? est / tot : 0
+    if (unknown) printf "cycles.awk: %d executions of blocks never translated in the log\n", unknown > "/dev/stderr"
+}

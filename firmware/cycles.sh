@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Estimated cycles of a firmware run in QEMU: every executed instruction
+# priced by its class with the cycle counts of its core's technical
+# reference manual (firmware/cycles.awk; docs/BENCHMARKS.md, "Cycles").
+#   firmware/cycles.sh ELF BOARD        one ELF (any program that exits)
+#   firmware/cycles.sh SCENE BOARD NUMBER [SIZE]
+#                                       a frame: make fw, then the ELF
+# (make cycles SCENE=... BOARD=... NUMBER=... [CYCLES_SIZE=80x60])
+# QEMU logs every translated block and every execution (-d
+# in_asm,exec,nochain) into a pipe that cycles.awk reads as it runs, so no
+# log is kept. The counts cover the whole run (boot, set-up, the frame,
+# its dump), like make profile's. Prints the classes and
+#   total instructions=N low=L high=H estimate=E cpi=C
+set -euo pipefail
+BUILD=${BUILD:-build}
+case $2 in
+microbit) core=m0 ;;
+mps2-an386) core=m4 ;;
+mps2-an385 | lm3s6965evb) core=m3 ;;
+*) echo "cycles: unknown board '$2'" >&2; exit 2 ;;
+esac
+if [[ $1 == *.elf ]]; then
+    elf=$1 board=$2
+else
+    scene=$1 board=$2 number=$3 size=${4:-80x60}
+    fb=full
+    [[ $board == microbit ]] && fb=stream
+    make -s --no-print-directory BUILD="$BUILD" fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$size" FB="$fb" >&2
+    name=$(basename "$scene" .scene)
+    elf=$BUILD/fw/$board/${name// /_}-$number-$size-$fb/fxrt.elf
+fi
+[[ -f $elf ]] || { echo "cycles: no $elf" >&2; exit 1; }
+elf=$(realpath "$elf")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mkfifo "$tmp/log"
+awk -v core=$core -f "$(dirname "$0")/cycles.awk" "$tmp/log" >"$tmp/out" &
+awkpid=$!
+(cd "$tmp" && timeout 1200 qemu-system-arm -M "$board" -nographic -monitor none -serial none \
+    -semihosting-config enable=on,target=native -icount shift=5 -d in_asm,exec,nochain -D "$tmp/log" \
+    -kernel "$elf" </dev/null >"$tmp/run.out" 2>&1) || { cat "$tmp/run.out" >&2; exit 1; }
+wait $awkpid
+sort "$tmp/out"

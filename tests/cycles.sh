@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# firmware/cycles.awk, the estimated-cycles pricing (docs/BENCHMARKS.md,
+# "Cycles"):
+#   - a hand-written log of three blocks (every class the renderer's hot
+#     loops use: a move, a 64-bit product, a push, a conditional branch
+#     taken twice and not once, a load, a pop into pc, a division, bx)
+#     priced on the M0, M3 and M4 against totals worked out by hand from
+#     the pricing table;
+#   - a real run (firmware/meshq.c with the cube, on the M3 and the M0):
+#     the trace's instructions at least the loops' -icount count, low <=
+#     estimate <= high, and a CPI between 1 and 3.
+set -u
+cd "$(dirname "$0")/.."
+. tests/lib.sh
+. tests/onboard_lib.sh
+M="make --no-print-directory -s BUILD=$BUILD"
+tmp=$BUILD/tests/cycles
+mkdir -p "$tmp"
+cat >"$tmp/q.log" <<'LOG'
+----------------
+IN: a
+0x00000100:  2001       movs     r0, #1
+0x00000102:  fba0 2301  umull    r2, r3, r0, r1
+0x00000106:  b510       push     {r4, lr}
+0x00000108:  d001       beq      #0x10e
+
+Trace 0: 0x1 [00800400/00000100/00000110/ff020200] a
+----------------
+IN: b
+0x0000010a:  6801       ldr      r1, [r0]
+0x0000010c:  bd10       pop      {r4, pc}
+
+Trace 0: 0x2 [00800400/0000010a/00000110/ff020200] b
+Trace 0: 0x1 [00800400/00000100/00000110/ff020200] a
+----------------
+IN: c
+0x0000010e:  fb90 f0f1  sdiv     r0, r0, r1
+0x00000112:  4770       bx       lr
+
+Trace 0: 0x3 [00800400/0000010e/00000110/ff020200] c
+Trace 0: 0x1 [00800400/00000100/00000110/ff020200] a
+Trace 0: 0x3 [00800400/0000010e/00000110/ff020200] c
+LOG
+# By hand: a x3 (movs, umull, push of 2, beq: not taken once, taken twice),
+# b x1 (ldr, pop of r4 and pc), c x2 (sdiv, bx); 18 instructions.
+#   M3: 3 + 3x(3..5) + 3x(1+2) + 1 + 2x(2..4) + (1..2) + (2..4)+2 + 2x(2..12) + 2x(2..4) = 39..76
+#   M4: as M3 with umull 1:                                                              = 33..64
+#   M0: 3 + 3x(3..5) + 9 + 1 + 2x3 + 2 + (3..4)+2 + 2x(2..12) + 2x3                    = 45..72
+for spec in m3:39:76:57 m4:33:64:48 m0:45:72:58; do
+    IFS=: read -r core lo hi est <<<"$spec"
+    got=$(awk -v core=$core -f firmware/cycles.awk "$tmp/q.log" | grep '^total')
+    check "$core: $got" test "$got" = "total instructions=18 low=$lo high=$hi estimate=$est cpi=$(awk -v e="$lo" -v h="$hi" 'BEGIN { printf "%.3f", (e + h) / 2 / 18 }')"
+done
+got=$(awk -v core=m3 -f firmware/cycles.awk "$tmp/q.log" | grep -c '^class=')
+check "m3: nine classes ($got)" test "$got" = 9
+
+for b in mps2-an385 microbit; do
+    progress "cycles.sh: a real run on $b"
+    if ! $M "$BUILD/meshq/c-cube/$b.elf" MESHQ_OBJ=scenes/models/cube.obj MESHQ_RAYS=40 MESHQ_FLAT=--flat >"$tmp/$b-build.log" 2>&1; then
+        bad "$b: build: $(tail -n 3 "$tmp/$b-build.log")"
+        continue
+    fi
+    run=$(timeout 300 qemu-system-arm -M "$b" -nographic -monitor none -serial none -semihosting-config enable=on,target=native \
+        -icount shift=5 -kernel "$BUILD/meshq/c-cube/$b.elf" </dev/null 2>&1)
+    tick=$(tick_ns2 $b)
+    loops=$(sed -nE 's/^meshq_ticks check=([0-9]+) nearest=([0-9]+) any=([0-9]+) empty=([0-9]+).*/\1 \2 \3 \4/p' <<<"$run" |
+        awk -v k="$tick" '{ printf "%d", ($1 + $2 + $3 + $4) * k / 64 }')
+    tot=$(firmware/cycles.sh "$BUILD/meshq/c-cube/$b.elf" $b | grep '^total')
+    read -r n lo hi est cpi < <(sed -E 's/total instructions=([0-9]+) low=([0-9]+) high=([0-9]+) estimate=([0-9]+) cpi=([0-9.]+)/\1 \2 \3 \4 \5/' <<<"$tot")
+    check "$b: the trace's $n instructions >= the loops' ${loops:-?}" test "$n" -ge "${loops:-999999999999}"
+    check "$b: low $lo <= estimate $est <= high $hi" test "$lo" -le "$est" -a "$est" -le "$hi"
+    check "$b: CPI $cpi in [1, 3]" awk -v c="$cpi" 'BEGIN { exit !(c >= 1 && c <= 3) }'
+done
+report cycles.sh
