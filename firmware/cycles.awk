@@ -11,6 +11,11 @@
 #   total instructions=N low=L high=H estimate=E cpi=C
 # A conditional branch is taken when the next block executed does not
 # start right after it (the log holds every execution: nochain).
+# With -v marks="ADDR ...", the addresses of marker functions (0x...), the
+# counts are split into segments at each execution of a marker's first
+# block: segment k runs from the k-th marker execution to the next, and
+# each prints as
+#   segment=K instructions=N low=L high=H estimate=E
 
 function price(cls, kind) {
     # kind 0: low, 1: high
@@ -95,6 +100,21 @@ BEGIN {
     } else if (core != "m3") {
         print "cycles.awk: core must be m0, m3 or m4" > "/dev/stderr"; exit 2
     }
+    nm = split(marks, mk, " ")
+    for (i = 1; i <= nm; i++) MARK[sprintf("0x%08x", hex(mk[i]))] = 1
+}
+function seg_close(   l, h, t, cl) {
+    if (seg == 0) return
+    l = 0; h = 0; t = 0
+    for (cl in C) { l += C[cl] * PL[cl] + REGS[cl]; h += C[cl] * PH[cl] + REGS[cl]; t += C[cl] }
+    l -= S_lo; h -= S_hi; t -= S_n
+    printf "segment=%d instructions=%d low=%d high=%d estimate=%d\n", seg, t, l, h, (l + h) / 2
+}
+function seg_open(   l, h, t, cl) {
+    l = 0; h = 0; t = 0
+    for (cl in C) { l += C[cl] * PL[cl] + REGS[cl]; h += C[cl] * PH[cl] + REGS[cl]; t += C[cl] }
+    S_lo = l; S_hi = h; S_n = t
+    seg++
 }
 /^IN:/ { inb = 1; start = ""; n = 0; next }
 inb && /^0x[0-9a-f]+:/ {
@@ -121,6 +141,7 @@ inb && /^$/ { inb = 0; next }
         if (pc == pend_next) { C["bcond_not"]++ } else { C["bcond_taken"]++ }
         pend = ""
     }
+    if (pc in MARK) { seg_close(); seg_open() }
     if (!(pc in B_n)) { unknown++; next }
     nb = B_n[pc]
     for (k = 1; k <= nb; k++) {
@@ -134,6 +155,7 @@ inb && /^$/ { inb = 0; next }
 }
 END {
     if (pend != "") C["bcond_not"]++
+    seg_close()
     tot = 0; lo = 0; hi = 0
     for (cl in C) {
         l = C[cl] * PL[cl] + REGS[cl]; h = C[cl] * PH[cl] + REGS[cl]

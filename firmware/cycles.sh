@@ -11,6 +11,8 @@
 # log is kept. The counts cover the whole run (boot, set-up, the frame,
 # its dump), like make profile's. Prints the classes and
 #   total instructions=N low=L high=H estimate=E cpi=C
+# CYCLES_MARKS="ADDR ..." (marker functions' addresses) adds cycles.awk's
+# segments.
 set -euo pipefail
 BUILD=${BUILD:-build}
 case $2 in
@@ -34,7 +36,7 @@ elf=$(realpath "$elf")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkfifo "$tmp/log"
-awk -v core=$core -f "$(dirname "$0")/cycles.awk" "$tmp/log" >"$tmp/out" &
+awk -v core=$core -v marks="${CYCLES_MARKS:-}" -f "$(dirname "$0")/cycles.awk" "$tmp/log" >"$tmp/out" &
 awkpid=$!
 (cd "$tmp" && timeout 1200 qemu-system-arm -M "$board" -nographic -monitor none -serial none \
     -semihosting-config enable=on,target=native -icount shift=5 -d in_asm,exec,nochain -D "$tmp/log" \

@@ -34,8 +34,10 @@ md=$out/bench.md
     echo "a third of the any-hit rays end at a tmax). Instructions per query from QEMU -icount, the loop's own cost"
     echo "subtracted; results byte-identical to the host's on every board (else the row says so)."
     echo
+    echo "Cycles: the same loops priced by firmware/cycles.sh (the middle of its low..high range, docs/BENCHMARKS.md, \"Cycles\")."
+    echo
     printf "| model | triangles | vertices | nodes | depth | bytes | bytes/triangle | normals |"
-    for spec in $boards; do printf " %s nearest | %s any |" "${spec%%:*}" "${spec%%:*}"; done
+    for spec in $boards; do printf " %s nearest: instructions, cycles | %s any: instructions, cycles |" "${spec%%:*}" "${spec%%:*}"; done
     printf " stack M3 / M0 | RAM |\n|---|---:|---:|---:|---:|---:|---:|---|"
     for spec in $boards; do printf -- "---:|---:|"; done
     printf -- "---:|---:|\n"
@@ -60,7 +62,7 @@ for spec in $specs; do
         board=${b%%:*} tick=${b#*:}
         if ! $M "$out/$name/$board.elf" "${args[@]}" >"$out/$name-$board.log" 2>&1; then
             if grep -q "region .FLASH' overflowed" "$out/$name-$board.log"; then
-                row+=" does not fit the flash | |" # (the linker's verdict: the data alone is $(get bytes "$sum") bytes)
+                row+=" does not fit the flash | |" # (the linker's verdict)
             else
                 row+=" build failed | |"
                 fail=1
@@ -76,8 +78,13 @@ for spec in $specs; do
         fi
         t=${got#*$'\n'}
         nearest=$(get nearest "$t") any=$(get any "$t") empty=$(get empty "$t")
-        row+=$(awk -v n="$nearest" -v a="$any" -v e="$empty" -v k="$tick" -v r="$RAYS" \
-            'BEGIN { printf " %.0f | %.0f |", (n - e) * k / 32 / r, (a - e) * k / 32 / r }')
+        # cycles: the segments between meshq_mark's executions (the nearest loop, then the any loop)
+        elf=$out/$name/$board.elf
+        marks=$(arm-none-eabi-nm "$elf" | awk '$3 == "meshq_mark" { print "0x" $1 }')
+        segs=$(CYCLES_MARKS="$marks" firmware/cycles.sh "$elf" "$board" | grep '^segment=' || true)
+        c1=$(sed -nE 's/^segment=1 .* estimate=([0-9]+)$/\1/p' <<<"$segs") c2=$(sed -nE 's/^segment=2 .* estimate=([0-9]+)$/\1/p' <<<"$segs")
+        row+=$(awk -v n="$nearest" -v a="$any" -v e="$empty" -v k="$tick" -v r="$RAYS" -v c1="${c1:-0}" -v c2="${c2:-0}" \
+            'BEGIN { printf " %.0f, %.0f | %.0f, %.0f |", (n - e) * k / 32 / r, c1 / r, (a - e) * k / 32 / r, c2 / r }')
         case $board in mps2-an385) stacks=$(get stack "$t") ;; microbit) stacks+=" / $(get stack "$t")" ;; esac
         ram=$(get ram "$t")
     done

@@ -1110,7 +1110,14 @@ static int scene_parse_mesh(scene_parser_t *p)
         path[(size_t)dir + t.n] = '\0';
     }
     if (obj_load(path, &m, err, sizeof err) != 0) {
-        errf_set(p->err, p->errlen, "%s (the mesh on %s:%d)", err, p->name, p->line);
+        /* The scene's line always fits: a long OBJ message (a long path)
+         * is cut short, with "...", to leave it room. */
+        char where[600];
+        int nw = snprintf(where, sizeof where, " (the mesh on %s:%d)", p->name, p->line);
+        size_t room = p->errlen > (size_t)nw + 4 ? p->errlen - (size_t)nw - 1 : 0;
+        if (strlen(err) > room && room >= 3)
+            memcpy(err + room - 3, "...", 4);
+        errf_set(p->err, p->errlen, "%s%s", room >= 3 ? err : "", where);
         return -1;
     }
     for (i = 0; i < m.ntri; i++) {

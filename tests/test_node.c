@@ -495,9 +495,30 @@ static void test_meshes(const char *dir)
     rmdir(sub);
 }
 
+/* A mesh whose path is long enough to fill the message: the OBJ's message
+ * is cut short, and the scene's line still ends it (the scene fuzzer found
+ * the line cut off), at every message size from 64 bytes up. */
+static void test_long_mesh_path(void)
+{
+    static char text[2200], err[2048];
+    int n = snprintf(text, sizeof text, "camera perspective eye 0 0 5 gaze 0 0 -1 up 0 1 0 fov 45\nmesh file ");
+    for (int i = 0; i < 950; i++) /* (a line holds at most 1,024 bytes) */
+        text[n++] = (char)('a' + i % 26);
+    snprintf(text + n, sizeof text - (size_t)n, ".obj color 1 0 0\n");
+    int bad = 0;
+    for (size_t len = 64; len <= sizeof err; len += 61) {
+        int rc = scene_parse("t", text, strlen(text), &g_scene, err, len);
+        size_t l = strlen(err);
+        const char *tail = " (the mesh on t:2)";
+        bad += rc == 0 || l < strlen(tail) || strcmp(err + l - strlen(tail), tail) != 0 || l >= len;
+    }
+    CHECK_MSG(bad == 0, "%d message sizes lost the scene's line", bad);
+}
+
 int main(void)
 {
     char dir[] = "/tmp/fxrt-test-node-XXXXXX";
+    test_long_mesh_path();
     test_order();
     test_triangles_and_planes();
     test_spheres();
