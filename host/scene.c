@@ -1110,14 +1110,10 @@ static int scene_parse_mesh(scene_parser_t *p)
         path[(size_t)dir + t.n] = '\0';
     }
     if (obj_load(path, &m, err, sizeof err) != 0) {
-        /* The scene's line always fits: a long OBJ message (a long path)
-         * is cut short, with "...", to leave it room. */
-        char where[600];
-        int nw = snprintf(where, sizeof where, " (the mesh on %s:%d)", p->name, p->line);
-        size_t room = p->errlen > (size_t)nw + 4 ? p->errlen - (size_t)nw - 1 : 0;
-        if (strlen(err) > room && room >= 3)
-            memcpy(err + room - 3, "...", 4);
-        errf_set(p->err, p->errlen, "%s%s", room >= 3 ? err : "", where);
+        /* The scene's FILE:LINE first, then the OBJ's own: a message cut
+         * short by a small buffer keeps the scene's line (a long path once
+         * pushed it out of a message written the other way round). */
+        scene_fail(p, "%s", err);
         return -1;
     }
     for (i = 0; i < m.ntri; i++) {

@@ -76,7 +76,7 @@ static int mesh_main(int argc, char **argv)
             out = argv[++i];
         } else if (!strcmp(a, "--name")) {
             name = argv[++i];
-            bool ok = (name[0] == '_' || (name[0] | 32) >= 'a') && (name[0] | 32) <= 'z';
+            bool ok = name[0] == '_' || ((name[0] | 32) >= 'a' && (name[0] | 32) <= 'z');
             for (const char *c = name; *c && ok; c++)
                 ok = *c == '_' || (*c >= '0' && *c <= '9') || ((*c | 32) >= 'a' && (*c | 32) <= 'z');
             if (!ok)

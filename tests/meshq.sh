@@ -40,6 +40,8 @@ refuse "an index out of range" "^$tmp/bad.obj:4: " --mesh "$tmp/bad.obj"
 refuse "--max-bytes" "^scenes/models/ico320.obj: the mesh needs [0-9]+ bytes of constant data, at most 1000 fit" \
     --mesh scenes/models/ico320.obj --max-bytes 1000
 refuse "a bad --name" "bad --name" --mesh scenes/models/ico20.obj --name 9lives
+out=$("$SCENEC" --mesh scenes/models/ico20.obj --name _ico_20 --out "$tmp/u.c" 2>&1)
+check "--name _ico_20 (a leading underscore): $out" grep -q '^const fxrt_mesh_t _ico_20 = ' "$tmp/u.c"
 # 257 x 256 vertices in strips: more than 16-bit indices hold
 awk 'BEGIN { for (j = 0; j < 256; j++) for (i = 0; i < 257; i++) printf "v %d %d %d\n", i, j, (i * j) % 7
              for (j = 0; j < 255; j++) for (i = 0; i < 256; i++) { a = j * 257 + i + 1; printf "f %d %d %d\n", a, a + 1, a + 258 } }' >"$tmp/big.obj"

@@ -94,9 +94,8 @@ if [ "${1:-}" = --one ]; then
                 2>>"$dir/err.txt" || why="exit $? with --number $n: $(tail -n 1 "$dir/err.txt")"
         done
     elif [ $rc -eq 2 ]; then
-        # A mesh's OBJ error names the OBJ's FILE:LINE first, then the scene's.
+        # (A mesh's OBJ error too: the OBJ's own FILE:LINE follows the scene's.)
         { [ "$rest" != "$msg" ] && [[ $rest =~ ^[0-9]+:\ .+ ]]; } ||
-            [[ $msg == *" (the mesh on $f:"* && $msg =~ :[0-9]+\)$ ]] ||
             why="message is not '$f:LINE: ...': $msg"
         [ "$(wc -l <"$dir/err.txt")" -eq 1 ] || why="more than one line on stderr"
         [ -e "$dir/out/out.png" ] && why="rejected but $dir/out/out.png exists"

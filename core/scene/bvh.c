@@ -36,11 +36,14 @@ typedef struct {
     num_t ft;     /* the limit, NUM_MAX for none */
 } bvh_ray_t;
 
-/* v 2^s, s of either sign (right shifts round half up). */
+/* v 2^s, s of either sign (right shifts round half up; |v| < 2^62, and
+ * for s >= 0 the caller has shown that the product fits). */
 static int64_t bvh_shift(int64_t v, int s)
 {
     if (s >= 0)
         return (int64_t)((uint64_t)v << s);
+    if (s <= -63)
+        return 0;
     return (v + ((int64_t)1 << (-s - 1))) >> -s;
 }
 
@@ -96,8 +99,8 @@ __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const r
         bool fits = true;
         for (int j = 0; j < 3; j++) {
             int64_t v = bvh_shift(po[j], f - 16 - in->e);
-            fits = fits && v <= BVH_O_MAX && v >= -BVH_O_MAX && bvh_bits64(po[j]) + f - 16 - in->e <= 62;
-            r->o[j] = v;
+            fits = fits && v <= BVH_O_MAX && v >= -BVH_O_MAX;
+            r->o[j] = (int32_t)v;
         }
         if (fits)
             break;
