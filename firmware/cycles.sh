@@ -40,6 +40,10 @@ awk -v core=$core -v marks="${CYCLES_MARKS:-}" -f "$(dirname "$0")/cycles.awk" "
 awkpid=$!
 (cd "$tmp" && timeout 1200 qemu-system-arm -M "$board" -nographic -monitor none -serial none \
     -semihosting-config enable=on,target=native -icount shift=5 -d in_asm,exec,nochain -D "$tmp/log" \
-    -kernel "$elf" </dev/null >"$tmp/run.out" 2>&1) || { cat "$tmp/run.out" >&2; exit 1; }
+    -kernel "$elf" </dev/null >"$tmp/run.out" 2>&1) || {
+    cat "$tmp/run.out" >&2
+    kill $awkpid 2>/dev/null # (it may still wait for the pipe to open)
+    exit 1
+}
 wait $awkpid
 sort "$tmp/out"

@@ -47,6 +47,7 @@ for spec in $specs; do
     name=${spec%%:*} obj=${spec#*:}
     args=(MESHQ_OBJ="$obj" MESHQ_RAYS="$RAYS" MESHQ_FLAT=)
     echo "bench-mesh: $name" >&2
+    rm -f "$out/$name/meshq_data.h" # (its rule does not know MESHQ_RAYS: made anew each run)
     if ! $M "$out/$name/host" "${args[@]}" >"$out/$name.log" 2>&1; then
         echo "bench-mesh: $name: host build failed" >&2
         tail -n 5 "$out/$name.log" >&2
@@ -54,6 +55,11 @@ for spec in $specs; do
         continue
     fi
     want=$("$out/$name/host")
+    if [[ $want != "meshq rays=$RAYS "* ]]; then
+        echo "bench-mesh: $name: the host ran other rays: $want" >&2
+        fail=1
+        continue
+    fi
     sum=$(cat "$out/$name/gen.txt")
     get() { sed -nE "s/.* $1=([^ ]+).*/\1/p" <<<"$2"; }
     row="| $name | $(get triangles "$sum") | $(get vertices "$sum") | $(get nodes "$sum") | $(get depth "$sum") | $(get bytes "$sum") | $(get bytes_per_triangle "$sum") | $(get normals "$sum" | tr '_' ' ') |"
@@ -83,6 +89,10 @@ for spec in $specs; do
         marks=$(arm-none-eabi-nm "$elf" | awk '$3 == "meshq_mark" { print "0x" $1 }')
         segs=$(CYCLES_MARKS="$marks" firmware/cycles.sh "$elf" "$board" | grep '^segment=' || true)
         c1=$(sed -nE 's/^segment=1 .* estimate=([0-9]+)$/\1/p' <<<"$segs") c2=$(sed -nE 's/^segment=2 .* estimate=([0-9]+)$/\1/p' <<<"$segs")
+        if [[ -z $c1 || -z $c2 ]]; then
+            echo "bench-mesh: $name $board: firmware/cycles.sh gave no segments" >&2
+            fail=1
+        fi
         row+=$(awk -v n="$nearest" -v a="$any" -v e="$empty" -v k="$tick" -v r="$RAYS" -v c1="${c1:-0}" -v c2="${c2:-0}" \
             'BEGIN { printf " %.0f, %.0f | %.0f, %.0f |", (n - e) * k / 32 / r, c1 / r, (a - e) * k / 32 / r, c2 / r }')
         case $board in mps2-an385) stacks=$(get stack "$t") ;; microbit) stacks+=" / $(get stack "$t")" ;; esac

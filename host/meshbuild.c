@@ -210,7 +210,10 @@ int meshbuild(const obj_t *o, bool smooth, meshbuild_t *mb, char *err, size_t er
     memset(mb, 0, sizeof *mb);
     /* the box of the vertices that triangles use */
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t i = 0; i < o->ntri; i++)
+    for (size_t i = 0; i < o->ntri; i++) {
+        obj_vec_t f = obj_face_normal(o, i);
+        if (f.x == 0 && f.y == 0 && f.z == 0)
+            continue; /* (dropped below: it must not widen the steps) */
         for (int k = 0; k < 3; k++) {
             const obj_vec_t *p = &o->v[o->tri[i].v[k]];
             double x[3] = {p->x, p->y, p->z};
@@ -219,6 +222,7 @@ int meshbuild(const obj_t *o, bool smooth, meshbuild_t *mb, char *err, size_t er
                 hi[j] = fmax(hi[j], x[j]);
             }
         }
+    }
     double ext = 0;
     for (int j = 0; j < 3; j++) {
         mb->origin[j] = 0.5 * (lo[j] + hi[j]);
@@ -332,6 +336,30 @@ int meshbuild(const obj_t *o, bool smooth, meshbuild_t *mb, char *err, size_t er
         errf_set(err, errlen, "the mesh has no triangle of nonzero area");
         goto fail;
     }
+    /* Only the vertices the kept triangles use (a dropped triangle's may
+     * have a zero normal, which bvh_check refuses, and cost bytes). */
+    {
+        uint32_t *map = corner_v; /* (reused: 3 ntri >= nv entries) */
+        for (uint32_t k = 0; k < nv; k++)
+            map[k] = UINT32_MAX;
+        for (uint32_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++)
+                map[t[i].tri[k]] = 0; /* used */
+        uint32_t used = 0;
+        for (uint32_t k = 0; k < nv; k++) { /* in order: a vertex only moves down */
+            if (map[k] == UINT32_MAX)
+                continue;
+            map[k] = used;
+            memmove(mb->v[used], mb->v[k], sizeof mb->v[0]);
+            if (smooth)
+                memmove(mb->vn[used], mb->vn[k], sizeof mb->vn[0]);
+            used++;
+        }
+        for (uint32_t i = 0; i < nt; i++)
+            for (int k = 0; k < 3; k++)
+                t[i].tri[k] = map[t[i].tri[k]];
+        nv = used;
+    }
     mb_ctx_t c = {mb, t, 1, 2 * nt, 0};
     mb->node = calloc(2 * nt, sizeof *mb->node);
     mb->src = malloc(nt * sizeof *mb->src);
@@ -424,9 +452,10 @@ int meshbuild_instance(const meshbuild_t *mb, double a[3][3], const double b[3],
         for (int j = 0; j < 3; j++)
             big = fmax(big, fabs(inv[i][j]));
     int e = 0;
-    while (e < 62 && big * ldexp(1, e + 1) < (double)(1 << 30))
+    /* (one below 2^30: m is rounded to an integer after) */
+    while (e < 62 && big * ldexp(1, e + 1) < (double)(1 << 30) - 1)
         e++;
-    if (!(big * ldexp(1, e) < (double)(1 << 30))) {
+    if (!(big * ldexp(1, e) < (double)(1 << 30) - 1)) {
         errf_set(err, errlen, "the mesh's steps are too fine for its transform (%g per world unit, at most 2^30)", big);
         return -1;
     }

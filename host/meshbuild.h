@@ -21,7 +21,8 @@ typedef struct {
     bvh_node_t *node;
     double origin[3]; /* a model point x is origin + step q */
     double step;
-    size_t dropped;   /* triangles of zero area (in the file, or once quantised) left out */
+    size_t dropped;   /* triangles left out: zero area (in the file, or once quantised), or
+                       * (smooth) a zero normal at a corner; their vertices are left out too */
     bool face_normals; /* smooth asked, but every corner's normal was its face's (within a
                         * stored step): built flat, which shades the same */
     int depth;        /* the tree's depth (the root 0) */

@@ -79,8 +79,16 @@ static int mesh_main(int argc, char **argv)
             bool ok = name[0] == '_' || ((name[0] | 32) >= 'a' && (name[0] | 32) <= 'z');
             for (const char *c = name; *c && ok; c++)
                 ok = *c == '_' || (*c >= '0' && *c <= '9') || ((*c | 32) >= 'a' && (*c | 32) <= 'z');
+            static const char *const keywords[] = {
+                "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum",
+                "extern", "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return",
+                "short", "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void",
+                "volatile", "while", "_Bool", "_Complex", "_Imaginary", "_Alignas", "_Alignof", "_Atomic",
+                "_Generic", "_Noreturn", "_Static_assert", "_Thread_local"};
+            for (size_t k = 0; ok && k < sizeof keywords / sizeof keywords[0]; k++)
+                ok = strcmp(name, keywords[k]) != 0;
             if (!ok)
-                return fail("bad --name (a C identifier) ", name);
+                return fail("bad --name (a C identifier, not a keyword) ", name);
         } else if (!strcmp(a, "--max-bytes")) {
             char *end;
             max_bytes = strtoll(argv[++i], &end, 10);
@@ -128,6 +136,8 @@ static int mesh_main(int argc, char **argv)
         return 2;
     }
     char tmp[1100];
+    if (strlen(out) > 1000)
+        return fail("--out path too long (at most 1,000 characters): ", out);
     snprintf(tmp, sizeof tmp, "%s.tmp.%ld", out, (long)getpid());
     FILE *f = fopen(tmp, "w");
     int rc = !f || meshemit_c(f, &mb, name, obj) != 0;

@@ -40,6 +40,13 @@ refuse "an index out of range" "^$tmp/bad.obj:4: " --mesh "$tmp/bad.obj"
 refuse "--max-bytes" "^scenes/models/ico320.obj: the mesh needs [0-9]+ bytes of constant data, at most 1000 fit" \
     --mesh scenes/models/ico320.obj --max-bytes 1000
 refuse "a bad --name" "bad --name" --mesh scenes/models/ico20.obj --name 9lives
+refuse "a keyword as --name" "bad --name" --mesh scenes/models/ico20.obj --name int
+# A degenerate triangle of vertices nobody else uses: left out with them (a
+# smooth mesh kept a zero normal for them, which bvh_check refuses)
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 5 5 5\nv 6 6 6\nv 7 7 7\nf 1 2 3\nf 1 4 2\nf 5 6 7\n' >"$tmp/lone.obj"
+out=$("$SCENEC" --mesh "$tmp/lone.obj" --out "$tmp/lone.c" 2>&1)
+check "a dropped triangle's vertices left out: $out" grep -q 'triangles=2 vertices=4 .*dropped=1 normals=smooth' <<<"$out"
+check "no zero normal written" bash -c "! grep -q '{0, 0, 0}' '$tmp/lone.c'"
 out=$("$SCENEC" --mesh scenes/models/ico20.obj --name _ico_20 --out "$tmp/u.c" 2>&1)
 check "--name _ico_20 (a leading underscore): $out" grep -q '^const fxrt_mesh_t _ico_20 = ' "$tmp/u.c"
 # 257 x 256 vertices in strips: more than 16-bit indices hold

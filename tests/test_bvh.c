@@ -736,6 +736,23 @@ static void cap_test(void)
         if (hit)
             CHECK_MSG(fabs(nd(h.t) - (7900 - sc)) < 1e-2, "t %.5f", nd(h.t));
     }
+    /* An origin and a placement at opposite ends of the range, a map at
+     * its largest: in Q16.16 no hit, and (sanitized) no overflow in any
+     * build; a tmax of 0 or below: no hit. */
+    bvh_inst_t big = {&mb.mesh, {{(1 << 30) - 1, (1 << 30) - 1, (1 << 30) - 1}, {1, 0, 0}, {0, 1, 0}}, 53,
+                      vec3_make(num_from_int(-8192), num_from_int(-8192), num_from_int(-8192))};
+    CHECK(bvh_check(&big));
+    ray_t far = {vec3_make(num_from_q16(INT32_MAX), num_from_q16(INT32_MAX), num_from_q16(INT32_MAX)),
+                 vec3_make(NUM_ZERO, NUM_ZERO, num_from_int(-1))};
+    bvh_hit_t h;
+    bool any_far = bvh_any(&big, &far, NUM_MAX, BVH_NONE); /* (float and double: no range, any answer) */
+    CHECK(!NUM_EXACT || (!bvh_nearest(&big, &far, NUM_MAX, BVH_NONE, &h) && !any_far));
+    bvh_inst_t in;
+    double id[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, zero[3] = {0, 0, 0};
+    CHECK(meshbuild_instance(&mb, id, zero, &in, err, sizeof err) == 0);
+    ray_t r = {vec3_make(NUM_ZERO, NUM_ZERO, num_from_int(5)), vec3_make(NUM_ZERO, NUM_ZERO, num_from_int(-1))};
+    CHECK(bvh_nearest(&in, &r, NUM_MAX, BVH_NONE, &h) && !bvh_nearest(&in, &r, NUM_ZERO, BVH_NONE, &h) &&
+          !bvh_any(&in, &r, num_neg(NUM_ONE), BVH_NONE));
     meshbuild_free(&mb);
 }
 

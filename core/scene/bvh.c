@@ -4,7 +4,7 @@
  *
  * Q16.16 works in integers, exactly (NUM_EXACT): the ray's origin in mesh
  * units of 2^-f (f = 8 .. 0, as many as keep |o| <= 2^30), its direction
- * scaled to a largest component in [2^29, 2^30), a vertex shifted by f.
+ * scaled to a largest component in [2^29, 2^30], a vertex shifted by f.
  * Then for vertices a, b, c relative to the origin (below 2^31):
  *   edge values  E(p, q) = d . (p x q)   (p x q exact in 64 bits, the dot in 128)
  *   t            = a . n / d . n, n = (b - a) x (c - a) (exact in 64 bits)
@@ -24,7 +24,7 @@
 typedef struct {
     /* Q16.16 */
     int32_t o[3]; /* origin, mesh units of 2^-f (|o| <= 2^30) */
-    int32_t d[3]; /* direction, largest |component| in [2^29, 2^30) */
+    int32_t d[3]; /* direction, largest |component| in [2^29, 2^30] */
     int f;
     int tshift;   /* world t = mesh t 2^tshift */
     /* The boxes' limit: the nearest hit so far or tmax, as a quotient
@@ -79,13 +79,18 @@ __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const r
         r->ft = tmax;
         return true;
     }
-    int64_t po[3], pd[3];
+    int64_t po[3], pd[3], w[3];
     int bd = 0;
+    for (int k = 0; k < 3; k++) {
+        w[k] = (int64_t)num_to_q16(o[k]) - num_to_q16(t[k]);
+        if (w[k] >= INT32_MAX || w[k] <= -INT32_MAX)
+            return false; /* (within FXRT_COORD_LIMIT of each other it is far below 2^31) */
+    }
     for (int j = 0; j < 3; j++) {
         po[j] = pd[j] = 0;
         for (int k = 0; k < 3; k++) {
-            /* |o - t| < 2^31 (coordinates within FXRT_COORD_LIMIT), |m| < 2^30 */
-            po[j] += (int64_t)in->m[j][k] * ((int64_t)num_to_q16(o[k]) - num_to_q16(t[k]));
+            /* |w| < 2^31, |m| < 2^30: |po| < 3 2^61, and its rounding below fits */
+            po[j] += (int64_t)in->m[j][k] * w[k];
             pd[j] += (int64_t)in->m[j][k] * num_to_q16(d[k]);
         }
         int b = bvh_bits64(pd[j]);
@@ -186,7 +191,7 @@ static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d)
     r->ln = n.lo >= ((uint64_t)1 << 31) ? INT32_MAX : (int32_t)n.lo;
     r->ld = (int32_t)(d.lo & 0x7FFFFFFFu);
     if (n.lo >= ((uint64_t)1 << 31))
-        r->ld = 0; /* (cannot happen once both fit 31 bits; no limit rather than a wrong one) */
+        r->ld = 0; /* (n rounded up to 2^31: no limit rather than a wrong one) */
 }
 
 /* ---- a box ---------------------------------------------------------------- */
@@ -281,7 +286,8 @@ static int64_t bvh_dot_high(const int32_t d[3], const int64_t c[3])
            fx_smul32(d[2], (int32_t)(c[2] >> 32));
 }
 
-/* d . c exactly (|d| < 2^31, c any int64). */
+/* d . c exactly, for |d| <= 2^30 (any c) or |c| < 2^62 (|d| < 2^31): the
+ * high part's sum must fit 64 bits. */
 static fx128_t bvh_dot_wide(const int32_t d[3], const int64_t c[3])
 {
     fx128_t s = fx128_shl(fx128_from64(bvh_dot_high(d, c)), 32);
@@ -469,7 +475,7 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
 {
     const bvh_mesh_t *m = in->mesh;
     bvh_ray_t r;
-    if (!bvh_ray_make(in, ray, tmax, &r))
+    if (!(tmax > NUM_ZERO) || !bvh_ray_make(in, ray, tmax, &r))
         return false;
     uint32_t stack[BVH_MAX_DEPTH];
     int sp = 0;
