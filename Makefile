@@ -110,14 +110,17 @@ TEST_BIN += $(NUM_TEST_BIN)
 
 # tests/test_bvh.c: the mesh queries on meshes built by host/meshbuild.c
 # (compiled with it, in each number type: an instance holds numbers).
+# $(call bvh_test_rules,NUMBER,DIR,CC,CFLAGS): its rule under DIR (the
+# build's, or tests/sanitize.mk's sanitized one: an explicit rule, ahead
+# of the pattern rule for number-generic tests).
 BVH_TEST_SRC := tests/test_bvh.c host/meshbuild.c host/obj.c host/errf.c
 define bvh_test_rules
-$(BUILD)/tests/test_bvh_$(1): $(BVH_TEST_SRC) host/meshbuild.h host/obj.h $(wildcard tests/*.h) $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(1)/%.o)
+$(2)/tests/test_bvh_$(1): $(BVH_TEST_SRC) host/meshbuild.h host/obj.h $(wildcard tests/*.h) $(2)/host/fx.o $(CORE_NUM:%=$(2)/host/$(1)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(1) $$@"
-	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
+	$$(Q)$(3) $(4) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
 endef
-$(foreach n,$(NUMBERS),$(eval $(call bvh_test_rules,$(n))))
+$(foreach n,$(NUMBERS),$(eval $(call bvh_test_rules,$(n),$(BUILD),$$(CC),$$(CFLAGS_H))))
 TEST_BIN += $(foreach n,$(NUMBERS),$(BUILD)/tests/test_bvh_$(n))
 
 # Fragments add suites to SUITES_EXTRA and what they need to TEST_PREREQ.

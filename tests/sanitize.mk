@@ -108,16 +108,8 @@ $(SAN_DIFF): $$(call san_path,$$(DIFF_OBJ))
 	@echo "  LD san  $@"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) -lm
 
-# tests/test_bvh.c with host/meshbuild.c (the Makefile's BVH_TEST_SRC),
-# per number type: an explicit rule, ahead of the pattern rule for
-# number-generic tests.
-define san_bvh_rules
-$(SAN_DIR)/tests/test_bvh_$(1): $(BVH_TEST_SRC) $(SAN_DIR)/host/fx.o $(CORE_NUM:%=$(SAN_DIR)/host/$(1)/%.o)
-	@mkdir -p $$(@D)
-	@echo "  CC/LD san $(1) $$@"
-	$$(Q)$$(SAN_CC) $$(SAN_CFLAGS) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
-endef
-$(foreach n,$(NUMBERS),$(eval $(call san_bvh_rules,$(n))))
+# tests/test_bvh.c with host/meshbuild.c (the Makefile's bvh_test_rules).
+$(foreach n,$(NUMBERS),$(eval $(call bvh_test_rules,$(n),$(SAN_DIR),$$(SAN_CC),$$(SAN_CFLAGS))))
 SAN_EXTRA_BIN += $(foreach n,$(NUMBERS),$(SAN_DIR)/tests/test_bvh_$(n))
 
 # san-build: everything tests/sanitize.sh runs, and the list of test
