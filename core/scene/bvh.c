@@ -55,11 +55,11 @@ static int bvh_bits64(int64_t v)
 
 static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d);
 
-/* m 2^-e as a number (float, double). */
-static num_t bvh_minv(const bvh_inst_t *in, int j, int k)
+/* 2^-e as a number (float, double; exact: e <= 62). */
+static num_t bvh_unscale(int e)
 {
-    num_t s = (num_t)in->m[j][k];
-    for (int i = 0; i < in->e; i++)
+    num_t s = NUM_ONE;
+    for (int i = 0; i < e; i++)
         s = s * (num_t)0.5;
     return s;
 }
@@ -69,11 +69,13 @@ __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const r
     const num_t o[3] = {ray->o.x, ray->o.y, ray->o.z}, d[3] = {ray->d.x, ray->d.y, ray->d.z},
                 t[3] = {in->t.x, in->t.y, in->t.z};
     if (!NUM_EXACT) {
+        num_t sc = bvh_unscale(in->e);
         for (int j = 0; j < 3; j++) {
             r->fo[j] = r->fd[j] = NUM_ZERO;
             for (int k = 0; k < 3; k++) {
-                r->fo[j] = r->fo[j] + bvh_minv(in, j, k) * (o[k] - t[k]);
-                r->fd[j] = r->fd[j] + bvh_minv(in, j, k) * d[k];
+                num_t mjk = (num_t)in->m[j][k] * sc; /* m 2^-e */
+                r->fo[j] = r->fo[j] + mjk * (o[k] - t[k]);
+                r->fd[j] = r->fd[j] + mjk * d[k];
             }
         }
         r->ft = tmax;
@@ -496,11 +498,10 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
                 if (i == skip || !bvh_triangle(m, &r, i, &c))
                     continue;
                 int64_t cn = 0, cd = 1;
-                if (NUM_EXACT && found) {
+                if (NUM_EXACT && nearest) /* (any-hit needs no order) */
                     bvh_reduce(c.tn, c.det, &cn, &cd);
-                    if (!bvh_lt128(fx128_mul(cn, bd), fx128_mul(bn, cd)))
-                        continue; /* not before the nearest so far (to 2^-60) */
-                }
+                if (NUM_EXACT && found && !bvh_lt128(fx128_mul(cn, bd), fx128_mul(bn, cd)))
+                    continue; /* not before the nearest so far (to 2^-60) */
                 num_t t = bvh_cand_t_world(&r, &c);
                 if (!NUM_EXACT && !(t < r.ft))
                     continue;
@@ -512,8 +513,6 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
                 best_t = t;
                 hit->tri = i;
                 if (NUM_EXACT) {
-                    if (cd == 1 && cn == 0)
-                        bvh_reduce(c.tn, c.det, &cn, &cd);
                     bn = cn;
                     bd = cd;
                     bvh_limit(&r, c.tn, c.det);
@@ -567,14 +566,14 @@ bool bvh_any(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip)
 
 /* ---- normals ---------------------------------------------------------------- */
 
-/* The world direction of mesh-space normal v (M^-T v = m^T v 2^-e),
- * normalised. */
+/* The world direction of mesh-space normal v (M^-T v = m^T v 2^-e; the
+ * power of two goes with the normalisation), normalised. */
 static bool bvh_world_normal(const bvh_inst_t *in, const int64_t v[3], const num_t fv[3], vec3_t *n)
 {
     num_t out[3];
     if (!NUM_EXACT) {
         for (int j = 0; j < 3; j++)
-            out[j] = bvh_minv(in, 0, j) * fv[0] + bvh_minv(in, 1, j) * fv[1] + bvh_minv(in, 2, j) * fv[2];
+            out[j] = (num_t)in->m[0][j] * fv[0] + (num_t)in->m[1][j] * fv[1] + (num_t)in->m[2][j] * fv[2];
     } else {
         int b = 0;
         for (int j = 0; j < 3; j++)
