@@ -24,16 +24,17 @@ include core/core.mk
 .SECONDARY:
 .SECONDEXPANSION:
 include host/multi.mk
-HOST_SRC := main scene image errf compare engine_select args obj xform
+HOST_SRC := main scene image errf compare engine_select args obj xform meshstore meshbuild
 # The scene loader and what it needs (OBJ meshes, node transforms, messages).
-SCENE_LIB = $(BUILD)/host/scene.o $(BUILD)/host/obj.o $(BUILD)/host/xform.o $(BUILD)/host/errf.o
+SCENE_LIB = $(BUILD)/host/scene.o $(BUILD)/host/obj.o $(BUILD)/host/xform.o $(BUILD)/host/errf.o \
+            $(BUILD)/host/meshstore.o $(BUILD)/host/meshbuild.o
 
 # --- host tool -----------------------------------------------------------
 # (host/multi.mk: the three number types' objects, each joined into one.)
 HOST_OBJ := $(HOST_SRC:%=$(BUILD)/host/%.o) $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),fxrt,$(NUMBERS))
 
 SCENEC_OBJ := $(BUILD)/host/scenec.o $(SCENE_LIB) $(BUILD)/host/args.o $(BUILD)/host/engine_select.o \
-              $(BUILD)/host/meshbuild.o $(BUILD)/host/meshemit.o \
+              $(BUILD)/host/meshemit.o \
               $(BUILD)/host/fx.o $(call multi_objs,$(BUILD),scenec,$(NUMBERS))
 
 all: $(BUILD)/fxrt $(BUILD)/fxrt-scenec
@@ -113,15 +114,20 @@ TEST_BIN += $(NUM_TEST_BIN)
 # $(call bvh_test_rules,NUMBER,DIR,CC,CFLAGS): its rule under DIR (the
 # build's, or tests/sanitize.mk's sanitized one: an explicit rule, ahead
 # of the pattern rule for number-generic tests).
-BVH_TEST_SRC := tests/test_bvh.c host/meshbuild.c host/obj.c host/errf.c
+# tests/test_model.c: models in the world through the public API, the same way.
+# $(call bvh_test_rules,NUMBER,DIR,CC,CFLAGS,TEST): TEST's rule under DIR
+# (the build's, or tests/sanitize.mk's sanitized one: an explicit rule,
+# ahead of the pattern rule for number-generic tests).
+BVH_TESTS := test_bvh test_model
+BVH_TEST_LIB := host/meshbuild.c host/obj.c host/errf.c
 define bvh_test_rules
-$(2)/tests/test_bvh_$(1): $(BVH_TEST_SRC) host/meshbuild.h host/obj.h $(wildcard tests/*.h) $(2)/host/fx.o $(CORE_NUM:%=$(2)/host/$(1)/%.o)
+$(2)/tests/$(5)_$(1): tests/$(5).c $(BVH_TEST_LIB) host/meshbuild.h host/obj.h $(wildcard tests/*.h) $(2)/host/fx.o $(CORE_NUM:%=$(2)/host/$(1)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(1) $$@"
 	$$(Q)$(3) $(4) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
 endef
-$(foreach n,$(NUMBERS),$(eval $(call bvh_test_rules,$(n),$(BUILD),$$(CC),$$(CFLAGS_H))))
-TEST_BIN += $(foreach n,$(NUMBERS),$(BUILD)/tests/test_bvh_$(n))
+$(foreach t,$(BVH_TESTS),$(foreach n,$(NUMBERS),$(eval $(call bvh_test_rules,$(n),$(BUILD),$$(CC),$$(CFLAGS_H),$(t)))))
+TEST_BIN += $(foreach t,$(BVH_TESTS),$(foreach n,$(NUMBERS),$(BUILD)/tests/$(t)_$(n)))
 
 # Fragments add suites to SUITES_EXTRA and what they need to TEST_PREREQ.
 SUITES_EXTRA :=

@@ -62,6 +62,7 @@ typedef render_t fxrt_render_t;     /* a frame's state (fxrt_render_setup) */
 typedef material_t fxrt_material_t; /* .kind, .exponent, .specular, .reflection, .index */
 typedef bvh_mesh_t fxrt_mesh_t;     /* a mesh in constant data (docs/MESHES.md; fxrt-scenec --mesh writes one) */
 typedef bvh_node_t fxrt_mesh_node_t;
+typedef bvh_inst_t fxrt_instance_t; /* a mesh placed in the world: a model's .inst (docs/MESHES.md) */
 
 /* A number literal: FXRT_NUM(0.5). */
 #define FXRT_NUM(x) NUM(x)

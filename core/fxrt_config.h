@@ -35,6 +35,18 @@ FXRT_STATIC_ASSERT(FXRT_NUMBER == FXRT_Q16 || FXRT_NUMBER == FXRT_FLOAT || FXRT_
 #ifndef FXRT_MAX_BOXES
 #define FXRT_MAX_BOXES 64
 #endif
+/* Models: placed meshes whose triangles stay in constant data behind a
+ * BVH (scene/model.c, docs/MESHES.md). Each costs one record in RAM
+ * whatever its triangle count. Default: 16 on the host, 0 on bare-metal
+ * boards, where a firmware that draws meshes sets it (the scene compiler
+ * sets it to the scene's count). */
+#ifndef FXRT_MAX_MODELS
+#if FXRT_PORT_BARE
+#define FXRT_MAX_MODELS 0
+#else
+#define FXRT_MAX_MODELS 16
+#endif
+#endif
 
 /* Smooth shading (a mesh's 'shading smooth', docs/SCENES.md "Meshes"): a
  * triangle may carry a unit normal per vertex (fxrt_object_t's .smooth
@@ -422,7 +434,13 @@ FXRT_STATIC_ASSERT(FXRT_BAND_ROWS >= 1, "FXRT_BAND_ROWS must be at least 1");
  * for scenes/lit/coloured-lights.scene, over the 2 KB stack's margin;
  * 256 B more for it. */
 #define FXRT_STACK_RAYCAST (256 * (FXRT_RENDERER == FXRT_RENDERER_RAYCAST && FXRT_MAX_LIGHTS > 0))
-#define FXRT_STACK_EXTRA ((FXRT_MAX_DEPTH > 0 ? 1024 + 48 * FXRT_MAX_DEPTH : 0) + 256 * FXRT_ADAPTIVE + FXRT_STACK_RAYCAST)
+/* A model's BVH walk (scene/bvh.c) takes about 850 B of stack on the M0
+ * below the visibility pass or a shadow ray (1,648 B in all for a flat
+ * icosphere on the micro:bit, over the 2 KB stack's margin): 1 KB more
+ * where models are compiled in. */
+#define FXRT_STACK_MODELS (1024 * (FXRT_MAX_MODELS > 0))
+#define FXRT_STACK_EXTRA                                                                                     \
+    ((FXRT_MAX_DEPTH > 0 ? 1024 + 48 * FXRT_MAX_DEPTH : 0) + 256 * FXRT_ADAPTIVE + FXRT_STACK_RAYCAST + FXRT_STACK_MODELS)
 #endif
 FXRT_STATIC_ASSERT(FXRT_STACK_EXTRA >= 0 && FXRT_STACK_EXTRA % 8 == 0, "FXRT_STACK_EXTRA must be a multiple of 8, >= 0");
 /* 1: the core reserves those FXRT_STACK_EXTRA bytes itself (frame/api.c's

@@ -37,11 +37,12 @@ typedef enum {
     FXRT_ERR_NULL = -25,     /* a NULL pointer where the call needs an object */
     FXRT_ERR_ROW = -26,      /* a row outside 0..height-1 */
     FXRT_ERR_SETUP = -27,    /* fxrt_render_row before a successful fxrt_render_setup, or after the view changed */
-    FXRT_ERR_BUFFER = -28,
+    FXRT_ERR_BUFFER = -28,   /* a row buffer smaller than FXRT_ROW_BYTES(width), or RGB565 rows not 2-byte aligned */
     FXRT_ERR_INIT = -29,     /* a world that fxrt_world_init has not set up */
     FXRT_ERR_EXPONENT = -30, /* phong or reflective exponent outside 1..FXRT_PHONG_MAX_EXPONENT */
     FXRT_ERR_INDEX = -31,    /* refraction index outside FXRT_INDEX_MIN..FXRT_INDEX_MAX */
-    FXRT_ERR_LIGHTS = -32,   /* FXRT_MAX_LIGHTS lights are there already */   /* a row buffer smaller than FXRT_ROW_BYTES(width), or RGB565 rows not 2-byte aligned */
+    FXRT_ERR_LIGHTS = -32,   /* FXRT_MAX_LIGHTS lights are there already */
+    FXRT_ERR_MESH = -33,     /* a model whose mesh data or placement bvh_check refuses */
     /* Camera errors without a name above (cam_setup codes added later)
      * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
      * fxrt_strerror still tell them apart. */

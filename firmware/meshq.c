@@ -73,10 +73,13 @@ __attribute__((noinline)) void meshq_mark(void) { sink = sink + 1; }
 
 int main(void)
 {
-    bvh_inst_t in = {&meshq_mesh, {{0}}, MESHQ_E, vec3_make(num_from_q16(meshq_t[0]), num_from_q16(meshq_t[1]), num_from_q16(meshq_t[2]))};
+    bvh_inst_t in = {&meshq_mesh, {{0}}, MESHQ_E, vec3_make(num_from_q16(meshq_t[0]), num_from_q16(meshq_t[1]), num_from_q16(meshq_t[2])),
+                     {{0}}, MESHQ_FE};
     for (int j = 0; j < 3; j++)
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++) {
             in.m[j][k] = meshq_m[j][k];
+            in.f[j][k] = meshq_f[j][k];
+        }
 #ifndef MESHQ_HOST
     counter_start();
     uint64_t t0 = counter_ticks();

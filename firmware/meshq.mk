@@ -42,3 +42,10 @@ bench-mesh: $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) MESHQ_UPDATE_DOCS=$(MESHQ_UPDATE_DOCS) \
 	  MESHQ_TICKS='$(foreach b,mps2-an385 mps2-an386 microbit,$(b):$(TICK_NS_$(b)))' firmware/meshq.sh
 .PHONY: bench-mesh
+
+# make bench-models [MODELS_UPDATE_DOCS=1] [MODELS_ONLY="ico80 spot"]: models
+# in scenes on a floor, lit and flat, rendered by the firmware on every
+# board (firmware/models.sh; docs/bench/models.md).
+bench-models: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) MODELS_UPDATE_DOCS=$(MODELS_UPDATE_DOCS) firmware/models.sh
+.PHONY: bench-models

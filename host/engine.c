@@ -89,6 +89,7 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
     d->background = engine_color(sc->background);
     d->count = sc->count;
     d->bounces = false;
+    FXRT_IF_MODEL(int nmodels = 0;)
     for (int i = 0; i < sc->count; i++) {
         const scene_obj_t *o = &sc->obj[i];
         fxrt_object_t *t = &d->obj[i];
@@ -106,6 +107,11 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
         d->bounces |= material_bounces(t->material.kind);
         FXRT_IF_SMOOTH(t->smooth = o->smooth != 0;
                        for (int k = 0; k < 3; k++) t->vn[k] = o->smooth ? engine_vec(o->vn[k]) : vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);)
+        FXRT_IF_MODEL(t->inst = NULL;
+                      if (o->kind == SCENE_MODEL && nmodels < FXRT_MAX_MODELS) {
+                          meshbuild_inst(&o->map, o->mesh, &d->inst[nmodels]);
+                          t->inst = &d->inst[nmodels++];
+                      })
     }
     d->depth = sc->depth;
     d->samples = sc->samples;

@@ -32,6 +32,8 @@ typedef struct {
     int samples;   /* the scene's 'samples' N (world_set_samples) */
     bool adaptive; /* 'samples N adaptive' */
     bool bounces;  /* some object is reflective or transparent */
+    /* The models' instances (obj[i].inst points here), in scene order. */
+    FXRT_IF_MODEL(bvh_inst_t inst[FXRT_MAX_MODELS];)
 } engine_desc_t;
 
 /* A refraction index x in [FXRT_INDEX_MIN, FXRT_INDEX_MAX] as the build

@@ -432,11 +432,26 @@ static bool mb_invert(double a[3][3], double r[3][3])
     return true;
 }
 
-int meshbuild_instance(const meshbuild_t *mb, double a[3][3], const double b[3], bvh_inst_t *in, char *err,
-                       size_t errlen)
+/* a 2^e below 2^30 - 1 on its largest entry: the most e (0..62) for
+ * which that holds; -1 when none does. */
+static int mb_exponent(double x[3][3])
+{
+    double big = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            big = fmax(big, fabs(x[i][j]));
+    int e = 0;
+    /* (one below 2^30: entries are rounded to integers after) */
+    while (e < 62 && big * ldexp(1, e + 1) < (double)(1 << 30) - 1)
+        e++;
+    return big * ldexp(1, e) < (double)(1 << 30) - 1 ? e : -1;
+}
+
+int meshbuild_map(const meshbuild_t *mb, double a[3][3], const double b[3], meshbuild_map_t *map, char *err,
+                  size_t errlen)
 {
     /* world = a (origin + step q) + b = (a step) q + (a origin + b) */
-    double aq[3][3], inv[3][3], t[3], big = 0;
+    double aq[3][3], inv[3][3], t[3];
     for (int i = 0; i < 3; i++) {
         t[i] = b[i];
         for (int j = 0; j < 3; j++) {
@@ -448,33 +463,66 @@ int meshbuild_instance(const meshbuild_t *mb, double a[3][3], const double b[3],
         errf_set(err, errlen, "the mesh's transform is singular");
         return -1;
     }
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            big = fmax(big, fabs(inv[i][j]));
-    int e = 0;
-    /* (one below 2^30: m is rounded to an integer after) */
-    while (e < 62 && big * ldexp(1, e + 1) < (double)(1 << 30) - 1)
-        e++;
-    if (!(big * ldexp(1, e) < (double)(1 << 30) - 1)) {
-        errf_set(err, errlen, "the mesh's steps are too fine for its transform (%g per world unit, at most 2^30)", big);
+    int e = mb_exponent(inv), fe = mb_exponent(aq);
+    if (e < 0) {
+        errf_set(err, errlen, "the mesh's steps are too fine for its transform (more than 2^30 per world unit)");
         return -1;
     }
-    in->mesh = &mb->mesh;
-    in->e = e;
+    if (fe < 0) {
+        errf_set(err, errlen, "the mesh's steps are too coarse for its transform (more than 2^30 world units)");
+        return -1;
+    }
+    map->e = e;
+    map->fe = fe;
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            in->m[i][j] = (int32_t)lrint(ldexp(inv[i][j], e));
-    double tv[3];
+        for (int j = 0; j < 3; j++) {
+            map->m[i][j] = (int32_t)lrint(ldexp(inv[i][j], e));
+            map->f[i][j] = (int32_t)lrint(ldexp(aq[i][j], fe));
+        }
     for (int i = 0; i < 3; i++) {
-        tv[i] = t[i];
         if (!(fabs(t[i]) <= FXRT_COORD_LIMIT)) {
             errf_set(err, errlen, "the mesh's placement is beyond the coordinate limit (%g, at most %d)", t[i],
                      FXRT_COORD_LIMIT);
             return -1;
         }
+        map->t16[i] = (int32_t)lrint(t[i] * 65536);
     }
-    in->t = vec3_make(num_from_q16((int32_t)lrint(tv[0] * 65536)), num_from_q16((int32_t)lrint(tv[1] * 65536)),
-                      num_from_q16((int32_t)lrint(tv[2] * 65536)));
+    /* The box the core makes of it (geom_model_box): the root box's corners
+     * through the forward map, padded by 2^-10 of the sum of |f q|. */
+    const bvh_node_t *root = &mb->node[0];
+    static const char axis[3] = {'x', 'y', 'z'};
+    for (int i = 0; i < 3; i++) {
+        double lo = 0, hi = 0, pad = 0;
+        for (int j = 0; j < 3; j++) {
+            double p = ldexp(map->f[i][j], -fe) * root->lo[j], q = ldexp(map->f[i][j], -fe) * root->hi[j];
+            lo += fmin(p, q);
+            hi += fmax(p, q);
+            pad += fmax(fabs(p), fabs(q));
+        }
+        pad = pad / 1024 + 2.0 / 65536;
+        map->lo[i] = t[i] + lo - pad;
+        map->hi[i] = t[i] + hi + pad;
+        if (!(map->lo[i] >= -FXRT_COORD_LIMIT && map->hi[i] <= FXRT_COORD_LIMIT)) {
+            double at = map->lo[i] < -FXRT_COORD_LIMIT ? t[i] + lo : t[i] + hi;
+            if (fabs(at) > FXRT_COORD_LIMIT)
+                errf_set(err, errlen, "it reaches %g on %c, beyond the coordinate limit (%d)", at, axis[i],
+                         FXRT_COORD_LIMIT);
+            else
+                errf_set(err, errlen, "it reaches %g on %c, within %g of the coordinate limit (%d), its box's margin",
+                         at, axis[i], pad, FXRT_COORD_LIMIT);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int meshbuild_instance(const meshbuild_t *mb, double a[3][3], const double b[3], bvh_inst_t *in, char *err,
+                       size_t errlen)
+{
+    meshbuild_map_t map;
+    if (meshbuild_map(mb, a, b, &map, err, errlen) != 0)
+        return -1;
+    meshbuild_inst(&map, &mb->mesh, in);
     return 0;
 }
 

@@ -39,10 +39,39 @@ void meshbuild_free(meshbuild_t *mb);
 /* The mesh's bytes of constant data (vertices, normals, indices, nodes). */
 size_t meshbuild_bytes(const meshbuild_t *mb);
 
-/* The instance of mb placed by the affine map world = a x + b (a model
- * point x): m, e and t of bvh_inst_t. 0, or -1 with the message in err
- * (a singular map; a model so small or so scaled that its steps need more
- * than 2^30 per world unit; a placement beyond the coordinate limit). */
+/* An instance's maps in integers, the same in every number type: the
+ * inverse q = m 2^-e (w - T) and the forward w = f 2^-fe q + T of
+ * bvh_inst_t, T in Q16.16 (t16), and the box the core will make of it
+ * (lo, hi: geom_model_box' padding, in doubles). */
+typedef struct {
+    int32_t m[3][3], e, f[3][3], fe, t16[3];
+    double lo[3], hi[3];
+} meshbuild_map_t;
+
+/* The maps of mb placed by the affine map world = a x + b (a model point
+ * x). 0, or -1 with the message in err (a singular map; a model so small
+ * or so scaled that its steps need more than 2^30 per world unit, or more
+ * than 2^30 world units each; a placement or a box beyond the coordinate
+ * limit). */
+int meshbuild_map(const meshbuild_t *mb, double a[3][3], const double b[3], meshbuild_map_t *map, char *err,
+                  size_t errlen);
+
+/* The instance of mesh (mb's, or a copy of its header) with map, in the
+ * includer's number type. */
+static inline void meshbuild_inst(const meshbuild_map_t *map, const bvh_mesh_t *mesh, bvh_inst_t *in)
+{
+    in->mesh = mesh;
+    in->e = map->e;
+    in->fe = map->fe;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            in->m[i][j] = map->m[i][j];
+            in->f[i][j] = map->f[i][j];
+        }
+    in->t = vec3_make(num_from_q16(map->t16[0]), num_from_q16(map->t16[1]), num_from_q16(map->t16[2]));
+}
+
+/* meshbuild_map, then meshbuild_inst with mb's mesh. */
 int meshbuild_instance(const meshbuild_t *mb, double a[3][3], const double b[3], bvh_inst_t *in, char *err,
                        size_t errlen);
 

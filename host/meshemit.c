@@ -7,15 +7,9 @@ static void emit_i16(FILE *f, const int16_t (*a)[3], uint32_t n)
         fprintf(f, "%s{%d, %d, %d},%s", i % 4 ? " " : "    ", a[i][0], a[i][1], a[i][2], i % 4 == 3 || i + 1 == n ? "\n" : "");
 }
 
-int meshemit_c(FILE *f, const meshbuild_t *mb, const char *name, const char *src)
+void meshemit_arrays(FILE *f, const meshbuild_t *mb, const char *name)
 {
     const bvh_mesh_t *m = &mb->mesh;
-    fprintf(f, "/* %s: the mesh of %s, written by fxrt-scenec --mesh (host/meshemit.c).\n", name, src);
-    fprintf(f, " * %u triangles, %u vertices, %u nodes (depth %d), %zu bytes of constant data.\n", m->n_triangles,
-            m->n_vertices, m->n_nodes, mb->depth, meshbuild_bytes(mb));
-    fprintf(f, " * A model point is origin + step q: origin (%.17g, %.17g, %.17g), step %.17g. */\n", mb->origin[0],
-            mb->origin[1], mb->origin[2], mb->step);
-    fprintf(f, "#include \"fxrt.h\"\n\n");
     fprintf(f, "static const int16_t %s_v[%u][3] = {\n", name, m->n_vertices);
     emit_i16(f, m->v, m->n_vertices);
     fprintf(f, "};\n");
@@ -38,9 +32,29 @@ int meshemit_c(FILE *f, const meshbuild_t *mb, const char *name, const char *src
                 n->link);
     }
     fprintf(f, "};\n");
-    fprintf(f, "const fxrt_mesh_t %s = {%u, %u, %u, %s_v, %s%s, %s%s, %s%s, %s_node};\n", name, m->n_vertices,
-            m->n_triangles, m->n_nodes, name, m->vn ? name : "NULL", m->vn ? "_vn" : "", m->tri16 ? name : "NULL",
-            m->tri16 ? "_tri" : "", m->tri16 ? "NULL" : name, m->tri16 ? "" : "_tri", name);
+}
+
+void meshemit_header(FILE *f, const meshbuild_t *mb, const char *name, const char *header, bool normals,
+                     const char *storage)
+{
+    const bvh_mesh_t *m = &mb->mesh;
+    bool vn = normals && m->vn;
+    fprintf(f, "%sconst fxrt_mesh_t %s = {%u, %u, %u, %s_v, %s%s, %s%s, %s%s, %s_node};\n", storage, header,
+            m->n_vertices, m->n_triangles, m->n_nodes, name, vn ? name : "NULL", vn ? "_vn" : "",
+            m->tri16 ? name : "NULL", m->tri16 ? "_tri" : "", m->tri16 ? "NULL" : name, m->tri16 ? "" : "_tri", name);
+}
+
+int meshemit_c(FILE *f, const meshbuild_t *mb, const char *name, const char *src)
+{
+    const bvh_mesh_t *m = &mb->mesh;
+    fprintf(f, "/* %s: the mesh of %s, written by fxrt-scenec --mesh (host/meshemit.c).\n", name, src);
+    fprintf(f, " * %u triangles, %u vertices, %u nodes (depth %d), %zu bytes of constant data.\n", m->n_triangles,
+            m->n_vertices, m->n_nodes, mb->depth, meshbuild_bytes(mb));
+    fprintf(f, " * A model point is origin + step q: origin (%.17g, %.17g, %.17g), step %.17g. */\n", mb->origin[0],
+            mb->origin[1], mb->origin[2], mb->step);
+    fprintf(f, "#include \"fxrt.h\"\n\n");
+    meshemit_arrays(f, mb, name);
+    meshemit_header(f, mb, name, name, true, "");
     return ferror(f) ? -1 : 0;
 }
 

@@ -13,6 +13,13 @@
  * -1 on a write error. */
 int meshemit_c(FILE *f, const meshbuild_t *mb, const char *name, const char *src);
 
+/* The parts of meshemit_c: mb's arrays, static, named NAME_v, NAME_vn,
+ * NAME_tri and NAME_node; and a `STORAGE const fxrt_mesh_t HEADER` that
+ * names them, with the vertex normals where normals (and mb has them). */
+void meshemit_arrays(FILE *f, const meshbuild_t *mb, const char *name);
+void meshemit_header(FILE *f, const meshbuild_t *mb, const char *name, const char *header, bool normals,
+                     const char *storage);
+
 /* One line about mb: triangles, vertices, nodes, depth, bytes, bytes per
  * triangle, triangles dropped. */
 void meshemit_summary(FILE *f, const meshbuild_t *mb, const char *src);

@@ -334,10 +334,11 @@ int obj_parse(const char *path, const char *buf, size_t len, obj_t *o, char *err
     return -1;
 }
 
-int obj_load(const char *path, obj_t *o, char *err, size_t errlen)
+int obj_read(const char *path, char **buf_out, size_t *len_out, char *err, size_t errlen)
 {
     obj_ctx_t c = {path, 0, err, errlen};
-    memset(o, 0, sizeof *o);
+    *buf_out = NULL;
+    *len_out = 0;
     FILE *f = fopen(path, "rb");
     if (f == NULL)
         return obj_fail(&c, "cannot open: %s", strerror(errno));
@@ -357,13 +358,23 @@ int obj_load(const char *path, obj_t *o, char *err, size_t errlen)
     size_t len = fread(buf, 1, OBJ_MAX_FILE_BYTES + 1, f);
     int rd = ferror(f);
     fclose(f);
-    int rc;
-    if (rd)
-        rc = obj_fail(&c, "cannot read");
-    else if (len > OBJ_MAX_FILE_BYTES)
-        rc = obj_fail(&c, "file too large (over %zu MiB)", OBJ_MAX_FILE_BYTES >> 20);
-    else
-        rc = obj_parse(path, buf, len, o, err, errlen);
+    if (rd || len > OBJ_MAX_FILE_BYTES) {
+        free(buf);
+        return rd ? obj_fail(&c, "cannot read") : obj_fail(&c, "file too large (over %zu MiB)", OBJ_MAX_FILE_BYTES >> 20);
+    }
+    *buf_out = buf;
+    *len_out = len;
+    return 0;
+}
+
+int obj_load(const char *path, obj_t *o, char *err, size_t errlen)
+{
+    char *buf;
+    size_t len;
+    memset(o, 0, sizeof *o);
+    if (obj_read(path, &buf, &len, err, errlen) != 0)
+        return -1;
+    int rc = obj_parse(path, buf, len, o, err, errlen);
     free(buf);
     return rc;
 }

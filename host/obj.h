@@ -45,6 +45,10 @@ typedef struct {
 /* Read PATH into o (freed with obj_free). 0, or -1 with the message in
  * err and o empty. */
 int obj_load(const char *path, obj_t *o, char *err, size_t errlen);
+/* PATH's bytes, by obj_load's rules (a regular file, at most
+ * OBJ_MAX_FILE_BYTES): *buf (freed by the caller) and *len. 0, or -1 with
+ * the message in err. */
+int obj_read(const char *path, char **buf, size_t *len, char *err, size_t errlen);
 /* The same from len bytes at buf, PATH naming them in messages. */
 int obj_parse(const char *path, const char *buf, size_t len, obj_t *o, char *err, size_t errlen);
 void obj_free(obj_t *o);

@@ -125,12 +125,14 @@ typedef struct {
 #define SCENE_NF_DIR 1
 #define SCENE_NF_RADIUS 1
 #define SCENE_NF_MAX 1
+#define SCENE_NF_INST 0
 #define SCENE_FIELD(f, t) SCENE_FIELD_##t(f, t)
 #define SCENE_FIELD_NONE(f, t)
 #define SCENE_FIELD_POINT(f, t) {#f, SCENE_F_##t, 0},
 #define SCENE_FIELD_DIR SCENE_FIELD_POINT
 #define SCENE_FIELD_RADIUS SCENE_FIELD_POINT
 #define SCENE_FIELD_MAX SCENE_FIELD_POINT
+#define SCENE_FIELD_INST(f, t)
 #define SCENE_SHAPE(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
     {#k,                                                                                                      \
      SCENE_NF_##t1 + SCENE_NF_##t2 + SCENE_NF_##t3 + 1 + SCENE_N_MATERIAL_FIELDS,                             \
@@ -170,6 +172,7 @@ static const scene_shape_t scene_shape_mesh = {
 #define SCENE_FIELD_NAME_DIR SCENE_FIELD_NAME_POINT
 #define SCENE_FIELD_NAME_RADIUS SCENE_FIELD_NAME_POINT
 #define SCENE_FIELD_NAME_MAX SCENE_FIELD_NAME_POINT
+#define SCENE_FIELD_NAME_INST(f)
 static const char *const scene_all_fields[] = {FXRT_KINDS(SCENE_KIND_FIELDS) "color",
                                                 "eye",   "gaze",   "up",     "fov",    "scale",
                                                 "material", "specular", "exponent", "position", "direction",
@@ -187,6 +190,11 @@ static const char *const scene_material_names[] = {"flat", "lambert", "phong", "
 static const char *const scene_kind_plural[] = {FXRT_KINDS(SCENE_KIND_PLURAL)};
 static const char *const scene_kind_macro[] = {FXRT_KINDS(SCENE_KIND_MACRO)};
 static const int scene_kind_capacity[] = {FXRT_KINDS(SCENE_KIND_CAPACITY)};
+/* Whether the kind has a statement of its own (a model comes from 'mesh'). */
+#define SCENE_KIND_WORD(K, k, ks, cap, solid, bounded, form, edges, f1, t1, ...) SCENE_WORD_##t1,
+#define SCENE_WORD_POINT 1
+#define SCENE_WORD_INST 0
+static const int scene_kind_word[] = {FXRT_KINDS(SCENE_KIND_WORD)};
 
 /* Values read for one field, with their tokens so messages can quote what
  * the user wrote (e.g. "1e99999" rather than "inf"). */
@@ -1068,19 +1076,18 @@ static int scene_parse_end(scene_parser_t *p)
     return 0;
 }
 
-/* 'mesh file PATH [shading smooth|flat] color R G B [material ...]': the
- * OBJ file's triangles (PATH relative to the scene file's folder), each
- * an object of the triangle kind with the mesh's colour and material,
- * through the open nodes' transform. Zero-area triangles are left out and
- * counted. Either every triangle is added or none. */
+/* 'mesh file PATH [shading smooth|flat] color R G B [material ...]': a
+ * model (scene/model.c): the OBJ file (PATH relative to the scene file's
+ * folder) built once into constant mesh data (host/meshstore.c: every
+ * mesh statement naming the same file shares it), placed by the open
+ * nodes' transform, with the mesh's colour and material. Zero-area
+ * triangles are left out and counted. */
 static int scene_parse_mesh(scene_parser_t *p)
 {
     enum { MESH_SHADING, MESH_COLOR, MESH_MATERIAL };
     scene_fval_t vals[SCENE_MAX_FIELDS];
     char path[4096], err[1024];
-    obj_t m;
-    size_t keep = 0, dropped = 0, i;
-    int cap = scene_kind_capacity[SCENE_TRIANGLE], rc = 0;
+    int cap = scene_kind_capacity[SCENE_MODEL];
 
     if (p->ntok < 3 || !scene_tok_is(p->tok[1], "file"))
         return scene_fail(p, "'mesh' needs 'file PATH' first: mesh file PATH [shading smooth|flat] color R G B");
@@ -1088,14 +1095,15 @@ static int scene_parse_mesh(scene_parser_t *p)
         return -1;
     if (scene_check_material(p, &scene_shape_mesh, &vals[MESH_MATERIAL]) != 0)
         return -1;
-    int smooth = !vals[MESH_SHADING].seen || vals[MESH_SHADING].word == 1;
-    if (smooth && !FXRT_SMOOTH)
-        return scene_fail(p, "smooth shading is not in this build (FXRT_SMOOTH is 0): add 'shading flat'");
+    bool smooth = !vals[MESH_SHADING].seen || vals[MESH_SHADING].word == 1;
     if (vals[MESH_MATERIAL].seen && vals[MESH_MATERIAL].word == SCENE_MAT_TRANSPARENT)
         return scene_fail(p, "a transparent mesh is not implemented yet (glass needs a closed solid)");
     if (cap <= 0)
-        return scene_fail(p, "meshes are made of triangles, which are not in this build (%s is 0)",
-                          scene_kind_macro[SCENE_TRIANGLE]);
+        return scene_fail(p, "meshes are not in this build (%s is 0)", scene_kind_macro[SCENE_MODEL]);
+    if (p->kind_count[SCENE_MODEL] >= cap)
+        return scene_fail(p, "too many meshes (capacity %d, %s)", cap, scene_kind_macro[SCENE_MODEL]);
+    if (p->out->count >= SCENE_MAX_OBJECTS)
+        return scene_fail(p, "too many objects (capacity %d)", SCENE_MAX_OBJECTS);
     {
         /* The folder of the scene file's name, up to its last '/'. */
         const char *slash = strrchr(p->name, '/');
@@ -1109,79 +1117,31 @@ static int scene_parse_mesh(scene_parser_t *p)
         memcpy(path + dir, t.s, t.n);
         path[(size_t)dir + t.n] = '\0';
     }
-    if (obj_load(path, &m, err, sizeof err) != 0) {
-        /* The scene's FILE:LINE first, then the OBJ's own: a message cut
-         * short by a small buffer keeps the scene's line (a long path once
-         * pushed it out of a message written the other way round). */
-        scene_fail(p, "%s", err);
-        return -1;
+    const bvh_mesh_t *mesh;
+    const meshstore_entry_t *e = meshstore_get(path, smooth, &mesh, err, sizeof err);
+    if (e == NULL) /* The scene's FILE:LINE first, then the OBJ's own: a message cut short
+                    * by a small buffer keeps the scene's line (a long path once pushed it
+                    * out of a message written the other way round). */
+        return scene_fail(p, "%s", err);
+    scene_obj_t *o = &p->out->obj[p->out->count];
+    memset(o, 0, sizeof *o);
+    o->kind = SCENE_MODEL;
+    o->line = p->line;
+    scene_set_surface(o, vals, MESH_COLOR);
+    o->store = e;
+    o->mesh = mesh;
+    const xform_t *x = &p->node_xf[p->node_depth];
+    double a[3][3];
+    memcpy(a, x->m, sizeof a);
+    if (meshbuild_map(&e->mb, a, x->t, &o->map, err, sizeof err) != 0) {
+        if (p->node_depth > 0)
+            return scene_fail(p, "mesh %s, after the node on line %d: %s", path, p->node_line[p->node_depth], err);
+        return scene_fail(p, "mesh %s: %s", path, err);
     }
-    for (i = 0; i < m.ntri; i++) {
-        obj_vec_t n = obj_face_normal(&m, i);
-        if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
-            dropped++;
-        else
-            keep++;
-    }
-    obj_vec_t *vn = NULL;
-    if (keep > (size_t)(cap - p->kind_count[SCENE_TRIANGLE]) ||
-        keep > (size_t)(SCENE_MAX_OBJECTS - p->out->count)) {
-        rc = scene_fail(p, "too many triangles (capacity %d): the mesh %s has %zu, %d more fit", cap, path, keep,
-                        cap - p->kind_count[SCENE_TRIANGLE]);
-        goto done;
-    }
-    if (smooth) {
-        vn = malloc(sizeof *vn * 3 * (m.ntri ? m.ntri : 1));
-        if (vn == NULL || obj_smooth_normals(&m, vn, NULL) != 0) {
-            rc = scene_fail(p, "out of memory for the mesh's normals");
-            goto done;
-        }
-    }
-    for (i = 0, keep = 0; i < m.ntri; i++) {
-        const obj_tri_t *tr = &m.tri[i];
-        obj_vec_t n = obj_face_normal(&m, i);
-        scene_obj_t *o = &p->out->obj[p->out->count + keep];
-        char where[sizeof path + 16];
-        if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
-            continue;
-        memset(o, 0, sizeof *o);
-        o->kind = SCENE_TRIANGLE;
-        o->line = p->line;
-        for (int k = 0; k < 3; k++) {
-            const obj_vec_t *v = &m.v[tr->v[k]];
-            o->p[k].x = v->x;
-            o->p[k].y = v->y;
-            o->p[k].z = v->z;
-        }
-        scene_set_surface(o, vals, MESH_COLOR);
-        snprintf(where, sizeof where, "%s:%ld", path, (long)tr->line);
-        for (int k = 0; smooth && k < 3; k++) {
-            /* Normals move by the nodes' inverse transpose, normalised;
-             * outside nodes they are normalised as they are. */
-            const obj_vec_t *c = &vn[3 * i + k];
-            scene_vec_t v = {c->x, c->y, c->z};
-            double len = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-            if (!(len > 0.0) || !isfinite(len) ||
-                (p->node_depth > 0 && xform_normal(&p->node_xf[p->node_depth], v, &v) != 0)) {
-                rc = scene_fail(p, "mesh: the normal of corner %d of face %s is zero", k + 1, where);
-                goto done;
-            }
-            if (p->node_depth == 0)
-                v.x /= len, v.y /= len, v.z /= len;
-            o->vn[k] = v;
-        }
-        o->smooth = smooth;
-        if ((rc = scene_place(p, o, where)) != 0)
-            goto done;
-        keep++;
-    }
-    p->out->count += (int)keep;
-    p->kind_count[SCENE_TRIANGLE] += (int)keep;
-    p->out->mesh_dropped += (long)dropped;
-done:
-    free(vn);
-    obj_free(&m);
-    return rc;
+    p->out->count++;
+    p->kind_count[SCENE_MODEL]++;
+    p->out->mesh_dropped += (long)e->mb.dropped;
+    return 0;
 }
 
 /* Non-negative decimal integer without sign; saturates so that absurdly
@@ -1412,14 +1372,20 @@ static int scene_parse_line(scene_parser_t *p, const char *s, size_t n)
     if (scene_tok_is(kw, "camera"))
         return scene_parse_camera(p);
     for (int k = 0; k < SCENE_KINDS; k++)
-        if (scene_tok_is(kw, scene_kind_shape[k].label))
+        if (scene_kind_word[k] && scene_tok_is(kw, scene_kind_shape[k].label))
             return scene_parse_object(p, (scene_kind_t)k, &scene_kind_shape[k]);
     {
         /* "..., samples, plane, sphere, triangle or box": the kinds' words. */
         char kinds[256] = "";
+        int nw = 0, iw = 0;
+        for (int k = 0; k < SCENE_KINDS; k++)
+            nw += scene_kind_word[k];
         for (int k = 0; k < SCENE_KINDS; k++) {
-            strcat(kinds, k == 0 ? "" : k == SCENE_KINDS - 1 ? " or " : ", ");
+            if (!scene_kind_word[k])
+                continue;
+            strcat(kinds, iw == 0 ? "" : iw == nw - 1 ? " or " : ", ");
             strcat(kinds, scene_kind_shape[k].label);
+            iw++;
         }
         scene_quote_t q = scene_quote(kw);
         return scene_fail(p, "unknown keyword '%s' (expected image, background, ambient, camera, "

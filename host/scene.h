@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 #include "../core/scene/kinds.h" /* the kinds of object and their fields */
+#include "meshstore.h"
 
 #define SCENE_MAX_OBJECTS FXRT_RENDER_MAX_OBJECTS
 #define SCENE_MAX_LINE 1024 /* longest accepted line, in bytes, without newline */
@@ -57,8 +58,13 @@ typedef struct {
     int exponent;       /* phong, reflective: 1..SCENE_MAX_EXPONENT, else 0 */
     double reflection[3]; /* reflective only: fractions 0..1, else 0 */
     double index;       /* transparent only: FXRT_INDEX_MIN..FXRT_INDEX_MAX, else 0 */
-    int smooth;         /* a triangle of a 'shading smooth' mesh: vn[] holds its unit vertex normals */
+    int smooth;         /* a smooth triangle: vn[] holds its unit vertex normals */
     scene_vec_t vn[3];
+    /* a model ('mesh file'): its mesh, the header its instance uses
+     * (without vertex normals for 'shading flat'), and its placement */
+    const meshstore_entry_t *store;
+    const bvh_mesh_t *mesh;
+    meshbuild_map_t map;
 } scene_obj_t;
 
 typedef enum { SCENE_LIGHT_POINT, SCENE_LIGHT_DIRECTIONAL, SCENE_LIGHT_SPOT } scene_light_kind_t;

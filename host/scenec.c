@@ -22,14 +22,17 @@ static const char usage[] =
     "usage: fxrt-scenec SCENE --number q16|float|double --size WxH --out DIR [--all-kinds]\n"
     "                   [--sphere-rows]\n"
     "       fxrt-scenec --mesh OBJ --out FILE.c [--name NAME] [--flat] [--max-bytes N]\n"
-    "                   [--index16]\n"
+    "                   [--index16] [--node STEPS]\n"
     "\n"
     "--mesh writes the OBJ model as constant data in C (docs/MESHES.md): quantised\n"
     "vertices, vertex normals (not with --flat), triangles and a BVH, and\n"
     "`const fxrt_mesh_t NAME` (default: the file's name, then _mesh). It prints\n"
     "one line: triangles, vertices, nodes, depth, bytes, bytes per triangle. It\n"
     "refuses a mesh of more than N bytes (--max-bytes) or, with --index16, one\n"
-    "whose vertices need 32-bit indices.\n"
+    "whose vertices need 32-bit indices. It also writes `const fxrt_instance_t\n"
+    "NAME_at`, the mesh placed where the node STEPS put it (a scene's node line\n"
+    "without 'node': --node \"scale 2 rotate y 30 translate 0 1 -5\"; without\n"
+    "--node, where the file's coordinates are), for fxrt_add's .inst.\n"
     "\n"
     "Writes DIR/scene_config.h (FXRT_MAX_* capacities, SCENE_WIDTH/HEIGHT/OBJECTS/LIGHTS,\n"
     "FXRT_SHADOWS, FXRT_PHONG, FXRT_MAX_DEPTH, FXRT_MAX_SAMPLES, FXRT_ADAPTIVE) and\n"
@@ -59,15 +62,61 @@ static int fail(const char *msg, const char *arg)
     return 2;
 }
 
-/* fxrt-scenec --mesh OBJ --out FILE.c [--name NAME] [--flat] [--max-bytes N] [--index16] */
+/* The instance of mesh NAME from OBJ placed by the node steps (NULL:
+ * none), as the scene language places it: a scene of that node and mesh,
+ * parsed, gives its maps, checked against mb's quantisation. Writes
+ * `const fxrt_instance_t NAME_at` into f (T in Q16.16, exactly, as
+ * FXRT_NUM of hexadecimal literals). 0, or -1 with the message on stderr. */
+static int mesh_instance(FILE *f, const meshbuild_t *mb, const char *obj, bool smooth, const char *steps,
+                         const char *name)
+{
+    static scene_t sc;
+    static char text[4096];
+    char err[1024];
+    int n = snprintf(text, sizeof text, "camera perspective eye 0 0 1 gaze 0 0 -1 up 0 1 0 fov 45\n%s%s%s"
+                     "mesh file %s shading %s color 1 1 1\n%s",
+                     steps ? "node " : "", steps ? steps : "", steps ? "\n" : "", obj, smooth ? "smooth" : "flat",
+                     steps ? "end\n" : "");
+    if (n < 0 || (size_t)n >= sizeof text || strchr(obj, ' ') || (steps && strchr(steps, '\n'))) {
+        fprintf(stderr, "fxrt-scenec: --node or the OBJ path too long, or with a space or line break\n");
+        return -1;
+    }
+    if (scene_parse("--node", text, (size_t)n, &sc, err, sizeof err) != 0) {
+        /* "--node:2: what": the steps' own message */
+        const char *why = strchr(err, ' ');
+        fprintf(stderr, "fxrt-scenec: --node: %s\n", why ? why + 1 : err);
+        return -1;
+    }
+    const scene_obj_t *o = &sc.obj[0];
+    if (sc.count != 1 || o->kind != SCENE_MODEL || o->store->mb.step != mb->step ||
+        memcmp(o->store->mb.origin, mb->origin, sizeof mb->origin) != 0) {
+        fprintf(stderr, "fxrt-scenec: %s: the placed mesh is not the one written\n", obj);
+        return -1;
+    }
+    const meshbuild_map_t *m = &o->map;
+    fprintf(f, "/* %s placed by \"%s\": w = f 2^-fe q + T, q = m 2^-e (w - T) (docs/MESHES.md). */\n", name,
+            steps ? steps : "");
+    fprintf(f, "const fxrt_instance_t %s_at = {&%s,\n    {", name, name);
+    for (int r = 0; r < 3; r++)
+        fprintf(f, "%s{%ld, %ld, %ld}", r ? ", " : "", (long)m->m[r][0], (long)m->m[r][1], (long)m->m[r][2]);
+    fprintf(f, "}, %ld,\n    {FXRT_NUM(%a), FXRT_NUM(%a), FXRT_NUM(%a)},\n    {", (long)m->e, m->t16[0] / 65536.0,
+            m->t16[1] / 65536.0, m->t16[2] / 65536.0);
+    for (int r = 0; r < 3; r++)
+        fprintf(f, "%s{%ld, %ld, %ld}", r ? ", " : "", (long)m->f[r][0], (long)m->f[r][1], (long)m->f[r][2]);
+    fprintf(f, "}, %ld};\n", (long)m->fe);
+    return ferror(f) ? -1 : 0;
+}
+
+/* fxrt-scenec --mesh OBJ --out FILE.c [--name NAME] [--flat] [--max-bytes N] [--index16] [--node STEPS] */
 static int mesh_main(int argc, char **argv)
 {
-    const char *obj = NULL, *out = NULL, *name = NULL;
+    const char *obj = NULL, *out = NULL, *name = NULL, *steps = NULL;
     bool smooth = true, index16 = false;
     long long max_bytes = -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        bool value = !strcmp(a, "--mesh") || !strcmp(a, "--out") || !strcmp(a, "--name") || !strcmp(a, "--max-bytes");
+        bool value = !strcmp(a, "--mesh") || !strcmp(a, "--out") || !strcmp(a, "--name") || !strcmp(a, "--max-bytes") ||
+                     !strcmp(a, "--node");
         if (value && i + 1 >= argc)
             return fail("missing value for ", a);
         if (!strcmp(a, "--mesh")) {
@@ -94,6 +143,8 @@ static int mesh_main(int argc, char **argv)
             max_bytes = strtoll(argv[++i], &end, 10);
             if (*argv[i] == 0 || *end || max_bytes < 0)
                 return fail("bad --max-bytes ", argv[i]);
+        } else if (!strcmp(a, "--node")) {
+            steps = argv[++i];
         } else if (!strcmp(a, "--flat")) {
             smooth = false;
         } else if (!strcmp(a, "--index16")) {
@@ -140,14 +191,16 @@ static int mesh_main(int argc, char **argv)
         return fail("--out path too long (at most 1,000 characters): ", out);
     snprintf(tmp, sizeof tmp, "%s.tmp.%ld", out, (long)getpid());
     FILE *f = fopen(tmp, "w");
-    int rc = !f || meshemit_c(f, &mb, name, obj) != 0;
+    int placed = 0; /* -1: the placement was refused (mesh_instance said why) */
+    int rc = !f || meshemit_c(f, &mb, name, obj) != 0 || (placed = mesh_instance(f, &mb, obj, smooth, steps, name)) != 0;
     if (f && fclose(f))
         rc = 1;
     if (!rc && rename(tmp, out))
         rc = 1;
     if (rc) {
         remove(tmp);
-        fprintf(stderr, "fxrt-scenec: cannot write %s\n", out);
+        if (placed == 0)
+            fprintf(stderr, "fxrt-scenec: cannot write %s\n", out);
         meshbuild_free(&mb);
         return 2;
     }

@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "engine_build.h"
+#include "meshemit.h"
 #include "scenec.h"
 
 static void emit_num(FILE *f, num_t v)
@@ -73,6 +74,59 @@ static const char *material_kind_name(unsigned k)
     }
     return "MATERIAL_FLAT";
 }
+
+#if FXRT_MAX_MODELS > 0
+/* The models' data (see the call). */
+static int emit_models(FILE *data, const scene_t *sc, const engine_desc_t *d)
+{
+    const meshstore_entry_t *seen[FXRT_MAX_MODELS];
+    int nseen = 0;
+    bool smooth_used[FXRT_MAX_MODELS] = {false}, flat_used[FXRT_MAX_MODELS] = {false};
+    for (int pass = 0; pass < 2; pass++) {
+        for (int i = 0; i < sc->count; i++) {
+            const scene_obj_t *o = &sc->obj[i];
+            if (o->kind != SCENE_MODEL)
+                continue;
+            int k = 0;
+            while (k < nseen && seen[k] != o->store)
+                k++;
+            if (pass == 0 && k == nseen) {
+                seen[nseen++] = o->store;
+                char name[32];
+                snprintf(name, sizeof name, "scene_mesh%d", k);
+                fprintf(data, "/* %s: %s, %u triangles, %zu bytes */\n", name, o->store->path,
+                        o->store->mb.mesh.n_triangles, meshbuild_bytes(&o->store->mb));
+                meshemit_arrays(data, &o->store->mb, name);
+            }
+            bool flat = o->mesh != &o->store->mb.mesh;
+            if (pass == 0) {
+                char name[32], header[40];
+                snprintf(name, sizeof name, "scene_mesh%d", k);
+                snprintf(header, sizeof header, "scene_mesh%d%s", k, flat ? "_flat" : "");
+                bool *used = flat ? &flat_used[k] : &smooth_used[k];
+                if (!*used)
+                    meshemit_header(data, &o->store->mb, name, header, !flat, "static ");
+                *used = true;
+                continue;
+            }
+            const bvh_inst_t *in = d->obj[i].inst;
+            int n = (int)(in - d->inst);
+            fprintf(data, "static const fxrt_instance_t scene_inst%d = {&scene_mesh%d%s, {", n, k, flat ? "_flat" : "");
+            for (int r = 0; r < 3; r++)
+                fprintf(data, "%s{%" PRId32 ", %" PRId32 ", %" PRId32 "}", r ? ", " : "", in->m[r][0], in->m[r][1],
+                        in->m[r][2]);
+            fprintf(data, "}, %" PRId32 ", ", in->e);
+            emit_vec(data, in->t);
+            fputs(", {", data);
+            for (int r = 0; r < 3; r++)
+                fprintf(data, "%s{%" PRId32 ", %" PRId32 ", %" PRId32 "}", r ? ", " : "", in->f[r][0], in->f[r][1],
+                        in->f[r][2]);
+            fprintf(data, "}, %" PRId32 "}; /* line %d */\n", in->fe, o->line);
+        }
+    }
+    return ferror(data) ? -1 : 0;
+}
+#endif
 
 static unsigned scenec_cap(unsigned n, bool all_kinds)
 {
@@ -190,6 +244,13 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fputs("static const color_t scene_background = ", data);
     emit_color(data, d.background);
     fputs(";\n", data);
+    /* Models: each mesh file's arrays once (instancing), a header for its
+     * smooth and one for its flat instances as they are used, and each
+     * model's placement (the instance its object points to). */
+    FXRT_IF_MODEL(if (emit_models(data, sc, &d) != 0) {
+        snprintf(err, errlen, "%s: cannot write the meshes", path);
+        return -1;
+    })
     /* One entry at least: C has no empty arrays (SCENE_OBJECTS says how
      * many are real). */
     fprintf(data, "static const fxrt_object_t scene_objects[%d] = {\n", d.count ? d.count : 1);
@@ -201,24 +262,30 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
 #define EMIT_NP_DIR 1
 #define EMIT_NP_MAX 1
 #define EMIT_NP_RADIUS 0
+#define EMIT_NP_INST 0
 #define EMIT_NR_NONE 0
 #define EMIT_NR_POINT 0
 #define EMIT_NR_DIR 0
 #define EMIT_NR_MAX 0
 #define EMIT_NR_RADIUS 1
+#define EMIT_NR_INST 0
 #define EMIT_POINTS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
     EMIT_NP_##t1 + EMIT_NP_##t2 + EMIT_NP_##t3,
 #define EMIT_RADIUS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
     EMIT_NR_##t1 + EMIT_NR_##t2 + EMIT_NR_##t3,
         static const int points[] = {FXRT_KINDS(EMIT_POINTS)}, radius[] = {FXRT_KINDS(EMIT_RADIUS)};
         int np = points[o->kind];
-        fprintf(data, "    {.kind = %s, .p = {", kind_name(o->kind));
-        for (int k = 0; k < np; k++) {
-            if (k)
-                fputs(", ", data);
-            emit_vec(data, o->p[k]);
+        fprintf(data, "    {.kind = %s, ", kind_name(o->kind));
+        if (np > 0) {
+            fputs(".p = {", data);
+            for (int k = 0; k < np; k++) {
+                if (k)
+                    fputs(", ", data);
+                emit_vec(data, o->p[k]);
+            }
+            fputs("}, ", data);
         }
-        fputs("}, ", data);
+        FXRT_IF_MODEL(if (o->kind == GEOM_MODEL) fprintf(data, ".inst = &scene_inst%d, ", (int)(o->inst - d.inst));)
         if (radius[o->kind]) {
             fputs(".radius = ", data);
             emit_num(data, o->radius);

@@ -268,7 +268,7 @@ int DIFFK_SYM(diffk_shade)(const diffk_shade_t *sh, const double p[3], const dou
             return (int)r;
     }
     uint8_t bits = 0;
-    color_t c = shade_point(w, GEOM_SPHERE, 0, diffk_vec(p), diffk_vec(n), diffk_vec(d), &bits);
+    color_t c = shade_point(w, GEOM_SPHERE, 0 GEOM_PART_ARG(NULL), diffk_vec(p), diffk_vec(n), diffk_vec(d), &bits);
     rgb[0] = diffk_dbl(c.r);
     rgb[1] = diffk_dbl(c.g);
     rgb[2] = diffk_dbl(c.b);
@@ -305,8 +305,8 @@ double DIFFK_SYM(diffk_pow)(long long x_q32, unsigned k)
 #include "../core/light/trace.h"
 #undef trace_bounces
 #define trace_bounces MULTI_SYM(diffk_trace_copy)
-color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
-                      color_t local);
+color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const ray_t *ray, vec3_t p,
+                      vec3_t n_geo, color_t local);
 #include "../core/light/trace.c"
 
 void DIFFK_SYM(diffk_bounce)(const double d[3], const double n[3], double eta, double refl[3], int *tir,

@@ -128,8 +128,12 @@ fi
 # purpose. 235 was issue 36's goal; smooth shading added three (its
 # option's default, the triangle record's fields, scene/smooth.c), and
 # five went (trace.c's direction check, the cull field's SHADE_IF_CULL,
-# the stats counters defined always).
-IF_CAP=234
+# the stats counters defined always). Models (a kind of object with a
+# form of its own) added eight: their capacity's default (host or bare
+# board) and its guard, the kind's FXRT_IF_MODEL, the guards of its three
+# files (scene/model.c, vis/setup_model.c, vis/model.c) and depth.c's
+# model depth; light/hit.c's shading of a model pixel with its triangle known.
+IF_CAP=242
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0
 for d in . port math scene vis light frame; do

@@ -2,7 +2,9 @@
 # Meshes in constant data on the boards (docs/MESHES.md):
 #   - fxrt-scenec --mesh: the C it writes, its summary line, and its
 #     refusals (a bad OBJ with the OBJ's FILE:LINE, --max-bytes,
-#     --index16, a bad --name), each with nothing written;
+#     --index16, a bad --name, a bad --node), each with nothing written;
+#     with --node, the mesh placed as the scene compiler places it, which
+#     a program adds with fxrt_add and renders;
 #   - firmware/meshq.c, built for the host and for the M3, M4F and M0
 #     with a model in flash (the cube flat, an icosphere of 320 triangles
 #     smooth), answers the same rays with byte-identical results (the
@@ -55,6 +57,55 @@ awk 'BEGIN { for (j = 0; j < 256; j++) for (i = 0; i < 257; i++) printf "v %d %d
 refuse "--index16 on 65,791 vertices" "needs 32-bit indices: 657[0-9]{2} vertices" --mesh "$tmp/big.obj" --flat --index16
 out=$("$SCENEC" --mesh "$tmp/big.obj" --flat --out "$tmp/big.c" 2>&1)
 check "32-bit indices where 16 do not hold: $out" grep -q 'vertices=657[0-9][0-9] .*index_bits=32' <<<"$out"
+
+# --node: the mesh placed as a scene's node places it (the instance's maps
+# equal the scene compiler's for the same node), in every number type,
+# and added by the public API it renders where it should
+node="scale 2 1 1.5 rotate y 30 rotate x -20 translate 0.5 1 -5"
+out=$("$SCENEC" --mesh scenes/models/cube.obj --flat --out "$tmp/placed.c" --node "$node" 2>&1)
+check "--node writes cube_mesh_at: $out" grep -q '^const fxrt_instance_t cube_mesh_at = {&cube_mesh,$' "$tmp/placed.c"
+for n in 1 2 3; do
+    check "--node C compiles (FXRT_NUMBER $n)" gcc -std=c11 -Wall -Wextra -Werror -DFXRT_NUMBER=$n -Icore -c "$tmp/placed.c" -o "$tmp/placed$n.o"
+done
+mkdir -p "$tmp/sc" "$tmp/scd"
+printf 'camera perspective eye 0 0 1 gaze 0 0 -1 up 0 1 0 fov 45\nnode %s\n  mesh file ../../../../scenes/models/cube.obj shading flat color 1 1 1\nend\n' "$node" >"$tmp/sc/p.scene"
+"$SCENEC" "$tmp/sc/p.scene" --number q16 --size 32x24 --out "$tmp/scd" >/dev/null 2>&1
+maps() { tr -d ' \n' <"$1" | grep -oE '\{\{-?[0-9]+,-?[0-9]+,-?[0-9]+\},\{-?[0-9]+,-?[0-9]+,-?[0-9]+\},\{-?[0-9]+,-?[0-9]+,-?[0-9]+\}\},-?[0-9]+' | tr '\n' ' '; }
+check "--node's maps are the scene compiler's ($(maps "$tmp/placed.c"))" test "$(maps "$tmp/placed.c")" = "$(maps "$tmp/scd/scene_data.h")"
+cat >"$tmp/embed.c" <<'EOF'
+#include <stdio.h>
+#include "fxrt.h"
+extern const fxrt_instance_t cube_mesh_at;
+static fxrt_world_t world;
+static fxrt_render_t rs;
+int main(void)
+{
+    fxrt_view_t view;
+    uint8_t row[FXRT_ROW_BYTES(32)];
+    int red = 0;
+    fxrt_world_init(&world, FXRT_RGB(0, 0, 0));
+    int32_t id = fxrt_add(&world, &(fxrt_object_t){.kind = FXRT_MODEL, .inst = &cube_mesh_at, .color = FXRT_RGB(1, 0, 0)});
+    if (id != 0 || fxrt_camera_perspective(&view, fxrt_vec3(0, 0, 0), fxrt_vec3(FXRT_NUM(0.5), FXRT_NUM(1), FXRT_NUM(-5)),
+                                           fxrt_vec3(0, FXRT_NUM(1), 0), FXRT_NUM(60), 32, 24) != FXRT_OK ||
+        fxrt_render_setup(&rs, &world, &view) != FXRT_OK)
+        return 1;
+    for (int y = 0; y < 24; y++) {
+        if (fxrt_render_row(&rs, y, row, sizeof row) != FXRT_OK)
+            return 1;
+        for (int x = 0; x < 32; x++)
+            red += row[3 * x] == 255 && row[3 * x + 1] == 0;
+    }
+    printf("red=%d\n", red);
+    return red > 0 && red < 32 * 24 ? 0 : 1;
+}
+EOF
+out=$(gcc -std=c11 -O1 -Wall -Wextra -Werror -DFXRT_NUMBER=1 -DFXRT_MULTI -Icore -o "$tmp/embed" "$tmp/embed.c" "$tmp/placed.c" \
+    $(for c in core/*/*.c; do r=${c#core/}; r=${r%.c}; case $r in math/fx | math/fx128 | math/trig) ;; *) echo "$BUILD/host/q16/$r.o" ;; esac; done) \
+    "$BUILD/host/fx.o" -lm 2>&1 && "$tmp/embed")
+check "a program adds cube_mesh_at with fxrt_add and sees it ($out)" grep -qE '^red=[1-9][0-9]*$' <<<"$out"
+refuse "--node scale 0" "^fxrt-scenec: --node: scale 0: a node may not scale by 0" --mesh scenes/models/cube.obj --node "scale 0"
+refuse "--node beyond the coordinate limit" "^fxrt-scenec: --node: mesh scenes/models/cube.obj, after the node on line 2: it reaches 8192.25 on x, beyond" \
+    --mesh scenes/models/cube.obj --node "scale 0.5 translate 8192 0 0"
 
 # --- the same queries on the host and the boards -----------------------------
 for spec in t-cube:scenes/models/cube.obj:--flat t-ico320:scenes/models/ico320.obj:; do

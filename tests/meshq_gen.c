@@ -78,6 +78,9 @@ int main(int argc, char **argv)
             in.m[0][1], in.m[0][2], in.m[1][0], in.m[1][1], in.m[1][2], in.m[2][0], in.m[2][1], in.m[2][2]);
     fprintf(f, "#define MESHQ_E %d\nstatic const int32_t meshq_t[3] = {%d, %d, %d};\n", in.e, num_to_q16(in.t.x),
             num_to_q16(in.t.y), num_to_q16(in.t.z));
+    fprintf(f, "static const int32_t meshq_f[3][3] = {{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}};\n#define MESHQ_FE %d\n",
+            in.f[0][0], in.f[0][1], in.f[0][2], in.f[1][0], in.f[1][1], in.f[1][2], in.f[2][0], in.f[2][1], in.f[2][2],
+            in.fe);
     fprintf(f, "/* per ray: origin, unit direction, tmax (0: none), in Q16.16 */\n");
     fprintf(f, "static const int32_t meshq_rays[%d][7] = {\n", nrays);
     for (int i = 0; i < nrays; i++) {

@@ -24,10 +24,10 @@ mkdir -p "$onb/scenes" "$onb/host"
 . "$(dirname "$0")/onboard_lib.sh"
 ONB_WHAT="qemu_lit.sh: lit scenes on board"
 
-# (and smooth shading, the one node scene whose core code is the boards':
-# nodes and meshes are placed on the host, and their triangles reach the
-# boards as any others; at 80x60 for make test's time)
-scenes=(scenes/lit/*.scene scenes/nodes/smooth.scene)
+# (and two node scenes of models, a mesh's object: their data in flash, a
+# ray per pixel through each one's tree on the board; nodes are placed on
+# the host; at 80x60 for make test's time)
+scenes=(scenes/lit/*.scene scenes/nodes/smooth.scene scenes/nodes/smooth-ico80.scene)
 check "scenes/lit/ has lit scenes (${#scenes[@]})" test -e "${scenes[0]}"
 [ -e "${scenes[0]}" ] || { report qemu_lit; exit; }
 
@@ -83,7 +83,7 @@ fw_run() { # I BOARD FB SIZE: build, run, compare; verdict lines in $out/fw-I.tx
 onb_board() { # BOARD: one batch; on the micro:bit, one ELF per scene if it overflows
     local b=$1 n lit_names=() node_names=()
     for n in "${names[@]}"; do
-        if [ "$n" = smooth ] && [ "$b" = microbit ]; then node_names+=("$n"); else lit_names+=("$n"); fi
+        if [[ $n == smooth* ]] && [ "$b" = microbit ]; then node_names+=("$n"); else lit_names+=("$n"); fi
     done
     : >"$out/onb-$b-nodes.txt"
     if [ ${#node_names[@]} -eq 0 ]; then

@@ -108,9 +108,9 @@ $(SAN_DIFF): $$(call san_path,$$(DIFF_OBJ))
 	@echo "  LD san  $@"
 	$(Q)$(SAN_CC) $(SAN_CFLAGS) -o $@ $(filter %.o,$^) -lm
 
-# tests/test_bvh.c with host/meshbuild.c (the Makefile's bvh_test_rules).
-$(foreach n,$(NUMBERS),$(eval $(call bvh_test_rules,$(n),$(SAN_DIR),$$(SAN_CC),$$(SAN_CFLAGS))))
-SAN_EXTRA_BIN += $(foreach n,$(NUMBERS),$(SAN_DIR)/tests/test_bvh_$(n))
+# tests/test_bvh.c and test_model.c with host/meshbuild.c (the Makefile's bvh_test_rules).
+$(foreach t,$(BVH_TESTS),$(foreach n,$(NUMBERS),$(eval $(call bvh_test_rules,$(n),$(SAN_DIR),$$(SAN_CC),$$(SAN_CFLAGS),$(t)))))
+SAN_EXTRA_BIN += $(foreach t,$(BVH_TESTS),$(foreach n,$(NUMBERS),$(SAN_DIR)/tests/$(t)_$(n)))
 
 # san-build: everything tests/sanitize.sh runs, and the list of test
 # binaries it runs (so the script need not know the Makefile's names).
@@ -146,7 +146,8 @@ $(FUZZ_DIR)/obj/fuzz_scene.o: tests/fuzz_scene.c
 	@echo "  CC fuzz $<"
 	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -Ihost -Icore -c $< -o $@
 
-$(FUZZ_SCENE_BIN): $(FUZZ_DIR)/obj/fuzz_scene.o $(FUZZ_DIR)/obj/scene.o $(FUZZ_DIR)/obj/obj.o $(FUZZ_DIR)/obj/xform.o $(FUZZ_DIR)/obj/errf.o
+$(FUZZ_SCENE_BIN): $(FUZZ_DIR)/obj/fuzz_scene.o $(FUZZ_DIR)/obj/scene.o $(FUZZ_DIR)/obj/obj.o $(FUZZ_DIR)/obj/xform.o $(FUZZ_DIR)/obj/errf.o \
+                  $(FUZZ_DIR)/obj/meshstore.o $(FUZZ_DIR)/obj/meshbuild.o
 	@echo "  LD fuzz $@"
 	$(Q)$(FUZZ_CC) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $(filter %.o,$^) -lm
 

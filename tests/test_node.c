@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "models.h"
 #include "scene.h"
 
 #define CAM "camera perspective eye 0 0 9 gaze 0 0 -1 up 0 1 0 fov 45\n"
@@ -391,27 +392,41 @@ static void test_meshes(const char *dir)
                    "exponent 20");
         write_text(scpath, text);
         int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
-        int ok = rc == 0 && g_scene.count == nt - zero && g_scene.mesh_dropped == zero;
-        for (int i = 0, j = 0; ok && i < nt; i++) {
-            double c[3][3];
-            int degenerate = 1;
-            for (int k = 0; k < 3; k++)
-                memcpy(c[k], v[tri[i][k]], sizeof c[k]);
-            {
-                double u[3], w[3];
-                for (int k = 0; k < 3; k++)
-                    u[k] = c[1][k] - c[0][k], w[k] = c[2][k] - c[0][k];
-                degenerate = u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 &&
-                             u[0] * w[1] - u[1] * w[0] == 0;
+        int ok;
+        if (zero == nt) {
+            /* nothing left to draw: refused */
+            ok = rc != 0 && strstr(g_err, "no triangle of nonzero area") != NULL;
+        } else {
+            const scene_obj_t *o = &g_scene.obj[0];
+            ok = rc == 0 && g_scene.count == 1 && o->kind == SCENE_MODEL && o->material == SCENE_MAT_PHONG &&
+                 o->exponent == 20 && o->specular[1] == 0.5 && o->color[1] == 0.4 && o->mesh->vn == NULL;
+            /* the model's triangles: the file's, less the degenerate ones
+             * (and any that quantising made so, counted as dropped) */
+            ok = ok && (long)o->mesh->n_triangles + (long)g_scene.mesh_dropped == nt && g_scene.mesh_dropped >= zero;
+            /* every vertex of the model where the nodes move one of the
+             * file's, within the quantisation: half a step on each axis
+             * of the model's box, through the nodes' scale */
+            bvh_inst_t in;
+            meshbuild_inst(&o->map, o->mesh, &in);
+            double gain = 1; /* the nodes' largest stretch: the product of their scales' largest factors */
+            for (int d = 0; d < depth; d++)
+                for (int k = 0; k < nest[d].n; k++)
+                    if (nest[d].s[k].type == 0)
+                        gain *= fmax(fabs(nest[d].s[k].v[0]), fmax(fabs(nest[d].s[k].v[1]), fabs(nest[d].s[k].v[2])));
+            double tol = o->store->mb.step * 2 * gain + 1e-6;
+            double moved[40][3];
+            for (int i = 0; i < nv; i++) {
+                memcpy(moved[i], v[i], sizeof moved[i]);
+                apply_nodes(nest, depth, moved[i], 0);
             }
-            if (degenerate)
-                continue;
-            const scene_obj_t *o = &g_scene.obj[j++];
-            ok = o->kind == SCENE_TRIANGLE && o->material == SCENE_MAT_PHONG && o->exponent == 20 &&
-                 o->specular[1] == 0.5 && o->color[1] == 0.4;
-            for (int k = 0; k < 3; k++) {
-                apply_nodes(nest, depth, c[k], 0);
-                ok = ok && vec_close(o->p[k], c[k], 100);
+            for (uint32_t i = 0; ok && i < o->mesh->n_vertices; i++) {
+                double q[3] = {o->mesh->v[i][0], o->mesh->v[i][1], o->mesh->v[i][2]}, w[3], best = 1e30;
+                model_world(&in, q, w);
+                for (int j = 0; j < nv; j++) {
+                    double dx = w[0] - moved[j][0], dy = w[1] - moved[j][1], dz = w[2] - moved[j][2];
+                    best = fmin(best, sqrt(dx * dx + dy * dy + dz * dz));
+                }
+                ok = best <= tol;
             }
         }
         CHECK_SWEEP(ok, "mesh %d: %s", iter, rc ? g_err : text);
@@ -420,7 +435,9 @@ static void test_meshes(const char *dir)
     CHECK_MSG(bad == 0, "300 generated meshes in random nodes: %ld wrong", bad);
 
     /* Smooth meshes: the file's vn per corner, moved by the nodes as
-     * normals; without vn, a lone triangle's corners take its own normal. */
+     * normals (the model's vertex normal through its own map, M^-T n,
+     * normalised); without vn, a lone triangle's corners take its own
+     * normal, and the model is built flat (it shades the same). */
     long bad_vn = 0;
     for (int iter = 0; iter < 500; iter++) {
         static char obj[4096], text[8192];
@@ -439,48 +456,81 @@ static void test_meshes(const char *dir)
                                      t[3], t[4], t[5]);
         }
         snprintf(obj + used, sizeof obj - used, given ? "f 1//1 2//2 3//3\n" : "f 1 2 3\n");
-        if (!given) {
-            double u[3], w[3];
-            for (int k = 0; k < 3; k++)
-                u[k] = v[1][k] - v[0][k], w[k] = v[2][k] - v[0][k];
-            double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-            for (int i = 0; i < 3; i++)
-                memcpy(n[i], c, sizeof c);
-        }
+        double u[3], w[3];
+        for (int k = 0; k < 3; k++)
+            u[k] = v[1][k] - v[0][k], w[k] = v[2][k] - v[0][k];
+        double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+        if (c[0] == 0 && c[1] == 0 && c[2] == 0)
+            continue;
         write_text(objpath, obj);
         node_t nest[3];
         int depth = (int)(rnd() % 4);
         nest_scene(text, sizeof text, nest, depth, ANY, "mesh file ../m.obj color 0.2 0.4 0.6 material lambert");
         write_text(scpath, text);
         int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
-        int ok = rc == 0 && g_scene.count == 1 && g_scene.obj[0].smooth;
-        for (int i = 0; ok && i < 3; i++) {
-            double m[3];
-            moved_normal(nest, depth, n[i], m);
-            ok = vec_close(g_scene.obj[0].vn[i], m, 1);
+        const scene_obj_t *o = &g_scene.obj[0];
+        int ok = rc == 0 && g_scene.count == 1 && o->kind == SCENE_MODEL;
+        if (ok && !given) {
+            ok = o->mesh->vn == NULL && o->store->mb.face_normals;
+        } else if (ok) {
+            /* each model vertex is one of the file's (no splits: each
+             * corner has one normal); its normal as the model shades it */
+            bvh_inst_t in;
+            meshbuild_inst(&o->map, o->mesh, &in);
+            ok = o->mesh->vn != NULL && o->mesh->n_vertices == 3;
+            for (uint32_t i = 0; ok && i < 3; i++) {
+                double q[3] = {o->mesh->v[i][0], o->mesh->v[i][1], o->mesh->v[i][2]}, wv[3], best = 1e30;
+                int which = 0;
+                model_world(&in, q, wv);
+                for (int j = 0; j < 3; j++) {
+                    double p[3] = {v[j][0], v[j][1], v[j][2]};
+                    apply_nodes(nest, depth, p, 0);
+                    double d = fabs(p[0] - wv[0]) + fabs(p[1] - wv[1]) + fabs(p[2] - wv[2]);
+                    if (d < best)
+                        best = d, which = j;
+                }
+                double want[3], got[3], len = 0;
+                moved_normal(nest, depth, n[which], want);
+                for (int k = 0; k < 3; k++) {
+                    got[k] = ldexp(in.m[0][k], -in.e) * o->mesh->vn[i][0] + ldexp(in.m[1][k], -in.e) * o->mesh->vn[i][1] +
+                             ldexp(in.m[2][k], -in.e) * o->mesh->vn[i][2];
+                    len += got[k] * got[k];
+                }
+                for (int k = 0; k < 3; k++)
+                    ok = ok && fabs(got[k] / sqrt(len) - want[k]) <= 2e-4;
+            }
         }
         CHECK_SWEEP(ok, "smooth mesh %d: %s", iter, rc ? g_err : text);
         bad_vn += !ok;
     }
     CHECK_MSG(bad_vn == 0, "500 smooth one-triangle meshes in random nodes: %ld with wrong vertex normals", bad_vn);
 
-    /* Capacity: exactly the triangles that fit, then one more; a refused
-     * mesh names the count. */
-    for (int extra = 0; extra < 2; extra++) {
+    /* Capacity: a mesh of any size is one model (here 1,000 triangles,
+     * far past the triangle kind's capacity); FXRT_MAX_MODELS mesh
+     * statements fit, then one more is refused with the count. */
+    {
         static char obj[1 << 20];
         size_t used = 0;
-        int n = FXRT_MAX_TRIANGLES + extra;
-        for (int i = 0; i < n; i++)
+        for (int i = 0; i < 1000; i++)
             used += (size_t)snprintf(obj + used, sizeof obj - used, "v %d 0 0\nv %d 1 0\nv %d 0 1\nf -3 -2 -1\n", i,
                                      i, i);
         write_text(objpath, obj);
         write_text(scpath, CAM "mesh file ../m.obj shading flat color 1 1 1\n");
         int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
+        CHECK_MSG(rc == 0 && g_scene.count == 1 && g_scene.obj[0].mesh->n_triangles == 1000, "1,000 triangles: %s",
+                  g_err);
+    }
+    for (int extra = 0; extra < 2; extra++) {
+        static char text[1 << 16];
+        size_t used = (size_t)snprintf(text, sizeof text, CAM);
+        for (int i = 0; i < FXRT_MAX_MODELS + extra; i++)
+            used += (size_t)snprintf(text + used, sizeof text - used, "mesh file ../m.obj shading flat color 1 1 1\n");
+        write_text(scpath, text);
+        int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
         if (extra == 0)
-            CHECK_MSG(rc == 0 && g_scene.count == n, "%d triangles fit: %s", n, g_err);
+            CHECK_MSG(rc == 0 && g_scene.count == FXRT_MAX_MODELS, "%d meshes fit: %s", FXRT_MAX_MODELS, g_err);
         else
-            CHECK_MSG(rc != 0 && strstr(g_err, "too many triangles") != NULL,
-                      "%s", g_err);
+            CHECK_MSG(rc != 0 && strstr(g_err, "too many meshes") != NULL, "%s", g_err);
     }
     /* An OBJ error names the scene's file and line first, then the OBJ's own. */
     write_text(objpath, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n");

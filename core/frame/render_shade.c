@@ -40,8 +40,13 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         ray_t ray;
         uint8_t mask = 0;
         cam_ray(cam, x, y, &ray);
-        color_t c = shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade.k[oi] : NULL,
-                                   r->keys ? &mask : NULL);
+        color_t c;
+        FXRT_IF_MODEL(if (o->kind == RENDER_RAYS) /* its triangle: the visibility pass's (vis/model.c) */
+                      c = shade_model_k(r->vis.world, o->index, &ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
+                                        r->keys ? &mask : NULL);
+                      else)
+        c = shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade.k[oi] : NULL,
+                           r->keys ? &mask : NULL);
         if (r->keys)
             r->keys[x] = render_key(o->id, mask);
         if (!lit)

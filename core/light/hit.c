@@ -10,6 +10,25 @@ color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const r
     return shade_object_k(w, kind, index, ray, NULL, mask);
 }
 
+/* The colour at the ray's t on object obj (kind, index), whose geometric
+ * normal there is n: the light sum and the bounces. */
+static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w, const geom_common_t *obj,
+                                                               geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
+                                                               const ray_t *ray, num_t t, const vec3_t *n,
+                                                               const shade_k_t *k, uint8_t *mask)
+{
+    /* A camera ray (unit d, shade.h): in Q16.16, for |t| < 16384, t d
+     * needs no saturation test (vec3_scale_unit_small, the same value;
+     * -0.75 % on the lit set on the M3). */
+    vec3_t p = NUM_EXACT && t < num_from_int(16384) && t > -num_from_int(16384)
+                   ? vec3_add(ray->o, vec3_scale_unit_small(ray->d, t))
+                   : ray_at(ray, t);
+    color_t c = shade_sum(w, obj, kind, index GEOM_PART_ARG(part), &p, n, &ray->d, k, mask);
+    if (FXRT_MAX_DEPTH > 0 && material_bounces(obj->mat.kind))
+        c = trace_bounces(w, kind, index GEOM_PART_ARG(part), ray, p, *n, c);
+    return c;
+}
+
 color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
                        uint8_t *mask)
 {
@@ -18,21 +37,33 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
         return obj->color;
     num_t t = NUM_ZERO;
     vec3_t n = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    /* A model's surface names the part met (scene/kinds.h, geom_part_t). */
+    FXRT_IF_MODEL(geom_part_t part_met; const geom_part_t *part = NULL;
+                  if (kind == GEOM_MODEL) {
+                      geom_model_surface_part(&w->models[index], ray, BVH_NONE, &t, &n, &part_met);
+                      part = &part_met;
+                  } else)
     switch (kind) {
 #define HIT_SURFACE(K, k, ks, ...) FXRT_IF_##K(case GEOM_##K: geom_##k##_surface(&w->ks[index], ray, &t, &n); break;)
         FXRT_KINDS(HIT_SURFACE)
 #undef HIT_SURFACE
     default: break;
     }
-    /* A camera ray (unit d, shade.h): in Q16.16, for |t| < 16384, t d
-     * needs no saturation test (vec3_scale_unit_small, the same value;
-     * -0.75 % on the lit set on the M3). */
-    vec3_t p = NUM_EXACT && t < num_from_int(16384) && t > -num_from_int(16384)
-                   ? vec3_add(ray->o, vec3_scale_unit_small(ray->d, t))
-                   : ray_at(ray, t);
-    color_t c = shade_sum(w, obj, kind, index, &p, &n, &ray->d, k, mask);
-    if (FXRT_MAX_DEPTH > 0 && material_bounces(obj->mat.kind))
-        c = trace_bounces(w, kind, index, ray, p, n, c);
-    return c;
+    return shade_hit(w, obj, kind, index GEOM_PART_ARG(part), ray, t, &n, k, mask);
 }
+
+#if FXRT_MAX_MODELS > 0
+color_t shade_model_k(const world_t *w, uint16_t index, const ray_t *ray, uint32_t tri, const shade_k_t *k,
+                      uint8_t *mask)
+{
+    const geom_common_t *obj = &w->models[index].obj;
+    if (obj->mat.kind == MATERIAL_FLAT && !mask)
+        return obj->color;
+    num_t t;
+    vec3_t n;
+    geom_part_t part;
+    geom_model_surface_part(&w->models[index], ray, tri, &t, &n, &part);
+    return shade_hit(w, obj, GEOM_MODEL, index, &part, ray, t, &n, k, mask);
+}
+#endif
 #endif

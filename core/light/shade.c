@@ -117,10 +117,10 @@ static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, vec3_t
 }
 #endif
 
-color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
-                    uint8_t *mask)
+color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, vec3_t p, vec3_t n_geo,
+                    vec3_t d, uint8_t *mask)
 {
-    return shade_point_k(w, kind, index, p, n_geo, d, NULL, mask);
+    return shade_point_k(w, kind, index GEOM_PART_ARG(part), p, n_geo, d, NULL, mask);
 }
 
 
@@ -129,12 +129,12 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p
  * shade_lights, not shade_sum: no cycle in the call graph
  * (tests/norecurse.sh). */
 __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
-                                                      uint16_t index, const vec3_t *p, const vec3_t *n_geo,
-                                                      const vec3_t *d, uint8_t *mask)
+                                                      uint16_t index GEOM_PART_PARAM, const vec3_t *p,
+                                                      const vec3_t *n_geo, const vec3_t *d, uint8_t *mask)
 {
     shade_k_t own;
     shade_consts(w, obj, &own);
-    return shade_lights(w, obj, kind, index, p, n_geo, d, &own, mask);
+    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, d, &own, mask);
 }
 
 #if FXRT_PHONG
@@ -157,7 +157,7 @@ static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const
 
 /* The light loop of shade_sum (k not NULL when the material is lit and
  * not transparent). */
-color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index,
+color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
                      const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
                             uint8_t *mask)
 {
@@ -180,6 +180,10 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
                    bool smooth = kind == GEOM_TRIANGLE && w->triangles[index].smooth &&
                                  geom_smooth_normal(&w->triangles[index], p, &ns);
                    if (smooth) n = vec3_dotw_units(d, ns) > 0 ? vec3_neg_unit(ns) : ns;)
+    /* A smooth model: the same, with the normal its surface gave
+     * (scene/model.c) and its triangle's winding normal as the face's. */
+    FXRT_IF_MODEL(vec3_t n_wind = n; bool msmooth = part && part->smooth;
+                  if (msmooth) n = vec3_dotw_units(d, part->ns) > 0 ? vec3_neg_unit(part->ns) : part->ns;)
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
     (void)kind, (void)index; /* only shadow rays need to know the object */
@@ -229,12 +233,13 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
             continue; /* behind the surface: no shadow ray either */
 #if FXRT_SHADOWS
         FXRT_IF_SMOOTH(if (smooth && L->shadows && vec3_dotw_units(n_face, l) <= 0) continue;) /* the terminator */
+        FXRT_IF_MODEL(if (msmooth && L->shadows && vec3_dotw_units(n_wind, l) <= 0) continue;)
 #if SHADOW_CULL
         const shadow_cull_t *cull = k && k->cull ? k->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
 #else
         const shadow_cull_row_t *cull = NULL;
 #endif
-        if (L->shadows && shadow_blocked(w, kind, index, obj, inside, &p, L, &l, dist, cull))
+        if (L->shadows && shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, &p, L, &l, dist, cull))
             continue;
 #endif
         bits = (uint8_t)(bits | (1u << i));
@@ -253,23 +258,23 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
 }
 
 #if !FX_HAVE_UMULL
-color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index, const vec3_t *p,
-                  const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask)
+color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
+                  const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask)
 {
-    return shade_sum_inline(w, obj, kind, index, p, n_geo, d, k, mask);
+    return shade_sum_inline(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, d, k, mask);
 }
 #endif
 
-color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
-                      const shade_k_t *k, uint8_t *mask)
+color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, vec3_t p, vec3_t n_geo,
+                      vec3_t d, const shade_k_t *k, uint8_t *mask)
 {
     const geom_common_t *obj = world_common(w, kind, index);
     /* Without the caller's constants (the bounce loop, the ray caster), a
      * lit opaque material goes straight to shade_sum_own, so that one
      * shade_sum frame, not two, is on the stack (16 KB boards). */
     if (!k && obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_TRANSPARENT)
-        return shade_sum_own(w, obj, kind, index, &p, &n_geo, &d, mask);
-    return shade_sum(w, obj, kind, index, &p, &n_geo, &d, k, mask);
+        return shade_sum_own(w, obj, kind, index GEOM_PART_ARG(part), &p, &n_geo, &d, mask);
+    return shade_sum(w, obj, kind, index GEOM_PART_ARG(part), &p, &n_geo, &d, k, mask);
 }
 
 #endif

@@ -122,12 +122,19 @@ color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const r
 color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
                        uint8_t *mask);
 
+/* shade_object_k for model `index` along a camera ray whose nearest
+ * triangle tri is known (the visibility pass found it): that triangle is
+ * intersected alone, the same t and weights as the walk's. */
+color_t shade_model_k(const world_t *w, uint16_t index, const ray_t *ray, uint32_t tri, const shade_k_t *k,
+                      uint8_t *mask);
+
 /* The light sum at hit point p of object (kind, index) with geometric unit
- * normal n_geo (not yet turned) for a ray of unit direction d. */
-color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
-                    uint8_t *mask);
-color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t p, vec3_t n_geo, vec3_t d,
-                      const shade_k_t *k, uint8_t *mask);
+ * normal n_geo (not yet turned) for a ray of unit direction d; part, where
+ * models are compiled in: the part of a model met (NULL for other kinds). */
+color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, vec3_t p, vec3_t n_geo,
+                    vec3_t d, uint8_t *mask);
+color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, vec3_t p, vec3_t n_geo,
+                      vec3_t d, const shade_k_t *k, uint8_t *mask);
 
 /* Shadow ray (FXRT_SHADOWS 1): is light `l`, in unit direction ldir at
  * distance dist (NUM_MAX for a directional light) from p, blocked? p lies
@@ -139,10 +146,12 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index, vec3_t
  * blocks the light exactly when the light is outside it (always for a
  * directional light). Every other object is tested with the world-space
  * kernels, t limited to (0, dist), stopping at the first hit. */
-/* obj: world_common(w, kind, index). cull: the light's row of the cull
- * table, or NULL (no culling). */
-bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
-                    const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
+/* A model is not convex: a ray from its surface leaves out only the
+ * triangle it starts on (part), and tests the model's others with its
+ * other objects (self-shadowing). obj: world_common(w, kind, index).
+ * cull: the light's row of the cull table, or NULL (no culling). */
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const geom_common_t *obj,
+                    bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
 
 /* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST
  * from p may lie beyond the range (shade_lights computes |v| within 0.5

@@ -195,9 +195,16 @@ enum { SHADOW_CULLS = SHADOW_CULL };
 
 /* world_occluded, skipping what rc rules out (mode: how). An object's cull
  * entry is read before the object (the table is small and contiguous);
- * the object itself is skipped by its id when its entry did not cull it. */
+ * the object itself is skipped by its id when its entry did not cull it,
+ * but a model (FORM RAYS) only leaves out its triangle skip_tri. */
+#define SHADOW_HITS(k, form, o) SHADOW_HITS_##form(k, o)
+#define SHADOW_HITS_FLAT(k, o) ((o)->obj.id != skip_id && SHADOW_CASTS((o)->obj) && geom_##k##_occludes(o, ray, tmax))
+#define SHADOW_HITS_ROUND SHADOW_HITS_FLAT
+#define SHADOW_HITS_FACES SHADOW_HITS_FLAT
+#define SHADOW_HITS_RAYS(k, o)                                                                                \
+    (SHADOW_CASTS((o)->obj) && geom_##k##_occludes_from(o, ray, tmax, (o)->obj.id == skip_id ? skip_tri : BVH_NONE))
 static inline __attribute__((always_inline)) bool shadow_occluded_loop(const world_t *w, const ray_t *ray, num_t tmax,
-                                                                      uint16_t skip_id, const shadow_ray_cull_t *rc,
+                                                                      uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri), const shadow_ray_cull_t *rc,
                                                                       int mode)
 {
     (void)rc, (void)mode;
@@ -211,17 +218,17 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
         rc = &own;
     }
     /* Per kind, its objects: an unbounded kind's have no cull entry. */
-#define SHADOW_LOOP(K, k, ks, cap, solid, bounded, ...) FXRT_IF_##K(SHADOW_LOOP_##bounded(K, k, ks))
-#define SHADOW_LOOP_0(K, k, ks)                                                                               \
+#define SHADOW_LOOP(K, k, ks, cap, solid, bounded, form, ...) FXRT_IF_##K(SHADOW_LOOP_##bounded(K, k, ks, form))
+#define SHADOW_LOOP_0(K, k, ks, form)                                                                         \
     for (uint16_t i = 0; i < w->n_##ks; i++)                                                                  \
-        if (w->ks[i].obj.id != skip_id && SHADOW_CASTS(w->ks[i].obj) && geom_##k##_occludes(&w->ks[i], ray, tmax)) \
+        if (SHADOW_HITS(k, form, &w->ks[i]))                                                                  \
             return true;
-#define SHADOW_LOOP_1(K, k, ks)                                                                               \
+#define SHADOW_LOOP_1(K, k, ks, form)                                                                         \
     {                                                                                                         \
         const shadow_cull_t *e = SHADOW_ROW(SHADOW_SLOT_##K);                                                 \
         const geom_##k##_t *o = w->ks;                                                                        \
         for (uint16_t n = w->n_##ks; n > 0; n--, o++) {                                                       \
-            if (!SHADOW_SKIP(e) && o->obj.id != skip_id && SHADOW_CASTS(o->obj) && geom_##k##_occludes(o, ray, tmax)) \
+            if (!SHADOW_SKIP(e) && SHADOW_HITS(k, form, o))                                                   \
                 return true;                                                                                  \
             SHADOW_NEXT(e);                                                                                   \
         }                                                                                                     \
@@ -235,25 +242,26 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
 
 /* The loop without culling (world_occluded, and shadow rays without a
  * table) and, with SHADOW_CULL, one instance per kind of light. */
-static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
+static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri))
 {
-    return shadow_occluded_loop(w, ray, tmax, skip_id, NULL, SHADOW_CULL_NONE);
+    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), NULL, SHADOW_CULL_NONE);
 }
-static bool shadow_occluded_pt(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
+static bool shadow_occluded_pt(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri),
                                const shadow_ray_cull_t *rc)
 {
-    return shadow_occluded_loop(w, ray, tmax, skip_id, rc, SHADOW_CULL_PT);
+    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, SHADOW_CULL_PT);
 }
-static bool shadow_occluded_dir(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id,
+static bool shadow_occluded_dir(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri),
                                 const shadow_ray_cull_t *rc)
 {
-    return shadow_occluded_loop(w, ray, tmax, skip_id, rc, SHADOW_CULL_DIR);
+    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, SHADOW_CULL_DIR);
 }
 
 /* A directional light's ray: its projections (out of line: shadow_blocked's
  * frame stays small on the M0). */
 static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const ray_t *ray, num_t tmax,
-                                                        uint16_t skip_id, shadow_ray_cull_t *rc, const vec3_t *p,
+                                                        uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri), shadow_ray_cull_t *rc,
+                                                        const vec3_t *p,
                                                         const uint8_t axes[2])
 {
     rc->p1 = shadow_proj(*p, rc->ldir, axes[0]);
@@ -261,11 +269,11 @@ static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const
 #if FXRT_NUMBER != FXRT_Q16
     rc->slack = num_mul(CULL_REL, shadow_l1(*p));
 #endif
-    return shadow_occluded_dir(w, ray, tmax, skip_id, rc);
+    return shadow_occluded_dir(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc);
 }
 
-bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const geom_common_t *obj, bool inside,
-                    const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
+bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const geom_common_t *obj,
+                    bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
 {
     FXRT_COUNT(shadow_rays);
     bool solid = (GEOM_SOLID_KINDS >> kind) & 1u;
@@ -281,21 +289,23 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index, const ge
         tmax = NUM_MAX - 1;
     }
     uint16_t id = obj->id;
+    FXRT_IF_MODEL(uint32_t skip_tri = part ? part->tri : BVH_NONE;)
     if (SHADOW_CULL && cull) {
         shadow_ray_cull_t rc;
         rc.row = cull;
         rc.ldir = *ldir;
         rc.dist = dist;
         if (l->kind == LIGHT_DIRECTIONAL)
-            return shadow_blocked_dir(w, &ray, tmax, id, &rc, p, l->axes);
-        return shadow_occluded_pt(w, &ray, tmax, id, &rc);
+            return shadow_blocked_dir(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc, p, l->axes);
+        return shadow_occluded_pt(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc);
     }
-    return shadow_occluded(w, &ray, tmax, id);
+    return shadow_occluded(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri));
 }
 
 bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
 {
-    return shadow_occluded(w, ray, tmax, skip_id);
+    FXRT_IF_MODEL(const uint32_t skip_tri = BVH_NONE;) /* (a model skip_id: all of it) */
+    return shadow_occluded(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri));
 }
 
 #endif

@@ -6,13 +6,15 @@
 
 /* A pending ray: where it starts, where it goes, its weight, its bounce,
  * and the object it leaves (`from`, an id) with whether it goes into that
- * object (a solid's interior: the medium it travels in). */
+ * object (a solid's interior: the medium it travels in); leaving a model,
+ * the triangle it leaves (from_tri), the only part of it not tested. */
 typedef struct {
     ray_t ray;
     color_t w;
     uint16_t from;
     uint8_t bounce;
     bool inward;
+    FXRT_IF_MODEL(uint32_t from_tri;)
 } trace_ray_t;
 
 /* The nearest hit of a secondary ray. */
@@ -70,22 +72,28 @@ __attribute__((noinline)) static bool trace_nearest(const world_t *w, const trac
     /* The unbounded kinds first; the bounded ones only when the ray
      * meets their bounds. A solid the ray starts in is met where the ray
      * leaves it (its exit), any other object the ray leaves is not met. */
-#define TRACE_KIND(K, k, ks, cap, solid)                                                                      \
+#define TRACE_KIND(K, k, ks, cap, solid, form)                                                                \
     for (uint16_t i = 0; i < w->n_##ks; i++) {                                                                \
         const geom_##k##_t *o = &w->ks[i];                                                                    \
-        TRACE_KIND_##solid(K, k)                                                                              \
+        TRACE_KIND_##solid(K, k, form)                                                                        \
     }
-#define TRACE_KIND_0(K, k)                                                                                    \
-    if (o->obj.id != tr->from && geom_##k##_hit(o, ray, &t))                                                  \
+#define TRACE_KIND_0(K, k, form)                                                                              \
+    if (TRACE_HITS_##form(k))                                                                                 \
         trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, false);
-#define TRACE_KIND_1(K, k)                                                                                    \
+#define TRACE_HITS_FLAT(k) (o->obj.id != tr->from && geom_##k##_hit(o, ray, &t))
+#define TRACE_HITS_ROUND TRACE_HITS_FLAT
+#define TRACE_HITS_FACES TRACE_HITS_FLAT
+#define TRACE_HITS_RAYS(k) geom_##k##_hit_from(o, ray, o->obj.id == tr->from ? tr->from_tri : BVH_NONE, &t)
+#define TRACE_KIND_1(K, k, form)                                                                                  \
     if (o->obj.id == tr->from) {                                                                              \
         if (tr->inward && geom_##k##_exit(o, ray, &t, &n))                                                    \
             trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, true);                                     \
     } else if (geom_##k##_hit(o, ray, &t))                                                                    \
         trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, false);
-#define TRACE_UNBOUNDED(K, k, ks, cap, solid, bounded, ...) FXRT_UNLESS(bounded, FXRT_IF_##K(TRACE_KIND(K, k, ks, cap, solid)))
-#define TRACE_BOUNDED(K, k, ks, cap, solid, bounded, ...) FXRT_WHEN(bounded, FXRT_IF_##K(TRACE_KIND(K, k, ks, cap, solid)))
+#define TRACE_UNBOUNDED(K, k, ks, cap, solid, bounded, form, ...)                                            \
+    FXRT_UNLESS(bounded, FXRT_IF_##K(TRACE_KIND(K, k, ks, cap, solid, form)))
+#define TRACE_BOUNDED(K, k, ks, cap, solid, bounded, form, ...)                                              \
+    FXRT_WHEN(bounded, FXRT_IF_##K(TRACE_KIND(K, k, ks, cap, solid, form)))
     FXRT_KINDS(TRACE_UNBOUNDED)
     if (!trace_in_bounds(w, ray)) {
         FXRT_COUNT(bounds_skips);
@@ -103,8 +111,13 @@ __attribute__((noinline)) static bool trace_nearest(const world_t *w, const trac
  * that their temporaries are not all in trace_bounces' frame at once while
  * it shades (the 2 KB stack of the micro:bit). */
 __attribute__((noinline)) static void trace_surface(const world_t *w, const trace_hit_t *h, const ray_t *ray, num_t *t,
-                                                    vec3_t *n)
+                                                    vec3_t *n FXRT_IF_MODEL(, geom_part_t *part))
 {
+    FXRT_IF_MODEL(part->tri = BVH_NONE; part->smooth = false;
+                  if (h->kind == GEOM_MODEL) {
+                      geom_model_surface_part(&w->models[h->index], ray, BVH_NONE, t, n, part);
+                      return;
+                  })
     switch (h->kind) {
 #define TRACE_SURFACE(K, k, ks, cap, solid, ...)                                                              \
     FXRT_IF_##K(case GEOM_##K:                                                                                \
@@ -144,7 +157,10 @@ typedef struct {
     vec3_t p, n_geo, d;
     color_t w;
     uint8_t bounce;
+    FXRT_IF_MODEL(geom_part_t part;) /* a model's part met (tri BVH_NONE: another kind) */
 } trace_node_t;
+/* The ray's triangle left out: a child ray leaves the node's. */
+#define TRACE_FROM(nd) FXRT_IF_MODEL(, (nd)->part.tri)
 
 /* The children of a node (at most two): their rays, the first in *out0,
  * the second in *out1 (returns how many, 0..2). */
@@ -164,7 +180,7 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     if (m->kind == MATERIAL_REFLECTIVE) {
         color_t wr = color_mul(nd->w, m->reflection);
         if (!trace_cut(wr) && trace_dir_ok(r))
-            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
+            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside TRACE_FROM(nd)};
         return k;
     }
     /* Transparent. */
@@ -176,7 +192,7 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     if (cos2_t < NUM_ZERO) {
         /* Total internal reflection: the reflected ray with the full weight. */
         if (!trace_cut(nd->w) && trace_dir_ok(r))
-            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, nd->w, nd->obj->id, b, inside};
+            *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, nd->w, nd->obj->id, b, inside TRACE_FROM(nd)};
         return k;
     }
     num_t cos_t = num_sqrt(cos2_t);
@@ -194,9 +210,9 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     color_t tint = color_make(num_div(c.r, k255), num_div(c.g, k255), num_div(c.b, k255));
     color_t wt = color_scale(color_mul(nd->w, tint), num_sub(NUM_ONE, R));
     if (!trace_cut(wr) && trace_dir_ok(r))
-        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside};
+        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, r}, wr, nd->obj->id, b, inside TRACE_FROM(nd)};
     if (!trace_cut(wt) && trace_dir_ok(td))
-        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, td}, wt, nd->obj->id, b, !inside};
+        *(k++ == 0 ? out0 : out1) = (trace_ray_t){{nd->p, td}, wt, nd->obj->id, b, !inside TRACE_FROM(nd)};
     return k;
 }
 
@@ -207,15 +223,17 @@ FXRT_IF_SMOOTH(static void trace_smooth(const world_t *w, geom_kind_t kind, uint
         (void)geom_smooth_normal(&w->triangles[index], p, n);
 })
 
-color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
-                      color_t local)
+color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const ray_t *ray, vec3_t p,
+                      vec3_t n_geo, color_t local)
 {
     trace_ray_t stack[TRACE_STACK_ENTRIES], spare;
     int sp = 0;
     color_t acc = local; /* the primary hit's weight is 1 */
     trace_node_t nd = {world_common(w, kind, index), p, n_geo, ray->d,
-                       color_make(NUM_ONE, NUM_ONE, NUM_ONE), 0};
+                       color_make(NUM_ONE, NUM_ONE, NUM_ONE), 0 FXRT_IF_MODEL(, {BVH_NONE, false, {NUM_ZERO, NUM_ZERO, NUM_ZERO}})};
     FXRT_IF_SMOOTH(trace_smooth(w, kind, index, p, &nd.n_geo);)
+    /* A smooth model reflects about its smooth normal too. */
+    FXRT_IF_MODEL(if (part) nd.part = *part; if (nd.part.smooth) nd.n_geo = nd.part.ns;)
     bool have = true; /* nd holds a node whose children are still to be made */
     for (;;) {
         trace_ray_t next;
@@ -241,15 +259,16 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const 
         }
         num_t t;
         vec3_t n;
-        trace_surface(w, &h, &next.ray, &t, &n);
+        trace_surface(w, &h, &next.ray, &t, &n FXRT_IF_MODEL(, &nd.part));
         nd.obj = world_common(w, h.kind, h.index);
         nd.p = ray_at(&next.ray, t);
         nd.n_geo = n;
         nd.d = next.ray.d;
         nd.w = next.w;
         nd.bounce = next.bounce;
-        color_t c = shade_point_k(w, h.kind, h.index, nd.p, n, nd.d, NULL, NULL);
+        color_t c = shade_point_k(w, h.kind, h.index GEOM_PART_ARG(&nd.part), nd.p, n, nd.d, NULL, NULL);
         FXRT_IF_SMOOTH(trace_smooth(w, h.kind, h.index, nd.p, &nd.n_geo);)
+        FXRT_IF_MODEL(if (nd.part.smooth) nd.n_geo = nd.part.ns;)
         acc = color_add(acc, color_mul(c, nd.w));
         have = true;
     }

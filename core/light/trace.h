@@ -24,8 +24,8 @@
  * (kind, index) at point p with geometric normal n_geo, given that hit's
  * local colour `local` (shade_point_k, already with the caller's per-frame
  * constants): local plus everything the bounces bring back. */
-color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, vec3_t p, vec3_t n_geo,
-                      color_t local);
+color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const ray_t *ray, vec3_t p,
+                      vec3_t n_geo, color_t local);
 
 /* Stack entries of the bounce loop (for the stack figures). */
 #define TRACE_STACK_ENTRIES FXRT_MAX_DEPTH

@@ -564,6 +564,24 @@ bool bvh_any(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip)
     return bvh_walk(in, ray, tmax, skip, false, &unused);
 }
 
+bool bvh_hit_tri(const bvh_inst_t *in, const ray_t *ray, uint32_t tri, bvh_hit_t *hit)
+{
+    bvh_ray_t r;
+    bvh_cand_t c;
+    if (tri >= in->mesh->n_triangles || !bvh_ray_make(in, ray, NUM_MAX, &r) || !bvh_triangle(in->mesh, &r, tri, &c))
+        return false;
+    num_t t = bvh_cand_t_world(&r, &c); /* (the walk's value for it) */
+    if (!(t > NUM_ZERO))
+        return false;
+    hit->tri = tri;
+    hit->t = t;
+    if (NUM_EXACT)
+        bvh_weights_q(in->mesh, &r, tri, hit->w);
+    else
+        bvh_weights_f(in->mesh, &r, tri, t, hit->w);
+    return true;
+}
+
 /* ---- normals ---------------------------------------------------------------- */
 
 /* The world direction of mesh-space normal v (M^-T v = m^T v 2^-e; the
@@ -646,11 +664,12 @@ static bool bvh_in_box(const bvh_node_t *nd, const int16_t p[3])
 
 bool bvh_check(const bvh_inst_t *in)
 {
-    if (!in || !in->mesh || in->e < 0 || in->e > 62)
+    if (!in || !in->mesh || in->e < 0 || in->e > 62 || in->fe < 0 || in->fe > 62)
         return false;
     for (int j = 0; j < 3; j++)
         for (int k = 0; k < 3; k++)
-            if (in->m[j][k] >= (1 << 30) || in->m[j][k] <= -(1 << 30))
+            if (in->m[j][k] >= (1 << 30) || in->m[j][k] <= -(1 << 30) || in->f[j][k] >= (1 << 30) ||
+                in->f[j][k] <= -(1 << 30))
                 return false;
     if (geom_check_point(in->t) != FXRT_OK)
         return false;

@@ -62,13 +62,18 @@ typedef struct {
 } bvh_mesh_t;
 
 /* An instance: its mesh and the map from the world back to mesh space,
- * q = m 2^-e (w - T) (host/meshbuild.c makes m, e and T from the node's
- * transform and the quantisation). */
+ * q = m 2^-e (w - T), which the queries use, and the forward map w = f
+ * 2^-fe q + T, which gives the model's box in the world (geom_model_box,
+ * scene/model.c).
+ * host/meshbuild.c makes both from the node's transform and the
+ * quantisation; bvh_check holds them to be each other's inverse. */
 typedef struct {
     const bvh_mesh_t *mesh;
     int32_t m[3][3]; /* |m| < 2^30 */
     int32_t e;       /* 0 .. 62 */
     vec3_t t;
+    int32_t f[3][3]; /* |f| < 2^30 */
+    int32_t fe;      /* 0 .. 62 */
 } bvh_inst_t;
 
 /* A hit: the triangle (in tree order) and its world t; w, the weights of
@@ -97,6 +102,10 @@ bool bvh_check(const bvh_inst_t *in);
 bool bvh_nearest(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bvh_hit_t *hit);
 /* Is some triangle other than skip hit with 0 < t < tmax? */
 bool bvh_any(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip);
+/* Triangle tri alone (one that bvh_nearest found on this ray): the same t
+ * and weights as bvh_nearest gives for it, without the walk. False when
+ * the ray does not meet it in front (or tri is out of range). */
+bool bvh_hit_tri(const bvh_inst_t *in, const ray_t *ray, uint32_t tri, bvh_hit_t *hit);
 
 /* Triangle i's vertex indices. */
 static inline void bvh_tri(const bvh_mesh_t *m, uint32_t i, uint32_t v[3])

@@ -14,16 +14,19 @@
  *   BOUNDED   1: it is finite (secondary rays' bounds, shadow culling)
  *   FORM      what the visibility pass makes of it (vis/render.h):
  *             FLAT one flat piece (N, D and its edge forms), ROUND a
- *             sphere's forms, FACES flat pieces from the box-face pool
+ *             sphere's forms, FACES flat pieces from the box-face pool,
+ *             RAYS none: a ray per pixel of its bounds (a model's BVH)
  *   EDGES     a FLAT piece's edge forms (0..3)
  *   Fi Ti     its fields, in the scene language's words and in the order
  *             of geom_desc_t's p[] (a RADIUS field is its radius): name
  *             and type (POINT, DIR nonzero, RADIUS, MAX a point not below
- *             the field before on any axis; _ NONE for an unused one)
+ *             the field before on any axis, INST a model's placed mesh,
+ *             geom_desc_t's inst; _ NONE for an unused one)
  * In world order: planes first (the renderer's planes lead its objects). */
 #ifndef FXRT_SCENE_KINDS_H
 #define FXRT_SCENE_KINDS_H
 
+#include "scene/bvh.h"
 #include "scene/geom.h"
 
 /*  X(KIND,     kind,     kinds,     CAPACITY,           SOLID BOUNDED FORM   EDGES  fields ...) */
@@ -31,7 +34,8 @@
     X(PLANE,    plane,    planes,    FXRT_MAX_PLANES,    0,    0,      FLAT,  0,     point, POINT, normal, DIR, _, NONE) \
     X(SPHERE,   sphere,   spheres,   FXRT_MAX_SPHERES,   1,    1,      ROUND, 0,     center, POINT, radius, RADIUS, _, NONE) \
     X(TRIANGLE, triangle, triangles, FXRT_MAX_TRIANGLES, 0,    1,      FLAT,  3,     a, POINT, b, POINT, c, POINT) \
-    X(BOX,      box,      boxes,     FXRT_MAX_BOXES,     1,    1,      FACES, 0,     min, POINT, max, MAX, _, NONE)
+    X(BOX,      box,      boxes,     FXRT_MAX_BOXES,     1,    1,      FACES, 0,     min, POINT, max, MAX, _, NONE) \
+    X(MODEL,    model,    models,    FXRT_MAX_MODELS,    0,    1,      RAYS,  0,     mesh, INST, _, NONE, _, NONE)
 
 /* FXRT_IF_KIND(...): its arguments where the kind is compiled in, nothing
  * where its capacity is 0. */
@@ -54,6 +58,11 @@
 #define FXRT_IF_BOX(...) __VA_ARGS__
 #else
 #define FXRT_IF_BOX(...)
+#endif
+#if FXRT_MAX_MODELS > 0
+#define FXRT_IF_MODEL(...) __VA_ARGS__
+#else
+#define FXRT_IF_MODEL(...)
 #endif
 
 /* FXRT_IF_SMOOTH(...): its arguments where smooth shading is compiled in
@@ -105,6 +114,9 @@ typedef struct {
     /* A triangle's vertex normals (any nonzero length; normalised when
      * added) where smooth is true: it is shaded smooth (scene/smooth.c). */
     FXRT_IF_SMOOTH(bool smooth; vec3_t vn[3];)
+    /* A model's mesh and placement (copied when added; the mesh data it
+     * points to must outlive the world). */
+    FXRT_IF_MODEL(const bvh_inst_t *inst;)
 } geom_desc_t;
 
 /* ---- the records --------------------------------------------------------- */
@@ -135,6 +147,29 @@ typedef struct {
     geom_common_t obj;
 } geom_box_t;
 
+/* A model: a mesh in constant data placed in the world (scene/model.c).
+ * lo, hi: a box around it in world space (from the placement's forward
+ * map, padded). */
+typedef struct {
+    bvh_inst_t in;
+    vec3_t lo, hi;
+    geom_common_t obj;
+} geom_model_t;
+
+/* Where a ray met a model (its parts are triangles): the triangle, and
+ * the shading normal there (unit, not yet turned towards the ray) where
+ * smooth. Shadow and secondary rays leave that triangle out, not the
+ * model (light/shadow.c, light/trace.c). Other kinds have no parts: the
+ * shading path passes NULL. GEOM_PART_PARAM and GEOM_PART_ARG add the
+ * argument to a parameter list where models are compiled in. */
+typedef struct {
+    uint32_t tri;
+    bool smooth;
+    vec3_t ns;
+} geom_part_t;
+#define GEOM_PART_PARAM FXRT_IF_MODEL(, const geom_part_t *part)
+#define GEOM_PART_ARG(x) FXRT_IF_MODEL(, x)
+
 /* Each kind's constructor and domain check, on its fields as written. */
 bool geom_plane_make(geom_plane_t *p, vec3_t point, vec3_t normal, color_t color, uint16_t id);
 bool geom_sphere_make(geom_sphere_t *s, vec3_t center, num_t radius, color_t color, uint16_t id);
@@ -144,6 +179,21 @@ fxrt_err_t geom_plane_check(vec3_t point, vec3_t normal, color_t color);
 fxrt_err_t geom_sphere_check(vec3_t center, num_t radius, color_t color);
 fxrt_err_t geom_triangle_check(vec3_t a, vec3_t b, vec3_t c, color_t color);
 fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color);
+bool geom_model_make(geom_model_t *m, const bvh_inst_t *inst, color_t color, uint16_t id);
+fxrt_err_t geom_model_check(const bvh_inst_t *inst, color_t color);
+/* A model's box in world space, lo <= hi: every point of the mesh as the
+ * queries place it lies inside (the forward map's corners of the root
+ * box, padded by what the two maps may disagree). False when the box
+ * reaches beyond FXRT_COORD_LIMIT, or the two maps are not each other's
+ * inverse within 2^-12. Call after bvh_check. */
+bool geom_model_box(const bvh_inst_t *in, vec3_t *lo, vec3_t *hi);
+/* A model's nearest hit and its surface with the part met (*part): the
+ * triangle known (BVH_NONE: none, the walk finds it) intersected alone;
+ * and its shadow test with the triangle skip (BVH_NONE: none) left out. */
+void geom_model_surface_part(const geom_model_t *o, const ray_t *ray, uint32_t known, num_t *t, vec3_t *n,
+                             geom_part_t *part);
+bool geom_model_hit_from(const geom_model_t *o, const ray_t *ray, uint32_t skip, num_t *t);
+bool geom_model_occludes_from(const geom_model_t *o, const ray_t *ray, num_t tmax, uint32_t skip);
 /* Smooth triangles (scene/smooth.c; called only where FXRT_SMOOTH):
  *   geom_smooth_check  d's vertex normals, where d->smooth: FXRT_OK,
  *                      FXRT_ERR_KIND (smooth on another kind),
@@ -210,10 +260,12 @@ FXRT_KINDS(GEOM_SOLID_API)
 #define GEOM_ARG_DIR GEOM_ARG_POINT
 #define GEOM_ARG_MAX GEOM_ARG_POINT
 #define GEOM_ARG_RADIUS(d, i) (d)->radius,
+#define GEOM_ARG_INST(d, i) (d)->inst,
 #define GEOM_NP_NONE 0
 #define GEOM_NP_POINT 1
 #define GEOM_NP_DIR 1
 #define GEOM_NP_MAX 1
 #define GEOM_NP_RADIUS 0
+#define GEOM_NP_INST 0
 
 #endif

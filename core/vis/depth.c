@@ -317,6 +317,27 @@ __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const vis
     return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), cp, &disc);
 }
 
+/* A model's depth at pixel offsets (ix, iy): its camera ray (cam_ray, the
+ * ray the shading pass casts too) through the mesh's tree (scene/bvh.c);
+ * false where it misses. The depth is the camera-space ray parameter -z /
+ * f of the hit point, in which every other object's depth is compared. */
+#if RENDER_MODELS
+bool render_model_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_depth_t *t, uint32_t *tri)
+{
+    const cam_t *cam = r->cam;
+    ray_t ray;
+    bvh_hit_t h;
+    cam_ray(cam, (ix + cam->width - 1) / 2, (iy + cam->height - 1) / 2, &ray);
+    if (!bvh_nearest(&r->world->models[r->obj[oi].index].in, &ray, NUM_MAX, BVH_NONE, &h))
+        return false;
+    num_t z = vec3_dot(vec3_sub(ray_at(&ray, h.t), cam->e), cam->w);
+    *t = render_depth_of(num_neg(z), render_ortho(cam) ? NUM_ONE : cam->focal);
+    if (tri)
+        *tri = h.tri;
+    return true;
+}
+#endif
+
 /* Depth of object oi at a pixel it covers, from its forms evaluated there
  * (a sphere's from its row forms where it has them: the same value). */
 static render_depth_t render_depth_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy)
@@ -324,6 +345,8 @@ static render_depth_t render_depth_at(const vis_t *r, uint16_t oi, int32_t ix, i
     const render_obj_t *o = &r->obj[oi];
     if (o->kind == RENDER_SPHERE)
         return render_sphere_depth_at(r, oi, ix, iy);
+    FXRT_IF_MODEL(render_depth_t t; if (o->kind == RENDER_RAYS) /* (the callers ask about a pixel it covers) */
+                  return render_model_at(r, oi, ix, iy, &t, NULL) ? t : o->thi;)
     /* A plane or triangle covers the pixel (every caller asks about an
      * object there); a box: the nearest face that covers it. */
     if (o->kind == RENDER_FLAT) {
@@ -354,10 +377,11 @@ bool render_range_check(const vis_t *r, uint16_t i, int32_t ix, int32_t iy)
  * scanline loop stepped (a flat piece's N and D, a sphere's b, c, disc) or
  * from its forms evaluated at the pixel. */
 typedef struct {
-    enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_BOX, RENDER_RAW_SPHERE } how;
+    enum { RENDER_RAW_AT, RENDER_RAW_FLAT, RENDER_RAW_BOX, RENDER_RAW_SPHERE, RENDER_RAW_KNOWN } how;
     const render_flat_t *f;
     render_k_t n, d, b;
     const render_wide_t *c, *disc;
+    FXRT_IF_MODEL(render_depth_t t;) /* RENDER_RAW_KNOWN: a model's, from its ray */
 } render_raw_t;
 
 static render_depth_t render_raw_depth(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, const render_raw_t *raw)
@@ -368,6 +392,7 @@ static render_depth_t render_raw_depth(const vis_t *r, uint16_t oi, int32_t ix, 
         return render_box_depth(r, &r->obj[oi], ix, iy, raw->f, raw->n, raw->d);
     if (RENDER_STEPPED && raw->how == RENDER_RAW_SPHERE)
         return render_sphere_depth(&r->obj[oi], ix, iy, raw->b, raw->c, raw->disc);
+    FXRT_IF_MODEL(if (raw->how == RENDER_RAW_KNOWN) return raw->t;)
     return render_depth_at(r, oi, ix, iy);
 }
 
@@ -454,6 +479,18 @@ bool render_resolve(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy)
         return q != 0;
     render_raw_t raw;
     raw.how = RENDER_RAW_AT;
+    return render_settle(r, cur, oi, x, iy, &raw);
+}
+
+bool render_resolve_depth(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_depth_t t)
+{
+    int q = render_settle_quick(r, cur, oi, x);
+    if (q >= 0)
+        return q != 0;
+    render_raw_t raw;
+    raw.how = RENDER_RAW_KNOWN;
+    FXRT_IF_MODEL(raw.t = t;)
+    (void)t;
     return render_settle(r, cur, oi, x, iy, &raw);
 }
 

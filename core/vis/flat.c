@@ -252,6 +252,8 @@ int render_row_runs(vis_t *r, int32_t row, render_run_t *out, int cap)
             }
 #endif
             return -1; /* no row series: the per-sample pass */
+        case RENDER_RAYS:
+            return -1; /* rays: the per-sample pass */
         case RENDER_FLAT:
             n = render_runs_push(out, n, cap, o->x0, iv, render_runs_flat(r, o->u.flat, o->x0, o->x1, iy, RENDER_HINT(o->u.flat), iv), i);
             break;

@@ -113,14 +113,17 @@ typedef struct {
 #define RENDER_CAP_FLAT_FLAT(cap) +(cap)
 #define RENDER_CAP_FLAT_ROUND(cap)
 #define RENDER_CAP_FLAT_FACES(cap)
+#define RENDER_CAP_FLAT_RAYS(cap)
 #define RENDER_CAP_ROUND(K, k, ks, cap, solid, bounded, form, edges, ...) RENDER_CAP_ROUND_##form(cap)
 #define RENDER_CAP_ROUND_FLAT(cap)
 #define RENDER_CAP_ROUND_ROUND(cap) +(cap)
 #define RENDER_CAP_ROUND_FACES(cap)
+#define RENDER_CAP_ROUND_RAYS(cap)
 #define RENDER_CAP_FACES(K, k, ks, cap, solid, bounded, form, edges, ...) RENDER_CAP_FACES_##form(cap)
 #define RENDER_CAP_FACES_FLAT(cap)
 #define RENDER_CAP_FACES_ROUND(cap)
 #define RENDER_CAP_FACES_FACES(cap) +(cap)
+#define RENDER_CAP_FACES_RAYS(cap)
 #define RENDER_CAP_EDGES(K, k, ks, cap, solid, bounded, form, edges, ...) +(edges) * (cap)
 #define RENDER_FLATS (0 FXRT_KINDS(RENDER_CAP_FLAT))
 #define RENDER_ROUNDS (0 FXRT_KINDS(RENDER_CAP_ROUND))
@@ -220,9 +223,12 @@ typedef struct {
 } render_face_t;
 
 /* What the row loop makes of an object: a sphere, one flat piece, a box
- * seen from outside (its front faces), or a box with the eye inside (every
- * pixel: its nearest exit face). */
-typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_INSIDE_BOX } render_kind_t;
+ * seen from outside (its front faces), a box with the eye inside (every
+ * pixel: its nearest exit face), or a model (a ray per pixel of its
+ * bounds through its mesh's tree: vis/model.c). */
+typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_INSIDE_BOX, RENDER_RAYS } render_kind_t;
+/* Models are compiled in: the row loop's and depth's RENDER_RAYS paths. */
+#define RENDER_MODELS (FXRT_MAX_MODELS > 0)
 
 typedef struct {
     render_depth_t tlo, thi; /* first: 8-byte aligned in Q16.16, no padding before them */
@@ -307,6 +313,9 @@ typedef struct {
      * keys are wanted. */
     uint16_t painted[FXRT_RENDER_MAX_WIDTH];
     bool track;
+    /* Per column the model painter's triangle (vis/model.c), which the
+     * shading pass intersects alone instead of walking the model again. */
+    FXRT_IF_MODEL(uint32_t model_tri[FXRT_RENDER_MAX_WIDTH];)
 #endif
 #if RENDER_SROWS
     /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the

@@ -62,6 +62,10 @@ static inline render_estep_t *render_estep_k(render_flat_t *f, int k) { return &
 static inline bool render_tracks(const vis_t *r) { return r->track || r->want_keys; }
 /* Record object oi (RENDER_VIS_NONE: none) as column x's painter. */
 static inline void render_mark(vis_t *r, int32_t x, uint16_t oi) { r->painted[x] = oi; }
+/* Column x's painter so far on this row (RENDER_VIS_NONE: none). */
+static inline uint16_t render_painter(const vis_t *r, int32_t x) { return r->painted[x]; }
+/* Column x's model painter met triangle tri (vis/model.c). */
+FXRT_IF_MODEL(static inline void render_model_tri(vis_t *r, int32_t x, uint32_t tri) { r->model_tri[x] = tri; })
 #else
 static inline bool render_tracks(const vis_t *r)
 {
@@ -69,6 +73,8 @@ static inline bool render_tracks(const vis_t *r)
     return false;
 }
 static inline void render_mark(vis_t *r, int32_t x, uint16_t oi) { (void)r, (void)x, (void)oi; }
+static inline uint16_t render_painter(const vis_t *r, int32_t x) { return (void)r, (void)x, RENDER_VIS_NONE; }
+static inline void render_model_tri(vis_t *r, int32_t x, uint32_t tri) { (void)r, (void)x, (void)tri; }
 #endif
 
 /* The visibility pass alone (fast loop and reference loop): owners in
@@ -240,6 +246,12 @@ static inline int32_t render_depth_key(render_depth_t t)
     uint32_t r = (n << 8) / (render_depth_d(t) >> 8); /* r 2^16, in (2^15, 2^17) */
     return render_depth_e(t) * (1 << 16) + (int32_t)r;
 }
+/* The depth n / f of a camera-space distance n (0 where n <= 0) and a
+ * focal length f > 0. */
+static inline render_depth_t render_depth_of(num_t n, num_t f)
+{
+    return render_depth_make(0, n > 0 ? (uint64_t)n : 0, (uint64_t)f, 0);
+}
 #else
 static inline render_k_t rlin_at(const render_lin_t *f, int32_t ix, int32_t iy)
 {
@@ -264,6 +276,11 @@ static inline void render_sphere_cd(const render_obj_t *o, int32_t ix, int32_t i
     *c_out = ortho ? o->u.sphere->k + sq : o->u.sphere->k;
 }
 static inline bool render_depth_less(render_depth_t a, render_depth_t b) { return a.t < b.t; }
+static inline render_depth_t render_depth_of(num_t n, num_t f)
+{
+    render_depth_t t = {n > NUM_ZERO ? n / f : NUM_ZERO};
+    return t;
+}
 /* (Float and double: num_order_key.) */
 static inline int32_t render_depth_key(render_depth_t t)
 {
@@ -416,6 +433,16 @@ bool render_resolve_box(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t 
                         render_k_t n, render_k_t d);
 bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const render_wide_t *c,
                            const render_wide_t *disc);
+/* A model, whose depth t at the pixel its ray gave (vis/model.c). */
+bool render_resolve_depth(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_depth_t t);
+
+/* vis/model.c (RENDER_MODELS): model oi's scan over columns x0..x1 of row
+ * iy, a ray per column; where it paints a column, the triangle its ray met
+ * goes to r->model_tri for the shading pass. vis/depth.c: its depth at
+ * pixel offsets (ix, iy) into *t and the triangle met into *tri (when not
+ * NULL), or false where its ray misses. */
+void render_scan_model(vis_t *r, uint16_t oi, int32_t x0, int32_t x1, int32_t iy, uint8_t *rgb, bool lone);
+bool render_model_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_depth_t *t, uint32_t *tri);
 
 /* vis/depth.c (Q16.16 with steps and spans): bounds lo, hi on object oi's depth at every column p..q of
  * row iy, all of which it covers (planes, triangles, boxes, spheres with
