@@ -160,6 +160,16 @@ FXRT_STATIC_ASSERT(FXRT_MAX_BOXES == 0 || FXRT_RENDER_BOX_FACES >= 1, "FXRT_REND
 #endif
 FXRT_STATIC_ASSERT(0 <= FXRT_MESH_MAX && FXRT_MESH_MAX <= 255, "FXRT_MESH_MAX must be 0..255");
 
+/* A scene's mesh of at most FXRT_MESH_INLINE triangles becomes triangle
+ * objects, drawn by the scanline pass's flat pieces (six times faster than
+ * a model's rays for a cube in a node, docs/bench/models.md), where the
+ * triangle capacity has room; a larger one, or one that does not fit,
+ * becomes a model (scene/model.c). 0: every mesh a model. */
+#ifndef FXRT_MESH_INLINE
+#define FXRT_MESH_INLINE 32
+#endif
+FXRT_STATIC_ASSERT(FXRT_MESH_INLINE >= 0, "FXRT_MESH_INLINE must be >= 0");
+
 /* Objects alone on their row (the fast renderer fills their spans without
  * the per-column owner bookkeeping) are looked for only in worlds of at
  * most FXRT_LONE_MAX objects: the test looks at every pair of objects on

@@ -1076,6 +1076,98 @@ static int scene_parse_end(scene_parser_t *p)
     return 0;
 }
 
+/* The most triangles of a mesh made triangle objects (scene.h). */
+static int scene_mesh_inline = FXRT_MESH_INLINE;
+
+void scene_set_mesh_inline(int n) { scene_mesh_inline = n < 0 ? 0 : n; }
+
+/* A mesh statement's triangles as triangle objects (FXRT_MESH_INLINE):
+ * each with the mesh's colour and material, through the open nodes'
+ * transform, smooth ones with their vertex normals moved by the nodes.
+ * Zero-area triangles are left out and counted. 0, 1 when the triangles
+ * do not fit the capacity (nothing added), or -1 with the message. */
+static int scene_mesh_triangles(scene_parser_t *p, const char *path, const scene_fval_t *vals, int smooth)
+{
+    enum { MESH_SHADING, MESH_COLOR, MESH_MATERIAL };
+    char err[1024];
+    obj_t m;
+    size_t keep = 0, dropped = 0, i;
+    int cap = scene_kind_capacity[SCENE_TRIANGLE], rc = 0;
+
+    if (obj_load(path, &m, err, sizeof err) != 0) {
+        /* The scene's FILE:LINE first, then the OBJ's own: a message cut
+         * short by a small buffer keeps the scene's line (a long path once
+         * pushed it out of a message written the other way round). */
+        scene_fail(p, "%s", err);
+        return -1;
+    }
+    for (i = 0; i < m.ntri; i++) {
+        obj_vec_t n = obj_face_normal(&m, i);
+        if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
+            dropped++;
+        else
+            keep++;
+    }
+    obj_vec_t *vn = NULL;
+    if (keep > (size_t)(cap - p->kind_count[SCENE_TRIANGLE]) ||
+        keep > (size_t)(SCENE_MAX_OBJECTS - p->out->count)) {
+        rc = 1; /* no room: the caller makes a model */
+        goto done;
+    }
+    if (smooth) {
+        vn = malloc(sizeof *vn * 3 * (m.ntri ? m.ntri : 1));
+        if (vn == NULL || obj_smooth_normals(&m, vn, NULL) != 0) {
+            rc = scene_fail(p, "out of memory for the mesh's normals");
+            goto done;
+        }
+    }
+    for (i = 0, keep = 0; i < m.ntri; i++) {
+        const obj_tri_t *tr = &m.tri[i];
+        obj_vec_t n = obj_face_normal(&m, i);
+        scene_obj_t *o = &p->out->obj[p->out->count + keep];
+        char where[4200];
+        if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
+            continue;
+        memset(o, 0, sizeof *o);
+        o->kind = SCENE_TRIANGLE;
+        o->line = p->line;
+        for (int k = 0; k < 3; k++) {
+            const obj_vec_t *v = &m.v[tr->v[k]];
+            o->p[k].x = v->x;
+            o->p[k].y = v->y;
+            o->p[k].z = v->z;
+        }
+        scene_set_surface(o, vals, MESH_COLOR);
+        snprintf(where, sizeof where, "%s:%ld", path, (long)tr->line);
+        for (int k = 0; smooth && k < 3; k++) {
+            /* Normals move by the nodes' inverse transpose, normalised;
+             * outside nodes they are normalised as they are. */
+            const obj_vec_t *c = &vn[3 * i + k];
+            scene_vec_t v = {c->x, c->y, c->z};
+            double len = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+            if (!(len > 0.0) || !isfinite(len) ||
+                (p->node_depth > 0 && xform_normal(&p->node_xf[p->node_depth], v, &v) != 0)) {
+                rc = scene_fail(p, "mesh: the normal of corner %d of face %s is zero", k + 1, where);
+                goto done;
+            }
+            if (p->node_depth == 0)
+                v.x /= len, v.y /= len, v.z /= len;
+            o->vn[k] = v;
+        }
+        o->smooth = smooth;
+        if ((rc = scene_place(p, o, where)) != 0)
+            goto done;
+        keep++;
+    }
+    p->out->count += (int)keep;
+    p->kind_count[SCENE_TRIANGLE] += (int)keep;
+    p->out->mesh_dropped += (long)dropped;
+done:
+    free(vn);
+    obj_free(&m);
+    return rc;
+}
+
 /* 'mesh file PATH [shading smooth|flat] color R G B [material ...]': a
  * model (scene/model.c): the OBJ file (PATH relative to the scene file's
  * folder) built once into constant mesh data (host/meshstore.c: every
@@ -1098,12 +1190,6 @@ static int scene_parse_mesh(scene_parser_t *p)
     bool smooth = !vals[MESH_SHADING].seen || vals[MESH_SHADING].word == 1;
     if (vals[MESH_MATERIAL].seen && vals[MESH_MATERIAL].word == SCENE_MAT_TRANSPARENT)
         return scene_fail(p, "a transparent mesh is not implemented yet (glass needs a closed solid)");
-    if (cap <= 0)
-        return scene_fail(p, "meshes are not in this build (%s is 0)", scene_kind_macro[SCENE_MODEL]);
-    if (p->kind_count[SCENE_MODEL] >= cap)
-        return scene_fail(p, "too many meshes (capacity %d, %s)", cap, scene_kind_macro[SCENE_MODEL]);
-    if (p->out->count >= SCENE_MAX_OBJECTS)
-        return scene_fail(p, "too many objects (capacity %d)", SCENE_MAX_OBJECTS);
     {
         /* The folder of the scene file's name, up to its last '/'. */
         const char *slash = strrchr(p->name, '/');
@@ -1123,6 +1209,19 @@ static int scene_parse_mesh(scene_parser_t *p)
                     * by a small buffer keeps the scene's line (a long path once pushed it
                     * out of a message written the other way round). */
         return scene_fail(p, "%s", err);
+    /* A small mesh: triangle objects, where they fit and smooth ones can be */
+    if (e->mb.mesh.n_triangles <= (uint32_t)scene_mesh_inline && (FXRT_SMOOTH || !e->smooth)) {
+        int rc = scene_mesh_triangles(p, path, vals, e->smooth);
+        if (rc <= 0)
+            return rc;
+    }
+    if (cap <= 0)
+        return scene_fail(p, "meshes of more than %d triangles are models, which are not in this build (%s is 0)",
+                          FXRT_MESH_INLINE, scene_kind_macro[SCENE_MODEL]);
+    if (p->kind_count[SCENE_MODEL] >= cap)
+        return scene_fail(p, "too many meshes (capacity %d, %s)", cap, scene_kind_macro[SCENE_MODEL]);
+    if (p->out->count >= SCENE_MAX_OBJECTS)
+        return scene_fail(p, "too many objects (capacity %d)", SCENE_MAX_OBJECTS);
     scene_obj_t *o = &p->out->obj[p->out->count];
     memset(o, 0, sizeof *o);
     o->kind = SCENE_MODEL;

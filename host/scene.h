@@ -112,6 +112,11 @@ typedef struct {
 int scene_parse(const char *name, const char *text, size_t len, scene_t *out,
                 char *err, size_t errlen);
 
+/* Meshes of at most n triangles become triangle objects (default
+ * FXRT_MESH_INLINE; 0: every mesh a model), for the parses that follow
+ * in this process (fxrt-scenec --mesh --node places a model). */
+void scene_set_mesh_inline(int n);
+
 /* Read and parse a file. Returns 0, or -1 with "PATH:LINE: ..." (or
  * "PATH: ..." when the file cannot be read) in err. */
 int scene_load(const char *path, scene_t *out, char *err, size_t errlen);

@@ -81,6 +81,7 @@ static int mesh_instance(FILE *f, const meshbuild_t *mb, const char *obj, bool s
         fprintf(stderr, "fxrt-scenec: --node or the OBJ path too long, or with a space or line break\n");
         return -1;
     }
+    scene_set_mesh_inline(0); /* (a model, whatever its size) */
     if (scene_parse("--node", text, (size_t)n, &sc, err, sizeof err) != 0) {
         /* "--node:2: what": the steps' own message */
         const char *why = strchr(err, ' ');

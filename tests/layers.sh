@@ -129,11 +129,12 @@ fi
 # option's default, the triangle record's fields, scene/smooth.c), and
 # five went (trace.c's direction check, the cull field's SHADE_IF_CULL,
 # the stats counters defined always). Models (a kind of object with a
-# form of its own) added eight: their capacity's default (host or bare
+# form of its own) added nine: their capacity's default (host or bare
 # board) and its guard, the kind's FXRT_IF_MODEL, the guards of its three
 # files (scene/model.c, vis/setup_model.c, vis/model.c) and depth.c's
-# model depth; light/hit.c's shading of a model pixel with its triangle known.
-IF_CAP=242
+# model depth; light/hit.c's shading of a model pixel with its triangle known;
+# and the small-mesh threshold's default (FXRT_MESH_INLINE).
+IF_CAP=243
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0
 for d in . port math scene vis light frame; do

@@ -68,10 +68,12 @@ for n in 1 2 3; do
     check "--node C compiles (FXRT_NUMBER $n)" gcc -std=c11 -Wall -Wextra -Werror -DFXRT_NUMBER=$n -Icore -c "$tmp/placed.c" -o "$tmp/placed$n.o"
 done
 mkdir -p "$tmp/sc" "$tmp/scd"
-printf 'camera perspective eye 0 0 1 gaze 0 0 -1 up 0 1 0 fov 45\nnode %s\n  mesh file ../../../../scenes/models/cube.obj shading flat color 1 1 1\nend\n' "$node" >"$tmp/sc/p.scene"
+# (a mesh of more than FXRT_MESH_INLINE triangles: a scene makes a model of it)
+"$SCENEC" --mesh scenes/models/ico80.obj --out "$tmp/placed80.c" --node "$node" >/dev/null 2>&1
+printf 'camera perspective eye 0 0 1 gaze 0 0 -1 up 0 1 0 fov 45\nnode %s\n  mesh file ../../../../scenes/models/ico80.obj color 1 1 1\nend\n' "$node" >"$tmp/sc/p.scene"
 "$SCENEC" "$tmp/sc/p.scene" --number q16 --size 32x24 --out "$tmp/scd" >/dev/null 2>&1
 maps() { tr -d ' \n' <"$1" | grep -oE '\{\{-?[0-9]+,-?[0-9]+,-?[0-9]+\},\{-?[0-9]+,-?[0-9]+,-?[0-9]+\},\{-?[0-9]+,-?[0-9]+,-?[0-9]+\}\},-?[0-9]+' | tr '\n' ' '; }
-check "--node's maps are the scene compiler's ($(maps "$tmp/placed.c"))" test "$(maps "$tmp/placed.c")" = "$(maps "$tmp/scd/scene_data.h")"
+check "--node's maps are the scene compiler's ($(maps "$tmp/placed80.c"))" test -n "$(maps "$tmp/placed80.c")" -a "$(maps "$tmp/placed80.c")" = "$(maps "$tmp/scd/scene_data.h")"
 cat >"$tmp/embed.c" <<'EOF'
 #include <stdio.h>
 #include "fxrt.h"

@@ -365,7 +365,7 @@ static void test_meshes(const char *dir)
          * vertex index, or three collinear vertices). */
         static char obj[1 << 16], text[8192];
         double v[40][3];
-        int nv = 3 + (int)(rnd() % 30), nt = 1 + (int)(rnd() % 40), tri[40][3], zero = 0;
+        int nv = 3 + (int)(rnd() % 30), nt = 1 + (int)(rnd() % 80), tri[80][3], zero = 0;
         size_t used = 0;
         char t[3][32];
         for (int i = 0; i < nv; i++) {
@@ -396,7 +396,28 @@ static void test_meshes(const char *dir)
         if (zero == nt) {
             /* nothing left to draw: refused */
             ok = rc != 0 && strstr(g_err, "no triangle of nonzero area") != NULL;
+        } else if (nt - zero <= FXRT_MESH_INLINE) {
+            /* a small mesh: its triangles as triangle objects, each where
+             * the nodes move the file's vertices */
+            ok = rc == 0 && g_scene.count == nt - zero && g_scene.mesh_dropped == zero;
+            for (int i = 0, j = 0; ok && i < nt; i++) {
+                double c[3][3], u[3], w[3];
+                for (int k = 0; k < 3; k++)
+                    memcpy(c[k], v[tri[i][k]], sizeof c[k]);
+                for (int k = 0; k < 3; k++)
+                    u[k] = c[1][k] - c[0][k], w[k] = c[2][k] - c[0][k];
+                if (u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 && u[0] * w[1] - u[1] * w[0] == 0)
+                    continue; /* degenerate */
+                const scene_obj_t *o = &g_scene.obj[j++];
+                ok = o->kind == SCENE_TRIANGLE && o->material == SCENE_MAT_PHONG && o->exponent == 20 &&
+                     o->specular[1] == 0.5 && o->color[1] == 0.4;
+                for (int k = 0; k < 3; k++) {
+                    apply_nodes(nest, depth, c[k], 0);
+                    ok = ok && vec_close(o->p[k], c[k], 100);
+                }
+            }
         } else {
+            /* a larger one: a model */
             const scene_obj_t *o = &g_scene.obj[0];
             ok = rc == 0 && g_scene.count == 1 && o->kind == SCENE_MODEL && o->material == SCENE_MAT_PHONG &&
                  o->exponent == 20 && o->specular[1] == 0.5 && o->color[1] == 0.4 && o->mesh->vn == NULL;
@@ -432,13 +453,12 @@ static void test_meshes(const char *dir)
         CHECK_SWEEP(ok, "mesh %d: %s", iter, rc ? g_err : text);
         bad += !ok;
     }
-    CHECK_MSG(bad == 0, "300 generated meshes in random nodes: %ld wrong", bad);
+    CHECK_MSG(bad == 0, "300 generated meshes in random nodes (1 to 80 triangles): %ld wrong", bad);
 
     /* Smooth meshes: the file's vn per corner, moved by the nodes as
-     * normals (the model's vertex normal through its own map, M^-T n,
-     * normalised); without vn, a lone triangle's corners take its own
-     * normal, and the model is built flat (it shades the same). */
-    long bad_vn = 0;
+     * normals; without vn, a lone triangle's corners take its own normal.
+     * One triangle: a smooth triangle object with its vertex normals. */
+    long bad_tri = 0;
     for (int iter = 0; iter < 500; iter++) {
         static char obj[4096], text[8192];
         double v[3][3], n[3][3];
@@ -462,6 +482,60 @@ static void test_meshes(const char *dir)
         double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
         if (c[0] == 0 && c[1] == 0 && c[2] == 0)
             continue;
+        if (!given)
+            for (int i = 0; i < 3; i++)
+                memcpy(n[i], c, sizeof c);
+        write_text(objpath, obj);
+        node_t nest[3];
+        int depth = (int)(rnd() % 4);
+        nest_scene(text, sizeof text, nest, depth, ANY, "mesh file ../m.obj color 0.2 0.4 0.6 material lambert");
+        write_text(scpath, text);
+        int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
+        const scene_obj_t *o = &g_scene.obj[0];
+        /* (normals that are the face's own shade flat: built flat) */
+        int ok = rc == 0 && g_scene.count == 1 && o->kind == SCENE_TRIANGLE && o->smooth == given;
+        for (int i = 0; ok && given && i < 3; i++) {
+            double m[3];
+            moved_normal(nest, depth, n[i], m);
+            ok = vec_close(o->vn[i], m, 1);
+        }
+        CHECK_SWEEP(ok, "smooth triangle %d: %s", iter, rc ? g_err : text);
+        bad_tri += !ok;
+    }
+    CHECK_MSG(bad_tri == 0, "500 smooth one-triangle meshes in random nodes: %ld with wrong vertex normals", bad_tri);
+
+    /* The same as models: FXRT_MESH_INLINE + 1 copies of the triangle
+     * (each moved along x, the same normals), the model's vertex normal
+     * through its own map (M^-T n, normalised); without vn, built flat. */
+    long bad_vn = 0;
+    for (int iter = 0; iter < 500; iter++) {
+        static char obj[4096], text[8192];
+        double v[3][3], n[3][3];
+        char t[6][32];
+        size_t used = 0;
+        int given = iter % 4 != 0;
+        for (int i = 0; i < 3; i++) {
+            for (int k = 0; k < 3; k++)
+                v[i][k] = draw(-2, 2, t[k], sizeof t[k]);
+            for (int k = 0; k < 3; k++)
+                n[i][k] = draw(-1, 1, t[k + 3], sizeof t[k + 3]);
+            if (fabs(n[i][0]) + fabs(n[i][1]) + fabs(n[i][2]) < 0.1)
+                n[i][2] = 1, snprintf(t[5], sizeof t[5], "1");
+            used += (size_t)snprintf(obj + used, sizeof obj - used, "vn %s %s %s\n", t[3], t[4], t[5]);
+        }
+        for (int r = 0; r <= FXRT_MESH_INLINE; r++) {
+            for (int i = 0; i < 3; i++)
+                used += (size_t)snprintf(obj + used, sizeof obj - used, "v %.4f %.4f %.4f\n", v[i][0] + 5 * r, v[i][1], v[i][2]);
+            int b = 3 * r + 1;
+            used += (size_t)(given ? snprintf(obj + used, sizeof obj - used, "f %d//1 %d//2 %d//3\n", b, b + 1, b + 2)
+                                   : snprintf(obj + used, sizeof obj - used, "f %d %d %d\n", b, b + 1, b + 2));
+        }
+        double u[3], w[3];
+        for (int k = 0; k < 3; k++)
+            u[k] = v[1][k] - v[0][k], w[k] = v[2][k] - v[0][k];
+        double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+        if (c[0] == 0 && c[1] == 0 && c[2] == 0)
+            continue;
         write_text(objpath, obj);
         node_t nest[3];
         int depth = (int)(rnd() % 4);
@@ -477,17 +551,17 @@ static void test_meshes(const char *dir)
              * corner has one normal); its normal as the model shades it */
             bvh_inst_t in;
             meshbuild_inst(&o->map, o->mesh, &in);
-            ok = o->mesh->vn != NULL && o->mesh->n_vertices == 3;
-            for (uint32_t i = 0; ok && i < 3; i++) {
+            ok = o->mesh->vn != NULL && o->mesh->n_vertices == 3 * (FXRT_MESH_INLINE + 1);
+            for (uint32_t i = 0; ok && i < o->mesh->n_vertices; i++) {
                 double q[3] = {o->mesh->v[i][0], o->mesh->v[i][1], o->mesh->v[i][2]}, wv[3], best = 1e30;
                 int which = 0;
                 model_world(&in, q, wv);
-                for (int j = 0; j < 3; j++) {
-                    double p[3] = {v[j][0], v[j][1], v[j][2]};
+                for (int j = 0; j < 3 * (FXRT_MESH_INLINE + 1); j++) {
+                    double p[3] = {v[j % 3][0] + 5 * (j / 3), v[j % 3][1], v[j % 3][2]};
                     apply_nodes(nest, depth, p, 0);
                     double d = fabs(p[0] - wv[0]) + fabs(p[1] - wv[1]) + fabs(p[2] - wv[2]);
                     if (d < best)
-                        best = d, which = j;
+                        best = d, which = j % 3;
                 }
                 double want[3], got[3], len = 0;
                 moved_normal(nest, depth, n[which], want);
@@ -500,10 +574,10 @@ static void test_meshes(const char *dir)
                     ok = ok && fabs(got[k] / sqrt(len) - want[k]) <= 2e-4;
             }
         }
-        CHECK_SWEEP(ok, "smooth mesh %d: %s", iter, rc ? g_err : text);
+        CHECK_SWEEP(ok, "smooth model %d: %s", iter, rc ? g_err : text);
         bad_vn += !ok;
     }
-    CHECK_MSG(bad_vn == 0, "500 smooth one-triangle meshes in random nodes: %ld with wrong vertex normals", bad_vn);
+    CHECK_MSG(bad_vn == 0, "500 smooth models in random nodes: %ld with wrong vertex normals", bad_vn);
 
     /* Capacity: a mesh of any size is one model (here 1,000 triangles,
      * far past the triangle kind's capacity); FXRT_MAX_MODELS mesh
@@ -519,6 +593,24 @@ static void test_meshes(const char *dir)
         int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
         CHECK_MSG(rc == 0 && g_scene.count == 1 && g_scene.obj[0].mesh->n_triangles == 1000, "1,000 triangles: %s",
                   g_err);
+    }
+    {
+        /* cubes (12 triangles) fill the triangle capacity as triangles; the
+         * one that no longer fits is a model */
+        static char text[1 << 16];
+        char cubepath[600];
+        snprintf(cubepath, sizeof cubepath, "%s/c.obj", dir);
+        write_text(cubepath, cube_obj);
+        int fit = FXRT_MAX_TRIANGLES / 12;
+        size_t used = (size_t)snprintf(text, sizeof text, CAM);
+        for (int i = 0; i <= fit; i++)
+            used += (size_t)snprintf(text + used, sizeof text - used, "mesh file ../c.obj shading flat color 1 1 1\n");
+        write_text(scpath, text);
+        int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
+        CHECK_MSG(rc == 0 && g_scene.count == 12 * fit + 1 && g_scene.obj[12 * fit].kind == SCENE_MODEL &&
+                      g_scene.obj[0].kind == SCENE_TRIANGLE,
+                  "%d cubes as triangles, then a model: %s (%d objects)", fit, rc ? g_err : "", g_scene.count);
+        unlink(cubepath);
     }
     for (int extra = 0; extra < 2; extra++) {
         static char text[1 << 16];
