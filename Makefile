@@ -111,9 +111,6 @@ TEST_BIN += $(NUM_TEST_BIN)
 
 # tests/test_bvh.c: the mesh queries on meshes built by host/meshbuild.c
 # (compiled with it, in each number type: an instance holds numbers).
-# $(call bvh_test_rules,NUMBER,DIR,CC,CFLAGS): its rule under DIR (the
-# build's, or tests/sanitize.mk's sanitized one: an explicit rule, ahead
-# of the pattern rule for number-generic tests).
 # tests/test_model.c: models in the world through the public API, the same way.
 # $(call bvh_test_rules,NUMBER,DIR,CC,CFLAGS,TEST): TEST's rule under DIR
 # (the build's, or tests/sanitize.mk's sanitized one: an explicit rule,

@@ -72,7 +72,7 @@ typedef bvh_inst_t fxrt_instance_t; /* a mesh placed in the world: a model's .in
  * reflection colours. */
 #define FXRT_RGB(r, g, b) fxrt_color(COLOR_FRAC(r), COLOR_FRAC(g), COLOR_FRAC(b))
 
-/* The kinds (FXRT_PLANE, FXRT_SPHERE, FXRT_TRIANGLE, FXRT_BOX: one per row
+/* The kinds (FXRT_PLANE, FXRT_SPHERE, FXRT_TRIANGLE, FXRT_BOX, FXRT_MODEL: one per row
  * of scene/kinds.h), materials (FXRT_MATERIAL_FLAT, _LAMBERT, _PHONG,
  * _REFLECTIVE, _TRANSPARENT), lights (FXRT_LIGHT_POINT, _DIRECTIONAL,
  * _SPOT) and cameras (FXRT_PERSPECTIVE, FXRT_ORTHOGRAPHIC) are the
@@ -136,8 +136,9 @@ static inline fxrt_err_t fxrt_world_init(fxrt_world_t *w, fxrt_color_t backgroun
 
 /* One object as data (the scene compiler emits tables of them): .kind
  * (FXRT_PLANE ...), .p[] (plane: point, normal; sphere: centre; triangle:
- * a, b, c; box: min, max), .radius (spheres), .color, and .material (flat
- * when left zero). */
+ * a, b, c; box: min, max), .radius (spheres), .inst (a model's placed mesh,
+ * copied when added: docs/MESHES.md), .color, and .material (flat when
+ * left zero). */
 typedef geom_desc_t fxrt_object_t;
 
 /* Adds o and returns its id (0, 1, 2, ... in the order added, across all
@@ -145,7 +146,8 @@ typedef geom_desc_t fxrt_object_t;
  * fxrt_err_t: FXRT_ERR_NULL, FXRT_ERR_KIND, FXRT_ERR_FULL when
  * FXRT_MAX_<KIND> objects of that kind are there already (a kind with
  * capacity 0 is compiled out), FXRT_ERR_COORD, _DIRECTION, _RADIUS,
- * _COLOR, _BOX, _TINY, and the material's codes (fxrt_set_material's
+ * _COLOR, _BOX, _TINY, _MESH (a model's mesh or placement malformed, or
+ * its box beyond the coordinate limit), and the material's codes (fxrt_set_material's
  * but _ID), checked before the object is added. A refused object leaves the world
  * unchanged. A plane's normal need not be unit length; a collinear
  * triangle is accepted and never hit. */

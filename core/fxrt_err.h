@@ -42,7 +42,7 @@ typedef enum {
     FXRT_ERR_EXPONENT = -30, /* phong or reflective exponent outside 1..FXRT_PHONG_MAX_EXPONENT */
     FXRT_ERR_INDEX = -31,    /* refraction index outside FXRT_INDEX_MIN..FXRT_INDEX_MAX */
     FXRT_ERR_LIGHTS = -32,   /* FXRT_MAX_LIGHTS lights are there already */
-    FXRT_ERR_MESH = -33,     /* a model whose mesh data or placement bvh_check refuses */
+    FXRT_ERR_MESH = -33,     /* a model whose mesh data or placement is malformed (bvh_check, geom_model_box) */
     /* Camera errors without a name above (cam_setup codes added later)
      * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
      * fxrt_strerror still tell them apart. */

@@ -1210,14 +1210,16 @@ static int scene_parse_mesh(scene_parser_t *p)
                     * out of a message written the other way round). */
         return scene_fail(p, "%s", err);
     /* A small mesh: triangle objects, where they fit and smooth ones can be */
-    if (e->mb.mesh.n_triangles <= (uint32_t)scene_mesh_inline && (FXRT_SMOOTH || !e->smooth)) {
-        int rc = scene_mesh_triangles(p, path, vals, e->smooth);
+    if (e->mb.mesh.n_triangles <= (uint32_t)scene_mesh_inline && (FXRT_SMOOTH || !smooth)) {
+        int rc = scene_mesh_triangles(p, path, vals, smooth); /* (the shading asked, not the shared build's) */
         if (rc <= 0)
             return rc;
     }
     if (cap <= 0)
-        return scene_fail(p, "meshes of more than %d triangles are models, which are not in this build (%s is 0)",
-                          FXRT_MESH_INLINE, scene_kind_macro[SCENE_MODEL]);
+        return scene_fail(p, "this mesh must be a model (more than %d triangles, or no room for them as triangles%s), "
+                             "and models are not in this build (%s is 0)",
+                          scene_mesh_inline, FXRT_SMOOTH ? "" : ", or smooth without FXRT_SMOOTH",
+                          scene_kind_macro[SCENE_MODEL]);
     if (p->kind_count[SCENE_MODEL] >= cap)
         return scene_fail(p, "too many meshes (capacity %d, %s)", cap, scene_kind_macro[SCENE_MODEL]);
     if (p->out->count >= SCENE_MAX_OBJECTS)

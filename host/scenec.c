@@ -77,7 +77,7 @@ static int mesh_instance(FILE *f, const meshbuild_t *mb, const char *obj, bool s
                      "mesh file %s shading %s color 1 1 1\n%s",
                      steps ? "node " : "", steps ? steps : "", steps ? "\n" : "", obj, smooth ? "smooth" : "flat",
                      steps ? "end\n" : "");
-    if (n < 0 || (size_t)n >= sizeof text || strchr(obj, ' ') || (steps && strchr(steps, '\n'))) {
+    if (n < 0 || (size_t)n >= sizeof text || strpbrk(obj, " \t\r\n") || (steps && strpbrk(steps, "\r\n"))) {
         fprintf(stderr, "fxrt-scenec: --node or the OBJ path too long, or with a space or line break\n");
         return -1;
     }

@@ -5,6 +5,8 @@
 #     --index16, a bad --name, a bad --node), each with nothing written;
 #     with --node, the mesh placed as the scene compiler places it, which
 #     a program adds with fxrt_add and renders;
+#   - instancing: the firmware of a scene with four models of one file
+#     is larger than with one by their records, not by the mesh's data;
 #   - firmware/meshq.c, built for the host and for the M3, M4F and M0
 #     with a model in flash (the cube flat, an icosphere of 320 triangles
 #     smooth), answers the same rays with byte-identical results (the
@@ -108,6 +110,27 @@ check "a program adds cube_mesh_at with fxrt_add and sees it ($out)" grep -qE '^
 refuse "--node scale 0" "^fxrt-scenec: --node: scale 0: a node may not scale by 0" --mesh scenes/models/cube.obj --node "scale 0"
 refuse "--node beyond the coordinate limit" "^fxrt-scenec: --node: mesh scenes/models/cube.obj, after the node on line 2: it reaches 8192.25 on x, beyond" \
     --mesh scenes/models/cube.obj --node "scale 0.5 translate 8192 0 0"
+
+# Instancing: a scene with four models of one file holds its data once.
+# The M3's firmware (text and data) for it is larger than for one model by
+# three instances and objects (and the code for four), less than one copy
+# of the mesh (1,864 B of ico80), where three copies would be 5,592 B.
+mkdir -p "$tmp/inst"
+for n in 1 4; do
+    {
+        echo "camera perspective eye 0 1 6 gaze 0 -0.2 -1 up 0 1 0 fov 40"
+        for i in $(seq 1 $n); do
+            echo "node scale 0.5 translate $((i - 2)) 0 0"
+            echo "  mesh file ../../../../scenes/models/ico80.obj color 0.8 0.2 0.$i"
+            echo "end"
+        done
+    } >"$tmp/inst/i$n.scene"
+    $M fw SCENE="$tmp/inst/i$n.scene" BOARD=mps2-an385 NUMBER=q16 SIZE=32x24 >"$tmp/inst/i$n.log" 2>&1
+    eval "text$n=\$(arm-none-eabi-size \"$BUILD/fw/mps2-an385/i$n-q16-32x24-full/fxrt.elf\" 2>/dev/null | awk 'NR == 2 { print \$1 + \$2 }')"
+done
+grow=$((${text4:-0} - ${text1:-0}))
+check "four instances of ico80 hold its data once: flash $text1 B with one, $text4 B with four (+$grow B, under 1,864)" \
+    test -n "$text1" -a -n "$text4" -a "$grow" -gt 0 -a "$grow" -lt 1864
 
 # --- the same queries on the host and the boards -----------------------------
 for spec in t-cube:scenes/models/cube.obj:--flat t-ico320:scenes/models/ico320.obj:; do

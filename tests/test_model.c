@@ -88,7 +88,7 @@ static void common(fxrt_world_t *w, const material_t *floor_m)
 
 /* One scene as a model and as triangles; the count of pixels whose
  * channels differ by more than tol. */
-static long compare_one(const meshbuild_t *mb, bool smooth_tris, int tol, long *covered)
+static long compare_one(const meshbuild_t *mb, bool smooth_tris, bool mirror, int tol, long *covered)
 {
     double a[3][3], b[3];
     bvh_inst_t in;
@@ -97,6 +97,10 @@ static long compare_one(const meshbuild_t *mb, bool smooth_tris, int tol, long *
     material_t floor_m = {.kind = MATERIAL_LAMBERT};
     material_t m = {.kind = MATERIAL_PHONG, .exponent = (uint16_t)(2 + check_rng_next(&rng) % 120)};
     m.specular = fxrt_color(num_d(srand_(25, 255)), num_d(srand_(25, 255)), num_d(srand_(25, 255)));
+    if (mirror) { /* rays from the model to its other triangles (a torus sees itself) */
+        m.kind = MATERIAL_REFLECTIVE;
+        m.reflection = fxrt_color(num_d(srand_(100, 255)), num_d(srand_(100, 255)), num_d(srand_(100, 255)));
+    }
     color_t col = fxrt_color(num_d(srand_(30, 255)), num_d(srand_(30, 255)), num_d(srand_(30, 255)));
     common(&world_a, &floor_m);
     common(&world_b, &floor_m);
@@ -176,9 +180,11 @@ static void test_oracle(void)
     static const struct {
         const char *name;
         int kind; /* 0 icosphere level 1, 1 torus 10 x 6, 2 cube, 3 icosphere level 1 flat */
-        bool smooth;
-    } cases[] = {{"icosphere 80 smooth", 0, true}, {"icosphere 80 flat", 3, false}, {"torus 120 flat", 1, false},
-                 {"torus 120 smooth", 1, true}, {"cube 12", 2, false}};
+        bool smooth, mirror;
+    } cases[] = {{"icosphere 80 smooth", 0, true, false}, {"icosphere 80 flat", 3, false, false},
+                 {"torus 120 flat", 1, false, false},     {"torus 120 smooth", 1, true, false},
+                 {"cube 12", 2, false, false},            {"torus 120 reflective", 1, false, true},
+                 {"torus 120 smooth reflective", 1, true, true}};
     /* Allowed: pixels off by more than 2 levels, of 96 x 72 = 6,912 per
      * scene (edges and shadow boundaries that rounding moves by a pixel:
      * Q16.16 has at most 2 in these scenes, float and double none). A
@@ -198,7 +204,7 @@ static void test_oracle(void)
         long worst = 0, total = 0, covered = 0;
         int scenes = 24, failed = 0;
         for (int s = 0; s < scenes; s++) {
-            long bad = compare_one(&mb, cases[c].smooth, 2, &covered);
+            long bad = compare_one(&mb, cases[c].smooth, cases[c].mirror, 2, &covered);
             CHECK_SWEEP(bad >= 0 && bad <= cap, "%s, scene %d: %ld pixels differ by more than 2 levels (cap %ld)",
                         cases[c].name, s, bad, cap);
             failed += bad < 0 || bad > cap;

@@ -2,7 +2,8 @@
  * row; here each pixel owned by a lit object gets its colour from the
  * lighting model (light/shade.c): the pixel's camera ray (cam_ray), the
  * owner's surface point and normal (geom_<kind>_surface: one object, no
- * search), and the light sum. Flat objects keep the colour the visibility
+ * search; a model's from the triangle its visibility pass met), and the
+ * light sum. Flat objects keep the colour the visibility
  * pass painted. With r->keys set, every pixel's key is written too. */
 #include "frame/render.h"
 #include "vis/render_int.h"

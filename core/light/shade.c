@@ -182,7 +182,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
                    if (smooth) n = vec3_dotw_units(d, ns) > 0 ? vec3_neg_unit(ns) : ns;)
     /* A smooth model: the same, with the normal its surface gave
      * (scene/model.c) and its triangle's winding normal as the face's. */
-    FXRT_IF_MODEL(vec3_t n_wind = n; bool msmooth = part && part->smooth;
+    FXRT_IF_MODEL(vec3_t n_wind = n; bool msmooth = part && part->smooth; (void)n_wind; /* (shadows only) */
                   if (msmooth) n = vec3_dotw_units(d, part->ns) > 0 ? vec3_neg_unit(part->ns) : part->ns;)
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;

@@ -113,7 +113,9 @@ void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k);
  * along `ray` (a camera ray: d unit, not a bounce ray's), which the
  * caller has found to meet it (the renderer's visibility pass, or
  * world_hit): the hit point and normal come from the
- * object's geom_<kind>_surface, the light sum from shade_point. When mask
+ * object's geom_<kind>_surface (a model's walks its tree again;
+ * shade_model_k below takes the triangle met), the light sum from
+ * shade_point. When mask
  * is not NULL it receives the lights that reach the hit point (bit i for
  * light i), also for a flat material; without it a flat object costs
  * nothing but its colour. */

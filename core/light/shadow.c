@@ -196,13 +196,15 @@ enum { SHADOW_CULLS = SHADOW_CULL };
 /* world_occluded, skipping what rc rules out (mode: how). An object's cull
  * entry is read before the object (the table is small and contiguous);
  * the object itself is skipped by its id when its entry did not cull it,
- * but a model (FORM RAYS) only leaves out its triangle skip_tri. */
+ * but a model (FORM RAYS) only leaves out its triangle skip_tri (all of
+ * it where skip_tri is BVH_NONE: world_occluded). */
 #define SHADOW_HITS(k, form, o) SHADOW_HITS_##form(k, o)
 #define SHADOW_HITS_FLAT(k, o) ((o)->obj.id != skip_id && SHADOW_CASTS((o)->obj) && geom_##k##_occludes(o, ray, tmax))
 #define SHADOW_HITS_ROUND SHADOW_HITS_FLAT
 #define SHADOW_HITS_FACES SHADOW_HITS_FLAT
 #define SHADOW_HITS_RAYS(k, o)                                                                                \
-    (SHADOW_CASTS((o)->obj) && geom_##k##_occludes_from(o, ray, tmax, (o)->obj.id == skip_id ? skip_tri : BVH_NONE))
+    (((o)->obj.id != skip_id || skip_tri != BVH_NONE) && SHADOW_CASTS((o)->obj) &&                           \
+     geom_##k##_occludes_from(o, ray, tmax, (o)->obj.id == skip_id ? skip_tri : BVH_NONE))
 static inline __attribute__((always_inline)) bool shadow_occluded_loop(const world_t *w, const ray_t *ray, num_t tmax,
                                                                       uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri), const shadow_ray_cull_t *rc,
                                                                       int mode)
@@ -304,7 +306,7 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
 
 bool world_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id)
 {
-    FXRT_IF_MODEL(const uint32_t skip_tri = BVH_NONE;) /* (a model skip_id: all of it) */
+    FXRT_IF_MODEL(const uint32_t skip_tri = BVH_NONE;) /* (a model skip_id: all of it, as any object) */
     return shadow_occluded(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri));
 }
 

@@ -24,6 +24,7 @@ typedef struct {
     uint16_t index;
     uint16_t id;
     bool exit; /* the exit of the solid the ray starts in */
+    FXRT_IF_MODEL(uint32_t tri;) /* a model's: the triangle met */
 } trace_hit_t;
 
 static void trace_consider(trace_hit_t *best, bool *found, num_t t, geom_kind_t kind, uint16_t index, uint16_t id,
@@ -68,22 +69,32 @@ __attribute__((noinline)) static bool trace_nearest(const world_t *w, const trac
     num_t t;
     vec3_t n;
     const ray_t *ray = &tr->ray;
+    FXRT_IF_MODEL(uint32_t tri = BVH_NONE;)
     FXRT_COUNT(secondary_rays);
     /* The unbounded kinds first; the bounded ones only when the ray
      * meets their bounds. A solid the ray starts in is met where the ray
-     * leaves it (its exit), any other object the ray leaves is not met. */
+     * leaves it (its exit), any other object the ray leaves is not met,
+     * but for a model only the triangle it leaves. */
 #define TRACE_KIND(K, k, ks, cap, solid, form)                                                                \
     for (uint16_t i = 0; i < w->n_##ks; i++) {                                                                \
         const geom_##k##_t *o = &w->ks[i];                                                                    \
         TRACE_KIND_##solid(K, k, form)                                                                        \
     }
 #define TRACE_KIND_0(K, k, form)                                                                              \
-    if (TRACE_HITS_##form(k))                                                                                 \
-        trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, false);
+    if (TRACE_HITS_##form(k)) {                                                                               \
+        trace_consider(hit, &found, t, GEOM_##K, i, o->obj.id, false);                                        \
+        TRACE_TRI_##form(K)                                                                                   \
+    }
+#define TRACE_TRI_FLAT(K)
+#define TRACE_TRI_ROUND(K)
+#define TRACE_TRI_FACES(K)
+#define TRACE_TRI_RAYS(K)                                                                                     \
+    if (hit->kind == GEOM_##K && hit->index == i) /* (taken: the nearest so far) */                          \
+        hit->tri = tri;
 #define TRACE_HITS_FLAT(k) (o->obj.id != tr->from && geom_##k##_hit(o, ray, &t))
 #define TRACE_HITS_ROUND TRACE_HITS_FLAT
 #define TRACE_HITS_FACES TRACE_HITS_FLAT
-#define TRACE_HITS_RAYS(k) geom_##k##_hit_from(o, ray, o->obj.id == tr->from ? tr->from_tri : BVH_NONE, &t)
+#define TRACE_HITS_RAYS(k) geom_##k##_hit_from(o, ray, o->obj.id == tr->from ? tr->from_tri : BVH_NONE, &t, &tri)
 #define TRACE_KIND_1(K, k, form)                                                                                  \
     if (o->obj.id == tr->from) {                                                                              \
         if (tr->inward && geom_##k##_exit(o, ray, &t, &n))                                                    \
@@ -115,7 +126,7 @@ __attribute__((noinline)) static void trace_surface(const world_t *w, const trac
 {
     FXRT_IF_MODEL(part->tri = BVH_NONE; part->smooth = false;
                   if (h->kind == GEOM_MODEL) {
-                      geom_model_surface_part(&w->models[h->index], ray, BVH_NONE, t, n, part);
+                      geom_model_surface_part(&w->models[h->index], ray, h->tri, t, n, part);
                       return;
                   })
     switch (h->kind) {
@@ -252,7 +263,7 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PA
                 break;
             next = stack[--sp];
         }
-        trace_hit_t h = {NUM_ZERO, GEOM_PLANE, 0, 0, false};
+        trace_hit_t h = {NUM_ZERO, GEOM_PLANE, 0, 0, false FXRT_IF_MODEL(, BVH_NONE)};
         if (!trace_nearest(w, &next, &h)) {
             acc = color_add(acc, color_mul(w->background, next.w));
             continue;

@@ -13,7 +13,8 @@
  * least 1/512. The tree is walked depth first with one explicit stack of
  * at most FXRT_MAX_DEPTH pending rays. No offset and no epsilon: a ray
  * that leaves a surface does not test that object again, except a ray
- * into a solid, which meets it where it leaves (geom_<kind>_exit).
+ * into a solid, which meets it where it leaves (geom_<kind>_exit), and a
+ * ray leaving a model, which leaves out only the triangle it starts on.
  * docs/TRACING.md, "The model" and "How it runs", has it in full. */
 #ifndef FXRT_TRACE_H
 #define FXRT_TRACE_H

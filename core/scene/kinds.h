@@ -189,10 +189,11 @@ fxrt_err_t geom_model_check(const bvh_inst_t *inst, color_t color);
 bool geom_model_box(const bvh_inst_t *in, vec3_t *lo, vec3_t *hi);
 /* A model's nearest hit and its surface with the part met (*part): the
  * triangle known (BVH_NONE: none, the walk finds it) intersected alone;
- * and its shadow test with the triangle skip (BVH_NONE: none) left out. */
+ * its nearest hit with the triangle skip (BVH_NONE: none) left out, and
+ * the triangle met (*tri, when not NULL); its shadow test the same way. */
 void geom_model_surface_part(const geom_model_t *o, const ray_t *ray, uint32_t known, num_t *t, vec3_t *n,
                              geom_part_t *part);
-bool geom_model_hit_from(const geom_model_t *o, const ray_t *ray, uint32_t skip, num_t *t);
+bool geom_model_hit_from(const geom_model_t *o, const ray_t *ray, uint32_t skip, num_t *t, uint32_t *tri);
 bool geom_model_occludes_from(const geom_model_t *o, const ray_t *ray, num_t tmax, uint32_t skip);
 /* Smooth triangles (scene/smooth.c; called only where FXRT_SMOOTH):
  *   geom_smooth_check  d's vertex normals, where d->smooth: FXRT_OK,

@@ -93,15 +93,17 @@ bool geom_model_make(geom_model_t *m, const bvh_inst_t *inst, color_t color, uin
 
 bool geom_model_hit(const geom_model_t *o, const ray_t *ray, num_t *t)
 {
-    return geom_model_hit_from(o, ray, BVH_NONE, t);
+    return geom_model_hit_from(o, ray, BVH_NONE, t, NULL);
 }
 
-bool geom_model_hit_from(const geom_model_t *o, const ray_t *ray, uint32_t skip, num_t *t)
+bool geom_model_hit_from(const geom_model_t *o, const ray_t *ray, uint32_t skip, num_t *t, uint32_t *tri)
 {
     bvh_hit_t h;
     if (!bvh_nearest(&o->in, ray, NUM_MAX, skip, &h))
         return false;
     *t = h.t;
+    if (tri)
+        *tri = h.tri;
     return true;
 }
 
@@ -117,9 +119,10 @@ bool geom_model_occludes_from(const geom_model_t *o, const ray_t *ray, num_t tma
 
 /* The winding normal (b - a) x (c - a) of the triangle met, as the
  * geometric normal; where the mesh has vertex normals, the smooth one too.
- * A ray that the renderer found to meet the model meets it again here
- * (the same query on the same ray, or the triangle it met alone: the same
- * t and weights); should it not, t = 0 and n = -d. */
+ * A ray that the renderer found to meet the model meets it again here:
+ * the same query on the same ray (a camera ray), or the triangle its
+ * search met alone (the visibility pass's, a secondary ray's), the same
+ * t and weights; should it not, t = 0 and n = -d. */
 void geom_model_surface_part(const geom_model_t *o, const ray_t *ray, uint32_t known, num_t *t, vec3_t *n,
                              geom_part_t *part)
 {
