@@ -349,6 +349,26 @@ static void write_text(const char *path, const char *text)
     }
 }
 
+/* A random triangle (corners in [-2, 2]) and a random normal per corner
+ * (components in [-1, 1], none near zero), drawn as written (vs, ns) and
+ * read back (v, n); c, its winding normal. False when it is degenerate. */
+static bool smooth_corners(double v[3][3], double n[3][3], char vs[3][3][32], char ns[3][3][32], double c[3])
+{
+    for (int i = 0; i < 3; i++) {
+        for (int k = 0; k < 3; k++)
+            v[i][k] = draw(-2, 2, vs[i][k], sizeof vs[i][k]);
+        for (int k = 0; k < 3; k++)
+            n[i][k] = draw(-1, 1, ns[i][k], sizeof ns[i][k]);
+        if (fabs(n[i][0]) + fabs(n[i][1]) + fabs(n[i][2]) < 0.1)
+            n[i][2] = 1, snprintf(ns[i][2], sizeof ns[i][2], "1");
+    }
+    double u[3], w[3];
+    for (int k = 0; k < 3; k++)
+        u[k] = v[1][k] - v[0][k], w[k] = v[2][k] - v[0][k];
+    c[0] = u[1] * w[2] - u[2] * w[1], c[1] = u[2] * w[0] - u[0] * w[2], c[2] = u[0] * w[1] - u[1] * w[0];
+    return c[0] != 0 || c[1] != 0 || c[2] != 0;
+}
+
 static void test_meshes(const char *dir)
 {
     char objpath[512], scpath[512], sub[512];
@@ -457,34 +477,25 @@ static void test_meshes(const char *dir)
 
     /* Smooth meshes: the file's vn per corner, moved by the nodes as
      * normals; without vn, a lone triangle's corners take its own normal.
-     * One triangle: a smooth triangle object with its vertex normals. */
-    long bad_tri = 0;
+     * Each random triangle twice: alone, a smooth triangle object with its
+     * vertex normals; and FXRT_MESH_INLINE + 1 copies of it (each moved
+     * along x, the same normals), a model whose vertex normals turn
+     * through its own map (M^-T n, normalised), built flat without vn. */
+    long bad_tri = 0, bad_vn = 0;
     for (int iter = 0; iter < 500; iter++) {
-        static char obj[4096], text[8192];
-        double v[3][3], n[3][3];
-        char t[6][32];
+        static char obj[8192], text[8192];
+        double v[3][3], n[3][3], c[3], nt[3][3];
+        char vs[3][3][32], ns[3][3][32];
         size_t used = 0;
         int given = iter % 4 != 0;
+        if (!smooth_corners(v, n, vs, ns, c))
+            continue;
         for (int i = 0; i < 3; i++) {
-            for (int k = 0; k < 3; k++)
-                v[i][k] = draw(-2, 2, t[k], sizeof t[k]);
-            for (int k = 0; k < 3; k++)
-                n[i][k] = draw(-1, 1, t[k + 3], sizeof t[k + 3]);
-            if (fabs(n[i][0]) + fabs(n[i][1]) + fabs(n[i][2]) < 0.1)
-                n[i][2] = 1, snprintf(t[5], sizeof t[5], "1");
-            used += (size_t)snprintf(obj + used, sizeof obj - used, "v %s %s %s\nvn %s %s %s\n", t[0], t[1], t[2],
-                                     t[3], t[4], t[5]);
+            used += (size_t)snprintf(obj + used, sizeof obj - used, "v %s %s %s\nvn %s %s %s\n", vs[i][0], vs[i][1],
+                                     vs[i][2], ns[i][0], ns[i][1], ns[i][2]);
+            memcpy(nt[i], given ? n[i] : c, sizeof nt[i]);
         }
         snprintf(obj + used, sizeof obj - used, given ? "f 1//1 2//2 3//3\n" : "f 1 2 3\n");
-        double u[3], w[3];
-        for (int k = 0; k < 3; k++)
-            u[k] = v[1][k] - v[0][k], w[k] = v[2][k] - v[0][k];
-        double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-        if (c[0] == 0 && c[1] == 0 && c[2] == 0)
-            continue;
-        if (!given)
-            for (int i = 0; i < 3; i++)
-                memcpy(n[i], c, sizeof c);
         write_text(objpath, obj);
         node_t nest[3];
         int depth = (int)(rnd() % 4);
@@ -495,33 +506,15 @@ static void test_meshes(const char *dir)
         int ok = rc == 0 && g_scene.count == 1 && o->kind == SCENE_TRIANGLE && o->smooth;
         for (int i = 0; ok && i < 3; i++) {
             double m[3];
-            moved_normal(nest, depth, n[i], m);
+            moved_normal(nest, depth, nt[i], m);
             ok = vec_close(o->vn[i], m, 1);
         }
         CHECK_SWEEP(ok, "smooth triangle %d: %s", iter, rc ? g_err : text);
         bad_tri += !ok;
-    }
-    CHECK_MSG(bad_tri == 0, "500 smooth one-triangle meshes in random nodes: %ld with wrong vertex normals", bad_tri);
 
-    /* The same as models: FXRT_MESH_INLINE + 1 copies of the triangle
-     * (each moved along x, the same normals), the model's vertex normal
-     * through its own map (M^-T n, normalised); without vn, built flat. */
-    long bad_vn = 0;
-    for (int iter = 0; iter < 500; iter++) {
-        static char obj[4096], text[8192];
-        double v[3][3], n[3][3];
-        char t[6][32];
-        size_t used = 0;
-        int given = iter % 4 != 0;
-        for (int i = 0; i < 3; i++) {
-            for (int k = 0; k < 3; k++)
-                v[i][k] = draw(-2, 2, t[k], sizeof t[k]);
-            for (int k = 0; k < 3; k++)
-                n[i][k] = draw(-1, 1, t[k + 3], sizeof t[k + 3]);
-            if (fabs(n[i][0]) + fabs(n[i][1]) + fabs(n[i][2]) < 0.1)
-                n[i][2] = 1, snprintf(t[5], sizeof t[5], "1");
-            used += (size_t)snprintf(obj + used, sizeof obj - used, "vn %s %s %s\n", t[3], t[4], t[5]);
-        }
+        used = 0;
+        for (int i = 0; i < 3; i++)
+            used += (size_t)snprintf(obj + used, sizeof obj - used, "vn %s %s %s\n", ns[i][0], ns[i][1], ns[i][2]);
         for (int r = 0; r <= FXRT_MESH_INLINE; r++) {
             for (int i = 0; i < 3; i++)
                 used += (size_t)snprintf(obj + used, sizeof obj - used, "v %.4f %.4f %.4f\n", v[i][0] + 5 * r, v[i][1], v[i][2]);
@@ -529,20 +522,13 @@ static void test_meshes(const char *dir)
             used += (size_t)(given ? snprintf(obj + used, sizeof obj - used, "f %d//1 %d//2 %d//3\n", b, b + 1, b + 2)
                                    : snprintf(obj + used, sizeof obj - used, "f %d %d %d\n", b, b + 1, b + 2));
         }
-        double u[3], w[3];
-        for (int k = 0; k < 3; k++)
-            u[k] = v[1][k] - v[0][k], w[k] = v[2][k] - v[0][k];
-        double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-        if (c[0] == 0 && c[1] == 0 && c[2] == 0)
-            continue;
         write_text(objpath, obj);
-        node_t nest[3];
-        int depth = (int)(rnd() % 4);
+        depth = (int)(rnd() % 4);
         nest_scene(text, sizeof text, nest, depth, ANY, "mesh file ../m.obj color 0.2 0.4 0.6 material lambert");
         write_text(scpath, text);
-        int rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
-        const scene_obj_t *o = &g_scene.obj[0];
-        int ok = rc == 0 && g_scene.count == 1 && o->kind == SCENE_MODEL;
+        rc = scene_load(scpath, &g_scene, g_err, sizeof g_err);
+        o = &g_scene.obj[0];
+        ok = rc == 0 && g_scene.count == 1 && o->kind == SCENE_MODEL;
         if (ok && !given) {
             ok = o->mesh->vn == NULL && o->store->mb.face_normals;
         } else if (ok) {
@@ -576,6 +562,7 @@ static void test_meshes(const char *dir)
         CHECK_SWEEP(ok, "smooth model %d: %s", iter, rc ? g_err : text);
         bad_vn += !ok;
     }
+    CHECK_MSG(bad_tri == 0, "500 smooth one-triangle meshes in random nodes: %ld with wrong vertex normals", bad_tri);
     CHECK_MSG(bad_vn == 0, "500 smooth models in random nodes: %ld with wrong vertex normals", bad_vn);
 
     /* Capacity: a mesh of any size is one model (here 1,000 triangles,
