@@ -44,6 +44,18 @@ void meshemit_header(FILE *f, const meshbuild_t *mb, const char *name, const cha
             m->tri16 ? name : "NULL", m->tri16 ? "_tri" : "", m->tri16 ? "NULL" : name, m->tri16 ? "" : "_tri", name);
 }
 
+void meshemit_instance(FILE *f, const char *storage, const char *name, const char *mesh, const meshbuild_map_t *m)
+{
+    fprintf(f, "%sconst fxrt_instance_t %s = {&%s,\n    {", storage, name, mesh);
+    for (int r = 0; r < 3; r++)
+        fprintf(f, "%s{%ld, %ld, %ld}", r ? ", " : "", (long)m->m[r][0], (long)m->m[r][1], (long)m->m[r][2]);
+    fprintf(f, "}, %ld,\n    {FXRT_NUM(%a), FXRT_NUM(%a), FXRT_NUM(%a)},\n    {", (long)m->e, m->t16[0] / 65536.0,
+            m->t16[1] / 65536.0, m->t16[2] / 65536.0);
+    for (int r = 0; r < 3; r++)
+        fprintf(f, "%s{%ld, %ld, %ld}", r ? ", " : "", (long)m->f[r][0], (long)m->f[r][1], (long)m->f[r][2]);
+    fprintf(f, "}, %ld};\n", (long)m->fe);
+}
+
 int meshemit_c(FILE *f, const meshbuild_t *mb, const char *name, const char *src)
 {
     const bvh_mesh_t *m = &mb->mesh;

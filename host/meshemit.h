@@ -20,6 +20,11 @@ void meshemit_arrays(FILE *f, const meshbuild_t *mb, const char *name);
 void meshemit_header(FILE *f, const meshbuild_t *mb, const char *name, const char *header, bool normals,
                      const char *storage);
 
+/* `STORAGE const fxrt_instance_t NAME`: mesh header MESH placed by map m
+ * (T in Q16.16, exactly, as FXRT_NUM of hexadecimal literals: the same
+ * value in every number type as the host's num_from_q16). */
+void meshemit_instance(FILE *f, const char *storage, const char *name, const char *mesh, const meshbuild_map_t *m);
+
 /* One line about mb: triangles, vertices, nodes, depth, bytes, bytes per
  * triangle, triangles dropped. */
 void meshemit_summary(FILE *f, const meshbuild_t *mb, const char *src);

@@ -94,17 +94,11 @@ static int mesh_instance(FILE *f, const meshbuild_t *mb, const char *obj, bool s
         fprintf(stderr, "fxrt-scenec: %s: the placed mesh is not the one written\n", obj);
         return -1;
     }
-    const meshbuild_map_t *m = &o->map;
+    char inst[300];
+    snprintf(inst, sizeof inst, "%s_at", name);
     fprintf(f, "/* %s placed by \"%s\": w = f 2^-fe q + T, q = m 2^-e (w - T) (docs/MESHES.md). */\n", name,
             steps ? steps : "");
-    fprintf(f, "const fxrt_instance_t %s_at = {&%s,\n    {", name, name);
-    for (int r = 0; r < 3; r++)
-        fprintf(f, "%s{%ld, %ld, %ld}", r ? ", " : "", (long)m->m[r][0], (long)m->m[r][1], (long)m->m[r][2]);
-    fprintf(f, "}, %ld,\n    {FXRT_NUM(%a), FXRT_NUM(%a), FXRT_NUM(%a)},\n    {", (long)m->e, m->t16[0] / 65536.0,
-            m->t16[1] / 65536.0, m->t16[2] / 65536.0);
-    for (int r = 0; r < 3; r++)
-        fprintf(f, "%s{%ld, %ld, %ld}", r ? ", " : "", (long)m->f[r][0], (long)m->f[r][1], (long)m->f[r][2]);
-    fprintf(f, "}, %ld};\n", (long)m->fe);
+    meshemit_instance(f, "", inst, name, &o->map);
     return ferror(f) ? -1 : 0;
 }
 

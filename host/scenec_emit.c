@@ -109,19 +109,11 @@ static int emit_models(FILE *data, const scene_t *sc, const engine_desc_t *d)
                 *used = true;
                 continue;
             }
-            const bvh_inst_t *in = d->obj[i].inst;
-            int n = (int)(in - d->inst);
-            fprintf(data, "static const fxrt_instance_t scene_inst%d = {&scene_mesh%d%s, {", n, k, flat ? "_flat" : "");
-            for (int r = 0; r < 3; r++)
-                fprintf(data, "%s{%" PRId32 ", %" PRId32 ", %" PRId32 "}", r ? ", " : "", in->m[r][0], in->m[r][1],
-                        in->m[r][2]);
-            fprintf(data, "}, %" PRId32 ", ", in->e);
-            emit_vec(data, in->t);
-            fputs(", {", data);
-            for (int r = 0; r < 3; r++)
-                fprintf(data, "%s{%" PRId32 ", %" PRId32 ", %" PRId32 "}", r ? ", " : "", in->f[r][0], in->f[r][1],
-                        in->f[r][2]);
-            fprintf(data, "}, %" PRId32 "}; /* line %d */\n", in->fe, o->line);
+            char inst[32], mesh[40];
+            snprintf(inst, sizeof inst, "scene_inst%d", (int)(d->obj[i].inst - d->inst));
+            snprintf(mesh, sizeof mesh, "scene_mesh%d%s", k, flat ? "_flat" : "");
+            fprintf(data, "/* %s: line %d */\n", inst, o->line);
+            meshemit_instance(data, "static ", inst, mesh, &o->map);
         }
     }
     return ferror(data) ? -1 : 0;

@@ -55,15 +55,6 @@ static int bvh_bits64(int64_t v)
 
 static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d);
 
-/* 2^-e as a number (float, double; exact: e <= 62). */
-static num_t bvh_unscale(int e)
-{
-    num_t s = NUM_ONE;
-    for (int i = 0; i < e; i++)
-        s = s * (num_t)0.5;
-    return s;
-}
-
 __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const ray_t *ray, num_t tmax, bvh_ray_t *r)
 {
     const num_t o[3] = {ray->o.x, ray->o.y, ray->o.z}, d[3] = {ray->d.x, ray->d.y, ray->d.z},

@@ -35,6 +35,15 @@
 #define BVH_LEAF_MAX 15
 /* The quantised range: |q| <= BVH_Q_MAX on every axis. */
 #define BVH_Q_MAX 32767
+/* 2^-e as a number (float, double; exact: e <= 62). */
+static inline num_t bvh_unscale(int e)
+{
+    num_t s = NUM_ONE;
+    for (int i = 0; i < e; i++)
+        s = s * (num_t)0.5;
+    return s;
+}
+
 /* Unit vertex normals are stored as round(n * BVH_N_ONE). */
 #define BVH_N_ONE 32767
 

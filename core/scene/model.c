@@ -55,9 +55,7 @@ bool geom_model_box(const bvh_inst_t *in, vec3_t *lo, vec3_t *hi)
             out_lo[i] = num_from_q16((int32_t)ra);
             out_hi[i] = num_from_q16((int32_t)rb);
         } else {
-            num_t sc = NUM_ONE, lim = num_from_int(FXRT_COORD_LIMIT);
-            for (int k = 0; k < in->fe; k++)
-                sc = sc * (num_t)0.5; /* 2^-fe, exact */
+            num_t sc = bvh_unscale(in->fe), lim = num_from_int(FXRT_COORD_LIMIT);
             num_t fa = t[i] + (num_t)a * sc, fb = t[i] + (num_t)b * sc;
             /* the arithmetic's own rounding: 2^-20 of the magnitudes */
             num_t r = (num_abs(t[i]) + (num_t)(b - a) * sc) * (num_t)(1.0 / 1048576) + (num_t)(1.0 / 65536);
