@@ -95,12 +95,12 @@ int ENGINE_SYM(engine_describe)(const scene_t *sc, int width, int height, engine
         fxrt_object_t *t = &d->obj[i];
         t->color = engine_color(o->color);
         t->radius = NUM_ZERO;
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 4; k++)
             t->p[k] = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         /* The parser keeps a kind's fields in p[] and radius as the
          * description does (scene/kinds.h), unused ones 0. */
         t->kind = (geom_kind_t)o->kind;
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 4; k++)
             t->p[k] = engine_vec(o->p[k]);
         t->radius = ENGINE_SYM(engine_num)(o->radius);
         t->material = engine_material(o);

@@ -84,6 +84,7 @@ typedef enum {
     SCENE_F_POINT,  /* 3 coordinates, |v| <= FXRT_COORD_LIMIT */
     SCENE_F_DIR,    /* 3 components, |v| <= FXRT_COORD_LIMIT, nonzero length */
     SCENE_F_MAX,    /* a POINT not below the field before it on any axis (a box's max) */
+    SCENE_F_AXIS,   /* 3 components, |v| <= FXRT_COORD_LIMIT, nonzero (an ellipsoid's semi-axis) */
     SCENE_F_COLOR,  /* 3 components in 0..1 */
     SCENE_F_RADIUS, /* 1 value in (0, FXRT_RADIUS_LIMIT] */
     SCENE_F_FOV,    /* 1 value in (0, 180) degrees */
@@ -102,7 +103,7 @@ typedef struct {
     int optional; /* 0: required exactly once; 1: at most once */
 } scene_field_t;
 
-#define SCENE_MAX_FIELDS 9
+#define SCENE_MAX_FIELDS 10
 
 /* The fields of one statement, in the order they are stored and in which
  * missing ones are reported. */
@@ -125,6 +126,7 @@ typedef struct {
 #define SCENE_NF_DIR 1
 #define SCENE_NF_RADIUS 1
 #define SCENE_NF_MAX 1
+#define SCENE_NF_AXIS 1
 #define SCENE_NF_INST 0
 #define SCENE_FIELD(f, t) SCENE_FIELD_##t(f, t)
 #define SCENE_FIELD_NONE(f, t)
@@ -132,11 +134,13 @@ typedef struct {
 #define SCENE_FIELD_DIR SCENE_FIELD_POINT
 #define SCENE_FIELD_RADIUS SCENE_FIELD_POINT
 #define SCENE_FIELD_MAX SCENE_FIELD_POINT
+#define SCENE_FIELD_AXIS SCENE_FIELD_POINT
 #define SCENE_FIELD_INST(f, t)
-#define SCENE_SHAPE(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
+#define SCENE_SHAPE(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3, f4, t4)              \
     {#k,                                                                                                      \
-     SCENE_NF_##t1 + SCENE_NF_##t2 + SCENE_NF_##t3 + 1 + SCENE_N_MATERIAL_FIELDS,                             \
-     {SCENE_FIELD(f1, t1) SCENE_FIELD(f2, t2) SCENE_FIELD(f3, t3){"color", SCENE_F_COLOR, 0}, SCENE_MATERIAL_FIELDS}},
+     SCENE_NF_##t1 + SCENE_NF_##t2 + SCENE_NF_##t3 + SCENE_NF_##t4 + 1 + SCENE_N_MATERIAL_FIELDS,             \
+     {SCENE_FIELD(f1, t1) SCENE_FIELD(f2, t2) SCENE_FIELD(f3, t3) SCENE_FIELD(f4, t4){"color", SCENE_F_COLOR, 0}, \
+      SCENE_MATERIAL_FIELDS}},
 static const scene_shape_t scene_kind_shape[] = {FXRT_KINDS(SCENE_SHAPE)};
 /* Lights: shadows is optional (default on). */
 static const scene_shape_t scene_shape_point = {
@@ -165,13 +169,14 @@ static const scene_shape_t scene_shape_mesh = {
 /* Every field name of every statement. A run of values ends at any of
  * them, so "center 0 0 radius 1" reports "got 2" rather than trying to read
  * "radius" as a number. */
-#define SCENE_KIND_FIELDS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)               \
-    SCENE_FIELD_NAME_##t1(f1) SCENE_FIELD_NAME_##t2(f2) SCENE_FIELD_NAME_##t3(f3)
+#define SCENE_KIND_FIELDS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3, f4, t4)       \
+    SCENE_FIELD_NAME_##t1(f1) SCENE_FIELD_NAME_##t2(f2) SCENE_FIELD_NAME_##t3(f3) SCENE_FIELD_NAME_##t4(f4)
 #define SCENE_FIELD_NAME_NONE(f)
 #define SCENE_FIELD_NAME_POINT(f) #f,
 #define SCENE_FIELD_NAME_DIR SCENE_FIELD_NAME_POINT
 #define SCENE_FIELD_NAME_RADIUS SCENE_FIELD_NAME_POINT
 #define SCENE_FIELD_NAME_MAX SCENE_FIELD_NAME_POINT
+#define SCENE_FIELD_NAME_AXIS SCENE_FIELD_NAME_POINT
 #define SCENE_FIELD_NAME_INST(f)
 static const char *const scene_all_fields[] = {FXRT_KINDS(SCENE_KIND_FIELDS) "color",
                                                 "eye",   "gaze",   "up",     "fov",    "scale",
@@ -368,6 +373,7 @@ static int scene_check_value(scene_parser_t *p, const char *what, scene_ftype_t 
     switch (type) {
     case SCENE_F_POINT:
     case SCENE_F_MAX:
+    case SCENE_F_AXIS:
         if (!(fabs(v) <= FXRT_COORD_LIMIT))
             return scene_fail(p, "%s: value %s out of range (|coordinate| <= %g)", what, q.s,
                               (double)FXRT_COORD_LIMIT);
@@ -419,6 +425,7 @@ static int scene_ftype_count(scene_ftype_t type)
     switch (type) {
     case SCENE_F_POINT:
     case SCENE_F_MAX:
+    case SCENE_F_AXIS:
     case SCENE_F_DIR:
     case SCENE_F_COLOR:
         return 3;
@@ -823,9 +830,11 @@ static void scene_set_surface(scene_obj_t *o, const scene_fval_t *vals, int colo
 /* Object o (its kind's fields in p[] and radius, as read) through the
  * open nodes' transform, then checked against the domain again. Points
  * map as points; a DIR field is a normal (inverse transpose, normalised);
- * a RADIUS needs a similarity (else the sphere would be an ellipsoid); a
- * MAX point and the point before it are a box's corners, which need a
- * transform that maps axes onto axes (else the box would turn). where
+ * an AXIS maps by the linear part; a sphere (its RADIUS) in a node that
+ * is not a similarity becomes the ellipsoid c' = M c + t, u = r M e_x,
+ * v = r M e_y, w = r M e_z; a MAX point and the point before it are a
+ * box's corners, which need a transform that maps axes onto axes (else
+ * the box would turn). where
  * names a mesh triangle's face ("PATH:LINE") in messages, or is NULL.
  * Outside nodes nothing moves, and only a mesh's vertices need the range
  * check. */
@@ -834,6 +843,7 @@ static int scene_place(scene_parser_t *p, scene_obj_t *o, const char *where)
     static const char axis[3] = {'x', 'y', 'z'};
     const scene_shape_t *sh = &scene_kind_shape[o->kind];
     int nf = sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS, d = p->node_depth, nl = p->node_line[d];
+    (void)axis;
     const xform_t *x = &p->node_xf[d];
     char at[600] = "", after[64] = "";
 
@@ -849,6 +859,8 @@ static int scene_place(scene_parser_t *p, scene_obj_t *o, const char *where)
             continue; /* with the MAX after it */
         if (type == SCENE_F_POINT) {
             o->p[f] = xform_point(x, o->p[f]);
+        } else if (type == SCENE_F_AXIS) {
+            o->p[f] = xform_vector(x, o->p[f]);
         } else if (type == SCENE_F_DIR) {
             if (xform_normal(x, o->p[f], &o->p[f]) != 0)
                 return scene_fail(p, "%s %s cannot be transformed by the node on line %d (its scales underflow)",
@@ -857,10 +869,21 @@ static int scene_place(scene_parser_t *p, scene_obj_t *o, const char *where)
                 return -1;
         } else if (type == SCENE_F_RADIUS) {
             double sc;
-            if (!xform_similar(x, &sc))
-                return scene_fail(p, "a %s in a node that scales unevenly (node on line %d) would be an ellipsoid, "
-                                     "which fxrt does not render yet; scale it by one number",
-                                  sh->label, nl);
+            if (!xform_similar(x, &sc)) {
+                int cap = scene_kind_capacity[SCENE_ELLIPSOID];
+                if (p->kind_count[SCENE_ELLIPSOID] >= cap)
+                    return scene_fail(p, "a %s in a node that scales unevenly (node on line %d) is an ellipsoid: "
+                                         "too many ellipsoids (capacity %d, %s)",
+                                      sh->label, nl, cap, scene_kind_macro[SCENE_ELLIPSOID]);
+                const scene_vec_t e[3] = {{o->radius, 0, 0}, {0, o->radius, 0}, {0, 0, o->radius}};
+                for (int k = 0; k < 3; k++)
+                    o->p[1 + k] = xform_vector(x, e[k]);
+                o->kind = SCENE_ELLIPSOID;
+                o->radius = 0.0;
+                sh = &scene_kind_shape[o->kind];
+                nf = sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS;
+                break; /* (its centre is placed: the field before) */
+            }
             o->radius *= sc;
             if (!(o->radius >= SCENE_Q16_EPS && o->radius <= FXRT_RADIUS_LIMIT))
                 return scene_fail(p, "%s %s is %g after the node on line %d: outside [1/65536, %g]", sh->label,
@@ -898,7 +921,7 @@ static int scene_place(scene_parser_t *p, scene_obj_t *o, const char *where)
                 if (fabs(*c[k]) < SCENE_Q16_EPS / 2)
                     *c[k] = 0.0;
         }
-        if (type != SCENE_F_POINT && type != SCENE_F_MAX)
+        if (type != SCENE_F_POINT && type != SCENE_F_MAX && type != SCENE_F_AXIS)
             continue;
         double v[3] = {o->p[f].x, o->p[f].y, o->p[f].z};
         for (int k = 0; k < 3; k++)
@@ -930,6 +953,8 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
      * Q16.16's rounding, a MAX point not below the field before it. */
     for (f = 0; f < sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS; f++) {
         const char *name = sh->field[f].name;
+        if (sh->field[f].type == SCENE_F_AXIS && scene_is_zero(scene_vec(&vals[f])))
+            return scene_fail(p, "%s %s has zero length", sh->label, name);
         if (sh->field[f].type == SCENE_F_DIR) {
             scene_vec_t n = scene_vec(&vals[f]), nq = scene_vq16(n);
             if (scene_is_zero(n))
@@ -951,6 +976,15 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
                 }
             }
         }
+    }
+    /* An ellipsoid's semi-axes span space: |det [u v w]| above 10^-9 of
+     * |u| |v| |w| (else it is flat; the build's own limits on thin axes
+     * are fxrt_add's, reported when the world is built). */
+    if (kind == SCENE_ELLIPSOID) {
+        scene_vec_t a = scene_vec(&vals[1]), b = scene_vec(&vals[2]), c = scene_vec(&vals[3]);
+        double det = a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+        if (!(fabs(det) > 1e-9 * scene_len(a) * scene_len(b) * scene_len(c)))
+            return scene_fail(p, "ellipsoid u, v and w are dependent: it would be flat");
     }
     /* Per-kind capacities sum to SCENE_MAX_OBJECTS, so this cannot
      * overflow obj[]; checked anyway because the array is the last line of
@@ -975,7 +1009,7 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
     if (scene_place(p, o, NULL) != 0)
         return -1;
     p->out->count++;
-    p->kind_count[kind]++;
+    p->kind_count[o->kind]++; /* (a sphere that a node made an ellipsoid counts as one) */
     return 0;
 }
 

@@ -51,7 +51,7 @@ typedef struct {
     scene_kind_t kind;
     int line;          /* 1-based line of the file it came from */
     double color[3];   /* 0..1 */
-    scene_vec_t p[3];  /* its kind's fields in table order (plane: point, normal; ...) */
+    scene_vec_t p[4];  /* its kind's fields in table order (plane: point, normal; ...) */
     double radius;     /* a RADIUS field (sphere), else 0 */
     scene_material_t material;
     double specular[3]; /* phong, reflective: fractions 0..1, else 0 */

@@ -255,16 +255,18 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
 #define EMIT_NP_MAX 1
 #define EMIT_NP_RADIUS 0
 #define EMIT_NP_INST 0
+#define EMIT_NP_AXIS 1
 #define EMIT_NR_NONE 0
 #define EMIT_NR_POINT 0
 #define EMIT_NR_DIR 0
 #define EMIT_NR_MAX 0
 #define EMIT_NR_RADIUS 1
 #define EMIT_NR_INST 0
-#define EMIT_POINTS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
-    EMIT_NP_##t1 + EMIT_NP_##t2 + EMIT_NP_##t3,
-#define EMIT_RADIUS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                      \
-    EMIT_NR_##t1 + EMIT_NR_##t2 + EMIT_NR_##t3,
+#define EMIT_NR_AXIS 0
+#define EMIT_POINTS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3, f4, t4)              \
+    EMIT_NP_##t1 + EMIT_NP_##t2 + EMIT_NP_##t3 + EMIT_NP_##t4,
+#define EMIT_RADIUS(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3, f4, t4)              \
+    EMIT_NR_##t1 + EMIT_NR_##t2 + EMIT_NR_##t3 + EMIT_NR_##t4,
         static const int points[] = {FXRT_KINDS(EMIT_POINTS)}, radius[] = {FXRT_KINDS(EMIT_RADIUS)};
         int np = points[o->kind];
         fprintf(data, "    {.kind = %s, ", kind_name(o->kind));

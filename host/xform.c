@@ -75,6 +75,13 @@ scene_vec_t xform_point(const xform_t *x, scene_vec_t p)
     return r;
 }
 
+scene_vec_t xform_vector(const xform_t *x, scene_vec_t v)
+{
+    xform_t l = *x;
+    l.t[0] = l.t[1] = l.t[2] = 0.0;
+    return xform_point(&l, v);
+}
+
 int xform_normal(const xform_t *x, scene_vec_t n, scene_vec_t *out)
 {
     const double(*m)[3] = x->m;

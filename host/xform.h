@@ -24,6 +24,8 @@ void xform_translate(xform_t *x, double tx, double ty, double tz);
 void xform_after(xform_t *r, const xform_t *a, const xform_t *b);
 
 scene_vec_t xform_point(const xform_t *x, scene_vec_t p);
+/* A vector (an ellipsoid's semi-axis): the linear part alone. */
+scene_vec_t xform_vector(const xform_t *x, scene_vec_t v);
 /* A normal: the inverse transpose of the linear part times n, normalised.
  * 0, or -1 when the linear part is singular or n is zero. */
 int xform_normal(const xform_t *x, scene_vec_t n, scene_vec_t *out);

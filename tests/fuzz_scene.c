@@ -74,14 +74,15 @@ static long fuzz_line_count(const uint8_t *d, size_t n)
 #define FUZZ_LINE_SAMPLES 8
 #define FUZZ_LINE_MESH 9
 #define FUZZ_LINE_OTHER 10
+#define FUZZ_LINE_ELLIPSOID 11
 /* Added to a line's kind when it lies inside a node (between 'node' and
  * its 'end'). */
 #define FUZZ_IN_NODE 16
 
 static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, long lines)
 {
-    static const char *const kw[] = {"plane", "sphere",  "triangle", "box",    "camera",
-                                     "light", "ambient", "depth",    "samples", "mesh"};
+    static const char *const kw[] = {"plane", "sphere",  "triangle", "box",     "camera", "light",
+                                     "ambient", "depth", "samples",  "mesh",    "",       "ellipsoid"};
     int depth = 0;
     /* scene_parse skips a UTF-8 byte-order mark at the start of the text
      * (line 1's keyword follows it); so does this. */
@@ -100,7 +101,7 @@ static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, lo
         len = i - start;
         kinds[l] = FUZZ_LINE_OTHER;
         for (k = 0; k < (int)(sizeof kw / sizeof kw[0]); k++)
-            if (len == strlen(kw[k]) && memcmp(d + start, kw[k], len) == 0)
+            if (len > 0 && len == strlen(kw[k]) && memcmp(d + start, kw[k], len) == 0)
                 kinds[l] = (unsigned char)k;
         if (depth > 0 && kinds[l] != FUZZ_LINE_OTHER)
             kinds[l] |= FUZZ_IN_NODE;
@@ -187,6 +188,7 @@ static int fuzz_is_zero(scene_vec_t v)
 static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long lines)
 {
     static const int cap[] = {FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES, FXRT_MAX_BOXES};
+    int ellipsoids = 0, file_ellipsoids = 0;
     const scene_camera_t *cam = &s->camera;
     unsigned char *kinds = malloc((size_t)lines + 1);
     long l, cameras = 0;
@@ -209,6 +211,8 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
             file_count[kinds[l] & ~FUZZ_IN_NODE]++;
         else if ((kinds[l] & ~FUZZ_IN_NODE) == FUZZ_LINE_MESH)
             meshes++;
+        else if ((kinds[l] & ~FUZZ_IN_NODE) == FUZZ_LINE_ELLIPSOID)
+            file_ellipsoids++;
     }
     FUZZ_CHECK(cameras == 1, NULL);
     FUZZ_CHECK(cam->line >= 1 && cam->line <= lines, NULL);
@@ -240,18 +244,25 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
     FUZZ_CHECK(s->count >= 0 && s->count <= SCENE_MAX_OBJECTS, NULL);
     for (i = 0; i < s->count; i++) {
         const scene_obj_t *o = &s->obj[i];
-        FUZZ_CHECK(o->kind >= SCENE_PLANE && o->kind <= SCENE_BOX, NULL);
+        /* the four kinds of the lines above, and ellipsoids: an ellipsoid
+         * line's, or a sphere's that a node scales unevenly */
+        FUZZ_CHECK((o->kind >= SCENE_PLANE && o->kind <= SCENE_BOX) || o->kind == SCENE_ELLIPSOID, NULL);
         FUZZ_CHECK(o->line >= 1 && o->line <= lines, NULL);
         int placed = (kinds[o->line] & FUZZ_IN_NODE) != 0, base = kinds[o->line] & ~FUZZ_IN_NODE;
         /* A mesh's triangles share its line. */
         if (base == FUZZ_LINE_MESH)
             FUZZ_CHECK(o->line >= prev_line && o->kind == SCENE_TRIANGLE, NULL);
+        else if (o->kind == SCENE_ELLIPSOID)
+            FUZZ_CHECK(o->line > prev_line && (base == FUZZ_LINE_ELLIPSOID || (placed && base == SCENE_SPHERE)), NULL);
         else
             FUZZ_CHECK(o->line > prev_line && base == (int)o->kind, NULL);
         prev_line = o->line;
-        kind_count[o->kind]++;
+        if (o->kind == SCENE_ELLIPSOID)
+            ellipsoids++;
+        else
+            kind_count[o->kind]++;
         fuzz_check_color(o->color);
-        for (k = 0; k < 3; k++) {
+        for (k = 0; k < 4; k++) {
             if (placed || base == FUZZ_LINE_MESH)
                 fuzz_check_placed(o->p[k]);
             else
@@ -275,13 +286,21 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
                        NULL);
             FUZZ_CHECK(fuzz_is_zero(o->p[2]) && o->radius == 0.0, NULL);
             break;
+        case SCENE_ELLIPSOID:
+            FUZZ_CHECK(!fuzz_is_zero(o->p[1]) && !fuzz_is_zero(o->p[2]) && !fuzz_is_zero(o->p[3]) && o->radius == 0.0,
+                       NULL);
+            break;
         default: break;
         }
     }
+    FUZZ_CHECK(ellipsoids <= FXRT_MAX_ELLIPSOIDS, NULL);
     for (k = 0; k < 4; k++) {
         FUZZ_CHECK(kind_count[k] <= cap[k], NULL);
         if (k == SCENE_TRIANGLE && meshes > 0)
             FUZZ_CHECK(kind_count[k] >= file_count[k], NULL);
+        else if (k == SCENE_SPHERE) /* (some may be ellipsoids now) */
+            FUZZ_CHECK(kind_count[k] + ellipsoids == file_count[k] + file_ellipsoids && ellipsoids >= file_ellipsoids,
+                       NULL);
         else
             FUZZ_CHECK(kind_count[k] == file_count[k], NULL);
     }

@@ -131,10 +131,14 @@ fi
 # the stats counters defined always). Models (a kind of object with a
 # form of its own) added nine: their capacity's default (host or bare
 # board) and its guard, the kind's FXRT_IF_MODEL, the guards of its three
-# files (scene/model.c, vis/setup_model.c, vis/model.c) and depth.c's
+# files (scene/model.c, vis/setup_model.c, vis/model.c: now vis/rays.c) and depth.c's
 # model depth; light/hit.c's shading of a model pixel with its triangle known;
-# and the small-mesh threshold's default (FXRT_MESH_INLINE).
-IF_CAP=243
+# and the small-mesh threshold's default (FXRT_MESH_INLINE). Ellipsoids
+# (a kind of the rays form) added seven: their capacity's default and its
+# guard, FXRT_IF_ELLIPSOID, the guards of their two files, the number
+# types' range arithmetic in scene/ellipsoid.c (one block), and depth.c's
+# rays depth (a FXRT_IF_MODEL before, now any kind of that form).
+IF_CAP=250
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0
 for d in . port math scene vis light frame; do

@@ -210,10 +210,10 @@ static void test_render_and_config(void)
 static void test_strerror(void)
 {
     /* Every code has its own text; unknown codes say so. */
-    for (int a = -1; a >= FXRT_ERR_MESH; a--) {
+    for (int a = -1; a >= FXRT_ERR_AXES; a--) {
         const char *s = fxrt_strerror(a);
         CHECK_MSG(s && *s && strcmp(s, "unknown error") != 0, "code %d", a);
-        for (int b = a - 1; b >= FXRT_ERR_MESH; b--)
+        for (int b = a - 1; b >= FXRT_ERR_AXES; b--)
             CHECK_MSG(strcmp(s, fxrt_strerror(b)) != 0, "codes %d and %d share a text", a, b);
     }
     CHECK(strcmp(fxrt_strerror(-1000), "unknown error") == 0);

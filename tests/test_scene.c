@@ -693,7 +693,7 @@ static const struct error_case error_cases[] = {
     {"samples 2\n" CAM "samples 2\n", 3, "duplicate 'samples' line (first on line 1)"},
     {"samples 2 adaptive\n# x\n" CAM "samples 4\n", 4, "duplicate 'samples' line (first on line 1)"},
     {CAM "deph 4\n", 2, "unknown keyword 'deph' (expected image, background, ambient, camera, light, depth, samples, "
-                        "node, end, mesh, plane, sphere, triangle or box)"},
+                        "node, end, mesh, plane, sphere, triangle, box or ellipsoid)"},
     /* image */
     {"image 0 5\n" CAM, 1, "image size must be 1..4096 x 1..4096, got 0x5"},
     {"image 4097 5\n" CAM, 1, "got 4097x5"},

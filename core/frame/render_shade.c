@@ -42,7 +42,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         uint8_t mask = 0;
         cam_ray(cam, x, y, &ray);
         color_t c;
-        FXRT_IF_MODEL(if (o->kind == RENDER_RAYS) /* its triangle: the visibility pass's (vis/model.c) */
+        FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) /* its triangle: the visibility pass's (vis/rays.c) */
                       c = shade_model_k(r->vis.world, o->index, &ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
                                         r->keys ? &mask : NULL);
                       else)

@@ -196,13 +196,12 @@ enum { SHADOW_CULLS = SHADOW_CULL };
 /* world_occluded, skipping what rc rules out (mode: how). An object's cull
  * entry is read before the object (the table is small and contiguous);
  * the object itself is skipped by its id when its entry did not cull it,
- * but a model (FORM RAYS) only leaves out its triangle skip_tri (all of
- * it where skip_tri is BVH_NONE: world_occluded). */
-#define SHADOW_HITS(k, form, o) SHADOW_HITS_##form(k, o)
-#define SHADOW_HITS_FLAT(k, o) ((o)->obj.id != skip_id && SHADOW_CASTS((o)->obj) && geom_##k##_occludes(o, ray, tmax))
-#define SHADOW_HITS_ROUND SHADOW_HITS_FLAT
-#define SHADOW_HITS_FACES SHADOW_HITS_FLAT
-#define SHADOW_HITS_RAYS(k, o)                                                                                \
+ * but a model (its field an INST: a kind of parts) only leaves out its
+ * triangle skip_tri (all of it where skip_tri is BVH_NONE:
+ * world_occluded). */
+#define SHADOW_HITS(k, t1, o) SHADOW_HITS_##t1(k, o)
+#define SHADOW_HITS_POINT(k, o) ((o)->obj.id != skip_id && SHADOW_CASTS((o)->obj) && geom_##k##_occludes(o, ray, tmax))
+#define SHADOW_HITS_INST(k, o)                                                                                \
     (((o)->obj.id != skip_id || skip_tri != BVH_NONE) && SHADOW_CASTS((o)->obj) &&                           \
      geom_##k##_occludes_from(o, ray, tmax, (o)->obj.id == skip_id ? skip_tri : BVH_NONE))
 static inline __attribute__((always_inline)) bool shadow_occluded_loop(const world_t *w, const ray_t *ray, num_t tmax,
@@ -220,17 +219,17 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
         rc = &own;
     }
     /* Per kind, its objects: an unbounded kind's have no cull entry. */
-#define SHADOW_LOOP(K, k, ks, cap, solid, bounded, form, ...) FXRT_IF_##K(SHADOW_LOOP_##bounded(K, k, ks, form))
-#define SHADOW_LOOP_0(K, k, ks, form)                                                                         \
+#define SHADOW_LOOP(K, k, ks, cap, solid, bounded, form, edges, f1, t1, ...) FXRT_IF_##K(SHADOW_LOOP_##bounded(K, k, ks, t1))
+#define SHADOW_LOOP_0(K, k, ks, t1)                                                                         \
     for (uint16_t i = 0; i < w->n_##ks; i++)                                                                  \
-        if (SHADOW_HITS(k, form, &w->ks[i]))                                                                  \
+        if (SHADOW_HITS(k, t1, &w->ks[i]))                                                                  \
             return true;
-#define SHADOW_LOOP_1(K, k, ks, form)                                                                         \
+#define SHADOW_LOOP_1(K, k, ks, t1)                                                                         \
     {                                                                                                         \
         const shadow_cull_t *e = SHADOW_ROW(SHADOW_SLOT_##K);                                                 \
         const geom_##k##_t *o = w->ks;                                                                        \
         for (uint16_t n = w->n_##ks; n > 0; n--, o++) {                                                       \
-            if (!SHADOW_SKIP(e) && SHADOW_HITS(k, form, o))                                                   \
+            if (!SHADOW_SKIP(e) && SHADOW_HITS(k, t1, o))                                                   \
                 return true;                                                                                  \
             SHADOW_NEXT(e);                                                                                   \
         }                                                                                                     \

@@ -4,7 +4,7 @@
  * and of the host tools (the scene language, the scene compiler) is made
  * from this table. docs/ARCHITECTURE.md, "A new kind", has the steps.
  *
- * X(KIND, kind, kinds, CAPACITY, SOLID, BOUNDED, FORM, EDGES, F1, T1, F2, T2, F3, T3):
+ * X(KIND, kind, kinds, CAPACITY, SOLID, BOUNDED, FORM, EDGES, F1, T1, F2, T2, F3, T3, F4, T4):
  *   KIND      the enum name's suffix: GEOM_KIND
  *   kind      the infix of its functions (geom_kind_hit, render_setup_kind)
  *             and its scene keyword
@@ -20,7 +20,8 @@
  *   Fi Ti     its fields, in the scene language's words and in the order
  *             of geom_desc_t's p[] (a RADIUS field is its radius): name
  *             and type (POINT, DIR nonzero, RADIUS, MAX a point not below
- *             the field before on any axis, INST a model's placed mesh,
+ *             the field before on any axis, AXIS a semi-axis (a vector a
+ *             node maps by its linear part), INST a model's placed mesh,
  *             geom_desc_t's inst; _ NONE for an unused one)
  * In world order: planes first (the renderer's planes lead its objects). */
 #ifndef FXRT_SCENE_KINDS_H
@@ -29,13 +30,14 @@
 #include "scene/bvh.h"
 #include "scene/geom.h"
 
-/*  X(KIND,     kind,     kinds,     CAPACITY,           SOLID BOUNDED FORM   EDGES  fields ...) */
-#define FXRT_KINDS(X)                                                                                         \
-    X(PLANE,    plane,    planes,    FXRT_MAX_PLANES,    0,    0,      FLAT,  0,     point, POINT, normal, DIR, _, NONE) \
-    X(SPHERE,   sphere,   spheres,   FXRT_MAX_SPHERES,   1,    1,      ROUND, 0,     center, POINT, radius, RADIUS, _, NONE) \
-    X(TRIANGLE, triangle, triangles, FXRT_MAX_TRIANGLES, 0,    1,      FLAT,  3,     a, POINT, b, POINT, c, POINT) \
-    X(BOX,      box,      boxes,     FXRT_MAX_BOXES,     1,    1,      FACES, 0,     min, POINT, max, MAX, _, NONE) \
-    X(MODEL,    model,    models,    FXRT_MAX_MODELS,    0,    1,      RAYS,  0,     mesh, INST, _, NONE, _, NONE)
+/*  X(KIND,      kind,      kinds,      CAPACITY,            SOLID BOUNDED FORM   EDGES  fields ...) */
+#define FXRT_KINDS(X)                                                                                          \
+    X(PLANE,     plane,     planes,     FXRT_MAX_PLANES,     0,    0,      FLAT,  0,     point, POINT, normal, DIR, _, NONE, _, NONE) \
+    X(SPHERE,    sphere,    spheres,    FXRT_MAX_SPHERES,    1,    1,      ROUND, 0,     center, POINT, radius, RADIUS, _, NONE, _, NONE) \
+    X(TRIANGLE,  triangle,  triangles,  FXRT_MAX_TRIANGLES,  0,    1,      FLAT,  3,     a, POINT, b, POINT, c, POINT, _, NONE) \
+    X(BOX,       box,       boxes,      FXRT_MAX_BOXES,      1,    1,      FACES, 0,     min, POINT, max, MAX, _, NONE, _, NONE) \
+    X(MODEL,     model,     models,     FXRT_MAX_MODELS,     0,    1,      RAYS,  0,     mesh, INST, _, NONE, _, NONE, _, NONE) \
+    X(ELLIPSOID, ellipsoid, ellipsoids, FXRT_MAX_ELLIPSOIDS, 1,    1,      RAYS,  0,     center, POINT, u, AXIS, v, AXIS, w, AXIS)
 
 /* FXRT_IF_KIND(...): its arguments where the kind is compiled in, nothing
  * where its capacity is 0. */
@@ -63,6 +65,11 @@
 #define FXRT_IF_MODEL(...) __VA_ARGS__
 #else
 #define FXRT_IF_MODEL(...)
+#endif
+#if FXRT_MAX_ELLIPSOIDS > 0
+#define FXRT_IF_ELLIPSOID(...) __VA_ARGS__
+#else
+#define FXRT_IF_ELLIPSOID(...)
 #endif
 
 /* FXRT_IF_SMOOTH(...): its arguments where smooth shading is compiled in
@@ -104,10 +111,11 @@ FXRT_STATIC_ASSERT(FXRT_RENDER_MAX_OBJECTS <= 65535, "total object capacity (the
 
 /* One object as data (the public API's fxrt_object_t): p[] holds its
  * kind's fields in table order (plane point, normal; sphere centre;
- * triangle a, b, c; box min, max), radius a RADIUS field. */
+ * triangle a, b, c; box min, max; ellipsoid centre, u, v, w), radius a
+ * RADIUS field. */
 typedef struct {
     geom_kind_t kind;
-    vec3_t p[3];
+    vec3_t p[4];
     num_t radius;
     color_t color;
     material_t material; /* all zero: MATERIAL_FLAT */
@@ -167,6 +175,19 @@ typedef struct {
     bool smooth;
     vec3_t ns;
 } geom_part_t;
+/* An ellipsoid: the points c + u x + v y + w z with x^2 + y^2 + z^2 <= 1
+ * (scene/ellipsoid.c): a sphere a node scales unevenly. inv is the
+ * inverse of the matrix of columns u, v, w, which maps a point's offset
+ * from c to the unit sphere's space; half, its box's half extents; reach,
+ * the radius of a sphere around it. */
+typedef struct {
+    vec3_t c, u, v, w;
+    vec3_t inv[3]; /* rows */
+    vec3_t half;
+    num_t reach;
+    geom_common_t obj;
+} geom_ellipsoid_t;
+
 #define GEOM_PART_PARAM FXRT_IF_MODEL(, const geom_part_t *part)
 #define GEOM_PART_ARG(x) FXRT_IF_MODEL(, x)
 
@@ -179,6 +200,9 @@ fxrt_err_t geom_plane_check(vec3_t point, vec3_t normal, color_t color);
 fxrt_err_t geom_sphere_check(vec3_t center, num_t radius, color_t color);
 fxrt_err_t geom_triangle_check(vec3_t a, vec3_t b, vec3_t c, color_t color);
 fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color);
+bool geom_ellipsoid_make(geom_ellipsoid_t *e, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color,
+                         uint16_t id);
+fxrt_err_t geom_ellipsoid_check(vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color);
 bool geom_model_make(geom_model_t *m, const bvh_inst_t *inst, color_t color, uint16_t id);
 fxrt_err_t geom_model_check(const bvh_inst_t *inst, color_t color);
 /* A model's box in world space, lo <= hi: every point of the mesh as the
@@ -252,20 +276,25 @@ FXRT_KINDS(GEOM_SOLID_API)
 #undef GEOM_KIND_API
 #undef GEOM_SOLID_API
 
-/* GEOM_FIELDS(d, T1, T2, T3): description d's fields as the arguments of
- * its kind's geom_K_check and geom_K_make (each followed by a comma): p[]
- * in order for points, directions and MAX points, radius for a RADIUS. */
-#define GEOM_FIELDS(d, t1, t2, t3) GEOM_ARG_##t1(d, 0) GEOM_ARG_##t2(d, GEOM_NP_##t1) GEOM_ARG_##t3(d, GEOM_NP_##t1 + GEOM_NP_##t2)
+/* GEOM_FIELDS(d, T1, T2, T3, T4): description d's fields as the arguments
+ * of its kind's geom_K_check and geom_K_make (each followed by a comma):
+ * p[] in order for points, directions, MAX points and axes, radius for a
+ * RADIUS. */
+#define GEOM_FIELDS(d, t1, t2, t3, t4)                                                                       \
+    GEOM_ARG_##t1(d, 0) GEOM_ARG_##t2(d, GEOM_NP_##t1) GEOM_ARG_##t3(d, GEOM_NP_##t1 + GEOM_NP_##t2)         \
+        GEOM_ARG_##t4(d, GEOM_NP_##t1 + GEOM_NP_##t2 + GEOM_NP_##t3)
 #define GEOM_ARG_NONE(d, i)
 #define GEOM_ARG_POINT(d, i) (d)->p[i],
 #define GEOM_ARG_DIR GEOM_ARG_POINT
 #define GEOM_ARG_MAX GEOM_ARG_POINT
+#define GEOM_ARG_AXIS GEOM_ARG_POINT
 #define GEOM_ARG_RADIUS(d, i) (d)->radius,
 #define GEOM_ARG_INST(d, i) (d)->inst,
 #define GEOM_NP_NONE 0
 #define GEOM_NP_POINT 1
 #define GEOM_NP_DIR 1
 #define GEOM_NP_MAX 1
+#define GEOM_NP_AXIS 1
 #define GEOM_NP_RADIUS 0
 #define GEOM_NP_INST 0
 

@@ -176,12 +176,12 @@ int32_t world_add(world_t *w, const geom_desc_t *d)
     (void)lo, (void)hi, (void)id, (void)e;
     FXRT_IF_SMOOTH(if ((e = geom_smooth_check(d)) != FXRT_OK) return e;)
     switch (d->kind) {
-#define WORLD_ADD(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3)                         \
+#define WORLD_ADD(K, k, ks, cap, solid, bounded, form, edges, f1, t1, f2, t2, f3, t3, f4, t4)                         \
     case GEOM_##K:                                                                                            \
-        FXRT_IF_##K(e = geom_##k##_check(GEOM_FIELDS(d, t1, t2, t3) d->color);                                \
+        FXRT_IF_##K(e = geom_##k##_check(GEOM_FIELDS(d, t1, t2, t3, t4) d->color);                                \
                     if (e != FXRT_OK) return e;                                                               \
                     if (w->n_##ks >= cap) return FXRT_ERR_FULL;                                               \
-                    if (!geom_##k##_make(&w->ks[w->n_##ks], GEOM_FIELDS(d, t1, t2, t3) d->color, id))         \
+                    if (!geom_##k##_make(&w->ks[w->n_##ks], GEOM_FIELDS(d, t1, t2, t3, t4) d->color, id))         \
                         return FXRT_ERR_DIRECTION; /* a plane's normal too short to normalise */              \
                     FXRT_WHEN(bounded, if (FXRT_MAX_DEPTH > 0) {                                           \
                         geom_##k##_bounds(&w->ks[w->n_##ks], &lo, &hi);                                   \

@@ -317,23 +317,43 @@ __attribute__((noinline)) static render_depth_t render_sphere_depth_at(const vis
     return render_sphere_depth(o, ix, iy, rlin_at(&o->u.sphere->b, ix, iy), cp, &disc);
 }
 
-/* A model's depth at pixel offsets (ix, iy): its camera ray (cam_ray, the
- * ray the shading pass casts too) through the mesh's tree (scene/bvh.c);
- * false where it misses. The depth is the camera-space ray parameter -z /
- * f of the hit point, in which every other object's depth is compared. */
-#if RENDER_MODELS
-bool render_model_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_depth_t *t, uint32_t *tri)
+/* The depth of an object of the RAYS form at pixel offsets (ix, iy): its
+ * camera ray (cam_ray, the ray the shading pass casts too) meets it (a
+ * model's through the mesh's tree, scene/bvh.c; another kind's by its
+ * geom_K_hit); false where it misses. The depth is the camera-space ray
+ * parameter -z / f of the hit point, in which every other object's depth
+ * is compared. */
+#if RENDER_RAY_KINDS
+bool render_rays_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_depth_t *t, uint32_t *tri)
 {
     const cam_t *cam = r->cam;
+    const world_t *w = r->world;
+    const render_obj_t *o = &r->obj[oi];
     ray_t ray;
-    bvh_hit_t h;
+    num_t th = NUM_ZERO;
+    uint32_t met = BVH_NONE;
+    bool hit = false;
     cam_ray(cam, (ix + cam->width - 1) / 2, (iy + cam->height - 1) / 2, &ray);
-    if (!bvh_nearest(&r->world->models[r->obj[oi].index].in, &ray, NUM_MAX, BVH_NONE, &h))
+    /* A model's hit also gives the triangle met; other kinds' by the table. */
+    FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) hit = geom_model_hit_from(&w->models[o->index], &ray, BVH_NONE, &th, &met);
+                  else)
+    switch (o->geom) {
+#define RENDER_RAYS_HIT(K, k, ks, cap, solid, bounded, form, ...) RENDER_RAYS_HIT_##form(K, k, ks)
+#define RENDER_RAYS_HIT_FLAT(K, k, ks)
+#define RENDER_RAYS_HIT_ROUND(K, k, ks)
+#define RENDER_RAYS_HIT_FACES(K, k, ks)
+#define RENDER_RAYS_HIT_RAYS(K, k, ks) FXRT_IF_##K(case GEOM_##K: hit = geom_##k##_hit(&w->ks[o->index], &ray, &th); break;)
+        FXRT_KINDS(RENDER_RAYS_HIT)
+#undef RENDER_RAYS_HIT
+    default:
+        break;
+    }
+    if (!hit)
         return false;
-    num_t z = vec3_dot(vec3_sub(ray_at(&ray, h.t), cam->e), cam->w);
+    num_t z = vec3_dot(vec3_sub(ray_at(&ray, th), cam->e), cam->w);
     *t = render_depth_of(num_neg(z), render_ortho(cam) ? NUM_ONE : cam->focal);
     if (tri)
-        *tri = h.tri;
+        *tri = met;
     return true;
 }
 #endif
@@ -345,8 +365,11 @@ static render_depth_t render_depth_at(const vis_t *r, uint16_t oi, int32_t ix, i
     const render_obj_t *o = &r->obj[oi];
     if (o->kind == RENDER_SPHERE)
         return render_sphere_depth_at(r, oi, ix, iy);
-    FXRT_IF_MODEL(render_depth_t t; if (o->kind == RENDER_RAYS) /* (the callers ask about a pixel it covers) */
-                  return render_model_at(r, oi, ix, iy, &t, NULL) ? t : o->thi;)
+#if RENDER_RAY_KINDS
+    render_depth_t t;
+    if (o->kind == RENDER_RAYS) /* (the callers ask about a pixel it covers) */
+        return render_rays_at(r, oi, ix, iy, &t, NULL) ? t : o->thi;
+#endif
     /* A plane or triangle covers the pixel (every caller asks about an
      * object there); a box: the nearest face that covers it. */
     if (o->kind == RENDER_FLAT) {

@@ -224,11 +224,17 @@ typedef struct {
 
 /* What the row loop makes of an object: a sphere, one flat piece, a box
  * seen from outside (its front faces), a box with the eye inside (every
- * pixel: its nearest exit face), or a model (a ray per pixel of its
- * bounds through its mesh's tree: vis/model.c). */
+ * pixel: its nearest exit face), or an object of the RAYS form (a model,
+ * an ellipsoid: a ray per pixel of its bounds, vis/rays.c). */
 typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_INSIDE_BOX, RENDER_RAYS } render_kind_t;
-/* Models are compiled in: the row loop's and depth's RENDER_RAYS paths. */
-#define RENDER_MODELS (FXRT_MAX_MODELS > 0)
+/* Kinds of the RAYS form are compiled in (models, ellipsoids): the row
+ * loop's and depth's RENDER_RAYS paths. */
+#define RENDER_CAP_RAYS(K, k, ks, cap, solid, bounded, form, edges, ...) RENDER_CAP_RAYS_##form(cap)
+#define RENDER_CAP_RAYS_FLAT(cap)
+#define RENDER_CAP_RAYS_ROUND(cap)
+#define RENDER_CAP_RAYS_FACES(cap)
+#define RENDER_CAP_RAYS_RAYS(cap) +(cap)
+#define RENDER_RAY_KINDS (0 FXRT_KINDS(RENDER_CAP_RAYS) > 0)
 
 typedef struct {
     render_depth_t tlo, thi; /* first: 8-byte aligned in Q16.16, no padding before them */
@@ -313,7 +319,7 @@ typedef struct {
      * keys are wanted. */
     uint16_t painted[FXRT_RENDER_MAX_WIDTH];
     bool track;
-    /* Per column the model painter's triangle (vis/model.c), which the
+    /* Per column the model painter's triangle (vis/rays.c), which the
      * shading pass intersects alone instead of walking the model again. */
     FXRT_IF_MODEL(uint32_t model_tri[FXRT_RENDER_MAX_WIDTH];)
 #endif

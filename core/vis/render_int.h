@@ -64,7 +64,7 @@ static inline bool render_tracks(const vis_t *r) { return r->track || r->want_ke
 static inline void render_mark(vis_t *r, int32_t x, uint16_t oi) { r->painted[x] = oi; }
 /* Column x's painter so far on this row (RENDER_VIS_NONE: none). */
 static inline uint16_t render_painter(const vis_t *r, int32_t x) { return r->painted[x]; }
-/* Column x's model painter met triangle tri (vis/model.c). */
+/* Column x's model painter met triangle tri (vis/rays.c). */
 FXRT_IF_MODEL(static inline void render_model_tri(vis_t *r, int32_t x, uint32_t tri) { r->model_tri[x] = tri; })
 #else
 static inline bool render_tracks(const vis_t *r)
@@ -433,16 +433,18 @@ bool render_resolve_box(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t 
                         render_k_t n, render_k_t d);
 bool render_resolve_sphere(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_k_t b, const render_wide_t *c,
                            const render_wide_t *disc);
-/* A model, whose depth t at the pixel its ray gave (vis/model.c). */
+/* An object of the RAYS form, whose depth t at the pixel its ray gave
+ * (vis/rays.c). */
 bool render_resolve_depth(vis_t *r, uint32_t cur, uint16_t oi, int32_t x, int32_t iy, render_depth_t t);
 
-/* vis/model.c (RENDER_MODELS): model oi's scan over columns x0..x1 of row
- * iy, a ray per column; where it paints a column, the triangle its ray met
- * goes to r->model_tri for the shading pass. vis/depth.c: its depth at
- * pixel offsets (ix, iy) into *t and the triangle met into *tri (when not
- * NULL), or false where its ray misses. */
-void render_scan_model(vis_t *r, uint16_t oi, int32_t x0, int32_t x1, int32_t iy, uint8_t *rgb, bool lone);
-bool render_model_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_depth_t *t, uint32_t *tri);
+/* vis/rays.c (RENDER_RAY_KINDS): object oi's scan over columns x0..x1
+ * of row iy, a ray per column; where a model paints a column, the
+ * triangle its ray met goes to r->model_tri for the shading pass.
+ * vis/depth.c: its depth at pixel offsets (ix, iy) into *t and a model's
+ * triangle met into *tri (when not NULL; BVH_NONE for other kinds), or
+ * false where its ray misses. */
+void render_scan_rays(vis_t *r, uint16_t oi, int32_t x0, int32_t x1, int32_t iy, uint8_t *rgb, bool lone);
+bool render_rays_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_depth_t *t, uint32_t *tri);
 
 /* vis/depth.c (Q16.16 with steps and spans): bounds lo, hi on object oi's depth at every column p..q of
  * row iy, all of which it covers (planes, triangles, boxes, spheres with

@@ -210,8 +210,8 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
         /* After this object, columns x0..x1 may be claimed (the hull of
          * every object's columns so far on this row). */
         int32_t dlo = r->dirty_lo, dhi = r->dirty_hi;
-        if (RENDER_MODELS && o->kind == RENDER_RAYS)
-            render_scan_model(r, i, x0, x1, iy, rgb, lone);
+        if (RENDER_RAY_KINDS && o->kind == RENDER_RAYS)
+            render_scan_rays(r, i, x0, x1, iy, rgb, lone);
         else
         switch (o->kind) {
         case RENDER_INSIDE_BOX:

@@ -70,7 +70,7 @@ static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_co
 #define RENDER_RECORDS_FLAT o->u.flat = &r->flats[r->flats_used++]
 #define RENDER_RECORDS_ROUND o->u.sphere = &r->spheres[r->spheres_used++]
 #define RENDER_RECORDS_FACES o->u.face = &r->box_faces[r->box_used]
-#define RENDER_RECORDS_RAYS o->u.flat = NULL /* (no records: vis/model.c) */
+#define RENDER_RECORDS_RAYS o->u.flat = NULL /* (no records: vis/rays.c) */
         FXRT_KINDS(RENDER_RECORDS)
 #undef RENDER_RECORDS
 #undef RENDER_RECORDS_FLAT

@@ -170,6 +170,18 @@ static inline void render_points_bounds(const cam_t *cam, const vec3_t *p, int n
     render_idx_bounds(cam, p, render_idx8, n, proj, &have, o);
 }
 
+/* An object of the RAYS form (vis/rays.c): its bounds and depth range are
+ * those of the world box lo..hi around it. */
+static inline void render_setup_rays(vis_t *r, vec3_t lo, vec3_t hi, render_obj_t *o)
+{
+    o->kind = RENDER_RAYS;
+    o->nflat = 0;
+    vec3_t v[8];
+    for (int c = 0; c < 8; c++)
+        v[c] = render_to_cam(r->cam, vec3_make((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z));
+    render_points_bounds(r->cam, v, 8, o);
+}
+
 /* Each kind's set-up (vis/setup_KIND.c): object o's forms and bounds from
  * its world record. */
 #define RENDER_SETUP_KIND(K, k, ...) void render_setup_##k(vis_t *r, rext_t ext, const geom_##k##_t *g, render_obj_t *o);
