@@ -98,7 +98,7 @@ $(BUILD)/tests/%: $(BUILD)/tests/%.o $$($$*_DEPS)
 	$(Q)$(CC) $(CFLAGS_H) -o $@ $(filter %.o,$^) $(LDLIBS_H)
 
 # Tests of the number-generic core, one binary per number type.
-NUM_TESTS   := test_geom test_ellipsoid
+NUM_TESTS   := test_geom test_affine
 NUM_TEST_BIN := $(foreach t,$(NUM_TESTS),$(foreach n,$(NUMBERS),$(BUILD)/tests/$(t)_$(n)))
 define num_test_rules
 $(BUILD)/tests/$(1)_$(2): tests/$(1).c $(wildcard tests/*.h) $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(2)/%.o)

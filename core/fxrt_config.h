@@ -47,14 +47,22 @@ FXRT_STATIC_ASSERT(FXRT_NUMBER == FXRT_Q16 || FXRT_NUMBER == FXRT_FLOAT || FXRT_
 #define FXRT_MAX_MODELS 16
 #endif
 #endif
-/* Ellipsoids: spheres that a node scales unevenly (scene/ellipsoid.c), a
- * ray per pixel of their bounds. Default: 16 on the host, 0 on bare-metal
- * boards (the scene compiler sets it to the scene's count). */
+/* Ellipsoids and parallelepipeds: spheres that a node scales unevenly
+ * and boxes that a node turns (scene/ellipsoid.c, scene/parallelepiped.c),
+ * a ray per pixel of their bounds. Default: 16 each on the host, 0 on
+ * bare-metal boards (the scene compiler sets each to the scene's count). */
 #ifndef FXRT_MAX_ELLIPSOIDS
 #if FXRT_PORT_BARE
 #define FXRT_MAX_ELLIPSOIDS 0
 #else
 #define FXRT_MAX_ELLIPSOIDS 16
+#endif
+#endif
+#ifndef FXRT_MAX_PARALLELEPIPEDS
+#if FXRT_PORT_BARE
+#define FXRT_MAX_PARALLELEPIPEDS 0
+#else
+#define FXRT_MAX_PARALLELEPIPEDS 16
 #endif
 #endif
 

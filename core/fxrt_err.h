@@ -43,7 +43,7 @@ typedef enum {
     FXRT_ERR_INDEX = -31,    /* refraction index outside FXRT_INDEX_MIN..FXRT_INDEX_MAX */
     FXRT_ERR_LIGHTS = -32,   /* FXRT_MAX_LIGHTS lights are there already */
     FXRT_ERR_MESH = -33,     /* a model whose mesh data or placement is malformed (bvh_check, geom_model_box) */
-    FXRT_ERR_AXES = -34,     /* an ellipsoid's axes flat (dependent), thinner than 2^-13, or det beyond 2^30 */
+    FXRT_ERR_AXES = -34,     /* an ellipsoid's or parallelepiped's axes flat (dependent), thinner than 2^-13, or det beyond 2^30 */
     /* Camera errors without a name above (cam_setup codes added later)
      * come back as FXRT_ERR_CAM_BASE + their cam_err_t, so the caller and
      * fxrt_strerror still tell them apart. */

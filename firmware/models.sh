@@ -12,8 +12,14 @@
 # and Spot at 1,654 and 23,062 triangles from ../shared/models/ where that
 # folder exists (the project does not copy them). Writes
 # $BUILD/models/bench.md; with MODELS_UPDATE_DOCS=1 also docs/bench/models.md.
+# Number types: for the models of MODELS_NUMBERS_ONLY (default ico1280,
+# ico5120 and spot), both scenes on every board also as the float builds
+# (fast: direct evaluation; step: -DFXRT_FLOAT_STEP=1), each frame
+# against the host's double frame; the best float build of a board is the
+# one with the fewest instructions whose mismatched % is at most q16's
+# (docs/BENCHMARKS.md's rule), and the table gives it against q16.
 # Environment: BUILD, MODELS_SIZE, MODELS_BOARDS ("board ..."),
-# MODELS_ONLY (model names, e.g. "ico80 spot").
+# MODELS_ONLY (model names, e.g. "ico80 spot"), MODELS_NUMBERS_ONLY.
 set -u
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
@@ -116,6 +122,57 @@ for name in $specs; do
         echo "$row" >&2
     done
 done
+# Number types: q16 against the float builds (rows into $nt).
+nt=$out/numbers.md
+nt_specs=${MODELS_NUMBERS_ONLY:-ico1280 ico5120 spot}
+{
+    echo
+    echo "Number types at $SIZE: q16 against the float builds on each board (instructions per pixel;"
+    echo "mismatched % of the board's frame against the host's double frame). Fast: direct evaluation;"
+    echo "step: forward differences (-DFXRT_FLOAT_STEP=1; a model's rays are the same in both). The best float"
+    echo "build has the fewest instructions with mismatched % at most q16's (on the M4F: hard float)."
+    echo
+    echo "| model | scene | board | q16 | float fast | float step | best float / q16 (instructions) |"
+    echo "|---|---|---|---:|---:|---:|---:|"
+} >"$nt"
+for name in $nt_specs; do
+    [[ " $specs " == *" $name "* ]] || continue
+    for mode in lit flat; do
+        sn=$name-$mode
+        sf=$out/scenes/$sn.scene
+        [ -f "$out/$sn-double.ppm" ] || continue
+        for b in $boards; do
+            fb=full
+            [ "$b" = microbit ] && fb=stream
+            cells=() ipps=() mms=()
+            for build in q16 float:fast float:step; do
+                num=${build%%:*} extra=() tag=""
+                [ "$build" = float:fast ] && tag=ff
+                [ "$build" = float:step ] && tag=fs && extra=(FW_EXTRA=-DFXRT_FLOAT_STEP=1)
+                [ -n "$tag" ] && extra+=(FW_TAG=$tag)
+                echo "bench-models: $sn $b $build" >&2
+                log=$out/$sn-$b-${tag:-q16}.log
+                if ! $M qemu SCENE="$sf" BOARD="$b" NUMBER="$num" SIZE="$SIZE" FB="$fb" "${extra[@]}" >"$log" 2>&1; then
+                    grep -qE "overflowed|does not fit" "$log" && cells+=("does not fit") || { cells+=("failed"); fail=1; }
+                    ipps+=("") mms+=("")
+                    continue
+                fi
+                line=$(grep "instructions_per_pixel=" "$log" | tail -n 1)
+                ppm=$BUILD/qemu/$b/$sn-$num-$SIZE${tag:+-$tag}.ppm
+                mm=$($BUILD/fxrt compare "$ppm" "$out/$sn-double.ppm" 2>&1 | sed -nE 's/.*mismatched_pct=([^ ]+).*/\1/p')
+                ipp=$(get instructions_per_pixel "$line")
+                cells+=("$ipp, $mm %") ipps+=("$ipp") mms+=("$mm")
+            done
+            best=$(awk -v q="${ipps[0]}" -v qm="${mms[0]}" -v a="${ipps[1]}" -v am="${mms[1]}" -v s="${ipps[2]}" -v sm="${mms[2]}" 'BEGIN {
+                if (q == "") { print "-"; exit }
+                b = ""; if (a != "" && am <= qm) b = a; if (s != "" && sm <= qm && (b == "" || s < b)) b = s
+                if (b == "") print "none as accurate"; else printf "%.2f (%s)\n", b / q, b == a ? "fast" : "step" }')
+            echo "| $name | $mode | $b | ${cells[0]} | ${cells[1]} | ${cells[2]} | $best |" >>"$nt"
+        done
+    done
+done
+cat "$nt" >>"$md"
+
 # The issue's targets (M3, q16) from the rows above, and the profile
 # that explains them.
 m3() { awk -F'|' -v m="$1" -v s="$2" '$2 ~ "^ " m " $" && $5 ~ "^ " s " $" { gsub(/[^0-9.]/, "", $6); print $6 }' "$md"; }

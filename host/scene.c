@@ -834,7 +834,8 @@ static void scene_set_surface(scene_obj_t *o, const scene_fval_t *vals, int colo
  * is not a similarity becomes the ellipsoid c' = M c + t, u = r M e_x,
  * v = r M e_y, w = r M e_z; a MAX point and the point before it are a
  * box's corners, which need a transform that maps axes onto axes (else
- * the box would turn). where
+ * the box would turn: a parallelepiped, centre M (min + max) / 2 + t and
+ * half edges M e_k (max - min)_k / 2). where
  * names a mesh triangle's face ("PATH:LINE") in messages, or is NULL.
  * Outside nodes nothing moves, and only a mesh's vertices need the range
  * check. */
@@ -843,7 +844,6 @@ static int scene_place(scene_parser_t *p, scene_obj_t *o, const char *where)
     static const char axis[3] = {'x', 'y', 'z'};
     const scene_shape_t *sh = &scene_kind_shape[o->kind];
     int nf = sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS, d = p->node_depth, nl = p->node_line[d];
-    (void)axis;
     const xform_t *x = &p->node_xf[d];
     char at[600] = "", after[64] = "";
 
@@ -890,11 +890,30 @@ static int scene_place(scene_parser_t *p, scene_obj_t *o, const char *where)
                                   sh->field[f].name, o->radius, nl, (double)FXRT_RADIUS_LIMIT);
         } else if (type == SCENE_F_MAX) {
             scene_vec_t lo = o->p[f - 1], hi = o->p[f], a, b;
-            if (!xform_axis_aligned(x))
-                return scene_fail(p, "a %s in a node that turns it by other than a multiple of 90 degrees (node on "
-                                     "line %d) would be an oriented box, which fxrt does not render yet; a mesh of "
-                                     "a cube turns freely",
-                                  sh->label, nl);
+            if (!xform_axis_aligned(x)) {
+                /* a parallelepiped: the centre placed, the half edges by
+                 * the linear part */
+                int cap = scene_kind_capacity[SCENE_PARALLELEPIPED];
+                const double half[3] = {(hi.x - lo.x) / 2, (hi.y - lo.y) / 2, (hi.z - lo.z) / 2};
+                if (p->kind_count[SCENE_PARALLELEPIPED] >= cap)
+                    return scene_fail(p, "a %s in a node that turns it (node on line %d) is a parallelepiped: too many "
+                                         "parallelepipeds (capacity %d, %s)",
+                                      sh->label, nl, cap, scene_kind_macro[SCENE_PARALLELEPIPED]);
+                for (int k = 0; k < 3; k++)
+                    if (!(half[k] > 0))
+                        return scene_fail(p, "a %s flat on %c (%s = %s) cannot be turned by the node on line %d: it "
+                                             "would be a flat parallelepiped",
+                                          sh->label, axis[k], sh->field[f - 1].name, sh->field[f].name, nl);
+                const scene_vec_t mid = {(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2};
+                const scene_vec_t e[3] = {{half[0], 0, 0}, {0, half[1], 0}, {0, 0, half[2]}};
+                o->p[0] = xform_point(x, mid);
+                for (int k = 0; k < 3; k++)
+                    o->p[1 + k] = xform_vector(x, e[k]);
+                o->kind = SCENE_PARALLELEPIPED;
+                sh = &scene_kind_shape[o->kind];
+                nf = sh->nfields - 1 - SCENE_N_MATERIAL_FIELDS;
+                break;
+            }
             /* The corners' images, per axis their least and greatest. */
             for (int c = 0; c < 8; c++) {
                 scene_vec_t q = {(c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z};
@@ -977,14 +996,15 @@ static int scene_parse_object(scene_parser_t *p, scene_kind_t kind, const scene_
             }
         }
     }
-    /* An ellipsoid's semi-axes span space: |det [u v w]| above 10^-9 of
-     * |u| |v| |w| (else it is flat; the build's own limits on thin axes
-     * are fxrt_add's, reported when the world is built). */
-    if (kind == SCENE_ELLIPSOID) {
+    /* Semi-axes (an ellipsoid's, a parallelepiped's) span space:
+     * |det [u v w]| above 10^-9 of |u| |v| |w| (else the shape is flat;
+     * the build's own limits on thin axes are fxrt_add's, reported when
+     * the world is built). */
+    if (sh->nfields > 3 && sh->field[1].type == SCENE_F_AXIS) {
         scene_vec_t a = scene_vec(&vals[1]), b = scene_vec(&vals[2]), c = scene_vec(&vals[3]);
         double det = a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
         if (!(fabs(det) > 1e-9 * scene_len(a) * scene_len(b) * scene_len(c)))
-            return scene_fail(p, "ellipsoid u, v and w are dependent: it would be flat");
+            return scene_fail(p, "%s u, v and w are dependent: it would be flat", sh->label);
     }
     /* Per-kind capacities sum to SCENE_MAX_OBJECTS, so this cannot
      * overflow obj[]; checked anyway because the array is the last line of

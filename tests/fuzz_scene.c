@@ -75,6 +75,7 @@ static long fuzz_line_count(const uint8_t *d, size_t n)
 #define FUZZ_LINE_MESH 9
 #define FUZZ_LINE_OTHER 10
 #define FUZZ_LINE_ELLIPSOID 11
+#define FUZZ_LINE_PARALLELEPIPED 12
 /* Added to a line's kind when it lies inside a node (between 'node' and
  * its 'end'). */
 #define FUZZ_IN_NODE 16
@@ -82,7 +83,8 @@ static long fuzz_line_count(const uint8_t *d, size_t n)
 static void fuzz_line_kinds(const uint8_t *d, size_t n, unsigned char *kinds, long lines)
 {
     static const char *const kw[] = {"plane", "sphere",  "triangle", "box",     "camera", "light",
-                                     "ambient", "depth", "samples",  "mesh",    "",       "ellipsoid"};
+                                     "ambient", "depth", "samples",  "mesh",    "",       "ellipsoid",
+                                     "parallelepiped"};
     int depth = 0;
     /* scene_parse skips a UTF-8 byte-order mark at the start of the text
      * (line 1's keyword follows it); so does this. */
@@ -188,7 +190,7 @@ static int fuzz_is_zero(scene_vec_t v)
 static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long lines)
 {
     static const int cap[] = {FXRT_MAX_PLANES, FXRT_MAX_SPHERES, FXRT_MAX_TRIANGLES, FXRT_MAX_BOXES};
-    int ellipsoids = 0, file_ellipsoids = 0;
+    int ellipsoids = 0, file_ellipsoids = 0, pps = 0, file_pps = 0;
     const scene_camera_t *cam = &s->camera;
     unsigned char *kinds = malloc((size_t)lines + 1);
     long l, cameras = 0;
@@ -213,6 +215,8 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
             meshes++;
         else if ((kinds[l] & ~FUZZ_IN_NODE) == FUZZ_LINE_ELLIPSOID)
             file_ellipsoids++;
+        else if ((kinds[l] & ~FUZZ_IN_NODE) == FUZZ_LINE_PARALLELEPIPED)
+            file_pps++;
     }
     FUZZ_CHECK(cameras == 1, NULL);
     FUZZ_CHECK(cam->line >= 1 && cam->line <= lines, NULL);
@@ -244,9 +248,12 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
     FUZZ_CHECK(s->count >= 0 && s->count <= SCENE_MAX_OBJECTS, NULL);
     for (i = 0; i < s->count; i++) {
         const scene_obj_t *o = &s->obj[i];
-        /* the four kinds of the lines above, and ellipsoids: an ellipsoid
-         * line's, or a sphere's that a node scales unevenly */
-        FUZZ_CHECK((o->kind >= SCENE_PLANE && o->kind <= SCENE_BOX) || o->kind == SCENE_ELLIPSOID, NULL);
+        /* the four kinds of the lines above, ellipsoids (an ellipsoid
+         * line's, or a sphere's that a node scales unevenly) and
+         * parallelepipeds (a line's, or a box's that a node turns) */
+        FUZZ_CHECK((o->kind >= SCENE_PLANE && o->kind <= SCENE_BOX) || o->kind == SCENE_ELLIPSOID ||
+                       o->kind == SCENE_PARALLELEPIPED,
+                   NULL);
         FUZZ_CHECK(o->line >= 1 && o->line <= lines, NULL);
         int placed = (kinds[o->line] & FUZZ_IN_NODE) != 0, base = kinds[o->line] & ~FUZZ_IN_NODE;
         /* A mesh's triangles share its line. */
@@ -254,11 +261,15 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
             FUZZ_CHECK(o->line >= prev_line && o->kind == SCENE_TRIANGLE, NULL);
         else if (o->kind == SCENE_ELLIPSOID)
             FUZZ_CHECK(o->line > prev_line && (base == FUZZ_LINE_ELLIPSOID || (placed && base == SCENE_SPHERE)), NULL);
+        else if (o->kind == SCENE_PARALLELEPIPED)
+            FUZZ_CHECK(o->line > prev_line && (base == FUZZ_LINE_PARALLELEPIPED || (placed && base == SCENE_BOX)), NULL);
         else
             FUZZ_CHECK(o->line > prev_line && base == (int)o->kind, NULL);
         prev_line = o->line;
         if (o->kind == SCENE_ELLIPSOID)
             ellipsoids++;
+        else if (o->kind == SCENE_PARALLELEPIPED)
+            pps++;
         else
             kind_count[o->kind]++;
         fuzz_check_color(o->color);
@@ -287,13 +298,14 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
             FUZZ_CHECK(fuzz_is_zero(o->p[2]) && o->radius == 0.0, NULL);
             break;
         case SCENE_ELLIPSOID:
+        case SCENE_PARALLELEPIPED:
             FUZZ_CHECK(!fuzz_is_zero(o->p[1]) && !fuzz_is_zero(o->p[2]) && !fuzz_is_zero(o->p[3]) && o->radius == 0.0,
                        NULL);
             break;
         default: break;
         }
     }
-    FUZZ_CHECK(ellipsoids <= FXRT_MAX_ELLIPSOIDS, NULL);
+    FUZZ_CHECK(ellipsoids <= FXRT_MAX_ELLIPSOIDS && pps <= FXRT_MAX_PARALLELEPIPEDS, NULL);
     for (k = 0; k < 4; k++) {
         FUZZ_CHECK(kind_count[k] <= cap[k], NULL);
         if (k == SCENE_TRIANGLE && meshes > 0)
@@ -301,6 +313,8 @@ static void fuzz_check_scene(const scene_t *s, const uint8_t *d, size_t n, long 
         else if (k == SCENE_SPHERE) /* (some may be ellipsoids now) */
             FUZZ_CHECK(kind_count[k] + ellipsoids == file_count[k] + file_ellipsoids && ellipsoids >= file_ellipsoids,
                        NULL);
+        else if (k == SCENE_BOX) /* (some may be parallelepipeds now) */
+            FUZZ_CHECK(kind_count[k] + pps == file_count[k] + file_pps && pps >= file_pps, NULL);
         else
             FUZZ_CHECK(kind_count[k] == file_count[k], NULL);
     }

@@ -136,9 +136,11 @@ fi
 # and the small-mesh threshold's default (FXRT_MESH_INLINE). Ellipsoids
 # (a kind of the rays form) added seven: their capacity's default and its
 # guard, FXRT_IF_ELLIPSOID, the guards of their two files, the number
-# types' range arithmetic in scene/ellipsoid.c (one block), and depth.c's
+# types' range arithmetic (one block, now in scene/affine.c), and depth.c's
 # rays depth (a FXRT_IF_MODEL before, now any kind of that form).
-IF_CAP=250
+# Parallelepipeds added seven: the same five of a kind, and the guards of
+# scene/affine.h and scene/affine.c (the placement both kinds share).
+IF_CAP=257
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0
 for d in . port math scene vis light frame; do

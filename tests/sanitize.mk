@@ -160,7 +160,7 @@ FUZZ_SCENE_DICT_WORDS := image background camera perspective orthographic plane 
     phong specular exponent 90 90.0001 1024 1025 64.0 \
     reflective transparent reflection index depth samples adaptive 0.01 0.00999 100 100.0001 1.33 16 17 \
     node end mesh file shading smooth rotate translate x y z 36000 36000.0001 scenes/models/cube.obj \
-    ellipsoid u v w
+    ellipsoid parallelepiped u v w
 
 $(FUZZ_DIR)/scene.dict: tests/sanitize.mk
 	@mkdir -p $(@D)

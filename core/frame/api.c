@@ -306,7 +306,7 @@ const char *fxrt_strerror(int32_t err)
     case FXRT_ERR_INDEX: return "refraction index outside FXRT_INDEX_MIN..FXRT_INDEX_MAX (0.01..100)";
     case FXRT_ERR_LIGHTS: return "no room for another light (FXRT_MAX_LIGHTS; 0 compiles lighting out)";
     case FXRT_ERR_MESH: return "a model's mesh data or placement is malformed, or its box reaches beyond the coordinate limit";
-    case FXRT_ERR_AXES: return "an ellipsoid's axes are dependent (it would be flat), too thin, or span too much volume";
+    case FXRT_ERR_AXES: return "an ellipsoid's or parallelepiped's axes are dependent (it would be flat), too thin, or span too much volume";
     case FXRT_ERR_DEPTH: return "depth outside 0..FXRT_MAX_DEPTH (largest number of bounces)";
     case FXRT_ERR_SAMPLES:
         return "samples outside 1..FXRT_MAX_SAMPLES, or adaptive with fewer than 2 samples or compiled out "

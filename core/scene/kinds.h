@@ -27,6 +27,7 @@
 #ifndef FXRT_SCENE_KINDS_H
 #define FXRT_SCENE_KINDS_H
 
+#include "scene/affine.h"
 #include "scene/bvh.h"
 #include "scene/geom.h"
 
@@ -37,7 +38,8 @@
     X(TRIANGLE,  triangle,  triangles,  FXRT_MAX_TRIANGLES,  0,    1,      FLAT,  3,     a, POINT, b, POINT, c, POINT, _, NONE) \
     X(BOX,       box,       boxes,      FXRT_MAX_BOXES,      1,    1,      FACES, 0,     min, POINT, max, MAX, _, NONE, _, NONE) \
     X(MODEL,     model,     models,     FXRT_MAX_MODELS,     0,    1,      RAYS,  0,     mesh, INST, _, NONE, _, NONE, _, NONE) \
-    X(ELLIPSOID, ellipsoid, ellipsoids, FXRT_MAX_ELLIPSOIDS, 1,    1,      RAYS,  0,     center, POINT, u, AXIS, v, AXIS, w, AXIS)
+    X(ELLIPSOID, ellipsoid, ellipsoids, FXRT_MAX_ELLIPSOIDS, 1,    1,      RAYS,  0,     center, POINT, u, AXIS, v, AXIS, w, AXIS) \
+    X(PARALLELEPIPED, parallelepiped, parallelepipeds, FXRT_MAX_PARALLELEPIPEDS, 1, 1, RAYS, 0, center, POINT, u, AXIS, v, AXIS, w, AXIS)
 
 /* FXRT_IF_KIND(...): its arguments where the kind is compiled in, nothing
  * where its capacity is 0. */
@@ -70,6 +72,11 @@
 #define FXRT_IF_ELLIPSOID(...) __VA_ARGS__
 #else
 #define FXRT_IF_ELLIPSOID(...)
+#endif
+#if FXRT_MAX_PARALLELEPIPEDS > 0
+#define FXRT_IF_PARALLELEPIPED(...) __VA_ARGS__
+#else
+#define FXRT_IF_PARALLELEPIPED(...)
 #endif
 
 /* FXRT_IF_SMOOTH(...): its arguments where smooth shading is compiled in
@@ -175,18 +182,18 @@ typedef struct {
     bool smooth;
     vec3_t ns;
 } geom_part_t;
-/* An ellipsoid: the points c + u x + v y + w z with x^2 + y^2 + z^2 <= 1
- * (scene/ellipsoid.c): a sphere a node scales unevenly. inv is the
- * inverse of the matrix of columns u, v, w, which maps a point's offset
- * from c to the unit sphere's space; half, its box's half extents; reach,
- * the radius of a sphere around it. */
+/* An ellipsoid: the points c + x u + y v + z w with x^2 + y^2 + z^2 <= 1
+ * (scene/ellipsoid.c), a sphere a node scales unevenly; a parallelepiped:
+ * those with |x|, |y|, |z| <= 1 (scene/parallelepiped.c), a box a node
+ * turns. Both are a unit shape placed by an affine map (scene/affine.h). */
 typedef struct {
-    vec3_t c, u, v, w;
-    vec3_t inv[3]; /* rows */
-    vec3_t half;
-    num_t reach;
+    geom_affine_t a;
     geom_common_t obj;
 } geom_ellipsoid_t;
+typedef struct {
+    geom_affine_t a;
+    geom_common_t obj;
+} geom_parallelepiped_t;
 
 #define GEOM_PART_PARAM FXRT_IF_MODEL(, const geom_part_t *part)
 #define GEOM_PART_ARG(x) FXRT_IF_MODEL(, x)
@@ -203,6 +210,9 @@ fxrt_err_t geom_box_check(vec3_t min, vec3_t max, color_t color);
 bool geom_ellipsoid_make(geom_ellipsoid_t *e, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color,
                          uint16_t id);
 fxrt_err_t geom_ellipsoid_check(vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color);
+bool geom_parallelepiped_make(geom_parallelepiped_t *b, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color,
+                              uint16_t id);
+fxrt_err_t geom_parallelepiped_check(vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color);
 bool geom_model_make(geom_model_t *m, const bvh_inst_t *inst, color_t color, uint16_t id);
 fxrt_err_t geom_model_check(const bvh_inst_t *inst, color_t color);
 /* A model's box in world space, lo <= hi: every point of the mesh as the

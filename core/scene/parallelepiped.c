@@ -1,0 +1,138 @@
+/* parallelepiped: the points c + x u + y v + z w with |x|, |y|, |z| <= 1,
+ * a box that a node turns or shears (docs/SCENES.md, "Nodes"): the cube
+ * [-1, 1]^3 placed by scene/affine.h. A ray meets the cube's three slabs
+ * in its space; the normal of the face x = +-1 is +-e_x there, mapped by
+ * A^-T (row x of A^-1) and normalised. */
+#include "scene/kinds.h"
+
+#if FXRT_MAX_PARALLELEPIPEDS > 0
+fxrt_err_t geom_parallelepiped_check(vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color)
+{
+    fxrt_err_t e = geom_affine_check(center, u, v, w, true);
+    return e != FXRT_OK ? e : geom_check_color(color);
+}
+
+bool geom_parallelepiped_make(geom_parallelepiped_t *b, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color,
+                              uint16_t id)
+{
+    geom_common_init(&b->obj, color, id);
+    return geom_check_color(color) == FXRT_OK && geom_affine_make(&b->a, center, u, v, w, true);
+}
+
+/* The local ray's entry and exit: the world t of the latest entry into a
+ * slab and of the earliest exit from one (t0 <= t1), and their faces
+ * (axis * 2, + 1 for the + side). False where the slabs do not overlap
+ * (a miss; with clamp, a near miss keeps its faces and t0 = t1 = the
+ * exit's). */
+static bool geom_pp_slabs(const geom_affine_ray_t *l, bool clamp, num_t *t0, num_t *t1, int *f0, int *f1)
+{
+    const num_t o[3] = {l->o.x, l->o.y, l->o.z}, d[3] = {l->d.x, l->d.y, l->d.z};
+    num_t tn = num_neg(NUM_MAX), tf = NUM_MAX;
+    int fn = 0, ff = 1;
+    bool met = true;
+    for (int i = 0; i < 3; i++) {
+        if (d[i] == NUM_ZERO) { /* parallel to the slab: inside it or not at all */
+            met = met && o[i] >= num_neg(l->r) && o[i] <= l->r;
+            continue;
+        }
+        bool up = d[i] > NUM_ZERO;
+        num_t a = num_div(num_sub(up ? num_neg(l->r) : l->r, o[i]), d[i]);
+        num_t b = num_div(num_sub(up ? l->r : num_neg(l->r), o[i]), d[i]);
+        if (a > tn) {
+            tn = a;
+            fn = 2 * i + !up;
+        }
+        if (b < tf) {
+            tf = b;
+            ff = 2 * i + up;
+        }
+    }
+    met = met && tn <= tf;
+    if (!met && !clamp)
+        return false;
+    *t1 = geom_affine_world_t(l, tf);
+    *t0 = met ? geom_affine_world_t(l, tn) : *t1;
+    *f0 = fn;
+    *f1 = ff;
+    return met;
+}
+
+bool geom_parallelepiped_hit(const geom_parallelepiped_t *b, const ray_t *ray, num_t *t)
+{
+    geom_affine_ray_t l;
+    num_t t0, t1;
+    int f0, f1;
+    if (!geom_affine_ray(&b->a, ray, &l) || !geom_pp_slabs(&l, false, &t0, &t1, &f0, &f1))
+        return false;
+    if (t0 > NUM_ZERO) {
+        *t = t0;
+        return true;
+    }
+    if (t1 > NUM_ZERO) { /* origin inside */
+        *t = t1;
+        return true;
+    }
+    return false;
+}
+
+bool geom_parallelepiped_occludes(const geom_parallelepiped_t *b, const ray_t *ray, num_t tmax)
+{
+    num_t t;
+    return geom_parallelepiped_hit(b, ray, &t) && (tmax == NUM_MAX || t < tmax);
+}
+
+/* The outward unit normal of face f. */
+static void geom_pp_normal(const geom_parallelepiped_t *b, int f, const ray_t *ray, vec3_t *n)
+{
+    num_t s = (f & 1) ? NUM_ONE : num_neg(NUM_ONE);
+    vec3_t p = vec3_make(f / 2 == 0 ? s : NUM_ZERO, f / 2 == 1 ? s : NUM_ZERO, f / 2 == 2 ? s : NUM_ZERO);
+    if (!geom_affine_normal(&b->a, p, n))
+        *n = vec3_neg(ray->d);
+}
+
+/* The entry point (far: the exit, a ray leaving from inside) and its
+ * face's outward normal; a ray that just misses takes its entry face. */
+static void geom_pp_at(const geom_parallelepiped_t *b, const ray_t *ray, bool far, num_t *t, vec3_t *n)
+{
+    geom_affine_ray_t l;
+    num_t t0, t1;
+    int f0, f1;
+    if (!geom_affine_ray(&b->a, ray, &l)) {
+        *t = NUM_ZERO;
+        *n = vec3_neg(ray->d);
+        return;
+    }
+    geom_pp_slabs(&l, true, &t0, &t1, &f0, &f1);
+    bool near = !far && t0 > NUM_ZERO;
+    *t = near ? t0 : t1;
+    geom_pp_normal(b, near ? f0 : f1, ray, n);
+}
+
+void geom_parallelepiped_surface(const geom_parallelepiped_t *b, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    geom_pp_at(b, ray, false, t, n);
+}
+
+bool geom_parallelepiped_exit(const geom_parallelepiped_t *b, const ray_t *ray, num_t *t, vec3_t *n)
+{
+    geom_pp_at(b, ray, true, t, n);
+    return *t > NUM_ZERO;
+}
+
+bool geom_parallelepiped_contains(const geom_parallelepiped_t *b, vec3_t p)
+{
+    num_t x[3];
+    return geom_affine_local(&b->a, p, x);
+}
+
+void geom_parallelepiped_bounds(const geom_parallelepiped_t *b, vec3_t *lo, vec3_t *hi)
+{
+    geom_affine_bounds(&b->a, lo, hi);
+}
+
+void geom_parallelepiped_around(const geom_parallelepiped_t *b, vec3_t *c, num_t *r)
+{
+    *c = b->a.c;
+    *r = b->a.reach;
+}
+#endif
