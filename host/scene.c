@@ -1242,8 +1242,6 @@ static int scene_parse_mesh(scene_parser_t *p)
     if (scene_check_material(p, &scene_shape_mesh, &vals[MESH_MATERIAL]) != 0)
         return -1;
     bool smooth = !vals[MESH_SHADING].seen || vals[MESH_SHADING].word == 1;
-    if (vals[MESH_MATERIAL].seen && vals[MESH_MATERIAL].word == SCENE_MAT_TRANSPARENT)
-        return scene_fail(p, "a transparent mesh is not implemented yet (glass needs a closed solid)");
     {
         /* The folder of the scene file's name, up to its last '/'. */
         const char *slash = strrchr(p->name, '/');

@@ -320,6 +320,7 @@ void DIFFK_SYM(diffk_bounce)(const double d[3], const double n[3], double eta, d
     nd.obj = &obj;
     nd.p = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     nd.n_geo = diffk_vec(n);
+    nd.n_side = nd.n_geo; /* (a flat surface: the same normal) */
     nd.d = diffk_vec(d);
     nd.w = color_make(NUM_ONE, NUM_ONE, NUM_ONE);
     trace_ray_t out[2];

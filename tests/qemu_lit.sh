@@ -27,7 +27,7 @@ ONB_WHAT="qemu_lit.sh: lit scenes on board"
 # (and two node scenes of models, a mesh's object: their data in flash, a
 # ray per pixel through each one's tree on the board; nodes are placed on
 # the host; at 80x60 for make test's time)
-scenes=(scenes/lit/*.scene scenes/nodes/smooth.scene scenes/nodes/smooth-ico80.scene scenes/nodes/course-u5-ellipsoid.scene scenes/nodes/course-u5-box.scene)
+scenes=(scenes/lit/*.scene scenes/nodes/smooth.scene scenes/nodes/smooth-ico80.scene scenes/nodes/course-u5-ellipsoid.scene scenes/nodes/course-u5-box.scene scenes/nodes/glass-ico80.scene)
 check "scenes/lit/ has lit scenes (${#scenes[@]})" test -e "${scenes[0]}"
 [ -e "${scenes[0]}" ] || { report qemu_lit; exit; }
 
