@@ -131,7 +131,7 @@ fi
 # the stats counters defined always). Models (a kind of object with a
 # form of its own) added nine: their capacity's default (host or bare
 # board) and its guard, the kind's FXRT_IF_MODEL, the guards of its three
-# files (scene/model.c, vis/setup_model.c, vis/model.c: now vis/rays.c) and depth.c's
+# files (scene/model.c, vis/setup_model.c, vis/model.c; now vis/rays.c) and depth.c's
 # model depth; light/hit.c's shading of a model pixel with its triangle known;
 # and the small-mesh threshold's default (FXRT_MESH_INLINE). Ellipsoids
 # (a kind of the rays form) added seven: their capacity's default and its
@@ -140,7 +140,10 @@ fi
 # rays depth (a FXRT_IF_MODEL before, now any kind of that form).
 # Parallelepipeds added seven: the same five of a kind, and the guards of
 # scene/affine.h and scene/affine.c (the placement both kinds share).
-IF_CAP=257
+# Three went with the set-up files of the rays form's kinds
+# (vis/setup_model.c, setup_ellipsoid.c, setup_parallelepiped.c): their
+# set-up is the box their _bounds gives (vis/setup.c).
+IF_CAP=254
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0
 for d in . port math scene vis light frame; do

@@ -25,6 +25,7 @@
 
 #include "check.h"
 #include "fxrt.h"
+#include "frame.h"
 
 #define PI_D 3.14159265358979323846
 #define IMG_W 96
@@ -406,12 +407,7 @@ static uint8_t img_a[IMG_W * IMG_H * 3], img_b[IMG_W * IMG_H * 3];
 
 static bool render(const fxrt_world_t *w, const fxrt_view_t *v, fxrt_render_t *r, uint8_t *img)
 {
-    if (fxrt_render_setup(r, w, v) != FXRT_OK)
-        return false;
-    for (int32_t row = 0; row < IMG_H; row++)
-        if (fxrt_render_row(r, row, img + (size_t)row * IMG_W * 3, IMG_W * 3) != FXRT_OK)
-            return false;
-    return true;
+    return frame_render(w, v, r, img, IMG_W, IMG_H);
 }
 
 /* box false: an ellipsoid whose axes are a sphere's (r times a random

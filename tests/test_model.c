@@ -18,6 +18,7 @@
 #include "meshbuild.h"
 #include "obj.h"
 #include "fxrt.h"
+#include "frame.h"
 
 #define IMG_W 96
 #define IMG_H 72
@@ -31,12 +32,7 @@ static vec3_t vec_d(const double v[3]) { return vec3_make(num_d(v[0]), num_d(v[1
 
 static bool render(const fxrt_world_t *w, const fxrt_view_t *v, fxrt_render_t *r, uint8_t *img)
 {
-    if (fxrt_render_setup(r, w, v) != FXRT_OK)
-        return false;
-    for (int32_t row = 0; row < IMG_H; row++)
-        if (fxrt_render_row(r, row, img + (size_t)row * IMG_W * 3, IMG_W * 3) != FXRT_OK)
-            return false;
-    return true;
+    return frame_render(w, v, r, img, IMG_W, IMG_H);
 }
 
 static bool build(const char *text, bool smooth, meshbuild_t *mb)

@@ -143,7 +143,7 @@ static void geom_affine_extent(vec3_t u, vec3_t v, vec3_t w, bool box, vec3_t *h
     *reach = geom_affine_pad(box ? num_add(num_add(vec3_len(u), vec3_len(v)), vec3_len(w)) : numw_sqrt(all));
 }
 
-fxrt_err_t geom_affine_check(vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box)
+fxrt_err_t geom_affine_check(vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color)
 {
     fxrt_err_t e = geom_check_point(c);
     const vec3_t ax[3] = {u, v, w};
@@ -162,16 +162,16 @@ fxrt_err_t geom_affine_check(vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box)
     for (int i = 0; i < 3; i++)
         if (!(h[i] <= lim && num_sub(cc[i], h[i]) >= num_neg(lim) && num_add(cc[i], h[i]) <= lim))
             return FXRT_ERR_COORD;
-    return FXRT_OK;
+    return geom_check_color(color);
 }
 
-bool geom_affine_make(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box)
+bool geom_affine_make(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color)
 {
     a->c = c;
     a->u = u;
     a->v = v;
     a->w = w;
-    if (geom_affine_check(c, u, v, w, box) != FXRT_OK || !geom_affine_inverse(u, v, w, a->inv))
+    if (geom_affine_check(c, u, v, w, box, color) != FXRT_OK || !geom_affine_inverse(u, v, w, a->inv))
         return false;
     geom_affine_extent(u, v, w, box, &a->half, &a->reach);
     return true;
@@ -221,5 +221,10 @@ void geom_affine_bounds(const geom_affine_t *a, vec3_t *lo, vec3_t *hi)
 {
     *lo = vec3_sub(a->c, a->half);
     *hi = vec3_add(a->c, a->half);
+}
+void geom_affine_around(const geom_affine_t *a, vec3_t *c, num_t *r)
+{
+    *c = a->c;
+    *r = a->reach;
 }
 #endif

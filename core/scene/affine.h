@@ -37,11 +37,11 @@ typedef struct {
  * than about 2^-13) and 0 < |det A| <= 2^30 (FXRT_ERR_AXES); the box
  * within the coordinate limit (FXRT_ERR_COORD). box: the unit shape is
  * the cube (its box's half extents sum |A_ij| over j), else the sphere
- * (their root of the sum of squares). */
-fxrt_err_t geom_affine_check(vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box);
+ * (their root of the sum of squares). And the colour (geom_check_color). */
+fxrt_err_t geom_affine_check(vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color);
 /* The placement from checked fields; false where geom_affine_check is not
  * FXRT_OK. */
-bool geom_affine_make(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box);
+bool geom_affine_make(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color);
 /* The ray in the unit shape's space; false when its origin lies more than
  * 2^22 units of it away (Q16.16; the shape then spans less than 2^-21
  * radians from there): no hit. */
@@ -54,7 +54,8 @@ bool geom_affine_normal(const geom_affine_t *a, vec3_t p, vec3_t *n);
 /* Point p in the unit shape's space, A^-1 (p - c), in x[]: false when a
  * component's magnitude is 1 or more (outside the cube and the sphere). */
 bool geom_affine_local(const geom_affine_t *a, vec3_t p, num_t x[3]);
-/* The box around it, lo <= hi. */
+/* The box around it, lo <= hi; the sphere around it. */
 void geom_affine_bounds(const geom_affine_t *a, vec3_t *lo, vec3_t *hi);
+void geom_affine_around(const geom_affine_t *a, vec3_t *c, num_t *r);
 
 #endif

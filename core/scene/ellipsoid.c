@@ -8,15 +8,13 @@
 #if FXRT_MAX_ELLIPSOIDS > 0
 fxrt_err_t geom_ellipsoid_check(vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color)
 {
-    fxrt_err_t e = geom_affine_check(center, u, v, w, false);
-    return e != FXRT_OK ? e : geom_check_color(color);
+    return geom_affine_check(center, u, v, w, false, color);
 }
 
-bool geom_ellipsoid_make(geom_ellipsoid_t *e, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color,
-                         uint16_t id)
+bool geom_ellipsoid_make(geom_ellipsoid_t *e, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color, uint16_t id)
 {
     geom_common_init(&e->obj, color, id);
-    return geom_check_color(color) == FXRT_OK && geom_affine_make(&e->a, center, u, v, w, false);
+    return geom_affine_make(&e->a, center, u, v, w, false, color);
 }
 
 /* The unit sphere met along the local ray: the closest point's offset -q
@@ -105,9 +103,5 @@ bool geom_ellipsoid_contains(const geom_ellipsoid_t *e, vec3_t p)
 
 void geom_ellipsoid_bounds(const geom_ellipsoid_t *e, vec3_t *lo, vec3_t *hi) { geom_affine_bounds(&e->a, lo, hi); }
 
-void geom_ellipsoid_around(const geom_ellipsoid_t *e, vec3_t *c, num_t *r)
-{
-    *c = e->a.c;
-    *r = e->a.reach;
-}
+void geom_ellipsoid_around(const geom_ellipsoid_t *e, vec3_t *c, num_t *r) { geom_affine_around(&e->a, c, r); }
 #endif

@@ -8,15 +8,13 @@
 #if FXRT_MAX_PARALLELEPIPEDS > 0
 fxrt_err_t geom_parallelepiped_check(vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color)
 {
-    fxrt_err_t e = geom_affine_check(center, u, v, w, true);
-    return e != FXRT_OK ? e : geom_check_color(color);
+    return geom_affine_check(center, u, v, w, true, color);
 }
 
-bool geom_parallelepiped_make(geom_parallelepiped_t *b, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color,
-                              uint16_t id)
+bool geom_parallelepiped_make(geom_parallelepiped_t *b, vec3_t center, vec3_t u, vec3_t v, vec3_t w, color_t color, uint16_t id)
 {
     geom_common_init(&b->obj, color, id);
-    return geom_check_color(color) == FXRT_OK && geom_affine_make(&b->a, center, u, v, w, true);
+    return geom_affine_make(&b->a, center, u, v, w, true, color);
 }
 
 /* The local ray's entry and exit: the world t of the latest entry into a
@@ -130,9 +128,5 @@ void geom_parallelepiped_bounds(const geom_parallelepiped_t *b, vec3_t *lo, vec3
     geom_affine_bounds(&b->a, lo, hi);
 }
 
-void geom_parallelepiped_around(const geom_parallelepiped_t *b, vec3_t *c, num_t *r)
-{
-    *c = b->a.c;
-    *r = b->a.reach;
-}
+void geom_parallelepiped_around(const geom_parallelepiped_t *b, vec3_t *c, num_t *r) { geom_affine_around(&b->a, c, r); }
 #endif

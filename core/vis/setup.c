@@ -30,10 +30,16 @@ void render_setup_object(vis_t *r, uint16_t i)
     const cam_t *cam = r->cam;
     rext_t ext = {(uint32_t)(cam->width - 1), (uint32_t)(cam->height - 1)};
     render_obj_t *o = &r->obj[i];
-    (void)ext;
-    (void)w;
+    vec3_t lo, hi;
+    (void)ext, (void)w, (void)lo, (void)hi;
     switch (o->geom) {
-#define RENDER_SETUP_CASE(K, k, ks, ...) FXRT_IF_##K(case GEOM_##K: render_setup_##k(r, ext, &w->ks[o->index], o); break;)
+/* A kind of the rays form has no set-up of its own: its box's bounds
+ * (render_setup_rays). */
+#define RENDER_SETUP_CASE(K, k, ks, cap, solid, bounded, form, ...) FXRT_IF_##K(case GEOM_##K: RENDER_SETUP_##form(k, ks); break;)
+#define RENDER_SETUP_FLAT(k, ks) render_setup_##k(r, ext, &w->ks[o->index], o)
+#define RENDER_SETUP_ROUND RENDER_SETUP_FLAT
+#define RENDER_SETUP_FACES RENDER_SETUP_FLAT
+#define RENDER_SETUP_RAYS(k, ks) (geom_##k##_bounds(&w->ks[o->index], &lo, &hi), render_setup_rays(r, lo, hi, o))
         FXRT_KINDS(RENDER_SETUP_CASE)
 #undef RENDER_SETUP_CASE
     default: break;

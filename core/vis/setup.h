@@ -183,8 +183,13 @@ static inline void render_setup_rays(vis_t *r, vec3_t lo, vec3_t hi, render_obj_
 }
 
 /* Each kind's set-up (vis/setup_KIND.c): object o's forms and bounds from
- * its world record. */
-#define RENDER_SETUP_KIND(K, k, ...) void render_setup_##k(vis_t *r, rext_t ext, const geom_##k##_t *g, render_obj_t *o);
+ * its world record; a kind of the rays form has none (render_setup_rays,
+ * from its box: vis/setup.c). */
+#define RENDER_SETUP_KIND(K, k, ks, cap, solid, bounded, form, ...) RENDER_SETUP_DECL_##form(k)
+#define RENDER_SETUP_DECL_FLAT(k) void render_setup_##k(vis_t *r, rext_t ext, const geom_##k##_t *g, render_obj_t *o);
+#define RENDER_SETUP_DECL_ROUND RENDER_SETUP_DECL_FLAT
+#define RENDER_SETUP_DECL_FACES RENDER_SETUP_DECL_FLAT
+#define RENDER_SETUP_DECL_RAYS(k)
 FXRT_KINDS(RENDER_SETUP_KIND)
 #undef RENDER_SETUP_KIND
 
