@@ -72,6 +72,13 @@ num_t geom_affine_world_t(const geom_affine_ray_t *l, num_t t)
     lw = l->k >= 0 ? lw >> l->k : lw * ((numw_t)1 << -l->k);
     return numw_div(numw_from(t), lw);
 }
+
+num_t geom_affine_axis_t(const geom_affine_ray_t *l, num_t x, num_t dpi)
+{
+    /* x 2^k / dpi in Q16.16: fxw_div(x 2^k, dpi) (|x| < 2^31 LSB, k <= 24) */
+    return l->k >= 0 ? numw_div((numw_t)x * ((numw_t)1 << l->k), (numw_t)dpi)
+                     : numw_div((numw_t)x, (numw_t)dpi * ((numw_t)1 << -l->k));
+}
 #else
 static bool geom_affine_det(const num_t a[3][3], numw_t cof[3][3], numw_t *det)
 {
@@ -90,6 +97,12 @@ static bool geom_affine_origin(const geom_affine_t *a, const ray_t *ray, int sh,
 }
 
 num_t geom_affine_world_t(const geom_affine_ray_t *l, num_t t) { return num_div(t, l->len); }
+
+num_t geom_affine_axis_t(const geom_affine_ray_t *l, num_t x, num_t dpi)
+{
+    (void)l;
+    return num_div(x, dpi);
+}
 #endif
 
 /* A^-1's rows for columns u, v, w: false when A is singular or beyond the
@@ -183,9 +196,8 @@ bool geom_affine_ray(const geom_affine_t *a, const ray_t *ray, geom_affine_ray_t
     for (int i = 0; i < 3; i++)
         dl[i] = vec3_dotw_unit(a->inv[i], ray->d);
     int sh = numw_direction_shift(dl);
-    vec3_t part = vec3_make(numw_direction_part(dl[0], sh), numw_direction_part(dl[1], sh),
-                            numw_direction_part(dl[2], sh));
-    if (!vec3_unit_len(part, &l->d, &l->len))
+    l->dp = vec3_make(numw_direction_part(dl[0], sh), numw_direction_part(dl[1], sh), numw_direction_part(dl[2], sh));
+    if (!vec3_unit_len(l->dp, &l->d, &l->len))
         return false; /* (A^-1 is regular: not for a unit d) */
     return geom_affine_origin(a, ray, sh, l);
 }

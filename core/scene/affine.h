@@ -21,11 +21,12 @@ typedef struct {
 } geom_affine_t;
 
 /* A ray in the unit shape's space, scaled by 2^-s so that its origin
- * stays within 2^14 of the centre in Q16.16: origin o, unit direction d,
- * the shape's half size r (2^-s) and its square r2, and k, len with world
- * t = local t 2^k / len. */
+ * stays within 2^14 of the centre in Q16.16: origin o, unit direction d
+ * and the same direction dp before normalising (30 significant bits in
+ * Q16.16), the shape's half size r (2^-s) and its square r2, and k, len
+ * with world t = local t 2^k / len. */
 typedef struct {
-    vec3_t o, d;
+    vec3_t o, d, dp;
     num_t r;
     numw_t r2;
     num_t len;
@@ -48,6 +49,10 @@ bool geom_affine_make(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, 
 bool geom_affine_ray(const geom_affine_t *a, const ray_t *ray, geom_affine_ray_t *l);
 /* A local t (scaled) as a world t, saturating. */
 num_t geom_affine_world_t(const geom_affine_ray_t *l, num_t t);
+/* The world t at which the local ray's coordinate on an axis whose
+ * direction part (a component of dp) is dpi has moved by x: x 2^k / dpi,
+ * from the unrounded direction (a slab's t: scene/parallelepiped.c). */
+num_t geom_affine_axis_t(const geom_affine_ray_t *l, num_t x, num_t dpi);
 /* The world unit normal for local normal p (any length): A^-T p, formed
  * wide and normalised; false when it vanishes. */
 bool geom_affine_normal(const geom_affine_t *a, vec3_t p, vec3_t *n);

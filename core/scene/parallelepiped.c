@@ -17,39 +17,48 @@ bool geom_parallelepiped_make(geom_parallelepiped_t *b, vec3_t center, vec3_t u,
     return geom_affine_make(&b->a, center, u, v, w, true, color);
 }
 
+/* Is x / d before y / e (d, e > 0)? Exact in Q16.16 (|x|, |y| < 2^31 LSB,
+ * d, e < 2^30: products below 2^61). */
+static bool geom_pp_before(num_t x, num_t d, num_t y, num_t e) { return numw_mul(x, e) < numw_mul(y, d); }
+
 /* The local ray's entry and exit: the world t of the latest entry into a
  * slab and of the earliest exit from one (t0 <= t1), and their faces
- * (axis * 2, + 1 for the + side). False where the slabs do not overlap
- * (a miss; with clamp, a near miss keeps its faces and t0 = t1 = the
- * exit's). */
+ * (axis * 2, + 1 for the + side). Each slab's t is a fraction of the
+ * unrounded local direction (x / |dp_i|); the faces are chosen by exact
+ * comparisons of those fractions, and only the two chosen become world t
+ * (geom_affine_axis_t). False where the slabs do not overlap (a miss;
+ * with clamp, a near miss keeps its faces and t0 = t1 = the exit's). */
 static bool geom_pp_slabs(const geom_affine_ray_t *l, bool clamp, num_t *t0, num_t *t1, int *f0, int *f1)
 {
-    const num_t o[3] = {l->o.x, l->o.y, l->o.z}, d[3] = {l->d.x, l->d.y, l->d.z};
-    num_t tn = num_neg(NUM_MAX), tf = NUM_MAX;
-    int fn = 0, ff = 1;
+    const num_t o[3] = {l->o.x, l->o.y, l->o.z}, d[3] = {l->dp.x, l->dp.y, l->dp.z};
+    num_t xn = NUM_ZERO, dn = NUM_ONE, xf = NUM_ZERO, df = NUM_ONE; /* the entry's and the exit's fractions */
+    int fn = -1, ff = -1;
     bool met = true;
     for (int i = 0; i < 3; i++) {
         if (d[i] == NUM_ZERO) { /* parallel to the slab: inside it or not at all */
             met = met && o[i] >= num_neg(l->r) && o[i] <= l->r;
             continue;
         }
+        /* entry and exit of slab i as x / e with e = |dp_i| > 0 */
         bool up = d[i] > NUM_ZERO;
-        num_t a = num_div(num_sub(up ? num_neg(l->r) : l->r, o[i]), d[i]);
-        num_t b = num_div(num_sub(up ? l->r : num_neg(l->r), o[i]), d[i]);
-        if (a > tn) {
-            tn = a;
+        num_t e = up ? d[i] : num_neg(d[i]);
+        num_t xa = up ? num_sub(num_neg(l->r), o[i]) : num_sub(o[i], l->r);
+        num_t xb = up ? num_sub(l->r, o[i]) : num_add(o[i], l->r);
+        if (fn < 0 || geom_pp_before(xn, dn, xa, e)) {
+            xn = xa, dn = e;
             fn = 2 * i + !up;
         }
-        if (b < tf) {
-            tf = b;
+        if (ff < 0 || geom_pp_before(xb, e, xf, df)) {
+            xf = xb, df = e;
             ff = 2 * i + up;
         }
     }
-    met = met && tn <= tf;
-    if (!met && !clamp)
+    /* (a unit direction has a nonzero component: fn, ff >= 0) */
+    met = met && fn >= 0 && !geom_pp_before(xf, df, xn, dn);
+    if ((!met && !clamp) || fn < 0)
         return false;
-    *t1 = geom_affine_world_t(l, tf);
-    *t0 = met ? geom_affine_world_t(l, tn) : *t1;
+    *t1 = geom_affine_axis_t(l, xf, df);
+    *t0 = met ? geom_affine_axis_t(l, xn, dn) : *t1;
     *f0 = fn;
     *f1 = ff;
     return met;
