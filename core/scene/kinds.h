@@ -15,7 +15,8 @@
  *   FORM      what the visibility pass makes of it (vis/render.h):
  *             FLAT one flat piece (N, D and its edge forms), ROUND a
  *             sphere's forms, FACES flat pieces from the box-face pool,
- *             RAYS none: a ray per pixel of its bounds (a model's BVH)
+ *             RAYS none: a ray per pixel of its bounds through its _hit
+ *             (a model's BVH, an affine kind's unit shape)
  *   EDGES     a FLAT piece's edge forms (0..3)
  *   Fi Ti     its fields, in the scene language's words and in the order
  *             of geom_desc_t's p[] (a RADIUS field is its radius): name

@@ -1,5 +1,5 @@
 /* rays: the visibility pass of an object of the RAYS form (a model, an
- * ellipsoid): over the columns of its bounds on a row, each pixel's camera
+ * ellipsoid, a parallelepiped): over the columns of its bounds on a row, each pixel's camera
  * ray meets it (render_rays_at, vis/depth.c); a hit claims the column at
  * its depth. */
 #include "vis/paint.h"

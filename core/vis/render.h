@@ -225,9 +225,11 @@ typedef struct {
 /* What the row loop makes of an object: a sphere, one flat piece, a box
  * seen from outside (its front faces), a box with the eye inside (every
  * pixel: its nearest exit face), or an object of the RAYS form (a model,
- * an ellipsoid: a ray per pixel of its bounds, vis/rays.c). */
+ * an ellipsoid, a parallelepiped: a ray per pixel of its bounds,
+ * vis/rays.c). */
 typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_INSIDE_BOX, RENDER_RAYS } render_kind_t;
-/* Kinds of the RAYS form are compiled in (models, ellipsoids): the row
+/* Kinds of the RAYS form are compiled in (models, ellipsoids,
+ * parallelepipeds): the row
  * loop's and depth's RENDER_RAYS paths. */
 #define RENDER_CAP_RAYS(K, k, ks, cap, solid, bounded, form, edges, ...) RENDER_CAP_RAYS_##form(cap)
 #define RENDER_CAP_RAYS_FLAT(cap)
