@@ -47,6 +47,14 @@ bool geom_affine_make(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, 
  * 2^22 units of it away (Q16.16; the shape then spans less than 2^-21
  * radians from there): no hit. */
 bool geom_affine_ray(const geom_affine_t *a, const ray_t *ray, geom_affine_ray_t *l);
+/* The nearest of a shape's entry t0 and exit t1 (t0 <= t1) in front of
+ * the ray (t > 0; the exit where the ray starts inside): false where
+ * neither is. */
+static inline bool geom_affine_first(num_t t0, num_t t1, num_t *t)
+{
+    *t = t0 > NUM_ZERO ? t0 : t1;
+    return *t > NUM_ZERO;
+}
 /* A local t (scaled) as a world t, saturating. */
 num_t geom_affine_world_t(const geom_affine_ray_t *l, num_t t);
 /* The world t at which the local ray's coordinate on an axis whose

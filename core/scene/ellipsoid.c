@@ -43,15 +43,7 @@ bool geom_ellipsoid_hit(const geom_ellipsoid_t *e, const ray_t *ray, num_t *t)
     num_t h, t0, t1;
     if (!geom_affine_ray(&e->a, ray, &l) || !geom_ell_meet(&l, false, &q, &h, &t0, &t1))
         return false;
-    if (t0 > NUM_ZERO) {
-        *t = t0;
-        return true;
-    }
-    if (t1 > NUM_ZERO) { /* origin inside */
-        *t = t1;
-        return true;
-    }
-    return false;
+    return geom_affine_first(t0, t1, t);
 }
 
 bool geom_ellipsoid_occludes(const geom_ellipsoid_t *e, const ray_t *ray, num_t tmax)

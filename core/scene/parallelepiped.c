@@ -71,15 +71,7 @@ bool geom_parallelepiped_hit(const geom_parallelepiped_t *b, const ray_t *ray, n
     int f0, f1;
     if (!geom_affine_ray(&b->a, ray, &l) || !geom_pp_slabs(&l, false, &t0, &t1, &f0, &f1))
         return false;
-    if (t0 > NUM_ZERO) {
-        *t = t0;
-        return true;
-    }
-    if (t1 > NUM_ZERO) { /* origin inside */
-        *t = t1;
-        return true;
-    }
-    return false;
+    return geom_affine_first(t0, t1, t);
 }
 
 bool geom_parallelepiped_occludes(const geom_parallelepiped_t *b, const ray_t *ray, num_t tmax)
