@@ -156,38 +156,41 @@ static void geom_affine_extent(vec3_t u, vec3_t v, vec3_t w, bool box, vec3_t *h
     *reach = geom_affine_pad(box ? num_add(num_add(vec3_len(u), vec3_len(v)), vec3_len(w)) : numw_sqrt(all));
 }
 
-fxrt_err_t geom_affine_check(vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color)
+/* The placement and its domain check in one pass: *a filled as far as
+ * the check got (the inverse and the box once, for check and make). */
+static fxrt_err_t geom_affine_build(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color)
 {
+    a->c = c;
+    a->u = u;
+    a->v = v;
+    a->w = w;
     fxrt_err_t e = geom_check_point(c);
     const vec3_t ax[3] = {u, v, w};
     for (int i = 0; i < 3 && e == FXRT_OK; i++)
         e = geom_check_dir(ax[i]);
     if (e != FXRT_OK)
         return e;
-    vec3_t inv[3], half;
-    num_t reach;
-    if (!geom_affine_inverse(u, v, w, inv))
+    if (!geom_affine_inverse(u, v, w, a->inv))
         return FXRT_ERR_AXES;
-    geom_affine_extent(u, v, w, box, &half, &reach);
+    geom_affine_extent(u, v, w, box, &a->half, &a->reach);
     /* its box within the coordinate limit (hence the reach within 2^15) */
     const num_t lim = num_from_int(FXRT_COORD_LIMIT);
-    const num_t cc[3] = {c.x, c.y, c.z}, h[3] = {half.x, half.y, half.z};
+    const num_t cc[3] = {c.x, c.y, c.z}, h[3] = {a->half.x, a->half.y, a->half.z};
     for (int i = 0; i < 3; i++)
         if (!(h[i] <= lim && num_sub(cc[i], h[i]) >= num_neg(lim) && num_add(cc[i], h[i]) <= lim))
             return FXRT_ERR_COORD;
     return geom_check_color(color);
 }
 
+fxrt_err_t geom_affine_check(vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color)
+{
+    geom_affine_t a;
+    return geom_affine_build(&a, c, u, v, w, box, color);
+}
+
 bool geom_affine_make(geom_affine_t *a, vec3_t c, vec3_t u, vec3_t v, vec3_t w, bool box, color_t color)
 {
-    a->c = c;
-    a->u = u;
-    a->v = v;
-    a->w = w;
-    if (geom_affine_check(c, u, v, w, box, color) != FXRT_OK || !geom_affine_inverse(u, v, w, a->inv))
-        return false;
-    geom_affine_extent(u, v, w, box, &a->half, &a->reach);
-    return true;
+    return geom_affine_build(a, c, u, v, w, box, color) == FXRT_OK;
 }
 
 bool geom_affine_ray(const geom_affine_t *a, const ray_t *ray, geom_affine_ray_t *l)
