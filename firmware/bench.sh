@@ -31,10 +31,10 @@
 #   BENCH_SIZE         frame size (160x120)
 #   BENCH_BOARDS       boards (all three)
 #   BENCH_BUILDS       builds (see above; default below)
-#   BENCH_SETS         scene sets (seed bench lit)
+#   BENCH_SETS         scene sets (seed bench lit nodes)
 #   BENCH_SCENES       scene files instead of the sets' (each file's set is
 #                      its directory: scenes/bench/ bench, scenes/lit/ lit,
-#                      otherwise seed)
+#                      scenes/nodes/ nodes, otherwise seed)
 #   BENCH_JOBS         parallel runs (nproc); QEMU -icount counts do not
 #                      depend on it
 #   BENCH_UPDATE_DOCS  1: regenerate docs/BENCHMARKS.md and docs/bench/
@@ -52,7 +52,7 @@ BOARDS=${BENCH_BOARDS:-$(for i in $BOARD_INFO; do printf '%s ' "${i%%:*}"; done)
 # The ray caster costs hundreds of times the fast renderer: soft float and
 # double are limited to the M3 (and hard float to the M4F), q16 runs everywhere.
 BUILDS=${BENCH_BUILDS:-"q16:fast float:fast float:step double:fast q16:reference q16:raycast float:raycast@M3,M4F double:raycast@M3"}
-SETS=${BENCH_SETS:-seed bench lit}
+SETS=${BENCH_SETS:-seed bench lit nodes}
 JOBS=${BENCH_JOBS:-$(nproc 2>/dev/null || echo 2)}
 OUT=$BUILD/bench
 # The sub-makes are ours: no jobserver or command-line variables from a parent make.
@@ -73,14 +73,15 @@ board_field() { # BOARD FIELD(2=cpu 3=fb)
 }
 short() { local n; n=$(basename "$1" .scene); [[ $n == abb* ]] && n=${n%%-*}; echo "$n"; }
 get() { sed -nE "s/.*(^| )$1=([^ ]+).*/\2/p" <<<"$2"; }
-set_of() { case $1 in */bench/*) echo bench ;; */lit/*) echo lit ;; */stress/*) echo stress ;; *) echo seed ;; esac; }
+set_of() { case $1 in */bench/*) echo bench ;; */lit/*) echo lit ;; */nodes/*) echo nodes ;; */stress/*) echo stress ;; *) echo seed ;; esac; }
 set_scenes() {
     case $1 in
         seed) printf '%s\n' scenes/abb*.scene | sort -V ;;
         bench) printf '%s\n' scenes/bench/*.scene ;;
         lit) printf '%s\n' scenes/lit/*.scene ;;
+        nodes) printf '%s\n' scenes/nodes/*.scene ;;
         stress) printf '%s\n' scenes/stress/*.scene ;;
-        *) die "unknown scene set '$1' (seed, bench, lit, stress)" ;;
+        *) die "unknown scene set '$1' (seed, bench, lit, nodes, stress)" ;;
     esac
 }
 if [[ -n ${BENCH_SCENES:-} ]]; then
@@ -338,6 +339,10 @@ function best(b, set,   j, r, have) { B_r = ""; B_ratio = ""; B_n = 0; B_note = 
         if (R_mn > R_md + 1e-9) { B_note = B_note (B_note ? "; " : "") "float " r " has more error (" sprintf("%.4f", R_mn) " % > " sprintf("%.4f", R_md) " %)"; continue }
         if (B_r == "" || R_geo < B_ratio) { B_r = r; B_ratio = R_geo; B_n = R_n } }
     if (!have) B_note = "no float build ran" }
+# The goal of a set: for seed and bench those of the first speed work, for
+# lit those of lighting; the nodes set (meshes and transformed objects) has
+# none, its figures are for information.
+function goalof(set, g, glit) { return set == "nodes" ? "" : set == "lit" ? glit : g }
 function verdict(m, goal, ge) {
     if (goal == "") return "(no goal)"
     if (m == "") return "n/a"
@@ -362,12 +367,12 @@ END {
 
   # 1. targets, one column per scene set
   print "## TARGETS\n" > md
-  printf "All from this run at %s, fast renderers, geometric means over each set'"'"'s scenes (ratios are taken per scene on instructions per frame, then averaged geometrically). The **best float build** of a board is its float build (fast = direct evaluation, step = forward differences restarted per row or span, raycast = per-pixel ray caster) with the fewest instructions whose mean mismatched %% against the double reference is at most q16'"'"'s on the same scenes (on the M4F: hard float). Scenes that do not fit a board are left out of that board'"'"'s figures (see the per-board tables). The seed and bench goals are those of the first speed work, the lit goals those of lighting (lights, materials, shadows); \"-\": no goal for that set, the figure is for information.\n\n", size > md
+  printf "All from this run at %s, fast renderers, geometric means over each set'"'"'s scenes (ratios are taken per scene on instructions per frame, then averaged geometrically). The **best float build** of a board is its float build (fast = direct evaluation, step = forward differences restarted per row or span, raycast = per-pixel ray caster) with the fewest instructions whose mean mismatched %% against the double reference is at most q16'"'"'s on the same scenes (on the M4F: hard float). Scenes that do not fit a board are left out of that board'"'"'s figures (see the per-board tables). The seed and bench goals are those of the first speed work, the lit goals those of lighting (lights, materials, shadows); the nodes set (meshes, smooth normals, transformed objects) has none. \"-\": no goal for that set, the figure is for information.\n\n", size > md
   hdr = "| measure |"; sep = "|---|"
   for (k = 1; k <= nsets; k++) { hdr = hdr " " SET[k] ": goal | " SET[k] ": measured | " SET[k] ": result |"; sep = sep "---:|---:|---|" }
   print hdr > md; print sep > md
   line = "| q16 on the M3 (" m3 "), instructions per pixel |"
-  for (k = 1; k <= nsets; k++) { summ(m3, "q16", "fast", SET[k]); goal = (SET[k] == "seed") ? 8 : (SET[k] == "lit") ? "" : 60
+  for (k = 1; k <= nsets; k++) { summ(m3, "q16", "fast", SET[k]); goal = goalof(SET[k], (SET[k] == "seed") ? 8 : 60, "")
     line = line " " (goal == "" ? "-" : "<= " goal) " | " fmt(G, "%.1f") " | " verdict(G, goal, 0) " |" }
   print line > md
   tgt("q16 vs the best soft-float build, M3 (" m3 "): float / q16", m3, 8, 6, 1)
@@ -375,7 +380,7 @@ END {
   tgt("q16 vs the best hard-float build, M4F (" m4 "): q16 / float", m4, 1.0, 1.5, 0)
   line = "| q16 vs the per-pixel ray caster in q16, M3 (" m3 "): raycast / fast |"
   for (k = 1; k <= nsets; k++) { ratio(m3, "q16", "raycast", m3, "q16", "fast", SET[k])
-    goal = (SET[k] == "lit") ? "" : 50
+    goal = goalof(SET[k], 50, "")
     line = line " " (goal == "" ? "-" : ">= 50x") " | " fmt(R_geo, "%.1fx") " | " verdict(R_geo, goal, 1) " |" }
   print line > md
   print "" > md
@@ -458,12 +463,12 @@ function cell(b, n, r, set,   q, s, na, nf) { summ(b, n, r, set); if (G != "") r
 function mcell(b, n, r, s) { if (!((b, n, r, s) in st)) return "-"; if (st[b, n, r, s] == "nofit") return "does not fit"
   if (st[b, n, r, s] == "n/a") return "not available"; return sprintf("%.4f", mm[b, n, r, s]) }
 function tgt(label, b, goal9, goal11, ge,   k, line, set, goal) { line = "| " label " |"
-  for (k = 1; k <= nsets; k++) { set = SET[k]; best(b, set); v = ""; goal = (set == "lit") ? goal11 : goal9
+  for (k = 1; k <= nsets; k++) { set = SET[k]; best(b, set); v = ""; goal = goalof(set, goal9, goal11)
     if (B_r != "") v = ge ? B_ratio : 1 / B_ratio
-    line = line " " (ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " (B_r == "" ? "n/a" : sprintf("%.2fx (float %s%s)", v, B_r, B_n < cnt["set" set] ? sprintf(", %d of %d scenes", B_n, cnt["set" set]) : "")) " | " verdict(v, goal, ge) " |" }
+    line = line " " (goal == "" ? "-" : ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " (B_r == "" ? "n/a" : sprintf("%.2fx (float %s%s)", v, B_r, B_n < cnt["set" set] ? sprintf(", %d of %d scenes", B_n, cnt["set" set]) : "")) " | " verdict(v, goal, ge) " |" }
   print line > md }
 function extra(label, b, nn, rn, nd, rd, goal9, ge,   k, line, goal) { line = "| " label " |"
-  for (k = 1; k <= nsets; k++) { ratio(b, nn, rn, b, nd, rd, SET[k]); goal = (SET[k] == "lit") ? "" : goal9
+  for (k = 1; k <= nsets; k++) { ratio(b, nn, rn, b, nd, rd, SET[k]); goal = goalof(SET[k], goal9, "")
     line = line " " (goal == "" ? "-" : ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " fmt(R_geo, "%.2fx") " | " verdict(R_geo, goal, ge) " |" }
   print line > md }
 ' "$OUT/bench.csv"
