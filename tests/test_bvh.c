@@ -327,6 +327,11 @@ static void oracle_test(const inst_t *s, int views, int grid)
                 bvh_hit_t h;
                 bool hit = bvh_nearest(&s->in, &r, ntmax, BVH_NONE, &h);
                 bool any = bvh_any(&s->in, &r, ntmax, BVH_NONE);
+                /* the walk without weights: the same hit, triangle and t */
+                bvh_hit_t hf;
+                bool first = bvh_first(&s->in, &r, ntmax, BVH_NONE, &hf);
+                CHECK_SWEEP(first == hit && (!hit || (hf.tri == h.tri && hf.t == h.t)), "first %d tri %u t %.9f, nearest %d",
+                            first, first ? hf.tri : 0, first ? nd(hf.t) : 0.0, hit);
                 oracle_rays++;
                 if (!want.clear)
                     continue;

@@ -74,13 +74,16 @@ __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const r
     }
     int64_t po[3], pd[3], w[3];
     int bd = 0;
+#pragma GCC unroll 3
     for (int k = 0; k < 3; k++) {
         w[k] = (int64_t)num_to_q16(o[k]) - num_to_q16(t[k]);
         if (w[k] >= INT32_MAX || w[k] <= -INT32_MAX)
             return false; /* (within FXRT_COORD_LIMIT of each other it is far below 2^31) */
     }
+#pragma GCC unroll 3
     for (int j = 0; j < 3; j++) {
         po[j] = pd[j] = 0;
+#pragma GCC unroll 3
         for (int k = 0; k < 3; k++) {
             /* |w| < 2^31, |m| < 2^30: |po| < 3 2^61, and its rounding below fits */
             po[j] += (int64_t)in->m[j][k] * w[k];
@@ -222,6 +225,7 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32
      * fits 31 bits, its denominator 30, each cross product 61 */
     int32_t n0 = 0, d0 = 1; /* entry, from t = 0 */
     int32_t n1 = 0, d1 = 0; /* exit (d1 0: none yet) */
+#pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
         int32_t a = (int32_t)nd->lo[i] * (1 << r->f), b = (int32_t)nd->hi[i] * (1 << r->f), o = r->o[i], d = r->d[i];
         if (d == 0) {
@@ -263,7 +267,7 @@ typedef struct {
 
 /* p x q exactly (|p|, |q| < 2^31: each product below 2^62, each
  * difference below 2^63). */
-static void bvh_cross32(const int32_t p[3], const int32_t q[3], int64_t c[3])
+static FXRT_INLINE_WIDE void bvh_cross32(const int32_t p[3], const int32_t q[3], int64_t c[3])
 {
     c[0] = fx_smul32(p[1], q[2]) - fx_smul32(p[2], q[1]);
     c[1] = fx_smul32(p[2], q[0]) - fx_smul32(p[0], q[2]);
@@ -318,14 +322,17 @@ static const uint8_t bvh_next[4] = {1, 2, 0, 1};
 static void bvh_rel(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, int32_t p[3][3], uint32_t vi[3])
 {
     bvh_tri(m, i, vi);
+    /* (unrolled: the loops' counting cost as much as their work) */
+#pragma GCC unroll 3
     for (int k = 0; k < 3; k++)
+#pragma GCC unroll 3
         for (int j = 0; j < 3; j++)
             p[k][j] = (int32_t)m->v[vi[k]][j] * (1 << r->f) - r->o[j];
 }
 
 /* Q16.16: the cross product of edge k (the edge opposite vertex k), in
  * the order of its vertex indices, and whether that order is reversed. */
-static bool bvh_edge_cross(int32_t p[3][3], const uint32_t vi[3], int k, int64_t x[3])
+static FXRT_INLINE_WIDE bool bvh_edge_cross(int32_t p[3][3], const uint32_t vi[3], int k, int64_t x[3])
 {
     int a = bvh_next[k], b = bvh_next[k + 1];
     bool swap = vi[b] < vi[a];
@@ -464,7 +471,8 @@ static num_t bvh_cand_t_world(const bvh_ray_t *r, const bvh_cand_t *c)
 /* ---- the walk --------------------------------------------------------------- */
 
 /* The walk, for the nearest hit (nearest) or any (!nearest). */
-static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bool nearest, bvh_hit_t *hit)
+static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bool nearest, bool weights,
+                     bvh_hit_t *hit)
 {
     const bvh_mesh_t *m = in->mesh;
     bvh_ray_t r;
@@ -530,6 +538,8 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
             if (sp == 0) {
                 if (found) {
                     hit->t = best_t;
+                    if (!weights)
+                        return true;
                     if (NUM_EXACT)
                         bvh_weights_q(m, &r, hit->tri, hit->w);
                     else
@@ -546,13 +556,18 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
 
 bool bvh_nearest(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bvh_hit_t *hit)
 {
-    return bvh_walk(in, ray, tmax, skip, true, hit);
+    return bvh_walk(in, ray, tmax, skip, true, true, hit);
+}
+
+bool bvh_first(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bvh_hit_t *hit)
+{
+    return bvh_walk(in, ray, tmax, skip, true, false, hit);
 }
 
 bool bvh_any(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip)
 {
     bvh_hit_t unused;
-    return bvh_walk(in, ray, tmax, skip, false, &unused);
+    return bvh_walk(in, ray, tmax, skip, false, false, &unused);
 }
 
 bool bvh_hit_tri(const bvh_inst_t *in, const ray_t *ray, uint32_t tri, bvh_hit_t *hit)

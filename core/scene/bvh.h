@@ -109,6 +109,9 @@ bool bvh_check(const bvh_inst_t *in);
  * triangle the walk meets first (the same on every target). */
 #define BVH_NONE UINT32_MAX
 bool bvh_nearest(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bvh_hit_t *hit);
+/* The same walk without the weights (hit->w is not written): the
+ * triangle and t alone, for visibility. */
+bool bvh_first(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip, bvh_hit_t *hit);
 /* Is some triangle other than skip hit with 0 < t < tmax? */
 bool bvh_any(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_t skip);
 /* Triangle tri alone (one that bvh_nearest found on this ray): the same t
@@ -119,8 +122,12 @@ bool bvh_hit_tri(const bvh_inst_t *in, const ray_t *ray, uint32_t tri, bvh_hit_t
 /* Triangle i's vertex indices. */
 static inline void bvh_tri(const bvh_mesh_t *m, uint32_t i, uint32_t v[3])
 {
-    for (int k = 0; k < 3; k++)
-        v[k] = m->tri16 ? m->tri16[i][k] : m->tri32[i][k];
+    if (m->tri16)
+        for (int k = 0; k < 3; k++)
+            v[k] = m->tri16[i][k];
+    else
+        for (int k = 0; k < 3; k++)
+            v[k] = m->tri32[i][k];
 }
 
 /* The world-space unit normal at a hit: the winding normal (flat), or

@@ -222,6 +222,11 @@ fxrt_err_t geom_model_check(const bvh_inst_t *inst, color_t color);
  * reaches beyond FXRT_COORD_LIMIT, or the two maps are not each other's
  * inverse within 2^-12. Call after bvh_check. */
 bool geom_model_box(const bvh_inst_t *in, vec3_t *lo, vec3_t *hi);
+/* A model's footprint: at most n nodes of its tree (node[], the widest
+ * split first; returns how many) that together hold every triangle, and
+ * a node's box in world space, as geom_model_box's (false: none). */
+int geom_model_cut(const geom_model_t *o, uint32_t node[], int n);
+bool geom_model_cut_box(const geom_model_t *o, uint32_t node, vec3_t *lo, vec3_t *hi);
 /* A model's nearest hit and its surface with the part met (*part): the
  * triangle known (BVH_NONE: none, the walk finds it) intersected alone;
  * its nearest hit with the triangle skip (BVH_NONE: none) left out, and

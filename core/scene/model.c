@@ -4,6 +4,8 @@
 #include "scene/kinds.h"
 
 #if FXRT_MAX_MODELS > 0
+static bool geom_model_node_box(const bvh_inst_t *in, const bvh_node_t *nd, vec3_t *lo, vec3_t *hi);
+
 bool geom_model_box(const bvh_inst_t *in, vec3_t *lo, vec3_t *hi)
 {
     /* m f = 2^(e + fe) (I + E) with |E| <= 2^-12 per entry: then the
@@ -24,15 +26,21 @@ bool geom_model_box(const bvh_inst_t *in, vec3_t *lo, vec3_t *hi)
             if (v > tol || v < -tol)
                 return false;
         }
-    const bvh_node_t *root = &in->mesh->node[0];
+    return geom_model_node_box(in, &in->mesh->node[0], lo, hi);
+}
+
+/* The box of node nd (the root: the model's), as geom_model_box says,
+ * with the maps checked. */
+static bool geom_model_node_box(const bvh_inst_t *in, const bvh_node_t *nd, vec3_t *lo, vec3_t *hi)
+{
     const num_t t[3] = {in->t.x, in->t.y, in->t.z};
     num_t out_lo[3], out_hi[3];
     for (int i = 0; i < 3; i++) {
-        /* sum over j of f_ij q_j for q in the root box: its least and
+        /* sum over j of f_ij q_j for q in the node's box: its least and
          * greatest value, and the padding (below 3 2^45 each) */
         int64_t a = 0, b = 0, pad = 0;
         for (int j = 0; j < 3; j++) {
-            int64_t p = (int64_t)in->f[i][j] * root->lo[j], q = (int64_t)in->f[i][j] * root->hi[j];
+            int64_t p = (int64_t)in->f[i][j] * nd->lo[j], q = (int64_t)in->f[i][j] * nd->hi[j];
             a += p < q ? p : q;
             b += p < q ? q : p;
             int64_t ap = p < 0 ? -p : p, aq = q < 0 ? -q : q;
@@ -97,7 +105,7 @@ bool geom_model_hit(const geom_model_t *o, const ray_t *ray, num_t *t)
 bool geom_model_hit_from(const geom_model_t *o, const ray_t *ray, uint32_t skip, num_t *t, uint32_t *tri)
 {
     bvh_hit_t h;
-    if (!bvh_nearest(&o->in, ray, NUM_MAX, skip, &h))
+    if (!bvh_first(&o->in, ray, NUM_MAX, skip, &h))
         return false;
     *t = h.t;
     if (tri)
@@ -142,6 +150,43 @@ void geom_model_surface(const geom_model_t *o, const ray_t *ray, num_t *t, vec3_
 {
     geom_part_t part;
     geom_model_surface_part(o, ray, BVH_NONE, t, n, &part);
+}
+
+int geom_model_cut(const geom_model_t *o, uint32_t node[], int n)
+{
+    const bvh_mesh_t *m = o->in.mesh;
+    int count = 1;
+    node[0] = 0;
+    /* Split the inner node of the widest box (summed edges, mesh units)
+     * until there are n nodes or only leaves. */
+    while (count < n) {
+        int best = -1;
+        int32_t widest = -1;
+        for (int i = 0; i < count; i++) {
+            const bvh_node_t *nd = &m->node[node[i]];
+            uint32_t first = nd->link >> 4;
+            if ((nd->link & 15u) != 0 || first + 1 >= m->n_nodes)
+                continue; /* a leaf */
+            int32_t wd = 0;
+            for (int k = 0; k < 3; k++)
+                wd += (int32_t)nd->hi[k] - nd->lo[k];
+            if (wd > widest) {
+                widest = wd;
+                best = i;
+            }
+        }
+        if (best < 0)
+            break;
+        uint32_t first = m->node[node[best]].link >> 4;
+        node[best] = first;
+        node[count++] = first + 1;
+    }
+    return count;
+}
+
+bool geom_model_cut_box(const geom_model_t *o, uint32_t node, vec3_t *lo, vec3_t *hi)
+{
+    return geom_model_node_box(&o->in, &o->in.mesh->node[node], lo, hi);
 }
 
 void geom_model_bounds(const geom_model_t *o, vec3_t *lo, vec3_t *hi)

@@ -238,6 +238,15 @@ typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_INSIDE_BOX, RENDER
 #define RENDER_CAP_RAYS_RAYS(cap) +(cap)
 #define RENDER_RAY_KINDS (0 FXRT_KINDS(RENDER_CAP_RAYS) > 0)
 
+/* A model's footprint on the screen (vis/setup.c): the bounds of
+ * RENDER_CUT nodes of its tree that together hold every triangle (unused
+ * ones empty); a row's columns outside all of them cannot meet it, and
+ * its camera rays there are not cast (vis/rays.c). */
+#define RENDER_CUT 16
+typedef struct {
+    int16_t x0, x1, r0, r1;
+} render_rect_t;
+
 typedef struct {
     render_depth_t tlo, thi; /* first: 8-byte aligned in Q16.16, no padding before them */
     uint8_t kind;      /* render_kind_t */
@@ -325,6 +334,7 @@ typedef struct {
      * shading pass intersects alone instead of walking the model again. */
     FXRT_IF_MODEL(uint32_t model_tri[FXRT_RENDER_MAX_WIDTH];)
 #endif
+    FXRT_IF_MODEL(render_rect_t model_cut[FXRT_MAX_MODELS][RENDER_CUT];)
 #if RENDER_SROWS
     /* Row coherence, per sphere (index < FXRT_COHERENT_SPHERES): the
      * deciding form at its first column x0 is quadratic in the (fine) row,

@@ -44,6 +44,7 @@ void render_setup_object(vis_t *r, uint16_t i)
 #undef RENDER_SETUP_CASE
     default: break;
     }
+    FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) render_setup_cut(r, o);)
     for (int k = 0; k < o->nflat && (o->kind == RENDER_FLAT || o->kind == RENDER_BOX); k++) {
         render_flat_t *f = render_face(o, k);
         f->front = false; /* (Q16.16 alone uses it) */

@@ -193,6 +193,9 @@ static inline void render_setup_rays(vis_t *r, vec3_t lo, vec3_t hi, render_obj_
 FXRT_KINDS(RENDER_SETUP_KIND)
 #undef RENDER_SETUP_KIND
 
+/* vis/rays.c: a model's footprint on the screen (r->model_cut), after its
+ * bounds. */
+FXRT_IF_MODEL(void render_setup_cut(vis_t *r, const render_obj_t *o);)
 /* vis/cull.c: the back faces of closed meshes, per frame (RENDER_MESH). */
 void render_cull_meshes(vis_t *r);
 /* vis/order.c: nearest first (unless FXRT_NO_ORDER); the row blocks'
