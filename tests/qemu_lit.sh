@@ -24,9 +24,10 @@ mkdir -p "$onb/scenes" "$onb/host"
 . "$(dirname "$0")/onboard_lib.sh"
 ONB_WHAT="qemu_lit.sh: lit scenes on board"
 
-# (and two node scenes of models, a mesh's object: their data in flash, a
-# ray per pixel through each one's tree on the board; nodes are placed on
-# the host; at 80x60 for make test's time)
+# (and five node scenes: three of models, their data in flash and a ray
+# per pixel through each one's tree on the board, an ellipsoid and a
+# parallelepiped; nodes are placed on the host; at 80x60, the icospheres
+# at 40x30, for make test's time)
 scenes=(scenes/lit/*.scene scenes/nodes/smooth.scene scenes/nodes/smooth-ico80.scene scenes/nodes/course-u5-ellipsoid.scene scenes/nodes/course-u5-box.scene scenes/nodes/glass-ico80.scene)
 check "scenes/lit/ has lit scenes (${#scenes[@]})" test -e "${scenes[0]}"
 [ -e "${scenes[0]}" ] || { report qemu_lit; exit; }
@@ -37,7 +38,10 @@ for scene in "${scenes[@]}"; do
     name=$(basename "$scene" .scene)
     mkdir -p "$onb/scenes/$name"
     sz=$SIZE
-    case $scene in scenes/nodes/*) sz=80x60 ;; esac # (a quarter of the pixels: make test's time)
+    # (a quarter of the pixels for make test's time; the two icospheres,
+    # a ray per pixel through 80 triangles, a sixteenth: 48x36 at least
+    # in make test-full)
+    case $scene in scenes/nodes/*-ico80.scene) sz=40x30; full && sz=48x36 ;; scenes/nodes/*) sz=80x60 ;; esac
     if "$BUILD/fxrt-scenec" "$scene" --number q16 --size $sz --out "$onb/scenes/$name" 2>"$out/scenec.log" &&
         "$FXRT" render "$scene" --number q16 --size $sz -o "$onb/host/$name.ppm" 2>>"$out/scenec.log"; then
         names+=("$name")

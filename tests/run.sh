@@ -4,14 +4,16 @@
 # a recap of the suites that failed; exit non-zero if any check failed or
 # any suite crashed.
 #
-# Two lanes run side by side (the suites are single-threaded): the suites
+# Two lanes run side by side (the suites are single-threaded). The suites
 # that build and run firmware in shared build/fw directories (qemu,
-# qemu_lit, fit, examples, cli, whose make fw runs would race) one after
-# another in one lane, every other suite in the other. (qemu_trace.sh
-# builds only ELFs of its own, FW_TAG=trace*, so it runs in the second
-# lane; test_diff, a host program, runs in the first: with the CPU seconds
-# of a clean run, about 340 s in each lane.) RUN_LANES=1 runs everything in
-# one lane, in the order given. Each suite's line is printed
+# qemu_lit, fit, examples, cli, whose make fw runs would race) run one
+# after another in the first lane. Every other suite waits in a queue
+# that both lanes take from (under flock): the second from the start, the
+# first once its own are done, so that both lanes end at about the same
+# time. The queue holds the long suites first (RUN_LONG, by their CPU
+# seconds in a clean run: qemu_trace.sh builds only ELFs of its own,
+# FW_TAG=trace*), then the rest in the order given. RUN_LANES=1 runs
+# everything in one lane, in the order given. Each suite's line is printed
 # when it ends; the total comes last.
 #
 # Progress: a suite's output goes to its log, but a long suite may print
@@ -27,7 +29,8 @@ lanes=${RUN_LANES:-2}
 exec 3>&1
 export PROGRESS_FD=3
 results=$(mktemp -d)
-trap 'rm -rf "$results"' EXIT
+queue=$(mktemp) # (the suites not yet taken: apart from the results)
+trap 'rm -rf "$results" "$queue" "$queue.lock"' EXIT
 
 # run_one SUITE: run it, print its line, record "PASSED FAILED" in $results.
 run_one() {
@@ -69,20 +72,34 @@ run_one() {
     echo "$p $f $name $cpu" >"$results/$(printf '%03d' "$2")"
 }
 
-firmware=() others=()
+RUN_LONG=${RUN_LONG:-"qemu_trace.sh sanitize.sh skip.sh layers.sh cmake.sh test_diff meshq.sh fuzz-short.sh norecurse.sh"}
+firmware=() long=() others=()
 i=0
 for suite in "$@"; do
-    case $(basename "$suite") in
-    qemu.sh | qemu_lit.sh | fit.sh | examples.sh | cli.sh | test_diff) firmware+=("$i:$suite") ;;
-    *) others+=("$i:$suite") ;;
+    name=$(basename "$suite")
+    case $name in
+    qemu.sh | qemu_lit.sh | fit.sh | examples.sh | cli.sh) firmware+=("$i:$suite") ;;
+    *) if [[ " $RUN_LONG " == *" $name "* ]]; then long+=("$i:$suite"); else others+=("$i:$suite"); fi ;;
     esac
     i=$((i + 1))
 done
-lane() { for item in "$@"; do run_one "${item#*:}" "${item%%:*}"; done; }
+printf '%s\n' ${long[@]+"${long[@]}"} ${others[@]+"${others[@]}"} >"$queue"
+# take: the queue's first item (empty when it is empty), under the lock.
+take() {
+    (
+        flock 9
+        head -n 1 "$queue"
+        sed -i 1d "$queue"
+    ) 9>"$queue.lock"
+}
+from_queue() {
+    local item
+    while item=$(take) && [ -n "$item" ]; do run_one "${item#*:}" "${item%%:*}"; done
+}
 if [ "$lanes" -ge 2 ]; then
-    lane "${firmware[@]}" &
+    { for item in "${firmware[@]}"; do run_one "${item#*:}" "${item%%:*}"; done; from_queue; } &
     first=$!
-    lane "${others[@]}"
+    from_queue
     wait "$first"
 else
     i=0
