@@ -10,6 +10,8 @@
  *     uneven scale, translation), random cameras, lights and materials;
  *   - the box around a model (geom_model_box) holds every vertex of it, over
  *     random placements;
+ *   - its footprint on the screen (vis/rays.c) holds every pixel whose
+ *     camera ray meets it, over random placements and cameras;
  *   - every refusal of fxrt_add for a model: no instance, a malformed
  *     mesh, maps that are not each other's inverse, a model beyond the
  *     coordinate limit, a full world; each leaves the world unchanged;
@@ -27,7 +29,12 @@ static fxrt_world_t world_a, world_b;
 static fxrt_render_t render_a, render_b;
 static uint8_t img_a[IMG_W * IMG_H * 3], img_b[IMG_W * IMG_H * 3];
 
-static num_t num_d(double x) { return NUM_EXACT ? num_from_q16((int32_t)lrint(x * 65536)) : (num_t)x; }
+/* (float, double: a value below 2^-16 is 0, as the API asks: a vertex
+ * normal's component, say) */
+static num_t num_d(double x)
+{
+    return NUM_EXACT ? num_from_q16((int32_t)lrint(x * 65536)) : fabs(x) < 1.0 / 65536 ? NUM_ZERO : (num_t)x;
+}
 static vec3_t vec_d(const double v[3]) { return vec3_make(num_d(v[0]), num_d(v[1]), num_d(v[2])); }
 
 static bool render(const fxrt_world_t *w, const fxrt_view_t *v, fxrt_render_t *r, uint8_t *img)
@@ -333,6 +340,68 @@ static void test_bounds(void)
     free(text.s);
 }
 
+/* A model's footprint (vis/rays.c): over random placements of a torus and
+ * random cameras, near and far, every pixel whose camera ray meets the
+ * model (the walk alone, bvh_first) lies between the first and last
+ * column its footprint gives on that row; and the footprint leaves out a
+ * good part of the model's screen box (else it would do nothing). */
+static void test_footprint(void)
+{
+    buf_t text = {0};
+    torus(&text, 24, 12);
+    meshbuild_t mb;
+    CHECK(build(text.s, false, &mb));
+    long missed = 0, hits = 0, in_box = 0, in_cut = 0;
+    for (int s = 0; s < 200; s++) {
+        double a[3][3], b[3];
+        bvh_inst_t in;
+        CHECK(place(&mb, a, b, &in));
+        fxrt_world_init(&world_a, fxrt_color(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+        fxrt_object_t o = {.kind = FXRT_MODEL, .color = fxrt_color(num_from_int(200), NUM_ZERO, NUM_ZERO), .inst = &in};
+        if (fxrt_add(&world_a, &o) != 0)
+            continue;
+        double az = srand_(-FX_PI_D, FX_PI_D), el = srand_(-1.2, 1.2), dist = srand_(2.5, 12);
+        double eye[3] = {dist * cos(el) * sin(az), dist * sin(el), dist * cos(el) * cos(az)}, gz[3], up[3] = {0, 1, 0};
+        for (int i = 0; i < 3; i++)
+            gz[i] = srand_(-0.8, 0.8) - eye[i]; /* (the model off the centre too, or partly off the screen) */
+        fxrt_view_t view;
+        if (fxrt_camera_perspective(&view, vec_d(eye), vec_d(gz), vec_d(up), num_d(srand_(20, 90)), IMG_W, IMG_H) !=
+                FXRT_OK ||
+            fxrt_render_setup(&render_a, &world_a, &view) != FXRT_OK)
+            continue;
+        const vis_t *r = &render_a.vis;
+        const render_obj_t *ro = &r->obj[render_obj_of(r, GEOM_MODEL, 0)];
+        const render_rect_t *rc = r->model_cut[0];
+        for (int row = 0; row < IMG_H; row++) {
+            int lo = IMG_W, hi = -1;
+            for (int k = 0; k < RENDER_CUT; k++)
+                if (row >= rc[k].r0 && row <= rc[k].r1 && rc[k].x0 <= rc[k].x1) {
+                    lo = rc[k].x0 < lo ? rc[k].x0 : lo;
+                    hi = rc[k].x1 > hi ? rc[k].x1 : hi;
+                }
+            for (int x = 0; x < IMG_W; x++) {
+                bool box = row >= ro->r0 && row <= ro->r1 && x >= ro->x0 && x <= ro->x1, cut = box && x >= lo && x <= hi;
+                in_box += box;
+                in_cut += cut;
+                ray_t ray;
+                cam_ray(r->cam, x, IMG_H - 1 - row, &ray);
+                bvh_hit_t h;
+                if (!bvh_first(&world_a.models[0].in, &ray, NUM_MAX, BVH_NONE, &h))
+                    continue;
+                hits++;
+                missed += !cut;
+            }
+        }
+    }
+    CHECK_MSG(hits > 50000 && missed == 0, "footprint: %ld of %ld pixels met outside it", missed, hits);
+    CHECK_MSG(in_cut < in_box * 3 / 4, "footprint: %ld of the boxes' %ld pixels (%.0f %%)", in_cut, in_box,
+              100.0 * (double)in_cut / (double)(in_box ? in_box : 1));
+    printf("footprint: %ld pixels met, %ld of them outside it; it holds %.1f %% of the boxes' pixels\n", hits, missed,
+           100.0 * (double)in_cut / (double)(in_box ? in_box : 1));
+    meshbuild_free(&mb);
+    free(text.s);
+}
+
 static void test_refusals(void)
 {
     buf_t text = {0};
@@ -414,6 +483,7 @@ int main(void)
 {
     test_refusals();
     test_bounds();
+    test_footprint();
     test_ram();
     test_oracle();
     test_glass_box();
