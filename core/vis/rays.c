@@ -29,7 +29,7 @@ FXRT_IF_MODEL(void render_setup_cut(vis_t *r, const render_obj_t *o) {
 void render_scan_rays(vis_t *r, uint16_t oi, int32_t x0, int32_t x1, int32_t iy, uint8_t *rgb, bool lone)
 {
     /* A model: only the columns of its footprint's bounds that hold the
-     * row (vis/setup.c), from the first to the last. */
+     * row (render_setup_cut), from the first to the last. */
     FXRT_IF_MODEL(if (!FXRT_NO_BOUNDS && r->obj[oi].geom == GEOM_MODEL) {
         const render_rect_t *rc = r->model_cut[r->obj[oi].index];
         int32_t row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2, lo = x1 + 1, hi = x0 - 1;

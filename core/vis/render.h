@@ -238,10 +238,10 @@ typedef enum { RENDER_SPHERE, RENDER_FLAT, RENDER_BOX, RENDER_INSIDE_BOX, RENDER
 #define RENDER_CAP_RAYS_RAYS(cap) +(cap)
 #define RENDER_RAY_KINDS (0 FXRT_KINDS(RENDER_CAP_RAYS) > 0)
 
-/* A model's footprint on the screen (vis/setup.c): the bounds of
+/* A model's footprint on the screen (vis/rays.c): the bounds of
  * RENDER_CUT nodes of its tree that together hold every triangle (unused
  * ones empty); a row's columns outside all of them cannot meet it, and
- * its camera rays there are not cast (vis/rays.c). */
+ * its camera rays there are not cast. */
 #define RENDER_CUT 16
 typedef struct {
     int16_t x0, x1, r0, r1;
