@@ -35,6 +35,9 @@ $(foreach b,$(BOARDS),$(eval $(call meshq_board_rule,$(b))))
 
 # make test: tests/meshq.sh (fxrt-scenec --mesh, host and boards alike).
 SUITES += tests/meshq.sh
+# Built before the suites run: meshq.sh and cycles.sh both use it, and
+# tests/run.sh may run them side by side.
+test-build: $(MESHQ_GEN)
 
 # make bench-mesh [MESHQ_UPDATE_DOCS=1]: every model's bytes and queries
 # on every board (firmware/meshq.sh; docs/bench/meshes.md).
