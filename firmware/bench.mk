@@ -96,6 +96,7 @@ profile: deps $(BUILD)/fxrt-scenec
 
 # Estimated cycles of one frame (firmware/cycles.sh; docs/BENCHMARKS.md, "Cycles"):
 #   make cycles SCENE=scenes/lit/room.scene BOARD=mps2-an385 NUMBER=q16 [CYCLES_SIZE=80x60]
+# (CYCLES_FRAME=1: the frame's own figures too; FW_EXTRA, FW_TAG as for make qemu)
 cycles: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) firmware/cycles.sh '$(SCENE)' $(BOARD) $(NUMBER) $(or $(CYCLES_SIZE),80x60)
 .PHONY: cycles

@@ -5,7 +5,12 @@
 # BENCH_SIZE, on every board, for every build (a number type and a loop),
 # run the firmware in QEMU (make qemu: instructions per frame and per pixel)
 # and compare its frame with the host's double render (fxrt compare:
-# mismatched %, PSNR, max error). Summaries are per scene set, never mixed.
+# mismatched %, PSNR, max error). The fast and step builds also get
+# estimated cycles: the frame's cycles per instruction (CPI), priced by
+# firmware/cycles.sh on the same build at BENCH_CYCLES_SIZE, times its
+# instructions at BENCH_SIZE. The peer set (scenes/peer/: the scene the C
+# port of tinyraytracer was measured on) holds issue 39's matched-scene
+# targets. Summaries are per scene set, never mixed.
 # Writes build/bench/bench.csv, bench.md (targets, best float builds, per
 # board, float-step drift, per scene) and pareto-SET-BOARD.png; with
 # BENCH_UPDATE_DOCS=1 also docs/BENCHMARKS.md and docs/bench/.
@@ -31,10 +36,14 @@
 #   BENCH_SIZE         frame size (160x120)
 #   BENCH_BOARDS       boards (all three)
 #   BENCH_BUILDS       builds (see above; default below)
-#   BENCH_SETS         scene sets (seed bench lit nodes)
+#   BENCH_SETS         scene sets (seed bench lit nodes peer)
+#   BENCH_CYCLES_SIZE  frame size of the cycle pricing (40x30; its CPI
+#                      lies within about 1 % of BENCH_SIZE's, see
+#                      docs/BENCHMARKS.md, "Cycles"); "none": no cycles
 #   BENCH_SCENES       scene files instead of the sets' (each file's set is
 #                      its directory: scenes/bench/ bench, scenes/lit/ lit,
-#                      scenes/nodes/ nodes, otherwise seed)
+#                      scenes/nodes/ nodes, scenes/peer/ peer, otherwise
+#                      seed)
 #   BENCH_JOBS         parallel runs (nproc); QEMU -icount counts do not
 #                      depend on it
 #   BENCH_UPDATE_DOCS  1: regenerate docs/BENCHMARKS.md and docs/bench/
@@ -42,7 +51,8 @@
 #                      last complete run's build/bench/bench.csv
 #   BENCH_BOARD_INFO   "board:cpu:fb ..." (bench.mk passes it from firmware.mk)
 #   BENCH_REV          the revision named in the header (git rev-parse HEAD)
-# Counts are QEMU -icount instruction counts (deterministic), not cycles.
+# Counts are QEMU -icount instruction counts (deterministic); cycles are
+# estimates (docs/BENCHMARKS.md, "Cycles").
 set -euo pipefail
 BUILD=${BUILD:-build}
 FXRT=${FXRT:-$BUILD/fxrt}
@@ -52,7 +62,8 @@ BOARDS=${BENCH_BOARDS:-$(for i in $BOARD_INFO; do printf '%s ' "${i%%:*}"; done)
 # The ray caster costs hundreds of times the fast renderer: soft float and
 # double are limited to the M3 (and hard float to the M4F), q16 runs everywhere.
 BUILDS=${BENCH_BUILDS:-"q16:fast float:fast float:step double:fast q16:reference q16:raycast float:raycast@M3,M4F double:raycast@M3"}
-SETS=${BENCH_SETS:-seed bench lit nodes}
+SETS=${BENCH_SETS:-seed bench lit nodes peer}
+CSIZE=${BENCH_CYCLES_SIZE:-40x30}
 JOBS=${BENCH_JOBS:-$(nproc 2>/dev/null || echo 2)}
 OUT=$BUILD/bench
 # The sub-makes are ours: no jobserver or command-line variables from a parent make.
@@ -73,15 +84,16 @@ board_field() { # BOARD FIELD(2=cpu 3=fb)
 }
 short() { local n; n=$(basename "$1" .scene); [[ $n == abb* ]] && n=${n%%-*}; echo "$n"; }
 get() { sed -nE "s/.*(^| )$1=([^ ]+).*/\2/p" <<<"$2"; }
-set_of() { case $1 in */bench/*) echo bench ;; */lit/*) echo lit ;; */nodes/*) echo nodes ;; */stress/*) echo stress ;; *) echo seed ;; esac; }
+set_of() { case $1 in */bench/*) echo bench ;; */lit/*) echo lit ;; */nodes/*) echo nodes ;; */peer/*) echo peer ;; */stress/*) echo stress ;; *) echo seed ;; esac; }
 set_scenes() {
     case $1 in
         seed) printf '%s\n' scenes/abb*.scene | sort -V ;;
         bench) printf '%s\n' scenes/bench/*.scene ;;
         lit) printf '%s\n' scenes/lit/*.scene ;;
         nodes) printf '%s\n' scenes/nodes/*.scene ;;
+        peer) printf '%s\n' scenes/peer/*.scene ;;
         stress) printf '%s\n' scenes/stress/*.scene ;;
-        *) die "unknown scene set '$1' (seed, bench, lit, nodes, stress)" ;;
+        *) die "unknown scene set '$1' (seed, bench, lit, nodes, peer, stress)" ;;
     esac
 }
 if [[ -n ${BENCH_SCENES:-} ]]; then
@@ -118,7 +130,8 @@ board_builds() {
 # (make qemu writes NAME-NUMBER-SIZE[-FW_TAG].ppm; the frame is copied away.)
 # A CSV row: set,scene,board,cpu,number,loop,status,instructions,
 # instructions_per_pixel,mismatched_pct,psnr,max_err,text_bytes,within1_pct,
-# within2_pct (status ok, nofit or n/a; the numbers are empty unless ok).
+# within2_pct,cpi,cycles_per_pixel (status ok, nofit or n/a; the numbers are
+# empty unless ok; cpi and cycles_per_pixel also for builds not priced).
 if [[ ${1:-} == --unit ]]; then
     idx=$2 total=$3 board=$4 scene=$5 number=$6 r=$7
     cpu=$(board_field "$board" 2) fb=$(board_field "$board" 3)
@@ -128,7 +141,7 @@ if [[ ${1:-} == --unit ]]; then
     echo "[$idx/$total] $label" >&2
     row() { echo "$set,$name,$board,$cpu,$number,$r,$1" >"$OUT/runs/$id.csv"; }
     if [[ $r == step ]] && ! step_ok; then
-        row "n/a,,,,,,,,"
+        row "n/a,,,,,,,,,,"
         exit 0
     fi
     read -r fwx tag < <(loop_extra "$r"; echo)
@@ -140,7 +153,7 @@ if [[ ${1:-} == --unit ]]; then
     log=$OUT/runs/$id.log
     if ! $M qemu SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$SIZE" FB="$fb" "${extra[@]}" >"$log" 2>&1; then
         if grep -q "^$scene: does not fit $board" "$log"; then
-            row "nofit,,,,,,,,"
+            row "nofit,,,,,,,,,,"
             exit 0
         fi
         { echo "$label: make qemu failed:"; sed 's/^/  | /' "$log"; } >"$OUT/runs/$id.err"
@@ -164,7 +177,22 @@ if [[ ${1:-} == --unit ]]; then
         echo "$label: cannot read the text size of $elf" >"$OUT/runs/$id.err"
         exit 1
     fi
-    row "ok,$ins,$ipp,$(get mismatched_pct "$cmp"),$(get psnr "$cmp"),$(get max_err "$cmp"),$text,$(get within1_pct "$cmp"),$(get within2_pct "$cmp")"
+    # Estimated cycles: the frame's CPI at CSIZE (the trace costs about
+    # 20 times the -icount run), for the fast and step builds.
+    cpi="" cpp=""
+    if [[ $CSIZE != none && ($r == fast || $r == step) ]]; then
+        clog=$OUT/runs/$id.cycles
+        celf=$BUILD/fw/$board/$name-$number-$CSIZE-$fb${tag:+-$tag}/fxrt.elf
+        if ! { $M fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$CSIZE" FB="$fb" "${extra[@]}" &&
+            BUILD=$BUILD CYCLES_FRAME=1 firmware/cycles.sh "$celf" "$board"; } >"$clog" 2>&1; then
+            { echo "$label: cycle pricing at $CSIZE failed:"; sed 's/^/  | /' "$clog" | tail -n 25; } >"$OUT/runs/$id.err"
+            exit 1
+        fi
+        cpi=$(sed -nE 's/^frame .* cpi=([0-9.]+)$/\1/p' "$clog")
+        [[ -n $cpi ]] || { echo "$label: no 'frame ... cpi=' line from firmware/cycles.sh" >"$OUT/runs/$id.err"; exit 1; }
+        cpp=$(awk -v a="$ipp" -v c="$cpi" 'BEGIN { printf "%.1f", a * c }')
+    fi
+    row "ok,$ins,$ipp,$(get mismatched_pct "$cmp"),$(get psnr "$cmp"),$(get max_err "$cmp"),$text,$(get within1_pct "$cmp"),$(get within2_pct "$cmp"),$cpi,$cpp"
     exit 0
 fi
 
@@ -301,7 +329,7 @@ fi
 n_csv=$(find "$OUT/runs" -name '*.csv' | wc -l)
 [[ $n_csv -eq $total ]] || die "expected $total results, found $n_csv in $OUT/runs/"
 {
-    echo "set,scene,board,cpu,number,loop,status,instructions,instructions_per_pixel,mismatched_pct,psnr,max_err,text_bytes,within1_pct,within2_pct"
+    echo "set,scene,board,cpu,number,loop,status,instructions,instructions_per_pixel,mismatched_pct,psnr,max_err,text_bytes,within1_pct,within2_pct,cpi,cycles_per_pixel"
     cat "$OUT"/runs/*.csv
 } >"$OUT/bench.csv"
 elapsed=$((SECONDS - start))
@@ -311,38 +339,45 @@ fi
 # --- tables (markdown) and Pareto data -------------------------------------------
 # Error "0 mismatched" is plotted at ZERO on the log axis.
 ZERO=1e-4
-awk -F, -v out="$OUT" -v zero=$ZERO -v size="$SIZE" -v sets="$SETS" -v builds="$BUILDS" -v boards="$BOARDS" '
+awk -F, -v out="$OUT" -v zero=$ZERO -v size="$SIZE" -v csize="$CSIZE" -v sets="$SETS" -v builds="$BUILDS" -v boards="$BOARDS" '
 function add(list, v) { if (!((list, v) in seen)) { seen[list, v] = 1; order[list, ++cnt[list]] = v } }
 function ok(b, n, r, s) { return ((b, n, r, s) in st) && st[b, n, r, s] == "ok" }
 # geometric mean of instructions per pixel over the set: G, G_k (scenes), also mean mismatch M
-function summ(b, n, r, set,   i, s, sum) { G_k = 0; sum = 0; M = 0
+# and the geometric mean of estimated cycles per pixel GC ("" unless every scene was priced)
+function summ(b, n, r, set,   i, s, sum, sc, kc) { G_k = 0; sum = 0; M = 0; sc = 0; kc = 0
     for (i = 1; i <= cnt["s"]; i++) { s = order["s", i]; if (sset[s] != set || !ok(b, n, r, s)) continue
-        sum += log(ipp[b, n, r, s]); M += mm[b, n, r, s]; G_k++ }
-    G = G_k ? exp(sum / G_k) : ""; M = G_k ? M / G_k : "" }
+        sum += log(ipp[b, n, r, s]); M += mm[b, n, r, s]; G_k++
+        if (cpp[b, n, r, s] != "") { sc += log(cpp[b, n, r, s]); kc++ } }
+    G = G_k ? exp(sum / G_k) : ""; M = G_k ? M / G_k : ""; GC = (G_k && kc == G_k) ? exp(sc / kc) : "" }
 # ratio num/den of instructions per scene over the set, both ok: R_geo, R_min, R_max, R_n;
-# also the mean mismatch of each over the same scenes: R_mn, R_md
-function ratio(bn, nn, rn, bd, nd, rd, set,   i, s, x, sum) { R_n = 0; sum = 0; R_min = ""; R_max = ""; R_mn = 0; R_md = 0
+# also the mean mismatch of each over the same scenes: R_mn, R_md; and the ratio of
+# estimated cycles R_cyc ("" unless every scene of both was priced)
+function ratio(bn, nn, rn, bd, nd, rd, set,   i, s, x, sum, sc, kc) { R_n = 0; sum = 0; R_min = ""; R_max = ""; R_mn = 0; R_md = 0; sc = 0; kc = 0
     for (i = 1; i <= cnt["s"]; i++) { s = order["s", i]
         if (sset[s] != set || !ok(bn, nn, rn, s) || !ok(bd, nd, rd, s)) continue
+        if (cpp[bn, nn, rn, s] != "" && cpp[bd, nd, rd, s] != "") { sc += log(cpp[bn, nn, rn, s] / cpp[bd, nd, rd, s]); kc++ }
         x = ins[bn, nn, rn, s] / ins[bd, nd, rd, s]; sum += log(x); R_n++
         R_mn += mm[bn, nn, rn, s]; R_md += mm[bd, nd, rd, s]
         if (R_min == "" || x < R_min) R_min = x; if (R_max == "" || x > R_max) R_max = x }
-    R_geo = R_n ? exp(sum / R_n) : ""; if (R_n) { R_mn /= R_n; R_md /= R_n } }
+    R_geo = R_n ? exp(sum / R_n) : ""; if (R_n) { R_mn /= R_n; R_md /= R_n }; R_cyc = (R_n && kc == R_n) ? exp(sc / kc) : "" }
 # the best float build on board b for the set: the float loop with the fewest
 # instructions (relative to q16 fast, scene by scene) whose mean mismatch
 # against double is at most q16 fast'"'"'s on the same scenes. Sets B_r (or ""),
-# B_ratio (float / q16), B_n, B_note.
-function best(b, set,   j, r, have) { B_r = ""; B_ratio = ""; B_n = 0; B_note = ""; have = 0
+# B_ratio (float / q16), B_cyc (the same in estimated cycles), B_n, B_note.
+function best(b, set,   j, r, have) { B_r = ""; B_ratio = ""; B_n = 0; B_note = ""; B_cyc = ""; have = 0
     for (j = 1; j <= nloops; j++) { r = loops[j]
         ratio(b, "float", r, b, "q16", "fast", set); if (R_n == 0) continue
         have = 1
         if (R_mn > R_md + 1e-9) { B_note = B_note (B_note ? "; " : "") "float " r " has more error (" sprintf("%.4f", R_mn) " % > " sprintf("%.4f", R_md) " %)"; continue }
-        if (B_r == "" || R_geo < B_ratio) { B_r = r; B_ratio = R_geo; B_n = R_n } }
+        if (B_r == "" || R_geo < B_ratio) { B_r = r; B_ratio = R_geo; B_n = R_n; B_cyc = R_cyc } }
     if (!have) B_note = "no float build ran" }
-# The goal of a set: for seed and bench those of the first speed work, for
-# lit those of lighting; the nodes set (meshes and transformed objects) has
-# none, its figures are for information.
-function goalof(set, g, glit) { return set == "nodes" ? "" : set == "lit" ? glit : g }
+# The goal of a set: for seed and bench those of the first speed work (g),
+# for lit those of lighting (glit), for peer issue 39'"'"'s matched-scene
+# targets (gpeer); the nodes set (meshes and transformed objects) has none,
+# its figures are for information.
+function goalof(set, g, glit, gpeer) { return set == "nodes" ? "" : set == "lit" ? glit : set == "peer" ? gpeer : g }
+# a measured figure with its estimated cycles beside it
+function withc(v, f, c, cf) { return v == "" ? "n/a" : sprintf(f, v) (c == "" ? "" : "; cycles " sprintf(cf, c)) }
 function verdict(m, goal, ge) {
     if (goal == "") return "(no goal)"
     if (m == "") return "n/a"
@@ -357,6 +392,7 @@ NR == 1 { next }
   add("s", s); add("b", b); cpu[b] = $4; sset[s] = set; add("set" set, s)
   if (!(($4) in board_of)) board_of[$4] = b
   st[b, n, r, s] = $7; ins[b, n, r, s] = $8; ipp[b, n, r, s] = $9; mm[b, n, r, s] = $10; ps[b, n, r, s] = $11
+  cpi[b, n, r, s] = $16; cpp[b, n, r, s] = $17
   me[b, n, r, s] = $12; tx[b, n, r, s] = $13; row[++rows] = $0 }
 END {
   nloops = split("fast step raycast", loops, " ")
@@ -367,20 +403,19 @@ END {
 
   # 1. targets, one column per scene set
   print "## TARGETS\n" > md
-  printf "All from this run at %s, fast renderers, geometric means over each set'"'"'s scenes (ratios are taken per scene on instructions per frame, then averaged geometrically). The **best float build** of a board is its float build (fast = direct evaluation, step = forward differences restarted per row or span, raycast = per-pixel ray caster) with the fewest instructions whose mean mismatched %% against the double reference is at most q16'"'"'s on the same scenes (on the M4F: hard float). Scenes that do not fit a board are left out of that board'"'"'s figures (see the per-board tables). The seed and bench goals are those of the first speed work, the lit goals those of lighting (lights, materials, shadows); the nodes set (meshes, smooth normals, transformed objects) has none. \"-\": no goal for that set, the figure is for information.\n\n", size > md
+  printf "All from this run at %s, fast renderers, geometric means over each set'"'"'s scenes (ratios are taken per scene on instructions per frame, then averaged geometrically). The **best float build** of a board is its float build (fast = direct evaluation, step = forward differences restarted per row or span, raycast = per-pixel ray caster) with the fewest instructions whose mean mismatched %% against the double reference is at most q16'"'"'s on the same scenes (on the M4F: hard float). Scenes that do not fit a board are left out of that board'"'"'s figures (see the per-board tables). The seed and bench goals are those of the first speed work, the lit goals those of lighting (lights, materials, shadows) and, per pixel, of lit speed (issue 39), as are the peer set'"'"'s (the scene the C port of tinyraytracer was measured on); the nodes set (meshes, smooth normals, transformed objects) has none. \"-\": no goal for that set, the figure is for information. **Cycles** beside a figure are estimated (docs/BENCHMARKS.md, \"Cycles\"): each fast or step run'"'"'s CPI, priced at %s, times its instructions; verdicts are on instructions.\n\n", size, csize > md
   hdr = "| measure |"; sep = "|---|"
   for (k = 1; k <= nsets; k++) { hdr = hdr " " SET[k] ": goal | " SET[k] ": measured | " SET[k] ": result |"; sep = sep "---:|---:|---|" }
   print hdr > md; print sep > md
-  line = "| q16 on the M3 (" m3 "), instructions per pixel |"
-  for (k = 1; k <= nsets; k++) { summ(m3, "q16", "fast", SET[k]); goal = goalof(SET[k], (SET[k] == "seed") ? 8 : 60, "")
-    line = line " " (goal == "" ? "-" : "<= " goal) " | " fmt(G, "%.1f") " | " verdict(G, goal, 0) " |" }
-  print line > md
+  pp("q16 on the M3 (" m3 "), instructions per pixel", m3, 0, 8, 60, 500, 600)
+  pp("q16 on the M0 (" m0 "), instructions per pixel", m0, 0, "", "", 1450, 1650)
+  pp("best build on the M4F (" m4 "), instructions per pixel: the fewer of q16 fast and the best hard-float build", m4, 1, "", "", 350, 310)
   tgt("q16 vs the best soft-float build, M3 (" m3 "): float / q16", m3, 8, 6, 1)
   tgt("q16 vs the best soft-float build, M0 (" m0 "): float / q16", m0, 10, 8, 1)
   tgt("q16 vs the best hard-float build, M4F (" m4 "): q16 / float", m4, 1.0, 1.5, 0)
   line = "| q16 vs the per-pixel ray caster in q16, M3 (" m3 "): raycast / fast |"
   for (k = 1; k <= nsets; k++) { ratio(m3, "q16", "raycast", m3, "q16", "fast", SET[k])
-    goal = goalof(SET[k], 50, "")
+    goal = goalof(SET[k], 50, "", "")
     line = line " " (goal == "" ? "-" : ">= 50x") " | " fmt(R_geo, "%.1fx") " | " verdict(R_geo, goal, 1) " |" }
   print line > md
   print "" > md
@@ -394,15 +429,15 @@ END {
 
   # 2. best float build per board and set
   print "## Best float build per board\n" > md
-  print "| set | board | float fast: instr/px, mismatched % | float step | float raycast | q16 fast | best float build | best / q16 (instructions) |" > md
-  print "|---|---|---|---|---|---|---|---:|" > md
+  print "| set | board | float fast: instr/px, mismatched % | float step | float raycast | q16 fast | best float build | best / q16 (instructions) | best / q16 (estimated cycles) |" > md
+  print "|---|---|---|---|---|---|---|---:|---:|" > md
   for (k = 1; k <= nsets; k++) for (i = 1; i <= cnt["b"]; i++) { b = order["b", i]; set = SET[k]
     line = "| " set " | " b " (" cpu[b] ") |"
     for (j = 1; j <= nloops; j++) line = line " " cell(b, "float", loops[j], set) " |"
     line = line " " cell(b, "q16", "fast", set) " |"
     best(b, set)
-    if (B_r == "") line = line " none" (B_note ? " (" B_note ")" : "") " | n/a |"
-    else line = line " float " B_r (B_note ? " (" B_note ")" : "") " | " sprintf("%.2fx (%d of %d scenes)", B_ratio, B_n, cnt["set" set]) " |"
+    if (B_r == "") line = line " none" (B_note ? " (" B_note ")" : "") " | n/a | n/a |"
+    else line = line " float " B_r (B_note ? " (" B_note ")" : "") " | " sprintf("%.2fx (%d of %d scenes)", B_ratio, B_n, cnt["set" set]) " | " fmt(B_cyc, "%.2fx") " |"
     print line > md }
   print "" > md
 
@@ -411,11 +446,11 @@ END {
     printf "## Scene set: %s (%d scenes)\n\n", set, cnt["set" set] > md
     sl = ""; for (q = 1; q <= cnt["set" set]; q++) sl = sl (q > 1 ? ", " : "") order["set" set, q]
     print "Scenes: " sl ".\n" > md
-    print "Instructions per pixel: geometric mean over the scenes that ran. Error against the host double render: mean mismatched % (share of pixels whose RGB differs), worst (lowest) PSNR, largest channel error. Text: flash bytes of the ELF, smallest - largest.\n" > md
+    print "Instructions per pixel and estimated cycles per pixel: geometric means over the scenes that ran (cycles for the fast and step builds). Error against the host double render: mean mismatched % (share of pixels whose RGB differs), worst (lowest) PSNR, largest channel error. Text: flash bytes of the ELF, smallest - largest.\n" > md
     for (i = 1; i <= cnt["b"]; i++) { b = order["b", i]
       printf "### %s: %s (Cortex-%s)\n\n", set, b, cpu[b] > md
-      print "| build | scenes run | instr/pixel | instr/frame | mismatched % | worst PSNR dB | max_err | text bytes |" > md
-      print "|---|---|---:|---:|---:|---:|---:|---:|" > md
+      print "| build | scenes run | instr/pixel | cycles/pixel | instr/frame | mismatched % | worst PSNR dB | max_err | text bytes |" > md
+      print "|---|---|---:|---:|---:|---:|---:|---:|---:|" > md
       dat = out "/pareto-" set "-" b ".dat"; printf "" > dat
       for (j = 1; j <= nbuilds; j++) { spec = BLD[j]; sub(/@.*/, "", spec); split(spec, nr, ":"); n = nr[1]; r = nr[2]
         tot = 0; nf = 0; na = 0; c = 0; sm = 0; wp = ""; mx = 0; tmin = ""; tmax = ""; gi = 0; gp = 0
@@ -426,11 +461,11 @@ END {
           if (me[b, n, r, s] + 0 > mx) mx = me[b, n, r, s] + 0
           t = tx[b, n, r, s] + 0; if (tmin == "" || t < tmin) tmin = t; if (tmax == "" || t > tmax) tmax = t }
         if (tot == 0) continue
-        if (na == tot) { printf "| %s | not available (core/fxrt_config.h has no FXRT_FLOAT_STEP) | | | | | | |\n", bname(n, r) > md; continue }
-        if (c == 0) { printf "| %s | none: %d of %d do not fit | | | | | | |\n", bname(n, r), nf, tot > md; continue }
-        mean = sm / c
-        printf "| %s | %d of %d%s | %.1f | %.0f | %.4f | %s | %d | %s |\n", bname(n, r), c, tot, (nf ? sprintf(" (%d do not fit)", nf) : ""),
-          exp(gp / c), exp(gi / c), mean, (wp == 1e9 ? "inf" : sprintf("%.2f", wp)), mx, (tmin == tmax ? tmin : tmin " - " tmax) > md
+        if (na == tot) { printf "| %s | not available (core/fxrt_config.h has no FXRT_FLOAT_STEP) | | | | | | | |\n", bname(n, r) > md; continue }
+        if (c == 0) { printf "| %s | none: %d of %d do not fit | | | | | | | |\n", bname(n, r), nf, tot > md; continue }
+        mean = sm / c; summ(b, n, r, set)
+        printf "| %s | %d of %d%s | %.1f | %s | %.0f | %.4f | %s | %d | %s |\n", bname(n, r), c, tot, (nf ? sprintf(" (%d do not fit)", nf) : ""),
+          exp(gp / c), fmt(GC, "%.1f"), exp(gi / c), mean, (wp == 1e9 ? "inf" : sprintf("%.2f", wp)), mx, (tmin == tmax ? tmin : tmin " - " tmax) > md
         printf "%s %s %.6g %.6g \"%s %s\"\n", n, r, exp(gp / c), (mean > 0 ? mean : zero), n, r > dat }
       print "" > md; close(dat) } }
 
@@ -448,11 +483,11 @@ END {
   # 5. per scene
   print "## Per scene\n" > md
   print "Error against the host double render (fxrt compare): mismatched % = share of pixels whose RGB differs; within1 % = share whose largest channel error is at most 1/255.\n" > md
-  print "| set | scene | board | build | instructions | instr/pixel | mismatched % | within1 % | PSNR dB | max_err | text bytes |" > md
-  print "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|" > md
+  print "| set | scene | board | build | instructions | instr/pixel | CPI | cycles/pixel | mismatched % | within1 % | PSNR dB | max_err | text bytes |" > md
+  print "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|" > md
   for (i = 1; i <= rows; i++) { split(row[i], f, ",")
-    if (f[7] == "ok") printf "| %s | %s | %s (%s) | %s %s | %s | %s | %s | %s | %s | %s | %s |\n", f[1], f[2], f[3], f[4], f[5], f[6], f[8], f[9], f[10], (f[14] == "" ? "-" : f[14]), f[11], f[12], f[13] > md
-    else printf "| %s | %s | %s (%s) | %s %s | %s | | | | | | |\n", f[1], f[2], f[3], f[4], f[5], f[6], (f[7] == "nofit" ? "does not fit" : "not available") > md }
+    if (f[7] == "ok") printf "| %s | %s | %s (%s) | %s %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", f[1], f[2], f[3], f[4], f[5], f[6], f[8], f[9], (f[16] == "" ? "-" : f[16]), (f[17] == "" ? "-" : f[17]), f[10], (f[14] == "" ? "-" : f[14]), f[11], f[12], f[13] > md
+    else printf "| %s | %s | %s (%s) | %s %s | %s | | | | | | | | |\n", f[1], f[2], f[3], f[4], f[5], f[6], (f[7] == "nofit" ? "does not fit" : "not available") > md }
   close(md)
 }
 function cell(b, n, r, set,   q, s, na, nf) { summ(b, n, r, set); if (G != "") return sprintf("%.1f, %.4f %%", G, M)
@@ -462,14 +497,24 @@ function cell(b, n, r, set,   q, s, na, nf) { summ(b, n, r, set); if (G != "") r
   return na ? "not available" : nf ? "does not fit" : "not run" }
 function mcell(b, n, r, s) { if (!((b, n, r, s) in st)) return "-"; if (st[b, n, r, s] == "nofit") return "does not fit"
   if (st[b, n, r, s] == "n/a") return "not available"; return sprintf("%.4f", mm[b, n, r, s]) }
-function tgt(label, b, goal9, goal11, ge,   k, line, set, goal) { line = "| " label " |"
+function tgt(label, b, goal9, goal11, ge,   k, line, set, goal, vc) { line = "| " label " |"
   for (k = 1; k <= nsets; k++) { set = SET[k]; best(b, set); v = ""; goal = goalof(set, goal9, goal11)
     if (B_r != "") v = ge ? B_ratio : 1 / B_ratio
-    line = line " " (goal == "" ? "-" : ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " (B_r == "" ? "n/a" : sprintf("%.2fx (float %s%s)", v, B_r, B_n < cnt["set" set] ? sprintf(", %d of %d scenes", B_n, cnt["set" set]) : "")) " | " verdict(v, goal, ge) " |" }
+    vc = B_cyc == "" ? "" : ge ? B_cyc : 1 / B_cyc
+    line = line " " (goal == "" ? "-" : ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " (B_r == "" ? "n/a" : sprintf("%.2fx (float %s%s)", v, B_r, B_n < cnt["set" set] ? sprintf(", %d of %d scenes", B_n, cnt["set" set]) : "") (vc == "" ? "" : sprintf("; cycles %.2fx", vc))) " | " verdict(v, goal, ge) " |" }
   print line > md }
 function extra(label, b, nn, rn, nd, rd, goal9, ge,   k, line, goal) { line = "| " label " |"
-  for (k = 1; k <= nsets; k++) { ratio(b, nn, rn, b, nd, rd, SET[k]); goal = goalof(SET[k], goal9, "")
-    line = line " " (goal == "" ? "-" : ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " fmt(R_geo, "%.2fx") " | " verdict(R_geo, goal, ge) " |" }
+  for (k = 1; k <= nsets; k++) { ratio(b, nn, rn, b, nd, rd, SET[k]); goal = goalof(SET[k], goal9, "", "")
+    line = line " " (goal == "" ? "-" : ge ? ">= " goal "x" : "<= " sprintf("%.1f", goal) "x") " | " withc(R_geo, "%.2fx", R_cyc, "%.2fx") " | " verdict(R_geo, goal, ge) " |" }
+  print line > md }
+# A per-pixel target row: q16 fast on board b, or (best = 1) the fewer
+# instructions of q16 fast and the best float build; goals per set.
+function pp(label, b, bst, gseed, gbench, glit, gpeer,   k, line, goal, v, vc, what) { line = "| " label " |"
+  for (k = 1; k <= nsets; k++) { summ(b, "q16", "fast", SET[k]); v = G; vc = GC; what = ""
+    if (bst) { best(b, SET[k])
+      if (B_r != "") { summ(b, "float", B_r, SET[k]); if (v == "" || (G != "" && G < v)) { v = G; vc = GC; what = "float " B_r } else what = "q16" } }
+    goal = goalof(SET[k], SET[k] == "seed" ? gseed : gbench, glit, gpeer)
+    line = line " " (goal == "" ? "-" : "<= " goal) " | " withc(v, "%.1f", vc, "%.1f") (what == "" ? "" : " (" what ")") " | " verdict(v, goal, 0) " |" }
   print line > md }
 ' "$OUT/bench.csv"
 
@@ -497,7 +542,9 @@ fi
 header() {
     echo "Regenerate with \`make bench BENCH_UPDATE_DOCS=1\`. Last run $(date -u '+%Y-%m-%d %H:%M UTC'), commit $rev;"
     echo "$(qemu-system-arm --version | head -n 1), arm-none-eabi-gcc $(arm-none-eabi-gcc -dumpversion);"
-    echo "$total runs in ${elapsed} s at $SIZE ($JOBS in parallel). Counts are QEMU \`-icount\` instruction counts (deterministic), not cycles."
+    echo "$total runs in ${elapsed} s at $SIZE ($JOBS in parallel). Counts are QEMU \`-icount\` instruction counts (deterministic);"
+    if [[ $CSIZE == none ]]; then echo "no cycles were estimated (BENCH_CYCLES_SIZE=none)."
+    else echo "cycles are estimates: each fast and step run's CPI, priced at $CSIZE by \`firmware/cycles.sh\`, times its instructions."; fi
     step_ok || echo "The stepping float build (\`-DFXRT_FLOAT_STEP=1\`) is not in this core: reported as not available."
 }
 plots() { # DIR

@@ -16,6 +16,9 @@
 # block: segment k runs from the k-th marker execution to the next, and
 # each prints as
 #   segment=K instructions=N low=L high=H estimate=E
+# With -v blocks=FILE, FILE gets one line per translated block start,
+#   ADDR instructions low high
+# its executions' totals (firmware/profile.sh sums them per function).
 
 function price(cls, kind) {
     # kind 0: low, 1: high
@@ -103,20 +106,51 @@ BEGIN {
     nm = split(marks, mk, " ")
     for (i = 1; i <= nm; i++) MARK[sprintf("0x%08x", hex(mk[i]))] = 1
 }
-function seg_close(   l, h, t, cl) {
+# The counts so far: C (per class) and REGS (registers of ldm, stm,
+# pop_pc, fp_ldm) hold the folded blocks; E[pc] counts the executions of
+# block pc not folded yet. A block is folded (its executions times its
+# per-class counts) when it is translated again, at a marker, and at the
+# end, so that each execution line costs one counter.
+function fold(pc,   j, c) {
+    if (!E[pc]) return
+    for (j = 1; j <= B_k[pc]; j++) {
+        c = B_c[pc, j]
+        C[c] += E[pc] * B_m[pc, j]
+        REGS[c] += E[pc] * B_r[pc, j]
+        if (blocks != "") {
+            XN[pc] += E[pc] * B_m[pc, j]
+            XL[pc] += E[pc] * (B_m[pc, j] * PL[c] + B_r[pc, j])
+            XH[pc] += E[pc] * (B_m[pc, j] * PH[c] + B_r[pc, j])
+        }
+    }
+    E[pc] = 0
+}
+# a conditional branch at the end of block pc, taken or not
+function branch(pc, c) {
+    C[c]++
+    if (blocks != "") { XN[pc]++; XL[pc] += PL[c]; XH[pc] += PH[c] }
+}
+function fold_all(   pc) { for (pc in E) fold(pc) }
+function sums(   cl) {
+    fold_all(); SL = 0; SH = 0; SN = 0
+    for (cl in C) { SL += C[cl] * PL[cl] + REGS[cl]; SH += C[cl] * PH[cl] + REGS[cl]; SN += C[cl] }
+}
+function seg_close() {
     if (seg == 0) return
-    l = 0; h = 0; t = 0
-    for (cl in C) { l += C[cl] * PL[cl] + REGS[cl]; h += C[cl] * PH[cl] + REGS[cl]; t += C[cl] }
-    l -= S_lo; h -= S_hi; t -= S_n
-    printf "segment=%d instructions=%d low=%d high=%d estimate=%d\n", seg, t, l, h, (l + h) / 2
+    sums()
+    printf "segment=%d instructions=%d low=%d high=%d estimate=%d\n", seg, SN - S_n, SL - S_lo, SH - S_hi, (SL - S_lo + SH - S_hi) / 2
 }
-function seg_open(   l, h, t, cl) {
-    l = 0; h = 0; t = 0
-    for (cl in C) { l += C[cl] * PL[cl] + REGS[cl]; h += C[cl] * PH[cl] + REGS[cl]; t += C[cl] }
-    S_lo = l; S_hi = h; S_n = t
-    seg++
+function seg_open() { sums(); S_lo = SL; S_hi = SH; S_n = SN; seg++ }
+# A block's instructions as per-class counts B_c/B_m/B_r (class, count,
+# registers), k = 1..B_k; a conditional branch that ends the block is left
+# out (B_end: taken or not is known at the next execution line), one inside
+# it fell through.
+function block_add(start, cls, nr,   j) {
+    for (j = 1; j <= B_k[start]; j++) if (B_c[start, j] == cls) break
+    if (j > B_k[start]) { B_k[start] = j; B_c[start, j] = cls; B_m[start, j] = 0; B_r[start, j] = 0 }
+    B_m[start, j]++; B_r[start, j] += nr
 }
-/^IN:/ { inb = 1; start = ""; n = 0; next }
+/^IN:/ { inb = 1; start = ""; next }
 inb && /^0x[0-9a-f]+:/ {
     addr = substr($1, 1, length($1) - 1)
     # the encoding: one or two groups of 4 hex digits
@@ -126,36 +160,39 @@ inb && /^0x[0-9a-f]+:/ {
     for (i = f + 1; i <= NF; i++) ops = ops (i > f + 1 ? " " : "") $i
     NREG = 0
     cls = classify(m, ops)
-    if (start == "") start = addr
-    n++
-    B_cls[start, n] = cls; B_nr[start, n] = NREG
-    B_n[start] = n
+    if (start == "") {
+        start = addr
+        # translated again (QEMU may cut a block short): fold the old one
+        if (start in B_k) fold(start)
+        B_k[start] = 0
+    }
+    if (last_bc) block_add(start, "bcond_not", 0) # (not at the block's end: fell through)
+    last_bc = 0
+    if (cls == "bcond") last_bc = 1
+    else block_add(start, cls, cls == "ldm" || cls == "stm" || cls == "pop_pc" || cls == "fp_ldm" ? NREG : 0)
+    B_end[start] = last_bc
     B_next[start] = sprintf("0x%08x", hex(addr) + size)
     next
 }
-inb && /^$/ { inb = 0; next }
+inb && /^$/ { inb = 0; last_bc = 0; next }
 /^Trace / {
-    s = $0; sub(/^[^[]*\[/, "", s); split(s, fld, "/"); pc = "0x" fld[2]
+    i = index($4, "/"); pc = "0x" substr($4, i + 1, 8)
     # the block before: its conditional branch taken or not
     if (pend != "") {
-        if (pc == pend_next) { C["bcond_not"]++ } else { C["bcond_taken"]++ }
+        branch(pend, pc == pend_next ? "bcond_not" : "bcond_taken")
         pend = ""
     }
-    if (pc in MARK) { seg_close(); seg_open() }
-    if (!(pc in B_n)) { unknown++; next }
-    nb = B_n[pc]
-    for (k = 1; k <= nb; k++) {
-        cls = B_cls[pc, k]
-        if (cls == "bcond" && k == nb) { pend = pc; pend_next = B_next[pc]; continue }
-        if (cls == "bcond") { C["bcond_not"]++; continue } # (not at a block's end: fell through)
-        C[cls]++
-        if (cls == "ldm" || cls == "stm" || cls == "pop_pc" || cls == "fp_ldm") REGS[cls] += B_nr[pc, k]
-    }
+    if (nm && (pc in MARK)) { seg_close(); seg_open() }
+    if (!(pc in B_k)) { unknown++; next }
+    E[pc]++
+    if (B_end[pc]) { pend = pc; pend_next = B_next[pc] }
     next
 }
 END {
-    if (pend != "") C["bcond_not"]++
+    if (pend != "") branch(pend, "bcond_not")
     seg_close()
+    fold_all()
+    if (blocks != "") for (pc in XN) printf "%s %d %d %d\n", pc, XN[pc], XL[pc], XH[pc] > blocks
     tot = 0; lo = 0; hi = 0
     for (cl in C) {
         l = C[cl] * PL[cl] + REGS[cl]; h = C[cl] * PH[cl] + REGS[cl]

@@ -12,7 +12,11 @@
 # its dump), like make profile's. Prints the classes and
 #   total instructions=N low=L high=H estimate=E cpi=C
 # CYCLES_MARKS="ADDR ..." (marker functions' addresses) adds cycles.awk's
-# segments.
+# segments. CYCLES_FRAME=1 (a firmware/main.c frame) marks counter_ticks
+# instead, whose second and third calls bracket the frame (render set-up
+# and rows, what -icount's instructions= counts), and adds
+#   frame instructions=N low=L high=H estimate=E cpi=C
+# FW_EXTRA and FW_TAG pass to make fw, as for make qemu.
 set -euo pipefail
 BUILD=${BUILD:-build}
 case $2 in
@@ -27,16 +31,22 @@ else
     scene=$1 board=$2 number=$3 size=${4:-80x60}
     fb=full
     [[ $board == microbit ]] && fb=stream
-    make -s --no-print-directory BUILD="$BUILD" fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$size" FB="$fb" >&2
+    make -s --no-print-directory BUILD="$BUILD" fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$size" FB="$fb" \
+        ${FW_TAG:+FW_EXTRA="${FW_EXTRA:-}" FW_TAG="$FW_TAG"} >&2
     name=$(basename "$scene" .scene)
-    elf=$BUILD/fw/$board/${name// /_}-$number-$size-$fb/fxrt.elf
+    elf=$BUILD/fw/$board/${name// /_}-$number-$size-$fb${FW_TAG:+-$FW_TAG}/fxrt.elf
 fi
 [[ -f $elf ]] || { echo "cycles: no $elf" >&2; exit 1; }
 elf=$(realpath "$elf")
+marks=${CYCLES_MARKS:-}
+if [[ ${CYCLES_FRAME:-0} == 1 ]]; then
+    marks=$(arm-none-eabi-nm "$elf" | awk '$3 == "counter_ticks" { print "0x" $1 }')
+    [[ -n $marks ]] || { echo "cycles: no counter_ticks in $elf (CYCLES_FRAME=1 needs a firmware/main.c frame)" >&2; exit 1; }
+fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkfifo "$tmp/log"
-awk -v core=$core -v marks="${CYCLES_MARKS:-}" -f "$(dirname "$0")/cycles.awk" "$tmp/log" >"$tmp/out" &
+awk -v core=$core -v marks="$marks" -f "$(dirname "$0")/cycles.awk" "$tmp/log" >"$tmp/out" &
 awkpid=$!
 (cd "$tmp" && timeout 1200 qemu-system-arm -M "$board" -nographic -monitor none -serial none \
     -semihosting-config enable=on,target=native -icount shift=5 -d in_asm,exec,nochain -D "$tmp/log" \
@@ -47,3 +57,8 @@ awkpid=$!
 }
 wait $awkpid
 sort "$tmp/out"
+if [[ ${CYCLES_FRAME:-0} == 1 ]]; then
+    awk '$1 == "segment=2" { split($2, n, "="); split($5, e, "=")
+            sub(/^segment=2/, "frame"); printf "%s cpi=%.4f\n", $0, n[2] ? e[2] / n[2] : 0; f = 1 }
+         END { if (!f) { print "cycles: no frame segment (counter_ticks ran fewer than 3 times)" > "/dev/stderr"; exit 1 } }' "$tmp/out"
+fi

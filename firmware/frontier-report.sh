@@ -20,7 +20,7 @@ NR == 1 { next }
 { kind = $1; sc = $2; sm = $3; b = $4; n = $6; l = $7; st = $8
   k = kind SUBSEP sc SUBSEP sm SUBSEP b SUBSEP n SUBSEP l
   S[k] = st; INS[k] = $9; IPP[k] = $10; MAE[k] = $11; PS[k] = $12; W1[k] = $13; ME[k] = $14
-  SU[k] = $15; SS[k] = $16; ID[k] = $17; AK[k] = $18; NOTE[k] = $19; CPU[b] = $5
+  SU[k] = $15; SS[k] = $16; ID[k] = $17; AK[k] = $18; NOTE[k] = $19; CPI[k] = $20; CPP[k] = $21; CPU[b] = $5
   if (kind == "frontier") add("s", sc); else add("st", sc)
   rows[++nr] = $0 }
 END {
@@ -37,12 +37,12 @@ END {
   # aggregates
   for (i = 1; i <= nb; i++) { b = B[i]; np[b] = 0
     for (j = 1; j <= nbu; j++) { split(BU[j], nl, ":"); for (m = 1; m <= nsm; m++) {
-      g = 0; ma = 0; mw = 0; wmae = 0; p = 0; w1 = 0; c = NCS[b]
+      g = 0; gc = 0; kc = 0; ma = 0; mw = 0; wmae = 0; p = 0; w1 = 0; c = NCS[b]
       for (q = 1; q <= c; q++) { k = "frontier" SUBSEP common[b, q] SUBSEP SM[m] SUBSEP b SUBSEP nl[1] SUBSEP nl[2]
-        g += log(IPP[k]); ma += MAE[k]; if (MAE[k] + 0 > wmae) wmae = MAE[k] + 0; p += psv(PS[k]); w1 += W1[k] }
+        g += log(IPP[k]); ma += MAE[k]; if (CPP[k] != "") { gc += log(CPP[k]); kc++ } if (MAE[k] + 0 > wmae) wmae = MAE[k] + 0; p += psv(PS[k]); w1 += W1[k] }
       if (c == 0) continue
       P = ++np[b]; PN[b, P] = nl[1]; PL[b, P] = nl[2]; PSM[b, P] = SM[m]
-      PX[b, P] = exp(g / c); PY[b, P] = ma / c; PW[b, P] = wmae; PP[b, P] = p / c; P1[b, P] = w1 / c } }
+      PX[b, P] = exp(g / c); PC[b, P] = kc == c ? sprintf("%.0f", exp(gc / c)) : "n/a"; PY[b, P] = ma / c; PW[b, P] = wmae; PP[b, P] = p / c; P1[b, P] = w1 / c } }
     # Pareto front: no other point has <= instructions and <= error with one strictly less
     for (P = 1; P <= np[b]; P++) { fr[b, P] = 1
       for (Q = 1; Q <= np[b]; Q++) if (Q != P && PX[b, Q] <= PX[b, P] && PY[b, Q] <= PY[b, P] && (PX[b, Q] < PX[b, P] || PY[b, Q] < PY[b, P])) { fr[b, P] = 0; break } }
@@ -57,22 +57,22 @@ END {
       if (NCS[b] == 0) { printf "No scene ran in every configuration on this board.%s\n\n", (EXCL[b] ? " Left out: " EXCL[b] "." : "") > o; continue }
       sl = ""; for (q = 1; q <= NCS[b]; q++) sl = sl (q > 1 ? ", " : "") common[b, q]
       printf "Over %d scene(s): %s.%s\n\n", NCS[b], sl, (EXCL[b] ? " Left out (a configuration did not run): " EXCL[b] "." : "") > o
-      print "| build | samples | instr/pixel (geo. mean) | MAE /255 (mean) | MAE worst scene | PSNR dB (mean) | within 1/255 % (mean) | front |" > o
-      print "|---|---|---:|---:|---:|---:|---:|---|" > o
-      for (P = 1; P <= np[b]; P++) printf "| %s | %s | %.0f | %.3f | %.3f | %.2f | %.2f | %s |\n", bname(PN[b, P], PL[b, P]), sname(PSM[b, P]), PX[b, P], PY[b, P], PW[b, P], PP[b, P], P1[b, P], fr[b, P] ? "**yes**" : "" > o
+      print "| build | samples | instr/pixel (geo. mean) | est. cycles/pixel (geo. mean) | MAE /255 (mean) | MAE worst scene | PSNR dB (mean) | within 1/255 % (mean) | front |" > o
+      print "|---|---|---:|---:|---:|---:|---:|---:|---|" > o
+      for (P = 1; P <= np[b]; P++) printf "| %s | %s | %.0f | %s | %.3f | %.3f | %.2f | %.2f | %s |\n", bname(PN[b, P], PL[b, P]), sname(PSM[b, P]), PX[b, P], PC[b, P], PY[b, P], PW[b, P], PP[b, P], P1[b, P], fr[b, P] ? "**yes**" : "" > o
       print "" > o
       print "Pick for an error budget (mean MAE over these scenes, against the converged image; the cheapest measured configuration within it):\n" > o
-      print "| MAE budget | pick | instr/pixel | MAE | cheapest q16 within | cheapest float within | cheapest double within |" > o
-      print "|---|---|---:|---:|---|---|---|" > o
+      print "| MAE budget | pick | instr/pixel | est. cycles/pixel | MAE | cheapest q16 within | cheapest float within | cheapest double within |" > o
+      print "|---|---|---:|---:|---:|---|---|---|" > o
       for (g = 1; g <= nbg; g++) { bud = BG[g] + 0; best = 0; delete bn
         for (P = 1; P <= np[b]; P++) if (PY[b, P] <= bud) {
           if (!best || PX[b, P] < PX[b, best]) best = P
           if (!(PN[b, P] in bn) || PX[b, P] < PX[b, bn[PN[b, P]]]) bn[PN[b, P]] = P }
         line = ""
         split("q16 float double", NN, " ")
-        for (t = 1; t <= 3; t++) line = line " | " ((NN[t] in bn) ? sprintf("samples %s: %.0f", sname(PSM[b, bn[NN[t]]]), PX[b, bn[NN[t]]]) : "none")
-        if (!best) printf "| <= %s | none measured | | %s |\n", BG[g], line > o
-        else printf "| <= %s | **%s, samples %s** | %.0f | %.3f%s |\n", BG[g], bname(PN[b, best], PL[b, best]), sname(PSM[b, best]), PX[b, best], PY[b, best], line > o }
+        for (t = 1; t <= 3; t++) line = line " | " ((NN[t] in bn) ? sprintf("samples %s: %.0f (cycles %s)", sname(PSM[b, bn[NN[t]]]), PX[b, bn[NN[t]]], PC[b, bn[NN[t]]]) : "none")
+        if (!best) printf "| <= %s | none measured | | | %s |\n", BG[g], line > o
+        else printf "| <= %s | **%s, samples %s** | %.0f | %s | %.3f%s |\n", BG[g], bname(PN[b, best], PL[b, best]), sname(PSM[b, best]), PX[b, best], PC[b, best], PY[b, best], line > o }
       print "" > o } }
 
   # q16 identity, failures, stack -> both files
@@ -115,10 +115,10 @@ END {
 
   # all runs (frontier.md only)
   print "#### Every run\n" > md
-  print "| scene | samples | board | build | status | instructions | instr/pixel | MAE /255 | PSNR dB | within 1/255 % | max_err | stack_used | q16 == host | all-kinds |" > md
-  print "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|" > md
+  print "| scene | samples | board | build | status | instructions | instr/pixel | CPI | est. cycles/pixel | MAE /255 | PSNR dB | within 1/255 % | max_err | stack_used | q16 == host | all-kinds |" > md
+  print "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|" > md
   for (r = 1; r <= nr; r++) { split(rows[r], x, ",")
-    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", x[2], sname(x[3]), x[4], bname(x[6], x[7]), x[8], x[9], x[10], x[11], x[12], x[13], x[14], x[15], (x[17] == "NO" ? "**NO**" : x[17]), (x[18] == 1 ? "yes" : "") > md }
+    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", x[2], sname(x[3]), x[4], bname(x[6], x[7]), x[8], x[9], x[10], (x[20] == "" ? "-" : x[20]), (x[21] == "" ? "-" : x[21]), x[11], x[12], x[13], x[14], x[15], (x[17] == "NO" ? "**NO**" : x[17]), (x[18] == 1 ? "yes" : "") > md }
   print "" > md
 }' "$csv"
 
@@ -136,7 +136,9 @@ done
 intro() { # PLOTDIR
     echo "Regenerate with \`make frontier FRONTIER_UPDATE_DOCS=1\` (or \`make bench BENCH_UPDATE_DOCS=1\`). Last run"
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $rev; $(qemu-system-arm --version | head -n 1), arm-none-eabi-gcc $(arm-none-eabi-gcc -dumpversion);"
-    echo "$TOTAL runs in ${ELAPSED} s at $SIZE ($JOBS in parallel). Instructions are QEMU \`-icount\` counts, not cycles."
+    echo "$TOTAL runs in ${ELAPSED} s at $SIZE ($JOBS in parallel). Instructions are QEMU \`-icount\` counts; cycles are estimates:"
+    if [[ ${CSIZE:-none} == none || ! -s $csv ]] || ! head -n 1 "$csv" | grep -q cycles_per_pixel; then echo "none in this run."
+    else echo "each run's CPI, priced at $CSIZE by \`firmware/cycles.sh\` (docs/BENCHMARKS.md, \"Cycles\"), times its instructions."; fi
     echo
     echo "Error is against the **converged image**: the host double render of the same scene at $SIZE with"
     echo "\`samples 16\` (16x16 rays per pixel). MAE = mean absolute error per channel in 1/255 units (\`fxrt"

@@ -6,7 +6,9 @@
 # CONVERGED image: the host double render of the same scene at the same size
 # with `samples 16` (16x16 rays per pixel). Reported per run: mean absolute
 # error per channel (mae, 1/255 units), PSNR, share of pixels within 1/255,
-# instructions per pixel, stack_used; for q16 whether the firmware frame is
+# instructions per pixel, estimated cycles per pixel (the frame's CPI priced
+# by firmware/cycles.sh at FRONTIER_CYCLES_SIZE, times its instructions),
+# stack_used; for q16 whether the firmware frame is
 # byte-identical to the host's q16 render of the same scene, size and samples.
 # Per board: a table (averaged over the scenes), the Pareto front and a plot
 # (firmware/frontier.gp), and which build to pick for each error budget.
@@ -28,6 +30,8 @@
 #   FRONTIER_BOARDS     boards (all three)
 #   FRONTIER_STACK_SCENES  scenes for the stack figures
 #   FRONTIER_JOBS       parallel runs (nproc)
+#   FRONTIER_CYCLES_SIZE  frame size of the cycle pricing (16x12; "none":
+#                       no cycles)
 #   FRONTIER_TABLES_ONLY  1: no runs; tables and plots from the last CSV
 #   BENCH_BOARD_INFO    "board:cpu:fb ..." (bench.mk passes it)
 set -euo pipefail
@@ -45,6 +49,7 @@ SAMPLES=${FRONTIER_SAMPLES:-"1 2 4 4a"}
 BUILDS=${FRONTIER_BUILDS:-"q16:fast float:step double:fast"}
 STACK_SCENES=${FRONTIER_STACK_SCENES:-"scenes/stress/trace-mirrors.scene scenes/trace/glass.scene"}
 JOBS=${FRONTIER_JOBS:-$(nproc 2>/dev/null || echo 2)}
+CSIZE=${FRONTIER_CYCLES_SIZE:-16x12}
 OUT=$BUILD/frontier
 unset MAKEFLAGS MFLAGS MAKELEVEL
 export FIT_QUICK=1
@@ -63,7 +68,7 @@ get() { sed -nE "s/.*(^| )$1=([^ ]+).*/\2/p" <<<"$2" | tail -n 1; }
 # --- one unit: one (board, scene copy, build) ---------------------------------
 # CSV row: kind,scene,samples,board,cpu,number,loop,status,instructions,
 # instructions_per_pixel,mae,psnr,within1_pct,max_err,stack_used,stack_size,
-# q16_identical,all_kinds,note
+# q16_identical,all_kinds,note,cpi,cycles_per_pixel
 # status: ok; nofit (RAM/flash, fit.sh); stack (the run left less than
 # FXRT_STACK_MARGIN of the stack: the firmware refuses the frame); fault
 # (HardFault, e.g. a stack overflow into .bss); fail (anything else).
@@ -81,7 +86,7 @@ if [[ ${1:-} == --unit ]]; then
     ak=0
     [[ -n $tag ]] && extra+=(FW_TAG="$tag")
     log=$OUT/runs/$id.log
-    row() { echo "$kind,$base,$smp,$board,$cpu,$number,$loop,$1,$ak,$2" >"$OUT/runs/$id.csv"; }
+    row() { echo "$kind,$base,$smp,$board,$cpu,$number,$loop,$1,$ak,$2,${3:-}" >"$OUT/runs/$id.csv"; }
     rc=0
     $M qemu SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$SIZE" FB="$fb" "${extra[@]}" >"$log" 2>&1 || rc=$?
     line=$(grep 'stack_used=[0-9]' "$log" | tail -n 1 || true)
@@ -109,7 +114,22 @@ if [[ ${1:-} == --unit ]]; then
     if [[ $number == q16 ]]; then
         if cmp -s "$frame" "$OUT/ref/$name-q16.ppm"; then ident=yes; else ident=NO; fi
     fi
-    row "ok,$ins,$ipp,$(get mae "$cmp"),$(get psnr "$cmp"),$(get within1_pct "$cmp"),$(get max_err "$cmp"),$su,$ss,$ident" ""
+    # Estimated cycles: the frame's CPI at CSIZE (the frontier's frames are
+    # small already; the trace costs about 20 times the -icount run).
+    cyc=","
+    if [[ $CSIZE != none && $kind == frontier ]]; then
+        clog=$OUT/runs/$id.cycles
+        celf=$BUILD/fw/$board/$name-$number-$CSIZE-$fb${tag:+-$tag}/fxrt.elf
+        if { $M fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$CSIZE" FB="$fb" "${extra[@]}" &&
+            BUILD=$BUILD CYCLES_FRAME=1 firmware/cycles.sh "$celf" "$board"; } >"$clog" 2>&1 &&
+            cpi=$(sed -nE 's/^frame .* cpi=([0-9.]+)$/\1/p' "$clog") && [[ -n $cpi ]]; then
+            cyc="$cpi,$(awk -v a="$ipp" -v c="$cpi" 'BEGIN { printf "%.1f", a * c }')"
+        else
+            row "fail,,,,,,,$su,$ss," "cycle pricing at $CSIZE failed (see $clog)"
+            exit 0
+        fi
+    fi
+    row "ok,$ins,$ipp,$(get mae "$cmp"),$(get psnr "$cmp"),$(get within1_pct "$cmp"),$(get max_err "$cmp"),$su,$ss,$ident" "" "$cyc"
     exit 0
 fi
 
@@ -173,7 +193,7 @@ if [[ ${FRONTIER_TABLES_ONLY:-0} != 1 ]]; then
     n_csv=$(find "$OUT/runs" -name '*.csv' | wc -l)
     [[ $n_csv -eq $total ]] || die "expected $total results, found $n_csv in $OUT/runs/"
     {
-        echo "kind,scene,samples,board,cpu,number,loop,status,instructions,instructions_per_pixel,mae,psnr,within1_pct,max_err,stack_used,stack_size,q16_identical,all_kinds,note"
+        echo "kind,scene,samples,board,cpu,number,loop,status,instructions,instructions_per_pixel,mae,psnr,within1_pct,max_err,stack_used,stack_size,q16_identical,all_kinds,note,cpi,cycles_per_pixel"
         cat "$OUT"/runs/*.csv
     } >"$OUT/frontier.csv"
     echo $((SECONDS - start)) >"$OUT/elapsed"
@@ -182,4 +202,4 @@ fi
 elapsed=$(cat "$OUT/elapsed" 2>/dev/null || echo "?")
 total=$(($(wc -l <"$OUT/frontier.csv") - 1))
 exec env OUT="$OUT" SIZE="$SIZE" BOARDS="$BOARDS" ELAPSED="$elapsed" TOTAL="$total" JOBS="$JOBS" \
-    BUILDS="$BUILDS" SAMPLES="$SAMPLES" BOARD_INFO="$BOARD_INFO" firmware/frontier-report.sh
+    BUILDS="$BUILDS" SAMPLES="$SAMPLES" BOARD_INFO="$BOARD_INFO" CSIZE="$CSIZE" firmware/frontier-report.sh

@@ -13,6 +13,9 @@
 # function's first instruction (a loop back to that instruction would count
 # as a call too; the soft-float helpers and the renderer's functions begin
 # with their prologue), so "per call" is its instructions per call.
+# Estimated cycles per function come from firmware/cycles.awk on the same
+# log (each block's executions priced by class, docs/BENCHMARKS.md,
+# "Cycles"; the middle of the low..high range).
 # SIZE defaults to 80x60: the log grows with the instructions (about one
 # line per 5), so keep frames small.
 set -euo pipefail
@@ -37,15 +40,18 @@ trap 'rm -rf "$tmp"' EXIT
 # ends where the next one starts.
 arm-none-eabi-nm -n --defined-only "$elf" | awk '$2 ~ /^[tTwW]$/ { print $1, $3 }' >"$tmp/syms"
 px=$((${size%x*} * ${size#*x}))
-echo "Profile: $scene on $board ($number${extra:+, $extra}) at $size, QEMU instructions per function over the whole run (per pixel = / $px)."
+case $board in microbit) core=m0 ;; mps2-an386) core=m4 ;; *) core=m3 ;; esac
+awk -v core=$core -v blocks="$tmp/blocks" -f "$(dirname "$0")/cycles.awk" "$tmp/q.log" >/dev/null
+echo "Profile: $scene on $board ($number${extra:+, $extra}) at $size, QEMU instructions per function over the whole run (per pixel = / $px), and estimated cycles (firmware/cycles.awk)."
 echo
-echo "| function | instructions | per pixel | share | calls per pixel | per call |"
-echo "|---|---:|---:|---:|---:|---:|"
-awk -v px="$px" -v syms="$tmp/syms" '
+echo "| function | instructions | per pixel | share | est. cycles per pixel | CPI | calls per pixel | per call |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+awk -v px="$px" -v syms="$tmp/syms" -v blocks="$tmp/blocks" '
 function hex(s,   i, c, v) { v = 0; s = tolower(s); sub(/^0x/, "", s)
     for (i = 1; i <= length(s); i++) { c = index("0123456789abcdef", substr(s, i, 1)) - 1; v = v * 16 + c } return v }
 BEGIN { n = 0
-    while ((getline l < syms) > 0) { split(l, f, " "); a = hex(f[1]); a -= a % 2; lo[++n] = a; nm[n] = f[2] } }
+    while ((getline l < syms) > 0) { split(l, f, " "); a = hex(f[1]); a -= a % 2; lo[++n] = a; nm[n] = f[2] }
+    while ((getline l < blocks) > 0) { split(l, f, " "); cyc[hex(f[1])] = (f[3] + f[4]) / 2 } }
 /^IN:/ { inb = 1; pc = ""; cnt = 0; next }
 inb && /^0x[0-9a-f]+:/ { if (pc == "") pc = hex(substr($1, 1, length($1) - 1)); cnt++; next }
 inb && /^$/ { if (pc != "") size[pc] = cnt; inb = 0; next }
@@ -56,12 +62,12 @@ END {
         p = ps + 0; l = 1; h = n; k = 0
         while (l <= h) { m = int((l + h) / 2); if (lo[m] <= p) { k = m; l = m + 1 } else h = m - 1 }
         fn = (ps in qn) ? qn[ps] : k ? nm[k] : "?"
-        by[fn] += execd[ps]; tot += execd[ps]
+        by[fn] += execd[ps]; tot += execd[ps]; cby[fn] += cyc[p]; ctot += cyc[p]
         if (k && lo[k] == p) calls[fn] += runs[ps] } # a block at the entry: a call
-    for (fnm in by) printf "%d %s %d\n", by[fnm], fnm, calls[fnm]
-    printf "%d TOTAL\n", tot }' "$tmp/q.log" >"$tmp/by"
-tot=$(awk '$2 == "TOTAL" { print $1 }' "$tmp/by")
-grep -v ' TOTAL$' "$tmp/by" | sort -k1,1nr | head -n ${PROFILE_TOP:-15} |
-    awk -v px="$px" -v tot="$tot" '{ printf "| `%s` | %d | %.1f | %.1f %% | %.2f | %s |\n", $2, $1, $1 / px, 100 * $1 / tot,
-        $3 / px, $3 ? sprintf("%.1f", $1 / $3) : "-" }'
-awk -v px="$px" -v tot="$tot" 'BEGIN { printf "| all functions | %d | %.1f | 100 %% | | |\n", tot, tot / px }'
+    for (fnm in by) printf "%d %s %d %d\n", by[fnm], fnm, calls[fnm], cby[fnm]
+    printf "%d TOTAL 0 %d\n", tot, ctot }' "$tmp/q.log" >"$tmp/by"
+tot=$(awk '$2 == "TOTAL" { print $1 }' "$tmp/by") ctot=$(awk '$2 == "TOTAL" { print $4 }' "$tmp/by")
+grep -v ' TOTAL ' "$tmp/by" | sort -k1,1nr | head -n ${PROFILE_TOP:-15} |
+    awk -v px="$px" -v tot="$tot" '{ printf "| `%s` | %d | %.1f | %.1f %% | %.1f | %.2f | %.2f | %s |\n", $2, $1, $1 / px, 100 * $1 / tot,
+        $4 / px, $1 ? $4 / $1 : 0, $3 / px, $3 ? sprintf("%.1f", $1 / $3) : "-" }'
+awk -v px="$px" -v tot="$tot" -v ctot="$ctot" 'BEGIN { printf "| all functions | %d | %.1f | 100 %% | %.1f | %.2f | | |\n", tot, tot / px, ctot / px, tot ? ctot / tot : 0 }'

@@ -6,9 +6,16 @@
 #     taken twice and not once, a load, a pop into pc, a division, bx)
 #     priced on the M0, M3 and M4 against totals worked out by hand from
 #     the pricing table;
+#   - the same log's per-block totals (-v blocks=FILE, what make profile
+#     sums per function), by hand;
+#   - a block translated again, shorter (QEMU does that): the executions
+#     before are priced with the old block, those after with the new;
 #   - a real run (firmware/meshq.c with the cube, on the M3 and the M0):
 #     the trace's instructions at least the loops' -icount count, low <=
-#     estimate <= high, and a CPI between 1 and 3.
+#     estimate <= high, and a CPI between 1 and 3;
+#   - a frame (CYCLES_FRAME=1, what make bench and make frontier price):
+#     its instructions within 0.1 % of make qemu's instructions= for the
+#     same firmware.
 set -u
 cd "$(dirname "$0")/.."
 . tests/lib.sh
@@ -57,6 +64,18 @@ check "m3: nine classes ($got)" test "$got" = 9
 # then c = sdiv bx. M3: 13..29 and 4..16.
 got=$(awk -v core=m3 -v marks=0x10e -f firmware/cycles.awk "$tmp/q.log" | grep '^segment=' | paste -sd' ')
 check "m3 segments: $got" test "$got" = "segment=1 instructions=6 low=13 high=29 estimate=21 segment=2 instructions=2 low=4 high=16 estimate=10"
+# Per block on the M3: a x3 = 12 instructions, 3 + 3x(3..5) + 3x3 + 1 + 2x(2..4) = 26..36;
+# b = 2, (1..2) + (2..4)+2 = 5..8; c x2 = 4, 2x(2..12) + 2x(2..4) = 8..32.
+rm -f "$tmp/blocks"
+awk -v core=m3 -v blocks="$tmp/blocks" -f firmware/cycles.awk "$tmp/q.log" >/dev/null
+got=$(sort "$tmp/blocks" | paste -sd' ')
+check "m3 blocks: $got" test "$got" = "0x00000100 12 26 36 0x0000010a 2 5 8 0x0000010e 4 8 32"
+# Block a translated again with two instructions (movs, umull) and run once
+# more: M3 39..76 + 1 + (3..5) = 43..82, 20 instructions.
+{ cat "$tmp/q.log"; printf '%s\n' ---------------- 'IN: a' '0x00000100:  2001       movs     r0, #1' \
+    '0x00000102:  fba0 2301  umull    r2, r3, r0, r1' '' 'Trace 0: 0x4 [00800400/00000100/00000110/ff020200] a'; } >"$tmp/q2.log"
+got=$(awk -v core=m3 -f firmware/cycles.awk "$tmp/q2.log" | grep '^total')
+check "m3, a block translated again: $got" test "$got" = "total instructions=20 low=43 high=82 estimate=62 cpi=3.125"
 
 for b in mps2-an385 microbit; do
     progress "cycles.sh: a real run on $b"
@@ -84,4 +103,18 @@ for b in mps2-an385 microbit; do
     check "$b: low $lo <= estimate $est <= high $hi" test "$lo" -le "$est" -a "$est" -le "$hi"
     check "$b: CPI $cpi in [1, 3]" awk -v c="$cpi" 'BEGIN { exit !(c >= 1 && c <= 3) }'
 done
+
+# A frame: the frame segment against make qemu's instructions= (the counter's
+# span; 1.25-instruction resolution and its own few instructions).
+progress "cycles.sh: a frame on the M3"
+if qline=$($M qemu SCENE=scenes/peer/matched.scene BOARD=mps2-an385 NUMBER=q16 SIZE=16x12 2>&1 | grep '^board=') &&
+    fline=$(CYCLES_FRAME=1 firmware/cycles.sh scenes/peer/matched.scene mps2-an385 q16 16x12 2>"$tmp/frame.err" | grep '^frame '); then
+    want=$(sed -nE 's/.* instructions=([0-9]+) .*/\1/p' <<<"$qline")
+    got=$(sed -nE 's/^frame instructions=([0-9]+) .*/\1/p' <<<"$fline")
+    check "frame: the trace's ${got:-?} instructions within 0.1 % of make qemu's ${want:-?}" \
+        awk -v a="${got:-0}" -v b="${want:-x}" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(b > 0 && d <= 100 + b / 1000) }'
+    check "frame: its CPI in [1, 3] ($fline)" awk -v c="$(sed -nE 's/.* cpi=([0-9.]+)$/\1/p' <<<"$fline")" 'BEGIN { exit !(c >= 1 && c <= 3) }'
+else
+    bad "frame: make qemu or firmware/cycles.sh failed: $(tail -n 3 "$tmp/frame.err" 2>/dev/null)"
+fi
 report cycles.sh
