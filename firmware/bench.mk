@@ -94,6 +94,14 @@ profile: deps $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) firmware/profile.sh '$(SCENE)' $(BOARD) $(NUMBER) $(or $(PROFILE_SIZE),80x60) '$(FW_EXTRA)'
 .PHONY: profile
 
+# Where a lit pixel's instructions and estimated cycles go, by layer and by
+# function (firmware/lit-profile.sh): the peer scene on each board, the lit
+# set's room. Writes build/bench/lit-profile.md (docs/bench/ with
+# BENCH_UPDATE_DOCS=1).
+bench-lit-profile: deps $(BUILD)/fxrt-scenec
+	$(Q)BUILD=$(BUILD) BENCH_UPDATE_DOCS=$(BENCH_UPDATE_DOCS) firmware/lit-profile.sh
+.PHONY: bench-lit-profile
+
 # Estimated cycles of one frame (firmware/cycles.sh; docs/BENCHMARKS.md, "Cycles"):
 #   make cycles SCENE=scenes/lit/room.scene BOARD=mps2-an385 NUMBER=q16 [CYCLES_SIZE=80x60]
 # (CYCLES_FRAME=1: the frame's own figures too; FW_EXTRA, FW_TAG as for make qemu)
