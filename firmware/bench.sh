@@ -181,15 +181,11 @@ if [[ ${1:-} == --unit ]]; then
     # 20 times the -icount run), for the fast and step builds.
     cpi="" cpp=""
     if [[ $CSIZE != none && ($r == fast || $r == step) ]]; then
-        clog=$OUT/runs/$id.cycles
-        celf=$BUILD/fw/$board/$name-$number-$CSIZE-$fb${tag:+-$tag}/fxrt.elf
-        if ! { $M fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$CSIZE" FB="$fb" "${extra[@]}" &&
-            BUILD=$BUILD CYCLES_FRAME=1 firmware/cycles.sh "$celf" "$board"; } >"$clog" 2>&1; then
-            { echo "$label: cycle pricing at $CSIZE failed:"; sed 's/^/  | /' "$clog" | tail -n 25; } >"$OUT/runs/$id.err"
+        if ! cpi=$(FW_EXTRA="$fwx" FW_TAG="$tag" CYCLES_FB="$fb" BUILD=$BUILD CYCLES_FRAME=1 CYCLES_CPI=1 \
+            firmware/cycles.sh "$scene" "$board" "$number" "$CSIZE" 2>"$OUT/runs/$id.cycles") || [[ -z $cpi ]]; then
+            { echo "$label: cycle pricing at $CSIZE failed:"; sed 's/^/  | /' "$OUT/runs/$id.cycles" | tail -n 25; } >"$OUT/runs/$id.err"
             exit 1
         fi
-        cpi=$(sed -nE 's/^frame .* cpi=([0-9.]+)$/\1/p' "$clog")
-        [[ -n $cpi ]] || { echo "$label: no 'frame ... cpi=' line from firmware/cycles.sh" >"$OUT/runs/$id.err"; exit 1; }
         cpp=$(awk -v a="$ipp" -v c="$cpi" 'BEGIN { printf "%.1f", a * c }')
     fi
     row "ok,$ins,$ipp,$(get mismatched_pct "$cmp"),$(get psnr "$cmp"),$(get max_err "$cmp"),$text,$(get within1_pct "$cmp"),$(get within2_pct "$cmp"),$cpi,$cpp"

@@ -16,7 +16,9 @@
 # instead, whose second and third calls bracket the frame (render set-up
 # and rows, what -icount's instructions= counts), and adds
 #   frame instructions=N low=L high=H estimate=E cpi=C
-# FW_EXTRA and FW_TAG pass to make fw, as for make qemu.
+# FW_EXTRA and FW_TAG pass to make fw, as for make qemu, and CYCLES_FB
+# as its FB (default: the board's). CYCLES_CPI=1
+# (with CYCLES_FRAME=1) prints the frame's CPI alone.
 set -euo pipefail
 BUILD=${BUILD:-build}
 case $2 in
@@ -29,9 +31,11 @@ if [[ $1 == *.elf ]]; then
     elf=$1 board=$2
 else
     scene=$1 board=$2 number=$3 size=${4:-80x60}
-    fb=full
-    [[ $board == microbit ]] && fb=stream
-    make -s --no-print-directory BUILD="$BUILD" fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$size" FB="$fb" \
+    fb=${CYCLES_FB:-full} # (the board's default frame mode, as firmware/firmware.mk's)
+    [[ -z ${CYCLES_FB:-} && $board == microbit ]] && fb=stream
+    # -o: make cycles built the scene compiler first; parallel callers
+    # (make bench) must not relink it.
+    make -s --no-print-directory BUILD="$BUILD" -o "$BUILD/fxrt-scenec" fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$size" FB="$fb" \
         ${FW_TAG:+FW_EXTRA="${FW_EXTRA:-}" FW_TAG="$FW_TAG"} >&2
     name=$(basename "$scene" .scene)
     elf=$BUILD/fw/$board/${name// /_}-$number-$size-$fb${FW_TAG:+-$FW_TAG}/fxrt.elf
@@ -56,9 +60,11 @@ awkpid=$!
     exit 1
 }
 wait $awkpid
-sort "$tmp/out"
+[[ ${CYCLES_CPI:-0} == 1 ]] || sort "$tmp/out"
 if [[ ${CYCLES_FRAME:-0} == 1 ]]; then
     awk '$1 == "segment=2" { split($2, n, "="); split($5, e, "=")
             sub(/^segment=2/, "frame"); printf "%s cpi=%.4f\n", $0, n[2] ? e[2] / n[2] : 0; f = 1 }
-         END { if (!f) { print "cycles: no frame segment (counter_ticks ran fewer than 3 times)" > "/dev/stderr"; exit 1 } }' "$tmp/out"
+         END { if (!f) { print "cycles: no frame segment (counter_ticks ran fewer than 3 times)" > "/dev/stderr"; exit 1 } }' "$tmp/out" >"$tmp/frame"
+    if [[ ${CYCLES_CPI:-0} == 1 ]]; then sed -nE 's/.* cpi=([0-9.]+)$/\1/p' "$tmp/frame"; exit 0; fi
+    cat "$tmp/frame"
 fi

@@ -119,10 +119,8 @@ if [[ ${1:-} == --unit ]]; then
     cyc=","
     if [[ $CSIZE != none && $kind == frontier ]]; then
         clog=$OUT/runs/$id.cycles
-        celf=$BUILD/fw/$board/$name-$number-$CSIZE-$fb${tag:+-$tag}/fxrt.elf
-        if { $M fw SCENE="$scene" BOARD="$board" NUMBER="$number" SIZE="$CSIZE" FB="$fb" "${extra[@]}" &&
-            BUILD=$BUILD CYCLES_FRAME=1 firmware/cycles.sh "$celf" "$board"; } >"$clog" 2>&1 &&
-            cpi=$(sed -nE 's/^frame .* cpi=([0-9.]+)$/\1/p' "$clog") && [[ -n $cpi ]]; then
+        if cpi=$(FW_EXTRA="${tag:+-DFXRT_FLOAT_STEP=1}" FW_TAG="$tag" CYCLES_FB="$fb" BUILD=$BUILD CYCLES_FRAME=1 CYCLES_CPI=1 \
+            firmware/cycles.sh "$scene" "$board" "$number" "$CSIZE" 2>"$clog") && [[ -n $cpi ]]; then
             cyc="$cpi,$(awk -v a="$ipp" -v c="$cpi" 'BEGIN { printf "%.1f", a * c }')"
         else
             row "fail,,,,,,,$su,$ss," "cycle pricing at $CSIZE failed (see $clog)"

@@ -17,6 +17,9 @@
 # last column is what q16's may cost for 8x: float step / 8 - (q16, no
 # light sum). The no-light-sum builds' frames must differ from the
 # renderer's (the light sum really went); the script exits non-zero if not.
+# float / q16 is also given in estimated cycles: each build's frame CPI,
+# priced by firmware/cycles.sh at LIT_BOUND_CYCLES_SIZE (40x30; "none":
+# no cycles), times its instructions (docs/BENCHMARKS.md, "Cycles").
 # The table is also kept in BUILD/bench/lit-bound.md (the <!-- lit-bound -->
 # block of docs/BENCHMARKS.md: make doc-blocks DOC_BLOCKS=lit-bound
 # DOCS_UPDATE=1).
@@ -24,6 +27,7 @@ set -euo pipefail
 BUILD=${BUILD:-build}
 BOARD=${BOARD:-microbit}
 SIZE=${LIT_BOUND_SIZE:-160x120}
+CSIZE=${LIT_BOUND_CYCLES_SIZE:-40x30}
 M="make -s --no-print-directory BUILD=$BUILD -o $BUILD/fxrt-scenec"
 builds=(
     "float step|float|step|-DFXRT_FLOAT_STEP=1"
@@ -31,7 +35,7 @@ builds=(
     "q16, no light sum|q16|bound|-DFXRT_ABLATE=FXRT_ABLATE_LIGHT_SUM"
     "float step, no light sum|float|stepbound|-DFXRT_FLOAT_STEP=1 -DFXRT_ABLATE=FXRT_ABLATE_LIGHT_SUM"
 )
-declare -A ipp
+declare -A ipp cpi
 fail=0
 scenes=(scenes/lit/*.scene)
 for s in "${scenes[@]}"; do
@@ -50,6 +54,14 @@ for s in "${scenes[@]}"; do
             echo "lit-bound: $name: $label: no instructions_per_pixel in: $line" >&2
             exit 1
         fi
+        cpi["$label|$name"]=1
+        if [[ $CSIZE != none && ($label == "float step" || $label == q16) ]]; then
+            cpi["$label|$name"]=$(FW_EXTRA="$flags" FW_TAG="$tag" BUILD=$BUILD CYCLES_FRAME=1 CYCLES_CPI=1 \
+                firmware/cycles.sh "$s" "$BOARD" "$number" "$CSIZE") && [[ -n ${cpi["$label|$name"]} ]] || {
+                echo "lit-bound: $name: $label: the cycle pricing at $CSIZE failed" >&2
+                exit 1
+            }
+        fi
     done
     for pair in "q16-$SIZE-bound q16-$SIZE" "float-$SIZE-stepbound float-$SIZE-step"; do
         read -r a b <<<"$pair"
@@ -61,19 +73,19 @@ for s in "${scenes[@]}"; do
 done
 mkdir -p "$BUILD/bench"
 {
-echo "Lit scenes on $BOARD at $SIZE, instructions per pixel (QEMU -icount), one run."
+echo "Lit scenes on $BOARD at $SIZE, instructions per pixel (QEMU -icount), one run; float / q16 also in estimated cycles ($([[ $CSIZE == none ]] && echo "not priced: LIT_BOUND_CYCLES_SIZE=none" || echo "each build's frame CPI at $CSIZE times its instructions"))."
 echo
-echo "| scene | float step | q16 | float / q16 | float, no light sum | q16, no light sum | float / (q16, no light sum) | light sum: float | light sum: q16 | light sums: float / q16 | q16 light sum for 8x |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| scene | float step | q16 | float / q16 | float / q16, est. cycles | float, no light sum | q16, no light sum | float / (q16, no light sum) | light sum: float | light sum: q16 | light sums: float / q16 | q16 light sum for 8x |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for s in "${scenes[@]}"; do
     name=$(basename "$s" .scene)
     f=${ipp["float step|$name"]} q=${ipp["q16|$name"]} z=${ipp["q16, no light sum|$name"]}
     fz=${ipp["float step, no light sum|$name"]}
-    echo "$name $f $q $z $fz"
-done | awk 'function row(nm, f, q, z, fz) {
-                printf "| %s | %.1f | %.1f | %.2fx | %.1f | %.1f | %.2fx | %.1f | %.1f | %.2fx | %.1f |\n", nm, f, q, f / q,
-                    fz, z, f / z, f - fz, q - z, (f - fz) / (q - z), f / 8 - z }
-            { row($1, $2, $3, $4, $5); lf += log($2); lq += log($3); lz += log($4); lfz += log($5); n++ }
-            END { row("geometric mean", exp(lf / n), exp(lq / n), exp(lz / n), exp(lfz / n)) }'
+    echo "$name $f $q $z $fz ${cpi["float step|$name"]} ${cpi["q16|$name"]}"
+done | awk -v priced=$([[ $CSIZE == none ]] && echo 0 || echo 1) 'function row(nm, f, q, z, fz, rc) {
+                printf "| %s | %.1f | %.1f | %.2fx | %s | %.1f | %.1f | %.2fx | %.1f | %.1f | %.2fx | %.1f |\n", nm, f, q, f / q,
+                    priced ? sprintf("%.2fx", rc) : "n/a", fz, z, f / z, f - fz, q - z, (f - fz) / (q - z), f / 8 - z }
+            { row($1, $2, $3, $4, $5, $2 * $6 / ($3 * $7)); lf += log($2); lq += log($3); lz += log($4); lfz += log($5); lc += log($2 * $6 / ($3 * $7)); n++ }
+            END { row("geometric mean", exp(lf / n), exp(lq / n), exp(lz / n), exp(lfz / n), exp(lc / n)) }'
 } | tee "$BUILD/bench/lit-bound.md"
 exit $fail
