@@ -169,11 +169,8 @@ typedef struct {
     color_t w;
     uint8_t bounce;
     FXRT_IF_MODEL(geom_part_t part;) /* a model's part met (tri BVH_NONE: another kind) */
-    vec3_t n_side; /* the flat face's normal (n_geo: the smooth one, where smooth) */
+    FXRT_IF_NORMALS(vec3_t n_side;) /* the flat face's normal (n_geo: the smooth one, where smooth) */
 } trace_node_t;
-/* Smooth normals are compiled in (smooth triangles, or models, whose
- * meshes may carry vertex normals whatever FXRT_SMOOTH says). */
-#define TRACE_SMOOTH (FXRT_SMOOTH || FXRT_MAX_MODELS > 0)
 /* The ray's triangle left out: a child ray leaves the node's. */
 #define TRACE_FROM(nd) FXRT_IF_MODEL(, (nd)->part.tri)
 
@@ -186,9 +183,8 @@ __attribute__((noinline)) static int trace_children(const trace_node_t *nd, trac
     /* Glass: the face's winding normal decides entering or leaving (a
      * mesh is not a solid of the table). A smooth face refracts about its
      * smooth normal where that agrees, else about the flat one. */
-    if (TRACE_SMOOTH && m->kind == MATERIAL_TRANSPARENT &&
-        (vec3_dotw_units(nd->d, nd->n_side) > 0) != (vec3_dotw_units(nd->d, ng) > 0))
-        ng = nd->n_side;
+    FXRT_IF_NORMALS(if (m->kind == MATERIAL_TRANSPARENT &&
+                        (vec3_dotw_units(nd->d, nd->n_side) > 0) != (vec3_dotw_units(nd->d, ng) > 0)) ng = nd->n_side;)
     numw_t dnw = vec3_dotw_units(nd->d, ng);
     bool inside = dnw > 0;                 /* the ray comes from the solid's inside */
     vec3_t n = inside ? vec3_neg_unit(ng) : ng; /* faces the incoming ray */
@@ -253,7 +249,7 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PA
     color_t acc = local; /* the primary hit's weight is 1 */
     trace_node_t nd = {world_common(w, kind, index), p, n_geo, ray->d,
                        color_make(NUM_ONE, NUM_ONE, NUM_ONE), 0 FXRT_IF_MODEL(, {BVH_NONE, false, {NUM_ZERO, NUM_ZERO, NUM_ZERO}}),
-                       n_geo};
+                       FXRT_IF_NORMALS(n_geo)};
     FXRT_IF_SMOOTH(trace_smooth(w, kind, index, p, &nd.n_geo);)
     /* A smooth model reflects about its smooth normal too. */
     FXRT_IF_MODEL(if (part) nd.part = *part; if (nd.part.smooth) nd.n_geo = nd.part.ns;)
@@ -290,7 +286,7 @@ color_t trace_bounces(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PA
         nd.w = next.w;
         nd.bounce = next.bounce;
         color_t c = shade_point_k(w, h.kind, h.index GEOM_PART_ARG(&nd.part), nd.p, n, nd.d, NULL, NULL);
-        nd.n_side = n;
+        FXRT_IF_NORMALS(nd.n_side = n;)
         FXRT_IF_SMOOTH(trace_smooth(w, h.kind, h.index, nd.p, &nd.n_geo);)
         FXRT_IF_MODEL(if (nd.part.smooth) nd.n_geo = nd.part.ns;)
         acc = color_add(acc, color_mul(c, nd.w));

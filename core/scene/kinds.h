@@ -81,11 +81,15 @@
 #endif
 
 /* FXRT_IF_SMOOTH(...): its arguments where smooth shading is compiled in
- * (FXRT_SMOOTH, fxrt_config.h). */
+ * (FXRT_SMOOTH, fxrt_config.h); FXRT_IF_NORMALS(...) where a surface may
+ * have a normal other than its face's: smooth triangles or models (whose
+ * meshes may carry vertex normals whatever FXRT_SMOOTH says). */
 #if FXRT_SMOOTH
 #define FXRT_IF_SMOOTH(...) __VA_ARGS__
+#define FXRT_IF_NORMALS(...) __VA_ARGS__
 #else
 #define FXRT_IF_SMOOTH(...)
+#define FXRT_IF_NORMALS(...) FXRT_IF_MODEL(__VA_ARGS__)
 #endif
 
 /* Helpers for the tables' users: FXRT_WHEN(FLAG, ...) keeps its
