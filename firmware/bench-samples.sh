@@ -89,7 +89,7 @@ md=$OUT/../samples.md
 echo "board,scene,samples,instructions_per_pixel,status" >"$csv"
 {
     echo "Regenerate with \`make bench-samples BENCH_UPDATE_DOCS=1\` (also part of \`make bench\`). Last run"
-    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD 2>/dev/null || echo ' (with uncommitted changes)'),"
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit ${BENCH_REV:-$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD 2>/dev/null || echo ' (with uncommitted changes)')},"
     echo "$(( $(date +%s) - start )) s at $SIZE. Q16.16, fast renderer, instructions per output pixel (QEMU \`-icount\`);"
     echo "every frame byte-identical to the host's q16 render of the same scene copy."
     echo
