@@ -131,7 +131,8 @@ board_builds() {
 # A CSV row: set,scene,board,cpu,number,loop,status,instructions,
 # instructions_per_pixel,mismatched_pct,psnr,max_err,text_bytes,within1_pct,
 # within2_pct,cpi,cycles_per_pixel (status ok, nofit or n/a; the numbers are
-# empty unless ok; cpi and cycles_per_pixel also for builds not priced).
+# empty unless ok, and cpi and cycles_per_pixel are empty for the builds not
+# priced: reference and raycast).
 if [[ ${1:-} == --unit ]]; then
     idx=$2 total=$3 board=$4 scene=$5 number=$6 r=$7
     cpu=$(board_field "$board" 2) fb=$(board_field "$board" 3)
