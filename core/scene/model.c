@@ -164,9 +164,8 @@ int geom_model_cut(const geom_model_t *o, uint32_t node[], int n)
         int32_t widest = -1;
         for (int i = 0; i < count; i++) {
             const bvh_node_t *nd = &m->node[node[i]];
-            uint32_t first = nd->link >> 4;
-            if ((nd->link & 15u) != 0 || first + 1 >= m->n_nodes)
-                continue; /* a leaf */
+            if ((nd->link & 15u) != 0 || (nd->link >> 4) + 1 >= m->n_nodes)
+                continue; /* a leaf (its link counts triangles) */
             int32_t wd = 0;
             for (int k = 0; k < 3; k++)
                 wd += (int32_t)nd->hi[k] - nd->lo[k];

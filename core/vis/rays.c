@@ -32,7 +32,7 @@ void render_scan_rays(vis_t *r, uint16_t oi, int32_t x0, int32_t x1, int32_t iy,
      * row (render_setup_cut), from the first to the last. */
     FXRT_IF_MODEL(if (!FXRT_NO_BOUNDS && r->obj[oi].geom == GEOM_MODEL) {
         const render_rect_t *rc = r->model_cut[r->obj[oi].index];
-        int32_t row = r->cam->height - 1 - (iy + r->cam->height - 1) / 2, lo = x1 + 1, hi = x0 - 1;
+        int32_t row = render_row_of(r->cam, iy), lo = x1 + 1, hi = x0 - 1;
         for (int k = 0; k < RENDER_CUT; k++)
             if (row >= rc[k].r0 && row <= rc[k].r1 && rc[k].x0 <= rc[k].x1) {
                 lo = rc[k].x0 < lo ? rc[k].x0 : lo;
