@@ -164,6 +164,18 @@ void benchfx_report(const char *name, uint64_t ticks, uint64_t empty)
     semihost_puts("\n");
 }
 
+/* "bench empty=NAME ticks=T": an empty function's loop, one line per timed
+ * loop in the order they ran (firmware/benchfx.sh pairs each loop with its
+ * segment of the execution trace for the estimated cycles). */
+void benchfx_report_empty(const char *name, uint64_t ticks)
+{
+    semihost_puts("bench empty=");
+    semihost_puts(name);
+    semihost_puts(" ticks=");
+    semihost_put_u64(ticks);
+    semihost_puts("\n");
+}
+
 int main(void);
 int main(void)
 {
@@ -172,6 +184,11 @@ int main(void)
     uint64_t e1 = time_1(empty_1, in_pos), e2 = time_2(empty_2, in_a, in_b);
     uint64_t ew1 = timew_1(empty_w1, in_wpos), ew2 = timew_2(empty_w2, in_wa, in_wb);
     uint64_t ev = time_v(v_empty, in_va, in_vb);
+    benchfx_report_empty("empty_1", e1);
+    benchfx_report_empty("empty_2", e2);
+    benchfx_report_empty("empty_w1", ew1);
+    benchfx_report_empty("empty_w2", ew2);
+    benchfx_report_empty("empty_v", ev);
     benchfx_report("fx_add", time_2(w_fx_add, in_a, in_b), e2);
     benchfx_report("fx_mul", time_2(w_fx_mul, in_a, in_b), e2);
     benchfx_report("fx_div", time_2(fx_div, in_a, in_b), e2);

@@ -7,6 +7,8 @@
 
 /* One "bench fn=NAME calls=N ticks=T empty_ticks=E" line (N = BENCHFX_N). */
 void benchfx_report(const char *name, uint64_t ticks, uint64_t empty);
+/* One "bench empty=NAME ticks=T" line: an empty function's timed loop. */
+void benchfx_report_empty(const char *name, uint64_t ticks);
 
 /* Inputs per function, the same for both number types (they fit the
  * micro:bit's 16 KB RAM). */

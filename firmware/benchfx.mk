@@ -1,11 +1,14 @@
 # Fixed-point maths benchmark, included by the top Makefile.
 #   make bench-fx [BENCHFX_BOARDS="mps2-an385 microbit"] [BENCHFX_UPDATE_DOCS=1]
-# Builds firmware/benchfx.c for every board, runs it in QEMU (-icount) and
-# prints a Markdown table: instructions per call, text bytes, worst error
+# Builds firmware/benchfx.c for every measured board, runs it in QEMU (-icount) and
+# prints a Markdown table: instructions and estimated cycles per call (the
+# execution trace, firmware/cycles.sh), text bytes, worst error
 # (from build/tests/test_fx). Writes build/benchfx/benchfx.md; with
 # BENCHFX_UPDATE_DOCS=1 also the table in docs/BENCHMARKS.md.
 # (Included before firmware.mk: board variables are only used in recipes.)
-BENCHFX_BOARDS ?= $(BOARDS)
+# The boards make bench measures (firmware/bench.mk: the lm3s6965evb counts
+# as the MPS2-AN385).
+BENCHFX_BOARDS ?= $(BENCH_BOARD_LIST)
 BENCHFX_SRC := firmware/benchfx.c $(CORE_FX:%=core/%.c) firmware/startup.c firmware/semihost.c firmware/counter.c
 
 BENCHFX_HDR := firmware/benchfx.h firmware/benchfx_gen.h core/math/fx.h core/math/vec3.h core/math/num.h core/fxrt_config.h

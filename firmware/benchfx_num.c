@@ -75,6 +75,9 @@ void benchfx_float(const int32_t *a, const int32_t *b, const int32_t *pos, const
     }
     uint64_t e1 = f_time_1(f_empty_1, f_pos), e2 = f_time_2(f_empty_2, f_a, f_b);
     uint64_t ev = f_time_v(f_empty, f_va, f_vb);
+    benchfx_report_empty("float_empty_1", e1);
+    benchfx_report_empty("float_empty_2", e2);
+    benchfx_report_empty("float_empty_v", ev);
     benchfx_report("float_add", f_time_2(f_add, f_a, f_b), e2);
     benchfx_report("float_mul", f_time_2(f_mul, f_a, f_b), e2);
     benchfx_report("float_div", f_time_2(f_div, f_a, f_b), e2);

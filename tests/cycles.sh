@@ -15,7 +15,8 @@
 #     estimate <= high, and a CPI between 1 and 3;
 #   - a frame (CYCLES_FRAME=1, what make bench and make frontier price):
 #     its instructions within 0.1 % of make qemu's instructions= for the
-#     same firmware.
+#     same firmware;
+#   - make bench-fx's cycles per call on the M4F (VDIV against VMUL).
 set -u
 cd "$(dirname "$0")/.."
 . tests/lib.sh
@@ -116,5 +117,21 @@ if qline=$($M qemu SCENE=scenes/peer/matched.scene BOARD=mps2-an385 NUMBER=q16 S
     check "frame: its CPI in [1, 3] ($fline)" awk -v c="$(sed -nE 's/.* cpi=([0-9.]+)$/\1/p' <<<"$fline")" 'BEGIN { exit !(c >= 1 && c <= 3) }'
 else
     bad "frame: make qemu or firmware/cycles.sh failed: $(tail -n 3 "$tmp/frame.err" 2>/dev/null)"
+fi
+# make bench-fx's cycles per call (firmware/benchfx.sh pairs each timed
+# loop with its trace segment, and fails if one does not match its ticks):
+# on the M4F a float division's call is a float multiplication's plus the
+# instructions it has more, each priced 1, and VDIV's 14 cycles against
+# VMUL's 1 (the Cortex-M4 TRM): 13 cycles more, within half a cycle of
+# the trace's own rounding per call.
+progress "cycles.sh: make bench-fx on the M4F"
+if $M bench-fx BENCHFX_BOARDS=mps2-an386 >"$tmp/benchfx.out" 2>&1; then
+    rawf=$BUILD/benchfx/raw-float.txt
+    d=$(awk '$2 == "mps2-an386" && $1 == "float_div" { i1 = $3; c1 = $6 } $2 == "mps2-an386" && $1 == "float_mul" { i0 = $3; c0 = $6 }
+             END { if (c1 == "" || c0 == "") print "none"; else printf "%.1f", (c1 - c0) - (i1 - i0) }' "$rawf")
+    check "bench-fx, M4F: float div's cycles less float mul's, less their instruction difference: $d, about 13 (VDIV 14, VMUL 1)" \
+        awk -v d="$d" 'BEGIN { exit !(d != "none" && d >= 12.5 && d <= 13.5) }'
+else
+    bad "make bench-fx BENCHFX_BOARDS=mps2-an386 failed: $(tail -n 3 "$tmp/benchfx.out")"
 fi
 report cycles.sh
