@@ -3,7 +3,10 @@
 # supersampling, "all N x N samples in one object, no secondary rays".
 # Two groups of scenes, each with its samples line set to 1, 2 and 4,
 # Q16.16, the fast renderer, at BENCH_SIZE on every board, in QEMU
-# (-icount instructions per output pixel). Every firmware frame must be
+# (-icount instructions per output pixel), and each frame's estimated
+# cycles per output pixel (the same ELF under QEMU's execution trace,
+# firmware/cycles.sh CYCLES_FRAME=1: these frames are short enough to trace
+# whole, so no CPI is carried over from another size). Every firmware frame must be
 # byte-identical to the host's q16 render of the same copy (the script
 # fails otherwise); a scene that does not fit a board is reported as such.
 #
@@ -55,9 +58,10 @@ for sc in $CHEAP $SEED; do
     done
 done
 
-# One run: BOARD NAME -> runs/BOARD-NAME.txt: "ok IPP", "nofit", or "FAIL why".
+# One run: BOARD NAME -> runs/BOARD-NAME.txt: "ok IPP CPP" (instructions
+# and estimated cycles per output pixel), "nofit", or "FAIL why".
 run_one() {
-    local b=$1 name=$2 log line ipp fb
+    local b=$1 name=$2 log line ipp fb frame cpp
     fb=$(tr ' ' '\n' <<<"$BOARD_INFO" | sed -n "s/^$b:[^:]*:\(.*\)/\1/p")
     log=$OUT/runs/$b-$name.log
     if ! $M qemu SCENE="$OUT/scenes/$name.scene" BOARD="$b" SIZE="$SIZE" FB="$fb" >"$log" 2>&1; then
@@ -72,9 +76,15 @@ run_one() {
     ipp=${line#*=}
     if ! cmp -s "$BUILD/qemu/$b/$name-q16-$SIZE.ppm" "$OUT/host/$name.ppm"; then
         echo "FAIL frame differs from the host q16 render" >"$OUT/runs/$b-$name.txt"
-    else
-        echo "ok $ipp" >"$OUT/runs/$b-$name.txt"
+        return 0
     fi
+    if ! frame=$(CYCLES_FRAME=1 BUILD=$BUILD firmware/cycles.sh "$BUILD/fw/$b/$name-q16-$SIZE-$fb/fxrt.elf" "$b" 2>>"$log" |
+                 grep '^frame '); then
+        echo "FAIL firmware/cycles.sh: $(tail -n 2 "$log" | tr '\n' ' ')" >"$OUT/runs/$b-$name.txt"
+        return 0
+    fi
+    cpp=$(awk -v s="$SIZE" '{ split(s, wh, "x"); sub(/.*estimate=/, ""); sub(/ .*/, ""); printf "%.1f", $0 / (wh[1] * wh[2]) }' <<<"$frame")
+    echo "ok $ipp $cpp" >"$OUT/runs/$b-$name.txt"
 }
 export -f run_one
 export OUT M SIZE BUILD BOARD_INFO
@@ -86,12 +96,13 @@ done | xargs -P "$JOBS" -n 2 bash -c 'run_one "$0" "$1"'
 fails=0
 csv=$OUT/../samples.csv
 md=$OUT/../samples.md
-echo "board,scene,samples,instructions_per_pixel,status" >"$csv"
+echo "board,scene,samples,instructions_per_pixel,cycles_per_pixel,status" >"$csv"
 {
     echo "Regenerate with \`make bench-samples BENCH_UPDATE_DOCS=1\` (also part of \`make bench\`). Last run"
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit ${BENCH_REV:-$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD 2>/dev/null || echo ' (with uncommitted changes)')},"
-    echo "$(( $(date +%s) - start )) s at $SIZE. Q16.16, fast renderer, instructions per output pixel (QEMU \`-icount\`);"
-    echo "every frame byte-identical to the host's q16 render of the same scene copy."
+    echo "$(( $(date +%s) - start )) s at $SIZE. Q16.16, fast renderer, instructions per output pixel (QEMU \`-icount\`)"
+    echo "and estimated cycles per output pixel (each frame's execution trace, priced as in \"Cycles\");"
+    echo "every frame byte-identical to the host's q16 render of the same scene copy. The targets are on instructions."
     echo
 } >"$md"
 gm() { printf '%s\n' "$@" | awk 'NF { s += log($1); n++ } END { if (n) printf "%.2f", exp(s / n); else printf "-" }'; }
@@ -101,53 +112,57 @@ x() { [ "$1" = - ] && echo - || echo "$1x"; }
 # group BOARD LABEL TARGETS SCENE...: one table of a board's group; with
 # TARGETS 1 the verdicts, else the same figures for information.
 group() {
-    local b=$1 label=$2 targets=$3 sc s n r r2 r4 g2 g4 m2 m4
+    local b=$1 label=$2 targets=$3 sc s n r r2 r4 c2 c4 g2 g4 m2 m4 cg2 cg4 cm2 cm4
     shift 3
-    local l2=() l4=()
+    local l2=() l4=() k2=() k4=()
     {
         echo "$label"
         echo
-        echo "| scene | samples 1 | samples 2 | samples 4 | samples 2 / 1 | samples 4 / 1 |"
-        echo "|---|---:|---:|---:|---:|---:|"
+        echo "| scene | samples 1 | samples 2 | samples 4 | samples 2 / 1 | samples 4 / 1 | est. cycles/px: samples 1 | samples 2 | samples 4 | samples 2 / 1 | samples 4 / 1 |"
+        echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
     } >>"$md"
     for sc in "$@"; do
         s=$(basename "$sc" .scene)
-        declare -A v=()
+        declare -A v=() cy=()
         for n in 1 2 4; do
             r=$(cat "$OUT/runs/$b-$s-s$n.txt" 2>/dev/null || echo "FAIL no result")
             case $r in
-            ok*) v[$n]=${r#ok } ;;
-            nofit) v[$n]=nofit ;;
-            *) v[$n]=FAIL; fails=$((fails + 1)); echo "bench-samples: $b $s samples $n: $r" >&2 ;;
+            ok*) read -r _ v[$n] cy[$n] <<<"$r" ;;
+            nofit) v[$n]=nofit cy[$n]=nofit ;;
+            *) v[$n]=FAIL cy[$n]=FAIL; fails=$((fails + 1)); echo "bench-samples: $b $s samples $n: $r" >&2 ;;
             esac
-            echo "$b,$s,$n,${v[$n]},$r" | cut -d, -f1-5 >>"$csv"
+            echo "$b,$s,$n,${v[$n]},${cy[$n]},${r%% *}" >>"$csv"
         done
         cell() { case ${v[$1]} in nofit) echo "does not fit" ;; FAIL) echo "FAIL" ;; *) echo "${v[$1]}" ;; esac; }
-        ratio() {
-            case ${v[1]}${v[$1]} in *nofit* | *FAIL*) echo "-" ;; *) awk -v a="${v[$1]}" -v b="${v[1]}" 'BEGIN { printf "%.2fx", a / b }' ;; esac
+        ccell() { case ${cy[$1]} in nofit) echo "does not fit" ;; FAIL) echo "FAIL" ;; *) echo "${cy[$1]}" ;; esac; }
+        ratio() { # ratio N ARRAY
+            local -n a=$2
+            case ${a[1]}${a[$1]} in *nofit* | *FAIL*) echo "-" ;; *) awk -v x="${a[$1]}" -v y="${a[1]}" 'BEGIN { printf "%.2fx", x / y }' ;; esac
         }
-        r2=$(ratio 2) r4=$(ratio 4)
-        echo "| $s | $(cell 1) | $(cell 2) | $(cell 4) | $r2 | $r4 |" >>"$md"
-        [ "$r2" != - ] && l2+=("${r2%x}")
-        [ "$r4" != - ] && l4+=("${r4%x}")
-        unset v
+        r2=$(ratio 2 v) r4=$(ratio 4 v) c2=$(ratio 2 cy) c4=$(ratio 4 cy)
+        echo "| $s | $(cell 1) | $(cell 2) | $(cell 4) | $r2 | $r4 | $(ccell 1) | $(ccell 2) | $(ccell 4) | $c2 | $c4 |" >>"$md"
+        [ "$r2" != - ] && l2+=("${r2%x}") && k2+=("${c2%x}")
+        [ "$r4" != - ] && l4+=("${r4%x}") && k4+=("${c4%x}")
+        unset v cy
     done
     g2=$(gm "${l2[@]}") g4=$(gm "${l4[@]}") m2=$(mx "${l2[@]}") m4=$(mx "${l4[@]}")
+    cg2=$(gm "${k2[@]}") cg4=$(gm "${k4[@]}") cm2=$(mx "${k2[@]}") cm4=$(mx "${k4[@]}")
     if [ "$targets" = 1 ]; then
         {
             echo
-            echo "| target ($b) | goal | measured | result |"
-            echo "|---|---:|---:|---|"
-            echo "| worst scene, samples 2 / 1 | <= 2x | $(x "$m2") | $(verdict "$m2" 2) |"
-            echo "| worst scene, samples 4 / 1 | <= 4x | $(x "$m4") | $(verdict "$m4" 4) |"
-            echo "| geometric mean, samples 2 / 1 | <= 1.5x | $(x "$g2") (${#l2[@]} scenes) | $(verdict "$g2" 1.5) |"
-            echo "| geometric mean, samples 4 / 1 | <= 2.5x | $(x "$g4") (${#l4[@]} scenes) | $(verdict "$g4" 2.5) |"
+            echo "| target ($b) | goal | measured | result | in est. cycles |"
+            echo "|---|---:|---:|---|---:|"
+            echo "| worst scene, samples 2 / 1 | <= 2x | $(x "$m2") | $(verdict "$m2" 2) | $(x "$cm2") |"
+            echo "| worst scene, samples 4 / 1 | <= 4x | $(x "$m4") | $(verdict "$m4" 4) | $(x "$cm4") |"
+            echo "| geometric mean, samples 2 / 1 | <= 1.5x | $(x "$g2") (${#l2[@]} scenes) | $(verdict "$g2" 1.5) | $(x "$cg2") |"
+            echo "| geometric mean, samples 4 / 1 | <= 2.5x | $(x "$g4") (${#l4[@]} scenes) | $(verdict "$g4" 2.5) | $(x "$cg4") |"
             echo
         } >>"$md"
     else
         {
             echo
-            echo "Geometric mean $(x "$g2") at samples 2, $(x "$g4") at samples 4 (worst $(x "$m2"), $(x "$m4"); information, no target)."
+            echo "Geometric mean $(x "$g2") at samples 2, $(x "$g4") at samples 4 (worst $(x "$m2"), $(x "$m4"); information, no target);"
+            echo "in estimated cycles $(x "$cg2") and $(x "$cg4") (worst $(x "$cm2"), $(x "$cm4"))."
             echo
         } >>"$md"
     fi
