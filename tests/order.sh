@@ -1,18 +1,24 @@
 #!/usr/bin/env bash
-# Nearest first (core/render_setup.c, render_order) changes the work, never
-# a pixel: every scene in scenes/ and its subfolders at 96x72, in q16,
-# float and double, with the host tool and with its FXRT_ABLATE_ORDER build
-# (tests/order.mk), byte for byte. The lit scenes and two bench scenes
+# Nearest first (vis/order.c) and the shadow rows (light/shadow.c, a
+# plane's per-row masks of the objects that cannot block its shadow rays)
+# change the work, never a pixel: every scene in scenes/ and its
+# subfolders at 96x72, in q16, float and double, with the host tool and
+# with its build without both (FXRT_ABLATE_ORDER, FXRT_ABLATE_SHADOW_ROWS;
+# tests/order.mk), byte for byte. The lit scenes and two bench scenes
 # are rendered again with `samples 2 adaptive` and lights on every
 # object: the adaptive sampler's one ray per pixel takes the shading
 # constants of the object it hits from the sorted records
-# (render_obj_of), which these frames check.
+# (render_obj_of), which these frames check. And 40 random scenes of
+# shadows on planes (a floor or a tilted plane, 2 to 7 spheres, boxes and
+# triangles, 1 or 2 point or spot lights with shadows, some near the
+# plane, some far, a perspective camera of 10 to 150 degrees, seen from
+# near or far): the rows' margins where shadows graze them.
 set -u
 . "$(dirname "$0")/lib.sh"
-NOORDER=${NOORDER:-$BUILD/noorder/fxrt}
+NOORDER=${NOORDER:-$BUILD/ablated/fxrt}
 out=$BUILD/tests/order
 mkdir -p "$out"
-check "the FXRT_ABLATE_ORDER build exists ($NOORDER)" test -x "$NOORDER"
+check "the ablated build exists ($NOORDER)" test -x "$NOORDER"
 scenes=()
 for f in scenes/*.scene scenes/*/*.scene; do
     [ -f "$f" ] && ! grep -q '^# expect: rejected:' "$f" && scenes+=("$f")
@@ -31,6 +37,36 @@ for f in scenes/bench/mixed16.scene scenes/bench/cover.scene; do
     check "$name: every object lit" test "$(grep -c 'material phong' "$out/$name.scene")" -ge 6
     scenes+=("$out/$name.scene")
 done
+# Random shadows on planes (awk's rand with a fixed seed per scene: the
+# same scenes on every run of this awk).
+for seed in $(seq 1 40); do
+    name=rows-$seed
+    awk -v seed="$seed" 'function u(a, b) { return a + (b - a) * rand() }
+        function p3(s) { return sprintf("%.4f %.4f %.4f", u(-s, s), u(-s, s), u(-s, s)) }
+        BEGIN { srand(seed); s = seed % 4 == 0 ? 200 : 6
+            print "image 96 72"
+            print "background 0.1 0.1 0.2"
+            h = u(0.5, 3) * s
+            printf "camera perspective eye %.4f %.4f %.4f gaze %.4f %.4f %.4f up 0 1 0 fov %.2f\n", u(-s, s), h, u(-s, s), u(-1, 1), -u(0.2, 1), u(-1, 1), u(10, 150)
+            print "ambient 0.2 0.2 0.2"
+            nl = 1 + (seed % 3 == 0)
+            for (i = 0; i < nl; i++) {
+                lh = rand() < 0.3 ? u(0.05, 0.5) : u(0.5, 3) * s
+                if (rand() < 0.7) printf "light point position %.4f %.4f %.4f color 0.7 0.7 0.7 shadows on\n", u(-s, s), lh, u(-s, s)
+                else printf "light spot position %.4f %.4f %.4f direction %.4f -1 %.4f angle %.1f color 0.7 0.7 0.7 shadows on\n", u(-s, s), lh, u(-s, s), u(-0.5, 0.5), u(-0.5, 0.5), u(20, 80)
+            }
+            printf "plane point 0 0 0 normal %.4f 1 %.4f color 0.8 0.7 0.6 material lambert\n", seed % 2 ? 0 : u(-0.3, 0.3), seed % 2 ? 0 : u(-0.3, 0.3)
+            no = 2 + int(rand() * 6)
+            for (i = 0; i < no; i++) {
+                k = rand(); r = u(0.05, 0.6) * s / 6
+                cx = u(-s, s) / 2; cy = u(0, 1.5) * s / 6 + r; cz = u(-s, s) / 2
+                if (k < 0.5) printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", cx, cy, cz, r
+                else if (k < 0.8) printf "box min %.4f %.4f %.4f max %.4f %.4f %.4f color 0.9 0.3 0.2 material lambert\n", cx - r, cy - r, cz - r, cx + r, cy + r / 2, cz + r
+                else printf "triangle a %.4f %.4f %.4f b %.4f %.4f %.4f c %.4f %.4f %.4f color 0.3 0.9 0.3 material lambert\n", cx - r, cy, cz, cx + r, cy + r, cz, cx, cy, cz + r
+            }
+        }' >"$out/$name.scene"
+    scenes+=("$out/$name.scene")
+done
 n=0 refused=0
 for scene in "${scenes[@]}"; do
     name=$(basename "$scene" .scene)
@@ -47,7 +83,7 @@ for scene in "${scenes[@]}"; do
             refused=$((refused + 1))
             continue
         fi
-        check "$scene ($num): nearest first == scene order" cmp -s "$out/$name-$num-a.ppm" "$out/$name-$num-b.ppm"
+        check "$scene ($num): the default build == without nearest first and shadow rows" cmp -s "$out/$name-$num-a.ppm" "$out/$name-$num-b.ppm"
     done
 done
 echo "order: $n frames, $refused refused by both at 96x72"

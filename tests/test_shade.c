@@ -601,8 +601,8 @@ static void test_shadow_cull(long cases)
 #endif
             }
             const shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
-            bool full = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, NULL);
-            bool culled = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, row);
+            bool full = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, NULL, 0);
+            bool culled = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, row, 0);
             tests++;
             if (full != culled) {
                 /* Culling may only skip an occluder whose bounding sphere

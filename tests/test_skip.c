@@ -87,7 +87,8 @@ static void camera(cam_t *cam)
 }
 
 /* A plane lit from below sends no shadow ray; lit from above, one per
- * pixel it covers (every plane pixel faces the light). */
+ * pixel it covers (every plane pixel faces the light), or none with shadow
+ * rows (light/shade.h): alone in the world, nothing can block it. */
 static void test_behind(void)
 {
     cam_t cam;
@@ -102,8 +103,8 @@ static void test_behind(void)
         long plane = count_id((uint16_t)id);
         CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
         if (above)
-            CHECK_MSG(fxrt_stats.shadow_rays == (uint32_t)plane, "light above: %u shadow rays for %ld pixels",
-                      (unsigned)fxrt_stats.shadow_rays, plane);
+            CHECK_MSG(fxrt_stats.shadow_rays == (SHADOW_ROWS ? 0u : (uint32_t)plane),
+                      "light above: %u shadow rays for %ld pixels", (unsigned)fxrt_stats.shadow_rays, plane);
         else
             CHECK_MSG(fxrt_stats.shadow_rays == 0, "light behind: %u shadow rays", (unsigned)fxrt_stats.shadow_rays);
     }
@@ -364,6 +365,26 @@ static void test_shadow_cull(void)
     CHECK_MSG(shadow > 40 && plane > 8 * shadow, "%ld plane pixels, %ld shadowed", plane, shadow);
     CHECK_MSG(sphere_calls >= (unsigned long)shadow && sphere_calls <= (unsigned long)(2 * shadow + 2 * W),
               "%lu sphere kernel calls for %ld shadowed plane pixels", sphere_calls, shadow);
+    /* Shadow rows: a plane pixel sends a shadow ray only on a row whose
+     * line can see the sphere's shadow, which the rows of shadowed plane
+     * pixels, and a few around them for the margins, hold; the sphere's
+     * own pixels send theirs. */
+    long sphere = 0, rows = 0;
+    for (int y = 0; y < H; y++) {
+        bool any = false;
+        for (int x = 0; x < W; x++) {
+            uint32_t k = keys[y * W + x];
+            any |= (k >> 8) == (uint32_t)pid && !(k & 1u);
+            sphere += (k >> 8) != (uint32_t)pid && (k >> 8) != 0xFFFFu;
+        }
+        rows += any;
+    }
+    printf("shadow rows (%s): %u shadow rays, %ld sphere pixels, %ld rows with a shadow\n", NUM_NAME,
+           (unsigned)fxrt_stats.shadow_rays, sphere, rows);
+    if (SHADOW_ROWS)
+        CHECK_MSG(fxrt_stats.shadow_rays <= (uint32_t)(sphere + (rows + 8) * W) && fxrt_stats.shadow_rays < (uint32_t)plane / 2,
+                  "%u shadow rays: %ld sphere pixels, %ld plane pixels, %ld rows with a shadow",
+                  (unsigned)fxrt_stats.shadow_rays, sphere, plane, rows);
 }
 
 static double cpu_s(void)

@@ -67,8 +67,9 @@ typedef struct {
     /* Per object (index into vis.obj): its shading constants, once per frame. */
     shade_k_t k[FXRT_RENDER_MAX_OBJECTS];
 #if SHADOW_CULL
-    /* Shadow-ray culling, per light and bounded object (light/shadow.c). */
-    shadow_cull_t cull[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
+    /* Shadow-ray culling, per light and bounded object, and the current
+     * row's masks per plane and light (light/shadow.c). */
+    shadow_table_t cull;
 #endif
 } render_shade_t;
 /* Object oi's shading constants (NULL without lighting). */

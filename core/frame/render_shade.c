@@ -13,12 +13,12 @@ void render_shade_setup(render_t *r, const world_t *w)
 {
     render_shade_t *sh = &r->shade;
     sh->any_lit = w->n_lit > 0;
-    SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull);)
+    SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull.cull); shadow_rows_clear(&sh->cull);)
     for (uint16_t i = 0; sh->any_lit && i < r->vis.count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->vis.obj[i].geom, r->vis.obj[i].index);
         if (c->mat.kind != MATERIAL_FLAT) {
             shade_consts(w, c, &sh->k[i]);
-            SHADE_IF_CULL(sh->k[i].cull = sh->cull;)
+            SHADE_IF_CULL(sh->k[i].cull = &sh->cull;)
         }
     }
 }
@@ -27,6 +27,9 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
 {
     const cam_t *cam = r->vis.cam;
     int32_t w = cam->width, y = cam->height - 1 - row;
+    /* The row's shadow masks for planes (light/shade.h), cleared after it:
+     * they hold for this row's camera rays only. */
+    SHADE_IF_CULL(if (SHADOW_ROWS && r->shade.any_lit) shadow_rows_setup(r->vis.world, cam, y, &r->shade.cull);)
     for (int32_t x = 0; x < w; x++) {
         uint16_t oi = r->vis.painted[x];
         if (oi == RENDER_VIS_NONE) {
@@ -55,5 +58,6 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         rgb8_t p = color_to_rgb8(c);
         render_put_pixel(rgb, x, p);
     }
+    SHADE_IF_CULL(if (SHADOW_ROWS && r->shade.any_lit) shadow_rows_clear(&r->shade.cull);)
 }
 #endif

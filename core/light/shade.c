@@ -235,11 +235,15 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
         FXRT_IF_SMOOTH(if (smooth && L->shadows && vec3_dotw_units(n_face, l) <= 0) continue;) /* the terminator */
         FXRT_IF_MODEL(if (msmooth && L->shadows && vec3_dotw_units(n_wind, l) <= 0) continue;)
 #if SHADOW_CULL
-        const shadow_cull_t *cull = k && k->cull ? k->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
+        const shadow_cull_t *cull = k && k->cull ? k->cull->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
+        /* A plane's pixel: its row's mask (shade.h, shadow rows). */
+        uint32_t skip = SHADOW_ROWS && kind == GEOM_PLANE && cull ? k->cull->rows[(size_t)index * FXRT_MAX_LIGHTS + i] : 0;
 #else
         const shadow_cull_row_t *cull = NULL;
+        uint32_t skip = 0;
 #endif
-        if (L->shadows && shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, &p, L, &l, dist, cull))
+        if (L->shadows && !(skip & SHADOW_ROW_CLEAR && dist < SHADE_FAR_DIST) &&
+            shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, &p, L, &l, dist, cull, skip))
             continue;
 #endif
         bits = (uint8_t)(bits | (1u << i));

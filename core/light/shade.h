@@ -22,6 +22,7 @@
 
 #include <stddef.h>
 
+#include "scene/cam.h"
 #include "scene/world.h"
 
 /* Shadow-ray culling (FXRT_SHADOW_CULL; light/shadow.c): for each point or
@@ -87,6 +88,33 @@ static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
 #endif
 typedef shadow_cull_t shadow_cull_row_t; /* a light's row of the table */
 
+/* Shadow rows (light/shadow.c, shadow_rows_setup): on an image row, the
+ * points a plane shows lie on one line, and the shadow rays from them to a
+ * point or spot light lie in one plane through the light, up to the
+ * rounding of the camera ray, the hit point and the ray. A bounded object
+ * whose bounding sphere lies farther from that plane than those margins
+ * blocks none of them: bit s of the row's mask (plane j, light i) skips
+ * slot s's object for every pixel of plane j on the row (slots 0..30),
+ * and SHADOW_ROW_CLEAR says that no object can block the light there at
+ * all (every bounded object skipped, no other plane). Set per row by the
+ * shading pass (frame/render_shade.c) for perspective views; zero
+ * elsewhere. A mask only skips tests whose answer is "not blocked": the
+ * frame is the same (tests/order.sh against FXRT_ABLATE_SHADOW_ROWS). */
+#define SHADOW_ROWS (SHADOW_CULL && FXRT_MAX_PLANES > 0 && !FXRT_NO_SHADOW_ROWS)
+#define SHADOW_ROW_SLOTS 31
+#define SHADOW_ROW_CLEAR 0x80000000u
+/* The frame's shadow-ray tables: the cull table, and the current row's
+ * masks, rows[plane * FXRT_MAX_LIGHTS + light]. */
+typedef struct {
+    shadow_cull_t cull[SHADOW_CULL ? FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS : 1];
+    uint32_t rows[SHADOW_ROWS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
+} shadow_table_t;
+/* The masks of image row y (counted from the bottom) of a perspective
+ * camera cam, for every plane and light of w; all zero for another view.
+ * shadow_rows_clear zeroes them. */
+void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_table_t *t);
+void shadow_rows_clear(shadow_table_t *t);
+
 /* What the light sum needs of one object that does not change within a
  * frame, computed once per frame and object (render_setup) instead of at
  * every pixel: the ambient term c_d (.) c_a and, per light, the diffuse
@@ -98,7 +126,7 @@ typedef struct {
     color_t ks[FXRT_MAX_LIGHTS];
 #endif
 #if SHADOW_CULL
-    const shadow_cull_t *cull; /* the frame's cull table (NULL: none) */
+    const shadow_table_t *cull; /* the frame's shadow-ray tables (NULL: none) */
 /* SHADE_IF_CULL(...): its arguments where the field above exists. */
 #define SHADE_IF_CULL(...) __VA_ARGS__
 #else
@@ -152,8 +180,10 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PA
  * triangle it starts on (part), and tests the model's others with its
  * other objects (self-shadowing). obj: world_common(w, kind, index).
  * cull: the light's row of the cull table, or NULL (no culling). */
+/* skip: the row's mask for (plane, light) (shadow rows above), or 0. */
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const geom_common_t *obj,
-                    bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull);
+                    bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull,
+                    uint32_t skip);
 
 /* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST
  * from p may lie beyond the range (shade_lights computes |v| within 0.5

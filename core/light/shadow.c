@@ -61,12 +61,19 @@ static numw_t shadow_proj(vec3_t v, vec3_t l, int k)
                                                            : vec3_det2w(v.x, l.y, v.y, l.x);
 }
 
+/* R' = r (1 + 2^-8) + 2^-10 + CULL_REL (|c|_1 + |L|_1): the bounding
+ * radius r of an object centred on c with the margin for the kernels' own
+ * rounding, seen from light L. */
+static num_t shadow_bound(vec3_t c, num_t r, const light_t *L)
+{
+    num_t rr = num_add(num_add(r, num_mul(r, NUM(1.0 / 256))), NUM(1.0 / 1024));
+    return num_add(rr, num_mul(CULL_REL, num_add(shadow_l1(c), shadow_l1(L->position))));
+}
+
 /* The entry for an object with bounding sphere (c, r) seen from L. */
 __attribute__((unused)) static void shadow_cull_entry(shadow_cull_t *e, const light_t *L, vec3_t c, num_t r)
 {
-    /* R' = r (1 + 2^-8) + 2^-10 + CULL_REL (|c|_1 + |L|_1). */
-    num_t rr = num_add(num_add(r, num_mul(r, NUM(1.0 / 256))), NUM(1.0 / 1024));
-    rr = num_add(rr, num_mul(CULL_REL, num_add(shadow_l1(c), shadow_l1(L->position))));
+    num_t rr = shadow_bound(c, r, L);
     if (L->kind == LIGHT_DIRECTIONAL) {
         e->dir.c1 = shadow_proj(c, L->dir, L->axes[0]);
         e->dir.c2 = shadow_proj(c, L->dir, L->axes[1]);
@@ -128,11 +135,125 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
     }
 }
 
+/* Shadow rows (shade.h). On row y of a perspective view, pixel x's
+ * camera ray is along r(x) = f + ix u with f = fwd + iy v (cam.h), so the
+ * rays of the row lie in the plane P through the eye e with normal
+ * m = u x f, and a plane's points on the row on its line l = plane ∩ P.
+ * S is the plane through the light's position L that holds l: with
+ * F(x) = n . (x - a) (the plane's point a, unit normal n) and R(x) =
+ * m' . (x - e) (m' = m / |m|), S(x) = R(L) F(x) - F(L) R(x), normal g =
+ * R(L) n - F(L) m', unit g' (rounded). Slot s's object (bounding sphere c,
+ * R' = shadow_bound) is skipped when its distance from S,
+ * |g' . (c - L)|, less 2^-12 of it and 2^-14 for g' and the product's
+ * rounding, exceeds R' + eps + delta, where for every shading point p'
+ * the renderer computes on the row:
+ *  - every point of the shadow ray from p' lies within max(D(p'), eps)
+ *    of S (D: the distance from S; S holds L, and the ray ends within
+ *    eps(dist) <= 2^-15 + dist 2^-13 of L, as for the cones above);
+ *  - D(p') <= delta. p' is within 2^-15.5 of the exact hit of its rounded
+ *    ray (d' within 2^-15.2 of r / |r|), a point of the plane at most
+ *    t 2^-15.2 from P, so at most kappa t 2^-15.2 from l (kappa =
+ *    1 / sin of the angle between the plane and P) and from S; S' (of
+ *    the rounded g') is within 2^-15 |x - L| of S near l. With t <= t_max
+ *    (the row's two ends, whose rays meet the plane in front: the hits
+ *    between lie on the segment, |p - e| convex along it) and dist <=
+ *    t_max + |L - e|_1 = d_max: delta = (kappa (t_max + 1) + 1) 2^-13 +
+ *    d_max 2^-13 + CULL_REL 4 (|e|_1 + t_max + |L|_1), four times the
+ *    Q16.16 bound; float and double have ulps, far below it.
+ * No mask where the row's rays do not all meet the plane in front (the
+ * horizon crosses the row), kappa > 64, or (Q16.16) e's coordinates plus
+ * t_max reach 16384 (a hit point that may saturate) or the camera is not
+ * small (cam.h). Once per row: a few roots and a product per object. */
+static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, vec3_t n, vec3_t a, vec3_t m1,
+                                num_t t_max)
+{
+    vec3_t pos = L->position;
+    num_t fl = vec3_dot(n, vec3_sub(pos, a)), rl = vec3_dot(m1, vec3_sub(pos, e));
+    vec3_t g = vec3_sub(vec3_scale(n, rl), vec3_scale(m1, fl));
+    vec3_t nc = vec3_cross(n, m1);
+    num_t sine = vec3_len(nc);
+    if (sine < NUM(1.0 / 64) || !vec3_normalize(&g))
+        return 0;
+    num_t kappa = num_div(NUM_ONE, sine);
+    num_t d_max = num_add(t_max, shadow_l1(vec3_sub(pos, e)));
+    num_t eps = num_add(NUM(1.0 / 32768), num_mul(d_max, NUM(1.0 / 8192)));
+    num_t delta = num_mul(num_add(num_mul(kappa, num_add(t_max, NUM_ONE)), num_add(NUM_ONE, d_max)), NUM(1.0 / 8192));
+    delta = num_add(delta, num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(e), t_max), shadow_l1(pos))));
+    num_t margin = num_add(eps, delta);
+    uint32_t mask = 0;
+    bool all = true;
+    vec3_t c;
+    num_t r;
+#define SHADOW_ROW_SLOTS_OF(K, k, ks, cap, solid, bounded, ...)                                               \
+    FXRT_WHEN(bounded, FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) {                                \
+        int s = SHADOW_SLOT_##K + i;                                                                          \
+        geom_##k##_around(&w->ks[i], &c, &r);                                                                 \
+        vec3_t v = vec3_sub(c, pos);                                                                          \
+        num_t dc = num_abs(vec3_dot(g, v));                                                                   \
+        bool far = s < SHADOW_ROW_SLOTS && shadow_l1(v) < NUM(16384) &&                                       \
+                   num_sub(num_sub(dc, num_mul(dc, NUM(1.0 / 4096))), NUM(1.0 / 16384)) >                     \
+                       num_add(shadow_bound(c, r, L), margin);                                                \
+        if (far)                                                                                              \
+            mask |= 1u << s;                                                                                  \
+        all = all && far;                                                                                     \
+    }))
+    FXRT_KINDS(SHADOW_ROW_SLOTS_OF)
+#undef SHADOW_ROW_SLOTS_OF
+    (void)c, (void)r;
+    return mask | (all && (0 FXRT_IF_PLANE(+w->n_planes)) == 1 ? SHADOW_ROW_CLEAR : 0);
+}
+
+/* Plane pl's masks on the row of rays f + ix u (|ix| <= ixe), one per light. */
+__attribute__((unused)) static void shadow_rows_plane(const world_t *w, const cam_t *cam, vec3_t f, int32_t ixe,
+                                                      vec3_t m1, const geom_plane_t *pl, uint32_t *rows)
+{
+    /* The farthest hit of the row: at an end, each in front. */
+    vec3_t e = cam->e;
+    num_t fe = vec3_dot(pl->n, vec3_sub(e, pl->a)), t_max = NUM_ZERO;
+    bool ok = fe != NUM_ZERO;
+    for (int end = 0; end < 2 && ok; end++) {
+        vec3_t r = vec3_add(f, vec3_scale_int(cam->u, end ? ixe : -ixe));
+        num_t den = vec3_dot(pl->n, r);
+        ok = den != NUM_ZERO && (den < NUM_ZERO) != (fe < NUM_ZERO);
+        if (ok) { /* the distance -fe |r| / den */
+            num_t te = num_abs(numw_div(numw_mul(fe, vec3_len(r)), numw_from(den)));
+            t_max = num_max(t_max, num_add(num_add(te, num_mul(te, NUM(1.0 / 64))), NUM_ONE));
+        }
+    }
+    if (!ok || num_add(t_max, num_max(num_max(num_abs(e.x), num_abs(e.y)), num_abs(e.z))) >= NUM(16384))
+        return;
+    for (uint8_t i = 0; i < w->n_lights; i++)
+        if (w->lights[i].kind != LIGHT_DIRECTIONAL && w->lights[i].shadows)
+            rows[i] = shadow_row_mask(w, &w->lights[i], e, pl->n, pl->a, m1, t_max);
+}
+
+void shadow_rows_clear(shadow_table_t *t)
+{
+    for (size_t i = 0; i < sizeof t->rows / sizeof t->rows[0]; i++)
+        t->rows[i] = 0;
+}
+
+void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_table_t *t)
+{
+    shadow_rows_clear(t);
+    if (!SHADOW_ROWS || cam->kind != CAM_PERSPECTIVE || (NUM_EXACT && !cam->small))
+        return;
+    int32_t iy = 2 * y - cam->height + 1, ixe = cam->width - 1;
+    vec3_t f = vec3_add(cam->fwd, vec3_scale_int(cam->v, iy));
+    vec3_t m1 = vec3_cross(cam->u, f);
+    if (!vec3_normalize(&m1))
+        return;
+    FXRT_IF_PLANE(for (uint16_t j = 0; j < w->n_planes && SHADOW_ROWS; j++)
+                      shadow_rows_plane(w, cam, f, ixe, m1, &w->planes[j], t->rows + (size_t)j * FXRT_MAX_LIGHTS);)
+    (void)w, (void)ixe;
+}
+
 /* One shadow ray's view of the cull row: the light's row, the ray's ldir
  * and dist, and for a directional light the point's projections (with,
  * in float and double, a margin for their rounding: CULL_REL |p|_1). */
 typedef struct {
     const shadow_cull_t *row;
+    uint32_t skip; /* the row's mask (shade.h), point and spot lights */
     vec3_t ldir;
     num_t dist;
     numw_t p1, p2;
@@ -192,6 +313,11 @@ enum { SHADOW_CULLS = SHADOW_CULL };
                                                : false))
 /* The next object's cull entry. */
 #define SHADOW_NEXT(e) ((e) = mode != SHADOW_CULL_NONE ? (e) + 1 : (e))
+/* A point or spot light's row mask from a kind's first slot on (bit 0:
+ * that slot), zero for any other loop. */
+enum { SHADOW_ROWS_ON = SHADOW_ROWS }; /* (as SHADOW_CULLS) */
+#define SHADOW_ROW_SKIP(base)                                                                                 \
+    (SHADOW_ROWS_ON && mode == SHADOW_CULL_PT && (base) < SHADOW_ROW_SLOTS ? rc->skip >> ((base) & 31) : 0u)
 
 /* world_occluded, skipping what rc rules out (mode: how). An object's cull
  * entry is read before the object (the table is small and contiguous);
@@ -228,10 +354,12 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
     {                                                                                                         \
         const shadow_cull_t *e = SHADOW_ROW(SHADOW_SLOT_##K);                                                 \
         const geom_##k##_t *o = w->ks;                                                                        \
+        uint32_t sk = SHADOW_ROW_SKIP(SHADOW_SLOT_##K);                                                       \
         for (uint16_t n = w->n_##ks; n > 0; n--, o++) {                                                       \
-            if (!SHADOW_SKIP(e) && SHADOW_HITS(k, t1, o))                                                   \
+            if (!(sk & 1) && !SHADOW_SKIP(e) && SHADOW_HITS(k, t1, o))                                      \
                 return true;                                                                                  \
             SHADOW_NEXT(e);                                                                                   \
+            sk >>= 1;                                                                                         \
         }                                                                                                     \
     }
     FXRT_KINDS(SHADOW_LOOP)
@@ -274,7 +402,8 @@ static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const
 }
 
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const geom_common_t *obj,
-                    bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull)
+                    bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull,
+                    uint32_t skip)
 {
     FXRT_COUNT(shadow_rays);
     bool solid = (GEOM_SOLID_KINDS >> kind) & 1u;
@@ -288,12 +417,14 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
         ray.o = l->position;
         ray.d = vec3_neg(*ldir);
         tmax = NUM_MAX - 1;
+        skip = 0; /* (the masks hold for rays from p) */
     }
     uint16_t id = obj->id;
     FXRT_IF_MODEL(uint32_t skip_tri = part ? part->tri : BVH_NONE;)
     if (SHADOW_CULL && cull) {
         shadow_ray_cull_t rc;
         rc.row = cull;
+        rc.skip = skip;
         rc.ldir = *ldir;
         rc.dist = dist;
         if (l->kind == LIGHT_DIRECTIONAL)
