@@ -142,7 +142,8 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
  * S is the plane through the light's position L that holds l: with
  * F(x) = n . (x - a) (the plane's point a, unit normal n) and R(x) =
  * m' . (x - e) (m' = m / |m|), S(x) = R(L) F(x) - F(L) R(x), normal g =
- * R(L) n - F(L) m', unit g' (rounded). Slot s's object (bounding sphere c,
+ * R(L) n - F(L) m' (formed divided by sc = max(|R(L)|, |F(L)|)), unit g'
+ * (rounded); S' is the plane through L with normal g'. Slot s's object (bounding sphere c,
  * R' = shadow_bound) is skipped when its distance from S,
  * |g' . (c - L)|, less 2^-12 of it and 2^-14 for g' and the product's
  * rounding, exceeds R' + eps + delta, where for every shading point p'
@@ -150,35 +151,51 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
  *  - every point of the shadow ray from p' lies within max(D(p'), eps)
  *    of S (D: the distance from S; S holds L, and the ray ends within
  *    eps(dist) <= 2^-15 + dist 2^-13 of L, as for the cones above);
- *  - D(p') <= delta. p' is within 2^-15.5 of the exact hit of its rounded
- *    ray (d' within 2^-15.2 of r / |r|), a point of the plane at most
- *    t 2^-15.2 from P, so at most kappa t 2^-15.2 from l (kappa =
- *    1 / sin of the angle between the plane and P) and from S; S' (of
- *    the rounded g') is within 2^-15 |x - L| of S near l. With t <= t_max
- *    (the row's two ends, whose rays meet the plane in front: the hits
- *    between lie on the segment, |p - e| convex along it) and dist <=
- *    t_max + |L - e|_1 = d_max: delta = (kappa (t_max + 1) + 1) 2^-13 +
- *    d_max 2^-13 + CULL_REL 4 (|e|_1 + t_max + |L|_1), four times the
- *    Q16.16 bound; float and double have ulps, far below it.
+ *  - D(p') <= delta (D: now from S'). p' is within 2^-15.5 of the exact
+ *    hit of its rounded ray (d' within 2^-15.2 of r / |r|), a point of the
+ *    plane at most t 2^-15.2 from P, so at most kappa t 2^-15.2 from l
+ *    (kappa = 1 / sin of the angle between the plane and P, taken from
+ *    the rounded m' less 2^-12) and from S. S' turns about L away from S
+ *    by at most ang = 2^-14 (|L - e|_1 + |L - a|_1 + 2) / (sc |g / sc|) +
+ *    2^-14 (the errors of R(L) and F(L), m''s rounding among them, and
+ *    g''s own), so a point x near l is within ang |x - L| more of S'.
+ *    With t <= t_max (the row's two ends, whose rays meet the plane in
+ *    front: the hits between lie on the segment, |p - e| convex along it)
+ *    and dist <= t_max + |L - e|_1 = d_max: delta = (kappa (t_max + 1) +
+ *    1) 2^-13 + ang d_max + CULL_REL 4 (|e|_1 + t_max + |L|_1), four times
+ *    the Q16.16 bound of the first terms; float and double have ulps, far
+ *    below it.
  * No mask where the row's rays do not all meet the plane in front (the
- * horizon crosses the row), kappa > 64, or (Q16.16) e's coordinates plus
- * t_max reach 16384 (a hit point that may saturate) or the camera is not
- * small (cam.h). Once per row: a few roots and a product per object. */
+ * horizon crosses the row), where the row lies within 1/64 rad of the
+ * plane (kappa), the light within 1/64 of it, or |g / sc| < 1/64, or
+ * (Q16.16) where e's coordinates plus t_max reach 16384 (a hit point that
+ * may saturate) or the camera is not small (cam.h). Once per row: a few
+ * roots and a product per object. */
 static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, vec3_t n, vec3_t a, vec3_t m1,
                                 num_t t_max)
 {
     vec3_t pos = L->position;
     num_t fl = vec3_dot(n, vec3_sub(pos, a)), rl = vec3_dot(m1, vec3_sub(pos, e));
-    vec3_t g = vec3_sub(vec3_scale(n, rl), vec3_scale(m1, fl));
-    vec3_t nc = vec3_cross(n, m1);
-    num_t sine = vec3_len(nc);
-    if (sine < NUM(1.0 / 64) || !vec3_normalize(&g))
+    num_t sc = num_max(num_abs(fl), num_abs(rl)); /* g / sc: no saturation */
+    num_t sine = vec3_len(vec3_cross(n, m1));
+    if (num_abs(fl) < NUM(1.0 / 64) || sine < NUM(1.0 / 64))
+        return 0; /* the light (almost) on the plane, or a row (almost) in it */
+    vec3_t g = vec3_sub(vec3_scale(n, num_div(rl, sc)), vec3_scale(m1, num_div(fl, sc)));
+    num_t gl = vec3_len(g);
+    if (gl < NUM(1.0 / 64) || !vec3_normalize(&g))
         return 0;
-    num_t kappa = num_div(NUM_ONE, sine);
-    num_t d_max = num_add(t_max, shadow_l1(vec3_sub(pos, e)));
+    num_t kappa = num_div(NUM_ONE, num_sub(sine, NUM(1.0 / 4096)));
+    num_t le = shadow_l1(vec3_sub(pos, e));
+    /* g''s direction error: rl's and fl's (m''s rounding and the
+     * products': at most 2^-14 (|L - e|_1 + |L - a|_1 + 2)) over sc |g|,
+     * and g''s own rounding. */
+    num_t ang = num_mul(num_add(num_add(le, shadow_l1(vec3_sub(pos, a))), NUM(2)), NUM(1.0 / 16384));
+    ang = num_add(num_div(ang, num_mul(sc, gl)), NUM(1.0 / 16384));
+    num_t d_max = num_add(t_max, le);
     num_t eps = num_add(NUM(1.0 / 32768), num_mul(d_max, NUM(1.0 / 8192)));
-    num_t delta = num_mul(num_add(num_mul(kappa, num_add(t_max, NUM_ONE)), num_add(NUM_ONE, d_max)), NUM(1.0 / 8192));
-    delta = num_add(delta, num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(e), t_max), shadow_l1(pos))));
+    num_t delta = num_mul(num_add(num_mul(kappa, num_add(t_max, NUM_ONE)), NUM_ONE), NUM(1.0 / 8192));
+    delta = num_add(num_add(delta, num_mul(ang, d_max)),
+                    num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(e), t_max), shadow_l1(pos))));
     num_t margin = num_add(eps, delta);
     uint32_t mask = 0;
     bool all = true;
