@@ -1013,6 +1013,141 @@ static void test_smooth(void)
 }
 #endif
 
+#if SHADOW_ROWS
+/* Shadow rows (light/shadow.c, shadow_rows_setup): a row's mask may skip a
+ * sphere only where no shadow ray from the plane's pixels on that row can
+ * meet it. Random worlds: a plane (tilted up to 0.3), a point light above
+ * it (every third a few hundredths to tenths above), three spheres and a
+ * perspective camera (10 to 150 degrees) at scales 2, 20 and 400. Each
+ * sphere is placed against the plane S through the light and the plane's
+ * line on one random row, in double (a point between that line and the
+ * light, moved off S by the radius plus 2^-6 to 2^-26 of the radius), so
+ * that it grazes the rays of that row and of the rows around it. For every
+ * pixel of every row whose ray meets the plane in front, the hit point and
+ * the shadow ray are those the renderer forms (cam_ray,
+ * geom_plane_surface, shade_hit's p, shade_lights' l and dist); wherever
+ * the mask skips a sphere that faces the point's light, the sphere's exact
+ * kernel must find no hit, unless the ray, in double, passes more than R'
+ * (the culls' bound) from it: then the kernel is wrong (counted apart). */
+static void rows_cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1], c[1] = a[2] * b[0] - a[0] * b[2], c[2] = a[0] * b[1] - a[1] * b[0];
+}
+static void test_shadow_rows(long worlds)
+{
+    static world_t w;
+    static shadow_table_t tab;
+    enum { RW = 48, RH = 36 };
+    long masked = 0, checked = 0, kernel_wrong = 0, grazing = 0;
+    double closest = 1e30; /* the least miss / scale of a masked test */
+    for (long k = 0; k < worlds; k++) {
+        double scale = k % 3 == 0 ? 2 : k % 3 == 1 ? 20 : 400;
+        fxrt_world_init(&w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+        double pa[3] = {0, 0, 0}, pn[3] = {cull_pick(-0.3, 0.3), 1, cull_pick(-0.3, 0.3)};
+        world_add_plane(&w, V(pa), V(pn), color_make(NUM_ONE, NUM_ONE, NUM_ONE));
+        double eye[3] = {cull_pick(-scale, scale), scale * cull_pick(0.3, 2), cull_pick(-scale, scale)};
+        double gaze[3] = {cull_pick(-1, 1), -cull_pick(0.2, 1), cull_pick(-1, 1)}, up[3] = {0, 1, 0};
+        cam_t rcam;
+        if (cam_setup(&rcam, CAM_PERSPECTIVE, V(eye), V(gaze), V(up), N(cull_pick(10, 150)), NUM_ONE, RW, RH) != CAM_OK)
+            continue;
+        double pos[3] = {cull_pick(-scale, scale), k % 3 == 2 ? scale * cull_pick(0.0002, 0.002) : scale * cull_pick(0.1, 2),
+                         cull_pick(-scale, scale)},
+               dir[3] = {0, -1, 0};
+        world_add_light(&w, LIGHT_POINT, V(pos), V(dir), N(90), color_make(NUM_ONE, NUM_ONE, NUM_ONE), true);
+        double n[3] = {0}, a[3] = {0}, L[3] = {0}, e[3] = {0}, fw[3] = {0}, u[3] = {0}, v[3] = {0};
+        for (int i = 0; i < 3; i++) {
+            n[i] = D(geom_axis(w.planes[0].n, i)), a[i] = D(geom_axis(w.planes[0].a, i));
+            L[i] = D(geom_axis(w.lights[0].position, i)), e[i] = D(geom_axis(rcam.e, i));
+            fw[i] = D(geom_axis(rcam.fwd, i)), u[i] = D(geom_axis(rcam.u, i)), v[i] = D(geom_axis(rcam.v, i));
+        }
+        double r[3], c[3][3];
+        for (int o = 0; o < 3; o++) {
+            /* the row's plane P (normal m), a point q of the plane's line
+             * on it (a random pixel's hit), and S's normal g */
+            int iy = 2 * (int)(spot_rand() * RH) - RH + 1, ix = 2 * (int)(spot_rand() * RW) - RW + 1;
+            double f[3], m[3], rr[3], g[3];
+            for (int i = 0; i < 3; i++)
+                f[i] = fw[i] + iy * v[i], rr[i] = f[i] + ix * u[i];
+            rows_cross(u, f, m);
+            double mm = sqrt(dot(m, m)), ea[3] = {e[0] - a[0], e[1] - a[1], e[2] - a[2]};
+            double den = dot(n, rr), s = -dot(n, ea) / den, q[3], le[3] = {L[0] - e[0], L[1] - e[1], L[2] - e[2]};
+            double la[3] = {L[0] - a[0], L[1] - a[1], L[2] - a[2]};
+            for (int i = 0; i < 3; i++)
+                q[i] = e[i] + s * rr[i], m[i] /= mm;
+            double rl = dot(m, le), fl = dot(n, la);
+            for (int i = 0; i < 3; i++)
+                g[i] = rl * n[i] - fl * m[i];
+            double gg = sqrt(dot(g, g));
+            r[o] = scale * exp(cull_pick(log(0.005), log(0.1)));
+            double t = cull_pick(0.2, 0.9), off = r[o] * (1 + ldexp(1, -6 - (int)(spot_rand() * 21))) * (spot_rand() < 0.5 ? 1 : -1);
+            for (int i = 0; i < 3; i++)
+                c[o][i] = L[i] + t * (q[i] - L[i]) + (gg > 0 ? g[i] / gg * off : 0);
+            if (!(s > 0) || fabs(c[o][0]) > 8000 || fabs(c[o][1]) > 8000 || fabs(c[o][2]) > 8000)
+                for (int i = 0; i < 3; i++)
+                    c[o][i] = L[i] + (i == 1 ? 2 * scale : 0); /* (no use: far above) */
+            world_add_sphere(&w, V(c[o]), N(r[o]), color_make(NUM_ONE, NUM_ONE, NUM_ONE));
+        }
+        for (int y = 0; y < RH; y++) {
+            shadow_rows_setup(&w, &rcam, y, &tab);
+            uint32_t mask = tab.rows[0];
+            if (!(mask & (7u << SHADOW_SLOT_SPHERE)))
+                continue;
+            for (int x = 0; x < RW; x++) {
+                ray_t ray;
+                num_t t;
+                vec3_t nv;
+                cam_ray(&rcam, x, y, &ray);
+                geom_plane_surface(&w.planes[0], &ray, &t, &nv);
+                if (t <= NUM_ZERO)
+                    continue;
+                vec3_t p = NUM_EXACT && t < num_from_int(16384) ? vec3_add(ray.o, vec3_scale_unit_small(ray.d, t))
+                                                                 : ray_at(&ray, t);
+                vec3_t lv = vec3_sub(w.lights[0].position, p), l;
+                num_t dist;
+#if FXRT_NUMBER == FXRT_Q16
+                if (!vec3_unit_len(lv, &l, &dist) || dist >= SHADE_FAR_DIST)
+                    continue;
+#else
+                dist = vec3_len(lv);
+                if (dist == NUM_ZERO)
+                    continue;
+                l = vec3_scale(lv, num_div(NUM_ONE, dist));
+#endif
+                bool inside = vec3_dotw_units(ray.d, nv) > 0;
+                if ((vec3_dotw_units(inside ? vec3_neg_unit(nv) : nv, l) <= 0))
+                    continue; /* the renderer casts no shadow ray there */
+                ray_t sray = {p, l};
+                for (int o = 0; o < 3; o++) {
+                    if (!(mask >> (SHADOW_SLOT_SPHERE + o) & 1))
+                        continue;
+                    masked++;
+                    double po[3] = {D(p.x), D(p.y), D(p.z)}, d[3] = {D(l.x), D(l.y), D(l.z)};
+                    double oc[3] = {c[o][0] - po[0], c[o][1] - po[1], c[o][2] - po[2]};
+                    double tt = fmin(fmax(dot(oc, d) / dot(d, d), 0), D(dist)), qd[3];
+                    for (int i = 0; i < 3; i++)
+                        qd[i] = oc[i] - tt * d[i];
+                    double miss = sqrt(dot(qd, qd)) - r[o];
+                    grazing += miss < scale / 64;
+                    closest = fmin(closest, miss / scale);
+                    if (!geom_sphere_occludes(&w.spheres[o], &sray, dist))
+                        continue;
+                    checked++;
+                    bool near = miss <= r[o] / 256 + 1.0 / 1024 + 1e-9 * (fabs(c[o][0]) + fabs(c[o][1]) + fabs(c[o][2]));
+                    kernel_wrong += !near;
+                    CHECK_SWEEP(!near, "shadow rows skip a sphere a ray meets: scale %g, pixel (%d, %d), miss %g", scale, x, y,
+                                miss);
+                }
+            }
+        }
+    }
+    printf("shadow rows (%s): %ld worlds, %ld masked sphere tests (%ld within 1/64 of the scale, the closest %.3g of "
+           "it), %ld kernel hits among them (all far from the sphere: kernel errors)\n",
+           NUM_NAME, worlds, masked, grazing, closest, checked);
+    CHECK_MSG(masked > worlds * 100 && grazing > worlds / 4, "%ld masked tests, %ld grazing", masked, grazing);
+    (void)kernel_wrong;
+}
+#endif
+
 int main(void)
 {
     probe_material_reset();
@@ -1025,6 +1160,9 @@ int main(void)
 #if SHADOW_CULL
     test_shadow_cull(getenv("FXRT_TEST_FULL") ? 3000000 : 300000);
     test_sphere_occludes(getenv("FXRT_TEST_FULL") ? 2000000 : 200000);
+#endif
+#if SHADOW_ROWS
+    test_shadow_rows(getenv("FXRT_TEST_FULL") ? 30000 : 3000);
 #endif
     scene_t s = course(MATERIAL_LAMBERT);
     check_frame("course, lambert", &s);
