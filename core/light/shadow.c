@@ -220,6 +220,12 @@ static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, ve
     return mask | (all && (0 FXRT_IF_PLANE(+w->n_planes)) == 1 ? SHADOW_ROW_CLEAR : 0);
 }
 
+/* Does light L get row masks (a point or spot light with shadows)? */
+__attribute__((unused)) static bool shadow_rows_light(const light_t *L)
+{
+    return L->kind != LIGHT_DIRECTIONAL && L->shadows;
+}
+
 /* Plane pl's masks on the row of rays f + ix u (|ix| <= ixe), one per light. */
 __attribute__((unused)) static void shadow_rows_plane(const world_t *w, const cam_t *cam, vec3_t f, int32_t ixe,
                                                       vec3_t m1, const geom_plane_t *pl, uint32_t *rows)
@@ -240,7 +246,7 @@ __attribute__((unused)) static void shadow_rows_plane(const world_t *w, const ca
     if (!ok || num_add(t_max, num_max(num_max(num_abs(e.x), num_abs(e.y)), num_abs(e.z))) >= NUM(16384))
         return;
     for (uint8_t i = 0; i < w->n_lights; i++)
-        if (w->lights[i].kind != LIGHT_DIRECTIONAL && w->lights[i].shadows)
+        if (shadow_rows_light(&w->lights[i]))
             rows[i] = shadow_row_mask(w, &w->lights[i], e, pl->n, pl->a, m1, t_max);
 }
 
@@ -253,7 +259,10 @@ void shadow_rows_clear(shadow_table_t *t)
 void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_table_t *t)
 {
     shadow_rows_clear(t);
-    if (!SHADOW_ROWS || cam->kind != CAM_PERSPECTIVE || (NUM_EXACT && !cam->small))
+    bool any = false; /* (a world of directional lights, or without shadows, pays nothing per row) */
+    for (uint8_t i = 0; i < w->n_lights; i++)
+        any = any || shadow_rows_light(&w->lights[i]);
+    if (!SHADOW_ROWS || !any || cam->kind != CAM_PERSPECTIVE || (NUM_EXACT && !cam->small))
         return;
     int32_t iy = 2 * y - cam->height + 1, ixe = cam->width - 1;
     vec3_t f = vec3_add(cam->fwd, vec3_scale_int(cam->v, iy));
