@@ -477,6 +477,24 @@ static bool cone_out(const shadow_cull_t *e, const vec3_t *l)
     return vec3_dotw_unit(*l, e->pt.u) > numw_from(e->pt.lim);
 #endif
 }
+/* The unit vector l towards point or spot light L from p and the
+ * distance, as shade_lights forms them (light/shade.c); false where the
+ * light loop casts no shadow ray from p (the light at p, or in Q16.16 on
+ * the far path). */
+static bool light_towards(const light_t *L, vec3_t p, vec3_t *l, num_t *dist)
+{
+    vec3_t v = vec3_sub(L->position, p);
+#if FXRT_NUMBER == FXRT_Q16
+    return vec3_unit_len(v, l, dist) && *dist < SHADE_FAR_DIST;
+#else
+    *dist = vec3_len(v);
+    if (*dist == NUM_ZERO)
+        return false;
+    *l = vec3_scale(v, num_div(NUM_ONE, *dist));
+    return true;
+#endif
+}
+
 static void test_shadow_cull(long cases)
 {
     static world_t w;
@@ -588,17 +606,8 @@ static void test_shadow_cull(long cases)
             num_t dist = NUM_MAX;
             if (L->kind == LIGHT_DIRECTIONAL) {
                 l = L->dir;
-            } else {
-                vec3_t v = vec3_sub(L->position, p);
-#if FXRT_NUMBER == FXRT_Q16
-                if (!vec3_unit_len(v, &l, &dist) || dist >= SHADE_FAR_DIST)
-                    continue;
-#else
-                dist = vec3_len(v);
-                if (dist == NUM_ZERO)
-                    continue;
-                l = vec3_scale(v, num_div(NUM_ONE, dist));
-#endif
+            } else if (!light_towards(L, p, &l, &dist)) {
+                continue;
             }
             const shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
             bool full = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, NULL, 0);
@@ -1102,17 +1111,10 @@ static void test_shadow_rows(long worlds)
                     continue;
                 vec3_t p = NUM_EXACT && t < num_from_int(16384) ? vec3_add(ray.o, vec3_scale_unit_small(ray.d, t))
                                                                  : ray_at(&ray, t);
-                vec3_t lv = vec3_sub(w.lights[0].position, p), l;
+                vec3_t l;
                 num_t dist;
-#if FXRT_NUMBER == FXRT_Q16
-                if (!vec3_unit_len(lv, &l, &dist) || dist >= SHADE_FAR_DIST)
+                if (!light_towards(&w.lights[0], p, &l, &dist))
                     continue;
-#else
-                dist = vec3_len(lv);
-                if (dist == NUM_ZERO)
-                    continue;
-                l = vec3_scale(lv, num_div(NUM_ONE, dist));
-#endif
                 bool inside = vec3_dotw_units(ray.d, nv) > 0;
                 if ((vec3_dotw_units(inside ? vec3_neg_unit(nv) : nv, l) <= 0))
                     continue; /* the renderer casts no shadow ray there */
