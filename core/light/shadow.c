@@ -279,7 +279,6 @@ void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_tab
  * in float and double, a margin for their rounding: CULL_REL |p|_1). */
 typedef struct {
     const shadow_cull_t *row;
-    uint32_t skip; /* the row's mask (shade.h), point and spot lights */
     vec3_t ldir;
     num_t dist;
     numw_t p1, p2;
@@ -339,11 +338,11 @@ enum { SHADOW_CULLS = SHADOW_CULL };
                                                : false))
 /* The next object's cull entry. */
 #define SHADOW_NEXT(e) ((e) = mode != SHADOW_CULL_NONE ? (e) + 1 : (e))
-/* A point or spot light's row mask from a kind's first slot on (bit 0:
- * that slot), zero for any other loop. */
+/* A point or spot light's row mask (shade.h, row_skip) from a kind's first
+ * slot on (bit 0: that slot), zero for any other loop. */
 enum { SHADOW_ROWS_ON = SHADOW_ROWS }; /* (as SHADOW_CULLS) */
 #define SHADOW_ROW_SKIP(base)                                                                                 \
-    (SHADOW_ROWS_ON && mode == SHADOW_CULL_PT && (base) < SHADOW_ROW_SLOTS ? rc->skip >> ((base) & 31) : 0u)
+    (SHADOW_ROWS_ON && mode == SHADOW_CULL_PT && (base) < SHADOW_ROW_SLOTS ? row_skip >> ((base) & 31) : 0u)
 
 /* world_occluded, skipping what rc rules out (mode: how). An object's cull
  * entry is read before the object (the table is small and contiguous);
@@ -358,9 +357,9 @@ enum { SHADOW_ROWS_ON = SHADOW_ROWS }; /* (as SHADOW_CULLS) */
      geom_##k##_occludes_from(o, ray, tmax, (o)->obj.id == skip_id ? skip_tri : BVH_NONE))
 static inline __attribute__((always_inline)) bool shadow_occluded_loop(const world_t *w, const ray_t *ray, num_t tmax,
                                                                       uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri), const shadow_ray_cull_t *rc,
-                                                                      int mode)
+                                                                      uint32_t row_skip, int mode)
 {
-    (void)rc, (void)mode;
+    (void)rc, (void)row_skip, (void)mode;
     /* A directional light's: a copy that no call can change, so that its
      * fields may stay in registers (0.5 % fewer instructions on the M3's
      * directional scenes; a point light's copy costs more than it saves;
@@ -399,17 +398,17 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
  * table) and, with SHADOW_CULL, one instance per kind of light. */
 static bool shadow_occluded(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri))
 {
-    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), NULL, SHADOW_CULL_NONE);
+    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), NULL, 0, SHADOW_CULL_NONE);
 }
 static bool shadow_occluded_pt(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri),
-                               const shadow_ray_cull_t *rc)
+                               const shadow_ray_cull_t *rc, uint32_t row_skip)
 {
-    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, SHADOW_CULL_PT);
+    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, row_skip, SHADOW_CULL_PT);
 }
 static bool shadow_occluded_dir(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri),
                                 const shadow_ray_cull_t *rc)
 {
-    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, SHADOW_CULL_DIR);
+    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, 0, SHADOW_CULL_DIR);
 }
 
 /* A directional light's ray: its projections (out of line: shadow_blocked's
@@ -450,12 +449,11 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
     if (SHADOW_CULL && cull) {
         shadow_ray_cull_t rc;
         rc.row = cull;
-        rc.skip = skip;
         rc.ldir = *ldir;
         rc.dist = dist;
         if (l->kind == LIGHT_DIRECTIONAL)
             return shadow_blocked_dir(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc, p, l->axes);
-        return shadow_occluded_pt(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc);
+        return shadow_occluded_pt(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc, skip);
     }
     return shadow_occluded(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri));
 }
