@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "check.h"
 #include "obj.h"
@@ -329,6 +330,17 @@ static void test_bad(void)
     /* Files: missing; over the size limit is stated in MiB. */
     CHECK(obj_load("/nonexistent/x.obj", &o, err, sizeof err) == -1 && strstr(err, "/nonexistent/x.obj: cannot open"));
     obj_free(&o);
+    /* One byte over the limit (a sparse file: no disk used): refused by
+     * its size, with the limit in MiB. */
+    char big[] = "/tmp/fxrt-test-obj-XXXXXX";
+    int fd = mkstemp(big);
+    CHECK(fd >= 0 && ftruncate(fd, (off_t)OBJ_MAX_FILE_BYTES + 1) == 0);
+    if (fd >= 0) {
+        close(fd);
+        CHECK(obj_load(big, &o, err, sizeof err) == -1 && strstr(err, "file too large (over 64 MiB)"));
+        obj_free(&o);
+        unlink(big);
+    }
 }
 
 static const char *models(void)
