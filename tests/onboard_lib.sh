@@ -1,4 +1,4 @@
-# Shared by tests/qemu.sh and tests/qemu_lit.sh (sourced, after lib.sh):
+# Shared by tests/qemu.sh, qemu_lit.sh and qemu_trace.sh (sourced, after lib.sh):
 # build tests/onboard_main.c for a batch of scenes compiled by fxrt-scenec
 # into $onb/scenes/NAME (host q16 frames in $onb/host/NAME.ppm), run it in
 # QEMU and give a verdict per scene. Needs $onb and $M (make command).
@@ -42,6 +42,31 @@ onb_batch() {
     done
     [ $rc -eq 0 ] || echo "FAIL $b batch $tag: exit $rc: $(tail -n 3 "$dir/run.log" | tr '\n' ' ')"
     return 0
+}
+# onb_fit BOARD TAG NAME...: the scenes in as few ELFs as fit the board's
+# RAM: the whole batch, and where it overflows each half in turn (TAGa,
+# TAGb; the names' order kept), down to single scenes. A build costs a
+# few seconds and a failed one as much, so halves, not single scenes
+# peeled off one at a time: on the micro:bit a batch typically overflows
+# by a few hundred bytes (one feature's state with another's), and
+# halving finds the batches that fit in two or three builds where peeling
+# took ten. Prints the verdicts, and after each batch that ran
+# "stack BOARD TAG ram_static=.. stack_used=.. stack_size=.." and
+# "batch BOARD TAG: NAMES"; a single scene that overflows gets a FAIL.
+onb_fit() {
+    local b=$1 t=$2 h
+    shift 2
+    if onb_batch "$b" "$t" "$@"; then
+        [ -f "$onb/$b-$t/run.log" ] || return 0 # (a build that failed otherwise: FAIL lines printed)
+        echo "stack $b $t $(grep -o 'ram_static=[0-9]* stack_used=[0-9]* stack_size=[0-9]*' "$onb/$b-$t/run.log")"
+        echo "batch $b $t: $*"
+    elif [ $# -eq 1 ]; then
+        echo "FAIL $b $1: does not fit the board's RAM: $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/$b-$t/build.log")"
+    else
+        h=$((($# + 1) / 2))
+        onb_fit "$b" "${t}a" "${@:1:h}"
+        onb_fit "$b" "${t}b" "${@:h+1}"
+    fi
 }
 qemu_m() { echo "$1"; }
 # twice the board's tick period in ns (firmware/firmware.mk TICK_NS_*)

@@ -5,7 +5,8 @@
 #      world, materials, ambient and lights set up at run time through
 #      core/fxrt.h as firmware/main.c does), frames streamed row by row;
 #      on the micro:bit this is every lit scene in its 16 KB of RAM (a batch
-#      that does not fit is split into one ELF per scene, which must fit);
+#      that does not fit is halved until the halves fit: onb_fit, in
+#      tests/onboard_lib.sh; a single scene must fit);
 #   2. the firmware itself (firmware/main.c, make qemu) in full-frame and
 #      streaming modes on every board, a different lit scene per run; the
 #      micro:bit's full frame is 48x36 (160x120 needs 57 KB of frame).
@@ -81,35 +82,16 @@ fw_run() { # I BOARD FB SIZE: build, run, compare; verdict lines in $out/fw-I.tx
 
 # 1. on-board batches. The three batches and the six firmware runs go two
 # at a time (two cores): each job is a build of a few seconds and a short run.
-# On the micro:bit the smooth scene runs in a batch of its own: smooth
-# shading in the batch would grow every triangle record, and the lit batch
-# would no longer fit in one ELF.
-onb_board() { # BOARD: one batch; on the micro:bit, one ELF per scene if it overflows
+# On the micro:bit the smooth scenes run in a batch of their own: smooth
+# shading grows every triangle record of the batch it is in.
+onb_board() { # BOARD: the lit scenes in as few ELFs as fit (onb_fit)
     local b=$1 n lit_names=() node_names=()
     for n in "${names[@]}"; do
         if [[ $n == smooth* ]] && [ "$b" = microbit ]; then node_names+=("$n"); else lit_names+=("$n"); fi
     done
-    : >"$out/onb-$b-nodes.txt"
-    if [ ${#node_names[@]} -eq 0 ]; then
-        :
-    elif onb_batch "$b" nodes "${node_names[@]}" >"$out/onb-$b-nodes.txt"; then
-        echo "stack $b $(grep -o 'stack_used=[0-9]*' "$onb/$b-nodes/run.log")" >>"$out/onb-$b-nodes.txt"
-    else
-        for n in "${node_names[@]}"; do echo "FAIL $b $n: does not fit the board's RAM" >>"$out/onb-$b-nodes.txt"; done
-    fi
-    if onb_batch "$b" all "${lit_names[@]}" >"$out/onb-$b.txt"; then
-        echo "stack $b $(grep -o 'stack_used=[0-9]*' "$onb/$b-all/run.log")" >>"$out/onb-$b.txt"
-        cat "$out/onb-$b-nodes.txt" >>"$out/onb-$b.txt"
-        return
-    fi
-    cp "$out/onb-$b-nodes.txt" "$out/onb-$b.txt"
-    for n in "${lit_names[@]}"; do
-        if onb_batch "$b" "s-$n" "$n" >>"$out/onb-$b.txt"; then
-            echo "stack $b $(grep -o 'stack_used=[0-9]*' "$onb/$b-s-$n/run.log")" >>"$out/onb-$b.txt"
-        else
-            echo "FAIL $b $n: does not fit the board's RAM: $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/$b-s-$n/build.log")" >>"$out/onb-$b.txt"
-        fi
-    done
+    : >"$out/onb-$b.txt"
+    [ ${#node_names[@]} -eq 0 ] || onb_fit "$b" nodes "${node_names[@]}" >>"$out/onb-$b.txt"
+    onb_fit "$b" all "${lit_names[@]}" >>"$out/onb-$b.txt"
 }
 jobs_=()
 for b in $BOARDS; do jobs_+=("onb $b"); done

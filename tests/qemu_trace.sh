@@ -10,9 +10,10 @@
 #      samples 4, abb10 and abb8 at 2, abb7 at 2 adaptive: the sampling
 #      pass from runs), at $SIZE, frames streamed row by row. On the
 #      micro:bit (16 KB) the scenes at samples 3 or more have ELFs of
-#      their own (one per render width); a batch that still overflows has its heaviest scene (the widest
-#      render state, then the deepest) moved to an ELF of its own, which
-#      must fit;
+#      their own (one per render width); a batch that still overflows is
+#      halved until the halves fit (tests/onboard_lib.sh, onb_fit; the
+#      scenes heaviest first: the widest render state, then the deepest),
+#      and a single scene must fit;
 #   2. the firmware itself (firmware/main.c, make qemu):
 #      - the deepest scene, scenes/stress/trace-mirrors.scene (depth 16),
 #        on every board (full frame on the MPS2 boards, streaming on the
@@ -82,40 +83,11 @@ check "glass-s2a: compiled with FXRT_ADAPTIVE 1" test "$(cfg glass-s2a FXRT_ADAP
 check "trace-mirrors: compiled with FXRT_MAX_DEPTH 16" test "$(cfg trace-mirrors FXRT_MAX_DEPTH)" = 16
 
 # 1. on-board batches, scenes heaviest first (render width, then depth),
-# so that an overflow peels off the scene most likely to be the cause.
+# so that halving a batch that overflows (onb_fit, tests/onboard_lib.sh)
+# keeps the heavy scenes together and the light half fits.
 sorted=($(for n in "${names[@]}"; do
     echo "$(cfg "$n" FXRT_RENDER_MAX_WIDTH) $(cfg "$n" FXRT_MAX_DEPTH) $n"
 done | sort -k1,1nr -k2,2nr -k3 | awk '{ print $3 }'))
-onb_group() { # BOARD TAG NAME...: one batch, peeling off the heaviest on
-    # overflow; verdicts on stdout
-    local b=$1 t=$2 k=0 first rc
-    shift 2
-    local rest=("$@")
-    while [ ${#rest[@]} -gt 0 ]; do
-        onb_batch "$b" "${t}b$k" "${rest[@]}"
-        rc=$?
-        if [ $rc -eq 0 ]; then
-            echo "stack $b ${t}b$k $(grep -o 'ram_static=[0-9]* stack_used=[0-9]* stack_size=[0-9]*' "$onb/$b-${t}b$k/run.log")"
-            echo "batch $b ${t}b$k: ${rest[*]}"
-            return
-        fi
-        first=${rest[0]}
-        rest=("${rest[@]:1}")
-        if [ ${#rest[@]} -eq 0 ]; then
-            echo "FAIL $b $first: does not fit the board's RAM: $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/$b-${t}b$k/build.log")"
-            return
-        fi
-        k=$((k + 1))
-        # the heaviest alone
-        if onb_batch "$b" "${t}b$k" "$first"; then
-            echo "stack $b ${t}b$k $(grep -o 'ram_static=[0-9]* stack_used=[0-9]* stack_size=[0-9]*' "$onb/$b-${t}b$k/run.log")"
-            echo "batch $b ${t}b$k: $first"
-        else
-            echo "FAIL $b $first: does not fit the board's RAM alone: $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/$b-${t}b$k/build.log")"
-        fi
-        k=$((k + 1))
-    done
-}
 
 # 2. firmware/main.c: "BOARD FB NUMBER SIZE SCENE" per run.
 V=$out/variants
@@ -160,11 +132,11 @@ for b in $BOARDS; do
         wide=$((2 * ${SIZE%x*}))
         for w in $(for n in "${sorted[@]}"; do cfg "$n" FXRT_RENDER_MAX_WIDTH; done | sort -nru); do
             [ "$w" -gt $wide ] &&
-                jobs_+=("onb $b w$w- $(for n in "${sorted[@]}"; do [ "$(cfg "$n" FXRT_RENDER_MAX_WIDTH)" = "$w" ] && echo "$n"; done | tr '\n' ' ')")
+                jobs_+=("onb $b w$w $(for n in "${sorted[@]}"; do [ "$(cfg "$n" FXRT_RENDER_MAX_WIDTH)" = "$w" ] && echo "$n"; done | tr '\n' ' ')")
         done
-        jobs_+=("onb $b n- $(for n in "${sorted[@]}"; do [ "$(cfg "$n" FXRT_RENDER_MAX_WIDTH)" -le $wide ] && echo "$n"; done | tr '\n' ' ')")
+        jobs_+=("onb $b n $(for n in "${sorted[@]}"; do [ "$(cfg "$n" FXRT_RENDER_MAX_WIDTH)" -le $wide ] && echo "$n"; done | tr '\n' ' ')")
     else
-        jobs_+=("onb $b - ${sorted[*]}")
+        jobs_+=("onb $b all ${sorted[*]}")
     fi
 done
 for i in "${!fw_runs[@]}"; do jobs_+=("fw $i ${fw_runs[$i]}"); done
@@ -172,9 +144,9 @@ running=0
 for k in "${!jobs_[@]}"; do
     set -- ${jobs_[$k]}
     if [ "$1" = onb ]; then
-        b=$2 t=${3#-}
+        b=$2 t=$3
         shift 3
-        onb_group "$b" "$t" "$@" >"$out/onb-$b-$k.txt" &
+        onb_fit "$b" "$t" "$@" >"$out/onb-$b-$k.txt" &
     else
         fw_run "$2" "$3" "$4" "$5" "$6" "$7" >"$out/fw-$2.txt" &
     fi
