@@ -3,13 +3,14 @@
 # that cannot block a plane's shadow rays) must not change a frame:
 # tests/order.sh renders every scene with the host tool and with the host
 # tool built again with both switched off (FXRT_ABLATE_ORDER,
-# FXRT_ABLATE_SHADOW_ROWS), in every number type. Included by the top
+# FXRT_ABLATE_SHADOW_ROWS), in every number type (built without -g:
+# only its frames are read). Included by the top
 # Makefile.
 ORDER_FXRT := $(BUILD)/ablated/fxrt
 
 $(ORDER_FXRT): $(wildcard core/*.h core/*/*.c core/*/*.h host/*.c host/*.h)
 	@echo "  MAKE    $@ (FXRT_ABLATE_ORDER, FXRT_ABLATE_SHADOW_ROWS)"
-	$(Q)$(MAKE) --no-print-directory -s BUILD=$(BUILD)/ablated HOSTCFLAGS='$(HOSTCFLAGS) -DFXRT_ABLATE="(FXRT_ABLATE_ORDER|FXRT_ABLATE_SHADOW_ROWS)"' $(BUILD)/ablated/fxrt
+	$(Q)$(MAKE) --no-print-directory -s BUILD=$(BUILD)/ablated HOSTCFLAGS='$(filter-out -g,$(HOSTCFLAGS)) -DFXRT_ABLATE="(FXRT_ABLATE_ORDER|FXRT_ABLATE_SHADOW_ROWS)"' $(BUILD)/ablated/fxrt
 
 TEST_PREREQ  += $(ORDER_FXRT)
 SUITES_EXTRA += tests/order.sh
