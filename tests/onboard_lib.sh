@@ -52,7 +52,8 @@ onb_batch() {
 # halving finds the batches that fit in two or three builds where peeling
 # took ten. Prints the verdicts, and after each batch that ran
 # "stack BOARD TAG ram_static=.. stack_used=.. stack_size=.." and
-# "batch BOARD TAG: NAMES"; a single scene that overflows gets a FAIL.
+# "batch BOARD TAG: NAMES"; a single scene that overflows gets a FAIL
+# (ONB_TOO_BIG=SKIP: a SKIP, where a scene may be too large for a board).
 onb_fit() {
     local b=$1 t=$2 h
     shift 2
@@ -61,7 +62,7 @@ onb_fit() {
         echo "stack $b $t $(grep -o 'ram_static=[0-9]* stack_used=[0-9]* stack_size=[0-9]*' "$onb/$b-$t/run.log")"
         echo "batch $b $t: $*"
     elif [ $# -eq 1 ]; then
-        echo "FAIL $b $1: does not fit the board's RAM: $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/$b-$t/build.log")"
+        echo "${ONB_TOO_BIG:-FAIL} $b $1: does not fit the board's RAM: $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/$b-$t/build.log")"
     else
         h=$((($# + 1) / 2))
         onb_fit "$b" "${t}a" "${@:1:h}"

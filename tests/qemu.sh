@@ -106,49 +106,26 @@ for b in $STRESS_BOARDS; do
 done
 wait
 for b in $STRESS_BOARDS; do cat "$onb/verdicts-$b.txt" >>"$onb/verdicts.txt"; done
-# micro:bit: greedy batches in the scenes' order, estimating RAM per batch as
-# render_t and world entries per object of the largest capacities (about
-# 1.1 KB each on the M0), 7 bytes per column (owner + row) and 4 KB of
-# stack; the linker has the last word.
-ONB_MB_BUDGET=11500
-batch=() bp=0 bs=0 bt=0 bb=0 bw=0 k=0
-onb_single() {
-    local n=$1 w
-    # Row buffers alone (at least 7 B per column) beyond 16 KB: not built.
+# micro:bit: the stress scenes in as few ELFs as fit its 16 KB (onb_fit,
+# tests/onboard_lib.sh: a batch that overflows is halved until the halves
+# fit; the linker decides). A scene whose row buffers alone (at least 7 B
+# per column) exceed 16 KB is not built; one that does not fit on its own
+# is skipped with the linker's reason. Both are counted.
+mb=()
+for n in "${stress[@]}"; do
     w=$(cfgv $n FXRT_RENDER_MAX_WIDTH)
     if [ $((7 * w)) -gt 16384 ]; then
         echo "SKIP microbit $n: does not fit 16 KB of RAM ($w columns need more than $((7 * w)) B of row buffers; not built)" \
             >>"$onb/verdicts.txt"
-        return
+    else
+        mb+=("$n")
     fi
-    onb_batch microbit "s-$n" "$n" >>"$onb/verdicts.txt" && return
-    echo "SKIP microbit $n: does not fit 16 KB of RAM ($(cfgv $n SCENE_OBJECTS) objects, $(cfgv $n FXRT_RENDER_MAX_WIDTH)" \
-        "columns; $(grep -o "region .RAM' overflowed by [0-9]* bytes" "$onb/microbit-s-$n/build.log"))" >>"$onb/verdicts.txt"
-}
-flush_mb() {
-    if [ ${#batch[@]} -eq 1 ]; then
-        onb_single "${batch[0]}"
-    elif [ ${#batch[@]} -gt 1 ]; then
-        k=$((k + 1))
-        local m
-        onb_batch microbit b$k "${batch[@]}" >>"$onb/verdicts.txt" || for m in "${batch[@]}"; do onb_single "$m"; done
-    fi
-    batch=() bp=0 bs=0 bt=0 bb=0 bw=0
-}
-for n in "${stress[@]}"; do
-    cfg_read "$onb/scenes/$n/scene_config.h"
-    p=${CFG_FXRT_MAX_PLANES:-} s=${CFG_FXRT_MAX_SPHERES:-} t=${CFG_FXRT_MAX_TRIANGLES:-}
-    bx=${CFG_FXRT_MAX_BOXES:-} w=${CFG_FXRT_RENDER_MAX_WIDTH:-}
-    np=$((p > bp ? p : bp)) ns=$((s > bs ? s : bs)) nt=$((t > bt ? t : bt)) nb=$((bx > bb ? bx : bb))
-    nw=$((w > bw ? w : bw))
-    if [ ${#batch[@]} -gt 0 ] && [ $(((np + ns + nt + nb) * 1100 + 7 * nw)) -gt $ONB_MB_BUDGET ]; then
-        flush_mb
-        np=$p ns=$s nt=$t nb=$bx nw=$w
-    fi
-    batch+=("$n")
-    bp=$np bs=$ns bt=$nt bb=$nb bw=$nw
 done
-flush_mb
+if [ ${#mb[@]} -gt 0 ]; then
+    ONB_TOO_BIG=SKIP onb_fit microbit b "${mb[@]}" >"$onb/batches-microbit.txt"
+    grep -E '^(stack|batch) ' "$onb/batches-microbit.txt"
+    grep -vE '^(stack|batch) ' "$onb/batches-microbit.txt" >>"$onb/verdicts.txt"
+fi
 if [ ${#seeds[@]} -gt 0 ]; then
     for b in $BOARDS; do
         onb_batch $b seeds "${seeds[@]}" >"$onb/seed-verdicts-$b.txt"
