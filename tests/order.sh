@@ -8,11 +8,12 @@
 # are rendered again with `samples 2 adaptive` and lights on every
 # object: the adaptive sampler's one ray per pixel takes the shading
 # constants of the object it hits from the sorted records
-# (render_obj_of), which these frames check. And 40 random scenes of
+# (render_obj_of), which these frames check. And 60 random scenes of
 # shadows on planes (a floor or a tilted plane, 2 to 7 spheres, boxes and
-# triangles, 1 or 2 point or spot lights with shadows, some near the
-# plane, some far, a perspective camera of 10 to 150 degrees, seen from
-# near or far): the rows' margins where shadows graze them.
+# triangles, 1 or 2 lights with shadows: point or spot lights, some near
+# the plane, some far, in the first 40; directional lights, some grazing
+# the plane, in the last 20; a perspective camera of 10 to 150 degrees,
+# seen from near or far): the rows' margins where shadows graze them.
 set -u
 . "$(dirname "$0")/lib.sh"
 NOORDER=${NOORDER:-$BUILD/ablated/fxrt}
@@ -39,7 +40,7 @@ for f in scenes/bench/mixed16.scene scenes/bench/cover.scene; do
 done
 # Random shadows on planes (awk's rand with a fixed seed per scene: the
 # same scenes on every run of this awk).
-for seed in $(seq 1 40); do
+for seed in $(seq 1 60); do
     name=rows-$seed
     awk -v seed="$seed" 'function u(a, b) { return a + (b - a) * rand() }
         function p3(s) { return sprintf("%.4f %.4f %.4f", u(-s, s), u(-s, s), u(-s, s)) }
@@ -50,7 +51,9 @@ for seed in $(seq 1 40); do
             printf "camera perspective eye %.4f %.4f %.4f gaze %.4f %.4f %.4f up 0 1 0 fov %.2f\n", u(-s, s), h, u(-s, s), u(-1, 1), -u(0.2, 1), u(-1, 1), u(10, 150)
             print "ambient 0.2 0.2 0.2"
             nl = 1 + (seed % 3 == 0)
-            for (i = 0; i < nl; i++) {
+            for (i = 0; i < nl && seed > 40; i++)
+                printf "light directional direction %.4f %.4f %.4f color 0.7 0.7 0.7 shadows on\n", u(-1, 1), rand() < 0.3 ? -u(0.02, 0.15) : -u(0.2, 1), u(-1, 1)
+            for (i = 0; i < nl && seed <= 40; i++) {
                 lh = rand() < 0.3 ? u(0.05, 0.5) : u(0.5, 3) * s
                 if (rand() < 0.7) printf "light point position %.4f %.4f %.4f color 0.7 0.7 0.7 shadows on\n", u(-s, s), lh, u(-s, s)
                 else printf "light spot position %.4f %.4f %.4f direction %.4f -1 %.4f angle %.1f color 0.7 0.7 0.7 shadows on\n", u(-s, s), lh, u(-s, s), u(-0.5, 0.5), u(-0.5, 0.5), u(20, 80)

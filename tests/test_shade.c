@@ -483,6 +483,11 @@ static bool cone_out(const shadow_cull_t *e, const vec3_t *l)
  * the far path). */
 static bool light_towards(const light_t *L, vec3_t p, vec3_t *l, num_t *dist)
 {
+    if (L->kind == LIGHT_DIRECTIONAL) {
+        *l = L->dir; /* normalised once, in world_add_light */
+        *dist = NUM_MAX;
+        return true;
+    }
     vec3_t v = vec3_sub(L->position, p);
 #if FXRT_NUMBER == FXRT_Q16
     return vec3_unit_len(v, l, dist) && *dist < SHADE_FAR_DIST;
@@ -603,12 +608,9 @@ static void test_shadow_cull(long cases)
             if (fabs(pp[0]) > 30000 || fabs(pp[1]) > 30000 || fabs(pp[2]) > 30000)
                 continue;
             vec3_t p = V(pp), l;
-            num_t dist = NUM_MAX;
-            if (L->kind == LIGHT_DIRECTIONAL) {
-                l = L->dir;
-            } else if (!light_towards(L, p, &l, &dist)) {
+            num_t dist;
+            if (!light_towards(L, p, &l, &dist))
                 continue;
-            }
             const shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
             bool full = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, NULL, 0);
             bool culled = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, row, 0);
@@ -1047,7 +1049,7 @@ static void test_shadow_rows(long worlds)
     static world_t w;
     static shadow_table_t tab;
     enum { RW = 48, RH = 36 };
-    long masked = 0, checked = 0, kernel_wrong = 0, grazing = 0;
+    long masked = 0, checked = 0, kernel_wrong = 0, grazing = 0, masked_dir = 0, grazing_dir = 0;
     double closest = 1e30; /* the least miss / scale of a masked test */
     for (long k = 0; k < worlds; k++) {
         double scale = k % 3 == 0 ? 2 : k % 3 == 1 ? 20 : 400;
@@ -1059,14 +1061,19 @@ static void test_shadow_rows(long worlds)
         cam_t rcam;
         if (cam_setup(&rcam, CAM_PERSPECTIVE, V(eye), V(gaze), V(up), N(cull_pick(10, 150)), NUM_ONE, RW, RH) != CAM_OK)
             continue;
+        /* Every fourth world a directional light (every third of those
+         * grazing the plane), the others a point light. */
+        bool dirl = k % 4 == 3;
         double pos[3] = {cull_pick(-scale, scale), k % 3 == 2 ? scale * cull_pick(0.0002, 0.002) : scale * cull_pick(0.1, 2),
                          cull_pick(-scale, scale)},
-               dir[3] = {0, -1, 0};
-        world_add_light(&w, LIGHT_POINT, V(pos), V(dir), N(90), color_make(NUM_ONE, NUM_ONE, NUM_ONE), true);
-        double n[3] = {0}, a[3] = {0}, L[3] = {0}, e[3] = {0}, fw[3] = {0}, u[3] = {0}, v[3] = {0};
+               dir[3] = {cull_pick(-1, 1), k % 3 == 2 ? -cull_pick(0.01, 0.1) : -cull_pick(0.2, 1), cull_pick(-1, 1)};
+        world_add_light(&w, dirl ? LIGHT_DIRECTIONAL : LIGHT_POINT, V(pos), V(dir), N(90),
+                        color_make(NUM_ONE, NUM_ONE, NUM_ONE), true);
+        double n[3] = {0}, a[3] = {0}, L[3] = {0}, ld[3] = {0}, e[3] = {0}, fw[3] = {0}, u[3] = {0}, v[3] = {0};
         for (int i = 0; i < 3; i++) {
             n[i] = D(geom_axis(w.planes[0].n, i)), a[i] = D(geom_axis(w.planes[0].a, i));
             L[i] = D(geom_axis(w.lights[0].position, i)), e[i] = D(geom_axis(rcam.e, i));
+            ld[i] = D(geom_axis(w.lights[0].dir, i)); /* (towards the light) */
             fw[i] = D(geom_axis(rcam.fwd, i)), u[i] = D(geom_axis(rcam.u, i)), v[i] = D(geom_axis(rcam.v, i));
         }
         double r[3], c[3][3];
@@ -1083,14 +1090,17 @@ static void test_shadow_rows(long worlds)
             double la[3] = {L[0] - a[0], L[1] - a[1], L[2] - a[2]};
             for (int i = 0; i < 3; i++)
                 q[i] = e[i] + s * rr[i], m[i] /= mm;
-            double rl = dot(m, le), fl = dot(n, la);
+            /* S: through L and the line (a point light); through the line
+             * along ld (a directional one) */
+            double rl = dirl ? dot(m, ld) : dot(m, le), fl = dirl ? dot(n, ld) : dot(n, la);
             for (int i = 0; i < 3; i++)
                 g[i] = rl * n[i] - fl * m[i];
             double gg = sqrt(dot(g, g));
             r[o] = scale * exp(cull_pick(log(0.005), log(0.1)));
             double t = cull_pick(0.2, 0.9), off = r[o] * (1 + ldexp(1, -6 - (int)(spot_rand() * 21))) * (spot_rand() < 0.5 ? 1 : -1);
+            double toward = scale * cull_pick(0.05, 2); /* (directional: along the ray from q) */
             for (int i = 0; i < 3; i++)
-                c[o][i] = L[i] + t * (q[i] - L[i]) + (gg > 0 ? g[i] / gg * off : 0);
+                c[o][i] = (dirl ? q[i] + toward * ld[i] : L[i] + t * (q[i] - L[i])) + (gg > 0 ? g[i] / gg * off : 0);
             if (!(s > 0) || fabs(c[o][0]) > 8000 || fabs(c[o][1]) > 8000 || fabs(c[o][2]) > 8000)
                 for (int i = 0; i < 3; i++)
                     c[o][i] = L[i] + (i == 1 ? 2 * scale : 0); /* (no use: far above) */
@@ -1123,6 +1133,7 @@ static void test_shadow_rows(long worlds)
                     if (!(mask >> (SHADOW_SLOT_SPHERE + o) & 1))
                         continue;
                     masked++;
+                    masked_dir += dirl;
                     double po[3] = {D(p.x), D(p.y), D(p.z)}, d[3] = {D(l.x), D(l.y), D(l.z)};
                     double oc[3] = {c[o][0] - po[0], c[o][1] - po[1], c[o][2] - po[2]};
                     double tt = fmin(fmax(dot(oc, d) / dot(d, d), 0), D(dist)), qd[3];
@@ -1130,6 +1141,7 @@ static void test_shadow_rows(long worlds)
                         qd[i] = oc[i] - tt * d[i];
                     double miss = sqrt(dot(qd, qd)) - r[o];
                     grazing += miss < scale / 64;
+                    grazing_dir += dirl && miss < scale / 64;
                     closest = fmin(closest, miss / scale);
                     if (!geom_sphere_occludes(&w.spheres[o], &sray, dist))
                         continue;
@@ -1143,9 +1155,12 @@ static void test_shadow_rows(long worlds)
         }
     }
     printf("shadow rows (%s): %ld worlds, %ld masked sphere tests (%ld within 1/64 of the scale, the closest %.3g of "
-           "it), %ld kernel hits among them (all far from the sphere: kernel errors)\n",
-           NUM_NAME, worlds, masked, grazing, closest, checked);
+           "it; of a directional light: %ld, %ld within 1/64), %ld kernel hits among them (all far from the sphere: "
+           "kernel errors)\n",
+           NUM_NAME, worlds, masked, grazing, closest, masked_dir, grazing_dir, checked);
     CHECK_MSG(masked > worlds * 100 && grazing > worlds / 4, "%ld masked tests, %ld grazing", masked, grazing);
+    CHECK_MSG(masked_dir > worlds * 25 && grazing_dir > worlds / 16, "directional: %ld masked tests, %ld grazing",
+              masked_dir, grazing_dir);
     (void)kernel_wrong;
 }
 #endif

@@ -242,7 +242,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
         const shadow_cull_row_t *cull = NULL;
         uint32_t skip = 0;
 #endif
-        if (L->shadows && !(skip & SHADOW_ROW_CLEAR && dist < SHADE_FAR_DIST) &&
+        if (L->shadows && !(skip & SHADOW_ROW_CLEAR && (dist < SHADE_FAR_DIST || L->kind == LIGHT_DIRECTIONAL)) &&
             shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, &p, L, &l, dist, cull, skip))
             continue;
 #endif

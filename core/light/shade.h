@@ -89,9 +89,10 @@ static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
 typedef shadow_cull_t shadow_cull_row_t; /* a light's row of the table */
 
 /* Shadow rows (light/shadow.c, shadow_rows_setup): on an image row, the
- * points a plane shows lie on one line, and the shadow rays from them to a
- * point or spot light lie in one plane through the light, up to the
- * rounding of the camera ray, the hit point and the ray. A bounded object
+ * points a plane shows lie on one line, and the shadow rays from them lie
+ * in one plane, up to the rounding of the camera ray, the hit point and
+ * the ray: through a point or spot light, or along a directional light's
+ * direction. A bounded object
  * whose bounding sphere lies farther from that plane than those margins
  * blocks none of them: bit s of the row's mask (plane j, light i) skips
  * slot s's object for every pixel of plane j on the row (slots 0..30),

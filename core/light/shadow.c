@@ -139,7 +139,9 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
  * camera ray is along r(x) = f + ix u with f = fwd + iy v (cam.h), so the
  * rays of the row lie in the plane P through the eye e with normal
  * m = u x f, and a plane's points on the row on its line l = plane ∩ P.
- * S is the plane through the light's position L that holds l: with
+ * For a point or spot light (shadow_row_mask; a directional light's is
+ * shadow_row_mask_dir, below), S is the plane through the light's
+ * position L that holds l: with
  * F(x) = n . (x - a) (the plane's point a, unit normal n) and R(x) =
  * m' . (x - e) (m' = m / |m|), S(x) = R(L) F(x) - F(L) R(x), normal g =
  * R(L) n - F(L) m' (formed divided by sc = max(|R(L)|, |F(L)|)), unit g'
@@ -171,6 +173,44 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
  * (Q16.16) where e's coordinates plus t_max reach 16384 (a hit point that
  * may saturate) or the camera is not small (cam.h). Once per row: a few
  * roots and a product per object. */
+/* The mask of one row, plane and light: bit s for slot s's object when
+ * SHADOW_ROW_FAR(c, r) (its bounding sphere c, r; the caller's), SHADOW_ROW_CLEAR when every
+ * bounded object is skipped and the plane is the world's only one (no
+ * other plane can block the light either). */
+#define SHADOW_ROW_MASK()                                                                                     \
+    uint32_t mask = 0;                                                                                        \
+    bool all = true;                                                                                          \
+    vec3_t c;                                                                                                 \
+    num_t r;                                                                                                  \
+    FXRT_KINDS(SHADOW_ROW_SLOTS_OF)                                                                           \
+    (void)c, (void)r;                                                                                         \
+    return mask | (all && (0 FXRT_IF_PLANE(+w->n_planes)) == 1 ? SHADOW_ROW_CLEAR : 0)
+#define SHADOW_ROW_SLOTS_OF(K, k, ks, cap, solid, bounded, ...)                                               \
+    FXRT_WHEN(bounded, FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) {                                \
+        int s = SHADOW_SLOT_##K + i;                                                                          \
+        geom_##k##_around(&w->ks[i], &c, &r);                                                                 \
+        bool far = s < SHADOW_ROW_SLOTS && SHADOW_ROW_FAR(c, r);                                              \
+        if (far)                                                                                              \
+            mask |= 1u << s;                                                                                  \
+        all = all && far;                                                                                     \
+    }))
+/* A point or spot light's test: |g' . (c - L)|, less 2^-12 of itself and
+ * 2^-14, beyond R' + eps + delta (lim). */
+static inline bool shadow_row_far_pt(num_t dc, num_t lim)
+{
+    return num_sub(num_sub(dc, num_mul(dc, NUM(1.0 / 4096))), NUM(1.0 / 16384)) > lim;
+}
+
+/* A directional light's limit for |S(c)|: (R' + delta) (|g| + 2^-13)
+ * (Rd = R' + delta) and S's own error, 2^-13 (|c - e|_1 + |F(e)|) + 2^-14,
+ * with CULL_REL 4 (|c|_1 + |e|_1 + |F(e)|) for float and double. */
+static inline num_t shadow_row_lim_dir(vec3_t c, vec3_t e, num_t fa, num_t el, num_t rd, num_t gup)
+{
+    num_t own = num_add(num_mul(num_add(shadow_l1(vec3_sub(c, e)), fa), NUM(1.0 / 8192)), NUM(1.0 / 16384));
+    num_t rel = num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(c), el), fa));
+    return num_add(num_add(num_mul(rd, gup), own), rel);
+}
+
 static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, vec3_t n, vec3_t a, vec3_t m1,
                                 num_t t_max)
 {
@@ -197,33 +237,52 @@ static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, ve
     delta = num_add(num_add(delta, num_mul(ang, d_max)),
                     num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(e), t_max), shadow_l1(pos))));
     num_t margin = num_add(eps, delta);
-    uint32_t mask = 0;
-    bool all = true;
-    vec3_t c;
-    num_t r;
-#define SHADOW_ROW_SLOTS_OF(K, k, ks, cap, solid, bounded, ...)                                               \
-    FXRT_WHEN(bounded, FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) {                                \
-        int s = SHADOW_SLOT_##K + i;                                                                          \
-        geom_##k##_around(&w->ks[i], &c, &r);                                                                 \
-        vec3_t v = vec3_sub(c, pos);                                                                          \
-        num_t dc = num_abs(vec3_dot(g, v));                                                                   \
-        bool far = s < SHADOW_ROW_SLOTS && shadow_l1(v) < NUM(16384) &&                                       \
-                   num_sub(num_sub(dc, num_mul(dc, NUM(1.0 / 4096))), NUM(1.0 / 16384)) >                     \
-                       num_add(shadow_bound(c, r, L), margin);                                                \
-        if (far)                                                                                              \
-            mask |= 1u << s;                                                                                  \
-        all = all && far;                                                                                     \
-    }))
-    FXRT_KINDS(SHADOW_ROW_SLOTS_OF)
-#undef SHADOW_ROW_SLOTS_OF
-    (void)c, (void)r;
-    return mask | (all && (0 FXRT_IF_PLANE(+w->n_planes)) == 1 ? SHADOW_ROW_CLEAR : 0);
+#define SHADOW_ROW_FAR(c, r)                                                                                  \
+    (shadow_l1(vec3_sub(c, pos)) < NUM(16384) &&                                                              \
+     shadow_row_far_pt(num_abs(vec3_dot(g, vec3_sub(c, pos))), num_add(shadow_bound(c, r, L), margin)))
+    SHADOW_ROW_MASK();
+#undef SHADOW_ROW_FAR
 }
 
-/* Does light L get row masks (a point or spot light with shadows)? */
+/* A directional light's mask (docs/ACCURACY.md, "Shadow rows"). Its
+ * shadow rays run along the light's unit direction l itself, and
+ * S(x) = (m' . l) F(x) - (n . l) R(x) is constant along each of them
+ * (its gradient g = (m' . l) n - (n . l) m' is orthogonal to l) and zero
+ * on the row's line: every point of the ray from p' has p''s distance
+ * from S, |S(p')| / |g| <= delta (the hit point's term of the point
+ * light's delta), however far it goes. S(c) = g . (c - e) + (m' . l) F(e),
+ * formed in wide products from g unnormalised (|g| <= 2: nothing
+ * saturates), is within 2^-13 (|c - e|_1 + |F(e)|) + 2^-14 of the exact
+ * value (g within 2^-13.8: m''s and the two dot products' rounding), so
+ * the object is skipped when |S(c)| exceeds that, plus the float and
+ * double rounding, plus (R' + delta) (|g| + 2^-13). */
+static uint32_t shadow_row_mask_dir(const world_t *w, const light_t *L, vec3_t e, num_t fe, vec3_t n, vec3_t m1,
+                                    num_t t_max)
+{
+    vec3_t l = L->dir;
+    num_t a1 = vec3_dot(m1, l), b1 = vec3_dot(n, l);
+    num_t sine = vec3_len(vec3_cross(n, m1));
+    if (sine < NUM(1.0 / 64))
+        return 0; /* a row (almost) in the plane */
+    vec3_t g = vec3_sub(vec3_scale(n, a1), vec3_scale(m1, b1));
+    num_t gup = num_add(vec3_len(g), NUM(1.0 / 8192));
+    num_t kappa = num_div(NUM_ONE, num_sub(sine, NUM(1.0 / 4096)));
+    num_t el = shadow_l1(e), fa = num_abs(fe);
+    num_t delta = num_add(num_mul(num_add(num_mul(kappa, num_add(t_max, NUM_ONE)), NUM_ONE), NUM(1.0 / 8192)),
+                          num_mul(num_mul_int(CULL_REL, 4), num_add(el, t_max)));
+    numw_t off = numw_mul(a1, fe); /* (m' . l) F(e) */
+#define SHADOW_ROW_FAR(c, r)                                                                                  \
+    (shadow_l1(vec3_sub(c, e)) < NUM(16384) &&                                                                \
+     numw_abs_gt(numw_add(vec3_dotw(g, vec3_sub(c, e)), off),                                                 \
+                 numw_from(shadow_row_lim_dir(c, e, fa, el, num_add(shadow_bound(c, r, L), delta), gup))))
+    SHADOW_ROW_MASK();
+#undef SHADOW_ROW_FAR
+}
+
+/* Does light L get row masks (a light with shadows)? */
 __attribute__((unused)) static bool shadow_rows_light(const light_t *L)
 {
-    return L->kind != LIGHT_DIRECTIONAL && L->shadows;
+    return L->shadows;
 }
 
 /* Plane pl's masks on the row of rays f + ix u (|ix| <= ixe), one per light. */
@@ -245,9 +304,12 @@ __attribute__((unused)) static void shadow_rows_plane(const world_t *w, const ca
     }
     if (!ok || num_add(t_max, num_max(num_max(num_abs(e.x), num_abs(e.y)), num_abs(e.z))) >= NUM(16384))
         return;
-    for (uint8_t i = 0; i < w->n_lights; i++)
-        if (shadow_rows_light(&w->lights[i]))
-            rows[i] = shadow_row_mask(w, &w->lights[i], e, pl->n, pl->a, m1, t_max);
+    for (uint8_t i = 0; i < w->n_lights; i++) {
+        const light_t *L = &w->lights[i];
+        if (shadow_rows_light(L))
+            rows[i] = L->kind == LIGHT_DIRECTIONAL ? shadow_row_mask_dir(w, L, e, fe, pl->n, m1, t_max)
+                                                   : shadow_row_mask(w, L, e, pl->n, pl->a, m1, t_max);
+    }
 }
 
 void shadow_rows_clear(shadow_table_t *t)
@@ -259,7 +321,7 @@ void shadow_rows_clear(shadow_table_t *t)
 void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_table_t *t)
 {
     shadow_rows_clear(t);
-    bool any = false; /* (a world of directional lights, or without shadows, pays nothing per row) */
+    bool any = false; /* (a world without shadows pays nothing per row) */
     for (uint8_t i = 0; i < w->n_lights; i++)
         any = any || shadow_rows_light(&w->lights[i]);
     if (!SHADOW_ROWS || !any || cam->kind != CAM_PERSPECTIVE || (NUM_EXACT && !cam->small))
@@ -338,11 +400,11 @@ enum { SHADOW_CULLS = SHADOW_CULL };
                                                : false))
 /* The next object's cull entry. */
 #define SHADOW_NEXT(e) ((e) = mode != SHADOW_CULL_NONE ? (e) + 1 : (e))
-/* A point or spot light's row mask (shade.h, row_skip) from a kind's first
- * slot on (bit 0: that slot), zero for any other loop. */
+/* The light's row mask (shade.h, row_skip) from a kind's first slot on
+ * (bit 0: that slot), zero for the loop without culling. */
 enum { SHADOW_ROWS_ON = SHADOW_ROWS }; /* (as SHADOW_CULLS) */
 #define SHADOW_ROW_SKIP(base)                                                                                 \
-    (SHADOW_ROWS_ON && mode == SHADOW_CULL_PT && (base) < SHADOW_ROW_SLOTS ? row_skip >> ((base) & 31) : 0u)
+    (SHADOW_ROWS_ON && mode != SHADOW_CULL_NONE && (base) < SHADOW_ROW_SLOTS ? row_skip >> ((base) & 31) : 0u)
 
 /* world_occluded, skipping what rc rules out (mode: how). An object's cull
  * entry is read before the object (the table is small and contiguous);
@@ -406,24 +468,23 @@ static bool shadow_occluded_pt(const world_t *w, const ray_t *ray, num_t tmax, u
     return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, row_skip, SHADOW_CULL_PT);
 }
 static bool shadow_occluded_dir(const world_t *w, const ray_t *ray, num_t tmax, uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri),
-                                const shadow_ray_cull_t *rc)
+                                const shadow_ray_cull_t *rc, uint32_t row_skip)
 {
-    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, 0, SHADOW_CULL_DIR);
+    return shadow_occluded_loop(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, row_skip, SHADOW_CULL_DIR);
 }
 
 /* A directional light's ray: its projections (out of line: shadow_blocked's
  * frame stays small on the M0). */
 static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const ray_t *ray, num_t tmax,
                                                         uint16_t skip_id FXRT_IF_MODEL(, uint32_t skip_tri), shadow_ray_cull_t *rc,
-                                                        const vec3_t *p,
-                                                        const uint8_t axes[2])
+                                                        const vec3_t *p, const uint8_t axes[2], uint32_t row_skip)
 {
     rc->p1 = shadow_proj(*p, rc->ldir, axes[0]);
     rc->p2 = shadow_proj(*p, rc->ldir, axes[1]);
 #if FXRT_NUMBER != FXRT_Q16
     rc->slack = num_mul(CULL_REL, shadow_l1(*p));
 #endif
-    return shadow_occluded_dir(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc);
+    return shadow_occluded_dir(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, row_skip);
 }
 
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const geom_common_t *obj,
@@ -452,7 +513,7 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
         rc.ldir = *ldir;
         rc.dist = dist;
         if (l->kind == LIGHT_DIRECTIONAL)
-            return shadow_blocked_dir(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc, p, l->axes);
+            return shadow_blocked_dir(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc, p, l->axes, skip);
         return shadow_occluded_pt(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri), &rc, skip);
     }
     return shadow_occluded(w, &ray, tmax, id FXRT_IF_MODEL(, skip_tri));
