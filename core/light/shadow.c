@@ -174,7 +174,8 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
  * may saturate) or the camera is not small (cam.h). Once per row: a few
  * roots and a product per object. */
 /* The mask of one row, plane and light: bit s for slot s's object when
- * SHADOW_ROW_FAR(c, r) (its bounding sphere c, r; the caller's), SHADOW_ROW_CLEAR when every
+ * SHADOW_ROW_FAR(c, r, v) (its bounding sphere c, r, and v = c - ref, the
+ * caller's reference point: the light, or the eye), SHADOW_ROW_CLEAR when every
  * bounded object is skipped and the plane is the world's only one (no
  * other plane can block the light either). */
 #define SHADOW_ROW_MASK()                                                                                     \
@@ -183,13 +184,14 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
     vec3_t c;                                                                                                 \
     num_t r;                                                                                                  \
     FXRT_KINDS(SHADOW_ROW_SLOTS_OF)                                                                           \
-    (void)c, (void)r;                                                                                         \
+    (void)c, (void)r, (void)ref;                                                                              \
     return mask | (all && (0 FXRT_IF_PLANE(+w->n_planes)) == 1 ? SHADOW_ROW_CLEAR : 0)
 #define SHADOW_ROW_SLOTS_OF(K, k, ks, cap, solid, bounded, ...)                                               \
     FXRT_WHEN(bounded, FXRT_IF_##K(for (uint16_t i = 0; i < w->n_##ks; i++) {                                \
         int s = SHADOW_SLOT_##K + i;                                                                          \
         geom_##k##_around(&w->ks[i], &c, &r);                                                                 \
-        bool far = s < SHADOW_ROW_SLOTS && SHADOW_ROW_FAR(c, r);                                              \
+        vec3_t v = vec3_sub(c, ref);                                                                          \
+        bool far = s < SHADOW_ROW_SLOTS && shadow_l1(v) < NUM(16384) && SHADOW_ROW_FAR(c, r, v);              \
         if (far)                                                                                              \
             mask |= 1u << s;                                                                                  \
         all = all && far;                                                                                     \
@@ -202,11 +204,11 @@ static inline bool shadow_row_far_pt(num_t dc, num_t lim)
 }
 
 /* A directional light's limit for |S(c)|: (R' + delta) (|g| + 2^-13)
- * (Rd = R' + delta) and S's own error, 2^-13 (|c - e|_1 + |F(e)|) + 2^-14,
+ * (rd = R' + delta) and S's own error, 2^-13 (|v|_1 + |F(e)|) + 2^-14 (v = c - e),
  * with CULL_REL 4 (|c|_1 + |e|_1 + |F(e)|) for float and double. */
-static inline num_t shadow_row_lim_dir(vec3_t c, vec3_t e, num_t fa, num_t el, num_t rd, num_t gup)
+static inline num_t shadow_row_lim_dir(vec3_t c, vec3_t v, num_t fa, num_t el, num_t rd, num_t gup)
 {
-    num_t own = num_add(num_mul(num_add(shadow_l1(vec3_sub(c, e)), fa), NUM(1.0 / 8192)), NUM(1.0 / 16384));
+    num_t own = num_add(num_mul(num_add(shadow_l1(v), fa), NUM(1.0 / 8192)), NUM(1.0 / 16384));
     num_t rel = num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(c), el), fa));
     return num_add(num_add(num_mul(rd, gup), own), rel);
 }
@@ -237,9 +239,8 @@ static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, ve
     delta = num_add(num_add(delta, num_mul(ang, d_max)),
                     num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(e), t_max), shadow_l1(pos))));
     num_t margin = num_add(eps, delta);
-#define SHADOW_ROW_FAR(c, r)                                                                                  \
-    (shadow_l1(vec3_sub(c, pos)) < NUM(16384) &&                                                              \
-     shadow_row_far_pt(num_abs(vec3_dot(g, vec3_sub(c, pos))), num_add(shadow_bound(c, r, L), margin)))
+    vec3_t ref = pos;
+#define SHADOW_ROW_FAR(c, r, v) shadow_row_far_pt(num_abs(vec3_dot(g, v)), num_add(shadow_bound(c, r, L), margin))
     SHADOW_ROW_MASK();
 #undef SHADOW_ROW_FAR
 }
@@ -271,10 +272,10 @@ static uint32_t shadow_row_mask_dir(const world_t *w, const light_t *L, vec3_t e
     num_t delta = num_add(num_mul(num_add(num_mul(kappa, num_add(t_max, NUM_ONE)), NUM_ONE), NUM(1.0 / 8192)),
                           num_mul(num_mul_int(CULL_REL, 4), num_add(el, t_max)));
     numw_t off = numw_mul(a1, fe); /* (m' . l) F(e) */
-#define SHADOW_ROW_FAR(c, r)                                                                                  \
-    (shadow_l1(vec3_sub(c, e)) < NUM(16384) &&                                                                \
-     numw_abs_gt(numw_add(vec3_dotw(g, vec3_sub(c, e)), off),                                                 \
-                 numw_from(shadow_row_lim_dir(c, e, fa, el, num_add(shadow_bound(c, r, L), delta), gup))))
+    vec3_t ref = e;
+#define SHADOW_ROW_FAR(c, r, v)                                                                               \
+    numw_abs_gt(numw_add(vec3_dotw(g, v), off),                                                               \
+                numw_from(shadow_row_lim_dir(c, v, fa, el, num_add(shadow_bound(c, r, L), delta), gup)))
     SHADOW_ROW_MASK();
 #undef SHADOW_ROW_FAR
 }
