@@ -88,17 +88,20 @@ static void camera(cam_t *cam)
 
 /* A plane lit from below sends no shadow ray; lit from above, one per
  * pixel it covers (every plane pixel faces the light), or none with shadow
- * rows (light/shade.h): alone in the world, nothing can block it. */
+ * rows (light/shade.h): alone in the world, nothing can block it. For a
+ * point light and for a directional one. */
 static void test_behind(void)
 {
     cam_t cam;
     camera(&cam);
-    for (int above = 0; above < 2; above++) {
+    for (int k = 0; k < 4; k++) {
+        int above = k & 1;
+        bool dirl = k >= 2;
         fxrt_world_init(&world, COL(0, 0, 0));
         int32_t id = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.7, 0.3, 0.2));
         lit(id, MATERIAL_LAMBERT, 0);
-        CHECK(world_add_light(&world, LIGHT_POINT, P(0.3, above ? 5 : -5, 0.2), P(0, 0, 0), V(0),
-                              FRAC(1, 1, 1), true) == 0);
+        CHECK(world_add_light(&world, dirl ? LIGHT_DIRECTIONAL : LIGHT_POINT, P(0.3, above ? 5 : -5, 0.2),
+                              P(0.2, above ? -1 : 1, -0.1), V(0), FRAC(1, 1, 1), true) == 0);
         render(&cam, true);
         long plane = count_id((uint16_t)id);
         CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
@@ -346,6 +349,7 @@ static void test_bounds(void)
  * sphere only a little wider than the shadow, for not many more: at most
  * twice as many plus a border, where without culling every lit-facing
  * plane pixel would test it (most of the frame). */
+static void check_rows(int32_t pid, long plane, const char *what);
 static void test_shadow_cull(void)
 {
     cam_t cam;
@@ -365,10 +369,23 @@ static void test_shadow_cull(void)
     CHECK_MSG(shadow > 40 && plane > 8 * shadow, "%ld plane pixels, %ld shadowed", plane, shadow);
     CHECK_MSG(sphere_calls >= (unsigned long)shadow && sphere_calls <= (unsigned long)(2 * shadow + 2 * W),
               "%lu sphere kernel calls for %ld shadowed plane pixels", sphere_calls, shadow);
-    /* Shadow rows: a plane pixel sends a shadow ray only on a row whose
-     * line can see the sphere's shadow, which the rows of shadowed plane
-     * pixels, and a few around them for the margins, hold; the sphere's
-     * own pixels send theirs. */
+    check_rows(pid, plane, "point");
+    /* The same world under a directional light: its rows too. */
+    fxrt_world_init(&world, COL(0, 0, 0));
+    pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.7, 0.3, 0.2));
+    lit(pid, MATERIAL_LAMBERT, 0);
+    lit(world_add_sphere(&world, P(0.3, 1.3, -0.4), V(0.7), COL(0.2, 0.5, 0.3)), MATERIAL_LAMBERT, 0);
+    CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(0.3, -1, -0.2), V(0), FRAC(1, 1, 1), true) == 0);
+    render(&cam, true);
+    check_rows(pid, count_id((uint16_t)pid), "directional");
+}
+
+/* Shadow rows: a plane pixel sends a shadow ray only on a row whose line
+ * can see the sphere's shadow, which the rows of shadowed plane pixels,
+ * and a few around them for the margins, hold; the sphere's own pixels
+ * send theirs. */
+static void check_rows(int32_t pid, long plane, const char *what)
+{
     long sphere = 0, rows = 0;
     for (int y = 0; y < H; y++) {
         bool any = false;
@@ -379,11 +396,12 @@ static void test_shadow_cull(void)
         }
         rows += any;
     }
-    printf("shadow rows (%s): %u shadow rays, %ld sphere pixels, %ld rows with a shadow\n", NUM_NAME,
+    printf("shadow rows (%s, %s light): %u shadow rays, %ld sphere pixels, %ld rows with a shadow\n", NUM_NAME, what,
            (unsigned)fxrt_stats.shadow_rays, sphere, rows);
+    CHECK_MSG(rows > 4, "%s: %ld rows with a shadow", what, rows);
     if (SHADOW_ROWS)
         CHECK_MSG(fxrt_stats.shadow_rays <= (uint32_t)(sphere + (rows + 8) * W) && fxrt_stats.shadow_rays < (uint32_t)plane / 2,
-                  "%u shadow rays: %ld sphere pixels, %ld plane pixels, %ld rows with a shadow",
+                  "%s: %u shadow rays: %ld sphere pixels, %ld plane pixels, %ld rows with a shadow", what,
                   (unsigned)fxrt_stats.shadow_rays, sphere, plane, rows);
 }
 
