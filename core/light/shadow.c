@@ -135,44 +135,6 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
     }
 }
 
-/* Shadow rows (shade.h). On row y of a perspective view, pixel x's
- * camera ray is along r(x) = f + ix u with f = fwd + iy v (cam.h), so the
- * rays of the row lie in the plane P through the eye e with normal
- * m = u x f, and a plane's points on the row on its line l = plane ∩ P.
- * For a point or spot light (shadow_row_mask; a directional light's is
- * shadow_row_mask_dir, below), S is the plane through the light's
- * position L that holds l: with
- * F(x) = n . (x - a) (the plane's point a, unit normal n) and R(x) =
- * m' . (x - e) (m' = m / |m|), S(x) = R(L) F(x) - F(L) R(x), normal g =
- * R(L) n - F(L) m' (formed divided by sc = max(|R(L)|, |F(L)|)), unit g'
- * (rounded); S' is the plane through L with normal g'. Slot s's object (bounding sphere c,
- * R' = shadow_bound) is skipped when its distance from S,
- * |g' . (c - L)|, less 2^-12 of it and 2^-14 for g' and the product's
- * rounding, exceeds R' + eps + delta, where for every shading point p'
- * the renderer computes on the row:
- *  - every point of the shadow ray from p' lies within max(D(p'), eps)
- *    of S (D: the distance from S; S holds L, and the ray ends within
- *    eps(dist) <= 2^-15 + dist 2^-13 of L, as for the cones above);
- *  - D(p') <= delta (D: now from S'). p' is within 2^-15.5 of the exact
- *    hit of its rounded ray (d' within 2^-15.2 of r / |r|), a point of the
- *    plane at most t 2^-15.2 from P, so at most kappa t 2^-15.2 from l
- *    (kappa = 1 / sin of the angle between the plane and P, taken from
- *    the rounded m' less 2^-12) and from S. S' turns about L away from S
- *    by at most ang = 2^-14 (|L - e|_1 + |L - a|_1 + 2) / (sc |g / sc|) +
- *    2^-14 (the errors of R(L) and F(L), m''s rounding among them, and
- *    g''s own), so a point x near l is within ang |x - L| more of S'.
- *    With t <= t_max (the row's two ends, whose rays meet the plane in
- *    front: the hits between lie on the segment, |p - e| convex along it)
- *    and dist <= t_max + |L - e|_1 = d_max: delta = (kappa (t_max + 1) +
- *    1) 2^-13 + ang d_max + CULL_REL 4 (|e|_1 + t_max + |L|_1), four times
- *    the Q16.16 bound of the first terms; float and double have ulps, far
- *    below it.
- * No mask where the row's rays do not all meet the plane in front (the
- * horizon crosses the row), where the row lies within 1/64 rad of the
- * plane (kappa), the light within 1/64 of it, or |g / sc| < 1/64, or
- * (Q16.16) where e's coordinates plus t_max reach 16384 (a hit point that
- * may saturate) or the camera is not small (cam.h). Once per row: a few
- * roots and a product per object. */
 /* The mask of one row, plane and light: bit s for slot s's object when
  * SHADOW_ROW_FAR(c, r, v) (its bounding sphere c, r, and v = c - ref, the
  * caller's reference point: the light, or the eye), SHADOW_ROW_CLEAR when every
@@ -213,6 +175,44 @@ static inline num_t shadow_row_lim_dir(vec3_t c, vec3_t v, num_t fa, num_t el, n
     return num_add(num_add(num_mul(rd, gup), own), rel);
 }
 
+/* Shadow rows (shade.h). On row y of a perspective view, pixel x's
+ * camera ray is along r(x) = f + ix u with f = fwd + iy v (cam.h), so the
+ * rays of the row lie in the plane P through the eye e with normal
+ * m = u x f, and a plane's points on the row on its line l = plane ∩ P.
+ * For a point or spot light (shadow_row_mask; a directional light's is
+ * shadow_row_mask_dir, below), S is the plane through the light's
+ * position L that holds l: with
+ * F(x) = n . (x - a) (the plane's point a, unit normal n) and R(x) =
+ * m' . (x - e) (m' = m / |m|), S(x) = R(L) F(x) - F(L) R(x), normal g =
+ * R(L) n - F(L) m' (formed divided by sc = max(|R(L)|, |F(L)|)), unit g'
+ * (rounded); S' is the plane through L with normal g'. Slot s's object (bounding sphere c,
+ * R' = shadow_bound) is skipped when its distance from S,
+ * |g' . (c - L)|, less 2^-12 of it and 2^-14 for g' and the product's
+ * rounding, exceeds R' + eps + delta, where for every shading point p'
+ * the renderer computes on the row:
+ *  - every point of the shadow ray from p' lies within max(D(p'), eps)
+ *    of S (D: the distance from S; S holds L, and the ray ends within
+ *    eps(dist) <= 2^-15 + dist 2^-13 of L, as for the cones above);
+ *  - D(p') <= delta (D: now from S'). p' is within 2^-15.5 of the exact
+ *    hit of its rounded ray (d' within 2^-15.2 of r / |r|), a point of the
+ *    plane at most t 2^-15.2 from P, so at most kappa t 2^-15.2 from l
+ *    (kappa = 1 / sin of the angle between the plane and P, taken from
+ *    the rounded m' less 2^-12) and from S. S' turns about L away from S
+ *    by at most ang = 2^-14 (|L - e|_1 + |L - a|_1 + 2) / (sc |g / sc|) +
+ *    2^-14 (the errors of R(L) and F(L), m''s rounding among them, and
+ *    g''s own), so a point x near l is within ang |x - L| more of S'.
+ *    With t <= t_max (the row's two ends, whose rays meet the plane in
+ *    front: the hits between lie on the segment, |p - e| convex along it)
+ *    and dist <= t_max + |L - e|_1 = d_max: delta = (kappa (t_max + 1) +
+ *    1) 2^-13 + ang d_max + CULL_REL 4 (|e|_1 + t_max + |L|_1), four times
+ *    the Q16.16 bound of the first terms; float and double have ulps, far
+ *    below it.
+ * No mask where the row's rays do not all meet the plane in front (the
+ * horizon crosses the row), where the row lies within 1/64 rad of the
+ * plane (kappa), the light within 1/64 of it, or |g / sc| < 1/64, or
+ * (Q16.16) where e's coordinates plus t_max reach 16384 (a hit point that
+ * may saturate) or the camera is not small (cam.h). Once per row: a few
+ * roots and a product per object. */
 static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, vec3_t n, vec3_t a, vec3_t m1,
                                 num_t t_max)
 {
@@ -279,6 +279,8 @@ static uint32_t shadow_row_mask_dir(const world_t *w, const light_t *L, vec3_t e
     SHADOW_ROW_MASK();
 #undef SHADOW_ROW_FAR
 }
+#undef SHADOW_ROW_MASK
+#undef SHADOW_ROW_SLOTS_OF
 
 /* Does light L get row masks (a light with shadows)? */
 __attribute__((unused)) static bool shadow_rows_light(const light_t *L)
