@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Nearest first (vis/order.c) and the shadow rows (light/shadow.c, a
+# Nearest first (vis/order.c), the shadow rows (light/shadow.c, a
 # plane's per-row masks of the objects that cannot block its shadow rays)
-# change the work, never a pixel: every scene in scenes/ and its
-# subfolders at 96x72, in q16, float and double, with the host tool and
-# with its build without both (FXRT_ABLATE_ORDER, FXRT_ABLATE_SHADOW_ROWS;
-# tests/order.mk), byte for byte. The lit scenes and two bench scenes
+# and the flat objects' hit numerators kept across pixels
+# (frame/render_shade.c) change the work, never a pixel: every scene in
+# scenes/ and its subfolders at 96x72, in q16, float and double, with the
+# host tool and with its build without all three (FXRT_ABLATE_ORDER,
+# FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM; tests/order.mk), byte for
+# byte. The lit scenes and two bench scenes
 # are rendered again with `samples 2 adaptive` and lights on every
 # object: the adaptive sampler's one ray per pixel takes the shading
 # constants of the object it hits from the sorted records

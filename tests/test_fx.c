@@ -191,6 +191,11 @@ static void check_wdiv(fxw_t a, fxw_t b)
     long double e = fabsl((long double)q - exact);
     track(&max_err_wdiv, e);
     CHECK_SWEEP(e <= 1.0L, "fxw_div(%lld, %lld) = %d, exact %.3Lf", (long long)a, (long long)b, q, exact);
+    /* The same quotient with the dividend prepared once (the shading
+     * pass's planes: one numerator, a divisor per pixel). */
+    fxw_dividend_t pa = fxw_dividend(a);
+    fx_t qb = fxw_div_by(&pa, b);
+    CHECK_SWEEP(qb == q, "fxw_div_by(fxw_dividend(%lld), %lld) = %d, fxw_div %d", (long long)a, (long long)b, qb, q);
 }
 
 static void check_cot(fx_t deg)

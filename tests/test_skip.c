@@ -127,10 +127,11 @@ static void test_normalisations(void)
         for (int with_sphere = 0; with_sphere < 2; with_sphere++) {
             fxrt_world_init(&world, COL(0.1, 0.2, 0.3));
             world_set_ambient(&world, FRAC(0.2, 0.1, 0.05));
-            lit(world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.9, 0.1, 0.3)), MATERIAL_LAMBERT, 0);
+            int32_t pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.9, 0.1, 0.3));
+            lit(pid, MATERIAL_LAMBERT, 0);
             lit(world_add_box(&world, P(-1.5, 0, -1), P(-0.5, 1, 0), COL(0.2, 0.3, 0.9)), MATERIAL_PHONG, 33);
-            lit(world_add_triangle(&world, P(0.5, 0, -1), P(1.5, 0, -1), P(1, 1.2, -1), COL(0.6, 0.6, 0.1)),
-                MATERIAL_LAMBERT, 0);
+            int32_t tid = world_add_triangle(&world, P(0.5, 0, -1), P(1.5, 0, -1), P(1, 1.2, -1), COL(0.6, 0.6, 0.1));
+            lit(tid, MATERIAL_LAMBERT, 0);
             int32_t sid = -1;
             if (with_sphere) {
                 sid = world_add_sphere(&world, P(0.2, 0.6, 0.8), V(0.6), COL(0.1, 0.8, 0.2));
@@ -159,6 +160,24 @@ static void test_normalisations(void)
             long spheres = sid >= 0 ? count_id((uint16_t)sid) : 0;
             CHECK_MSG(fxrt_stats.n_normalised == (uint32_t)spheres, "%u normal normalisations, %ld sphere pixels",
                       (unsigned)fxrt_stats.n_normalised, spheres);
+            /* A plane's or triangle's hit numerator (a - e) . n: once per
+             * row for each change of flat owner along it (other owners
+             * in between keep it), counted from the keys. */
+            long flat_px = 0, changes = 0;
+            for (int y = 0; y < H; y++) {
+                uint32_t last = 0xFFFF;
+                for (int x = 0; x < W; x++) {
+                    uint32_t id = keys[W * y + x] >> 8;
+                    if (id != (uint32_t)pid && id != (uint32_t)tid)
+                        continue;
+                    flat_px++;
+                    changes += id != last;
+                    last = id;
+                }
+            }
+            CHECK_MSG(flat_px > W * H / 4 && fxrt_stats.flat_nums == (uint32_t)changes,
+                      "%u flat hit numerators, %ld owner changes on %ld flat pixels", (unsigned)fxrt_stats.flat_nums,
+                      changes, flat_px);
         }
     }
 }

@@ -66,6 +66,10 @@ typedef struct {
     bool any_lit;
     /* Per object (index into vis.obj): its shading constants, once per frame. */
     shade_k_t k[FXRT_RENDER_MAX_OBJECTS];
+    /* The sampler's flat object (vis index; RENDER_VIS_NONE: none yet)
+     * and its hit numerator: frame/render_shade.c, render_shade_object. */
+    uint16_t flat_of;
+    shade_flat_t flat;
 #if SHADOW_CULL
     /* Shadow-ray culling, per light and bounded object, and the current
      * row's masks per plane and light (light/shadow.c). */
@@ -141,6 +145,9 @@ static inline void render_set_keys(render_t *r, uint32_t *keys)
  * per-frame constants (after the visibility set-up) and a row. */
 void render_shade_setup(render_t *r, const world_t *w);
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
+/* The colour of vis object oi along camera ray `ray` (shade_object_k with
+ * its constants; a flat object's hit numerator is kept across pixels). */
+color_t render_shade_object(render_t *r, uint16_t oi, const ray_t *ray, uint8_t *mask);
 /* The sampler (frame/render_sample.c, FXRT_MAX_SAMPLES > 1): its part of
  * render_setup before the visibility set-up (*cam becomes the fine camera
  * when the world's samples are more than 1; false, with r->error, when

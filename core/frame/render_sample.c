@@ -82,7 +82,7 @@ static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t 
     if (FXRT_MAX_LIGHTS > 0 && !o->flat) {
         ray_t ray;
         cam_ray(r->vis.cam, X, y, &ray);
-        return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, RENDER_SHADE_K(r, oi), NULL);
+        return render_shade_object(r, oi, &ray, NULL);
     }
     return world_common(r->vis.world, (geom_kind_t)o->geom, o->index)->color;
 }

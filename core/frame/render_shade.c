@@ -13,6 +13,7 @@ void render_shade_setup(render_t *r, const world_t *w)
 {
     render_shade_t *sh = &r->shade;
     sh->any_lit = w->n_lit > 0;
+    sh->flat_of = RENDER_VIS_NONE;
     SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull.cull); shadow_rows_clear(&sh->cull);)
     for (uint16_t i = 0; sh->any_lit && i < r->vis.count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->vis.obj[i].geom, r->vis.obj[i].index);
@@ -23,6 +24,55 @@ void render_shade_setup(render_t *r, const world_t *w)
     }
 }
 
+/* The colour of vis object oi along camera ray `ray`. A pinhole camera's
+ * rays all start at the eye e, so an object of a FLAT form keeps its hit
+ * numerator (a - e) . n in *f (shade_flat_t) for the next pixel of vis
+ * object *f_of. */
+#define RENDER_FLAT_OF(K, k, ks, cap, solid, bounded, form, ...) RENDER_FLAT_OF_##form(K, ks)
+#define RENDER_FLAT_OF_FLAT(K, ks)                                                                               \
+    FXRT_IF_##K(case GEOM_##K:                                                                                  \
+                f->num = geom_flat_num(&w->ks[o->index].a, &w->ks[o->index].n, &ray->o);                        \
+                f->obj = &w->ks[o->index].obj;                                                                  \
+                f->n = &w->ks[o->index].n;                                                                      \
+                break;)
+#define RENDER_FLAT_OF_ROUND(K, ks)
+#define RENDER_FLAT_OF_FACES(K, ks)
+#define RENDER_FLAT_OF_RAYS(K, ks)
+static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *r, uint16_t oi, const ray_t *ray,
+                                                                       uint8_t *mask, bool one_eye, uint16_t *f_of,
+                                                                       shade_flat_t *f)
+{
+    const world_t *w = r->vis.world;
+    const render_obj_t *o = &r->vis.obj[oi];
+    const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
+    if (one_eye && *f_of != oi) {
+        switch (o->geom) {
+            FXRT_KINDS(RENDER_FLAT_OF)
+        default: one_eye = false; break; /* not flat */
+        }
+        if (one_eye) {
+            FXRT_COUNT(flat_nums);
+            f->index = o->index;
+            f->kind = o->geom;
+            *f_of = oi;
+        }
+    }
+    if (one_eye)
+        return shade_flat_k(w, f, ray, k, mask);
+    return shade_object_k(w, (geom_kind_t)o->geom, o->index, ray, k, mask);
+}
+#undef RENDER_FLAT_OF_RAYS
+#undef RENDER_FLAT_OF_FACES
+#undef RENDER_FLAT_OF_ROUND
+#undef RENDER_FLAT_OF_FLAT
+#undef RENDER_FLAT_OF
+
+color_t render_shade_object(render_t *r, uint16_t oi, const ray_t *ray, uint8_t *mask)
+{
+    return render_shade_obj(r, oi, ray, mask, r->vis.cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM,
+                            &r->shade.flat_of, &r->shade.flat);
+}
+
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
 {
     const cam_t *cam = r->vis.cam;
@@ -30,6 +80,9 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
     /* The row's shadow masks for planes (light/shade.h), cleared after it:
      * they hold for this row's camera rays only. */
     SHADE_IF_CULL(if (SHADOW_ROWS && r->shade.any_lit) shadow_rows_setup(r->vis.world, cam, y, &r->shade.cull);)
+    bool one_eye = cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM;
+    uint16_t flat_of = RENDER_VIS_NONE;
+    shade_flat_t flat;
     for (int32_t x = 0; x < w; x++) {
         uint16_t oi = r->vis.painted[x];
         if (oi == RENDER_VIS_NONE) {
@@ -49,8 +102,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
                       c = shade_model_k(r->vis.world, o->index, &ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
                                         r->keys ? &mask : NULL);
                       else)
-        c = shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, &ray, lit ? &r->shade.k[oi] : NULL,
-                           r->keys ? &mask : NULL);
+        c = render_shade_obj(r, oi, &ray, r->keys ? &mask : NULL, one_eye, &flat_of, &flat);
         if (r->keys)
             r->keys[x] = render_key(o->id, mask);
         if (!lit)

@@ -52,6 +52,14 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
     return shade_hit(w, obj, kind, index GEOM_PART_ARG(part), ray, t, &n, k, mask);
 }
 
+color_t shade_flat_k(const world_t *w, const shade_flat_t *f, const ray_t *ray, const shade_k_t *k, uint8_t *mask)
+{
+    if (f->obj->mat.kind == MATERIAL_FLAT && !mask)
+        return f->obj->color;
+    num_t t = geom_flat_surface_num(&f->num, f->n, ray);
+    return shade_hit(w, f->obj, (geom_kind_t)f->kind, f->index GEOM_PART_ARG(NULL), ray, t, f->n, k, mask);
+}
+
 #if FXRT_MAX_MODELS > 0
 color_t shade_model_k(const world_t *w, uint16_t index, const ray_t *ray, uint32_t tri, const shade_k_t *k,
                       uint8_t *mask)

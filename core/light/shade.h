@@ -153,6 +153,21 @@ color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const r
 color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
                        uint8_t *mask);
 
+/* An object of a FLAT form (scene/kinds.h: a plane, a triangle) seen
+ * from o: its common part, unit normal n, and num =
+ * geom_flat_num(a, n, o) of its plane's point a, which the shading pass
+ * keeps while the object and o stay the same. shade_flat_k is
+ * shade_object_k for it along a ray from o: the same value, without the
+ * numerator's products. */
+typedef struct {
+    numw_dividend_t num;
+    const geom_common_t *obj;
+    const vec3_t *n;
+    uint16_t index;
+    uint8_t kind;
+} shade_flat_t;
+color_t shade_flat_k(const world_t *w, const shade_flat_t *f, const ray_t *ray, const shade_k_t *k, uint8_t *mask);
+
 /* shade_object_k for model `index` along a camera ray whose nearest
  * triangle tri is known (the visibility pass found it): that triangle is
  * intersected alone, the same t and weights as the walk's. */

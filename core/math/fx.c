@@ -333,26 +333,33 @@ fx_t fx_rsqrt(fx_t a)
 }
 
 
-fx_t fxw_div(fxw_t a, fxw_t b)
+/* fxw_div in two steps: the dividend's magnitude shifted up as far as it
+ * goes (k <= 16) and the bits the divisor must lose, 16 - k; then the
+ * division. When d must lose bits, the result is either saturated anyway
+ * or d keeps >= 31 significant bits, so the quotient stays within 1 LSB. */
+static inline __attribute__((always_inline)) fxw_dividend_t fxw_dividend_of(fxw_t a)
 {
-    if (b == 0)
-        return a > 0 ? FX_MAX : (a < 0 ? FX_MIN : 0);
+    fxw_dividend_t q = {0, 0, (int8_t)(a > 0 ? 1 : a < 0 ? -1 : 0)};
     if (a == 0)
-        return 0;
-    bool neg = (a < 0) != (b < 0);
-    uint64_t n = fx_uabs64(a), d = fx_uabs64(b);
-    /* We want n * 2^16 / d. Shift n up as far as it goes (k <= 16) and take
-     * the remaining 16 - k bits off d. When d must lose bits, the result is
-     * either saturated anyway or d keeps >= 31 significant bits, so the
-     * quotient stays within 1 LSB. */
+        return q;
+    uint64_t n = fx_uabs64(a);
     int k = fx_clz64(n) - 1; /* keep the top bit clear */
     if (k > FX_FRAC_BITS)
         k = FX_FRAC_BITS;
-    int dshift = FX_FRAC_BITS - k;
-    if (k < 0)
-        n >>= 1; /* n = 2^63 (a = INT64_MIN): exact, and d loses 17 bits */
-    else
-        n <<= k;
+    q.dshift = (int8_t)(FX_FRAC_BITS - k);
+    q.n = k < 0 ? n >> 1 : n << k; /* n = 2^63 (a = INT64_MIN): exact, and d loses 17 bits */
+    return q;
+}
+
+static inline __attribute__((always_inline)) fx_t fxw_div_of(const fxw_dividend_t *a, fxw_t b)
+{
+    if (b == 0)
+        return a->sign > 0 ? FX_MAX : (a->sign < 0 ? FX_MIN : 0);
+    if (a->sign == 0)
+        return 0;
+    bool neg = (a->sign < 0) != (b < 0);
+    uint64_t d = fx_uabs64(b);
+    int dshift = a->dshift;
     if (dshift > 0) {
         uint64_t dr = (d + ((uint64_t)1 << (dshift - 1))) >> dshift;
         if (dr == 0)
@@ -361,7 +368,23 @@ fx_t fxw_div(fxw_t a, fxw_t b)
     }
     /* With UDIV, libgcc's 64-bit division is a little faster here than
      * fx_udiv64_round_sat (make bench-fx). */
-    return fx_signed_sat(FX_HAVE_UDIV ? fx_udiv_round(n, d) : fx_udiv64_round_sat(n, d), neg);
+    return fx_signed_sat(FX_HAVE_UDIV ? fx_udiv_round(a->n, d) : fx_udiv64_round_sat(a->n, d), neg);
+}
+
+fx_t fxw_div(fxw_t a, fxw_t b)
+{
+    fxw_dividend_t q = fxw_dividend_of(a);
+    return fxw_div_of(&q, b);
+}
+
+fxw_dividend_t fxw_dividend(fxw_t a)
+{
+    return fxw_dividend_of(a);
+}
+
+fx_t fxw_div_by(const fxw_dividend_t *a, fxw_t b)
+{
+    return fxw_div_of(a, b);
 }
 
 bool fx_unit30(const fx_t v[3], int32_t out[3])

@@ -363,6 +363,16 @@ fx_t fxw_sqrt(fxw_t w);
  * significant bits lose their low bits first; the final division rounds
  * ties away from zero), saturating; x/0 saturates by sign, 0/0 = 0. */
 fx_t fxw_div(fxw_t a, fxw_t b);
+/* fxw_div(a, b) for one a and many b: fxw_div_by(&q, b) with
+ * q = fxw_dividend(a) has the same value, without a's share of the work
+ * (its magnitude's normalisation) at every division. */
+typedef struct {
+    uint64_t n;     /* |a| shifted up by k <= 16 (2^62 for a = INT64_MIN) */
+    int8_t dshift;  /* 16 - k: the bits the divisor loses */
+    int8_t sign;    /* of a: -1, 0 or 1 */
+} fxw_dividend_t;
+fxw_dividend_t fxw_dividend(fxw_t a);
+fx_t fxw_div_by(const fxw_dividend_t *a, fxw_t b);
 
 /* 1 / a = fx_div(FX_ONE, a): correctly rounded (|error| <= 0.5 LSB; a tie
  * would need a to divide 2^33 oddly, which no fx_t does), saturating

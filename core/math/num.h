@@ -112,6 +112,10 @@ static inline num_t num_neg_fits(num_t a) { return (fx_t)(0u - (uint32_t)a); }
 static inline numw_t numw_neg_fits(numw_t w) { return numw_sub_exact(0, w); }
 static inline num_t numw_sqrt(numw_t w) { return fxw_sqrt(w); }
 static inline num_t numw_div(numw_t a, numw_t b) { return fxw_div(a, b); }
+/* numw_div(a, b) for one a and many b (fxw_dividend_t). */
+typedef fxw_dividend_t numw_dividend_t;
+static inline numw_dividend_t numw_dividend(numw_t a) { return fxw_dividend(a); }
+static inline num_t numw_div_by(const numw_dividend_t *a, numw_t b) { return fxw_div_by(a, b); }
 /* a * m / d kept wide (Q32.32, |error| <= 0.5 LSB of Q32.32), d > 0. Used
  * for per-pixel steps that must not accumulate rounding across a row. */
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d)
@@ -299,6 +303,11 @@ static inline num_t num_neg_fits(num_t a) { return -a; }
 static inline numw_t numw_neg_fits(numw_t w) { return -w; }
 static inline num_t numw_sqrt(numw_t w) { return num_sqrt(w); }
 static inline num_t numw_div(numw_t a, numw_t b) { return num_div(a, b); }
+typedef struct {
+    numw_t a;
+} numw_dividend_t;
+static inline numw_dividend_t numw_dividend(numw_t a) { return (numw_dividend_t){a}; }
+static inline num_t numw_div_by(const numw_dividend_t *a, numw_t b) { return num_div(a->a, b); }
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d) { return a * (num_t)m / (num_t)d; }
 static inline numw_t numw_mul_int(numw_t w, int32_t i) { return w * (num_t)i; }
 static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b) { return a < t * b; }
