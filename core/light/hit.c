@@ -15,7 +15,7 @@ color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const r
 static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w, const geom_common_t *obj,
                                                                geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
                                                                const ray_t *ray, num_t t, const vec3_t *n,
-                                                               const shade_k_t *k, uint8_t *mask)
+                                                               int8_t facing, const shade_k_t *k, uint8_t *mask)
 {
     /* A camera ray (unit d, shade.h): in Q16.16, for |t| < 16384, t d
      * needs no saturation test (vec3_scale_unit_small, the same value;
@@ -23,7 +23,7 @@ static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w,
     vec3_t p = NUM_EXACT && t < num_from_int(16384) && t > -num_from_int(16384)
                    ? vec3_add(ray->o, vec3_scale_unit_small(ray->d, t))
                    : ray_at(ray, t);
-    color_t c = shade_sum(w, obj, kind, index GEOM_PART_ARG(part), &p, n, &ray->d, k, mask);
+    color_t c = shade_sum(w, obj, kind, index GEOM_PART_ARG(part), &p, n, facing, &ray->d, k, mask);
     if (FXRT_MAX_DEPTH > 0 && material_bounces(obj->mat.kind))
         c = trace_bounces(w, kind, index GEOM_PART_ARG(part), ray, p, *n, c);
     return c;
@@ -49,15 +49,17 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
 #undef HIT_SURFACE
     default: break;
     }
-    return shade_hit(w, obj, kind, index GEOM_PART_ARG(part), ray, t, &n, k, mask);
+    return shade_hit(w, obj, kind, index GEOM_PART_ARG(part), ray, t, &n, SHADE_FACING_UNKNOWN, k, mask);
 }
 
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, const ray_t *ray, const shade_k_t *k, uint8_t *mask)
 {
     if (f->obj->mat.kind == MATERIAL_FLAT && !mask)
         return f->obj->color;
-    num_t t = geom_flat_surface_num(&f->num, f->n, ray);
-    return shade_hit(w, f->obj, (geom_kind_t)f->kind, f->index GEOM_PART_ARG(NULL), ray, t, f->n, k, mask);
+    /* d . n is the quotient's divisor and the light sum's side test. */
+    numw_t dn = vec3_dotw_units(ray->d, *f->n);
+    num_t t = numw_div_by(&f->num, dn);
+    return shade_hit(w, f->obj, (geom_kind_t)f->kind, f->index GEOM_PART_ARG(NULL), ray, t, f->n, dn > 0, k, mask);
 }
 
 #if FXRT_MAX_MODELS > 0
@@ -71,7 +73,7 @@ color_t shade_model_k(const world_t *w, uint16_t index, const ray_t *ray, uint32
     vec3_t n;
     geom_part_t part;
     geom_model_surface_part(&w->models[index], ray, tri, &t, &n, &part);
-    return shade_hit(w, obj, GEOM_MODEL, index, &part, ray, t, &n, k, mask);
+    return shade_hit(w, obj, GEOM_MODEL, index, &part, ray, t, &n, SHADE_FACING_UNKNOWN, k, mask);
 }
 #endif
 #endif

@@ -130,11 +130,12 @@ color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
  * (tests/norecurse.sh). */
 __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind,
                                                       uint16_t index GEOM_PART_PARAM, const vec3_t *p,
-                                                      const vec3_t *n_geo, const vec3_t *d, uint8_t *mask)
+                                                      const vec3_t *n_geo, int8_t facing, const vec3_t *d,
+                                                      uint8_t *mask)
 {
     shade_k_t own;
     shade_consts(w, obj, &own);
-    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, d, &own, mask);
+    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, &own, mask);
 }
 
 #if FXRT_PHONG
@@ -158,8 +159,8 @@ static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const
 /* The light loop of shade_sum (k not NULL when the material is lit and
  * not transparent). */
 color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
-                     const vec3_t *pp, const vec3_t *n_geo_p, const vec3_t *dp, const shade_k_t *k,
-                            uint8_t *mask)
+                     const vec3_t *pp, const vec3_t *n_geo_p, int8_t facing, const vec3_t *dp, const shade_k_t *k,
+                     uint8_t *mask)
 {
     /* FXRT_BOUND_NO_LIGHT_SUM: a measurement (core/fxrt_config.h), no
      * light sum at all. */
@@ -169,8 +170,9 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     const material_t *m = &obj->mat;
     bool lit = m->kind != MATERIAL_FLAT;
     bool clear = m->kind == MATERIAL_TRANSPARENT;
-    /* Two-sided: n faces the incoming ray. */
-    bool inside = vec3_dotw_units(d, n_geo) > 0;
+    /* Two-sided: n faces the incoming ray (d . n_geo <= 0), from the
+     * caller's facing where it knows it. */
+    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(d, n_geo) > 0 : facing != 0;
     vec3_t n = inside ? vec3_neg_unit(n_geo) : n_geo;
     /* A smooth triangle (scene/smooth.c): the interpolated normal n_s,
      * turned towards the ray on its own; the flat face's normal, turned
@@ -263,9 +265,10 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
 
 #if !FX_HAVE_UMULL
 color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
-                  const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask)
+                  const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k,
+                  uint8_t *mask)
 {
-    return shade_sum_inline(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, d, k, mask);
+    return shade_sum_inline(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
 }
 #endif
 
@@ -277,8 +280,8 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PA
      * lit opaque material goes straight to shade_sum_own, so that one
      * shade_sum frame, not two, is on the stack (16 KB boards). */
     if (!k && obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_TRANSPARENT)
-        return shade_sum_own(w, obj, kind, index GEOM_PART_ARG(part), &p, &n_geo, &d, mask);
-    return shade_sum(w, obj, kind, index GEOM_PART_ARG(part), &p, &n_geo, &d, k, mask);
+        return shade_sum_own(w, obj, kind, index GEOM_PART_ARG(part), &p, &n_geo, SHADE_FACING_UNKNOWN, &d, mask);
+    return shade_sum(w, obj, kind, index GEOM_PART_ARG(part), &p, &n_geo, SHADE_FACING_UNKNOWN, &d, k, mask);
 }
 
 #endif

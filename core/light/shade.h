@@ -209,6 +209,12 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
  * in the domain, so no occluder between them is missed but a plane met
  * beyond 32767 from the light (a far hit, docs/ACCURACY.md). */
 #define SHADE_FAR_DIST (NUM_MAX - 256)
+
+/* The light sum's side of a hit (light/shade_sum.h, `facing`): whether
+ * the geometric normal faces away from the ray (d . n_geo > 0: 1) or not
+ * (0), where the caller has d . n_geo already (a flat object's hit
+ * divisor); SHADE_FACING_UNKNOWN: the light sum computes it. */
+#define SHADE_FACING_UNKNOWN (-1)
 /* Is the point p surely outside spot light L's cone (v = L's position -
  * p)? A cheap exact test that the light loop makes before normalising v:
  * true only where the cone test with v's normalised length would reject

@@ -8,12 +8,13 @@
 #if FXRT_MAX_LIGHTS > 0
 /* The light loop (k not NULL when the material is lit and not transparent). */
 color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
-                     const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
+                     const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k,
+                     uint8_t *mask);
 /* shade_sum without per-frame constants (the ray caster, arbitrary rays):
  * they are computed on its own frame. It calls shade_lights, not
  * shade_sum: no cycle in the call graph (tests/norecurse.sh). */
 color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
-                      const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, uint8_t *mask);
+                      const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, uint8_t *mask);
 
 /* The light sum for object obj (= world_common(w, kind, index)), looked
  * up once by the caller. Inlined into its two callers where the core has
@@ -22,8 +23,8 @@ color_t shade_sum_own(const world_t *w, const geom_common_t *obj, geom_kind_t ki
  * keeps the call (inlined, its callers' register pressure cost it +1 %). */
 static inline __attribute__((always_inline)) color_t shade_sum_inline(const world_t *w, const geom_common_t *obj,
                                                                     geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
-                                                                    const vec3_t *p, const vec3_t *n_geo, const vec3_t *d,
-                                                                    const shade_k_t *k, uint8_t *mask)
+                                                                    const vec3_t *p, const vec3_t *n_geo, int8_t facing,
+                                                                    const vec3_t *d, const shade_k_t *k, uint8_t *mask)
 {
     const material_t *m = &obj->mat;
     FXRT_COUNT(shaded);
@@ -34,20 +35,21 @@ static inline __attribute__((always_inline)) color_t shade_sum_inline(const worl
     if ((!lit || clear) && !mask)
         return clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : obj->color;
     if (lit && !clear && !k)
-        return shade_sum_own(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, d, mask); /* computes k on its own frame */
-    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, d, k, mask);
+        return shade_sum_own(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, mask); /* computes k on its own frame */
+    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
 }
 #if FX_HAVE_UMULL
 static inline __attribute__((always_inline)) color_t shade_sum(const world_t *w, const geom_common_t *obj,
                                                                geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
-                                                               const vec3_t *p, const vec3_t *n_geo, const vec3_t *d,
-                                                               const shade_k_t *k, uint8_t *mask)
+                                                               const vec3_t *p, const vec3_t *n_geo, int8_t facing,
+                                                               const vec3_t *d, const shade_k_t *k, uint8_t *mask)
 {
-    return shade_sum_inline(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, d, k, mask);
+    return shade_sum_inline(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
 }
 #else
 color_t shade_sum(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
-                  const vec3_t *p, const vec3_t *n_geo, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
+                  const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k,
+                  uint8_t *mask);
 #endif
 #endif
 
