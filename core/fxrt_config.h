@@ -265,7 +265,7 @@ FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_M
  *                         and the exact tests (light/shadow.c)
  *   FXRT_ABLATE_FLAT_NUM  a plane's or triangle's hit numerator (a - e) . n
  *                         computed again at every lit pixel instead of
- *                         once per run of pixels of that object
+ *                         once per run of that object's pixels
  *                         (frame/render_shade.c)
  * The renderer reads them as FXRT_NO_BOUNDS ... FXRT_NO_ORDER,
  * FXRT_NO_CUTOFF, FXRT_BOUND_NO_LIGHT_SUM, FXRT_NO_SHADOW_ROWS and

@@ -160,12 +160,13 @@ static void test_normalisations(void)
             long spheres = sid >= 0 ? count_id((uint16_t)sid) : 0;
             CHECK_MSG(fxrt_stats.n_normalised == (uint32_t)spheres, "%u normal normalisations, %ld sphere pixels",
                       (unsigned)fxrt_stats.n_normalised, spheres);
-            /* A plane's or triangle's hit numerator (a - e) . n: once per
-             * row for each change of flat owner along it (other owners
-             * in between keep it), counted from the keys. */
+            /* A plane's or triangle's hit numerator (a - e) . n: once for
+             * each change of flat owner in the frame's pixel order (rows
+             * as rendered; other owners in between keep it), counted
+             * from the keys. */
             long flat_px = 0, changes = 0;
+            uint32_t last = 0xFFFF;
             for (int y = 0; y < H; y++) {
-                uint32_t last = 0xFFFF;
                 for (int x = 0; x < W; x++) {
                     uint32_t id = keys[W * y + x] >> 8;
                     if (id != (uint32_t)pid && id != (uint32_t)tid)

@@ -66,8 +66,9 @@ typedef struct {
     bool any_lit;
     /* Per object (index into vis.obj): its shading constants, once per frame. */
     shade_k_t k[FXRT_RENDER_MAX_OBJECTS];
-    /* The sampler's flat object (vis index; RENDER_VIS_NONE: none yet)
-     * and its hit numerator: frame/render_shade.c, render_shade_object. */
+    /* The flat object whose hit numerator the shading pass keeps (vis
+     * index; RENDER_VIS_NONE: none yet), and that numerator:
+     * frame/render_shade.c. */
     uint16_t flat_of;
     shade_flat_t flat;
 #if SHADOW_CULL

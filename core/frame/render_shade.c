@@ -24,10 +24,12 @@ void render_shade_setup(render_t *r, const world_t *w)
     }
 }
 
-/* The colour of vis object oi along camera ray `ray`. A pinhole camera's
- * rays all start at the eye e, so an object of a FLAT form keeps its hit
- * numerator (a - e) . n in *f (shade_flat_t) for the next pixel of vis
- * object *f_of. */
+/* A pinhole camera's rays all start at the eye e, so an object of a FLAT
+ * form keeps its hit numerator (a - e) . n in r->shade.flat
+ * (shade_flat_t) for the next pixel of vis object r->shade.flat_of.
+ * render_flat_take makes vis object oi that object, when it is flat
+ * (false: it is not). Out of line: its frame is not on the shading
+ * path's stack. */
 #define RENDER_FLAT_OF(K, k, ks, cap, solid, bounded, form, ...) RENDER_FLAT_OF_##form(K, ks)
 #define RENDER_FLAT_OF_FLAT(K, ks)                                                                               \
     FXRT_IF_##K(case GEOM_##K:                                                                                  \
@@ -38,28 +40,21 @@ void render_shade_setup(render_t *r, const world_t *w)
 #define RENDER_FLAT_OF_ROUND(K, ks)
 #define RENDER_FLAT_OF_FACES(K, ks)
 #define RENDER_FLAT_OF_RAYS(K, ks)
-static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *r, uint16_t oi, const ray_t *ray,
-                                                                       uint8_t *mask, bool one_eye, uint16_t *f_of,
-                                                                       shade_flat_t *f)
+static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi, const ray_t *ray)
 {
     const world_t *w = r->vis.world;
     const render_obj_t *o = &r->vis.obj[oi];
-    const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
-    if (one_eye && *f_of != oi) {
-        switch (o->geom) {
-            FXRT_KINDS(RENDER_FLAT_OF)
-        default: one_eye = false; break; /* not flat */
-        }
-        if (one_eye) {
-            FXRT_COUNT(flat_nums);
-            f->index = o->index;
-            f->kind = o->geom;
-            *f_of = oi;
-        }
+    shade_flat_t *f = &r->shade.flat;
+    (void)w, (void)ray; /* (no kind of the FLAT form: unused) */
+    switch (o->geom) {
+        FXRT_KINDS(RENDER_FLAT_OF)
+    default: return false; /* not flat */
     }
-    if (one_eye)
-        return shade_flat_k(w, f, ray, k, mask);
-    return shade_object_k(w, (geom_kind_t)o->geom, o->index, ray, k, mask);
+    FXRT_COUNT(flat_nums);
+    f->index = o->index;
+    f->kind = o->geom;
+    r->shade.flat_of = oi;
+    return true;
 }
 #undef RENDER_FLAT_OF_RAYS
 #undef RENDER_FLAT_OF_FACES
@@ -67,10 +62,21 @@ static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *
 #undef RENDER_FLAT_OF_FLAT
 #undef RENDER_FLAT_OF
 
+/* The colour of vis object oi along camera ray `ray` (one_eye: a pinhole
+ * camera, whose flat objects keep their hit numerators). */
+static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *r, uint16_t oi, const ray_t *ray,
+                                                                       uint8_t *mask, bool one_eye)
+{
+    const render_obj_t *o = &r->vis.obj[oi];
+    const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
+    if (one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray)))
+        return shade_flat_k(r->vis.world, &r->shade.flat, ray, k, mask);
+    return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, k, mask);
+}
+
 color_t render_shade_object(render_t *r, uint16_t oi, const ray_t *ray, uint8_t *mask)
 {
-    return render_shade_obj(r, oi, ray, mask, r->vis.cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM,
-                            &r->shade.flat_of, &r->shade.flat);
+    return render_shade_obj(r, oi, ray, mask, r->vis.cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM);
 }
 
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
@@ -81,8 +87,6 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
      * they hold for this row's camera rays only. */
     SHADE_IF_CULL(if (SHADOW_ROWS && r->shade.any_lit) shadow_rows_setup(r->vis.world, cam, y, &r->shade.cull);)
     bool one_eye = cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM;
-    uint16_t flat_of = RENDER_VIS_NONE;
-    shade_flat_t flat;
     for (int32_t x = 0; x < w; x++) {
         uint16_t oi = r->vis.painted[x];
         if (oi == RENDER_VIS_NONE) {
@@ -102,7 +106,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
                       c = shade_model_k(r->vis.world, o->index, &ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
                                         r->keys ? &mask : NULL);
                       else)
-        c = render_shade_obj(r, oi, &ray, r->keys ? &mask : NULL, one_eye, &flat_of, &flat);
+        c = render_shade_obj(r, oi, &ray, r->keys ? &mask : NULL, one_eye);
         if (r->keys)
             r->keys[x] = render_key(o->id, mask);
         if (!lit)
