@@ -69,6 +69,16 @@ onb_fit() {
         onb_fit "$b" "${t}b" "${@:h+1}"
     fi
 }
+# onb_fit_halves BOARD TAG NAME...: onb_fit on each half (TAGa, TAGb), for
+# a batch known not to fit one ELF: its build would fail as halving's first
+# step, and a failed build costs as much as one that fits.
+onb_fit_halves() {
+    local b=$1 t=$2 h
+    shift 2
+    h=$((($# + 1) / 2))
+    onb_fit "$b" "${t}a" "${@:1:h}"
+    [ $# -lt 2 ] || onb_fit "$b" "${t}b" "${@:h+1}"
+}
 qemu_m() { echo "$1"; }
 # twice the board's tick period in ns (firmware/firmware.mk TICK_NS_*)
 tick_ns2() { case $1 in microbit) echo 125 ;; *) echo 80 ;; esac; }

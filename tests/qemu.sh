@@ -108,9 +108,10 @@ wait
 for b in $STRESS_BOARDS; do cat "$onb/verdicts-$b.txt" >>"$onb/verdicts.txt"; done
 # micro:bit: the stress scenes in as few ELFs as fit its 16 KB (onb_fit,
 # tests/onboard_lib.sh: a batch that overflows is halved until the halves
-# fit; the linker decides). A scene whose row buffers alone (at least 7 B
-# per column) exceed 16 KB is not built; one that does not fit on its own
-# is skipped with the linker's reason. Both are counted.
+# fit; the linker decides). The whole set (50 scenes) does not fit one ELF,
+# so it starts as two halves (onb_fit_halves). A scene whose row buffers
+# alone (at least 7 B per column) exceed 16 KB is not built; one that does
+# not fit on its own is skipped with the linker's reason. Both are counted.
 mb=()
 for n in "${stress[@]}"; do
     w=$(cfgv $n FXRT_RENDER_MAX_WIDTH)
@@ -122,7 +123,7 @@ for n in "${stress[@]}"; do
     fi
 done
 if [ ${#mb[@]} -gt 0 ]; then
-    ONB_TOO_BIG=SKIP onb_fit microbit b "${mb[@]}" >"$onb/batches-microbit.txt"
+    ONB_TOO_BIG=SKIP onb_fit_halves microbit b "${mb[@]}" >"$onb/batches-microbit.txt"
     grep -E '^(stack|batch) ' "$onb/batches-microbit.txt"
     grep -vE '^(stack|batch) ' "$onb/batches-microbit.txt" >>"$onb/verdicts.txt"
 fi
