@@ -38,6 +38,7 @@ static const fx_t hard[] = {
 };
 #define N_HARD ((int)(sizeof hard / sizeof hard[0]))
 
+static double max_err_ratio; /* fxw_ratio_mul, as a fraction of its bound */
 static double max_err_mul, max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv, max_err_cot,
     max_err_norm, max_err_norm_len, max_err_dot, max_err_cross,
     max_err_sin, max_err_cos, max_err_rsqrt, max_err_recip;
@@ -196,6 +197,29 @@ static void check_wdiv(fxw_t a, fxw_t b)
     fxw_dividend_t pa = fxw_dividend(a);
     fx_t qb = fxw_div_by(&pa, b);
     CHECK_SWEEP(qb == q, "fxw_div_by(fxw_dividend(%lld), %lld) = %d, fxw_div %d", (long long)a, (long long)b, qb, q);
+}
+
+/* fxw_ratio_mul(fxw_ratio_by(fxw_ratio_num(a), b), x) = x a / b within
+ * 0.5 LSB + 2^-29 |x a / b| (fx.h), saturated, against long double (64
+ * significant bits: a, b and x exactly, the quotient within 2^-63). */
+#define RATIO_REL 0x1p-29L
+static void check_ratio(fxw_t a, fxw_t b, fx_t x)
+{
+    fxw_ratio_num_t num = fxw_ratio_num(a);
+    fxw_ratio_t q = fxw_ratio_by(&num, b);
+    fx_t got = fxw_ratio_mul(&q, x);
+    long double exact;
+    if (a == 0 || x == 0)
+        exact = 0;
+    else if (b == 0)
+        exact = ((a < 0) != (x < 0)) ? INT32_MIN : INT32_MAX;
+    else
+        exact = (long double)x * ((long double)a / (long double)b);
+    long double bound = 0.5L + RATIO_REL * fabsl(exact);
+    long double e = fabsl((long double)got - sat(exact));
+    track(&max_err_ratio, e / bound);
+    CHECK_SWEEP(e <= bound, "fxw_ratio_mul(fxw_ratio(%lld, %lld), %d) = %d, exact %.3Lf", (long long)a, (long long)b,
+                x, got, exact);
 }
 
 static void check_cot(fx_t deg)
@@ -413,8 +437,11 @@ int main(int argc, char **argv)
         static const fxw_t wide[] = {INT64_MIN, INT64_MIN + 1, INT64_MAX, -1, 1, (fxw_t)1 << 40, -((fxw_t)1 << 40),
                                      (fxw_t)1 << 62, -((fxw_t)1 << 62), 3, -65536};
         for (size_t i = 0; i < sizeof wide / sizeof wide[0]; i++)
-            for (size_t j = 0; j < sizeof wide / sizeof wide[0]; j++)
+            for (size_t j = 0; j < sizeof wide / sizeof wide[0]; j++) {
                 check_wdiv(wide[i], wide[j]);
+                for (int k = 0; k < N_HARD; k++)
+                    check_ratio(wide[i], wide[j], hard[k]);
+            }
     }
     /* Every cot in steps of 1/16 degree, plus the smallest angles. */
     for (fx_t d = 1; d < F16(90); d += 4096)
@@ -697,6 +724,11 @@ int main(int argc, char **argv)
         }
         check_wdiv(((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
                    (fxw_t)(rng() >> 1) >> (rng() % 63));
+        /* ratios of every size, x of every size (its magnitude drawn by
+         * its bit length, so that small values are as likely as large) */
+        check_ratio(((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
+                    ((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
+                    (fx_t)((int32_t)(uint32_t)rng() >> (rng() % 32)));
         check_norm(rand_fx(), rand_fx(), rand_fx());
         check_vec();
         check_sincos(rand_fx());
@@ -713,6 +745,7 @@ int main(int argc, char **argv)
     printf("  fx_sin_deg %.4f  fx_cos_deg %.4f  fx_rsqrt %.4f  fx_recip %.3f\n", max_err_sin, max_err_cos,
            max_err_rsqrt, max_err_recip);
     printf("  fx_normalize3_len: length error %.3f of its bound (2^-24 relative + 0.5 LSB)\n", max_err_norm_len);
+    printf("  fxw_ratio_mul: %.3f of its bound (0.5 LSB + 2^-29 relative)\n", max_err_ratio);
     /* Machine-readable worst errors for make bench-fx (firmware/benchfx.sh). */
     printf("ERR fx_mul %.3f\nERR fx_div %.3f\nERR fx_recip %.3f\nERR fx_sqrt %.3f\nERR fxw_sqrt %.3f\n", max_err_mul,
            max_err_div, max_err_recip, max_err_sqrt, max_err_wsqrt);
@@ -731,6 +764,7 @@ int main(int argc, char **argv)
     CHECK(max_err_sqrt <= 0.5);
     CHECK(max_err_wsqrt <= 0.5);
     CHECK(max_err_wdiv <= 1.0);
+    CHECK(max_err_ratio <= 1.0);
     CHECK(max_err_norm <= NORM_BOUND);
     CHECK(max_err_norm_len <= 1.0);
     CHECK(max_err_dot <= 0.5);

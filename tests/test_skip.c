@@ -179,6 +179,12 @@ static void test_normalisations(void)
             CHECK_MSG(flat_px > W * H / 4 && fxrt_stats.flat_nums == (uint32_t)changes,
                       "%u flat hit numerators, %ld owner changes on %ld flat pixels", (unsigned)fxrt_stats.flat_nums,
                       changes, flat_px);
+            /* The lambert plane and triangle take their hit points from
+             * the raw camera ray: only the phong box's and the sphere's
+             * pixels normalise theirs. */
+            CHECK_MSG(fxrt_stats.d_normalised == (uint32_t)(covered - flat_px),
+                      "%u camera rays normalised, %ld pixels not on the lambert plane or triangle",
+                      (unsigned)fxrt_stats.d_normalised, covered - flat_px);
         }
     }
 }

@@ -316,7 +316,7 @@ static void check_ray(const char *name, const scene_t *s, int j, const double or
         CHECK_MSG(false, "%s: no object %d", name, j);
         return;
     }
-    color_t c = shade_object(&world, kind, index, &ray, NULL);
+    color_t c = shade_object(&world, kind, index, &ray, NULL, NULL);
     double got[3] = {D(c.r), D(c.g), D(c.b)}, e = 0;
     for (int i = 0; i < 3; i++)
         e = fmax(e, fabs(got[i] - expect[i]));

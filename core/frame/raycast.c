@@ -21,12 +21,14 @@ static void raycast_row_samples(const world_t *w, const cam_t *cam, int32_t row,
             for (int32_t i = 0; i < n; i++) {
                 ray_t ray;
                 hit_t hit;
-                cam_ray(&fine, x * n + i, y0 + j, &ray);
+                cam_ray_raw(&fine, x * n + i, y0 + j, &ray);
+                ray_t unit = ray;
+                cam_ray_unit(&fine, &unit);
                 color_t c = w->background;
-                if (world_hit(w, &ray, &hit)) {
+                if (world_hit(w, &unit, &hit)) {
                     c = hit.obj->color;
                     if (FXRT_MAX_LIGHTS > 0 && geom_lit(hit.obj))
-                        c = shade_object(w, hit.kind, hit.index, &ray, NULL);
+                        c = shade_object(w, hit.kind, hit.index, &ray, &fine, NULL);
                 }
                 color_sum_add(&a[0], c.r, 1);
                 color_sum_add(&a[1], c.g, 1);
@@ -54,11 +56,13 @@ void raycast_row(const world_t *w, const cam_t *cam, int32_t row, uint8_t *rgb, 
     for (int32_t x = 0; x < cam->width; x++) {
         ray_t ray;
         hit_t hit;
-        cam_ray(cam, x, y, &ray);
-        bool found = world_hit(w, &ray, &hit);
+        cam_ray_raw(cam, x, y, &ray);
+        ray_t unit = ray;
+        cam_ray_unit(cam, &unit);
+        bool found = world_hit(w, &unit, &hit);
         rgb8_t c = found ? hit.obj->rgb : w->background_rgb;
         if (FXRT_MAX_LIGHTS > 0 && found && geom_lit(hit.obj))
-            c = color_to_rgb8(shade_object(w, hit.kind, hit.index, &ray, NULL));
+            c = color_to_rgb8(shade_object(w, hit.kind, hit.index, &ray, cam, NULL));
         rgb[3 * x + 0] = c.r;
         rgb[3 * x + 1] = c.g;
         rgb[3 * x + 2] = c.b;

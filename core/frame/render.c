@@ -47,7 +47,9 @@ rgb8_t render_pixel(const world_t *w, const ray_t *ray)
     hit_t hit;
     if (!world_hit(w, ray, &hit))
         return w->background_rgb;
-    if (FXRT_MAX_LIGHTS > 0 && geom_lit(hit.obj))
-        return color_to_rgb8(shade_object(w, hit.kind, hit.index, ray, NULL));
+    if (FXRT_MAX_LIGHTS > 0 && geom_lit(hit.obj)) {
+        ray_t u = *ray; /* (shade_object may normalise its ray in place; this one is unit) */
+        return color_to_rgb8(shade_object(w, hit.kind, hit.index, &u, NULL, NULL));
+    }
     return hit.obj->rgb;
 }

@@ -146,9 +146,10 @@ static inline void render_set_keys(render_t *r, uint32_t *keys)
  * per-frame constants (after the visibility set-up) and a row. */
 void render_shade_setup(render_t *r, const world_t *w);
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb);
-/* The colour of vis object oi along camera ray `ray` (shade_object_k with
- * its constants; a flat object's hit numerator is kept across pixels). */
-color_t render_shade_object(render_t *r, uint16_t oi, const ray_t *ray, uint8_t *mask);
+/* The colour of vis object oi along camera ray `ray` as cam_ray_raw makes
+ * it, normalised in place where needed (shade_object_k with its
+ * constants; a flat object's hit numerator is kept across pixels). */
+color_t render_shade_object(render_t *r, uint16_t oi, ray_t *ray, uint8_t *mask);
 /* The sampler (frame/render_sample.c, FXRT_MAX_SAMPLES > 1): its part of
  * render_setup before the visibility set-up (*cam becomes the fine camera
  * when the world's samples are more than 1; false, with r->error, when

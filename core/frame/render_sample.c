@@ -81,7 +81,7 @@ static color_t render_sample_color(render_t *r, uint16_t oi, int32_t X, int32_t 
     const render_obj_t *o = &r->vis.obj[oi];
     if (FXRT_MAX_LIGHTS > 0 && !o->flat) {
         ray_t ray;
-        cam_ray(r->vis.cam, X, y, &ray);
+        cam_ray_raw(r->vis.cam, X, y, &ray);
         return render_shade_object(r, oi, &ray, NULL);
     }
     return world_common(r->vis.world, (geom_kind_t)o->geom, o->index)->color;
@@ -186,16 +186,18 @@ static void render_adaptive_row(render_t *r, int32_t row)
     for (int32_t x = 0; x < cam->width; x++) {
         ray_t ray;
         hit_t hit;
-        cam_ray(cam, x, y, &ray);
+        cam_ray_raw(cam, x, y, &ray);
+        ray_t unit = ray;
+        cam_ray_unit(cam, &unit);
         uint32_t key = RENDER_KEY_MISS;
         rgb8_t c = w->background_rgb;
-        if (world_hit(w, &ray, &hit)) {
+        if (world_hit(w, &unit, &hit)) {
             uint8_t mask = 0;
             if (FXRT_MAX_LIGHTS > 0) {
                 uint16_t oi = render_obj_of(&r->vis, hit.kind, hit.index);
                 bool lit = geom_lit(hit.obj);
                 c = color_to_rgb8(
-                    shade_object_k(w, hit.kind, hit.index, &ray, lit ? RENDER_SHADE_K(r, oi) : NULL, &mask));
+                    shade_object_k(w, hit.kind, hit.index, &ray, cam, lit ? RENDER_SHADE_K(r, oi) : NULL, &mask));
             } else {
                 c = hit.obj->rgb;
             }

@@ -33,7 +33,7 @@ void render_shade_setup(render_t *r, const world_t *w)
 #define RENDER_FLAT_OF(K, k, ks, cap, solid, bounded, form, ...) RENDER_FLAT_OF_##form(K, ks)
 #define RENDER_FLAT_OF_FLAT(K, ks)                                                                               \
     FXRT_IF_##K(case GEOM_##K:                                                                                  \
-                f->num = geom_flat_num(&w->ks[o->index].a, &w->ks[o->index].n, &ray->o);                        \
+                num = geom_flat_num(&w->ks[o->index].a, &w->ks[o->index].n, &ray->o);                          \
                 f->obj = &w->ks[o->index].obj;                                                                  \
                 f->n = &w->ks[o->index].n;                                                                      \
                 break;)
@@ -45,12 +45,15 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
     const world_t *w = r->vis.world;
     const render_obj_t *o = &r->vis.obj[oi];
     shade_flat_t *f = &r->shade.flat;
+    numw_t num;
     (void)w, (void)ray; /* (no kind of the FLAT form: unused) */
     switch (o->geom) {
         FXRT_KINDS(RENDER_FLAT_OF)
     default: return false; /* not flat */
     }
     FXRT_COUNT(flat_nums);
+    f->num = numw_dividend(num);
+    f->ratio = numw_ratio_num(num);
     f->index = o->index;
     f->kind = o->geom;
     r->shade.flat_of = oi;
@@ -62,19 +65,20 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
 #undef RENDER_FLAT_OF_FLAT
 #undef RENDER_FLAT_OF
 
-/* The colour of vis object oi along camera ray `ray` (one_eye: a pinhole
- * camera, whose flat objects keep their hit numerators). */
-static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *r, uint16_t oi, const ray_t *ray,
+/* The colour of vis object oi along camera ray `ray` as cam_ray_raw makes
+ * it (d not normalised; normalised here where it is needed). one_eye: a
+ * pinhole camera, whose flat objects keep their hit numerators. */
+static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *r, uint16_t oi, ray_t *ray,
                                                                        uint8_t *mask, bool one_eye)
 {
     const render_obj_t *o = &r->vis.obj[oi];
     const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
     if (one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray)))
         return shade_flat_k(r->vis.world, &r->shade.flat, ray, k, mask);
-    return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, k, mask);
+    return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, r->vis.cam, k, mask);
 }
 
-color_t render_shade_object(render_t *r, uint16_t oi, const ray_t *ray, uint8_t *mask)
+color_t render_shade_object(render_t *r, uint16_t oi, ray_t *ray, uint8_t *mask)
 {
     return render_shade_obj(r, oi, ray, mask, r->vis.cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM);
 }
@@ -100,11 +104,11 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
             continue;
         ray_t ray;
         uint8_t mask = 0;
-        cam_ray(cam, x, y, &ray);
+        cam_ray_raw(cam, x, y, &ray);
         color_t c;
         FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) /* its triangle: the visibility pass's (vis/rays.c) */
-                      c = shade_model_k(r->vis.world, o->index, &ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
-                                        r->keys ? &mask : NULL);
+                      c = (cam_ray_unit(cam, &ray), shade_model_k(r->vis.world, o->index, &ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
+                                        r->keys ? &mask : NULL));
                       else)
         c = render_shade_obj(r, oi, &ray, r->keys ? &mask : NULL, one_eye);
         if (r->keys)

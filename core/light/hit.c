@@ -5,9 +5,37 @@
 #include "light/trace.h"
 
 #if FXRT_MAX_LIGHTS > 0
-color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask)
+color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, ray_t *ray, const cam_t *cam,
+                     uint8_t *mask)
 {
-    return shade_object_k(w, kind, index, ray, NULL, mask);
+    return shade_object_k(w, kind, index, ray, cam, NULL, mask);
+}
+
+/* Does the light sum at a point of obj (kind, index) need the ray's unit
+ * direction? Not for a flat or lambert material (no specular term, no
+ * bounce), unless it is a smooth triangle (its normal's side test). */
+static inline __attribute__((always_inline)) bool shade_needs_unit(const world_t *w, const geom_common_t *obj,
+                                                                   geom_kind_t kind, uint16_t index)
+{
+    if (obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_LAMBERT)
+        return true;
+    FXRT_IF_SMOOTH(FXRT_IF_TRIANGLE(if (kind == GEOM_TRIANGLE && w->triangles[index].smooth) return true;))
+    (void)w, (void)kind, (void)index;
+    return false;
+}
+
+/* A camera ray's point on the plane of a FLAT form's object with unit
+ * normal n, from the ray's origin o and its direction r of any length
+ * (cam_ray_raw's, not normalised): o + (num / (r . n)) r with num =
+ * (a - o) . n prepared as a ratio (geom_flat_num); *rn gets r . n. Without
+ * the unit direction's rounding (its 0.5 LSB per component, times t) the
+ * point is within 0.5 LSB + 2^-29 |p - o| per component in Q16.16. */
+static inline __attribute__((always_inline)) vec3_t shade_flat_point(const numw_ratio_num_t *num, const vec3_t *o,
+                                                                     const vec3_t *r, const vec3_t *n, numw_t *rn)
+{
+    *rn = vec3_dotw_unit(*r, *n);
+    numw_ratio_t q = numw_ratio_by(num, *rn);
+    return vec3_add(*o, vec3_make(num_ratio_mul(&q, r->x), num_ratio_mul(&q, r->y), num_ratio_mul(&q, r->z)));
 }
 
 /* The colour at the ray's t on object obj (kind, index), whose geometric
@@ -29,12 +57,35 @@ static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w,
     return c;
 }
 
-color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
-                       uint8_t *mask)
+/* shade_object_k on an object of a FLAT form that needs no unit direction. */
+#define HIT_FLAT(K, k, ks, cap, solid, bounded, form, ...) HIT_FLAT_##form(K, ks)
+#define HIT_FLAT_FLAT(K, ks)                                                                                     \
+    FXRT_IF_##K(case GEOM_##K: {                                                                                \
+        numw_ratio_num_t num = numw_ratio_num(geom_flat_num(&w->ks[index].a, &w->ks[index].n, &ray->o));       \
+        numw_t rn;                                                                                              \
+        vec3_t p = shade_flat_point(&num, &ray->o, &ray->d, &w->ks[index].n, &rn);                              \
+        return shade_sum(w, obj, kind, index GEOM_PART_ARG(NULL), &p, &w->ks[index].n, rn > 0, &ray->d, k, mask); \
+    })
+#define HIT_FLAT_ROUND(K, ks)
+#define HIT_FLAT_FACES(K, ks)
+#define HIT_FLAT_RAYS(K, ks)
+
+color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, ray_t *ray, const cam_t *cam,
+                       const shade_k_t *k, uint8_t *mask)
 {
     const geom_common_t *obj = world_common(w, kind, index);
     if (obj->mat.kind == MATERIAL_FLAT && !mask)
         return obj->color;
+    if (!shade_needs_unit(w, obj, kind, index)) {
+        switch (kind) {
+            FXRT_KINDS(HIT_FLAT)
+        default: break;
+        }
+    }
+    if (cam) {
+        FXRT_COUNT(d_normalised);
+        cam_ray_unit(cam, ray);
+    }
     num_t t = NUM_ZERO;
     vec3_t n = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     /* A model's surface names the part met (scene/kinds.h, geom_part_t). */
@@ -52,14 +103,28 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const
     return shade_hit(w, obj, kind, index GEOM_PART_ARG(part), ray, t, &n, SHADE_FACING_UNKNOWN, k, mask);
 }
 
-color_t shade_flat_k(const world_t *w, const shade_flat_t *f, const ray_t *ray, const shade_k_t *k, uint8_t *mask)
+#undef HIT_FLAT
+#undef HIT_FLAT_FLAT
+#undef HIT_FLAT_ROUND
+#undef HIT_FLAT_FACES
+#undef HIT_FLAT_RAYS
+
+color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask)
 {
     if (f->obj->mat.kind == MATERIAL_FLAT && !mask)
         return f->obj->color;
+    geom_kind_t kind = (geom_kind_t)f->kind;
+    if (!shade_needs_unit(w, f->obj, kind, f->index)) {
+        numw_t rn;
+        vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
+        return shade_sum(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), &p, f->n, rn > 0, &ray->d, k, mask);
+    }
+    FXRT_COUNT(d_normalised);
+    vec3_normalize(&ray->d); /* cam_ray_unit's, for a pinhole camera */
     /* d . n is the quotient's divisor and the light sum's side test. */
     numw_t dn = vec3_dotw_units(ray->d, *f->n);
     num_t t = numw_div_by(&f->num, dn);
-    return shade_hit(w, f->obj, (geom_kind_t)f->kind, f->index GEOM_PART_ARG(NULL), ray, t, f->n, dn > 0, k, mask);
+    return shade_hit(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), ray, t, f->n, dn > 0, k, mask);
 }
 
 #if FXRT_MAX_MODELS > 0

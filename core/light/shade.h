@@ -144,29 +144,37 @@ void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k);
  * world_hit): the hit point and normal come from the
  * object's geom_<kind>_surface (a model's walks its tree again;
  * shade_model_k below takes the triangle met), the light sum from
- * shade_point. When mask
+ * shade_point. With cam not NULL, ray is cam's ray as cam_ray_raw makes
+ * it (d not yet normalised), and cam_ray_unit normalises it here, in
+ * place, where it is needed: an object of a FLAT form whose light sum
+ * needs no unit direction takes its hit point from the raw direction
+ * (light/hit.c, shade_flat_point). With cam NULL, ray->d is unit (any
+ * ray). When mask
  * is not NULL it receives the lights that reach the hit point (bit i for
  * light i), also for a flat material; without it a flat object costs
  * nothing but its colour. */
-color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, uint8_t *mask);
+color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, ray_t *ray, const cam_t *cam,
+                     uint8_t *mask);
 /* The same with the object's per-frame constants (NULL: computed here). */
-color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, const ray_t *ray, const shade_k_t *k,
-                       uint8_t *mask);
+color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, ray_t *ray, const cam_t *cam,
+                       const shade_k_t *k, uint8_t *mask);
 
 /* An object of a FLAT form (scene/kinds.h: a plane, a triangle) seen
- * from o: its common part, unit normal n, and num =
- * geom_flat_num(a, n, o) of its plane's point a, which the shading pass
- * keeps while the object and o stay the same. shade_flat_k is
- * shade_object_k for it along a ray from o: the same value, without the
- * numerator's products. */
+ * from o: its common part, unit normal n, and geom_flat_num(a, n, o) of
+ * its plane's point a, prepared for division (num) and for a ratio
+ * (ratio), which the shading pass keeps while the object and o stay the
+ * same. shade_flat_k is shade_object_k for it along a pinhole camera's
+ * ray from o, given as cam_ray_raw makes it (d not normalised): the same
+ * value, without the numerator's products. */
 typedef struct {
     numw_dividend_t num;
+    numw_ratio_num_t ratio;
     const geom_common_t *obj;
     const vec3_t *n;
     uint16_t index;
     uint8_t kind;
 } shade_flat_t;
-color_t shade_flat_k(const world_t *w, const shade_flat_t *f, const ray_t *ray, const shade_k_t *k, uint8_t *mask);
+color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
 
 /* shade_object_k for model `index` along a camera ray whose nearest
  * triangle tri is known (the visibility pass found it): that triangle is

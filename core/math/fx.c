@@ -387,6 +387,67 @@ fx_t fxw_div_by(const fxw_dividend_t *a, fxw_t b)
     return fxw_div_of(a, b);
 }
 
+fxw_ratio_num_t fxw_ratio_num(fxw_t a)
+{
+    fxw_ratio_num_t q = {0, 0, (int8_t)(a > 0 ? 1 : a < 0 ? -1 : 0)};
+    if (a == 0)
+        return q;
+    uint64_t u = fx_uabs64(a);
+    int s = fx_clz64(u) - 1; /* -1 for a = INT64_MIN */
+    q.s = (int16_t)s;
+    q.n = s < 0 ? u >> 2 : (u << s) >> 1;
+    return q;
+}
+
+fxw_ratio_t fxw_ratio_by(const fxw_ratio_num_t *a, fxw_t b)
+{
+    fxw_ratio_t q = {0, 40, 0}; /* 0 (inline path) */
+    if (a->sign == 0)
+        return q;
+    q.neg = (a->sign < 0) != (b < 0) ? -1 : 0;
+    if (b == 0) {
+        q.e = FXW_RATIO_INF;
+        return q;
+    }
+    /* d: the top 32 bits of |b| 2^sb (32-bit shifts only), in [2^31, 2^32) */
+    uint64_t ub = fx_uabs64(b);
+    uint32_t hi = (uint32_t)(ub >> 32), lo = (uint32_t)ub, d;
+    int sb;
+    if (hi) {
+        sb = fx_clz32(hi);
+        d = sb ? (hi << sb) | (lo >> (32 - sb)) : hi;
+    } else {
+        sb = 32 + fx_clz32(lo);
+        d = lo << (sb - 32);
+    }
+    /* |a| / |b| ~ (a->n 2^(1 - s)) / (d 2^(32 - sb)): a->n / d lies in
+     * (2^29, 2^31) */
+    uint32_t r, m = fx_div64_32(a->n, d, &r);
+    q.m = m + (r >= d - r ? 1u : 0u);
+    q.e = (int16_t)(31 + a->s - sb);
+    return q;
+}
+
+fx_t fxw_ratio_mul_wide(const fxw_ratio_t *q, fx_t x)
+{
+    bool neg = (q->neg != 0) != (x < 0);
+    if (x == 0)
+        return 0;
+    if (q->e == FXW_RATIO_INF)
+        return fx_signed_sat(UINT64_MAX, neg);
+    uint64_t p = fx_umul32(q->m, fx_uabs32(x)); /* <= 2^62 */
+    int e = q->e;
+    if (e >= 64)
+        return 0; /* p 2^-e < 1/4 */
+    if (e >= 1)
+        return fx_signed_sat((p + ((uint64_t)1 << (e - 1))) >> e, neg);
+    if (p == 0)
+        return 0;
+    if (e < -31 || (p >> (63 + e)) != 0)
+        return fx_signed_sat(UINT64_MAX, neg);
+    return fx_signed_sat(p << -e, neg);
+}
+
 bool fx_unit30(const fx_t v[3], int32_t out[3])
 {
     uint32_t m = 0;

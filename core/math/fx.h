@@ -374,6 +374,42 @@ typedef struct {
 fxw_dividend_t fxw_dividend(fxw_t a);
 fx_t fxw_div_by(const fxw_dividend_t *a, fxw_t b);
 
+/* a / b as a binary float, to scale several values by it (light/hit.c: a
+ * camera ray's point on a plane), for one a and many b:
+ * q = fxw_ratio_by(&num, b) with num = fxw_ratio_num(a) holds |a / b| as
+ * m 2^-e, m in [2^29, 2^31] within 1.5 2^-30 relative (the divisor's top 32
+ * bits, the quotient rounded), and fxw_ratio_mul(&q, x) is round(m |x|
+ * 2^-e) (ties up in magnitude) with the sign of x a / b, saturating: within
+ * 0.5 LSB + 2^-29 |x a / b|. b = 0 saturates every non-zero product by
+ * sign; a = 0 gives 0. */
+typedef struct {
+    uint64_t n;    /* |a| 2^s, in [2^61, 2^62) */
+    int16_t s;     /* -1 .. 62 */
+    int8_t sign;   /* of a: -1, 0 or 1 */
+} fxw_ratio_num_t;
+typedef struct {
+    uint32_t m;
+    int16_t e;     /* -33 .. 93, or FXW_RATIO_INF (b = 0) */
+    int32_t neg;   /* 0, or -1 when a / b < 0 */
+} fxw_ratio_t;
+#define FXW_RATIO_INF INT16_MIN
+fxw_ratio_num_t fxw_ratio_num(fxw_t a);
+fxw_ratio_t fxw_ratio_by(const fxw_ratio_num_t *a, fxw_t b);
+fx_t fxw_ratio_mul_wide(const fxw_ratio_t *q, fx_t x);
+/* Inline where e is 33 .. 63 (the rounding bit in the product's high
+ * word, as in fx_normalize3): one 32 x 32 product; otherwise
+ * fxw_ratio_mul_wide, the same rule. */
+static inline fx_t fxw_ratio_mul(const fxw_ratio_t *q, fx_t x)
+{
+    uint32_t k = (uint32_t)(q->e - 33);
+    if (k > 30u)
+        return fxw_ratio_mul_wide(q, x);
+    uint32_t hi = (uint32_t)(fx_umul32(q->m, fx_uabs32(x)) >> 32); /* < 2^30 */
+    uint32_t v = (hi + ((uint32_t)1 << k)) >> (k + 1);
+    uint32_t s = (uint32_t)(q->neg ^ (x < 0 ? -1 : 0));
+    return (fx_t)((v ^ s) - s);
+}
+
 /* 1 / a = fx_div(FX_ONE, a): correctly rounded (|error| <= 0.5 LSB; a tie
  * would need a to divide 2^33 oddly, which no fx_t does), saturating
  * (1/0 = FX_MAX). */

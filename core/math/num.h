@@ -116,6 +116,14 @@ static inline num_t numw_div(numw_t a, numw_t b) { return fxw_div(a, b); }
 typedef fxw_dividend_t numw_dividend_t;
 static inline numw_dividend_t numw_dividend(numw_t a) { return fxw_dividend(a); }
 static inline num_t numw_div_by(const numw_dividend_t *a, numw_t b) { return fxw_div_by(a, b); }
+/* a / b to scale several values by it, for one a and many b
+ * (fxw_ratio_t): num_ratio_mul(&q, x) = x a / b within 0.5 LSB +
+ * 2^-29 |x a / b|, with q = numw_ratio_by(&num, b), num = numw_ratio_num(a). */
+typedef fxw_ratio_num_t numw_ratio_num_t;
+typedef fxw_ratio_t numw_ratio_t;
+static inline numw_ratio_num_t numw_ratio_num(numw_t a) { return fxw_ratio_num(a); }
+static inline numw_ratio_t numw_ratio_by(const numw_ratio_num_t *a, numw_t b) { return fxw_ratio_by(a, b); }
+static inline num_t num_ratio_mul(const numw_ratio_t *q, num_t x) { return fxw_ratio_mul(q, x); }
 /* a * m / d kept wide (Q32.32, |error| <= 0.5 LSB of Q32.32), d > 0. Used
  * for per-pixel steps that must not accumulate rounding across a row. */
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d)
@@ -308,6 +316,11 @@ typedef struct {
 } numw_dividend_t;
 static inline numw_dividend_t numw_dividend(numw_t a) { return (numw_dividend_t){a}; }
 static inline num_t numw_div_by(const numw_dividend_t *a, numw_t b) { return num_div(a->a, b); }
+typedef numw_t numw_ratio_num_t;
+typedef num_t numw_ratio_t;
+static inline numw_ratio_num_t numw_ratio_num(numw_t a) { return a; }
+static inline numw_ratio_t numw_ratio_by(const numw_ratio_num_t *a, numw_t b) { return num_div(*a, b); }
+static inline num_t num_ratio_mul(const numw_ratio_t *q, num_t x) { return *q * x; }
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d) { return a * (num_t)m / (num_t)d; }
 static inline numw_t numw_mul_int(numw_t w, int32_t i) { return w * (num_t)i; }
 static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b) { return a < t * b; }

@@ -207,6 +207,18 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
 
 void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
 {
+    cam_ray_raw(cam, x, y, ray);
+    cam_ray_unit(cam, ray);
+}
+
+void cam_ray_unit(const cam_t *cam, ray_t *ray)
+{
+    if (cam->kind == CAM_PERSPECTIVE)
+        vec3_normalize(&ray->d); /* never zero: |fwd| > 0 and u, v, w are orthogonal */
+}
+
+void cam_ray_raw(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
+{
     int32_t ix = 2 * x - cam->width + 1;
     int32_t iy = 2 * y - cam->height + 1;
     if (cam->kind == CAM_PERSPECTIVE) {
@@ -215,7 +227,6 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
             ray->o = cam->e;
             ray->d = vec3_make(cam->fwd.x + cam->u.x * ix + cam->v.x * iy, cam->fwd.y + cam->u.y * ix + cam->v.y * iy,
                                cam->fwd.z + cam->u.z * ix + cam->v.z * iy);
-            vec3_normalize(&ray->d);
             return;
         }
         /* |r| may exceed the Q16.16 range (up to sqrt(32767^2 + 2 * 4095^2)):
@@ -234,7 +245,6 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
 #endif
         ray->o = cam->e;
         ray->d = r;
-        vec3_normalize(&ray->d); /* r is never zero: |fwd| > 0 and u, v, w are orthogonal */
     } else {
         num_t ou = numw_round(numw_mul_int(cam->step_u, ix));
         num_t ov = numw_round(numw_mul_int(cam->step_v, iy));

@@ -89,7 +89,14 @@ const char *cam_strerror(cam_err_t err);
  * beyond 32767, as cam_setup refuses it). */
 cam_err_t cam_fine(const cam_t *cam, int32_t n, cam_t *fine);
 
-/* The primary ray through pixel (x, y), y counted from the bottom. */
+/* The primary ray through pixel (x, y), y counted from the bottom:
+ * cam_ray_raw, then cam_ray_unit. cam_ray_raw's direction is the
+ * perspective ray's before normalisation (fwd + ix u + iy v, halved where
+ * it would leave the range: only its direction matters), the
+ * orthographic one's -w; cam_ray_unit normalises a perspective ray's in
+ * place (an orthographic one's is unit already). */
 void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray);
+void cam_ray_raw(const cam_t *cam, int32_t x, int32_t y, ray_t *ray);
+void cam_ray_unit(const cam_t *cam, ray_t *ray);
 
 #endif

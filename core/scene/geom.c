@@ -98,17 +98,16 @@ bool geom_flat_occludes(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_
 
 /* The plane's t for any ray (no side or sign test): shading's hit point
  * on a flat piece the renderer found the ray to cover. Its numerator
- * (a - o) . n depends on the ray's origin only: geom_flat_num, prepared
- * for numw_div_by, which the shading pass keeps for the camera rays of a
- * pinhole camera (one eye). */
+ * (a - o) . n depends on the ray's origin only: geom_flat_num, which the
+ * shading pass keeps for the camera rays of a pinhole camera (one eye). */
 static inline __attribute__((always_inline)) numw_t geom_flat_num_at(const vec3_t *a, const vec3_t *n,
                                                                       const vec3_t *o)
 {
     return vec3_dotw_unit(vec3_sub(*a, *o), *n);
 }
-numw_dividend_t geom_flat_num(const vec3_t *a, const vec3_t *n, const vec3_t *o)
+numw_t geom_flat_num(const vec3_t *a, const vec3_t *n, const vec3_t *o)
 {
-    return numw_dividend(geom_flat_num_at(a, n, o));
+    return geom_flat_num_at(a, n, o);
 }
 num_t geom_flat_surface_t(const vec3_t *a, const vec3_t *n, const ray_t *ray)
 {

@@ -120,8 +120,8 @@ void geom_common_init(geom_common_t *c, color_t color, uint16_t id);
 bool geom_flat_t(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t *t);
 bool geom_flat_occludes(const vec3_t *a, const vec3_t *n, const ray_t *ray, num_t tmax);
 num_t geom_flat_surface_t(const vec3_t *a, const vec3_t *n, const ray_t *ray);
-/* geom_flat_surface_t's numerator (a - o) . n for rays from o, prepared
- * for division: numw_div_by(&num, d . n) is geom_flat_surface_t's value. */
-numw_dividend_t geom_flat_num(const vec3_t *a, const vec3_t *n, const vec3_t *o);
+/* geom_flat_surface_t's numerator (a - o) . n for rays from o:
+ * numw_div(num, d . n) is geom_flat_surface_t's value. */
+numw_t geom_flat_num(const vec3_t *a, const vec3_t *n, const vec3_t *o);
 
 #endif
