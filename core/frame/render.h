@@ -71,6 +71,11 @@ typedef struct {
      * frame/render_shade.c. */
     uint16_t flat_of;
     shade_flat_t flat;
+    /* The current row's camera rays (scene/cam.h), and the current
+     * pixel's: here, not on the stack (the shading path is the deepest a
+     * 16 KB board's 2 KB stack holds). */
+    cam_row_t row;
+    ray_t ray;
 #if SHADOW_CULL
     /* Shadow-ray culling, per light and bounded object, and the current
      * row's masks per plane and light (light/shadow.c). */

@@ -91,6 +91,7 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
      * they hold for this row's camera rays only. */
     SHADE_IF_CULL(if (SHADOW_ROWS && r->shade.any_lit) shadow_rows_setup(r->vis.world, cam, y, &r->shade.cull);)
     bool one_eye = cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM;
+    cam_row(cam, y, &r->shade.row);
     for (int32_t x = 0; x < w; x++) {
         uint16_t oi = r->vis.painted[x];
         if (oi == RENDER_VIS_NONE) {
@@ -102,15 +103,15 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         bool lit = !o->flat;
         if (!lit && !r->keys)
             continue;
-        ray_t ray;
+        ray_t *ray = &r->shade.ray;
         uint8_t mask = 0;
-        cam_ray_raw(cam, x, y, &ray);
+        cam_row_ray(cam, &r->shade.row, x, ray);
         color_t c;
         FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) /* its triangle: the visibility pass's (vis/rays.c) */
-                      c = (cam_ray_unit(cam, &ray), shade_model_k(r->vis.world, o->index, &ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
+                      c = (cam_ray_unit(cam, ray), shade_model_k(r->vis.world, o->index, ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
                                         r->keys ? &mask : NULL));
                       else)
-        c = render_shade_obj(r, oi, &ray, r->keys ? &mask : NULL, one_eye);
+        c = render_shade_obj(r, oi, ray, r->keys ? &mask : NULL, one_eye);
         if (r->keys)
             r->keys[x] = render_key(o->id, mask);
         if (!lit)

@@ -74,8 +74,23 @@ static inline color_t color_scale(color_t a, num_t s)
 }
 
 /* The 8-bit pixel: each channel clamped to 0..255 and rounded half up,
- * floor(c + 1/2), exactly in every build. */
-rgb8_t color_to_rgb8(color_t c);
+ * floor(c + 1/2), exactly in every build: in Q16.16 an integer shift; in
+ * float and double, c + 0.5 is exact for any value the loader stores (a
+ * multiple of 2^-16 below 256 has at most 24 significant bits), and the
+ * conversion truncates a non-negative value. Inline: once per pixel. */
+static inline uint8_t color_channel(num_t c)
+{
+    if (!(c > NUM_ZERO))
+        return 0;
+    if (c >= COLOR_MAX)
+        return 255;
+    return (uint8_t)num_round_uint(c);
+}
+static inline rgb8_t color_to_rgb8(color_t c)
+{
+    rgb8_t p = {color_channel(c.r), color_channel(c.g), color_channel(c.b)};
+    return p;
+}
 
 /* The fractions a colour in 1/255 units stands for (lights, ambient,
  * specular and reflection colours are kept as fractions, NUM_ONE full):

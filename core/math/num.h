@@ -190,6 +190,9 @@ static inline num_t num_mul_fits(num_t a, num_t b)
     return (fx_t)((fx_smul32(a, b) + FX_HALF) >> FX_FRAC_BITS);
 }
 static inline num_t num_add_fits(num_t a, num_t b) { return (fx_t)((uint32_t)a + (uint32_t)b); }
+/* a i for a result that fits (the caller's bound): the exact product, no
+ * saturation test. */
+static inline num_t num_mul_int_fits(num_t a, int32_t i) { return (fx_t)((uint32_t)a * (uint32_t)i); }
 /* |d| > lim for 0 <= lim, |d| < 2^62: in one unsigned comparison (d + lim
  * lies in [0, 2 lim] exactly when |d| <= lim). */
 static inline bool numw_abs_gt(numw_t d, numw_t lim) { return (uint64_t)d + (uint64_t)lim > 2 * (uint64_t)lim; }
@@ -328,6 +331,7 @@ static inline uint32_t num_round_uint(num_t c) { return (uint32_t)(c + NUM(0.5))
 static inline bool numw_abs_gt(numw_t d, numw_t lim) { return d > lim || d < -lim; }
 static inline num_t num_mul_fits(num_t a, num_t b) { return a * b; }
 static inline num_t num_add_fits(num_t a, num_t b) { return a + b; }
+static inline num_t num_mul_int_fits(num_t a, int32_t i) { return a * (num_t)i; }
 /* v / |v| in place (one square root, one division), or false for the
  * zero vector; with |v| into *len. */
 static inline bool num_normalize3_len(num_t v[3], num_t *len)

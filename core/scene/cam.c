@@ -126,7 +126,7 @@ static bool cam_grid_small(const cam_t *cam)
     return true;
 #else
     (void)cam;
-    return false;
+    return true; /* float and double hold every r(x, y) */
 #endif
 }
 
@@ -209,6 +209,14 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
 {
     cam_ray_raw(cam, x, y, ray);
     cam_ray_unit(cam, ray);
+}
+
+void cam_row(const cam_t *cam, int32_t y, cam_row_t *row)
+{
+    int32_t iy = 2 * y - cam->height + 1;
+    row->y = y;
+    row->direct = cam->kind == CAM_PERSPECTIVE && cam->small;
+    row->viy = vec3_make(num_mul_int_fits(cam->v.x, iy), num_mul_int_fits(cam->v.y, iy), num_mul_int_fits(cam->v.z, iy));
 }
 
 void cam_ray_unit(const cam_t *cam, ray_t *ray)

@@ -62,7 +62,8 @@ typedef struct {
     num_t focal; /* |fwd| = H cot(fov/2): the distance of the pixel grid in half pixels */
     /* Q16.16: every r(x, y) of the grid, and every partial sum of it, fits
      * int32 (per axis |fwd| + (W - 1) |u| + (H - 1) |v| < 2^31), so cam_ray
-     * forms it in 32-bit arithmetic; else in 64 bits, halved when needed. */
+     * forms it in 32-bit arithmetic; else in 64 bits, halved when needed.
+     * Always true in float and double. */
     bool small;
     /* Orthographic: per-pixel offsets along u and v are (2x - W + 1) *
      * step_u and (2y - H + 1) * step_v, kept wide so that no rounding
@@ -98,5 +99,29 @@ cam_err_t cam_fine(const cam_t *cam, int32_t n, cam_t *fine);
 void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray);
 void cam_ray_raw(const cam_t *cam, int32_t x, int32_t y, ray_t *ray);
 void cam_ray_unit(const cam_t *cam, ray_t *ray);
+
+/* A row of camera rays (the shading pass): cam_row forms row y's part
+ * (2y - H + 1) v once; cam_row_ray then gives cam_ray_raw's ray for (x, y),
+ * the same values: fwd + ((2x - W + 1) u + (2y - H + 1) v), exact in
+ * Q16.16 where cam->small holds (else, and for an orthographic camera, it
+ * calls cam_ray_raw). */
+typedef struct {
+    vec3_t viy;   /* (2y - H + 1) v */
+    int32_t y;
+    bool direct;  /* a perspective camera with cam->small */
+} cam_row_t;
+void cam_row(const cam_t *cam, int32_t y, cam_row_t *row);
+static inline void cam_row_ray(const cam_t *cam, const cam_row_t *row, int32_t x, ray_t *ray)
+{
+    if (!row->direct) {
+        cam_ray_raw(cam, x, row->y, ray);
+        return;
+    }
+    int32_t ix = 2 * x - cam->width + 1;
+    ray->o = cam->e;
+    ray->d = vec3_make(num_add_fits(cam->fwd.x, num_add_fits(num_mul_int_fits(cam->u.x, ix), row->viy.x)),
+                       num_add_fits(cam->fwd.y, num_add_fits(num_mul_int_fits(cam->u.y, ix), row->viy.y)),
+                       num_add_fits(cam->fwd.z, num_add_fits(num_mul_int_fits(cam->u.z, ix), row->viy.z)));
+}
 
 #endif
