@@ -21,14 +21,16 @@ $(BUILD)/meshq/%/host: firmware/meshq.c $(BUILD)/meshq/%/meshq_data.h $(BUILD)/h
 	$(Q)$(CC) $(CFLAGS_H) -DMESHQ_HOST -DFXRT_MULTI -Icore -I$(@D) -o $@ firmware/meshq.c $(@D)/mesh.c \
 	  $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/q16/%.o) -lm
 
-# (the core files the queries use, not the whole core: each test's ELFs build in a second)
+# (the core files the queries use, not the whole core: each test's ELFs build in a second;
+# FXRT_MAX_MODELS=1: a bare board has no models by default, and scene/bvh.c
+# compiles only where there are)
 MESHQ_FW_SRC := firmware/meshq.c core/scene/bvh.c core/scene/geom.c $(wildcard core/math/*.c) \
                 firmware/startup.c firmware/semihost.c firmware/counter.c
 define meshq_board_rule
 $(BUILD)/meshq/%/$(1).elf: $(MESHQ_FW_SRC) $(BUILD)/meshq/%/meshq_data.h $(wildcard linker/*.ld)
 	@echo "  ARMCC   $$@"
 	$$(Q)$$(ARM_CC) $$(WARN) -O2 $$(CPU_$(1)) -ffreestanding -ffunction-sections -fdata-sections -fno-math-errno \
-	  -DFXRT_NUMBER=1 -Icore -Ifirmware -I$$(@D) $$(MESHQ_FW_SRC) $$(@D)/mesh.c -nostartfiles \
+	  -DFXRT_NUMBER=1 -DFXRT_MAX_MODELS=1 -Icore -Ifirmware -I$$(@D) $$(MESHQ_FW_SRC) $$(@D)/mesh.c -nostartfiles \
 	  --specs=nano.specs --specs=nosys.specs -Wl,--gc-sections -Wl,-Map=$$(@D)/$(1).map -Llinker -Tlinker/$(1).ld -lm -o $$@
 endef
 $(foreach b,$(BOARDS),$(eval $(call meshq_board_rule,$(b))))

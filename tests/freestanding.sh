@@ -3,7 +3,8 @@
 #  - it includes nothing but <stdint.h>, <stddef.h>, <stdbool.h> (checked in
 #    the source, and by compiling with -nostdinc so that only the
 #    compiler's own freestanding headers exist);
-#  - the Q16.16 build compiled for Cortex-M0 and Cortex-M3 references no
+#  - the Q16.16 build compiled for Cortex-M0 and Cortex-M3 (every kind of
+#    object compiled in, lib.sh's BARE_ALL_KINDS) references no
 #    malloc/free, no stdio, and no soft-float helper (__aeabi_f*, __aeabi_d*).
 set -u
 . "$(dirname "$0")/lib.sh"
@@ -27,7 +28,7 @@ for cpu in cortex-m0 cortex-m3; do
         o=$out/$cpu-${f//\//-}.o
         if arm-none-eabi-gcc -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wmissing-prototypes -Werror \
             -Os -mcpu=$cpu -mthumb -ffreestanding -nostdinc -isystem "$inc" -DFXRT_NUMBER=1 \
-            -Icore -c core/$f.c -o "$o"; then
+            "${BARE_ALL_KINDS[@]}" -Icore -c core/$f.c -o "$o"; then
             ok
             objs+=("$o")
         else
@@ -39,6 +40,8 @@ for cpu in cortex-m0 cortex-m3; do
     echo "$cpu undefined symbols:" $undef
     forbidden=$(grep -E '^(malloc|free|calloc|realloc|_sbrk|_malloc_r|printf|puts|putchar|__aeabi_[fd].*|__.*sf[0-9]|__.*df[0-9])$' <<<"$undef" || true)
     check "$cpu: no malloc/stdio/soft-float references (found: $forbidden)" test -z "$forbidden"
+    check "$cpu: the mesh walk is compiled in (bvh_nearest defined)" \
+        bash -c "arm-none-eabi-nm '$out/$cpu-core.o' | grep -q ' T bvh_nearest$'"
     # And the check itself must be able to fail: a float build does pull
     # soft-float helpers in on these cores.
     arm-none-eabi-gcc -std=c11 -Os -mcpu=$cpu -mthumb -ffreestanding -DFXRT_NUMBER=2 -Icore -c core/scene/geom.c -o "$out/$cpu-float-geom.o"

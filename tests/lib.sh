@@ -6,6 +6,11 @@ BUILD=${BUILD:-build}
 FXRT=${FXRT:-$BUILD/fxrt}
 # Firmware built by the tests carries no debug information (firmware.mk).
 export FW_DEBUG=${FW_DEBUG-}
+# Capacities for compiling the whole core for a bare board in the suites
+# that read its code (norecurse.sh, freestanding.sh): the kinds a bare
+# board leaves out by default (fxrt_config.h) are compiled in, so that
+# their code, the mesh walk among it, is checked too.
+BARE_ALL_KINDS=(-DFXRT_MAX_MODELS=4 -DFXRT_MAX_ELLIPSOIDS=4 -DFXRT_MAX_PARALLELEPIPEDS=4)
 
 ok() { PASSED=$((PASSED + 1)); }
 bad() {

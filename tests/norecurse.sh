@@ -13,7 +13,9 @@
 #        render_row and of trace_bounces, printed with the chain that makes
 #        it up (libgcc helpers count 0 bytes).
 # Default configuration (fxrt_config.h: FXRT_MAX_DEPTH 16, 8 lights,
-# samples up to 16). Negative controls: tests/norecurse_bad.c (self and
+# samples up to 16), with the kinds a bare board leaves out by default
+# (models, ellipsoids, parallelepipeds: their code, the mesh walk
+# scene/bvh.c among it, is in the graph). Negative controls: tests/norecurse_bad.c (self and
 # mutual recursion, a call through a pointer) must be flagged at both
 # levels. Ends with "norecurse: N passed, N failed".
 set -u
@@ -29,7 +31,7 @@ if ! command -v "$CC_ARM" >/dev/null; then
 fi
 major=$("$CC_ARM" -dumpversion | cut -d. -f1)
 check "$CC_ARM is GCC 10 or later (-fcallgraph-info; got $("$CC_ARM" -dumpversion))" test "$major" -ge 10
-FLAGS=(-std=c11 -mcpu=cortex-m3 -mthumb -ffreestanding -fcallgraph-info=su -Icore)
+FLAGS=(-std=c11 -mcpu=cortex-m3 -mthumb -ffreestanding -fcallgraph-info=su -Icore "${BARE_ALL_KINDS[@]}")
 
 # graph DIR OPT NUMBER SOURCES...: compile each source into DIR (its .ci
 # next to the .o); DIR/rc gets the status
@@ -98,6 +100,8 @@ for cfg in "${configs[@]}"; do
     check "$name $opt: no cycle and no indirect call in the core's call graph${cyc:+ (found: $cyc)}" test "$rc" -eq 0
     nodes=$(cat "$d"/*.ci | grep -c '^node:')
     check "$name $opt: the graph is not empty ($nodes nodes)" test "$nodes" -gt 50
+    check "$name $opt: the mesh walk is in the graph (bvh_nearest, bvh_any)" \
+        bash -c "grep -q 'title: \"bvh_nearest\"' $d/*.ci && grep -q 'title: \"bvh_any\"' $d/*.ci"
     if [ "$opt" = -O2 ]; then
         grep '^stack:' <<<"$res" | sed "s/^/$name $opt /"
         check "$name $opt: render_row reaches trace_bounces (the bounce loop is in the graph)" \

@@ -16,6 +16,10 @@
 #include "scene/bvh.h"
 #include "scene/geom.h"
 
+/* Only models walk a mesh: a build without them (a bare board's default)
+ * compiles none of it. */
+#if FXRT_MAX_MODELS > 0
+
 /* ---- the ray in mesh space ------------------------------------------------ */
 
 #define BVH_O_MAX ((int64_t)1 << 30) /* |origin| in units of 2^-f */
@@ -729,3 +733,4 @@ bool bvh_check(const bvh_inst_t *in)
     }
     return next == m->n_triangles;
 }
+#endif
