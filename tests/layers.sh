@@ -144,8 +144,8 @@ fi
 # (vis/setup_model.c, setup_ellipsoid.c, setup_parallelepiped.c): their
 # set-up is the box their _bounds gives (vis/setup.c). One came with
 # scene/bvh.c's guard: without models (a bare board's default) the mesh
-# walk compiles to nothing (0.4 s of compiler time per firmware image, some
-# 20 s of make test's wall time).
+# walk compiles to nothing (0.4 s of compiler time per firmware image,
+# about 25 CPU-s of make test's).
 IF_CAP=255
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0
