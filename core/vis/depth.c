@@ -1,3 +1,4 @@
+/* (Over 700 lines: the depth functions inline into the depth-range tests; apart, +0.6 % instructions.) */
 /* depth: a covered pixel's depth from an object's forms; the nearest owner
  * of a column where two objects cover it (render_resolve: the depth
  * ranges first, the depths where they do not decide); bounds on an
