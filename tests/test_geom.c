@@ -357,6 +357,76 @@ static void test_cam_small(void)
 #endif
 }
 
+/* The shading pass's rays by rows (cam_row, cam_row_ray) are cam_ray_raw's,
+ * byte for byte, in every number type: random cameras over the whole
+ * domain (eye within the coordinate limit, any gaze and up, fov in (0,
+ * 180), sizes 1 to 4096, both kinds), the pixels of a sample of rows; in
+ * Q16.16 also cameras on both sides of cam_t.small's bound (the row form
+ * only where it holds, cam_ray_raw's 64-bit path beyond). */
+static void test_cam_rows(void)
+{
+    int cams = 0, direct = 0, other = 0, bad = 0;
+    for (int i = 0; i < 400; i++) {
+        cam_t c;
+        double lim = FXRT_COORD_LIMIT * 0.99;
+        dv_t e = i % 4 == 0 ? urand_v(-lim, lim) : urand_v(-20, 20);
+        dv_t g = urand_v(-1, 1), up = urand_v(-1, 1);
+        double fov = i % 5 == 0 ? urand(0.2, 179.8) : urand(20, 120);
+        int32_t w = i % 7 == 0 ? 1 + (int32_t)(rng() % 4096) : 1 + (int32_t)(rng() % 320);
+        int32_t h = i % 11 == 0 ? 1 + (int32_t)(rng() % 4096) : 1 + (int32_t)(rng() % 240);
+        cam_kind_t kind = i % 6 == 5 ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE;
+        if (cam_setup(&c, kind, V(e), V(dscale(g, urand(0.01, 100))), V(up), N(fov), N(urand(0.5, 50)), w, h) != CAM_OK)
+            continue;
+        cams++;
+        for (int32_t k = 0; k < 6; k++) {
+            int32_t y = k < 2 ? k * (h - 1) : (int32_t)(rng() % (uint64_t)h);
+            cam_row_t row;
+            cam_row(&c, y, &row);
+            direct += row.direct;
+            other += !row.direct;
+            for (int32_t x = 0; x < w; x += 1 + w / 97) {
+                ray_t a, b;
+                memset(&a, 0, sizeof a);
+                memset(&b, 0, sizeof b);
+                cam_row_ray(&c, &row, x, &a);
+                cam_ray_raw(&c, x, y, &b);
+                if (memcmp(&a, &b, sizeof a) != 0 && bad++ < 5)
+                    CHECK_MSG(0, "camera %d (%dx%d, %s): pixel (%d, %d): the row's ray differs from cam_ray_raw's", i,
+                              (int)w, (int)h, kind == CAM_PERSPECTIVE ? "perspective" : "orthographic", (int)x, (int)y);
+            }
+        }
+    }
+#if FXRT_NUMBER == FXRT_Q16
+    /* Near the bound: a long focal length over a 4096-pixel row. */
+    for (int i = 0; i < 40; i++) {
+        cam_t c;
+        if (cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V(urand_v(-1, 1)), V3(0.3, 1, 0.1), N(urand(0.3, 20)), NUM_ZERO,
+                      4096, 64 + (int32_t)(rng() % 4033)) != CAM_OK)
+            continue;
+        for (int32_t y = 0; y < c.height; y += 1 + c.height / 5) {
+            cam_row_t row;
+            cam_row(&c, y, &row);
+            CHECK_MSG(row.direct == c.small, "camera near the bound %d: direct %d, small %d", i, (int)row.direct,
+                      (int)c.small);
+            direct += row.direct;
+            other += !row.direct;
+            for (int32_t x = 0; x < c.width; x += 61) {
+                ray_t a, b;
+                memset(&a, 0, sizeof a);
+                memset(&b, 0, sizeof b);
+                cam_row_ray(&c, &row, x, &a);
+                cam_ray_raw(&c, x, y, &b);
+                if (memcmp(&a, &b, sizeof a) != 0 && bad++ < 5)
+                    CHECK_MSG(0, "camera near the bound %d: pixel (%d, %d): the row's ray differs", i, (int)x, (int)y);
+            }
+        }
+    }
+#endif
+    CHECK_MSG(bad == 0, "%d rays by rows differ from cam_ray_raw's", bad);
+    CHECK_MSG(cams >= 300, "random cameras accepted: %d of 400", cams);
+    CHECK_MSG(direct > 0 && other > 0, "both paths taken: %d rows by the row form, %d by cam_ray_raw", direct, other);
+}
+
 /* Angles of the perspective rays, row order, mirror symmetry. */
 static void test_cam_perspective_angles(void)
 {
@@ -2970,6 +3040,7 @@ int main(void)
     test_cam_pixels();
     test_cam_perspective_angles();
     test_cam_small();
+    test_cam_rows();
     test_cam_orthographic();
     test_cam_errors();
     test_cam_wide_fov();
