@@ -363,6 +363,30 @@ static void test_cam_small(void)
  * 180), sizes 1 to 4096, both kinds), the pixels of a sample of rows; in
  * Q16.16 also cameras on both sides of cam_t.small's bound (the row form
  * only where it holds, cam_ray_raw's 64-bit path beyond). */
+/* Row y of camera c, every step-th pixel: cam_row_ray against cam_ray_raw;
+ * counts the row's path (*direct or *other) and returns the rays that
+ * differ (the first few reported, named by `what` and case i). */
+static int cam_rows_diff(const cam_t *c, int32_t y, int32_t step, const char *what, int i, int *direct, int *other)
+{
+    cam_row_t row;
+    int bad = 0;
+    cam_row(c, y, &row);
+    *direct += row.direct;
+    *other += !row.direct;
+    for (int32_t x = 0; x < c->width; x += step) {
+        ray_t a, b;
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        cam_row_ray(c, &row, x, &a);
+        cam_ray_raw(c, x, y, &b);
+        if (memcmp(&a, &b, sizeof a) != 0 && bad++ < 3)
+            CHECK_MSG(0, "%s %d (%dx%d, %s): pixel (%d, %d): the row's ray differs from cam_ray_raw's", what, i,
+                      (int)c->width, (int)c->height, c->kind == CAM_PERSPECTIVE ? "perspective" : "orthographic",
+                      (int)x, (int)y);
+    }
+    return bad;
+}
+
 static void test_cam_rows(void)
 {
     int cams = 0, direct = 0, other = 0, bad = 0;
@@ -378,23 +402,9 @@ static void test_cam_rows(void)
         if (cam_setup(&c, kind, V(e), V(dscale(g, urand(0.01, 100))), V(up), N(fov), N(urand(0.5, 50)), w, h) != CAM_OK)
             continue;
         cams++;
-        for (int32_t k = 0; k < 6; k++) {
-            int32_t y = k < 2 ? k * (h - 1) : (int32_t)(rng() % (uint64_t)h);
-            cam_row_t row;
-            cam_row(&c, y, &row);
-            direct += row.direct;
-            other += !row.direct;
-            for (int32_t x = 0; x < w; x += 1 + w / 97) {
-                ray_t a, b;
-                memset(&a, 0, sizeof a);
-                memset(&b, 0, sizeof b);
-                cam_row_ray(&c, &row, x, &a);
-                cam_ray_raw(&c, x, y, &b);
-                if (memcmp(&a, &b, sizeof a) != 0 && bad++ < 5)
-                    CHECK_MSG(0, "camera %d (%dx%d, %s): pixel (%d, %d): the row's ray differs from cam_ray_raw's", i,
-                              (int)w, (int)h, kind == CAM_PERSPECTIVE ? "perspective" : "orthographic", (int)x, (int)y);
-            }
-        }
+        for (int32_t k = 0; k < 6; k++)
+            bad += cam_rows_diff(&c, k < 2 ? k * (h - 1) : (int32_t)(rng() % (uint64_t)h), 1 + w / 97, "camera", i,
+                                 &direct, &other);
     }
 #if FXRT_NUMBER == FXRT_Q16
     /* Near the bound: 4096 x 4096 pixels, H cot(fov/2) close to the 32,767
@@ -404,27 +414,17 @@ static void test_cam_rows(void)
     for (int i = 0; i < 40; i++) {
         cam_t c;
         if (cam_setup(&c, CAM_PERSPECTIVE, V3(0, 0, 0), V3(urand(-0.2, 0.2), urand(-0.2, 0.2), -1), V3(0.3, 1, 0.1),
-                      N(urand(14.25, 14.8)), NUM_ZERO,
-                      4096, 4096) != CAM_OK)
+                      N(urand(14.25, 14.8)), NUM_ZERO, 4096, 4096) != CAM_OK)
             continue;
         near_small += c.small;
         near_big += !c.small;
         for (int32_t y = 0; y < c.height; y += 1 + c.height / 5) {
-            cam_row_t row;
-            cam_row(&c, y, &row);
-            CHECK_MSG(row.direct == c.small, "camera near the bound %d: direct %d, small %d", i, (int)row.direct,
+            int d = 0, o = 0;
+            bad += cam_rows_diff(&c, y, 61, "camera near the bound", i, &d, &o);
+            CHECK_MSG(d == c.small, "camera near the bound %d: row %d by the row form %d, small %d", i, (int)y, d,
                       (int)c.small);
-            direct += row.direct;
-            other += !row.direct;
-            for (int32_t x = 0; x < c.width; x += 61) {
-                ray_t a, b;
-                memset(&a, 0, sizeof a);
-                memset(&b, 0, sizeof b);
-                cam_row_ray(&c, &row, x, &a);
-                cam_ray_raw(&c, x, y, &b);
-                if (memcmp(&a, &b, sizeof a) != 0 && bad++ < 5)
-                    CHECK_MSG(0, "camera near the bound %d: pixel (%d, %d): the row's ray differs", i, (int)x, (int)y);
-            }
+            direct += d;
+            other += o;
         }
     }
     CHECK_MSG(near_small > 0 && near_big > 0, "cameras near the bound on both sides: %d small, %d not", near_small,
