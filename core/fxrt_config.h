@@ -41,29 +41,17 @@ FXRT_STATIC_ASSERT(FXRT_NUMBER == FXRT_Q16 || FXRT_NUMBER == FXRT_FLOAT || FXRT_
  * boards, where a firmware that draws meshes sets it (the scene compiler
  * sets it to the scene's count). */
 #ifndef FXRT_MAX_MODELS
-#if FXRT_PORT_BARE
-#define FXRT_MAX_MODELS 0
-#else
-#define FXRT_MAX_MODELS 16
-#endif
+#define FXRT_MAX_MODELS FXRT_PORT_HOSTED(16)
 #endif
 /* Ellipsoids and parallelepipeds: spheres that a node scales unevenly
  * and boxes that a node turns (scene/ellipsoid.c, scene/parallelepiped.c),
  * a ray per pixel of their bounds. Default: 16 each on the host, 0 on
  * bare-metal boards (the scene compiler sets each to the scene's count). */
 #ifndef FXRT_MAX_ELLIPSOIDS
-#if FXRT_PORT_BARE
-#define FXRT_MAX_ELLIPSOIDS 0
-#else
-#define FXRT_MAX_ELLIPSOIDS 16
-#endif
+#define FXRT_MAX_ELLIPSOIDS FXRT_PORT_HOSTED(16)
 #endif
 #ifndef FXRT_MAX_PARALLELEPIPEDS
-#if FXRT_PORT_BARE
-#define FXRT_MAX_PARALLELEPIPEDS 0
-#else
-#define FXRT_MAX_PARALLELEPIPEDS 16
-#endif
+#define FXRT_MAX_PARALLELEPIPEDS FXRT_PORT_HOSTED(16)
 #endif
 
 /* Smooth shading (a mesh's 'shading smooth', docs/SCENES.md "Meshes"): a
@@ -346,6 +334,9 @@ FXRT_STATIC_ASSERT(FXRT_PIXEL == FXRT_RGB888 || FXRT_PIXEL == FXRT_RGB565, "FXRT
 #define FXRT_MAX_LIGHTS 8
 #endif
 FXRT_STATIC_ASSERT(0 <= FXRT_MAX_LIGHTS && FXRT_MAX_LIGHTS <= 8, "FXRT_MAX_LIGHTS must be in 0..8");
+/* FXRT_IF_LIGHTS(...): its arguments where lights are compiled in. */
+#define FXRT_IF_LIGHTS(...) FXRT_IF_NONZERO(FXRT_MAX_LIGHTS, __VA_ARGS__)
+FXRT_STATIC_ASSERT((FXRT_MAX_LIGHTS > 0) == (0 FXRT_IF_LIGHTS(+1)), "FXRT_MAX_LIGHTS must be a plain decimal number");
 /* FXRT_SHADOWS 0 compiles shadow rays out (every light then reaches every
  * surface that faces it, whatever its shadows setting); 1 (default) casts
  * them for lights with shadows on. The scene compiler emits 0 when no
@@ -399,6 +390,9 @@ FXRT_STATIC_ASSERT(FXRT_MAX_LIGHTS > 0 || (!FXRT_SHADOWS && !FXRT_PHONG), "FXRT_
 #endif
 FXRT_STATIC_ASSERT(0 <= FXRT_MAX_DEPTH && FXRT_MAX_DEPTH <= 16, "FXRT_MAX_DEPTH must be in 0..16");
 FXRT_STATIC_ASSERT(FXRT_MAX_DEPTH == 0 || FXRT_MAX_LIGHTS > 0, "FXRT_MAX_DEPTH > 0 needs FXRT_MAX_LIGHTS > 0 (reflective and transparent materials)");
+/* FXRT_IF_DEPTH(...): its arguments where bounces are compiled in. */
+#define FXRT_IF_DEPTH(...) FXRT_IF_NONZERO(FXRT_MAX_DEPTH, __VA_ARGS__)
+FXRT_STATIC_ASSERT((FXRT_MAX_DEPTH > 0) == (0 FXRT_IF_DEPTH(+1)), "FXRT_MAX_DEPTH must be a plain decimal number");
 /* Largest N of 'samples N' (N x N rays per pixel, 1..16). 1 compiles
  * supersampling out. The visibility pass then works on a camera N times
  * as wide, so N * width must stay within FXRT_RENDER_MAX_WIDTH. */
@@ -406,6 +400,9 @@ FXRT_STATIC_ASSERT(FXRT_MAX_DEPTH == 0 || FXRT_MAX_LIGHTS > 0, "FXRT_MAX_DEPTH >
 #define FXRT_MAX_SAMPLES 16
 #endif
 FXRT_STATIC_ASSERT(1 <= FXRT_MAX_SAMPLES && FXRT_MAX_SAMPLES <= 16, "FXRT_MAX_SAMPLES must be in 1..16");
+/* FXRT_IF_SAMPLES(...): its arguments where supersampling is compiled in. */
+#define FXRT_IF_SAMPLES(...) FXRT_IF_ABOVE1(FXRT_MAX_SAMPLES, __VA_ARGS__)
+FXRT_STATIC_ASSERT((FXRT_MAX_SAMPLES > 1) == (0 FXRT_IF_SAMPLES(+1)), "FXRT_MAX_SAMPLES must be a plain decimal number");
 /* FXRT_SAMPLE_RUNS: the runs (one owner each) that the fast Q16.16
  * sampling pass may hold for the N fine rows of one output row when it
  * works from spans (core/render_sample.c, "run mode": every object on

@@ -46,12 +46,10 @@ static void raycast_row_samples(const world_t *w, const cam_t *cam, int32_t row,
 
 void raycast_row(const world_t *w, const cam_t *cam, int32_t row, uint8_t *rgb, uint16_t *ids)
 {
-#if FXRT_MAX_SAMPLES > 1
-    if (world_samples(w) > 1) {
+    FXRT_IF_SAMPLES(if (world_samples(w) > 1) {
         raycast_row_samples(w, cam, row, rgb, ids);
         return;
-    }
-#endif
+    })
     int32_t y = cam->height - 1 - row;
     for (int32_t x = 0; x < cam->width; x++) {
         ray_t ray;

@@ -90,12 +90,8 @@ typedef struct {
 
 typedef struct {
     vis_t vis; /* first: the visibility pass's own */
-#if FXRT_MAX_LIGHTS > 0
-    render_shade_t shade;
-#endif
-#if FXRT_MAX_SAMPLES > 1
-    render_sample_t sample;
-#endif
+    FXRT_IF_LIGHTS(render_shade_t shade;)
+    FXRT_IF_SAMPLES(render_sample_t sample;)
     /* Optional, set with render_set_keys after render_setup: when not
      * NULL, render_row and render_row_reference also write each pixel's
      * key (render_key) into keys[0 .. width-1]. */

@@ -27,12 +27,16 @@
 
 /* FXRT_PORT_BARE: a bare-metal Arm target (arm-none-eabi), where the
  * program's linker script owns the stack (fxrt_config.h's
- * FXRT_STACK_RESERVE). PORT_KEEP(p): p is used (no code but its address
- * in a register), so that what it points to is linked in. */
+ * FXRT_STACK_RESERVE). FXRT_PORT_HOSTED(n): n on a host, 0 on such a
+ * target (a default that only hosts take; n a plain number, and so is the
+ * result). PORT_KEEP(p): p is used (no code but its address in a
+ * register), so that what it points to is linked in. */
 #if defined(__arm__) && !defined(__linux__)
 #define FXRT_PORT_BARE 1
+#define FXRT_PORT_HOSTED(n) 0
 #else
 #define FXRT_PORT_BARE 0
+#define FXRT_PORT_HOSTED(n) n
 #endif
 #define PORT_KEEP(p) __asm__ volatile("" : : "r"(p))
 
@@ -52,6 +56,26 @@
 #else
 #define FXRT_STATIC_ASSERT(cond, msg) _Static_assert(cond, msg)
 #endif
+/* FXRT_IF_NONZERO(N, ...): its other arguments when N is a plain decimal
+ * number other than 0, nothing when N is 0; FXRT_IF_ABOVE1(N, ...) the
+ * same for N other than 0 and 1. N is a capacity or a limit from
+ * fxrt_config.h, which fxrt.h also pastes into link names: a conditional
+ * for a declaration, a field or a statement without #if. N pastes onto a
+ * probe's prefix; where that names a probe (FXRT_ZERO_0, FXRT_ATMOST1_0,
+ * FXRT_ATMOST1_1), FXRT_NONZERO_DROP moves into the second place,
+ * otherwise FXRT_NONZERO_KEEP is there. fxrt_config.h and scene/kinds.h
+ * assert that they agree with N's value. */
+#define FXRT_IF_NONZERO(n, ...) FXRT_NONZERO_IF_(FXRT_ZERO_, n, __VA_ARGS__)
+#define FXRT_IF_ABOVE1(n, ...) FXRT_NONZERO_IF_(FXRT_ATMOST1_, n, __VA_ARGS__)
+#define FXRT_NONZERO_IF_(probe, n, ...) FXRT_NONZERO_IF__(probe, n, __VA_ARGS__)
+#define FXRT_NONZERO_IF__(probe, n, ...) FXRT_NONZERO_SECOND(probe##n, FXRT_NONZERO_KEEP, ~)(__VA_ARGS__)
+#define FXRT_ZERO_0 ~, FXRT_NONZERO_DROP
+#define FXRT_ATMOST1_0 ~, FXRT_NONZERO_DROP
+#define FXRT_ATMOST1_1 ~, FXRT_NONZERO_DROP
+#define FXRT_NONZERO_SECOND(...) FXRT_NONZERO_SECOND_(__VA_ARGS__)
+#define FXRT_NONZERO_SECOND_(a, b, ...) b
+#define FXRT_NONZERO_KEEP(...) __VA_ARGS__
+#define FXRT_NONZERO_DROP(...)
 
 
 #endif

@@ -56,13 +56,9 @@ void geom_common_init(geom_common_t *c, color_t color, uint16_t id)
 #endif
     c->rgb = color_to_rgb8(color);
     c->id = id;
-#if FXRT_MAX_LIGHTS > 0
-    c->mat.kind = MATERIAL_FLAT;
-    c->mat.exponent = 0;
-    c->mat.specular = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    c->mat.reflection = c->mat.specular;
-    c->mat.index = NUM_ZERO;
-#endif
+    FXRT_IF_LIGHTS(c->mat.kind = MATERIAL_FLAT; c->mat.exponent = 0;
+                   c->mat.specular = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+                   c->mat.reflection = c->mat.specular; c->mat.index = NUM_ZERO;)
 }
 
 /* Where the ray meets the plane through a with normal n: t = (a - o) . n /

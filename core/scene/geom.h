@@ -58,20 +58,14 @@ typedef struct {
 #if FXRT_MAX_LIGHTS > 0 || FXRT_MAX_SAMPLES > 1
     color_t color;  /* 1/255 units, for shading and sampling (a flat 1-sample build needs only rgb) */
 #endif
-#if FXRT_MAX_LIGHTS > 0
-    material_t mat; /* MATERIAL_FLAT unless world_set_material changed it */
-#endif
+    FXRT_IF_LIGHTS(material_t mat;) /* MATERIAL_FLAT unless world_set_material changed it */
 } geom_common_t;
 
 /* Is c's material lit (not MATERIAL_FLAT)? Always false without lights. */
 static inline bool geom_lit(const geom_common_t *c)
 {
-#if FXRT_MAX_LIGHTS > 0
-    return c->mat.kind != MATERIAL_FLAT;
-#else
     (void)c;
-    return false;
-#endif
+    return FXRT_IF_LIGHTS(c->mat.kind != MATERIAL_FLAT ||) false;
 }
 
 /* Component i (0 = x, 1 = y, 2 = z) of v. */

@@ -43,42 +43,19 @@
     X(PARALLELEPIPED, parallelepiped, parallelepipeds, FXRT_MAX_PARALLELEPIPEDS, 1, 1, RAYS, 0, center, POINT, u, AXIS, v, AXIS, w, AXIS)
 
 /* FXRT_IF_KIND(...): its arguments where the kind is compiled in, nothing
- * where its capacity is 0. */
-#if FXRT_MAX_PLANES > 0
-#define FXRT_IF_PLANE(...) __VA_ARGS__
-#else
-#define FXRT_IF_PLANE(...)
-#endif
-#if FXRT_MAX_SPHERES > 0
-#define FXRT_IF_SPHERE(...) __VA_ARGS__
-#else
-#define FXRT_IF_SPHERE(...)
-#endif
-#if FXRT_MAX_TRIANGLES > 0
-#define FXRT_IF_TRIANGLE(...) __VA_ARGS__
-#else
-#define FXRT_IF_TRIANGLE(...)
-#endif
-#if FXRT_MAX_BOXES > 0
-#define FXRT_IF_BOX(...) __VA_ARGS__
-#else
-#define FXRT_IF_BOX(...)
-#endif
-#if FXRT_MAX_MODELS > 0
-#define FXRT_IF_MODEL(...) __VA_ARGS__
-#else
-#define FXRT_IF_MODEL(...)
-#endif
-#if FXRT_MAX_ELLIPSOIDS > 0
-#define FXRT_IF_ELLIPSOID(...) __VA_ARGS__
-#else
-#define FXRT_IF_ELLIPSOID(...)
-#endif
-#if FXRT_MAX_PARALLELEPIPEDS > 0
-#define FXRT_IF_PARALLELEPIPED(...) __VA_ARGS__
-#else
-#define FXRT_IF_PARALLELEPIPED(...)
-#endif
+ * where its capacity is 0 (port/port.h's FXRT_IF_NONZERO; the assertion
+ * below checks each capacity is a plain number, which it needs). */
+#define FXRT_IF_PLANE(...) FXRT_IF_NONZERO(FXRT_MAX_PLANES, __VA_ARGS__)
+#define FXRT_IF_SPHERE(...) FXRT_IF_NONZERO(FXRT_MAX_SPHERES, __VA_ARGS__)
+#define FXRT_IF_TRIANGLE(...) FXRT_IF_NONZERO(FXRT_MAX_TRIANGLES, __VA_ARGS__)
+#define FXRT_IF_BOX(...) FXRT_IF_NONZERO(FXRT_MAX_BOXES, __VA_ARGS__)
+#define FXRT_IF_MODEL(...) FXRT_IF_NONZERO(FXRT_MAX_MODELS, __VA_ARGS__)
+#define FXRT_IF_ELLIPSOID(...) FXRT_IF_NONZERO(FXRT_MAX_ELLIPSOIDS, __VA_ARGS__)
+#define FXRT_IF_PARALLELEPIPED(...) FXRT_IF_NONZERO(FXRT_MAX_PARALLELEPIPEDS, __VA_ARGS__)
+#define FXRT_KIND_CAP_PLAIN(K, k, ks, cap, ...) \
+    FXRT_STATIC_ASSERT((cap > 0) == (0 FXRT_IF_NONZERO(cap, +1)), "the capacity of " #ks " must be a plain decimal number");
+FXRT_KINDS(FXRT_KIND_CAP_PLAIN)
+#undef FXRT_KIND_CAP_PLAIN
 
 /* FXRT_IF_SMOOTH(...): its arguments where smooth shading is compiled in
  * (FXRT_SMOOTH, fxrt_config.h); FXRT_IF_NORMALS(...) where a surface may

@@ -114,12 +114,8 @@ fxrt_err_t world_set_samples(world_t *w, int32_t samples, bool adaptive)
 {
     if (samples < 1 || samples > FXRT_MAX_SAMPLES || (adaptive && (!FXRT_ADAPTIVE || samples < 2)))
         return FXRT_ERR_SAMPLES;
-#if FXRT_MAX_SAMPLES > 1
-    w->samples = (uint8_t)samples;
-    w->adaptive = adaptive;
-#else
     (void)w;
-#endif
+    FXRT_IF_SAMPLES(w->samples = (uint8_t)samples; w->adaptive = adaptive;)
     return FXRT_OK;
 }
 
@@ -317,9 +313,7 @@ fxrt_err_t world_set_material(world_t *w, int32_t id, const material_t *m)
         c->mat.reflection = black;
     if (m->kind != MATERIAL_TRANSPARENT)
         c->mat.index = NUM_ZERO;
-#if FXRT_MAX_DEPTH > 0
-    w->n_bounce = (uint16_t)(w->n_bounce + is_b - was_b);
-#endif
+    FXRT_IF_DEPTH(w->n_bounce = (uint16_t)(w->n_bounce + is_b - was_b);)
     w->n_lit = (uint16_t)(w->n_lit + is - was);
 #else
     (void)kind, (void)index; /* flat: nothing to store */

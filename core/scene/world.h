@@ -37,32 +37,22 @@ typedef struct {
     uint8_t mesh_up[FXRT_MAX_TRIANGLES];
     uint8_t mesh_bits[FXRT_MAX_TRIANGLES];
 #endif
-#if FXRT_MAX_LIGHTS > 0
-    color_t ambient;  /* c_a, fractions 0..1 (default 0) */
-    uint8_t n_lights;
-    uint16_t n_lit;   /* objects whose material is not flat */
-    light_t lights[FXRT_MAX_LIGHTS];
-#endif
-#if FXRT_MAX_DEPTH > 0
+    /* Lights: c_a, fractions 0..1 (default 0); the lights; how many
+     * objects have a material that is not flat. */
+    FXRT_IF_LIGHTS(color_t ambient; uint8_t n_lights; uint16_t n_lit; light_t lights[FXRT_MAX_LIGHTS];)
     /* Secondary rays (light/trace.c): the largest bounce (world_set_depth,
      * default 4 or FXRT_MAX_DEPTH if smaller), how many objects have a
      * reflective or transparent material, and the box around every
      * bounded object (spheres, triangles, boxes; grown by world_add_*),
-     * which a secondary ray must meet before those objects are tested. */
-    uint8_t depth;
-    uint16_t n_bounce;
-    bool bounded;  /* some bounded object exists: bmin, bmax are valid */
-    vec3_t bmin, bmax;
-    vec3_t bc;     /* the sphere around that box: centre and squared */
-    numw_t br2;    /* radius, padded (light/trace.c) */
-#endif
-#if FXRT_MAX_SAMPLES > 1
-    /* Supersampling (core/render_sample.c): N x N rays per pixel, 1 by
+     * which a secondary ray must meet before those objects are tested:
+     * bounded says some bounded object exists (bmin, bmax are valid); bc
+     * and br2 are the sphere around that box, centre and squared radius,
+     * padded (light/trace.c). */
+    FXRT_IF_DEPTH(uint8_t depth; uint16_t n_bounce; bool bounded; vec3_t bmin, bmax; vec3_t bc; numw_t br2;)
+    /* Supersampling (frame/render_sample.c): N x N rays per pixel, 1 by
      * default; adaptive (FXRT_ADAPTIVE): N x N only where the 3x3
      * neighbourhood's keys differ at one sample. */
-    uint8_t samples;
-    bool adaptive;
-#endif
+    FXRT_IF_SAMPLES(uint8_t samples; bool adaptive;)
 } world_t;
 
 /* The nearest hit of a ray: what shading needs. */
@@ -133,15 +123,7 @@ fxrt_err_t world_set_ambient(world_t *w, color_t ambient);
 fxrt_err_t world_set_depth(world_t *w, int32_t depth);
 fxrt_err_t world_set_samples(world_t *w, int32_t samples, bool adaptive);
 /* The world's bounce depth and samples (0 and 1 when compiled out). */
-static inline int32_t world_depth(const world_t *w)
-{
-#if FXRT_MAX_DEPTH > 0
-    return w->depth;
-#else
-    (void)w;
-    return 0;
-#endif
-}
+static inline int32_t world_depth(const world_t *w) { return (void)w, FXRT_IF_DEPTH(w->depth +) 0; }
 #if FXRT_MAX_SAMPLES > 1
 static inline int32_t world_samples(const world_t *w) { return w->samples; }
 static inline bool world_adaptive(const world_t *w) { return w->adaptive; }

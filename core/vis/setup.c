@@ -131,9 +131,7 @@ const char *render_vis_setup(vis_t *r, const world_t *w, const cam_t *cam)
         r->sampled = world_samples(w) > 1;
 #if RENDER_VIS
     r->track = world_samples(w) > 1;
-#if FXRT_MAX_LIGHTS > 0
-    r->track = r->track || w->n_lit > 0;
-#endif
+    FXRT_IF_LIGHTS(r->track = r->track || w->n_lit > 0;)
 #endif
     r->nplanes = 0 FXRT_IF_PLANE(+w->n_planes);
     for (int32_t x = 0; x < cam->width; x++)
