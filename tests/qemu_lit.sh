@@ -11,8 +11,10 @@
 #      Thumb-2 integer code (it runs in part 2 here and in tests/qemu.sh's
 #      seed batch); make test-full runs its batch too;
 #   2. the firmware itself (firmware/main.c, make qemu) in full-frame and
-#      streaming modes on every board, a different lit scene per run; the
-#      micro:bit's full frame is 48x36 (160x120 needs 57 KB of frame).
+#      streaming modes (make test: the M3 full, the M4F streaming, the
+#      micro:bit both; make test-full: both on every board), a different
+#      lit scene per run; the micro:bit's full frame is 48x36 (160x120
+#      needs 57 KB of frame).
 # Stack use (stack_used= of the firmware and of the on-board batches) is
 # printed per board and must stay below the board's stack.
 set -u
@@ -57,8 +59,10 @@ for scene in "${scenes[@]}"; do
 done
 
 # 2. firmware/main.c: "BOARD FB SIZE" per run, scenes taken in turn.
-fw_runs=("mps2-an385 full $SIZE" "mps2-an385 stream $SIZE" "mps2-an386 full $SIZE"
-    "mps2-an386 stream $SIZE" "microbit stream $SIZE" "microbit full 48x36")
+# (make test: each board and each frame mode once; make test-full: both
+# modes on every board)
+fw_runs=("mps2-an385 full $SIZE" "mps2-an386 stream $SIZE" "microbit stream $SIZE" "microbit full 48x36")
+full && fw_runs+=("mps2-an385 stream $SIZE" "mps2-an386 full $SIZE")
 fw_run() { # I BOARD FB SIZE: build, run, compare; verdict lines in $out/fw-I.txt
     local i=$1 b=$2 fb=$3 size=$4 scene name log ppm
     scene=${scenes[$((i % ${#scenes[@]}))]}

@@ -23,8 +23,9 @@
 #   run mode          samples 2 with one primitive kind at a time, M0 and
 #                     M3, compiled with the firmware's -Werror warnings
 #   ablation          each switch of make bench-ablation (FXRT_ABLATE), M0
-#                     and M3, the renderer compiled with -Werror
-#                     (make test: each kind and switch on one of the two
+#                     and M3, the renderer compiled with -Werror (make
+#                     test-full only)
+#                     (run mode, make test: each kind on one of the two
 #                     cores in turn; make test-full: on both)
 # Then the counters of tests/test_skip.c (built with FXRT_STATS 1) run.
 set -u
@@ -124,10 +125,13 @@ for cpu in cortex-m0 cortex-m3; do
 done
 # Every ablation switch of make bench-ablation (firmware/ablate.sh) compiles
 # with the firmware's -Werror on the M0 and the M3 (FXRT_ABLATE_SPANS once left
-# render_scan_flat's parameters unused and broke the ablation run).
+# render_scan_flat's parameters unused and broke the ablation run). These
+# are benchmark switches, not a user's configuration: make test-full
+# checks them (make test's time), and layers.sh's q16-ablate build there.
 abl_dir=$out/ablation-caps
 mkdir -p "$abl_dir"
 abl_switches="FXRT_ABLATE_BOUNDS FXRT_ABLATE_STEP FXRT_ABLATE_LONE FXRT_ABLATE_SPANS FXRT_ABLATE_ZRANGE FXRT_ABLATE_COHERENCE FXRT_ABLATE_HOIST FXRT_ABLATE_ORDER"
+full || abl_switches=
 ci=0
 for cpu in cortex-m0 cortex-m3; do # the builds side by side (each in a directory of its own)
     si=0
