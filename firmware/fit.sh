@@ -16,9 +16,9 @@
 #    linker script whose memories are 256 MB long; RAM needed is _estack -
 #    ORIGIN(RAM) of that ELF (.data, .bss, alignment and the reserved stack),
 #    flash needed is the end of .text plus the .data image.
-#  - per object: the same sources compiled again with one kind's capacity
-#    (FXRT_MAX_<KIND> in scene_config.h) raised by 32 objects and linked the
-#    same way; RAM per object = the difference / 32, rounded up, from a
+#  - per object: the sources that hold RAM (probe_sources below) compiled
+#    again with one kind's capacity (FXRT_MAX_<KIND> in scene_config.h)
+#    raised by 32 objects and linked the same way; RAM per object = the difference / 32, rounded up, from a
 #    probe with the scene's own capacities. Probes are compiled without the
 #    spheres' row-coherence state (a scene that does not fit with it is
 #    built without it), so the figures are those of large scenes; a small
@@ -71,11 +71,14 @@ big_ld() {
     sed -E 's/LENGTH[[:space:]]*=[[:space:]]*[0-9A-Fa-fxKM]+/LENGTH = 256M/' "linker/$1.ld" >"$2"
 }
 
-# trial_link OBJDIR OUT.elf: link the objects of OBJDIR against the big
-# script; prints "RAM FLASH" needed in bytes.
+# trial_link OBJDIR OUT.elf: link the objects of OBJDIR (where OBJDIR
+# lacks one, DIR's) against the big script; prints "RAM FLASH" needed in
+# bytes.
 trial_link() {
     local objdir=$1 elf=$2 objs=() s
-    for s in $SRC; do objs+=("$objdir/${s%.c}.o"); done
+    for s in $SRC; do
+        if [[ -f $objdir/${s%.c}.o ]]; then objs+=("$objdir/${s%.c}.o"); else objs+=("$DIR/${s%.c}.o"); fi
+    done
     "$ARM_CC" $CPU -o "$elf" "${objs[@]}" "${LDFLAGS[@]}" -T"$WORK/big.ld" >"$elf.log" 2>&1 ||
         { cat "$elf.log" >&2; die "trial link of $elf failed"; }
     local estack sidata sdata edata
@@ -83,13 +86,13 @@ trial_link() {
     echo "$((estack - RAM_ORIGIN)) $((sidata - FLASH_ORIGIN + edata - sdata))"
 }
 
-# compile_all OUTDIR WHAT FLAGS...: every firmware source ($SRC) compiled
-# with FLAGS into OUTDIR/<source>.o side by side (errors in OUTDIR/<source>.log);
-# dies naming WHAT when one fails.
+# compile_all OUTDIR WHAT FLAGS...: every firmware source ($SRC, or
+# $ONLY where set) compiled with FLAGS into OUTDIR/<source>.o side by side
+# (errors in OUTDIR/<source>.log); dies naming WHAT when one fails.
 compile_all() {
     local out=$1 what=$2 s pids=()
     shift 2
-    for s in $SRC; do
+    for s in ${ONLY:-$SRC}; do
         mkdir -p "$out/$(dirname "$s")"
         "$ARM_CC" "$@" -c "$s" -o "$out/${s%.c}.o" 2>"$out/${s%.c}.log" &
         pids+=($!)
@@ -126,14 +129,35 @@ probe() {
         [[ $s == "$DIR/scene_config.h" ]] && s=$pdir/scene_config.h
         flags+=("$s")
     done
-    compile_all "$pdir" "probe compile ($kind = $cap)" "${flags[@]}"
+    ONLY=$PROBE_SRC compile_all "$pdir" "probe compile ($kind = $cap)" "${flags[@]}"
     trial_link "$pdir" "$pdir/probe.elf"
+}
+
+# probe_sources: sets PROBE_SRC, the sources a probe compiles again:
+# firmware/main.c (the program's fxrt_t: the world's and the renderer's
+# arrays, sized by the capacities), core/frame/api.c (the core's stack
+# reservation and its capacity constants) and any other source whose
+# object in DIR holds RAM. The core keeps no RAM of its own beyond those
+# two (tests/freestanding.sh checks it with every kind compiled in), so
+# the others' objects, whose code alone changes with a capacity, are
+# DIR's. RAM figures are exact; flash per object counts main.c's and
+# api.c's growth.
+probe_sources() {
+    local s
+    PROBE_SRC="firmware/main.c core/frame/api.c"
+    for s in $SRC; do
+        [[ " $PROBE_SRC " == *" $s "* ]] && continue
+        if arm-none-eabi-nm "$DIR/${s%.c}.o" | awk '$2 ~ /^[BbDdCcGgSs]$/ && $3 != "fxrt_stats" { f = 1 } END { exit !f }'; then
+            PROBE_SRC+=" $s"
+        fi
+    done
 }
 
 # analyse: sets PER_<kind> (RAM bytes per object), FLASHPER_<kind>, COUNT_<kind>,
 # FIXED (RAM for everything but the objects) from the scene in DIR.
 analyse() {
     local k m n ra fa rb fb sum=0
+    probe_sources
     read -r rb fb < <(probe base 0) # the differences are taken without the spheres' row coherence
     for k in $KINDS; do
         m=$(macro "$k")

@@ -42,6 +42,13 @@ for cpu in cortex-m0 cortex-m3; do
     check "$cpu: no malloc/stdio/soft-float references (found: $forbidden)" test -z "$forbidden"
     check "$cpu: the mesh walk is compiled in (bvh_nearest defined)" \
         bash -c "arm-none-eabi-nm '$out/$cpu-core.o' | grep -q ' T bvh_nearest$'"
+    # The core keeps no RAM of its own but its stack reservation
+    # (frame/api.c) and the test counters: every other byte is the
+    # caller's fxrt_t. firmware/fit.sh's probes rely on it (they compile
+    # main.c and api.c again, not the rest).
+    ram=$(arm-none-eabi-nm "$out/$cpu-core.o" | awk '$2 ~ /^[BbDdCcGgSs]$/ { print $3 }' | sort | tr '\n' ' ')
+    check "$cpu: the core's only RAM is fxrt_stack_extra and fxrt_stats (found: $ram)" \
+        test "$ram" = "fxrt_stack_extra fxrt_stats "
     # And the check itself must be able to fail: a float build does pull
     # soft-float helpers in on these cores.
     arm-none-eabi-gcc -std=c11 -Os -mcpu=$cpu -mthumb -ffreestanding -DFXRT_NUMBER=2 -Icore -c core/scene/geom.c -o "$out/$cpu-float-geom.o"
