@@ -16,7 +16,7 @@
 
 SAN_CC     ?= clang
 SAN_DIR    := $(BUILD)/san
-SAN_FLAGS  := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1
+SAN_FLAGS  := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -gline-tables-only -O1
 SAN_CFLAGS := $(WARN) $(SAN_FLAGS) -D_POSIX_C_SOURCE=200809L -MMD -MP -Icore
 # The test programs' own sources (tests/*.c, the checks, not the code under
 # test) at -O0: the sanitizers check them as well at any level, and clang
