@@ -25,16 +25,18 @@ EX_MB_CFLAGS = $(WARN) -O2 -g $(CPU_microbit) -ffreestanding -ffunction-sections
                -fstack-usage -Icore -Ifirmware -Iexamples
 
 # example_rules NAME: the host program $(EX_HOST)/NAME and the micro:bit's
-# $(EX_MB)/NAME.elf, each with the core compiled in NAME's configuration.
+# $(EX_MB)/NAME.elf, each with the core compiled in NAME's configuration
+# (the host program at TEST_OPT, -O0: a test program, whose frames must
+# equal the micro:bit's -O2 build's).
 define example_rules
 $(EX_OBJ)/host-$(1)/core/%.o: core/%.c tests/examples.mk
 	@mkdir -p $$(@D)
 	@echo "  CC ex   $$<"
-	$$(Q)$$(CC) $$(CFLAGS_H) $$(EXAMPLE_CFG_$(1)) -Icore -c $$< -o $$@
+	$$(Q)$$(CC) $$(CFLAGS_T) $$(EXAMPLE_CFG_$(1)) -Icore -c $$< -o $$@
 $(EX_OBJ)/host-$(1)/%.o: examples/%.c tests/examples.mk
 	@mkdir -p $$(@D)
 	@echo "  CC ex   $$<"
-	$$(Q)$$(CC) $$(CFLAGS_H) $$(EXAMPLE_CFG_$(1)) -Icore -c $$< -o $$@
+	$$(Q)$$(CC) $$(CFLAGS_T) $$(EXAMPLE_CFG_$(1)) -Icore -c $$< -o $$@
 $(EX_HOST)/$(1): $$(EXAMPLE_CORE:%=$(EX_OBJ)/host-$(1)/core/%.o) $(EX_OBJ)/host-$(1)/$(1).o $(EX_OBJ)/host-$(1)/io_host.o
 	@mkdir -p $$(@D)
 	@echo "  LD      $$@"
@@ -68,7 +70,7 @@ define test_fxrt_rule
 $(BUILD)/tests/test_fxrt_$(1): tests/test_fxrt.c $(BUILD)/host/fx.o $(CORE_NUM:%=$(BUILD)/host/$(1)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(1) $$@"
-	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
+	$$(Q)$$(CC) $$(CFLAGS_T) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ $$(filter %.c %.o,$$^) $$(LDLIBS_H)
 endef
 $(foreach n,$(NUMBERS),$(eval $(call test_fxrt_rule,$(n))))
 

@@ -47,7 +47,7 @@ $(BUILD)/host/q16-nohw/%.o: core/%.c
 $(BUILD)/tests/test_geom_q16_nohw: tests/test_geom.c $(wildcard tests/*.h) $(BUILD)/tests/fx-nohw.o \
     $(CORE_NUM:%=$(BUILD)/host/q16-nohw/%.o)
 	@echo "  CC/LD nohw $@"
-	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DFXRT_MULTI -DFXRT_NUMBER=1 -DTEST_GEOM_NAME='"test_geom_q16_nohw"' \
+	$(Q)$(CC) $(CFLAGS_T) $(FX_NOHW_FLAGS) -DFXRT_MULTI -DFXRT_NUMBER=1 -DTEST_GEOM_NAME='"test_geom_q16_nohw"' \
 	    -Icore -Ihost -o $@ $(filter %.c %.o,$^) $(LDLIBS_H)
 
 SUITES_EXTRA += $(BUILD)/tests/test_geom_q16_nohw

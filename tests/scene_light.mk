@@ -8,7 +8,7 @@ $(BUILD)/tests/test_scene_light_$(1): tests/test_scene_light.c tests/check.h $(S
     $(BUILD)/host/fx.o $(BUILD)/host/engine-$(1).o $(CORE_NUM:%=$(BUILD)/host/$(1)/%.o)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(1) $$@"
-	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ \
+	$$(Q)$$(CC) $$(CFLAGS_T) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -Icore -Ihost -o $$@ \
 	  $$(filter %.c %.o,$$^) $$(LDLIBS_H)
 endef
 $(foreach n,$(NUMBERS),$(eval $(call scene_light_rules,$(n))))
