@@ -218,8 +218,17 @@ if [[ ${1:-} == link ]]; then
     if [[ $NEED_RAM -gt $RAM_LEN ]] && grep -q '^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$' "$DIR/scene_config.h"; then
         sed -i -E 's|^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$|#define FXRT_COHERENT_SPHERES 0 /* firmware/fit.sh: the row state does not fit */|' \
             "$DIR/scene_config.h"
-        compile_all "$DIR" "compile without sphere rows" "${CFLAGS[@]}" -MMD -MP
-        read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
+        # RAM first, from the sources that hold it (probe_sources): a
+        # scene that does not fit without the row state either is not
+        # compiled again (its message gives that RAM, and the flash of the
+        # build with the row state).
+        probe_sources
+        ONLY=$PROBE_SRC compile_all "$WORK/norows" "compile without sphere rows" "${CFLAGS[@]}"
+        read -r NEED_RAM _ < <(trial_link "$WORK/norows" "$WORK/norows.elf")
+        if [[ $NEED_RAM -le $RAM_LEN ]]; then
+            compile_all "$DIR" "compile without sphere rows" "${CFLAGS[@]}" -MMD -MP
+            read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
+        fi
         [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: the spheres' row state does not fit; built without it" >&2
     fi
     if [[ ${FIT_QUICK:-0} == 1 && ( $NEED_RAM -gt $RAM_LEN || $NEED_FLASH -gt $FLASH_LEN ) ]]; then
