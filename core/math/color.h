@@ -108,7 +108,7 @@ color_t color_fractions(color_t c);
  * unit per sample, below 2^32, so 16 x 16 samples never overflow. */
 #if FXRT_NUMBER == FXRT_Q16
 typedef uint32_t color_sum_t;
-_Static_assert((uint64_t)255 * 65536 * 256 + 256 * 32768 < ((uint64_t)1 << 32),
+FXRT_STATIC_ASSERT((uint64_t)255 * 65536 * 256 + 256 * 32768 < ((uint64_t)1 << 32),
                "a pixel's sum of 16 x 16 clamped samples, plus half a unit each, fits uint32");
 /* Add channel c, clamped, n times. */
 static inline void color_sum_add(color_sum_t *a, num_t c, uint32_t n)
