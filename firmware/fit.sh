@@ -157,7 +157,7 @@ probe_sources() {
 # FIXED (RAM for everything but the objects) from the scene in DIR.
 analyse() {
     local k m n ra fa rb fb sum=0
-    probe_sources
+    [[ -n ${PROBE_SRC:-} ]] || probe_sources # (link mode may have found them already)
     read -r rb fb < <(probe base 0) # the differences are taken without the spheres' row coherence
     for k in $KINDS; do
         m=$(macro "$k")
