@@ -38,7 +38,13 @@
 #ifndef FXRT_H
 #define FXRT_H
 
+#include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
+
+#include "port/port.h"
+
+FXRT_C_BEGIN /* C linkage in a C++ program (port/port.h) */
 
 #include "scene/cam.h"
 #include "fxrt_err.h"
@@ -247,5 +253,7 @@ fxrt_err_t fxrt_render_row(fxrt_render_t *r, int32_t row, uint8_t *out, size_t o
 
 /* Short English text for an fxrt_err_t (or "ok" for any value >= 0). */
 const char *fxrt_strerror(int32_t err);
+
+FXRT_C_END
 
 #endif

@@ -141,11 +141,29 @@ check "docs/EMBEDDING.md snippet builds with -Wall -Wextra -Wpedantic -Werror" \
     "$mm/snippet.c" "$mm/snippet_main.c" $core
 check "docs/EMBEDDING.md snippet renders 16 frames of 48 rows" "$mm/snippet"
 
+# A C++ program: tests/api_lang.c, in the common subset of C11 and C++11,
+# compiled as C (cc) and as C++ (clang++, from the clang package), each
+# linked against the orbit example's C core objects. Both must link (fxrt.h
+# gives its declarations C linkage in C++), pass their own checks of the
+# refused calls' codes, and write the same two lit frames byte for byte.
+CXX=${CXX:-clang++}
+for lang in c cxx; do
+    if [ $lang = c ]; then comp=($CC -std=c11); else comp=($CXX -x c++ -std=c++11); fi
+    check "tests/api_lang.c builds as $lang with -Wall -Wextra -Wpedantic -Werror against the C core" \
+        "${comp[@]}" -Wall -Wextra -Wpedantic -Werror -O2 $ecfg -Icore -c tests/api_lang.c -o "$mm/api_lang_$lang.o"
+    check "api_lang ($lang) links" "${comp[0]}" -o "$mm/api_lang_$lang" "$mm/api_lang_$lang.o" $core
+    check "api_lang ($lang) runs and its checks pass" "$mm/api_lang_$lang" "$mm/api_lang_$lang.ppm"
+done
+check "api_lang: the C++ build's frames equal the C build's byte for byte" \
+    cmp -s "$mm/api_lang_c.ppm" "$mm/api_lang_cxx.ppm"
+check "api_lang: the frames are not blank (more than 100 distinct byte values)" \
+    test "$(tail -c +14 "$mm/api_lang_c.ppm" | od -An -v -tu1 | tr -s ' ' '\n' | sort -u | wc -l)" -gt 100
+
 # One prefix: what the example and the snippet take from the core are
 # fxrt_ and FXRT_ names only. A word of theirs (with an underscore or a
 # capital, outside comments and strings) that a core header also has must
 # carry the prefix, unless it is C's own (stdint.h, stddef.h, stdbool.h).
-for f in examples/orbit.c "$mm/snippet.c"; do
+for f in examples/orbit.c "$mm/snippet.c" tests/api_lang.c; do
     words=$(sed -E 's://.*$::; s/"([^"\\]|\\.)*"/""/g' "$f" | perl -0pe 's{/\*.*?\*/}{}gs' |
         grep -oE '\b[A-Za-z_][A-Za-z0-9_]*\b' | grep -E '[_A-Z]' | sort -u |
         grep -vxE '(fxrt|FXRT)_[A-Za-z0-9_]*|u?int(8|16|32|64)_t|size_t|bool|NULL|__attribute__|noinline' || true)

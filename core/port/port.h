@@ -50,11 +50,17 @@
 #else
 #define FXRT_PORT_V7M_ASM 0
 #endif
-/* A compile-time check, in C11 and in a C++ program that includes fxrt.h. */
+/* A compile-time check, in C11 and in a C++ program that includes fxrt.h;
+ * and the C linkage that fxrt.h gives its declarations in a C++ program
+ * (the core is C: tests/examples.sh links a C++ program against it). */
 #ifdef __cplusplus
 #define FXRT_STATIC_ASSERT(cond, msg) static_assert(cond, msg)
+#define FXRT_C_BEGIN extern "C" {
+#define FXRT_C_END }
 #else
 #define FXRT_STATIC_ASSERT(cond, msg) _Static_assert(cond, msg)
+#define FXRT_C_BEGIN
+#define FXRT_C_END
 #endif
 /* FXRT_IF_NONZERO(N, ...): its other arguments when N is a plain decimal
  * number other than 0, nothing when N is 0; FXRT_IF_ABOVE1(N, ...) the
