@@ -54,3 +54,10 @@ bench-mesh: $(BUILD)/fxrt-scenec
 bench-models: deps $(BUILD)/fxrt $(BUILD)/fxrt-scenec
 	$(Q)BUILD=$(BUILD) MODELS_UPDATE_DOCS=$(MODELS_UPDATE_DOCS) firmware/models.sh
 .PHONY: bench-models
+
+# make models-plot: docs/bench/models.png (the growth curve, log-log) drawn
+# again from docs/bench/models.md, the table make bench-models generated.
+models-plot:
+	$(Q)mkdir -p $(BUILD)/models
+	$(Q)firmware/models-plot.sh docs/bench/models.md docs/bench/models.png $(BUILD)/models/models-plot.dat
+.PHONY: models-plot

@@ -11,7 +11,9 @@
 # Models: icospheres of 80 to 81,920 triangles (scenes/models/mkmodels.sh)
 # and Spot at 1,654 and 23,062 triangles from ../shared/models/ where that
 # folder exists (the project does not copy them). Writes
-# $BUILD/models/bench.md; with MODELS_UPDATE_DOCS=1 also docs/bench/models.md.
+# $BUILD/models/bench.md and the growth curve drawn from it, log-log
+# ($BUILD/models/models.png, firmware/models-plot.sh); with
+# MODELS_UPDATE_DOCS=1 also docs/bench/models.md and docs/bench/models.png.
 # Number types: for the models of MODELS_NUMBERS_ONLY (default ico1280,
 # ico5120 and spot), both scenes on every board also as the float builds
 # (fast: direct evaluation; step: -DFXRT_FLOAT_STEP=1), each frame
@@ -204,8 +206,11 @@ m3() { awk -F'|' -v m="$1" -v s="$2" '$2 ~ "^ " m " $" && $5 ~ "^ " s " $" { gsu
     fi
 } >>"$md"
 cat "$md"
+# The growth curve, log-log, drawn from the table above (firmware/models-plot.sh).
+firmware/models-plot.sh "$md" "$out/models.png" || fail=1
 if [ "${MODELS_UPDATE_DOCS:-}" = 1 ]; then
     cp "$md" docs/bench/models.md
-    echo "bench-models: docs/bench/models.md updated" >&2
+    cp "$out/models.png" docs/bench/models.png
+    echo "bench-models: docs/bench/models.md and models.png updated" >&2
 fi
 exit $fail

@@ -124,4 +124,40 @@ for page in "${pages[@]}"; do
         if [ -e "$path" ]; then ok; else bad "$page names $path, which does not exist"; fi
     done < <(grep -oP '(?<![/\w.-])(core|host|firmware|tests|examples|linker|scenes|docs)/[\w./-]+\.(c|h|sh|py|mk|ld|scene|md)\b' "$page" | sort -u)
 done
+# The growth plot of make bench-models (docs/bench/models.png) is drawn
+# from its table (docs/bench/models.md) by firmware/models-plot.sh: drawn
+# again here, it must take every instr/px figure of the table's first
+# table (found here by column name, in python, not by the script's awk)
+# and give the committed image byte for byte (else: make models-plot).
+mp=$BUILD/tests/doclinks
+mkdir -p "$mp"
+if firmware/models-plot.sh docs/bench/models.md "$mp/models.png" "$mp/models.dat" 2>"$mp/models.log"; then
+    ok
+    check "models-plot: every instr/px figure of docs/bench/models.md is drawn, and only those" python3 - "$mp/models.dat" <<'PY'
+import sys
+rows, head = [], None
+for line in open("docs/bench/models.md"):
+    if line.startswith("| model | triangles"):
+        head = [c.strip() for c in line.strip().strip("|").split("|")]
+        continue
+    if head is None or line.startswith("|---"):
+        continue
+    if not line.startswith("|"):
+        break
+    cells = [c.strip() for c in line.strip().strip("|").split("|")]
+    for name, cell in zip(head, cells):
+        if name.endswith(" instr/px"):
+            try:
+                rows.append((cells[0], int(cells[1]), name[:-len(" instr/px")], cells[3], float(cell)))
+            except ValueError:
+                pass  # "does not fit"
+drawn = [(m, int(t), b, s, float(v)) for m, t, b, s, v in (l.split() for l in open(sys.argv[1]))]
+print(f"  models-plot: {len(drawn)} figures drawn, {len(rows)} in the table")
+sys.exit(0 if sorted(drawn) == sorted(rows) and len(rows) >= 30 else 1)
+PY
+    check "docs/bench/models.png is what firmware/models-plot.sh draws from docs/bench/models.md (make models-plot)" \
+        cmp -s "$mp/models.png" docs/bench/models.png
+else
+    bad "firmware/models-plot.sh failed: $(tail -n 2 "$mp/models.log")"
+fi
 report doclinks.sh
