@@ -39,6 +39,10 @@
 #define FXRT_PORT_HOSTED(n) n
 #endif
 #define PORT_KEEP(p) __asm__ volatile("" : : "r"(p))
+/* PORT_ASSUME(cond): the caller knows cond holds; the compiler may drop
+ * the code that would run were it false (gcc and clang's
+ * __builtin_unreachable; the sanitized build reports it, were it reached). */
+#define PORT_ASSUME(cond) ((cond) ? (void)0 : __builtin_unreachable())
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__)
 #define FXRT_PORT_V6M_ASM 1

@@ -280,7 +280,7 @@ __attribute__((noinline)) static render_depth_t render_box_depth(const vis_t *r,
     bool any = known != NULL;
     for (int k = 0; k < nc; k++) {
         const render_flat_t *f = &cand[k]->f;
-        bool test = any || k < nc - 1 || o->kind == RENDER_INSIDE_BOX;
+        bool test = any || k < nc - 1 || render_kind(o) == RENDER_INSIDE_BOX;
         if (test && !render_edges_in(f, ix, iy))
             continue;
         render_k_t n = rlin_at(&f->n, ix, iy), d = rlin_at(&f->d, ix, iy);
@@ -364,16 +364,16 @@ bool render_rays_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy, render_
 static render_depth_t render_depth_at(const vis_t *r, uint16_t oi, int32_t ix, int32_t iy)
 {
     const render_obj_t *o = &r->obj[oi];
-    if (o->kind == RENDER_SPHERE)
+    if (render_kind(o) == RENDER_SPHERE)
         return render_sphere_depth_at(r, oi, ix, iy);
 #if RENDER_RAY_KINDS
     render_depth_t t;
-    if (o->kind == RENDER_RAYS) /* (the callers ask about a pixel it covers) */
+    if (render_kind(o) == RENDER_RAYS) /* (the callers ask about a pixel it covers) */
         return render_rays_at(r, oi, ix, iy, &t, NULL) ? t : o->thi;
 #endif
     /* A plane or triangle covers the pixel (every caller asks about an
      * object there); a box: the nearest face that covers it. */
-    if (o->kind == RENDER_FLAT) {
+    if (render_kind(o) == RENDER_FLAT) {
         const render_flat_t *f = render_face(o, 0);
         return render_flat_depth(f, rlin_at(&f->n, ix, iy), rlin_at(&f->d, ix, iy));
     }
@@ -707,17 +707,17 @@ int render_span_range(const vis_t *r, uint16_t oi, int32_t p, int32_t q, int32_t
                       render_depth_t *hi, bool low)
 {
     const render_obj_t *o = &r->obj[oi];
-    if (o->kind == RENDER_FLAT) /* a plane or a triangle */
+    if (render_kind(o) == RENDER_FLAT) /* a plane or a triangle */
         return render_flat_range(r, render_face(o, 0), p, q, iy, lo, hi) == 1;
-    if (o->kind == RENDER_SPHERE)
+    if (render_kind(o) == RENDER_SPHERE)
         return render_sphere_span(r, oi, p, q, iy, lo, hi, low);
-    if (o->kind == RENDER_BOX)
+    if (render_kind(o) == RENDER_BOX)
         return render_box_span(r, o, p, q, iy, lo, hi) ? 1 : 0;
     return 0;
 }
 #endif
 
-static bool render_is_plane(const render_obj_t *o) { return o->kind == RENDER_FLAT && render_face(o, 0)->edges == 0; }
+static bool render_is_plane(const render_obj_t *o) { return render_kind(o) == RENDER_FLAT && render_face(o, 0)->edges == 0; }
 
 /* Plane p's (object j's) depth range over the whole of row iy, once per
  * row for the first RENDER_ROW_PLANES planes (pr); false when it does not

@@ -101,7 +101,7 @@ bool render_split_edge_test(render_estep_t *st, const render_lin_t *ek, int32_t 
 bool render_scan_flat(vis_t *r, uint16_t oi, render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                              uint8_t *rgb, bool lone)
 {
-    bool single = r->obj[oi].kind == RENDER_FLAT;
+    bool single = render_kind(&r->obj[oi]) == RENDER_FLAT;
     /* Alone on the row and wide: runs located exactly, filled by words
      * (a division per form pays off from about 4 columns per form on the M3). */
     if (!FXRT_NO_SPANS && lone && x1 - x0 >= 4 * (1 + f->edges)) {
@@ -181,7 +181,7 @@ __attribute__((noinline)) void render_step_flat(vis_t *r, uint16_t oi, const ren
 void render_scan_flat_f(vis_t *r, uint16_t oi, const render_flat_t *f, int32_t x0, int32_t x1, int32_t iy,
                                uint8_t *rgb, bool lone)
 {
-    bool single = r->obj[oi].kind == RENDER_FLAT;
+    bool single = render_kind(&r->obj[oi]) == RENDER_FLAT;
     int32_t ix0 = 2 * x0 - r->cam->width + 1;
     render_k_t n = rlin_at(&f->n, ix0, iy), d = rlin_at(&f->d, ix0, iy), sn = 2 * f->n.x, sd = 2 * f->d.x;
     render_k_t e[4] = {0, 0, 0, 0}, se[4] = {0, 0, 0, 0};
@@ -238,7 +238,7 @@ int render_row_runs(vis_t *r, int32_t row, render_run_t *out, int cap)
         if (!o->flat || !render_alone(r, i, row))
             return -1;
         render_iv_t iv[4];
-        switch (o->kind) {
+        switch (render_kind(o)) {
         case RENDER_INSIDE_BOX:
             iv[0].lo = 0;
             iv[0].hi = o->x1 - o->x0;

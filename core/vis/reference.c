@@ -13,7 +13,7 @@ void render_row_reference_vis(vis_t *r, int32_t row, uint8_t *rgb)
         for (uint16_t i = 0; i < r->count; i++) {
             if (FXRT_NO_HOIST)
                 render_setup_object(r, i);
-            if (RENDER_RAY_KINDS && r->obj[i].kind == RENDER_RAYS)
+            if (RENDER_RAY_KINDS && render_kind(&r->obj[i]) == RENDER_RAYS)
                 render_scan_rays(r, i, x, x, iy, rgb, false);
             else if (render_covers(&r->obj[i], ix, iy))
                 render_cover(r, i, x, iy, rgb);

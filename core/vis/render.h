@@ -269,6 +269,20 @@ typedef struct {
     } u;
 } render_obj_t;
 
+/* An object's render kind, as the row loop, depth and span code dispatch
+ * on it: a kind that this build cannot hold (its kinds' capacities 0) is
+ * assumed away, so that its code is not linked: a plane-only image has no
+ * sphere or box scan. Set-up makes only the kinds the build holds. */
+static inline uint8_t render_kind(const render_obj_t *o) /* a render_kind_t */
+{
+    uint8_t k = o->kind;
+    PORT_ASSUME(RENDER_ROUNDS > 0 || k != RENDER_SPHERE);
+    PORT_ASSUME(RENDER_FLATS > 0 || k != RENDER_FLAT);
+    PORT_ASSUME(RENDER_FACE_KINDS > 0 || (k != RENDER_BOX && k != RENDER_INSIDE_BOX));
+    PORT_ASSUME(RENDER_RAY_KINDS || k != RENDER_RAYS);
+    return k;
+}
+
 typedef struct {
     const world_t *world;
     const cam_t *cam;

@@ -39,7 +39,7 @@ static inline void render_put_pixel(uint8_t *rgb, int32_t x, rgb8_t c)
 /* Face i of a flat object (a box's faces carry a fourth edge). */
 static inline render_flat_t *render_face(const render_obj_t *o, int i)
 {
-    return o->kind == RENDER_FLAT ? o->u.flat : &o->u.face[i].f;
+    return render_kind(o) == RENDER_FLAT ? o->u.flat : &o->u.face[i].f;
 }
 
 /* Edge form k of a flat piece; the fourth is a box face's. */
@@ -359,7 +359,7 @@ __attribute__((noinline, unused)) static void render_sphere_cd_call(const render
 /* Does object o cover the pixel? Every form evaluated from scratch. */
 static inline bool render_covers(const render_obj_t *o, int32_t ix, int32_t iy)
 {
-    switch (o->kind) {
+    switch (render_kind(o)) {
     case RENDER_INSIDE_BOX:
         return true;
     case RENDER_SPHERE: {

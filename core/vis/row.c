@@ -146,7 +146,7 @@ static void render_scan_sphere_f(vis_t *r, uint16_t oi, const render_obj_t *o, i
 #define RENDER_SCAN_SPHERE render_scan_sphere
 #define RENDER_SCAN_FLAT(r, oi, f, x0, x1, iy, rgb, lone)                                                            \
     ((void)(render_scan_flat(r, oi, f, x0, x1, iy, rgb, lone) ||                                                   \
-            (render_step_flat(r, oi, f, x0, x1, iy, rgb, lone, (r)->obj[oi].kind == RENDER_FLAT), false)))
+            (render_step_flat(r, oi, f, x0, x1, iy, rgb, lone, render_kind(&(r)->obj[oi]) == RENDER_FLAT), false)))
 #else
 #define RENDER_SCAN_SPHERE render_scan_sphere_f
 #define RENDER_SCAN_FLAT render_scan_flat_f
@@ -210,10 +210,10 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
         /* After this object, columns x0..x1 may be claimed (the hull of
          * every object's columns so far on this row). */
         int32_t dlo = r->dirty_lo, dhi = r->dirty_hi;
-        if (RENDER_RAY_KINDS && o->kind == RENDER_RAYS)
+        if (RENDER_RAY_KINDS && render_kind(o) == RENDER_RAYS)
             render_scan_rays(r, i, x0, x1, iy, rgb, lone);
         else
-        switch (o->kind) {
+        switch (render_kind(o)) {
         case RENDER_INSIDE_BOX:
             for (int32_t x = x0; x <= x1; x++)
                 RENDER_HIT(r, i, x, iy, rgb, lone);
@@ -226,7 +226,7 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
         case RENDER_BOX:
             for (int k = 0; k < o->nflat; k++) {
                 render_flat_t *f = render_face(o, k);
-                if (FXRT_NO_BOUNDS || o->kind == RENDER_FLAT)
+                if (FXRT_NO_BOUNDS || render_kind(o) == RENDER_FLAT)
                     RENDER_SCAN_FLAT(r, i, f, x0, x1, iy, rgb, lone); /* a plane's or triangle's bounds are its object's */
                 else if (row >= o->u.face[k].r0 && row <= o->u.face[k].r1)
                     RENDER_SCAN_FLAT(r, i, f, o->u.face[k].x0, o->u.face[k].x1, iy, rgb, lone);

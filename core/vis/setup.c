@@ -45,10 +45,10 @@ void render_setup_object(vis_t *r, uint16_t i)
     default: break;
     }
     FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) render_setup_cut(r, o);)
-    for (int k = 0; k < o->nflat && (o->kind == RENDER_FLAT || o->kind == RENDER_BOX); k++) {
+    for (int k = 0; k < o->nflat && (render_kind(o) == RENDER_FLAT || render_kind(o) == RENDER_BOX); k++) {
         render_flat_t *f = render_face(o, k);
         f->front = false; /* (Q16.16 alone uses it) */
-        if (NUM_EXACT && o->kind == RENDER_FLAT)
+        if (NUM_EXACT && render_kind(o) == RENDER_FLAT)
             f->front = render_flat_front(cam, f, o->x0, o->x1, o->r0, o->r1);
         else if (NUM_EXACT)
             f->front = render_flat_front(cam, f, o->u.face[k].x0, o->u.face[k].x1, o->u.face[k].r0, o->u.face[k].r1);
@@ -87,17 +87,17 @@ static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_co
     default: break;
     }
     render_setup_object(r, i);
-    if (RENDER_SROWS && o->kind == RENDER_SPHERE && index < RENDER_SROW_SLOTS)
+    if (RENDER_SROWS && render_kind(o) == RENDER_SPHERE && index < RENDER_SROW_SLOTS)
         render_srow_setup(r, i);
 #if RENDER_HINTS
-    if (o->kind == RENDER_FLAT || o->kind == RENDER_BOX) /* row coherence's guesses: a fixed start each frame */
+    if (render_kind(o) == RENDER_FLAT || render_kind(o) == RENDER_BOX) /* row coherence's guesses: a fixed start each frame */
         for (int k = 0; k < o->nflat; k++)
             for (int j = 0; j < 6; j++)
                 render_face(o, k)->hint[j] = 0;
 #endif
 #if RENDER_ESTEP && RENDER_EDGES > 0
     /* The edges' row states, without columns yet this frame. */
-    if (o->kind != RENDER_SPHERE)
+    if (render_kind(o) != RENDER_SPHERE)
         for (int k = 0; k < o->nflat; k++) {
             render_flat_t *f = render_face(o, k);
             f->es = f->edges ? &r->estep[r->estep_used] : NULL;
@@ -109,7 +109,7 @@ static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_co
             r->estep_used = (uint16_t)(r->estep_used + f->edges);
         }
 #endif
-    if (o->kind == RENDER_BOX || o->kind == RENDER_INSIDE_BOX)
+    if (render_kind(o) == RENDER_BOX || render_kind(o) == RENDER_INSIDE_BOX)
         r->box_used = (uint16_t)(r->box_used + o->nflat);
 }
 
