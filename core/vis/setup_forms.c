@@ -24,16 +24,10 @@ int rlin_need(const rclin_t *f, rext_t ext, int target)
 
 /* ---- set-up of each object ------------------------------------------- */
 
-vec3_t render_dir_to_cam(const cam_t *cam, vec3_t d)
+vec3_t render_turn(const cam_t *cam, vec3_t v, const vec3_t *from)
 {
-    return vec3_make(vec3_dot(d, cam->u), vec3_dot(d, cam->v), vec3_dot(d, cam->w));
-}
-
-/* A point: its offset from the eye turned as a direction (one copy of the
- * nine products, which take 1.2 KB of text on the M0). */
-vec3_t render_to_cam(const cam_t *cam, vec3_t p)
-{
-    return render_dir_to_cam(cam, vec3_sub(p, cam->e));
+    vec3_t q = from ? vec3_sub(v, *from) : v;
+    return vec3_make(vec3_dot(q, cam->u), vec3_dot(q, cam->v), vec3_dot(q, cam->w));
 }
 
 
