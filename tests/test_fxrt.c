@@ -461,6 +461,14 @@ static void test_safety(void)
     CHECK(fxrt_camera_perspective(&view, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(180), 8, 6) == FXRT_ERR_FOV);
     CHECK(fxrt_camera_orthographic(&view, V(0, 0, 0), V(0, 0, -1), V(0, 1, 0), N(-1), 8, 6) == FXRT_ERR_SCALE);
     CHECK(memcmp(&before, &view, sizeof view) == 0);
+    /* The refusals that come after the basis is known (the camera's own
+     * late checks: its focal length, its extent) leave it alone too. */
+    CHECK(fxrt_camera_perspective(&view, V(1, 2, 3), V(0.3, -0.2, -1), V(0, 1, 0), N(1), 8, 4000) == FXRT_ERR_NARROW);
+    CHECK(memcmp(&before, &view, sizeof view) == 0);
+    CHECK(fxrt_camera_perspective(&view, V(1, 2, 3), V(0.3, -0.2, -1), V(0, 1, 0), N(179.9), 8, 1) < 0); /* (the grid nearer than half a pixel: a camera code without its own name) */
+    CHECK(memcmp(&before, &view, sizeof view) == 0);
+    CHECK(fxrt_camera_orthographic(&view, V(8000, 0, 0), V(0, 0, -1), V(0, 1, 0), N(1000), 8, 6) == FXRT_ERR_EXTENT);
+    CHECK(memcmp(&before, &view, sizeof view) == 0);
     CHECK(fxrt_render_row(&rs, 3, buf, sizeof buf) == FXRT_OK);
     /* The view resized under a set-up frame: its rows are refused until the
      * next set-up (the forms and bounds are the old size's). */

@@ -145,17 +145,13 @@ static fxrt_err_t fxrt_cam_err(cam_err_t e)
     return (fxrt_err_t)(FXRT_ERR_CAM_BASE + (int)e);
 }
 
-/* cam_setup into a copy, kept only when it succeeds: a refused camera
- * leaves the caller's view as it was (a frame set up with it still
- * renders). */
+/* cam_setup writes the view only when it succeeds (scene/cam.c): a
+ * refused camera leaves the caller's view as it was (a frame set up with
+ * it still renders), with no copy of the view on the stack. */
 static fxrt_err_t fxrt_cam_set(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t up, num_t fov_deg,
                                num_t scale, int32_t width, int32_t height)
 {
-    cam_t c;
-    fxrt_err_t e = fxrt_cam_err(cam_setup(&c, kind, eye, gaze, up, fov_deg, scale, width, height));
-    if (e == FXRT_OK)
-        *cam = c;
-    return e;
+    return fxrt_cam_err(cam_setup(cam, kind, eye, gaze, up, fov_deg, scale, width, height));
 }
 
 /* What both camera kinds check before cam_setup: the image size, and eye,

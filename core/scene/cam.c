@@ -141,24 +141,12 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
     cam_err_t be = cam_basis(gaze, up, &u, &v, &w);
     if (be != CAM_OK)
         return be;
-
-    cam->kind = kind;
-    cam->width = width;
-    cam->height = height;
-    cam->e = eye;
-    cam->u = u;
-    cam->v = v;
-    cam->w = w;
-    cam->fwd = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    cam->focal = NUM_ONE;
-    cam->small = false;
-    cam->step_u = numw_from(NUM_ZERO);
-    cam->step_v = numw_from(NUM_ZERO);
+    num_t focal = NUM_ONE;
+    numw_t step_u = numw_from(NUM_ZERO), step_v = numw_from(NUM_ZERO);
 
     if (kind == CAM_PERSPECTIVE) {
         if (!(fov_deg > NUM_ZERO && fov_deg < NUM(180)))
             return CAM_ERR_FOV;
-        num_t focal;
         if (fov_deg <= NUM(90)) {
             num_t cot = cam_cot_half(fov_deg); /* >= 1 */
             /* |fwd| = H cot(fov/2) must fit Q16.16 in every build, so that
@@ -177,9 +165,6 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
          * rounding of fwd would turn the rays by more than the cap. */
         if (!(focal >= NUM_ONE))
             return CAM_ERR_WIDE;
-        cam->focal = focal;
-        cam->fwd = vec3_scale(w, num_neg(cam->focal));
-        cam->small = cam_grid_small(cam);
     } else {
         if (!(scale > NUM_ZERO))
             return CAM_ERR_SCALE;
@@ -198,10 +183,27 @@ cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t
          * s / (2 (H-1)) along v. A one-pixel axis has only its centre, at
          * offset 0. */
         if (width > 1)
-            cam->step_u = numw_muldiv_int(scale, width, 2 * height * (width - 1));
+            step_u = numw_muldiv_int(scale, width, 2 * height * (width - 1));
         if (height > 1)
-            cam->step_v = numw_muldiv_int(scale, 1, 2 * (height - 1));
+            step_v = numw_muldiv_int(scale, 1, 2 * (height - 1));
     }
+
+    /* Every check has passed: *cam is written only now, so a refused call
+     * leaves it as it was (the public API relies on it, frame/api.c). */
+    cam->kind = kind;
+    cam->width = width;
+    cam->height = height;
+    cam->e = eye;
+    cam->u = u;
+    cam->v = v;
+    cam->w = w;
+    cam->focal = focal;
+    cam->fwd = kind == CAM_PERSPECTIVE ? vec3_scale(w, num_neg(focal)) : vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    cam->small = false;
+    cam->step_u = step_u;
+    cam->step_v = step_v;
+    if (kind == CAM_PERSPECTIVE)
+        cam->small = cam_grid_small(cam);
     return CAM_OK;
 }
 

@@ -73,7 +73,7 @@ typedef struct {
 
 /* Set up a camera for a width x height image. fov_deg (perspective) is the
  * full opening angle in degrees; scale (orthographic) the view height.
- * Returns CAM_OK or a cam_err_t. */
+ * Returns CAM_OK or a cam_err_t; *cam is written only on CAM_OK. */
 cam_err_t cam_setup(cam_t *cam, cam_kind_t kind, vec3_t eye, vec3_t gaze, vec3_t up,
                     num_t fov_deg, num_t scale, int32_t width, int32_t height);
 
