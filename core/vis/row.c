@@ -178,9 +178,12 @@ __attribute__((noinline)) void render_row_vis(vis_t *r, int32_t row, uint8_t *rg
     int32_t w = cam->width, y = cam->height - 1 - row;
     int32_t iy = 2 * y - cam->height + 1;
 #if FXRT_NUMBER == FXRT_Q16 && !FXRT_NO_STEP
+    /* (Only spheres use it: a build without them keeps none.) */
     render_sphere_cache_t sphere_cache;
-    render_sphere_cache_reset(&sphere_cache);
-    r->sphere_cache = &sphere_cache;
+    if (RENDER_ROUNDS > 0) {
+        render_sphere_cache_reset(&sphere_cache);
+        r->sphere_cache = &sphere_cache;
+    }
 #endif
     render_prow_t prow;
     for (int j = 0; j < RENDER_ROW_PLANES; j++)
