@@ -4,7 +4,9 @@
 # values, target_link_libraries) configures and builds the lit example
 # for the host and, with the toolchain file, for the Cortex-M3
 # (mps2-an385); both run (the M3 in QEMU), and their frames equal the
-# Makefile's host build of the same example byte for byte. Also: a
+# Makefile's host build of the same example byte for byte. On the host
+# the project also builds tests/api_lang.c as C and as C++ (a C++
+# application on the same C library): both run, equal frames. Also: a
 # configuration value that is not a plain integer is refused at configure
 # time, with its name.
 set -u
@@ -31,6 +33,16 @@ check "host lit (CMake) runs" "$out/host/lit" "$out/host-frames"
 for f in lit-00 lit-01; do
     check "host $f.ppm (CMake) equals the Makefile build's" cmp -s "$out/host-frames/$f.ppm" "$ref/$f.ppm"
 done
+
+# A C++ consumer of the same library: tests/api_lang.c built as C and as
+# C++ by the project; both pass their checks and write the same frames.
+for lang in c cxx; do
+    check "api_lang_$lang (CMake) runs and its checks pass" "$out/host/api_lang_$lang" "$out/api_lang_$lang.ppm"
+done
+check "api_lang (CMake): the C++ build's frames equal the C build's" \
+    cmp -s "$out/api_lang_c.ppm" "$out/api_lang_cxx.ppm"
+check "api_lang (CMake): the C++ build is C++ (its object compiled by a C++ compiler)" \
+    grep -q 'Building CXX object .*api_lang.cpp' "$out/host.build.log"
 
 build m3 -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/arm-none-eabi.cmake"
 check "the M3 build is an Arm ELF" bash -c "arm-none-eabi-readelf -h '$out/m3/lit.elf' | grep -q 'Machine:.*ARM'"
