@@ -11,7 +11,7 @@ packages=(
     gnuplot-nox                   # benchmark plots
     clang libclang-rt-14-dev      # sanitizers and libFuzzer
     valgrind                      # make bench-host (callgrind)
-    cmake                         # the CMake package's test (tests/cmake.sh)
+    cmake g++                     # the CMake package's test (tests/cmake.sh; its C++ consumer)
 )
 
 missing=()
