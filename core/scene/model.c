@@ -90,11 +90,13 @@ fxrt_err_t geom_model_check(const bvh_inst_t *inst, color_t color)
     return geom_check_color(color);
 }
 
+/* After geom_model_check (world_add calls it first): its bvh_check walks
+ * the whole mesh, once per model added, not twice. */
 bool geom_model_make(geom_model_t *m, const bvh_inst_t *inst, color_t color, uint16_t id)
 {
     m->in = *inst;
     geom_common_init(&m->obj, color, id);
-    return geom_model_check(inst, color) == FXRT_OK && geom_model_box(inst, &m->lo, &m->hi);
+    return geom_model_box(inst, &m->lo, &m->hi);
 }
 
 bool geom_model_hit(const geom_model_t *o, const ray_t *ray, num_t *t)
