@@ -255,9 +255,12 @@ FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_M
  *                         computed again at every lit pixel instead of
  *                         once per run of that object's pixels
  *                         (frame/render_shade.c)
+ *   FXRT_ABLATE_BVH_QUICK a model's boxes tested by their exact quotients
+ *                         alone, without the quick test's reciprocals
+ *                         (scene/bvh.c)
  * The renderer reads them as FXRT_NO_BOUNDS ... FXRT_NO_ORDER,
- * FXRT_NO_CUTOFF, FXRT_BOUND_NO_LIGHT_SUM, FXRT_NO_SHADOW_ROWS and
- * FXRT_NO_FLAT_NUM (0 or 1). */
+ * FXRT_NO_CUTOFF, FXRT_BOUND_NO_LIGHT_SUM, FXRT_NO_SHADOW_ROWS,
+ * FXRT_NO_FLAT_NUM and FXRT_NO_BVH_QUICK (0 or 1). */
 #define FXRT_ABLATE_BOUNDS 0x001
 #define FXRT_ABLATE_STEP 0x002
 #define FXRT_ABLATE_LONE 0x004
@@ -270,10 +273,11 @@ FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_M
 #define FXRT_ABLATE_LIGHT_SUM 0x200
 #define FXRT_ABLATE_SHADOW_ROWS 0x400
 #define FXRT_ABLATE_FLAT_NUM 0x800
+#define FXRT_ABLATE_BVH_QUICK 0x1000
 #ifndef FXRT_ABLATE
 #define FXRT_ABLATE 0
 #endif
-FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0xfff) == 0, "FXRT_ABLATE: an unknown bit (the FXRT_ABLATE_ names only)");
+FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0x1fff) == 0, "FXRT_ABLATE: an unknown bit (the FXRT_ABLATE_ names only)");
 #define FXRT_NO_BOUNDS (((FXRT_ABLATE) & FXRT_ABLATE_BOUNDS) != 0)
 #define FXRT_NO_STEP (((FXRT_ABLATE) & FXRT_ABLATE_STEP) != 0)
 #define FXRT_NO_LONE (((FXRT_ABLATE) & FXRT_ABLATE_LONE) != 0)
@@ -286,6 +290,7 @@ FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0xfff) == 0, "FXRT_ABLATE: an unknown bit (
 #define FXRT_BOUND_NO_LIGHT_SUM (((FXRT_ABLATE) & FXRT_ABLATE_LIGHT_SUM) != 0)
 #define FXRT_NO_SHADOW_ROWS (((FXRT_ABLATE) & FXRT_ABLATE_SHADOW_ROWS) != 0)
 #define FXRT_NO_FLAT_NUM (((FXRT_ABLATE) & FXRT_ABLATE_FLAT_NUM) != 0)
+#define FXRT_NO_BVH_QUICK (((FXRT_ABLATE) & FXRT_ABLATE_BVH_QUICK) != 0)
 
 
 /* FXRT_SPHERE_SEARCH: how the fast Q16.16 renderer finds the run of a

@@ -1,18 +1,19 @@
 # The visiting order (render_setup sorts the objects nearest first each
-# frame) and the shadow rows (light/shadow.c: per-row masks of the objects
-# that cannot block a plane's shadow rays) and the flat objects' hit
-# numerators kept across pixels (frame/render_shade.c) must not change a
-# frame:
+# frame), the shadow rows (light/shadow.c: per-row masks of the objects
+# that cannot block a plane's shadow rays), the flat objects' hit
+# numerators kept across pixels (frame/render_shade.c) and a model's quick
+# box test (scene/bvh.c) must not change a frame:
 # tests/order.sh renders every scene with the host tool and with the host
-# tool built again with all three switched off (FXRT_ABLATE_ORDER,
-# FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM), in every number type (built without -g:
-# only its frames are read). Included by the top
+# tool built again with all four switched off (FXRT_ABLATE_ORDER,
+# FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM, FXRT_ABLATE_BVH_QUICK),
+# in every number type (built without -g: only its frames are read).
+# Included by the top
 # Makefile.
 ORDER_FXRT := $(BUILD)/ablated/fxrt
 
 $(ORDER_FXRT): $(wildcard core/*.h core/*/*.c core/*/*.h host/*.c host/*.h)
-	@echo "  MAKE    $@ (FXRT_ABLATE_ORDER, FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM)"
-	$(Q)$(MAKE) --no-print-directory -s BUILD=$(BUILD)/ablated HOSTCFLAGS='$(filter-out -g,$(HOSTCFLAGS)) -DFXRT_ABLATE="(FXRT_ABLATE_ORDER|FXRT_ABLATE_SHADOW_ROWS|FXRT_ABLATE_FLAT_NUM)"' $(BUILD)/ablated/fxrt
+	@echo "  MAKE    $@ (FXRT_ABLATE_ORDER, FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM, FXRT_ABLATE_BVH_QUICK)"
+	$(Q)$(MAKE) --no-print-directory -s BUILD=$(BUILD)/ablated HOSTCFLAGS='$(filter-out -g,$(HOSTCFLAGS)) -DFXRT_ABLATE="(FXRT_ABLATE_ORDER|FXRT_ABLATE_SHADOW_ROWS|FXRT_ABLATE_FLAT_NUM|FXRT_ABLATE_BVH_QUICK)"' $(BUILD)/ablated/fxrt
 
 TEST_PREREQ  += $(ORDER_FXRT)
 SUITES_EXTRA += tests/order.sh

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Nearest first (vis/order.c), the shadow rows (light/shadow.c, a
-# plane's per-row masks of the objects that cannot block its shadow rays)
-# and the flat objects' hit numerators kept across pixels
-# (frame/render_shade.c) change the work, never a pixel: every scene in
-# scenes/ and its subfolders at 96x72, in q16, float and double, with the
-# host tool and with its build without all three (FXRT_ABLATE_ORDER,
-# FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM; tests/order.mk), byte for
-# byte. The lit scenes and two bench scenes
+# plane's per-row masks of the objects that cannot block its shadow rays),
+# the flat objects' hit numerators kept across pixels
+# (frame/render_shade.c) and a model's quick box test (scene/bvh.c: boxes
+# by reciprocals, the walk's order by the exact quotients where those are
+# too close) change the work, never a pixel: every scene in scenes/ and
+# its subfolders at 96x72, in q16, float and double, with the host tool
+# and with its build without all four (FXRT_ABLATE_ORDER,
+# FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM, FXRT_ABLATE_BVH_QUICK;
+# tests/order.mk), byte for byte. The lit scenes and two bench scenes
 # are rendered again with `samples 2 adaptive` and lights on every
 # object: the adaptive sampler's one ray per pixel takes the shading
 # constants of the object it hits from the sorted records
@@ -38,6 +40,41 @@ for f in scenes/bench/mixed16.scene scenes/bench/cover.scene; do
       echo "light point position 2 3 4 color 0.8 0.8 0.8"
       echo "samples 2 adaptive"; } >"$out/$name.scene"
     check "$name: every object lit" test "$(grep -c 'material phong' "$out/$name.scene")" -ge 6
+    scenes+=("$out/$name.scene")
+done
+# Random models (icospheres of 80 to 1,280 triangles, smooth or flat, in
+# nodes that scale, unevenly too, turn and move them) on a floor under a
+# point light with shadows, some of glass or a mirror, seen from random
+# eyes, every fourth straight along an axis (a direction with components
+# of 0, which the quick test leaves to the exact one), and a second model
+# in front of the first in half of them: the quick test's walks and their
+# ties, on camera, shadow and secondary rays.
+scenes/models/mkmodels.sh "$out/models" 2 3 >/dev/null
+cp scenes/models/ico80.obj "$out/models/"
+for seed in $(seq 1 16); do
+    name=mesh-$seed
+    awk -v seed="$seed" 'function u(a, b) { return a + (b - a) * rand() }
+        function place() {
+            if (rand() < 0.4) printf "node scale %.3f %.3f %.3f", u(0.3, 1.6), u(0.3, 1.6), u(0.3, 1.6)
+            else printf "node scale %.3f", u(0.4, 1.4)
+            printf " rotate x %.1f rotate y %.1f rotate z %.1f translate %.3f %.3f %.3f\n", u(-180, 180), u(-180, 180), u(-180, 180), u(-1, 1), u(-0.3, 0.8), u(-1, 1)
+        }
+        function model() {
+            m = int(rand() * 3); k = rand()
+            mat = k < 0.6 ? " material phong specular 0.7 0.7 0.7 exponent 30" : k < 0.8 ? " material transparent index 1.5" : " material reflective specular 1 1 1 exponent 64 reflection 0.5 0.5 0.5"
+            printf "  mesh file models/ico%d.obj shading %s color %.2f %.2f %.2f%s\nend\n", m == 0 ? 80 : m == 1 ? 320 : 1280, rand() < 0.7 ? "smooth" : "flat", u(0.2, 1), u(0.2, 1), u(0.2, 1), mat
+        }
+        BEGIN { srand(seed + 1000)
+            print "image 96 72"
+            print "background 0.1 0.1 0.2"
+            if (seed % 4 == 0) print "camera perspective eye 0 0 " u(3, 6) " gaze 0 0 -1 up 0 1 0 fov " u(30, 60)
+            else printf "camera perspective eye %.3f %.3f %.3f gaze 0 -0.2 -1 up 0 1 0 fov %.1f\n", u(-2, 2), u(0.5, 3), u(3, 6), u(25, 60)
+            print "ambient 0.1 0.1 0.1"
+            printf "light point position %.3f %.3f %.3f color 1 1 1 shadows on\n", u(-4, 4), u(2, 6), u(-1, 5)
+            print "plane point 0 -1.5 0 normal 0 1 0 color 0.8 0.8 0.8 material lambert"
+            place(); model()
+            if (seed % 2 == 0) { place(); model() }
+        }' >"$out/$name.scene"
     scenes+=("$out/$name.scene")
 done
 # Random shadows on planes (awk's rand with a fixed seed per scene: the

@@ -25,6 +25,8 @@
 
 #define BVH_O_MAX ((int64_t)1 << 30) /* |origin| in units of 2^-f */
 #define BVH_F_MAX 8
+/* The boxes' quick test needs every |d_i| above this (bvh_box_quick). */
+#define BVH_QUICK_MIN_D ((int32_t)1 << 22)
 
 typedef struct {
     /* Q16.16 */
@@ -36,6 +38,14 @@ typedef struct {
      * ln / ld of mesh t, both below 2^31 (ln rounded up, ld down: a box
      * beyond it is surely beyond the limit); ld 0: none. */
     int32_t ln, ld;
+    /* The boxes' quick test (bvh_box_quick), where every |d_i| > 2^22
+     * (quick, set by bvh_quick): rc[i] = 2^53 / d_i, its magnitude
+     * rounded down, so that (v rc[i]) >> 32 is v / d_i in units of 2^-21
+     * of mesh t within 1.5; lt, above the limit in those units
+     * (INT32_MAX: none). */
+    int32_t rc[3], lt;
+    uint8_t near[3], far[3]; /* the byte offsets in bvh_node_t of the slabs' entry and exit bounds */
+    bool quick;
     /* float, double */
     num_t fo[3], fd[3];
     num_t ft;     /* the limit, NUM_MAX for none */
@@ -59,6 +69,17 @@ static int bvh_bits64(int64_t v)
 }
 
 static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d);
+
+/* The limit in the quick test's units: ln / ld 2^21 rounded down, plus 1,
+ * so above it (saturated, or no limit: INT32_MAX). */
+static void bvh_quick_limit(bvh_ray_t *r)
+{
+    r->lt = INT32_MAX;
+    if (r->quick && r->ld != 0) {
+        uint64_t q = ((uint64_t)r->ln << 21) / (uint32_t)r->ld + 1;
+        r->lt = q < INT32_MAX ? (int32_t)q : INT32_MAX;
+    }
+}
 
 __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const ray_t *ray, num_t tmax, bvh_ray_t *r)
 {
@@ -114,6 +135,7 @@ __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const r
             return false; /* farther than 2^30 mesh units: bvh.h */
     }
     int sd = 30 - bd;
+    r->quick = false; /* (bvh_quick, once the root's box is met) */
     for (int j = 0; j < 3; j++)
         r->d[j] = (int32_t)bvh_shift(pd[j], sd);
     r->f = f;
@@ -193,6 +215,7 @@ static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d)
     r->ld = (int32_t)(d.lo & 0x7FFFFFFFu);
     if (n.lo >= ((uint64_t)1 << 31))
         r->ld = 0; /* (n rounded up to 2^31: no limit rather than a wrong one) */
+    bvh_quick_limit(r);
 }
 
 /* ---- a box ---------------------------------------------------------------- */
@@ -257,10 +280,81 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32
     return true;
 }
 
-/* Is box entry 1 before entry 2? */
-static bool bvh_before(int32_t n1, int32_t d1, num_t f1, int32_t n2, int32_t d2, num_t f2)
+/* Q16.16, a ray with r->quick: bvh_box's question without its exact
+ * quotients, answered yes wherever bvh_box says yes (and sometimes where
+ * it says no). Per axis the slab's two values v = lo 2^f - o, hi 2^f - o
+ * (|v| < 2^31) become quotients T = (v rc) >> 32: v / d 2^21, wrong by
+ * less than 1.5 (rc's rounding, below 1, times |v| / 2^32 < 0.5, and the
+ * floor's 1),
+ * so below 2^30 in size (|d| > 2^22). The entry E = max(0, the slabs'
+ * lesser T) and the exit X = the least greater T are then each within
+ * 1.5 of the exact ones, whose test is entry <= exit and entry <= the
+ * limit: so E <= X + 2 and E <= lt + 1 hold wherever it passes. *te: E,
+ * for the walk's order (bvh_order). */
+static FXRT_INLINE_WIDE bool bvh_box_quick(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *te)
 {
-    return NUM_EXACT ? fx_smul32(n1, d2) < fx_smul32(n2, d1) : f1 < f2;
+    const unsigned char *b = (const unsigned char *)nd;
+    int32_t e = 0, x = INT32_MAX;
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; i++) {
+        /* (the entry's bound is lo where d > 0, hi where d < 0: rc's sign
+         * makes both quotients right) */
+        int32_t vn = (int32_t)*(const int16_t *)(b + r->near[i]) * (1 << r->f) - r->o[i],
+                vf = (int32_t)*(const int16_t *)(b + r->far[i]) * (1 << r->f) - r->o[i];
+        int32_t tn = (int32_t)(fx_smul32(vn, r->rc[i]) >> 32), tf = (int32_t)(fx_smul32(vf, r->rc[i]) >> 32);
+        e = tn > e ? tn : e;
+        x = tf < x ? tf : x;
+    }
+    if (e - 2 > x || e - 1 > r->lt)
+        return false;
+    *te = e;
+    return true;
+}
+
+/* Q16.16: the quick test's data (bvh_box_quick), where every |d_i| is
+ * above BVH_QUICK_MIN_D: set up after the root's box is met, so that a
+ * ray that misses the model does not pay its three divisions. */
+static void bvh_quick(bvh_ray_t *r)
+{
+    if (FXRT_NO_BVH_QUICK)
+        return; /* (a measurement: the walk is the same) */
+    for (int j = 0; j < 3; j++) {
+        int32_t ad = r->d[j] < 0 ? -r->d[j] : r->d[j];
+        if (ad <= BVH_QUICK_MIN_D)
+            return;
+    }
+    for (int j = 0; j < 3; j++) {
+        bool neg = r->d[j] < 0;
+        int32_t q = (int32_t)(((uint64_t)1 << 53) / (uint32_t)(neg ? -r->d[j] : r->d[j])); /* below 2^31 */
+        r->rc[j] = neg ? -q : q;
+        r->near[j] = (uint8_t)((neg ? offsetof(bvh_node_t, hi) : offsetof(bvh_node_t, lo)) + 2 * j);
+        r->far[j] = (uint8_t)((neg ? offsetof(bvh_node_t, lo) : offsetof(bvh_node_t, hi)) + 2 * j);
+    }
+    r->quick = true;
+    bvh_quick_limit(r);
+}
+
+/* A box met: bvh_box's, or bvh_box_quick's where the ray has it (then
+ * *ed = 0 marks *en as its E). */
+static FXRT_INLINE_WIDE bool bvh_box_met(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32_t *ed, num_t *fen)
+{
+    if (NUM_EXACT && r->quick) {
+        *ed = 0;
+        return bvh_box_quick(r, nd, en);
+    }
+    return bvh_box(r, nd, en, ed, fen);
+}
+
+/* Is box entry 1 before entry 2? 1 or 0; -1: entries of bvh_box_quick
+ * too close to tell (each within 1.5 of its exact value: a difference of
+ * 3 or more decides), for which the caller asks bvh_box again. */
+static int bvh_order(int32_t n1, int32_t d1, num_t f1, int32_t n2, int32_t d2, num_t f2)
+{
+    if (!NUM_EXACT)
+        return f1 < f2;
+    if (d1 == 0 || d2 == 0)
+        return n1 <= n2 - 3 ? 1 : n2 <= n1 - 3 ? 0 : -1;
+    return fx_smul32(n1, d2) < fx_smul32(n2, d1);
 }
 
 /* ---- a triangle ----------------------------------------------------------- */
@@ -494,6 +588,8 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
     int64_t bn = 0, bd = 1; /* Q16.16: the nearest so far, t's quotient reduced to 62 bits */
     if (!bvh_box(&r, &m->node[0], &en0, &ed0, &fe0))
         return false;
+    if (NUM_EXACT)
+        bvh_quick(&r);
     for (;;) {
         const bvh_node_t *nd = &m->node[ni];
         uint32_t cnt = nd->link & 15u, first = nd->link >> 4;
@@ -525,10 +621,18 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
                 }
             }
         } else if (first + 1 < m->n_nodes) {
-            bool h0 = bvh_box(&r, &m->node[first], &en0, &ed0, &fe0);
-            bool h1 = bvh_box(&r, &m->node[first + 1], &en1, &ed1, &fe1);
+            bool h0 = bvh_box_met(&r, &m->node[first], &en0, &ed0, &fe0);
+            bool h1 = bvh_box_met(&r, &m->node[first + 1], &en1, &ed1, &fe1);
+            int second = h0 && h1 ? bvh_order(en1, ed1, fe1, en0, ed0, fe0) : 0;
+            if (second < 0) {
+                /* the quick entries are too close to order: the exact
+                 * test's, so that the walk's order (and with it the
+                 * nearest of equal hits) is the exact test's */
+                h0 = bvh_box(&r, &m->node[first], &en0, &ed0, &fe0);
+                h1 = bvh_box(&r, &m->node[first + 1], &en1, &ed1, &fe1);
+                second = h0 && h1 && bvh_order(en1, ed1, fe1, en0, ed0, fe0);
+            }
             if (h0 && h1 && sp < BVH_MAX_DEPTH) {
-                bool second = bvh_before(en1, ed1, fe1, en0, ed0, fe0);
                 stack[sp++] = second ? first : first + 1;
                 ni = second ? first + 1 : first;
                 continue;
@@ -553,7 +657,7 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
                 return found;
             }
             ni = stack[--sp];
-            if (bvh_box(&r, &m->node[ni], &en0, &ed0, &fe0))
+            if (bvh_box_met(&r, &m->node[ni], &en0, &ed0, &fe0))
                 break;
         }
     }
