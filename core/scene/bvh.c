@@ -69,6 +69,7 @@ static int bvh_bits64(int64_t v)
 }
 
 static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d);
+static void bvh_limit64(bvh_ray_t *r, uint64_t n, uint64_t d);
 
 /* The limit in the quick test's units: ln / ld 2^21 rounded down, plus 1,
  * so above it (saturated, or no limit: INT32_MAX). */
@@ -145,7 +146,12 @@ __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const r
     r->ld = 0;
     if (tmax != NUM_MAX) {
         int s = 16 + r->tshift;
-        fx128_t ln = fx128_from64(num_to_q16(tmax)), ld = fx128_from64(1);
+        int64_t tq = num_to_q16(tmax); /* (0, 2^31): the walk's caller has tmax > 0 */
+        if (s >= -30 && s <= 61) { /* (both below 2^62: bvh_limit's work in 64 bits) */
+            bvh_limit64(r, s >= 0 ? (uint64_t)tq : (uint64_t)tq << -s, s >= 0 ? (uint64_t)1 << s : 1);
+            return true;
+        }
+        fx128_t ln = fx128_from64(tq), ld = fx128_from64(1);
         if (s >= 0)
             ld = fx128_shl(ld, s);
         else
@@ -194,6 +200,16 @@ static void bvh_reduce(fx128_t n, fx128_t d, int64_t *rn, int64_t *rd)
     *rd = d.lo ? (int64_t)d.lo : 1;
 }
 
+/* The limit from n, d reduced to 31 bits (n rounded up). */
+static void bvh_limit_to(bvh_ray_t *r, uint64_t n, uint64_t d)
+{
+    r->ln = n >= ((uint64_t)1 << 31) ? INT32_MAX : (int32_t)n;
+    r->ld = (int32_t)(d & 0x7FFFFFFFu);
+    if (n >= ((uint64_t)1 << 31))
+        r->ld = 0; /* (n rounded up to 2^31: no limit rather than a wrong one) */
+    bvh_quick_limit(r);
+}
+
 /* The boxes' limit from the quotient n / d (n, d > 0): both shifted right
  * until they fit 31 bits, n rounded up and d down, so that ln / ld >= n /
  * d; none where d vanishes. */
@@ -211,11 +227,19 @@ static void bvh_limit(bvh_ray_t *r, fx128_t n, fx128_t d)
         }
         n.lo += s >= 62 ? 1 : 0; /* (rounding up past 2^62 approximately: one more) */
     }
-    r->ln = n.lo >= ((uint64_t)1 << 31) ? INT32_MAX : (int32_t)n.lo;
-    r->ld = (int32_t)(d.lo & 0x7FFFFFFFu);
-    if (n.lo >= ((uint64_t)1 << 31))
-        r->ld = 0; /* (n rounded up to 2^31: no limit rather than a wrong one) */
-    bvh_quick_limit(r);
+    bvh_limit_to(r, n.lo, d.lo);
+}
+
+/* bvh_limit for n, d below 2^62 (then its shift is below 62, and this is
+ * its arithmetic in 64 bits). */
+static void bvh_limit64(bvh_ray_t *r, uint64_t n, uint64_t d)
+{
+    int bn = bvh_bits64((int64_t)n), bdd = bvh_bits64((int64_t)d), s = (bn > bdd ? bn : bdd) - 31;
+    if (s > 0) {
+        n = (n + (((uint64_t)1 << s) - 1)) >> s;
+        d >>= s;
+    }
+    bvh_limit_to(r, n, d);
 }
 
 /* ---- a box ---------------------------------------------------------------- */
@@ -386,7 +410,8 @@ static int64_t bvh_dot_high(const int32_t d[3], const int64_t c[3])
  * high part's sum must fit 64 bits. */
 static fx128_t bvh_dot_wide(const int32_t d[3], const int64_t c[3])
 {
-    fx128_t s = fx128_shl(fx128_from64(bvh_dot_high(d, c)), 32);
+    int64_t h = bvh_dot_high(d, c);
+    fx128_t s = {(uint64_t)h << 32, h >> 32}; /* h 2^32: its words moved up (no general shift) */
     for (int j = 0; j < 3; j++) {
         uint64_t u = fx_umul32(fx_uabs32(d[j]), (uint32_t)c[j]); /* below 2^63 */
         s = fx128_add(s, fx128_from64(d[j] < 0 ? -(int64_t)u : (int64_t)u));
@@ -421,12 +446,16 @@ static const uint8_t bvh_next[4] = {1, 2, 0, 1};
 static void bvh_rel(const bvh_mesh_t *m, const bvh_ray_t *r, uint32_t i, int32_t p[3][3], uint32_t vi[3])
 {
     bvh_tri(m, i, vi);
-    /* (unrolled: the loops' counting cost as much as their work) */
+    /* (unrolled: the loops' counting cost as much as their work; the
+     * origin, shift and vertex rows in locals, which the stores to p
+     * would otherwise make the compiler load again each time) */
+    const int32_t o[3] = {r->o[0], r->o[1], r->o[2]}, f = r->f;
+    const int16_t *v[3] = {m->v[vi[0]], m->v[vi[1]], m->v[vi[2]]};
 #pragma GCC unroll 3
     for (int k = 0; k < 3; k++)
 #pragma GCC unroll 3
         for (int j = 0; j < 3; j++)
-            p[k][j] = (int32_t)m->v[vi[k]][j] * (1 << r->f) - r->o[j];
+            p[k][j] = (int32_t)v[k][j] * (1 << f) - o[j];
 }
 
 /* Q16.16: the cross product of edge k (the edge opposite vertex k), in
@@ -477,6 +506,7 @@ __attribute__((noinline)) static bool bvh_triangle(const bvh_mesh_t *m, const bv
     int64_t x[3];
     bvh_rel(m, r, i, p, vi);
     int pos = 0, neg = 0;
+#pragma GCC unroll 3
     for (int k = 0; k < 3; k++) {
         bool swap = bvh_edge_cross(p, vi, k, x);
         int sg = bvh_dot_sign(r->d, x);
@@ -490,9 +520,11 @@ __attribute__((noinline)) static bool bvh_triangle(const bvh_mesh_t *m, const bv
      * E(b, c) + E(c, a) + E(a, b) = d . n 2^2f exactly */
     int32_t e1[3], e2[3];
     int64_t n[3];
+    const int16_t *va = m->v[vi[0]], *vb = m->v[vi[1]], *vc = m->v[vi[2]];
+#pragma GCC unroll 3
     for (int j = 0; j < 3; j++) {
-        e1[j] = (int32_t)m->v[vi[1]][j] - m->v[vi[0]][j];
-        e2[j] = (int32_t)m->v[vi[2]][j] - m->v[vi[0]][j];
+        e1[j] = (int32_t)vb[j] - va[j];
+        e2[j] = (int32_t)vc[j] - va[j];
     }
     bvh_cross32(e1, e2, n);
     c->det = bvh_dot_wide(r->d, n);
