@@ -112,9 +112,10 @@ __attribute__((noinline)) static bool bvh_ray_make(const bvh_inst_t *in, const r
         po[j] = pd[j] = 0;
 #pragma GCC unroll 3
         for (int k = 0; k < 3; k++) {
-            /* |w| < 2^31, |m| < 2^30: |po| < 3 2^61, and its rounding below fits */
-            po[j] += (int64_t)in->m[j][k] * w[k];
-            pd[j] += (int64_t)in->m[j][k] * num_to_q16(d[k]);
+            /* |w| < 2^31, |m| < 2^30: |po| < 3 2^61, and its rounding below fits
+             * (w as 32 bits: one 32 x 32 product, not a 64-bit one) */
+            po[j] += fx_smul32(in->m[j][k], (int32_t)w[k]);
+            pd[j] += fx_smul32(in->m[j][k], num_to_q16(d[k]));
         }
         int b = bvh_bits64(pd[j]);
         bd = b > bd ? b : bd;
@@ -309,8 +310,7 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32
  * it says no). Per axis the slab's two values v = lo 2^f - o, hi 2^f - o
  * (|v| < 2^31) become quotients T = (v rc) >> 32: v / d 2^21, wrong by
  * less than 1.5 (rc's rounding, below 1, times |v| / 2^32 < 0.5, and the
- * floor's 1),
- * so below 2^30 in size (|d| > 2^22). The entry E = max(0, the slabs'
+ * floor's 1), and below 2^30 in size (|d| > 2^22). The entry E = max(0, the slabs'
  * lesser T) and the exit X = the least greater T are then each within
  * 1.5 of the exact ones, whose test is entry <= exit and entry <= the
  * limit: so E <= X + 2 and E <= lt + 1 hold wherever it passes. *te: E,
@@ -747,8 +747,9 @@ static bool bvh_world_normal(const bvh_inst_t *in, const int64_t v[3], const num
         for (int j = 0; j < 3; j++)
             s[j] = bvh_shift(v[j], b > 30 ? 30 - b : 0); /* |s| <= 2^30, |m| < 2^30: the sums fit */
         b = 0;
-        for (int j = 0; j < 3; j++) {
-            w[j] = (int64_t)in->m[0][j] * s[0] + (int64_t)in->m[1][j] * s[1] + (int64_t)in->m[2][j] * s[2];
+        for (int j = 0; j < 3; j++) { /* (s as 32 bits: 32 x 32 products) */
+            w[j] = fx_smul32(in->m[0][j], (int32_t)s[0]) + fx_smul32(in->m[1][j], (int32_t)s[1]) +
+                   fx_smul32(in->m[2][j], (int32_t)s[2]);
             b = bvh_bits64(w[j]) > b ? bvh_bits64(w[j]) : b;
         }
         for (int j = 0; j < 3; j++)
