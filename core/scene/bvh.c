@@ -1,4 +1,4 @@
-/* (Over 700 lines: the exact and the float queries share the ray's mapping and the tree's walk.) */
+/* (Over 850 lines: the exact and the float queries share the ray's mapping and the tree's walk, and the quick box test leans on the exact one.) */
 /* bvh: the ray queries on a mesh in constant data (scene/bvh.h): the ray
  * mapped to mesh space once, then the tree walked nearer child first with
  * a fixed stack, and each leaf's triangles tested by their edges.
