@@ -305,17 +305,26 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32
     return true;
 }
 
+/* One bound's T: the int16_t at byte offset off of node bytes b, on axis i. */
+static inline int32_t bvh_quot(const bvh_ray_t *r, const unsigned char *b, unsigned off, int i)
+{
+    return (int32_t)(fx_smul32((int32_t)*(const int16_t *)(b + off) * (1 << r->f) - r->o[i], r->rc[i]) >> 32);
+}
+
+/* Met, for entry E and exit X (bvh_box_quick's margins). */
+static inline bool bvh_quick_met(const bvh_ray_t *r, int32_t e, int32_t x) { return e - 2 <= x && e - 1 <= r->lt; }
+
 /* Q16.16, a ray with r->quick: bvh_box's question without its exact
  * quotients, answered yes wherever bvh_box says yes (and sometimes where
  * it says no). Per axis the slab's two values v = lo 2^f - o, hi 2^f - o
  * (|v| < 2^31) become quotients T = (v rc) >> 32: v / d 2^21, wrong by
  * less than 1.5 (rc's rounding, below 1, times |v| / 2^32 < 0.5, and the
- * floor's 1), and below 2^30 in size (|d| > 2^22). The entry E = max(0, the slabs'
- * lesser T) and the exit X = the least greater T are then each within
+ * floor's 1), and below 2^30 in size (|d| > 2^22). The entry E = max(0,
+ * the slabs' lesser T) and the exit X = the least greater T are each within
  * 1.5 of the exact ones, whose test is entry <= exit and entry <= the
  * limit: so E <= X + 2 and E <= lt + 1 hold wherever it passes. *te: E,
  * for the walk's order (bvh_order). */
-static FXRT_INLINE_WIDE bool bvh_box_quick(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *te)
+static __attribute__((noinline)) bool bvh_box_quick(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *te)
 {
     const unsigned char *b = (const unsigned char *)nd;
     int32_t e = 0, x = INT32_MAX;
@@ -323,16 +332,33 @@ static FXRT_INLINE_WIDE bool bvh_box_quick(const bvh_ray_t *r, const bvh_node_t 
     for (int i = 0; i < 3; i++) {
         /* (the entry's bound is lo where d > 0, hi where d < 0: rc's sign
          * makes both quotients right) */
-        int32_t vn = (int32_t)*(const int16_t *)(b + r->near[i]) * (1 << r->f) - r->o[i],
-                vf = (int32_t)*(const int16_t *)(b + r->far[i]) * (1 << r->f) - r->o[i];
-        int32_t tn = (int32_t)(fx_smul32(vn, r->rc[i]) >> 32), tf = (int32_t)(fx_smul32(vf, r->rc[i]) >> 32);
+        int32_t tn = bvh_quot(r, b, r->near[i], i), tf = bvh_quot(r, b, r->far[i], i);
         e = tn > e ? tn : e;
         x = tf < x ? tf : x;
     }
-    if (e - 2 > x || e - 1 > r->lt)
-        return false;
     *te = e;
-    return true;
+    return bvh_quick_met(r, e, x);
+}
+
+/* bvh_box_quick for both children of an inner node (nd[0], nd[1]), in
+ * one call that reads the ray's values once for the two: bit 0 set where
+ * the first is met (e[0] its E), bit 1 where the second is. */
+static __attribute__((noinline)) unsigned bvh_pair_quick(const bvh_ray_t *r, const bvh_node_t *nd, int32_t e[2])
+{
+    const unsigned char *b0 = (const unsigned char *)&nd[0], *b1 = (const unsigned char *)&nd[1];
+    int32_t e0 = 0, x0 = INT32_MAX, e1 = 0, x1 = INT32_MAX;
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; i++) {
+        int32_t t0n = bvh_quot(r, b0, r->near[i], i), t0f = bvh_quot(r, b0, r->far[i], i);
+        int32_t t1n = bvh_quot(r, b1, r->near[i], i), t1f = bvh_quot(r, b1, r->far[i], i);
+        e0 = t0n > e0 ? t0n : e0;
+        x0 = t0f < x0 ? t0f : x0;
+        e1 = t1n > e1 ? t1n : e1;
+        x1 = t1f < x1 ? t1f : x1;
+    }
+    e[0] = e0;
+    e[1] = e1;
+    return (unsigned)bvh_quick_met(r, e0, x0) | (unsigned)bvh_quick_met(r, e1, x1) << 1;
 }
 
 /* Q16.16: the quick test's data (bvh_box_quick), where every |d_i| is
@@ -653,8 +679,19 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
                 }
             }
         } else if (first + 1 < m->n_nodes) {
-            bool h0 = bvh_box_met(&r, &m->node[first], &en0, &ed0, &fe0);
-            bool h1 = bvh_box_met(&r, &m->node[first + 1], &en1, &ed1, &fe1);
+            bool h0, h1;
+            if (NUM_EXACT && r.quick) {
+                int32_t te[2];
+                unsigned met = bvh_pair_quick(&r, &m->node[first], te);
+                h0 = met & 1u;
+                h1 = met >> 1;
+                en0 = te[0];
+                en1 = te[1];
+                ed0 = ed1 = 0;
+            } else {
+                h0 = bvh_box_met(&r, &m->node[first], &en0, &ed0, &fe0);
+                h1 = bvh_box_met(&r, &m->node[first + 1], &en1, &ed1, &fe1);
+            }
             int second = h0 && h1 ? bvh_order(en1, ed1, fe1, en0, ed0, fe0) : 0;
             if (second < 0) {
                 /* the quick entries are too close to order: the exact
