@@ -384,8 +384,8 @@ static void bvh_quick(bvh_ray_t *r)
     bvh_quick_limit(r);
 }
 
-/* A box met: bvh_box's, or bvh_box_quick's where the ray has it (then
- * *ed = 0 marks *en as its E). */
+/* A box met (a node popped from the walk's stack): bvh_box's, or
+ * bvh_box_quick's where the ray has it (then *ed = 0 marks *en as its E). */
 static FXRT_INLINE_WIDE bool bvh_box_met(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32_t *ed, num_t *fen)
 {
     if (NUM_EXACT && r->quick) {
@@ -689,8 +689,8 @@ static bool bvh_walk(const bvh_inst_t *in, const ray_t *ray, num_t tmax, uint32_
                 en1 = te[1];
                 ed0 = ed1 = 0;
             } else {
-                h0 = bvh_box_met(&r, &m->node[first], &en0, &ed0, &fe0);
-                h1 = bvh_box_met(&r, &m->node[first + 1], &en1, &ed1, &fe1);
+                h0 = bvh_box(&r, &m->node[first], &en0, &ed0, &fe0);
+                h1 = bvh_box(&r, &m->node[first + 1], &en1, &ed1, &fe1);
             }
             int second = h0 && h1 ? bvh_order(en1, ed1, fe1, en0, ed0, fe0) : 0;
             if (second < 0) {
