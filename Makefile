@@ -78,7 +78,7 @@ $(BUILD)/host/engine-$(1).o: host/engine.c
 	@mkdir -p $$(@D)
 	@echo "  CC $(1)  $$<"
 	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@
-$(BUILD)/host/scenec_emit-$(1).o: host/scenec_emit.c
+$(BUILD)/host/scenec_emit-$(1).o $(BUILD)/host/scenec_world-$(1).o: $(BUILD)/host/scenec_%-$(1).o: host/scenec_%.c
 	@mkdir -p $$(@D)
 	@echo "  CC $(1)  $$<"
 	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_MULTI -DFXRT_NUMBER=$(call num_id,$(1)) -c $$< -o $$@

@@ -1,10 +1,12 @@
 /* Board main: set the compiled-in scene up through the public API
- * (core/fxrt.h: the camera, every object with its material, the ambient
- * colour and lights, the bounce depth and samples, the renderer's forms),
- * render it
- * and send it to the host as a binary PPM over semihosting, then report
- * instructions, RAM and stack. scene_data.h holds only the scene's own
- * values (fxrt-scenec); the world and camera are built here, at boot.
+ * (core/fxrt.h: the camera and the renderer's forms, and where the world
+ * is not in flash every object with its material, the ambient colour and
+ * lights, the bounce depth and samples), render it and send it to the host as a binary PPM over semihosting, then report
+ * instructions, RAM and stack. scene_data.h holds the scene's own values
+ * (fxrt-scenec) and, in Q16.16, the world they make (SCENE_WORLD 1:
+ * scene_world, constant, in flash, host/scenec_world.c); the camera, and
+ * the float and double builds' world, are built here at boot through the
+ * API.
  *
  * Frame modes (FXRT_FB_MODE):
  *   FXRT_FB_FULL    the whole frame in a static framebuffer, then one dump
@@ -35,7 +37,7 @@
 #if FXRT_RENDERER == FXRT_RENDERER_REFERENCE
 #define RENDER_ROW(st, row, out) render_row_reference(st, row, out)
 #elif FXRT_RENDERER == FXRT_RENDERER_RAYCAST
-#define RENDER_ROW(st, row, out) raycast_row(&world, &cam, row, out, NULL)
+#define RENDER_ROW(st, row, out) raycast_row(world, &cam, row, out, NULL)
 #else
 #define RENDER_ROW(st, row, out) render_row(st, row, out)
 #endif
@@ -45,7 +47,14 @@
  * linker/sections.ld. */
 
 static render_t render_state;
-static world_t world; /* built at boot from scene_objects */
+#if defined(SCENE_WORLD) && SCENE_WORLD
+/* The world as fxrt-scenec wrote it: its objects, lights and settings stay
+ * in flash, and RAM holds only what a frame derives from them. */
+static const world_t *const world = &scene_world;
+#else
+static world_t world_ram; /* built at boot from scene_objects */
+static const world_t *const world = &world_ram;
+#endif
 static cam_t cam;
 
 #if FXRT_FB_MODE == FXRT_FB_FULL
@@ -73,30 +82,41 @@ static void fail(const char *msg)
     fail2("", msg);
 }
 
-/* The scene's world and camera through the public API, as the host tool
- * builds them (host/engine.c engine_build): same values, same order, so
- * the object ids and every rounding agree. */
+/* The camera, and where the world is not in flash its world, through the
+ * public API, as the host tool builds them (host/engine.c engine_build):
+ * same values, same order, so the object ids and every rounding agree. */
 static void build_scene(void)
 {
     int32_t e = fxrt_camera_setup(&cam, &scene_camera);
     if (e != FXRT_OK)
         fail2("camera: ", fxrt_strerror(e));
-    e = fxrt_world_init(&world, scene_background);
+#if defined(SCENE_WORLD) && SCENE_WORLD
+    /* The world is scene_world; the values it was made from are unused. */
+    (void)scene_background;
+    (void)scene_objects;
+    (void)scene_ambient;
+    (void)scene_lights;
+    (void)scene_depth;
+    (void)scene_samples;
+    (void)scene_adaptive;
+#else
+    world_t *w = &world_ram;
+    e = fxrt_world_init(w, scene_background);
     if (e != FXRT_OK)
         fail2("world: ", fxrt_strerror(e));
     for (int32_t i = 0; i < SCENE_OBJECTS; i++) {
-        e = fxrt_add(&world, &scene_objects[i]);
+        e = fxrt_add(w, &scene_objects[i]);
         if (e != i)
             fail2("object: ", e < 0 ? fxrt_strerror(e) : "id out of scene order");
     }
 #if FXRT_MAX_LIGHTS > 0
     /* After the objects, as engine_build does: ambient, then the lights in
      * scene order (light i gets index i, its bit in a pixel's key). */
-    e = fxrt_set_ambient(&world, scene_ambient);
+    e = fxrt_set_ambient(w, scene_ambient);
     if (e != FXRT_OK)
         fail2("ambient: ", fxrt_strerror(e));
     for (int32_t i = 0; i < SCENE_LIGHTS; i++) {
-        e = fxrt_add_light(&world, &scene_lights[i]);
+        e = fxrt_add_light(w, &scene_lights[i]);
         if (e != i)
             fail2("light: ", e < 0 ? fxrt_strerror(e) : "index out of scene order");
     }
@@ -111,19 +131,20 @@ static void build_scene(void)
      * transparent, where the depth changes nothing, and supersampling
      * (FXRT_MAX_SAMPLES 1) for one sample per pixel, the world's default. */
 #if FXRT_MAX_DEPTH > 0
-    e = world_set_depth(&world, scene_depth);
+    e = world_set_depth(w, scene_depth);
     if (e != FXRT_OK)
         fail2("depth: ", fxrt_strerror(e));
 #else
     (void)scene_depth;
 #endif
 #if FXRT_MAX_SAMPLES > 1
-    e = world_set_samples(&world, scene_samples, scene_adaptive);
+    e = world_set_samples(w, scene_samples, scene_adaptive);
     if (e != FXRT_OK)
         fail2("samples: ", fxrt_strerror(e));
 #else
     (void)scene_samples;
     (void)scene_adaptive;
+#endif
 #endif
 }
 
@@ -207,7 +228,7 @@ int main(void)
     build_scene();
     uint64_t t0 = counter_ticks();
     uint64_t build_ticks = t0 - tb;
-    int32_t se = fxrt_render_setup(&render_state, &world, &cam);
+    int32_t se = fxrt_render_setup(&render_state, world, &cam);
     if (se != FXRT_OK)
         fail2("render set-up: ", se == FXRT_ERR_RENDER && render_state.error ? render_state.error : fxrt_strerror(se));
 #if FXRT_FB_MODE == FXRT_FB_FULL

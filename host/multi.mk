@@ -10,7 +10,7 @@
 # and the kernel fuzzer's, each with a rule of its own below.
 multi_core = $(CORE_NUM:%=host/$(1)/%.o)
 $(foreach n,$(NUMBERS),$(eval MULTI_fxrt-$(n) := host/engine-$(n).o $(call multi_core,$(n))))
-$(foreach n,$(NUMBERS),$(eval MULTI_scenec-$(n) := host/engine-$(n).o host/scenec_emit-$(n).o $(call multi_core,$(n))))
+$(foreach n,$(NUMBERS),$(eval MULTI_scenec-$(n) := host/engine-$(n).o host/scenec_emit-$(n).o host/scenec_world-$(n).o $(call multi_core,$(n))))
 $(foreach n,$(NUMBERS),$(eval MULTI_oracle-$(n) := tests/oracle_num-$(n).o host/engine-$(n).o $(call multi_core,$(n))))
 $(foreach n,$(NUMBERS),$(eval MULTI_diff-$(n) := tests/diffk-$(n).o $(call multi_core,$(n))))
 

@@ -25,4 +25,15 @@ int scenec_emit_float(FILE *cfg, FILE *data, const char *path, const scene_t *sc
 int scenec_emit_double(FILE *cfg, FILE *data, const char *path, const scene_t *sc, int width, int height,
                        unsigned opts, char *err, size_t errlen);
 
+/* Inside a number type's scene compiler (host/scenec_emit.c and
+ * host/scenec_world.c, compiled per number type with engine_build.h):
+ * scenec_world writes the world w as `static const world_t scene_world`
+ * in Q16.16 (SCENE_WORLD 1), else only SCENE_WORLD 0 (the board builds
+ * it at boot); 0, or -1 on a write error. scenec_mesh_name: the name of
+ * the mesh scenec_emit writes for model object i. */
+#ifdef ENGINE_SYM
+int ENGINE_SYM(scenec_world)(FILE *f, const world_t *w, const scene_t *sc);
+void ENGINE_SYM(scenec_mesh_name)(const scene_t *sc, int i, char *name, size_t len);
+#endif
+
 #endif

@@ -76,6 +76,25 @@ static const char *material_kind_name(unsigned k)
 }
 
 #if FXRT_MAX_MODELS > 0
+/* The name under which emit_models writes the mesh of model object i: its
+ * file's k (in the order the scene first names each file), _flat for an
+ * instance shaded flat. */
+void ENGINE_SYM(scenec_mesh_name)(const scene_t *sc, int i, char *name, size_t len)
+{
+    const scene_obj_t *o = &sc->obj[i];
+    int k = 0;
+    for (int j = 0; j < i; j++) {
+        const meshstore_entry_t *s = sc->obj[j].store;
+        if (sc->obj[j].kind != SCENE_MODEL || s == o->store)
+            continue;
+        bool first = true;
+        for (int m = 0; m < j && first; m++)
+            first = !(sc->obj[m].kind == SCENE_MODEL && sc->obj[m].store == s);
+        k += first;
+    }
+    snprintf(name, len, "scene_mesh%d%s", k, o->mesh != &o->store->mb.mesh ? "_flat" : "");
+}
+
 /* The models' data (see the call). */
 static int emit_models(FILE *data, const scene_t *sc, const engine_desc_t *d)
 {
@@ -350,5 +369,10 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(data, "static const int32_t scene_depth = %d; /* line %d */\n", d.depth, sc->depth_line);
     fprintf(data, "static const int32_t scene_samples = %d; /* line %d */\n", d.samples, sc->samples_line);
     fprintf(data, "static const bool scene_adaptive = %s;\n", d.adaptive ? "true" : "false");
+    /* And, in Q16.16, the world these values make (host/scenec_world.c). */
+    if (ENGINE_SYM(scenec_world)(data, &w, sc) != 0) {
+        snprintf(err, errlen, "%s: cannot write the world", path);
+        return -1;
+    }
     return 0;
 }

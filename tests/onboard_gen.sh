@@ -70,4 +70,5 @@ $( ((mb > 0)) && echo "#define FXRT_RENDER_BOX_FACES $mf")
 #define FXRT_MAX_ELLIPSOIDS $me
 #define FXRT_MAX_PARALLELEPIPEDS $mq
 #define ONB_MAX_WIDTH $mw
+#define SCENE_BOOT_WORLD 1 /* (every scene's world through the API, on the board) */
 CFG

@@ -50,6 +50,34 @@ for b in $SEED_BOARDS; do
     done
 done
 
+# The world in flash (scene_world, host/scenec_world.c) against the same
+# world built at boot through the API (SCENE_BOOT_WORLD): the same frame as
+# the host's, a read-only scene_world in one and none in the other, and
+# less RAM in the first (by at least the world's records).
+for b in mps2-an385 microbit; do
+    name=abb9-two-spheres fm=full
+    [[ $b == microbit ]] && fm=stream
+    "$FXRT" render scenes/$name.scene --number q16 --size $SIZE -o "$out/$name-host.ppm"
+    declare -A ram=()
+    for tag in flash boot; do
+        extra=() && [[ $tag == boot ]] && extra=(FW_TAG=boot FW_EXTRA=-DSCENE_BOOT_WORLD)
+        suffix= && [[ $tag == boot ]] && suffix=-boot
+        check "$b $name (world: $tag) run" run_fw SCENE=scenes/$name.scene BOARD=$b NUMBER=q16 SIZE=$SIZE "${extra[@]}"
+        check "$b $name (world: $tag): frame byte-identical to the host q16 render" \
+            cmp -s "$out/$name-host.ppm" "$BUILD/qemu/$b/$name-q16-$SIZE$suffix.ppm"
+        ram[$tag]=$(sed -nE 's/.*ram_static=([0-9]+).*/\1/p' "$out/run.log")
+    done
+    flash=$BUILD/fw/$b/$name-q16-$SIZE-$fm/fxrt.elf boot=$BUILD/fw/$b/$name-q16-$SIZE-$fm-boot/fxrt.elf
+    # (linker/sections.ld puts read-only data in .text, in flash)
+    sec=$(arm-none-eabi-objdump -t "$flash" | awk '$NF == "scene_world" {print $(NF-2)}')
+    check "$b: scene_world is in the flash build's .text, in flash (section: $sec)" test "$sec" = .text
+    check "$b: no scene_world in the boot build" bash -c "! arm-none-eabi-nm '$boot' | grep -q scene_world"
+    wsz=$(arm-none-eabi-nm -S "$flash" | awk '$NF == "scene_world" {print $2}')
+    echo "$b $name: static RAM ${ram[flash]} B with the world in flash, ${ram[boot]} B built at boot (scene_world 0x${wsz:-?} B)"
+    check "$b: the world in flash takes its size off RAM (${ram[flash]} + 0x${wsz:-?} <= ${ram[boot]})" \
+        test -n "$wsz" -a -n "${ram[flash]}" -a -n "${ram[boot]}" -a "$((${ram[flash]:-0} + 16#${wsz:-0}))" -le "${ram[boot]:-0}"
+done
+
 # Every stress scene that is not meant to be rejected, set up on each board
 # (camera, objects and forms built at run time from the scene's own values,
 # as firmware/main.c does) and compared with the host's Q16.16 render at the

@@ -118,11 +118,19 @@ typedef struct {
 
 /* ---- the records --------------------------------------------------------- */
 
+/* After each record, GEOM_KIND_FIELDS(F): its fields in order, as
+ * F(TYPE, field), from which the scene compiler writes a world as a
+ * constant initialiser for a board's flash (host/scenec_world.c). TYPE
+ * is VEC, NUM, WIDE (numw_t), BOOL, COMMON (geom_common_t), INST
+ * (bvh_inst_t), AFFINE (geom_affine_t) or SMOOTH (a triangle's
+ * FXRT_IF_SMOOTH fields, smooth and vn). */
+
 typedef struct {
     vec3_t a; /* a point on the plane */
     vec3_t n; /* unit normal */
     geom_common_t obj;
 } geom_plane_t;
+#define GEOM_PLANE_FIELDS(F) F(VEC, a) F(VEC, n) F(COMMON, obj)
 
 typedef struct {
     vec3_t center;
@@ -130,6 +138,7 @@ typedef struct {
     numw_t radius2; /* radius^2, exact (Q32.32) */
     geom_common_t obj;
 } geom_sphere_t;
+#define GEOM_SPHERE_FIELDS(F) F(VEC, center) F(NUM, radius) F(WIDE, radius2) F(COMMON, obj)
 
 typedef struct {
     vec3_t a, b, c;  /* vertices (edge tests use them directly, see triangle.c) */
@@ -138,11 +147,13 @@ typedef struct {
     geom_common_t obj;
     FXRT_IF_SMOOTH(bool smooth; vec3_t vn[3];) /* unit vertex normals, where smooth */
 } geom_triangle_t;
+#define GEOM_TRIANGLE_FIELDS(F) F(VEC, a) F(VEC, b) F(VEC, c) F(VEC, n) F(BOOL, degenerate) F(COMMON, obj) F(SMOOTH, smooth)
 
 typedef struct {
     vec3_t min, max; /* lbf and run corners, min <= max per axis */
     geom_common_t obj;
 } geom_box_t;
+#define GEOM_BOX_FIELDS(F) F(VEC, min) F(VEC, max) F(COMMON, obj)
 
 /* A model: a mesh in constant data placed in the world (scene/model.c).
  * lo, hi: a box around it in world space (from the placement's forward
@@ -152,6 +163,7 @@ typedef struct {
     vec3_t lo, hi;
     geom_common_t obj;
 } geom_model_t;
+#define GEOM_MODEL_FIELDS(F) F(INST, in) F(VEC, lo) F(VEC, hi) F(COMMON, obj)
 
 /* Where a ray met a model (its parts are triangles): the triangle, and
  * the shading normal there (unit, not yet turned towards the ray) where
@@ -172,10 +184,12 @@ typedef struct {
     geom_affine_t a;
     geom_common_t obj;
 } geom_ellipsoid_t;
+#define GEOM_ELLIPSOID_FIELDS(F) F(AFFINE, a) F(COMMON, obj)
 typedef struct {
     geom_affine_t a;
     geom_common_t obj;
 } geom_parallelepiped_t;
+#define GEOM_PARALLELEPIPED_FIELDS(F) F(AFFINE, a) F(COMMON, obj)
 
 #define GEOM_PART_PARAM FXRT_IF_MODEL(, const geom_part_t *part)
 #define GEOM_PART_ARG(x) FXRT_IF_MODEL(, x)
