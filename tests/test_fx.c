@@ -464,6 +464,36 @@ int main(int argc, char **argv)
         check_sincos(d);
 
     check_div_ties(n_random / 10 + 1000);
+    /* fx_udiv64_32: floor(n / d) for every n < d 2^32, against the
+     * compiler's 64-bit division: the ends of the range, the walk's
+     * reciprocals 2^53 / d (d above 2^22), and random divisors of every
+     * bit length with random numerators. */
+    {
+        static const uint32_t dh[] = {1, 2, 3, 0xffffu, 0x10000u, 0x10001u, 0x7fffffffu, 0x80000000u,
+                                      0x80000001u, 0xffffffffu, 0xfffffffeu, (1u << 22) + 1, 12345679u};
+        long bad = 0;
+        for (size_t i = 0; i < sizeof dh / sizeof dh[0]; i++) {
+            uint64_t top = ((uint64_t)dh[i] << 32) - 1;
+            const uint64_t nh[] = {0, 1, dh[i] - 1u, dh[i], top, top - dh[i], top / 2, (uint64_t)1 << 53};
+            for (size_t j = 0; j < sizeof nh / sizeof nh[0]; j++)
+                if (nh[j] <= top && fx_udiv64_32(nh[j], dh[i]) != nh[j] / dh[i]) {
+                    if (bad++ < 5)
+                        printf("fx_udiv64_32(%llu, %u) = %u, want %llu\n", (unsigned long long)nh[j], dh[i],
+                               fx_udiv64_32(nh[j], dh[i]), (unsigned long long)(nh[j] / dh[i]));
+                }
+        }
+        for (long i = 0; i < n_random; i++) {
+            int bits = 1 + (int)(rng() % 32);
+            uint32_t d = (uint32_t)(rng() >> (64 - bits)) | (1u << (bits - 1));
+            uint64_t n = i & 1 ? rng() % ((uint64_t)d << 32) : ((uint64_t)1 << 53) + (rng() & 0xffff);
+            if (!(i & 1))
+                d = (uint32_t)((1u << 22) + 1 + rng() % (0x80000000u - (1u << 22)));
+            if (fx_udiv64_32(n, d) != n / d && bad++ < 5)
+                printf("fx_udiv64_32(%llu, %u) = %u, want %llu\n", (unsigned long long)n, d, fx_udiv64_32(n, d),
+                       (unsigned long long)(n / d));
+        }
+        CHECK_MSG(bad == 0, "fx_udiv64_32: %ld quotients differ from the 64-bit division", bad);
+    }
     /* fx_smul_unit: the exact product for every a and a unit vector's
      * component u (|u| <= 2^16: the two-product path and, at 2^16, the
      * fallback), and for u outside that range (the fallback). */

@@ -89,6 +89,15 @@ static inline __attribute__((always_inline)) uint32_t fx_div64_32(uint64_t u, ui
     return (q1 << 16) + q0;
 }
 
+uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
+{
+    /* n 2^s < d 2^s 2^32 <= 2^64: no bit is lost, and the digits' bound
+     * u < D 2^32 holds. */
+    int s = fx_clz32(d);
+    uint32_t r;
+    return fx_div64_32(n << s, d << s, &r);
+}
+
 /* a / b correctly rounded, ties away from zero, with 32-bit operations only
  * (no libgcc 64-bit division). The quotient magnitude q = |a| 2^16 / |b|
  * is tested for saturation first (q >= 2^31 iff |a| / 2^15 >= |b|); then

@@ -77,7 +77,10 @@ static void bvh_quick_limit(bvh_ray_t *r)
 {
     r->lt = INT32_MAX;
     if (r->quick && r->ld != 0) {
-        uint64_t q = ((uint64_t)r->ln << 21) / (uint32_t)r->ld + 1;
+        /* (ln 2^21 < 2^52; a quotient of 2^32 or more saturates) */
+        uint64_t n = (uint64_t)r->ln << 21;
+        uint32_t ld = (uint32_t)r->ld;
+        uint64_t q = (n >> 32) < ld ? (uint64_t)fx_udiv64_32(n, ld) + 1 : (uint64_t)INT32_MAX;
         r->lt = q < INT32_MAX ? (int32_t)q : INT32_MAX;
     }
 }
@@ -375,7 +378,8 @@ static void bvh_quick(bvh_ray_t *r)
     }
     for (int j = 0; j < 3; j++) {
         bool neg = r->d[j] < 0;
-        int32_t q = (int32_t)(((uint64_t)1 << 53) / (uint32_t)(neg ? -r->d[j] : r->d[j])); /* below 2^31 */
+        /* below 2^31 (|d| > 2^22 > 2^53 / 2^32: fx_udiv64_32's bound) */
+        int32_t q = (int32_t)fx_udiv64_32((uint64_t)1 << 53, (uint32_t)(neg ? -r->d[j] : r->d[j]));
         r->rc[j] = neg ? -q : q;
         r->near[j] = (uint8_t)((neg ? offsetof(bvh_node_t, hi) : offsetof(bvh_node_t, lo)) + 2 * j);
         r->far[j] = (uint8_t)((neg ? offsetof(bvh_node_t, lo) : offsetof(bvh_node_t, hi)) + 2 * j);
