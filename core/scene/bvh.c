@@ -311,11 +311,14 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32
 /* One bound's T: the int16_t at byte offset off of node bytes b, on axis i. */
 static inline int32_t bvh_quot(const bvh_ray_t *r, const unsigned char *b, unsigned off, int i)
 {
-    return (int32_t)(fx_smul32((int32_t)*(const int16_t *)(b + off) * (1 << r->f) - r->o[i], r->rc[i]) >> 32);
+    return fx_smulhi_low((int32_t)*(const int16_t *)(b + off) * (1 << r->f) - r->o[i], r->rc[i]);
 }
 
 /* Met, for entry E and exit X (bvh_box_quick's margins). */
-static inline bool bvh_quick_met(const bvh_ray_t *r, int32_t e, int32_t x) { return e - 2 <= x && e - 1 <= r->lt; }
+static inline bool bvh_quick_met(const bvh_ray_t *r, int32_t e, int32_t x)
+{
+    return e - 2 - FX_SMULHI_LOW <= x && e - 1 <= r->lt;
+}
 
 /* Q16.16, a ray with r->quick: bvh_box's question without its exact
  * quotients, answered yes wherever bvh_box says yes (and sometimes where
@@ -325,8 +328,11 @@ static inline bool bvh_quick_met(const bvh_ray_t *r, int32_t e, int32_t x) { ret
  * floor's 1), and below 2^30 in size (|d| > 2^22). The entry E = max(0,
  * the slabs' lesser T) and the exit X = the least greater T are each within
  * 1.5 of the exact ones, whose test is entry <= exit and entry <= the
- * limit: so E <= X + 2 and E <= lt + 1 hold wherever it passes. *te: E,
- * for the walk's order (bvh_order). */
+ * limit: so E <= X + 2 and E <= lt + 1 hold wherever it passes. On the
+ * M0 (fx_smulhi_low's three products) each T may be up to 2 lower again, never
+ * higher, so E is at most the exact-product E and X at least its X - 2:
+ * E <= X + 4 and E <= lt + 1 hold (FX_SMULHI_LOW). *te: E, for the walk's
+ * order (bvh_order). */
 static __attribute__((noinline)) bool bvh_box_quick(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *te)
 {
     const unsigned char *b = (const unsigned char *)nd;
@@ -401,13 +407,15 @@ static FXRT_INLINE_WIDE bool bvh_box_met(const bvh_ray_t *r, const bvh_node_t *n
 
 /* Is box entry 1 before entry 2? 1 or 0; -1: entries of bvh_box_quick
  * too close to tell (each within 1.5 of its exact value: a difference of
- * 3 or more decides), for which the caller asks bvh_box again. */
+ * 3 or more decides; on the M0, whose entries may each be up to
+ * FX_SMULHI_LOW lower again, 3 + FX_SMULHI_LOW), for which the caller asks
+ * bvh_box again. */
 static int bvh_order(int32_t n1, int32_t d1, num_t f1, int32_t n2, int32_t d2, num_t f2)
 {
     if (!NUM_EXACT)
         return f1 < f2;
     if (d1 == 0 || d2 == 0)
-        return n1 <= n2 - 3 ? 1 : n2 <= n1 - 3 ? 0 : -1;
+        return n1 <= n2 - 3 - FX_SMULHI_LOW ? 1 : n2 <= n1 - 3 - FX_SMULHI_LOW ? 0 : -1;
     return fx_smul32(n1, d2) < fx_smul32(n2, d1);
 }
 
