@@ -27,6 +27,23 @@ $(BUILD)/tests/test_fx_nohw: tests/test_fx.c tests/check.h core/math/fx.h core/f
 	@echo "  CC/LD   $@"
 	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DTEST_FX_NAME='"test_fx_nohw"' -Icore -o $@ tests/test_fx.c $(BUILD)/tests/fx-nohw.o -lm
 
+# tests/test_bvh.c in Q16.16 through the M0's paths too (test_bvh_nohw):
+# the leak test and the oracle's queries on the micro:bit's arithmetic (the
+# quick box test's three-product quotients, fx_smulhi_low, and Knuth's
+# digits by reciprocal), on the host, with the rays the boards' own checks
+# cannot afford. The core compiled again with FX_NOHW_FLAGS.
+$(BUILD)/tests/nohw/q16/%.o: core/%.c
+	@mkdir -p $(@D)
+	@echo "  CC nohw $<"
+	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DFXRT_MULTI -DFXRT_NUMBER=1 -c $< -o $@
+$(BUILD)/tests/test_bvh_nohw: tests/test_bvh.c $(BVH_TEST_LIB) host/meshbuild.h host/obj.h $(wildcard tests/*.h) \
+                              $(BUILD)/tests/fx-nohw.o $(CORE_NUM:%=$(BUILD)/tests/nohw/q16/%.o)
+	@echo "  CC/LD   $@"
+	$(Q)$(CC) $(CFLAGS_H) $(FX_NOHW_FLAGS) -DFXRT_MULTI -DFXRT_NUMBER=1 -DTEST_BVH_NAME='"test_bvh_nohw"' -Icore -Ihost \
+	  -o $@ $(filter %.c %.o,$^) $(LDLIBS_H)
+SUITES_EXTRA += $(BUILD)/tests/test_bvh_nohw
+TEST_PREREQ  += $(BUILD)/tests/test_bvh_nohw
+
 $(BUILD)/tests/fx_exhaustive: tests/fx_exhaustive.c tests/check.h $(BUILD)/host/fx.o
 	@mkdir -p $(@D)
 	@echo "  CC/LD   $@"
