@@ -29,7 +29,7 @@ $(BUILD)/tests/test_fx_nohw: tests/test_fx.c tests/check.h core/math/fx.h core/f
 
 # tests/test_bvh.c in Q16.16 through the M0's paths too (test_bvh_nohw):
 # the leak test and the oracle's queries on the micro:bit's arithmetic (the
-# quick box test's three-product quotients, fx_smulhi_low, and Knuth's
+# quick box test's two-product quotients and wider margins, and Knuth's
 # digits by reciprocal), on the host, with the rays the boards' own checks
 # cannot afford. The core compiled again with FX_NOHW_FLAGS.
 $(BUILD)/tests/nohw/q16/%.o: core/%.c

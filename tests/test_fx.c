@@ -464,35 +464,6 @@ int main(int argc, char **argv)
         check_sincos(d);
 
     check_div_ties(n_random / 10 + 1000);
-    /* fx_smulhi_low: at most FX_SMULHI_LOW below the exact high word
-     * (the compiler's 64-bit product), never above; exact where that is
-     * 0. Every sign, the ends of the range and random patterns. */
-    {
-        static const int32_t sh[] = {INT32_MIN, INT32_MIN + 1, INT32_MAX, INT32_MAX - 1, -1, 0, 1, 65535, 65536,
-                                     -65536, -65537, 0x7fff0000, -0x7fff0000, 0x0000ffff, (int32_t)0xffff0001u};
-        long bad = 0, below = 0;
-        for (long i = 0; i < n_random + 225; i++) {
-            int32_t a, b;
-            if (i < 225) {
-                a = sh[i / 15];
-                b = sh[i % 15];
-            } else {
-                a = (int32_t)(uint32_t)rng();
-                b = (int32_t)(uint32_t)(rng() >> (rng() % 32));
-                if (rng() & 1)
-                    b = -b;
-            }
-            int64_t exact = (int64_t)a * b;
-            int32_t want = (int32_t)(exact >> 32), got = fx_smulhi_low(a, b); /* (>> floors: gcc) */
-            below += got != want;
-            if ((got > want || got < want - FX_SMULHI_LOW) && bad++ < 5)
-                printf("fx_smulhi_low(%d, %d) = %d, exact %d (slack %d)\n", a, b, got, want, FX_SMULHI_LOW);
-        }
-        CHECK_MSG(bad == 0, "fx_smulhi_low: %ld high words outside [exact - %d, exact]", bad, FX_SMULHI_LOW);
-        CHECK_MSG(FX_SMULHI_LOW > 0 || below == 0, "fx_smulhi_low with UMULL: %ld inexact", below);
-        printf("fx_smulhi_low: %ld of %ld below the exact high word (slack %d)\n", below, n_random + 225,
-               FX_SMULHI_LOW);
-    }
     /* fx_udiv64_32: floor(n / d) for every n < d 2^32, against the
      * compiler's 64-bit division: the ends of the range, the walk's
      * reciprocals 2^53 / d (d above 2^22), and random divisors of every

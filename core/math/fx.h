@@ -142,23 +142,6 @@ static inline int64_t fx_smul32(int32_t a, int32_t b)
         hi -= (uint32_t)a;
     return (int64_t)(((uint64_t)hi << 32) | (uint32_t)p);
 }
-/* The high word of a b, floor(a b / 2^32), where the target multiplies
- * 32 x 32 bits (FX_HAVE_UMULL); without (the M0, where the exact word is
- * four 16-bit products and their carries), from three: with a = ah 2^16 +
- * al and b = bh 2^16 + bl (ah, bh signed, al, bl in 0..2^16), ah bh +
- * floor(ah bl / 2^16) + floor(al bh / 2^16), each product within 32 bits.
- * Leaving out al bl / 2^32 (below 1) and the two floors (each below 1)
- * puts it at most FX_SMULHI_LOW = 2 below the exact word, never above.
- * For a caller whose test has that margin (scene/bvh.c's quick box test);
- * test_fx and test_fx_nohw check both paths' bounds. */
-#define FX_SMULHI_LOW (FX_HAVE_UMULL ? 0 : 2)
-static inline int32_t fx_smulhi_low(int32_t a, int32_t b)
-{
-    if (FX_HAVE_UMULL)
-        return (int32_t)(fx_smul32(a, b) >> 32);
-    int32_t ah = a >> 16, bh = b >> 16, al = a & 0xffff, bl = b & 0xffff;
-    return ah * bh + ((ah * bl) >> 16) + ((al * bh) >> 16);
-}
 /* acc + a b, where the caller has shown that the sum fits int64 (modulo
  * 2^64 otherwise, never undefined): one SMLAL on Thumb-2. */
 static inline int64_t fx_smlal32(int64_t acc, int32_t a, int32_t b)

@@ -44,6 +44,11 @@ typedef struct {
      * of mesh t within 1.5; lt, above the limit in those units
      * (INT32_MAX: none). */
     int32_t rc[3], lt;
+#if !FX_HAVE_UMULL
+    /* The M0's quotients (bvh_quot): rc 2^f / 2^16 = qh 2^16 + ql (ql in
+     * 0..2^16), and floor(o rc / 2^32). */
+    int32_t qh[3], ql[3], ko[3];
+#endif
     uint8_t near[3], far[3]; /* the byte offsets in bvh_node_t of the slabs' entry and exit bounds */
     bool quick;
     /* float, double */
@@ -308,16 +313,39 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32
     return true;
 }
 
-/* One bound's T: the int16_t at byte offset off of node bytes b, on axis i. */
+/* One bound's T: the int16_t at byte offset off of node bytes b, on axis i.
+ * Where the target multiplies 32 x 32 bits (FX_HAVE_UMULL), T =
+ * floor(Q) with Q = (b 2^f - o) rc / 2^32, one SMULL's high word. The M0
+ * has no such multiply (fx_smul32 is four 16-bit products and their
+ * carries), so it takes two products of the bound b, 16 bits: Q = b qh +
+ * b ql / 2^16 + b r0 / 2^32 - o rc / 2^32, where rc 2^f = (qh 2^16 + ql)
+ * 2^16 + r0 (r0 in 0..2^16), and its T' = b qh + floor(b ql / 2^16) - ko,
+ * ko = floor(o rc / 2^32) once per ray (bvh_quick). The floor loses below
+ * 1, b r0 / 2^32 lies within 0.5 and ko below 1: T' - Q lies in (-1.5,
+ * 1.5), so T' is at most BVH_QUICK_LO = 1 below floor(Q) and at most
+ * BVH_QUICK_HI = 2 above it. (|b qh| < 2^22 and |b ql| < 2^31: 32-bit
+ * products.) */
+#if FX_HAVE_UMULL
+#define BVH_QUICK_LO 0
+#define BVH_QUICK_HI 0
+#else
+#define BVH_QUICK_LO 1
+#define BVH_QUICK_HI 2
+#endif
 static inline int32_t bvh_quot(const bvh_ray_t *r, const unsigned char *b, unsigned off, int i)
 {
-    return fx_smulhi_low((int32_t)*(const int16_t *)(b + off) * (1 << r->f) - r->o[i], r->rc[i]);
+    int32_t v = *(const int16_t *)(b + off);
+#if FX_HAVE_UMULL
+    return (int32_t)(fx_smul32(v * (1 << r->f) - r->o[i], r->rc[i]) >> 32);
+#else
+    return v * r->qh[i] + ((v * r->ql[i]) >> 16) - r->ko[i];
+#endif
 }
 
 /* Met, for entry E and exit X (bvh_box_quick's margins). */
 static inline bool bvh_quick_met(const bvh_ray_t *r, int32_t e, int32_t x)
 {
-    return e - 2 - FX_SMULHI_LOW <= x && e - 1 <= r->lt;
+    return e - 2 - BVH_QUICK_LO - BVH_QUICK_HI <= x && e - 1 - BVH_QUICK_HI <= r->lt;
 }
 
 /* Q16.16, a ray with r->quick: bvh_box's question without its exact
@@ -329,10 +357,9 @@ static inline bool bvh_quick_met(const bvh_ray_t *r, int32_t e, int32_t x)
  * the slabs' lesser T) and the exit X = the least greater T are each within
  * 1.5 of the exact ones, whose test is entry <= exit and entry <= the
  * limit: so E <= X + 2 and E <= lt + 1 hold wherever it passes. On the
- * M0 (fx_smulhi_low's three products) each T may be up to 2 lower again, never
- * higher, so E is at most the exact-product E and X at least its X - 2:
- * E <= X + 4 and E <= lt + 1 hold (FX_SMULHI_LOW). *te: E, for the walk's
- * order (bvh_order). */
+ * M0 each T' lies within BVH_QUICK_LO below and BVH_QUICK_HI above that T
+ * (bvh_quot), so E' <= E + HI and X' >= X - LO: E' <= X' + 2 + LO + HI
+ * and E' <= lt + 1 + HI hold. *te: E, for the walk's order (bvh_order). */
 static __attribute__((noinline)) bool bvh_box_quick(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *te)
 {
     const unsigned char *b = (const unsigned char *)nd;
@@ -387,6 +414,12 @@ static void bvh_quick(bvh_ray_t *r)
         /* below 2^31 (|d| > 2^22 > 2^53 / 2^32: fx_udiv64_32's bound) */
         int32_t q = (int32_t)fx_udiv64_32((uint64_t)1 << 53, (uint32_t)(neg ? -r->d[j] : r->d[j]));
         r->rc[j] = neg ? -q : q;
+#if !FX_HAVE_UMULL
+        int32_t q16 = (int32_t)(((int64_t)r->rc[j] * (1 << r->f)) >> 16); /* |rc 2^f| < 2^39 */
+        r->qh[j] = q16 >> 16;
+        r->ql[j] = q16 & 0xffff;
+        r->ko[j] = (int32_t)(fx_smul32(r->o[j], r->rc[j]) >> 32);
+#endif
         r->near[j] = (uint8_t)((neg ? offsetof(bvh_node_t, hi) : offsetof(bvh_node_t, lo)) + 2 * j);
         r->far[j] = (uint8_t)((neg ? offsetof(bvh_node_t, lo) : offsetof(bvh_node_t, hi)) + 2 * j);
     }
@@ -407,15 +440,15 @@ static FXRT_INLINE_WIDE bool bvh_box_met(const bvh_ray_t *r, const bvh_node_t *n
 
 /* Is box entry 1 before entry 2? 1 or 0; -1: entries of bvh_box_quick
  * too close to tell (each within 1.5 of its exact value: a difference of
- * 3 or more decides; on the M0, whose entries may each be up to
- * FX_SMULHI_LOW lower again, 3 + FX_SMULHI_LOW), for which the caller asks
- * bvh_box again. */
+ * 3 or more decides; on the M0, whose entries E' lie within BVH_QUICK_LO
+ * below and BVH_QUICK_HI above, 3 + LO + HI: then E1 <= E1' + LO <= E2' -
+ * 3 - HI <= E2 - 3), for which the caller asks bvh_box again. */
 static int bvh_order(int32_t n1, int32_t d1, num_t f1, int32_t n2, int32_t d2, num_t f2)
 {
     if (!NUM_EXACT)
         return f1 < f2;
     if (d1 == 0 || d2 == 0)
-        return n1 <= n2 - 3 - FX_SMULHI_LOW ? 1 : n2 <= n1 - 3 - FX_SMULHI_LOW ? 0 : -1;
+        return n1 <= n2 - 3 - BVH_QUICK_LO - BVH_QUICK_HI ? 1 : n2 <= n1 - 3 - BVH_QUICK_LO - BVH_QUICK_HI ? 0 : -1;
     return fx_smul32(n1, d2) < fx_smul32(n2, d1);
 }
 
