@@ -156,7 +156,9 @@ fi
 # the goal: a kind's FXRT_IF_KIND, short fields and statements that only
 # lights, bounces or supersampling need (FXRT_IF_LIGHTS, _DEPTH,
 # _SAMPLES) are macros of port/port.h's FXRT_IF_NONZERO, and the host-only
-# capacities' default is FXRT_PORT_HOSTED(16).
+# capacities' default is FXRT_PORT_HOSTED(16). The micro:bit's quick box
+# test (scene/bvh.c: the ray record's two-product terms, their set-up and
+# the quotient, FX_HAVE_UMULL) took the three left below the cap.
 IF_CAP=235
 if_lines() { cat "$@" | grep -cE '^\s*#\s*(if|ifdef|ifndef|elif)\b' || true; }
 total_if=0

@@ -325,13 +325,8 @@ static bool bvh_box(const bvh_ray_t *r, const bvh_node_t *nd, int32_t *en, int32
  * 1.5), so T' is at most BVH_QUICK_LO = 1 below floor(Q) and at most
  * BVH_QUICK_HI = 2 above it. (|b qh| < 2^22 and |b ql| < 2^31: 32-bit
  * products.) */
-#if FX_HAVE_UMULL
-#define BVH_QUICK_LO 0
-#define BVH_QUICK_HI 0
-#else
-#define BVH_QUICK_LO 1
-#define BVH_QUICK_HI 2
-#endif
+#define BVH_QUICK_LO (FX_HAVE_UMULL ? 0 : 1)
+#define BVH_QUICK_HI (FX_HAVE_UMULL ? 0 : 2)
 static inline int32_t bvh_quot(const bvh_ray_t *r, const unsigned char *b, unsigned off, int i)
 {
     int32_t v = *(const int16_t *)(b + off);
