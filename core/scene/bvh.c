@@ -1,4 +1,4 @@
-/* (Over 850 lines: the exact and the float queries share the ray's mapping and the tree's walk, and the quick box test leans on the exact one.) */
+/* (Over 1,000 lines: the exact and the float queries share the ray's mapping and the tree's walk, and the quick box test and the M0's edge filter lean on the exact ones.) */
 /* bvh: the ray queries on a mesh in constant data (scene/bvh.h): the ray
  * mapped to mesh space once, then the tree walked nearer child first with
  * a fixed stack, and each leaf's triangles tested by their edges.
@@ -534,6 +534,54 @@ static FXRT_INLINE_WIDE bool bvh_edge_cross(int32_t p[3][3], const uint32_t vi[3
     return swap;
 }
 
+/* The M0's edge filter (bvh_triangle). Edge k's value d . (pa x pb)
+ * equals d . (pa x e), e = pb - pa = (vb - va) 2^f: exact and below 2^24,
+ * its size the edge's, not the origin's distance. With pa = pa' 2^sp + a
+ * and e = e' 2^se + b (floors: a, b in 0..2^s; |pa'|, |e'| < 2^14, one
+ * shift each for the triangle's three), c' = pa' x e' (16-bit products),
+ * c'' = c' >> 15 (|c''| <= 2^14) and d' = d >> 15 (|d'| <= 2^15): then
+ * with U = 2^(sp + se), pa x e / U = 2^15 c'' + w, |w| < 2^17 (pa' x b
+ * and a x e' each below 2^15 an axis, a x b / U below 2, c' - 2^15 c''
+ * below 2^15), and d . (pa x e) / U = 2^30 (d' . c'') + 2^15 (d - 2^15 d')
+ * . c'' + d . w, the last two below 3 2^44 + 3 2^47 = 27 2^44 in size. So
+ * d' . c'' (each product below 2^29: 32 bits) has the sign of the edge's
+ * value wherever its size exceeds 27 2^14 = BVH_EDGE_SLACK; else the
+ * exact test decides. */
+#define BVH_EDGE_SLACK (27 * ((int32_t)1 << 14))
+
+/* The shift that brings magnitude m below 2^14. */
+static int bvh_shift14(uint32_t m)
+{
+    int s = 0;
+    if (m >> 16) {
+        m >>= 16;
+        s = 16;
+    }
+    if (m >> 8) {
+        m >>= 8;
+        s += 8;
+    }
+    while (m) {
+        m >>= 1;
+        s++;
+    }
+    return s > 14 ? s - 14 : 0;
+}
+
+/* Edge k's sign by the filter, from the triangle's vertices p relative to
+ * the origin, their shift sp, the edges' se and the direction's d' (dq):
+ * 1, -1, or 0 where it cannot tell. */
+static inline __attribute__((always_inline)) int bvh_edge_filter(int32_t p[3][3], int k, int sp, int se,
+                                                                 int32_t dq0, int32_t dq1, int32_t dq2)
+{
+    const int32_t *pa = p[bvh_next[k]], *pb = p[bvh_next[k + 1]];
+    int32_t a0 = pa[0] >> sp, a1 = pa[1] >> sp, a2 = pa[2] >> sp;
+    int32_t e0 = (pb[0] - pa[0]) >> se, e1 = (pb[1] - pa[1]) >> se, e2 = (pb[2] - pa[2]) >> se;
+    int32_t v = dq0 * ((a1 * e2 - a2 * e1) >> 15) + dq1 * ((a2 * e0 - a0 * e2) >> 15) +
+                dq2 * ((a0 * e1 - a1 * e0) >> 15);
+    return v > BVH_EDGE_SLACK ? 1 : v < -BVH_EDGE_SLACK ? -1 : 0;
+}
+
 /* Does the ray's line pass through triangle i (its edges, either winding,
  * a zero on an edge counting), in front of the origin? c: t's quotient,
  * with det > 0. */
@@ -572,15 +620,39 @@ __attribute__((noinline)) static bool bvh_triangle(const bvh_mesh_t *m, const bv
     int64_t x[3];
     bvh_rel(m, r, i, p, vi);
     int pos = 0, neg = 0;
+    if (!FX_HAVE_UMULL) {
+        /* The M0 (no 32 x 32 -> 64-bit multiply): the filter above, the
+         * exact test only where it cannot tell. */
+        uint32_t mp = 0, me = 0;
+        for (int j = 0; j < 3; j++) {
+            mp |= fx_uabs32(p[0][j]) | fx_uabs32(p[1][j]) | fx_uabs32(p[2][j]);
+            me |= fx_uabs32(p[1][j] - p[0][j]) | fx_uabs32(p[2][j] - p[1][j]) | fx_uabs32(p[0][j] - p[2][j]);
+        }
+        int sp = bvh_shift14(mp), se = bvh_shift14(me);
+        int32_t dq0 = r->d[0] >> 15, dq1 = r->d[1] >> 15, dq2 = r->d[2] >> 15;
+        for (int k = 0; k < 3; k++) {
+            int sg = bvh_edge_filter(p, k, sp, se, dq0, dq1, dq2);
+            if (sg == 0) {
+                bool swap = bvh_edge_cross(p, vi, k, x);
+                sg = bvh_dot_sign(r->d, x);
+                sg = swap ? -sg : sg;
+            }
+            pos |= sg > 0;
+            neg |= sg < 0;
+            if (pos && neg)
+                return false;
+        }
+    } else {
 #pragma GCC unroll 3
-    for (int k = 0; k < 3; k++) {
-        bool swap = bvh_edge_cross(p, vi, k, x);
-        int sg = bvh_dot_sign(r->d, x);
-        sg = swap ? -sg : sg;
-        pos |= sg > 0;
-        neg |= sg < 0;
-        if (pos && neg)
-            return false;
+        for (int k = 0; k < 3; k++) {
+            bool swap = bvh_edge_cross(p, vi, k, x);
+            int sg = bvh_dot_sign(r->d, x);
+            sg = swap ? -sg : sg;
+            pos |= sg > 0;
+            neg |= sg < 0;
+            if (pos && neg)
+                return false;
+        }
     }
     /* the plane: n = (b - a) x (c - a) in mesh units (exact, below 2^34);
      * E(b, c) + E(c, a) + E(a, b) = d . n 2^2f exactly */
