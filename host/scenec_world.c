@@ -44,6 +44,15 @@ static void w_vec(FILE *f, vec3_t v)
     fprintf(f, "{%" PRId32 ", %" PRId32 ", %" PRId32 "}", v.x, v.y, v.z);
 }
 
+/* Vectors, each followed by ", ". */
+static void w_vecs(FILE *f, int n, const vec3_t *const v[])
+{
+    for (int i = 0; i < n; i++) {
+        w_vec(f, *v[i]);
+        fputs(", ", f);
+    }
+}
+
 static void w_color(FILE *f, color_t c)
 {
     fprintf(f, "{%" PRId32 ", %" PRId32 ", %" PRId32 "}", c.r, c.g, c.b);
@@ -94,11 +103,7 @@ static void w_inst(FILE *f, const bvh_inst_t *in, const scene_t *sc, uint16_t id
 static void w_affine(FILE *f, const geom_affine_t *a)
 {
     fputs("{", f);
-    const vec3_t *v[] = {&a->c, &a->u, &a->v, &a->w};
-    for (int k = 0; k < 4; k++) {
-        w_vec(f, *v[k]);
-        fputs(", ", f);
-    }
+    w_vecs(f, 4, (const vec3_t *const[]){&a->c, &a->u, &a->v, &a->w});
     fputs("{", f);
     for (int k = 0; k < 3; k++) {
         fputs(k ? ", " : "", f);
@@ -159,10 +164,7 @@ FXRT_KINDS(W_RECORD)
 static void w_light(FILE *f, const light_t *l)
 {
     fprintf(f, "{%u, %d, {%u, %u}, ", l->kind, l->shadows, l->axes[0], l->axes[1]);
-    w_vec(f, l->position);
-    fputs(", ", f);
-    w_vec(f, l->dir);
-    fputs(", ", f);
+    w_vecs(f, 2, (const vec3_t *const[]){&l->position, &l->dir});
     w_num(f, l->cos_angle);
     fputs(", ", f);
     w_color(f, l->color);
@@ -222,12 +224,7 @@ int ENGINE_SYM(scenec_world)(FILE *f, const world_t *w, const scene_t *sc)
     fputs("},\n#endif\n", f);
     fputs("#if FXRT_MAX_DEPTH > 0\n", f);
     fprintf(f, "%u, %u, %d, ", w->depth, w->n_bounce, w->bounded);
-    w_vec(f, w->bmin);
-    fputs(", ", f);
-    w_vec(f, w->bmax);
-    fputs(", ", f);
-    w_vec(f, w->bc);
-    fputs(", ", f);
+    w_vecs(f, 3, (const vec3_t *const[]){&w->bmin, &w->bmax, &w->bc});
     w_wide(f, w->br2);
     fputs(",\n#endif\n#if FXRT_MAX_SAMPLES > 1\n", f);
     fprintf(f, "%u, %d,\n#endif\n};\n#endif\n", w->samples, w->adaptive);
