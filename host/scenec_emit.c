@@ -82,14 +82,17 @@ static const char *material_kind_name(unsigned k)
 void ENGINE_SYM(scenec_mesh_name)(const scene_t *sc, int i, char *name, size_t len)
 {
     const scene_obj_t *o = &sc->obj[i];
+    /* k: the files the scene names first before this one's first model */
+    int j0 = 0;
+    while (!(sc->obj[j0].kind == SCENE_MODEL && sc->obj[j0].store == o->store))
+        j0++;
     int k = 0;
-    for (int j = 0; j < i; j++) {
-        const meshstore_entry_t *s = sc->obj[j].store;
-        if (sc->obj[j].kind != SCENE_MODEL || s == o->store)
+    for (int j = 0; j < j0; j++) {
+        if (sc->obj[j].kind != SCENE_MODEL)
             continue;
         bool first = true;
         for (int m = 0; m < j && first; m++)
-            first = !(sc->obj[m].kind == SCENE_MODEL && sc->obj[m].store == s);
+            first = !(sc->obj[m].kind == SCENE_MODEL && sc->obj[m].store == sc->obj[j].store);
         k += first;
     }
     snprintf(name, len, "scene_mesh%d%s", k, o->mesh != &o->store->mb.mesh ? "_flat" : "");

@@ -81,6 +81,36 @@ sed '/^#ifdef SCENE_BOOT_WORLD/,$d' "$tmp/scd/scene_data.h" >"$tmp/scd/inst.h"
 sed -n '/^#ifdef SCENE_BOOT_WORLD/,$p' "$tmp/scd/scene_data.h" >"$tmp/scd/world.h"
 check "--node's maps are the scene compiler's ($(maps "$tmp/placed80.c"))" test -n "$(maps "$tmp/placed80.c")" -a "$(maps "$tmp/placed80.c")" = "$(maps "$tmp/scd/inst.h")"
 check "--node's maps are the world's in flash ($(maps "$tmp/scd/world.h"))" test "$(maps "$tmp/placed80.c")" = "$(maps "$tmp/scd/world.h")"
+# Two files and a flat instance, interleaved (A, B, A flat, A): the world's
+# model records name the meshes their instances do, and the M3 renders the
+# scene from flash as the host does.
+mkdir -p "$tmp/sc2"
+m=../../../../scenes/models
+cat >"$tmp/sc/q.scene" <<EOF2
+camera perspective eye 0 1 7 gaze 0 -0.15 -1 up 0 1 0 fov 50
+node translate -2.2 0 0
+  mesh file $m/ico80.obj color 0.8 0.3 0.2
+end
+mesh file $m/ico320.obj color 0.2 0.8 0.3
+node translate 2.2 0 0
+  mesh file $m/ico80.obj shading flat color 0.3 0.2 0.8
+end
+node translate 0 2 0
+  mesh file $m/ico80.obj color 0.9 0.8 0.2
+end
+EOF2
+if "$SCENEC" "$tmp/sc/q.scene" --number q16 --size 64x48 --out "$tmp/sc2" >"$tmp/sc2.log" 2>&1; then
+    inst=$(sed '/^#ifdef SCENE_BOOT_WORLD/,$d' "$tmp/sc2/scene_data.h" | grep -oE '^const fxrt_instance_t scene_inst[0-9]+ = \{&[a-z0-9_]+|^static const fxrt_instance_t scene_inst[0-9]+ = \{&[a-z0-9_]+' | sed 's/.*&//' | tr '\n' ' ')
+    world=$(sed -n '/^#ifdef SCENE_BOOT_WORLD/,$p' "$tmp/sc2/scene_data.h" | grep -oE '\{\{&scene_mesh[0-9a-z_]+' | sed 's/.*&//' | tr '\n' ' ')
+    check "interleaved files: the world's models name their instances' meshes (instances: $inst; world: $world)" \
+        test "$inst" = "scene_mesh0 scene_mesh1 scene_mesh0_flat scene_mesh0 " -a "$world" = "$inst"
+else
+    bad "fxrt-scenec $tmp/sc/q.scene: $(cat "$tmp/sc2.log")"
+fi
+"$BUILD/fxrt" render "$tmp/sc/q.scene" --number q16 --size 64x48 -o "$tmp/q-host.ppm"
+check "interleaved files: M3 run" $M qemu SCENE="$tmp/sc/q.scene" BOARD=mps2-an385 SIZE=64x48
+check "interleaved files: the M3's frame (world in flash) is the host's" cmp -s "$tmp/q-host.ppm" "$BUILD/qemu/mps2-an385/q-q16-64x48.ppm"
+
 cat >"$tmp/embed.c" <<'EOF'
 #include <stdio.h>
 #include "fxrt.h"
