@@ -81,12 +81,12 @@ for b in microbit; do
 done
 
 # The world in flash with what the seed scenes lack: lights and
-# materials, supersampling (trace/supersample), a glass model and bounces
-# (nodes/glass-ico80), an ellipsoid and a parallelepiped (the course's
-# exercise-5 scenes): each rendered on the M3 from its scene_world, at
-# 40x30, against the host. (The on-board batches below and in qemu_lit.sh
+# materials, a glass model and bounces (nodes/glass-ico80), an ellipsoid
+# and a parallelepiped (the course's exercise-5 scenes): each rendered on
+# the M3 from its scene_world, at 40x30, against the host (supersampling's
+# two fields: make bench's samples scenes). (The on-board batches below and in qemu_lit.sh
 # and qemu_trace.sh build their worlds at boot.)
-for scene in scenes/trace/supersample.scene scenes/nodes/glass-ico80.scene scenes/nodes/course-u5-ellipsoid.scene scenes/nodes/course-u5-box.scene; do
+for scene in scenes/nodes/glass-ico80.scene scenes/nodes/course-u5-ellipsoid.scene scenes/nodes/course-u5-box.scene; do
     name=$(basename "$scene" .scene)
     "$FXRT" render "$scene" --number q16 --size 40x30 -o "$out/$name-host.ppm"
     check "mps2-an385 $name (world in flash) run" run_fw SCENE=$scene BOARD=mps2-an385 NUMBER=q16 SIZE=40x30
