@@ -620,39 +620,34 @@ __attribute__((noinline)) static bool bvh_triangle(const bvh_mesh_t *m, const bv
     int64_t x[3];
     bvh_rel(m, r, i, p, vi);
     int pos = 0, neg = 0;
+    /* The M0 (no 32 x 32 -> 64-bit multiply): the filter above first, the
+     * exact test only where it cannot tell; elsewhere the exact test. */
+    int sp = 0, se = 0;
+    int32_t dq0 = 0, dq1 = 0, dq2 = 0;
     if (!FX_HAVE_UMULL) {
-        /* The M0 (no 32 x 32 -> 64-bit multiply): the filter above, the
-         * exact test only where it cannot tell. */
         uint32_t mp = 0, me = 0;
         for (int j = 0; j < 3; j++) {
             mp |= fx_uabs32(p[0][j]) | fx_uabs32(p[1][j]) | fx_uabs32(p[2][j]);
             me |= fx_uabs32(p[1][j] - p[0][j]) | fx_uabs32(p[2][j] - p[1][j]) | fx_uabs32(p[0][j] - p[2][j]);
         }
-        int sp = bvh_shift14(mp), se = bvh_shift14(me);
-        int32_t dq0 = r->d[0] >> 15, dq1 = r->d[1] >> 15, dq2 = r->d[2] >> 15;
-        for (int k = 0; k < 3; k++) {
-            int sg = bvh_edge_filter(p, k, sp, se, dq0, dq1, dq2);
-            if (sg == 0) {
-                bool swap = bvh_edge_cross(p, vi, k, x);
-                sg = bvh_dot_sign(r->d, x);
-                sg = swap ? -sg : sg;
-            }
-            pos |= sg > 0;
-            neg |= sg < 0;
-            if (pos && neg)
-                return false;
-        }
-    } else {
+        sp = bvh_shift14(mp);
+        se = bvh_shift14(me);
+        dq0 = r->d[0] >> 15;
+        dq1 = r->d[1] >> 15;
+        dq2 = r->d[2] >> 15;
+    }
 #pragma GCC unroll 3
-        for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < 3; k++) {
+        int sg = FX_HAVE_UMULL ? 0 : bvh_edge_filter(p, k, sp, se, dq0, dq1, dq2);
+        if (sg == 0) {
             bool swap = bvh_edge_cross(p, vi, k, x);
-            int sg = bvh_dot_sign(r->d, x);
+            sg = bvh_dot_sign(r->d, x);
             sg = swap ? -sg : sg;
-            pos |= sg > 0;
-            neg |= sg < 0;
-            if (pos && neg)
-                return false;
         }
+        pos |= sg > 0;
+        neg |= sg < 0;
+        if (pos && neg)
+            return false;
     }
     /* the plane: n = (b - a) x (c - a) in mesh units (exact, below 2^34);
      * E(b, c) + E(c, a) + E(a, b) = d . n 2^2f exactly */
