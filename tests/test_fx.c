@@ -40,7 +40,7 @@ static const fx_t hard[] = {
 
 static double max_err_ratio; /* fxw_ratio_mul, as a fraction of its bound */
 static double max_err_mul, max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv, max_err_cot,
-    max_err_norm, max_err_norm_len, max_err_dot, max_err_cross,
+    max_err_norm, max_err_norm_len, max_err_inv3_mul, max_err_dot, max_err_cross,
     max_err_sin, max_err_cos, max_err_rsqrt, max_err_recip;
 
 /* Saturate an exact value (in LSB) to the fx_t range. */
@@ -291,6 +291,31 @@ static void check_norm(fx_t x, fx_t y, fx_t z)
     long double el = fabsl((long double)l - want), bound = NORM_LEN_REL * len + 0.5L;
     track(&max_err_norm_len, el / bound);
     CHECK_SWEEP(el <= bound, "fx_normalize3_len(%d,%d,%d) length %d, exact %.3Lf", x, y, z, l, len);
+    /* Its two stages: fx_inv3 gives the same length, fx_inv3_unit the same
+     * unit vector; fx_inv3_mul, H / |v| for a wide H of any size and sign
+     * (the light sum's n . l on a plane), within 0.5 LSB + 2^-23 relative
+     * of the exact quotient, saturated. */
+    fx_inv3_t q;
+    fx_t w[3] = {x, y, z}, u3[3] = {0, 0, 0}, l3 = -1;
+    bool ok3 = fx_inv3(w, &q, &l3);
+    if (ok3)
+        fx_inv3_unit(&q, w, u3);
+    CHECK_SWEEP(ok3 && l3 == l && u3[0] == v[0] && u3[1] == v[1] && u3[2] == v[2], "fx_inv3(%d,%d,%d)", x, y, z);
+    int64_t H = (int64_t)(rng() >> 8 >> (rng() % 56)) * ((rng() & 1) ? 1 : -1); /* |H| < 2^56 */
+    fx_mant_t hm = fx_mant64(H);
+    long double hv = ldexpl((long double)fx_mant_m(hm), fx_mant_e(hm)), am = fabsl((long double)fx_mant_m(hm));
+    CHECK_SWEEP(H == 0 ? fx_mant_m(hm) == 0
+                       : (am >= 0x1p24L && am < 0x1p25L && (fx_mant_m(hm) < 0) == (H < 0) &&
+                          fabsl(hv - (long double)H) <= fabsl((long double)H) * 0x1p-24L),
+                "fx_mant64(%lld) = %d 2^%d", (long long)H, fx_mant_m(hm), fx_mant_e(hm));
+    if (ok3) {
+        long double exact = (long double)H / len, lim = (long double)FX_MAX;
+        long double want_q = exact > lim ? lim : exact < -lim ? -lim : exact;
+        fx_t got = fx_inv3_mul(&q, hm);
+        long double eq = fabsl((long double)got - want_q), bq = 0.5L + 0x1p-23L * fabsl(want_q);
+        track(&max_err_inv3_mul, eq / bq);
+        CHECK_SWEEP(eq <= bq, "fx_inv3_mul(%d,%d,%d; H %lld) = %d, exact %.3Lf", x, y, z, (long long)H, got, exact);
+    }
 }
 
 /* Random vector components inside the renderer's domain (|c| <= 2 *
@@ -776,6 +801,7 @@ int main(int argc, char **argv)
            max_err_rsqrt, max_err_recip);
     printf("  fx_normalize3_len: length error %.3f of its bound (2^-24 relative + 0.5 LSB)\n", max_err_norm_len);
     printf("  fxw_ratio_mul: %.3f of its bound (0.5 LSB + 2^-29 relative)\n", max_err_ratio);
+    printf("  fx_inv3_mul: %.3f of its bound (0.5 LSB + 2^-23 relative)\n", max_err_inv3_mul);
     /* Machine-readable worst errors for make bench-fx (firmware/benchfx.sh). */
     printf("ERR fx_mul %.3f\nERR fx_div %.3f\nERR fx_recip %.3f\nERR fx_sqrt %.3f\nERR fxw_sqrt %.3f\n", max_err_mul,
            max_err_div, max_err_recip, max_err_sqrt, max_err_wsqrt);
@@ -797,6 +823,7 @@ int main(int argc, char **argv)
     CHECK(max_err_ratio <= 1.0);
     CHECK(max_err_norm <= NORM_BOUND);
     CHECK(max_err_norm_len <= 1.0);
+    CHECK(max_err_inv3_mul <= 1.0);
     CHECK(max_err_dot <= 0.5);
     CHECK(max_err_cross <= 0.5);
     CHECK(max_err_cot <= 1.0);

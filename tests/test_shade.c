@@ -373,6 +373,68 @@ static void spot_unit(double u[3])
     for (int i = 0; i < 3; i++)
         u[i] /= n;
 }
+
+/* Lambert planes, whose light sum takes n . l from the light's height over
+ * the plane (light/shade.c, shade_lights_plane): random planes (every
+ * normal, through points near the origin), seen from either side, lit by
+ * point and spot lights on either side, with shadows on or off, a sphere
+ * casting them, random colours and ambient; each frame against the
+ * reference. The eye looks at the plane within 60 degrees of its normal,
+ * so the plane fills the view. */
+static void test_lambert_planes(void)
+{
+    long bad_frames = 0;
+    int sides[2] = {0, 0}, kinds[2] = {0, 0};
+    for (int view = 0; view < 24; view++) {
+        scene_t m;
+        memset(&m, 0, sizeof m);
+        double n[3], e[3], c[3], l[3];
+        spot_unit(n);
+        do
+            spot_unit(e);
+        while (fabs(e[0] * n[0] + e[1] * n[1] + e[2] * n[2]) < 0.5);
+        double dist = 4 + 2 * spot_rand(), off = spot_rand() - 0.5;
+        set3(m.eye, e[0] * dist, e[1] * dist, e[2] * dist);
+        set3(m.gaze, -m.eye[0], -m.eye[1], -m.eye[2]);
+        set3(m.up, fabs(e[1]) > 0.9 ? 1 : 0, fabs(e[1]) > 0.9 ? 0 : 1, 0);
+        m.fov = 40;
+        set3(m.ambient, 0.3 * spot_rand(), 0.3 * spot_rand(), 0.3 * spot_rand());
+        m.obj[0] = (obj_t){GEOM_PLANE, {{n[0] * off, n[1] * off, n[2] * off}, {n[0], n[1], n[2]}}, 0,
+                           {0.05 + 0.95 * spot_rand(), 0.05 + 0.95 * spot_rand(), 0.05 + 0.95 * spot_rand()},
+                           MATERIAL_LAMBERT, {0, 0, 0}, 0, {0, 0, 0}, 0};
+        spot_unit(c);
+        double rs = 0.2 + 0.3 * spot_rand(), cs = spot_rand();
+        m.obj[1] = (obj_t){GEOM_SPHERE, {{c[0] * cs, c[1] * cs, c[2] * cs}}, rs,
+                           {spot_rand(), spot_rand(), spot_rand()}, view % 3 ? MATERIAL_LAMBERT : MATERIAL_FLAT,
+                           {0, 0, 0}, 0, {0, 0, 0}, 0};
+        m.n_obj = 2;
+        spot_unit(l);
+        double ld = 1.5 + 3.5 * spot_rand();
+        bool spot = view % 4 == 3;
+        m.light[0] = (lgt_t){spot ? LIGHT_SPOT : LIGHT_POINT, {l[0] * ld, l[1] * ld, l[2] * ld},
+                             {-l[0], -l[1], -l[2]}, spot ? 30 + 40 * spot_rand() : 0,
+                             {0.3 + 0.7 * spot_rand(), 0.3 + 0.7 * spot_rand(), 0.3 + 0.7 * spot_rand()}, view % 5 != 4};
+        m.n_lights = 1;
+        /* the eye's side and the light's side of the plane, for the count */
+        double he = 0, hl = 0;
+        for (int i = 0; i < 3; i++) {
+            he += n[i] * (m.eye[i] - n[i] * off);
+            hl += n[i] * (m.light[0].pos[i] - n[i] * off);
+        }
+        sides[he > 0]++;
+        kinds[(he > 0) == (hl > 0)]++;
+        long before = check_failed_count;
+        char name[80];
+        snprintf(name, sizeof name, "lambert plane %d (%s light, %s side)", view, spot ? "spot" : "point",
+                 (he > 0) == (hl > 0) ? "lit" : "dark");
+        check_frame(name, &m);
+        bad_frames += check_failed_count != before;
+    }
+    CHECK_MSG(bad_frames == 0, "%ld of 24 lambert planes off the reference", bad_frames);
+    CHECK_MSG(sides[0] > 2 && sides[1] > 2 && kinds[0] > 2 && kinds[1] > 2,
+              "the planes are seen from both sides (%d, %d) and lit from both (%d, %d)", sides[0], sides[1], kinds[0],
+              kinds[1]);
+}
 #if FXRT_NUMBER == FXRT_Q16
 /* shade_spot_surely_out, the light loop's cheap early test for a spot's
  * cone, against the cone test it stands in front of: (-v) . s >= cos |v|
@@ -1200,6 +1262,7 @@ int main(void)
     s.n_lights = 4;
     set3(s.ambient, 0.05, 0.1, 0.15);
     check_frame("coloured lights", &s);
+    test_lambert_planes();
 
 #if FXRT_SMOOTH
     test_smooth();

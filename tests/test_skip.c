@@ -479,6 +479,40 @@ static void test_samples(void)
     }
 }
 
+/* A lambert plane takes n . l from the light's height over it
+ * (light/shade.c, shade_lights_plane): under a point light it makes the
+ * unit vector l only for its shadow rays, where a phong plane makes one
+ * at every pixel. Every pixel still takes the light vector's length. A
+ * flat sphere above casts the shadow; without keys its pixels are not
+ * shaded, so every count below is the plane's. */
+static void test_plane_heights(void)
+{
+    cam_t cam;
+    camera(&cam);
+    for (int phong = 0; phong < 2; phong++) {
+        fxrt_world_init(&world, COL(0.1, 0.1, 0.1));
+        world_set_ambient(&world, FRAC(0.3, 0.2, 0.1));
+        int32_t pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.5, 0.6, 0.7));
+        lit(pid, phong ? MATERIAL_PHONG : MATERIAL_LAMBERT, 16);
+        CHECK(world_add_sphere(&world, P(0.3, 1.0, 0.2), V(0.5), COL(0.9, 0.2, 0.1)) >= 0);
+        CHECK(world_add_light(&world, LIGHT_POINT, P(1, 4, 1.5), P(0, 0, 0), V(0), FRAC(1, 0.9, 0.8), true) == 0);
+        render(&cam, true);
+        long plane = count_id((uint16_t)pid);
+        CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
+        render(&cam, false);
+        uint32_t rays = fxrt_stats.shadow_rays;
+        CHECK_MSG(fxrt_stats.l_normalised == (uint32_t)plane, "%s plane: %u light vectors for %ld pixels",
+                  phong ? "phong" : "lambert", (unsigned)fxrt_stats.l_normalised, plane);
+        CHECK_MSG(rays > 0 && rays < (uint32_t)plane / 2, "%u shadow rays for %ld plane pixels", (unsigned)rays, plane);
+        if (phong)
+            CHECK_MSG(fxrt_stats.l_units == (uint32_t)plane, "phong plane: %u unit vectors l for %ld pixels",
+                      (unsigned)fxrt_stats.l_units, plane);
+        else
+            CHECK_MSG(fxrt_stats.l_units == rays, "lambert plane: %u unit vectors l for %u shadow rays",
+                      (unsigned)fxrt_stats.l_units, (unsigned)rays);
+    }
+}
+
 int main(void)
 {
     test_bounds();
@@ -487,6 +521,7 @@ int main(void)
     test_behind();
     test_shadow_cull();
     test_normalisations();
+    test_plane_heights();
     test_pow();
     test_spot();
     test_flat();

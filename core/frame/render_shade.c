@@ -14,7 +14,8 @@ void render_shade_setup(render_t *r, const world_t *w)
     render_shade_t *sh = &r->shade;
     sh->any_lit = w->n_lit > 0;
     sh->flat_of = RENDER_VIS_NONE;
-    SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull.cull); shadow_rows_clear(&sh->cull);)
+    SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull.cull), shade_plane_heights(w, &sh->cull);
+                  shadow_rows_clear(&sh->cull);)
     for (uint16_t i = 0; sh->any_lit && i < r->vis.count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->vis.obj[i].geom, r->vis.obj[i].index);
         if (c->mat.kind != MATERIAL_FLAT) {

@@ -135,7 +135,7 @@ __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_com
 {
     shade_k_t own;
     shade_consts(w, obj, &own);
-    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, &own, mask);
+    return shade_lights_of(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, &own, mask);
 }
 
 #if FXRT_PHONG
@@ -155,6 +155,107 @@ static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const
     return c;
 }
 #endif
+
+/* Where light L comes from, seen from p (shade_lights and
+ * shade_lights_plane). SHADE_DARK: it does not reach p (it is at p, or p
+ * lies outside a spot's cone). SHADE_DIR: *l is the unit direction to
+ * the light and *dist the distance (NUM_MAX for a directional light).
+ * SHADE_INV, only where iv is not NULL (a Lambert plane): *l is not made;
+ * iv holds 1 / |v| for v = L - p, va holds v, and *dist = |v|
+ * (shade_light_unit makes l from them). Inlined: with iv NULL, what
+ * shade_lights always did. */
+enum { SHADE_DARK, SHADE_DIR, SHADE_INV };
+static inline __attribute__((always_inline)) int shade_light_dir(const light_t *L, vec3_t p, vec3_t *l, num_t *dist,
+                                                                 num_inv3_t *iv, num_t va[3])
+{
+    *dist = NUM_MAX;
+    if (L->kind == LIGHT_DIRECTIONAL) {
+        *l = L->dir; /* normalised once, in world_add_light */
+        va[0] = va[1] = va[2] = NUM_ZERO; /* (unused) */
+        return SHADE_DIR;
+    }
+    vec3_t v = vec3_sub(L->position, p);
+    va[0] = v.x, va[1] = v.y, va[2] = v.z;
+    /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
+     * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
+#if FXRT_NUMBER == FXRT_Q16
+    /* One inverse square root gives l and |v| (fx_normalize3_len), or
+     * 1 / |v| and |v| (fx_inv3); a point clearly outside a spot's cone
+     * needs neither. Where the core has UMULL (M3, M4F) the early test's
+     * products cost less than the normalisation: -5 % on the spot scenes;
+     * the M0 pays +5 % for them, so it goes straight to the full test. */
+    if (FX_HAVE_UMULL && L->kind == LIGHT_SPOT && shade_spot_surely_out(L, v))
+        return SHADE_DARK; /* outside the cone */
+    FXRT_COUNT(l_normalised);
+    if (iv ? !num_inv3(va, iv, dist) : !num_normalize3_len(va, dist))
+        return SHADE_DARK; /* the light is at p: no direction, no light */
+    if (__builtin_expect(*dist >= SHADE_FAR_DIST, 0)) {
+        *l = shade_light_far(L, p);
+        if (l->x == NUM_ZERO && l->y == NUM_ZERO && l->z == NUM_ZERO)
+            return SHADE_DARK; /* outside the cone */
+        *dist = SHADE_FAR_DIST;
+        FXRT_COUNT(l_units);
+        return SHADE_DIR;
+    }
+    if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, *dist))
+        return SHADE_DARK; /* outside the cone */
+    if (iv)
+        return SHADE_INV;
+    FXRT_COUNT(l_units);
+    *l = vec3_make(va[0], va[1], va[2]);
+#else
+    /* |v| first: a point outside a spot's cone costs no division. */
+    *dist = vec3_len(v);
+    if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, *dist))
+        return SHADE_DARK; /* outside the cone */
+    FXRT_COUNT(l_normalised);
+    if (*dist == NUM_ZERO)
+        return SHADE_DARK; /* the light is at p: no direction, no light */
+    num_t inv = num_div(NUM_ONE, *dist); /* vec3_normalize's value, without its second root */
+    if (iv) {
+        iv->inv = inv;
+        return SHADE_INV;
+    }
+    FXRT_COUNT(l_units);
+    *l = vec3_scale(v, inv);
+#endif
+    return SHADE_DIR;
+}
+
+/* Is light i (L) blocked from p by an object (shadow_blocked), where the
+ * frame's tables do not already say it is not? For SHADE_INV (iv not
+ * NULL) the unit direction l is made here first, for the shadow ray. */
+static inline __attribute__((always_inline)) bool shade_shadowed(const world_t *w, geom_kind_t kind,
+                                                                 uint16_t index GEOM_PART_PARAM,
+                                                                 const geom_common_t *obj, bool inside,
+                                                                 const vec3_t *p, const light_t *L, uint8_t i,
+                                                                 vec3_t *l, num_t dist, const shade_k_t *k,
+                                                                 const num_inv3_t *iv, num_t va[3])
+{
+#if FXRT_SHADOWS
+#if SHADOW_CULL
+    const shadow_cull_t *cull = k && k->cull ? k->cull->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
+    /* A plane's pixel: its row's mask (shade.h, shadow rows). */
+    uint32_t skip = SHADOW_ROWS && kind == GEOM_PLANE && cull ? k->cull->rows[(size_t)index * FXRT_MAX_LIGHTS + i] : 0;
+#else
+    const shadow_cull_row_t *cull = NULL;
+    uint32_t skip = 0;
+    (void)k, (void)i;
+#endif
+    if (!L->shadows || (skip & SHADOW_ROW_CLEAR && (dist < SHADE_FAR_DIST || L->kind == LIGHT_DIRECTIONAL)))
+        return false;
+    if (iv) {
+        FXRT_COUNT(l_units);
+        num_inv3_unit(iv, va, va);
+        *l = vec3_make(va[0], va[1], va[2]);
+    }
+    return shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, p, L, l, dist, cull, skip);
+#else
+    (void)w, (void)kind, (void)index, (void)obj, (void)inside, (void)p, (void)L, (void)i, (void)l, (void)dist,
+        (void)k, (void)iv, (void)va;
+    return false;
+#endif
+}
 
 /* The light loop of shade_sum (k not NULL when the material is lit and
  * not transparent). */
@@ -192,62 +293,18 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     for (uint8_t i = 0; i < w->n_lights; i++) {
         const light_t *L = &w->lights[i];
         vec3_t l;
-        num_t dist = NUM_MAX;
-        if (L->kind == LIGHT_DIRECTIONAL) {
-            l = L->dir; /* normalised once, in world_add_light */
-        } else {
-            /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
-             * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
-#if FXRT_NUMBER == FXRT_Q16
-            /* One inverse square root gives l and |v| (fx_normalize3_len);
-             * a point clearly outside a spot's cone needs neither. Where
-             * the core has UMULL (M3, M4F) the early test's products cost
-             * less than the normalisation: -5 % on the spot scenes; the M0
-             * pays +5 % for them, so it goes straight to the full test. */
-            vec3_t v = vec3_sub(L->position, p);
-            if (FX_HAVE_UMULL && L->kind == LIGHT_SPOT && shade_spot_surely_out(L, v))
-                continue; /* outside the cone */
-            FXRT_COUNT(l_normalised);
-            if (!vec3_unit_len(v, &l, &dist))
-                continue; /* the light is at p: no direction, no light */
-            if (__builtin_expect(dist >= SHADE_FAR_DIST, 0)) {
-                l = shade_light_far(L, p);
-                if (l.x == NUM_ZERO && l.y == NUM_ZERO && l.z == NUM_ZERO)
-                    continue; /* outside the cone */
-                dist = SHADE_FAR_DIST;
-            } else if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist)) {
-                continue; /* outside the cone */
-            }
-#else
-            vec3_t v = vec3_sub(L->position, p);
-            /* |v| first: a point outside a spot's cone costs no division. */
-            dist = vec3_len(v);
-            if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, dist))
-                continue; /* outside the cone */
-            FXRT_COUNT(l_normalised);
-            if (dist == NUM_ZERO)
-                continue; /* the light is at p: no direction, no light */
-            l = vec3_scale(v, num_div(NUM_ONE, dist)); /* vec3_normalize's value, without its second root */
-#endif
-        }
+        num_t dist, va[3];
+        if (shade_light_dir(L, p, &l, &dist, NULL, va) == SHADE_DARK)
+            continue;
         numw_t ndlw = vec3_dotw_units(n, l);
         if (ndlw <= 0)
             continue; /* behind the surface: no shadow ray either */
-#if FXRT_SHADOWS
-        FXRT_IF_SMOOTH(if (smooth && L->shadows && vec3_dotw_units(n_face, l) <= 0) continue;) /* the terminator */
-        FXRT_IF_MODEL(if (msmooth && L->shadows && vec3_dotw_units(n_wind, l) <= 0) continue;)
-#if SHADOW_CULL
-        const shadow_cull_t *cull = k && k->cull ? k->cull->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
-        /* A plane's pixel: its row's mask (shade.h, shadow rows). */
-        uint32_t skip = SHADOW_ROWS && kind == GEOM_PLANE && cull ? k->cull->rows[(size_t)index * FXRT_MAX_LIGHTS + i] : 0;
-#else
-        const shadow_cull_row_t *cull = NULL;
-        uint32_t skip = 0;
-#endif
-        if (L->shadows && !(skip & SHADOW_ROW_CLEAR && (dist < SHADE_FAR_DIST || L->kind == LIGHT_DIRECTIONAL)) &&
-            shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, &p, L, &l, dist, cull, skip))
+        if (FXRT_SHADOWS) {
+            FXRT_IF_SMOOTH(if (smooth && L->shadows && vec3_dotw_units(n_face, l) <= 0) continue;) /* the terminator */
+            FXRT_IF_MODEL(if (msmooth && L->shadows && vec3_dotw_units(n_wind, l) <= 0) continue;)
+        }
+        if (shade_shadowed(w, kind, index GEOM_PART_ARG(part), obj, inside, &p, L, i, &l, dist, k, NULL, va))
             continue;
-#endif
         bits = (uint8_t)(bits | (1u << i));
         if (!lit || clear)
             continue;
@@ -257,6 +314,78 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
         if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE)
             c = shade_specular(c, &n, &l, &d, ndl, &k->ks[i], m->exponent);
 #endif
+    }
+    if (mask)
+        *mask = bits;
+    return c;
+}
+
+/* h = n . (L - a) for plane `index` (point a, unit normal n) and point or
+ * spot light L, as numw_mant: in Q16.16 exact (each dot product lies
+ * below 2^50, no saturation), in float and double as written. On any
+ * point p of the plane n . (L - p) = h, so the light sum's n . l there is
+ * h / |L - p| (shade_lights_plane). */
+numw_mant_t shade_plane_height(const world_t *w, uint16_t index, const light_t *L)
+{
+    numw_t h = 0;
+    FXRT_IF_PLANE(const geom_plane_t *pl = &w->planes[index];
+                  h = NUM_EXACT ? numw_sub_exact(vec3_dotw_unit(L->position, pl->n), vec3_dotw_unit(pl->a, pl->n))
+                                : vec3_dotw_unit(vec3_sub(L->position, pl->a), pl->n);)
+    (void)w, (void)index, (void)L;
+    return numw_mant(h);
+}
+
+void shade_plane_heights(const world_t *w, shadow_table_t *t)
+{
+    FXRT_IF_PLANE(for (uint16_t j = 0; SHADE_HEIGHTS && j < w->n_planes; j++) for (uint8_t i = 0; i < w->n_lights; i++)
+                      t->h[(size_t)j * FXRT_MAX_LIGHTS + i] = shade_plane_height(w, j, &w->lights[i]);)
+    (void)w, (void)t;
+}
+
+/* shade_lights for a Lambert plane (k not NULL; shade_sum's choice,
+ * shade_sum.h). Lambert's term needs only n . l, and for a point or spot
+ * light that is h / |v|, v = L - p, with h = n . (L - a) the same at
+ * every point of the plane (shade_plane_height; once per frame in the
+ * frame's tables, where it has them): one inverse square root and one
+ * product (fx_inv3, fx_inv3_mul) instead of the unit vector l and a dot
+ * product; l is made only for a shadow ray. */
+color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *pp,
+                           const vec3_t *n_geo_p, int8_t facing, const vec3_t *dp, const shade_k_t *k, uint8_t *mask)
+{
+    if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
+        return k->ambient;
+    vec3_t p = *pp, n_geo = *n_geo_p;
+    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, n_geo) > 0 : facing != 0;
+    int side = inside ? -1 : 1;
+    const numw_mant_t *hk = NULL;
+    SHADE_IF_CULL(if (k->cull && SHADE_HEIGHTS) hk = k->cull->h + (size_t)index * FXRT_MAX_LIGHTS;)
+    color_t c = k->ambient;
+    uint8_t bits = 0;
+    for (uint8_t i = 0; i < w->n_lights; i++) {
+        const light_t *L = &w->lights[i];
+        vec3_t l;
+        num_t dist, va[3], ndl;
+        num_inv3_t iv;
+        int how = shade_light_dir(L, p, &l, &dist, &iv, va);
+        if (how == SHADE_DARK)
+            continue;
+        if (how == SHADE_INV) {
+            numw_mant_t h = hk ? hk[i] : shade_plane_height(w, index, L);
+            if (numw_mant_sign(h) != side)
+                continue; /* behind the surface: no shadow ray either */
+            ndl = num_inv3_mul(&iv, h); /* |n . l| <= 1 + 1 LSB */
+            ndl = inside ? num_neg_fits(ndl) : ndl;
+        } else {
+            numw_t ndlw = vec3_dotw_units(inside ? vec3_neg_unit(n_geo) : n_geo, l);
+            if (ndlw <= 0)
+                continue;
+            ndl = numw_round_fits(ndlw);
+        }
+        if (shade_shadowed(w, GEOM_PLANE, index GEOM_PART_ARG(NULL), obj, inside, &p, L, i, &l, dist, k,
+                           how == SHADE_INV ? &iv : NULL, va))
+            continue;
+        bits = (uint8_t)(bits | (1u << i));
+        c = shade_madd(c, k->kd[i], ndl);
     }
     if (mask)
         *mask = bits;

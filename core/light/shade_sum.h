@@ -10,6 +10,21 @@
 color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
                      const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k,
                      uint8_t *mask);
+/* The light loop of a Lambert plane (light/shade.c): n . l from the
+ * plane's height over it. */
+color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *p,
+                           const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
+/* shade_lights, or shade_lights_plane for a Lambert plane (k not NULL). */
+static inline __attribute__((always_inline)) color_t shade_lights_of(const world_t *w, const geom_common_t *obj,
+                                                                     geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
+                                                                     const vec3_t *p, const vec3_t *n_geo,
+                                                                     int8_t facing, const vec3_t *d,
+                                                                     const shade_k_t *k, uint8_t *mask)
+{
+    if (kind == GEOM_PLANE && obj->mat.kind == MATERIAL_LAMBERT && k)
+        return shade_lights_plane(w, obj, index, p, n_geo, facing, d, k, mask);
+    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
+}
 /* shade_sum without per-frame constants (the ray caster, arbitrary rays):
  * they are computed on its own frame. It calls shade_lights, not
  * shade_sum: no cycle in the call graph (tests/norecurse.sh). */
@@ -36,7 +51,7 @@ static inline __attribute__((always_inline)) color_t shade_sum_inline(const worl
         return clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : obj->color;
     if (lit && !clear && !k)
         return shade_sum_own(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, mask); /* computes k on its own frame */
-    return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
+    return shade_lights_of(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
 }
 #if FX_HAVE_UMULL
 static inline __attribute__((always_inline)) color_t shade_sum(const world_t *w, const geom_common_t *obj,

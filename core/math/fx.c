@@ -487,9 +487,11 @@ bool fx_unit30(const fx_t v[3], int32_t out[3])
     return true;
 }
 
-/* fx_normalize3 (len NULL) and fx_normalize3_len: inlined into each, so
- * the length's code is only in the second. */
-static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], fx_t *len)
+/* fx_normalize3_len in two stages (fx_inv3_t, fx.h): fx_inv3_len, the
+ * inverse length (and the length when len is not NULL); fx_inv3_dir, the
+ * unit vector from it. fx_normalize3 and fx_normalize3_len inline both,
+ * so their code is what it was in one piece. */
+static inline __attribute__((always_inline)) bool fx_inv3_len(const fx_t v[3], fx_inv3_t *q, fx_t *len)
 {
     /* Straight-line code, constant 64-bit shifts only (a variable one is
      * a dozen instructions on the M3 and more on the M0). */
@@ -515,43 +517,81 @@ static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], 
     /* The top 32 bits of len2 with an even shift: len2 ~ top 2^(32 - e)
      * with top in [2^30, 2^32), so |s| ~ sqrt(top) 2^k with k = 16 - e/2,
      * 1 / |s| ~ Y 2^-46 / 2^k, and each component in Q16.16 is
-     * s Y / 2^(30 + k), rounded once. Dropping len2's low bits costs at
-     * most 2^-30 relative. len2 >> 32 lies in [2^26, 3 * 2^28): e is 2
-     * (k = 15) or 4 (k = 14). The rounding bit 2^(29 + k) lies in the
-     * product's high word, so the rounded quotient is
-     * (high word + 2^(k - 3)) >> (k - 2): the low word cannot carry into
-     * it. */
+     * s Y / 2^(30 + k), rounded once (fx_inv3_dir). Dropping len2's low
+     * bits costs at most 2^-30 relative. len2 >> 32 lies in
+     * [2^26, 3 * 2^28): e is 2 (k = 15) or 4 (k = 14). */
     bool big = (uint32_t)(len2 >> 32) >= ((uint32_t)1 << 28);
     uint32_t top = big ? (uint32_t)(len2 >> 30) : (uint32_t)(len2 >> 28);
     uint32_t Y = fx_rsqrt_q46(top);
-    int sh = big ? 13 : 12;
-    uint32_t half = (uint32_t)1 << (sh - 1);
-    fx_t c0 = (fx_t)(((uint32_t)(fx_umul32(s0, Y) >> 32) + half) >> sh);
-    fx_t c1 = (fx_t)(((uint32_t)(fx_umul32(s1, Y) >> 32) + half) >> sh);
-    fx_t c2 = (fx_t)(((uint32_t)(fx_umul32(s2, Y) >> 32) + half) >> sh);
+    q->s[0] = s0, q->s[1] = s1, q->s[2] = s2;
+    q->Y = Y;
+    q->shift = (int8_t)shift;
+    q->big = big;
     if (len) {
         /* |v| = |s| 2^-shift = sqrt(top) 2^(k - shift) = top Y 2^(k - 46 - shift),
          * a shift by 31 + shift (k = 15) or 32 + shift (k = 14), which lies
          * in [29, 61]; rounded once, saturated like fxw_sqrt. */
-        int q = (big ? 31 : 32) + shift;
+        int sq = (big ? 31 : 32) + shift;
         uint64_t prod = fx_umul32(top, Y); /* < 2^63 */
-        if (q >= 33) {
-            /* The usual case (v below 2^29 LSB): the rounding bit 2^(q-1)
+        if (sq >= 33) {
+            /* The usual case (v below 2^29 LSB): the rounding bit 2^(sq-1)
              * lies in the high word, so the low word cannot carry into
-             * the rounded quotient (as for c0..c2 above), and the
-             * quotient, below 2^31 / 2, fits: 32-bit operations only,
+             * the rounded quotient (as for fx_inv3_dir's components), and
+             * the quotient, below 2^31 / 2, fits: 32-bit operations only,
              * without the 64-bit variable shift. The same value. */
             uint32_t hi = (uint32_t)(prod >> 32);
-            *len = (fx_t)((hi + ((uint32_t)1 << (q - 33))) >> (q - 32));
+            *len = (fx_t)((hi + ((uint32_t)1 << (sq - 33))) >> (sq - 32));
         } else {
-            uint64_t r = (prod + ((uint64_t)1 << (q - 1))) >> q;
+            uint64_t r = (prod + ((uint64_t)1 << (sq - 1))) >> sq;
             *len = r > (uint64_t)FX_MAX ? FX_MAX : (fx_t)r;
         }
     }
-    v[0] = v[0] < 0 ? -c0 : c0;
-    v[1] = v[1] < 0 ? -c1 : c1;
-    v[2] = v[2] < 0 ? -c2 : c2;
     return true;
+}
+
+/* The rounding bit 2^(29 + k) of s Y / 2^(30 + k) lies in the product's
+ * high word, so the rounded quotient is (high word + 2^(k - 3)) >> (k - 2):
+ * the low word cannot carry into it. */
+static inline __attribute__((always_inline)) void fx_inv3_dir(const fx_inv3_t *q, const fx_t v[3], fx_t u[3])
+{
+    int sh = q->big ? 13 : 12;
+    uint32_t half = (uint32_t)1 << (sh - 1);
+    fx_t c0 = (fx_t)(((uint32_t)(fx_umul32(q->s[0], q->Y) >> 32) + half) >> sh);
+    fx_t c1 = (fx_t)(((uint32_t)(fx_umul32(q->s[1], q->Y) >> 32) + half) >> sh);
+    fx_t c2 = (fx_t)(((uint32_t)(fx_umul32(q->s[2], q->Y) >> 32) + half) >> sh);
+    u[0] = v[0] < 0 ? -c0 : c0;
+    u[1] = v[1] < 0 ? -c1 : c1;
+    u[2] = v[2] < 0 ? -c2 : c2;
+}
+
+static inline __attribute__((always_inline)) bool fx_normalize3_impl(fx_t v[3], fx_t *len)
+{
+    fx_inv3_t q;
+    if (!fx_inv3_len(v, &q, len))
+        return false;
+    fx_inv3_dir(&q, v, v);
+    return true;
+}
+
+bool fx_inv3(const fx_t v[3], fx_inv3_t *q, fx_t *len)
+{
+    return fx_inv3_len(v, q, len);
+}
+
+void fx_inv3_unit(const fx_inv3_t *q, const fx_t v[3], fx_t u[3])
+{
+    fx_inv3_dir(q, v, u);
+}
+
+fx_mant_t fx_mant64(int64_t h)
+{
+    if (h == 0)
+        return 32; /* m = 0 (e = 0) */
+    uint64_t u = fx_uabs64(h);
+    int b = 64 - fx_clz64(u); /* 1 .. 56 */
+    uint32_t m = b > 25 ? (uint32_t)(u >> (b - 25)) : (uint32_t)u << (25 - b); /* [2^24, 2^25) */
+    int32_t sm = h < 0 ? -(int32_t)m : (int32_t)m;
+    return (fx_mant_t)((uint32_t)sm * 64u + (uint32_t)(b - 25 + 32));
 }
 
 bool fx_normalize3(fx_t v[3])

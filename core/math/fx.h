@@ -544,4 +544,56 @@ bool fx_normalize3(fx_t v[3]);
  * zero. */
 bool fx_normalize3_len(fx_t v[3], fx_t *len) __attribute__((nonnull));
 
+/* fx_normalize3_len in two stages, for a caller that may not need the
+ * unit vector: fx_inv3 keeps v's inverse length (and gives *len when len
+ * is not NULL, fx_normalize3_len's value); fx_inv3_unit then gives
+ * fx_normalize3's unit vector into u, and fx_inv3_mul a quotient
+ * H / |v| in Q16.16 for a wide H (fx_mant64), without the unit vector:
+ * shading's n . l = n . (L - p) / |L - p| on a plane (light/shade.c).
+ * fx_inv3 returns false, q unset, for the zero vector. */
+typedef struct {
+    uint32_t s[3]; /* |v_i| 2^shift, the largest in [2^29, 2^30) */
+    uint32_t Y;    /* ~ 2^(61 or 60) / |s| (big or not) */
+    int8_t shift;
+    bool big;
+} fx_inv3_t;
+bool fx_inv3(const fx_t v[3], fx_inv3_t *q, fx_t *len);
+void fx_inv3_unit(const fx_inv3_t *q, const fx_t v[3], fx_t u[3]);
+/* A 64-bit integer H, |H| < 2^56, as m 2^e in 32 bits (4 bytes of RAM
+ * per plane and light where the frame keeps it): bits 31..6 the signed
+ * mantissa m, |m| in [2^24, 2^25) (truncated: within 2^-24 relative) or 0
+ * for H = 0, bits 5..0 e + 32. */
+typedef int32_t fx_mant_t;
+fx_mant_t fx_mant64(int64_t h);
+static inline int32_t fx_mant_m(fx_mant_t h) { return (h - (h & 63)) / 64; } /* (exact) */
+static inline int fx_mant_e(fx_mant_t h) { return (int)((uint32_t)h & 63u) - 32; }
+/* round(H / |v_raw|) for H = fx_mant_m(h) 2^fx_mant_e(h) and v_raw the raw
+ * integers of fx_inv3's vector, saturated: with H in Q32.32 units, the
+ * Q16.16 value of H / |v|, within 0.5 LSB + 2^-23 relative (m's 2^-24
+ * and Y's 2^-25). 1 / |v_raw| = 2^shift / |s| = Y 2^(shift - 46 - k),
+ * k = 15 (big) or 14 (fx.c, fx_inv3_len), so H / |v_raw| = |m| Y 2^-E
+ * with E = 46 + k - e - shift, and |m| Y < 2^25 2^31. Rounded once, half
+ * away from zero, like the unit vector's components: for E >= 33 the
+ * rounding bit lies in the high word, which the low word cannot carry
+ * into. Inline: one product. */
+static inline fx_t fx_inv3_mul(const fx_inv3_t *q, fx_mant_t h)
+{
+    int32_t hm = fx_mant_m(h);
+    uint32_t r, m = fx_uabs32(hm);
+    uint64_t p = fx_umul32(m, q->Y);
+    int E = (q->big ? 61 : 60) - fx_mant_e(h) - q->shift;
+    if (__builtin_expect(E >= 33 && E < 64, 1)) {
+        uint32_t hi = (uint32_t)(p >> 32);
+        r = (hi + ((uint32_t)1 << (E - 33))) >> (E - 32);
+    } else if (E >= 64) {
+        r = 0; /* p 2^-E < 2^-2 (and m = 0 gives 0) */
+    } else if (E >= 1) {
+        uint64_t r64 = (p + ((uint64_t)1 << (E - 1))) >> E;
+        r = r64 > (uint64_t)FX_MAX ? (uint32_t)FX_MAX : (uint32_t)r64;
+    } else {
+        r = m ? (uint32_t)FX_MAX : 0; /* at least 2^24 2^30: saturated */
+    }
+    return hm < 0 ? -(fx_t)r : (fx_t)r;
+}
+
 #endif

@@ -204,6 +204,16 @@ static inline uint32_t num_round_uint(num_t c) { return ((uint32_t)c + FX_HALF) 
  * (fx_normalize3_len: no second root). */
 static inline bool num_normalize3(num_t v[3]) { return fx_normalize3(v); }
 static inline bool num_normalize3_len(num_t v[3], num_t *len) { return fx_normalize3_len(v, len); }
+/* num_normalize3_len in two stages (fx_inv3_t): v's inverse length and
+ * |v| (num_inv3), then the unit vector (num_inv3_unit) or a quotient
+ * h / |v| for a wide h taken as numw_mant (num_inv3_mul). */
+typedef fx_inv3_t num_inv3_t;
+typedef fx_mant_t numw_mant_t;
+static inline bool num_inv3(const num_t v[3], num_inv3_t *q, num_t *len) { return fx_inv3(v, q, len); }
+static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[3]) { fx_inv3_unit(q, v, u); }
+static inline numw_mant_t numw_mant(numw_t h) { return fx_mant64(h); }
+static inline int numw_mant_sign(numw_mant_t h) { return (h > 63) - (h < 0); } /* (m's sign: fx_mant_t) */
+static inline num_t num_inv3_mul(const num_inv3_t *q, numw_mant_t h) { return fx_inv3_mul(q, h); }
 /* A direction from an exact wide vector c (Q32.32): its components
  * divided by 2^shift (numw_direction_part), shift from
  * numw_direction_shift, scaled to 30 significant bits, so that a long c
@@ -351,6 +361,21 @@ static inline bool num_normalize3(num_t v[3])
     num_t len;
     return num_normalize3_len(v, &len);
 }
+/* The two stages of num_normalize3_len (the Q16.16 build's num_inv3_t):
+ * the caller sets inv = 1 / |v| (light/shade.c). */
+typedef struct {
+    num_t inv;
+} num_inv3_t;
+typedef numw_t numw_mant_t;
+static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[3])
+{
+    u[0] = v[0] * q->inv;
+    u[1] = v[1] * q->inv;
+    u[2] = v[2] * q->inv;
+}
+static inline numw_mant_t numw_mant(numw_t h) { return h; }
+static inline int numw_mant_sign(numw_mant_t h) { return (h > 0) - (h < 0); }
+static inline num_t num_inv3_mul(const num_inv3_t *q, numw_mant_t h) { return h * q->inv; }
 static inline int numw_direction_shift(const numw_t c[3])
 {
     (void)c;

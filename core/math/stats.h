@@ -13,7 +13,8 @@
 typedef struct {
     uint32_t shaded;       /* shade_point calls */
     uint32_t shadow_rays;  /* shadow_blocked calls */
-    uint32_t l_normalised; /* per-pixel normalisations of a light vector */
+    uint32_t l_normalised; /* per-pixel normalisations of a light vector (its length taken) */
+    uint32_t l_units;      /* of those, unit vectors l made (a lambert plane's: only for a shadow ray) */
     uint32_t n_normalised; /* per-pixel normalisations of a surface normal */
     uint32_t phong;        /* Phong powers evaluated */
     uint32_t pow_products; /* products inside those powers */
