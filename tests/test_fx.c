@@ -318,6 +318,34 @@ static void check_norm(fx_t x, fx_t y, fx_t z)
     }
 }
 
+/* numw_sticky (a directional light's n . l on a plane, light/shade.c):
+ * for wide x of every size below 2^44 and either sign, many of them on or
+ * beside a tie of round half up, numw_sticky_round(s) and
+ * numw_sticky_round(-s) are x's and -x's rounding, computed here by
+ * floorl(x / 2^16 + 1/2), and s has x's sign. */
+static void check_sticky(long n)
+{
+    long bad = 0;
+    for (long i = 0; i < n; i++) {
+        int64_t x;
+        if (i % 3 == 0) /* a tie, or one LSB^2 beside it */
+            x = (int64_t)(rng() % ((uint64_t)1 << 28)) * 65536 + 32768 + (int64_t)(rng() % 3) - 1;
+        else if (i % 3 == 1)
+            x = (int64_t)(rng() >> (20 + rng() % 44)); /* log-uniform, below 2^44 */
+        else
+            x = (int64_t)(rng() % 70000); /* around one LSB */
+        x = rng() & 1 ? -x : x;
+        numw_sticky_t s = numw_sticky(x);
+        long double up = floorl((long double)x / 65536.0L + 0.5L), dn = floorl(-(long double)x / 65536.0L + 0.5L);
+        if (((long double)numw_sticky_round(s) != up || (long double)numw_sticky_round(-s) != dn ||
+             (s > 0) != (x > 0) || (s < 0) != (x < 0)) &&
+            bad++ < 5)
+            printf("numw_sticky(%lld) = %d: rounds to %d and %d, want %.0Lf and %.0Lf\n", (long long)x, s,
+                   numw_sticky_round(s), numw_sticky_round(-s), up, dn);
+    }
+    CHECK_MSG(bad == 0, "numw_sticky: %ld of %ld values round wrong on one side", bad, n);
+}
+
 /* Random vector components inside the renderer's domain (|c| <= 2 *
  * FXRT_COORD_LIMIT, so a dot of three products cannot leave Q32.32). */
 static fx_t rand_coord(void)
@@ -489,6 +517,7 @@ int main(int argc, char **argv)
         check_sincos(d);
 
     check_div_ties(n_random / 10 + 1000);
+    check_sticky(n_random / 10 + 1000);
     /* fx_udiv64_32: floor(n / d) for every n < d 2^32, against the
      * compiler's 64-bit division: the ends of the range, the walk's
      * reciprocals 2^53 / d (d above 2^22), and random divisors of every

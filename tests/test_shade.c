@@ -377,7 +377,7 @@ static void spot_unit(double u[3])
 /* Lambert planes, whose light sum takes n . l from the light's height over
  * the plane (light/shade.c, shade_lights_plane): random planes (every
  * normal, through points near the origin), seen from either side, lit by
- * point and spot lights on either side, with shadows on or off, a sphere
+ * point, spot and directional lights on either side, with shadows on or off, a sphere
  * casting them, random colours and ambient; each frame against the
  * reference. The eye looks at the plane within 60 degrees of its normal,
  * so the plane fills the view. */
@@ -410,8 +410,8 @@ static void test_lambert_planes(void)
         m.n_obj = 2;
         spot_unit(l);
         double ld = 1.5 + 3.5 * spot_rand();
-        bool spot = view % 4 == 3;
-        m.light[0] = (lgt_t){spot ? LIGHT_SPOT : LIGHT_POINT, {l[0] * ld, l[1] * ld, l[2] * ld},
+        bool spot = view % 4 == 3, dir = view % 4 == 1;
+        m.light[0] = (lgt_t){spot ? LIGHT_SPOT : dir ? LIGHT_DIRECTIONAL : LIGHT_POINT, {l[0] * ld, l[1] * ld, l[2] * ld},
                              {-l[0], -l[1], -l[2]}, spot ? 30 + 40 * spot_rand() : 0,
                              {0.3 + 0.7 * spot_rand(), 0.3 + 0.7 * spot_rand(), 0.3 + 0.7 * spot_rand()}, view % 5 != 4};
         m.n_lights = 1;
@@ -419,13 +419,13 @@ static void test_lambert_planes(void)
         double he = 0, hl = 0;
         for (int i = 0; i < 3; i++) {
             he += n[i] * (m.eye[i] - n[i] * off);
-            hl += n[i] * (m.light[0].pos[i] - n[i] * off);
+            hl += n[i] * (dir ? l[i] : m.light[0].pos[i] - n[i] * off);
         }
         sides[he > 0]++;
         kinds[(he > 0) == (hl > 0)]++;
         long before = check_failed_count;
         char name[80];
-        snprintf(name, sizeof name, "lambert plane %d (%s light, %s side)", view, spot ? "spot" : "point",
+        snprintf(name, sizeof name, "lambert plane %d (%s light, %s side)", view, spot ? "spot" : dir ? "directional" : "point",
                  (he > 0) == (hl > 0) ? "lit" : "dark");
         check_frame(name, &m);
         bad_frames += check_failed_count != before;

@@ -171,7 +171,7 @@ static inline __attribute__((always_inline)) int shade_light_dir(const light_t *
     *dist = NUM_MAX;
     if (L->kind == LIGHT_DIRECTIONAL) {
         *l = L->dir; /* normalised once, in world_add_light */
-        va[0] = va[1] = va[2] = NUM_ZERO; /* (unused) */
+        va[0] = va[1] = va[2] = NUM_ZERO; /* (unused; shade_lights_plane takes these lights itself) */
         return SHADE_DIR;
     }
     vec3_t v = vec3_sub(L->position, p);
@@ -320,19 +320,25 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     return c;
 }
 
-/* h = n . (L - a) for plane `index` (point a, unit normal n) and point or
- * spot light L, as numw_mant: in Q16.16 exact (each dot product lies
- * below 2^50, no saturation), in float and double as written. On any
- * point p of the plane n . (L - p) = h, so the light sum's n . l there is
- * h / |L - p| (shade_lights_plane). */
-numw_mant_t shade_plane_height(const world_t *w, uint16_t index, const light_t *L)
+/* For plane `index` (point a, unit normal n) and light L, as
+ * shade_height_t: a point or spot light's h = n . (L - a), as numw_mant
+ * (in Q16.16 exact: each dot product lies below 2^50, no saturation; in
+ * float and double as written). On any point p of the plane
+ * n . (L - p) = h, so the light sum's n . l there is h / |L - p|
+ * (shade_lights_plane). A directional light's n . l is the same at every
+ * point: kept as numw_sticky, which gives either side's value. */
+shade_height_t shade_plane_height(const world_t *w, uint16_t index, const light_t *L)
 {
-    numw_t h = 0;
+    shade_height_t r = {0};
     FXRT_IF_PLANE(const geom_plane_t *pl = &w->planes[index];
-                  h = NUM_EXACT ? numw_sub_exact(vec3_dotw_unit(L->position, pl->n), vec3_dotw_unit(pl->a, pl->n))
-                                : vec3_dotw_unit(vec3_sub(L->position, pl->a), pl->n);)
+                  if (L->kind == LIGHT_DIRECTIONAL) {
+                      r.ndl = numw_sticky(vec3_dotw_units(pl->n, L->dir));
+                      return r;
+                  } r.h = numw_mant(NUM_EXACT ? numw_sub_exact(vec3_dotw_unit(L->position, pl->n),
+                                                               vec3_dotw_unit(pl->a, pl->n))
+                                              : vec3_dotw_unit(vec3_sub(L->position, pl->a), pl->n));)
     (void)w, (void)index, (void)L;
-    return numw_mant(h);
+    return r;
 }
 
 void shade_plane_heights(const world_t *w, shadow_table_t *t)
@@ -354,10 +360,10 @@ color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t 
 {
     if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
         return k->ambient;
-    vec3_t p = *pp, n_geo = *n_geo_p;
-    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, n_geo) > 0 : facing != 0;
+    vec3_t p = *pp;
+    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : facing != 0;
     int side = inside ? -1 : 1;
-    const numw_mant_t *hk = NULL;
+    const shade_height_t *hk = NULL;
     SHADE_IF_CULL(if (k->cull && SHADE_HEIGHTS) hk = k->cull->h + (size_t)index * FXRT_MAX_LIGHTS;)
     color_t c = k->ambient;
     uint8_t bits = 0;
@@ -366,20 +372,33 @@ color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t 
         vec3_t l;
         num_t dist, va[3], ndl;
         num_inv3_t iv;
-        int how = shade_light_dir(L, p, &l, &dist, &iv, va);
-        if (how == SHADE_DARK)
-            continue;
-        if (how == SHADE_INV) {
-            numw_mant_t h = hk ? hk[i] : shade_plane_height(w, index, L);
-            if (numw_mant_sign(h) != side)
+        int how = SHADE_DIR;
+        if (L->kind == LIGHT_DIRECTIONAL) {
+            /* n . l, turned to the ray's side: no product at all. */
+            numw_sticky_t s = hk ? hk[i].ndl : shade_plane_height(w, index, L).ndl;
+            s = inside ? -s : s;
+            if (s <= 0)
                 continue; /* behind the surface: no shadow ray either */
-            ndl = num_inv3_mul(&iv, h); /* |n . l| <= 1 + 1 LSB */
-            ndl = inside ? num_neg_fits(ndl) : ndl;
+            ndl = numw_sticky_round(s);
+            l = L->dir, dist = NUM_MAX;
+            va[0] = va[1] = va[2] = NUM_ZERO; /* (unused) */
         } else {
-            numw_t ndlw = vec3_dotw_units(inside ? vec3_neg_unit(n_geo) : n_geo, l);
-            if (ndlw <= 0)
+            how = shade_light_dir(L, p, &l, &dist, &iv, va);
+            if (how == SHADE_DARK)
                 continue;
-            ndl = numw_round_fits(ndlw);
+            if (how == SHADE_INV) {
+                shade_height_t h = hk ? hk[i] : shade_plane_height(w, index, L);
+                if (numw_mant_sign(h.h) != side)
+                    continue; /* behind the surface: no shadow ray either */
+                ndl = num_inv3_mul(&iv, h.h); /* |n . l| <= 1 + 1 LSB */
+                ndl = inside ? num_neg_fits(ndl) : ndl;
+            } else {
+                /* beyond SHADE_FAR_DIST (shade_light_far's l) */
+                numw_t ndlw = vec3_dotw_units(inside ? vec3_neg_unit(*n_geo_p) : *n_geo_p, l);
+                if (ndlw <= 0)
+                    continue;
+                ndl = numw_round_fits(ndlw);
+            }
         }
         if (shade_shadowed(w, GEOM_PLANE, index GEOM_PART_ARG(NULL), obj, inside, &p, L, i, &l, dist, k,
                            how == SHADE_INV ? &iv : NULL, va))

@@ -106,14 +106,21 @@ typedef shadow_cull_t shadow_cull_row_t; /* a light's row of the table */
 #define SHADOW_ROW_CLEAR 0x80000000u
 /* The frame's tables hold the planes' heights (shade_plane_heights). */
 #define SHADE_HEIGHTS (SHADOW_CULL && FXRT_MAX_PLANES > 0)
+/* What a Lambert plane's light sum keeps per light (shade_plane_height):
+ * for a point or spot light its height h = n . (L - a) over the plane;
+ * for a directional light n . l itself, which is the same at every point. */
+typedef union {
+    numw_mant_t h;
+    numw_sticky_t ndl;
+} shade_height_t;
 /* The frame's shadow-ray tables: the cull table, and the current row's
  * masks, rows[plane * FXRT_MAX_LIGHTS + light]. */
 typedef struct {
     shadow_cull_t cull[SHADOW_CULL ? FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS : 1];
     uint32_t rows[SHADOW_ROWS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
     /* h[plane * FXRT_MAX_LIGHTS + light]: shade_plane_height, once per
-     * frame (shade_plane_heights; a directional light's unused). */
-    numw_mant_t h[SHADE_HEIGHTS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
+     * frame (shade_plane_heights). */
+    shade_height_t h[SHADE_HEIGHTS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
 } shadow_table_t;
 /* The masks of image row y (counted from the bottom) of a perspective
  * camera cam, for every plane and light of w; all zero for another view.
@@ -121,9 +128,10 @@ typedef struct {
 void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_table_t *t);
 void shadow_rows_clear(shadow_table_t *t);
 /* A Lambert plane's light sum takes n . l = h / |L - p|, with
- * h = n . (L - a) from shade_plane_height (light/shade.c); the frame's
- * tables keep it per plane and light (shade_plane_heights, at set-up). */
-numw_mant_t shade_plane_height(const world_t *w, uint16_t index, const light_t *L);
+ * h = n . (L - a) from shade_plane_height (light/shade.c), or, for a
+ * directional light, n . l as it is; the frame's tables keep them per
+ * plane and light (shade_plane_heights, at set-up). */
+shade_height_t shade_plane_height(const world_t *w, uint16_t index, const light_t *L);
 void shade_plane_heights(const world_t *w, shadow_table_t *t);
 
 /* What the light sum needs of one object that does not change within a

@@ -214,6 +214,17 @@ static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[
 static inline numw_mant_t numw_mant(numw_t h) { return fx_mant64(h); }
 static inline int numw_mant_sign(numw_mant_t h) { return (h > 63) - (h < 0); } /* (m's sign: fx_mant_t) */
 static inline num_t num_inv3_mul(const num_inv3_t *q, numw_mant_t h) { return fx_inv3_mul(q, h); }
+/* A wide x (|x| < 2^44 LSB^2, so that (x >> 14) * 2 fits) kept to
+ * 2^-3 LSB with a sticky bit (x's lower bits not all zero):
+ * numw_sticky_round(s) = numw_round_fits(x), s has x's sign, and -s is
+ * numw_sticky(-x), so one value serves either side of a plane, ties of
+ * round half up included (light/shade.c). */
+typedef int32_t numw_sticky_t;
+static inline numw_sticky_t numw_sticky(numw_t x)
+{
+    return (numw_sticky_t)((x >> 14) * 2 + ((x & 0x3fff) != 0));
+}
+static inline num_t numw_sticky_round(numw_sticky_t s) { return (num_t)((s + 4) >> 3); }
 /* A direction from an exact wide vector c (Q32.32): its components
  * divided by 2^shift (numw_direction_part), shift from
  * numw_direction_shift, scaled to 30 significant bits, so that a long c
@@ -376,6 +387,9 @@ static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[
 static inline numw_mant_t numw_mant(numw_t h) { return h; }
 static inline int numw_mant_sign(numw_mant_t h) { return (h > 0) - (h < 0); }
 static inline num_t num_inv3_mul(const num_inv3_t *q, numw_mant_t h) { return h * q->inv; }
+typedef numw_t numw_sticky_t;
+static inline numw_sticky_t numw_sticky(numw_t x) { return x; }
+static inline num_t numw_sticky_round(numw_sticky_t s) { return s; }
 static inline int numw_direction_shift(const numw_t c[3])
 {
     (void)c;
