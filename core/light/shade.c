@@ -267,7 +267,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
      * light sum at all. */
     if (FXRT_BOUND_NO_LIGHT_SUM && !mask && obj->mat.kind != MATERIAL_TRANSPARENT)
         return obj->mat.kind == MATERIAL_FLAT || !k ? obj->color : k->ambient;
-    vec3_t p = *pp, n_geo = *n_geo_p, d = *dp;
+    vec3_t n_geo = *n_geo_p, d = *dp;
     const material_t *m = &obj->mat;
     bool lit = m->kind != MATERIAL_FLAT;
     bool clear = m->kind == MATERIAL_TRANSPARENT;
@@ -281,7 +281,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
      * behind the face from p (the terminator: the face blocks it). */
     FXRT_IF_SMOOTH(vec3_t n_face = n; vec3_t ns;
                    bool smooth = kind == GEOM_TRIANGLE && w->triangles[index].smooth &&
-                                 geom_smooth_normal(&w->triangles[index], p, &ns);
+                                 geom_smooth_normal(&w->triangles[index], *pp, &ns);
                    if (smooth) n = vec3_dotw_units(d, ns) > 0 ? vec3_neg_unit(ns) : ns;)
     /* A smooth model: the same, with the normal its surface gave
      * (scene/model.c) and its triangle's winding normal as the face's. */
@@ -290,11 +290,11 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     uint8_t bits = 0;
     (void)kind, (void)index; /* only shadow rays need to know the object */
-    for (uint8_t i = 0; i < w->n_lights; i++) {
-        const light_t *L = &w->lights[i];
+    const light_t *L = w->lights;
+    for (uint8_t i = 0; i < w->n_lights; i++, L++) {
         vec3_t l;
         num_t dist, va[3];
-        if (shade_light_dir(L, p, &l, &dist, NULL, va) == SHADE_DARK)
+        if (shade_light_dir(L, *pp, &l, &dist, NULL, va) == SHADE_DARK)
             continue;
         numw_t ndlw = vec3_dotw_units(n, l);
         if (ndlw <= 0)
@@ -303,7 +303,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
             FXRT_IF_SMOOTH(if (smooth && L->shadows && vec3_dotw_units(n_face, l) <= 0) continue;) /* the terminator */
             FXRT_IF_MODEL(if (msmooth && L->shadows && vec3_dotw_units(n_wind, l) <= 0) continue;)
         }
-        if (shade_shadowed(w, kind, index GEOM_PART_ARG(part), obj, inside, &p, L, i, &l, dist, k, NULL, va))
+        if (shade_shadowed(w, kind, index GEOM_PART_ARG(part), obj, inside, pp, L, i, &l, dist, k, NULL, va))
             continue;
         bits = (uint8_t)(bits | (1u << i));
         if (!lit || clear)
@@ -360,15 +360,14 @@ color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t 
 {
     if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
         return k->ambient;
-    vec3_t p = *pp;
     bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : facing != 0;
     int side = inside ? -1 : 1;
     const shade_height_t *hk = NULL;
     SHADE_IF_CULL(if (k->cull && SHADE_HEIGHTS) hk = k->cull->h + (size_t)index * FXRT_MAX_LIGHTS;)
     color_t c = k->ambient;
     uint8_t bits = 0;
-    for (uint8_t i = 0; i < w->n_lights; i++) {
-        const light_t *L = &w->lights[i];
+    const light_t *L = w->lights;
+    for (uint8_t i = 0; i < w->n_lights; i++, L++) {
         vec3_t l;
         num_t dist, va[3], ndl;
         num_inv3_t iv;
@@ -383,7 +382,7 @@ color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t 
             l = L->dir, dist = NUM_MAX;
             va[0] = va[1] = va[2] = NUM_ZERO; /* (unused) */
         } else {
-            how = shade_light_dir(L, p, &l, &dist, &iv, va);
+            how = shade_light_dir(L, *pp, &l, &dist, &iv, va);
             if (how == SHADE_DARK)
                 continue;
             if (how == SHADE_INV) {
@@ -400,7 +399,7 @@ color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t 
                 ndl = numw_round_fits(ndlw);
             }
         }
-        if (shade_shadowed(w, GEOM_PLANE, index GEOM_PART_ARG(NULL), obj, inside, &p, L, i, &l, dist, k,
+        if (shade_shadowed(w, GEOM_PLANE, index GEOM_PART_ARG(NULL), obj, inside, pp, L, i, &l, dist, k,
                            how == SHADE_INV ? &iv : NULL, va))
             continue;
         bits = (uint8_t)(bits | (1u << i));
