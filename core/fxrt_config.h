@@ -369,7 +369,7 @@ FXRT_STATIC_ASSERT(FXRT_PHONG == 0 || FXRT_PHONG == 1, "FXRT_PHONG must be 0 or 
 #endif
 FXRT_STATIC_ASSERT(FXRT_SHADOW_CULL == 0 || FXRT_SHADOW_CULL == 1, "FXRT_SHADOW_CULL must be 0 or 1");
 FXRT_STATIC_ASSERT(FXRT_MAX_LIGHTS > 0 || (!FXRT_SHADOWS && !FXRT_PHONG), "FXRT_SHADOWS and FXRT_PHONG need FXRT_MAX_LIGHTS > 0");
-/* FXRT_STATS 1 counts the shading work (core/fxrt_stats.h) for tests;
+/* FXRT_STATS 1 counts the shading work (core/math/stats.h) for tests;
  * 0 (default) compiles the counters out. */
 #ifndef FXRT_STATS
 #define FXRT_STATS 0
@@ -410,7 +410,7 @@ FXRT_STATIC_ASSERT(1 <= FXRT_MAX_SAMPLES && FXRT_MAX_SAMPLES <= 16, "FXRT_MAX_SA
 FXRT_STATIC_ASSERT((FXRT_MAX_SAMPLES > 1) == (0 FXRT_IF_SAMPLES(+1)), "FXRT_MAX_SAMPLES must be a plain decimal number");
 /* FXRT_SAMPLE_RUNS: the runs (one owner each) that the fast Q16.16
  * sampling pass may hold for the N fine rows of one output row when it
- * works from spans (core/render_sample.c, "run mode": every object on
+ * works from spans (core/frame/render_sample.c, "run mode": every object on
  * those rows flat and alone on its row). An output row with more runs,
  * a lit object or objects that overlap takes the per-sample pass instead
  * (the same image). 6 bytes each; default 8 per fine row. */

@@ -13,7 +13,7 @@
 #   cheap (scenes/samples/*.scene, SAMPLES_CHEAP): one flat object fills
 #     the view, so every pixel is the cheap case. Targets (our reading of
 #     "costs little more than one sample": the sampling pass works from
-#     runs, core/render_sample.c, and does nothing per sample):
+#     runs, core/frame/render_sample.c, and does nothing per sample):
 #       - per scene, samples N costs at most N times samples 1 per output
 #         pixel: ratio <= 2 at N = 2, <= 4 at N = 4;
 #       - geometric mean <= 1.5x at N = 2, <= 2.5x at N = 4.

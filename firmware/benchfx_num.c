@@ -1,6 +1,6 @@
 /* benchfx_num: the float counterparts of benchfx.c's Q16.16 operations,
  * built with FXRT_NUMBER = FXRT_FLOAT: the renderer's own float
- * expressions (core/num.h, core/vec3.h), soft float on the M0 and M3
+ * expressions (core/math/num.h, core/math/vec3.h), soft float on the M0 and M3
  * (libgcc's __aeabi_f* helpers), the FPU on the M4F. Timed like
  * benchfx.c: each through a function pointer, less the same loop around
  * an empty function of its signature, so a figure is one out-of-line

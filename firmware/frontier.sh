@@ -81,7 +81,7 @@ if [[ ${1:-} == --unit ]]; then
     extra=() tag=""
     [[ $loop == step ]] && { extra+=(FW_EXTRA=-DFXRT_FLOAT_STEP=1); tag=step; }
     # ak: the run used FW_ALL_KINDS=1 (scenec --all-kinds); no longer
-    # needed (a tracing scene without a box links since core/trace.c has its
+    # needed (a tracing scene without a box links since core/light/trace.c has its
     # own bounds test), kept as a CSV column for older runs.
     ak=0
     [[ -n $tag ]] && extra+=(FW_TAG="$tag")

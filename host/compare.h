@@ -41,7 +41,7 @@ int compare_images(const image_t *a, const image_t *b, compare_result_t *res,
                    image_t *diff, char *err, size_t errlen);
 
 /* The same with a key map: keys[y * width + x] is the key of pixel (x, y)
- * (core/render.h render_key: object id and lights reaching the hit point,
+ * (core/frame/render.h render_key: object id and lights reaching the hit point,
  * from the double render of the scene, never from A or B). A pixel is near
  * a discontinuity when a pixel of its 8-neighbourhood (clipped at the image
  * border) has another key (compare_key_near); the near_* and far_* fields

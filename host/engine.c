@@ -32,7 +32,7 @@ static vec3_t engine_vec(scene_vec_t v)
  * 1/255 quantised to 2^-16 of that unit: round(x * 255 * 65536) / 65536,
  * the same value in every build (it has at most 24 significant bits, so
  * float holds it exactly). The 8-bit output is then its round-half-up
- * (core/color.h, docs/ACCURACY.md "Colour"). */
+ * (core/math/color.h, docs/ACCURACY.md "Colour"). */
 static num_t engine_channel(double x)
 {
     return ENGINE_SYM(engine_num)(floor(x * (255.0 * 65536.0) + 0.5) / 65536.0);

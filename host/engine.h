@@ -24,7 +24,7 @@ int engine_renderer_parse(const char *s, engine_renderer_t *out);
 int engine_number_parse(const char *s, engine_number_t *out);
 const char *engine_number_name(engine_number_t n);
 
-/* The key of a background pixel (core/render.h RENDER_KEY_MISS, which
+/* The key of a background pixel (core/frame/render.h RENDER_KEY_MISS, which
  * engine.c checks it against), for code that does not include the core. */
 #define ENGINE_KEY_MISS 0xFFFF00u
 

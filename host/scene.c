@@ -57,7 +57,7 @@
 
 /* Up must make an angle of at least asin(1/64) = 0.895 degrees with +-gaze:
  * |g x u| >= |g| |u| / 64, the same limit as cam_setup's
- * (CAM_UP_MIN_SIN_SHIFT in core/cam.h). */
+ * (CAM_UP_MIN_SIN_SHIFT in core/scene/cam.h). */
 #define SCENE_UP_MIN_SIN (1.0 / 64.0)
 #define SCENE_UP_HINT "to look straight down use e.g. 'gaze 0 -1 0 up 0 0 -1'"
 

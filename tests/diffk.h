@@ -111,7 +111,7 @@ typedef struct {
     int diffk_occluded_##S(int n, const diffk_obj_t *objs, const diffk_ray_t *ray, double tmax); \
     /* numw_pow_int(x, k) with x given as Q32.32 (x_q32 / 2^32). */                              \
     double diffk_pow_##S(long long x_q32, unsigned k);                                            \
-    /* The children core/trace.c makes at a hit with incoming direction d and geometric normal  \
+    /* The children core/light/trace.c makes at a hit with incoming direction d and geometric normal  \
      * n (weight 1): for a reflective material (reflection 1) the reflected direction; for a   \
      * clear transparent one of index eta: *tir, and unless total internal reflection, the     \
      * transmitted direction (*has_t: not cut off) and Schlick's R (from the reflected ray's    \

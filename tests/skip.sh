@@ -34,7 +34,7 @@ out=$BUILD/tests/skip
 mkdir -p "$out"
 CORE=$(cd core && ls */*.c | sed "s/\.c$//")
 LIGHTING='^(shade_point|shade_point_k|shade_object|shade_object_k|shade_consts|render_shade_row|shadow_[a-z0-9_]+|world_occluded|world_set_material|world_add_light|geom_(plane|sphere|triangle|box)_surface)([.].*)?$'
-SHADOW='^(shadow_[a-z0-9_]+|world_occluded)([.].*)?$' # all of core/shadow.c
+SHADOW='^(shadow_[a-z0-9_]+|world_occluded)([.].*)?$' # all of core/light/shadow.c
 LIBM='^(pow|powf|acos|acosf|cos|cosf|sin|sinf|sqrt|sqrtf|exp|log)$'
 
 # NAME.elf: skip_app with the core, linked without a board's linker script

@@ -22,7 +22,7 @@
  * formula written out here in long double), numw_pow_int (pow), the spot
  * cone's decision (spot) and world_occluded (shadow), each within its
  * stated bound or band. Secondary rays (issue 12): the reflected and
- * transmitted directions and Schlick's R that core/trace.c makes
+ * transmitted directions and Schlick's R that core/light/trace.c makes
  * (reflect, refract, schlick), Q16.16 and float against double, over
  * indices 0.01..100 and every incidence, within the bounds stated at
  * eval_bounce; total internal reflection may differ only in its band.
@@ -1920,7 +1920,7 @@ static void eval_shadow(const dcase_t *c, dres_t *res)
             amb = fmin(amb, rr);
     }
     /* world_occluded decides planes, triangles and boxes without a
-     * division (core/geom.c, geom_<kind>_occludes: the bounds compared as
+     * division (core/scene/geom.c, geom_<kind>_occludes: the bounds compared as
      * fractions), so it may differ from "the hit kernel's rounded t <
      * tmax" only where that decision is itself ambiguous. */
     /* tmax at the top of the Q16.16 range is NUM_MAX there, which
@@ -1952,7 +1952,7 @@ static void eval_shadow(const dcase_t *c, dres_t *res)
 }
 
 /* ---- secondary rays (issue 12): reflected and transmitted directions and
- * Schlick's R from core/trace.c's trace_children (tests/diffk.c), Q16.16
+ * Schlick's R from core/light/trace.c's trace_children (tests/diffk.c), Q16.16
  * and float against double from the same rounded d, n and eta.
  *
  * Error analysis, in LSB (2^-16), one rounding per operation: rd(v) is
@@ -2678,7 +2678,7 @@ static void print_table(dstat_t st[K_COUNT], double secs)
     }
     print_light_tables(st);
     if (st[K_REFLECT].cases + st[K_REFRACT].cases + st[K_SCHLICK].cases) {
-        printf("\nsecondary rays (core/trace.c trace_children), Q16.16 and float against double from the same "
+        printf("\nsecondary rays (core/light/trace.c trace_children), Q16.16 and float against double from the same "
                "rounded d, n, eta (0.01..100); bound = %.2f x the first-order analysis (eval_bounce):\n\n", MARGIN);
         printf("| quantity | cases | compared | TIR decisions differ (all in the band) | q16 worst err (LSB) | q16 worst "
                "err, cos2_t >= 0.01 | q16 worst err/bound | float worst err (LSB) | float worst err/bound |\n"

@@ -2766,7 +2766,7 @@ static void test_render_coherent(void)
 #endif
 }
 
-/* Supersampling from runs (core/render_sample.c, run mode): random worlds
+/* Supersampling from runs (core/frame/render_sample.c, run mode): random worlds
  * of 1 to 6 objects of every kind spread across the view (so that on most
  * rows each is alone; some overlap, which takes the per-sample pass), a
  * plane in some, both camera kinds, the eye inside a sphere in some,

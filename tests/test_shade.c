@@ -516,7 +516,7 @@ static void test_spot_early_out(void)
 #endif
 
 #if SHADOW_CULL
-/* Shadow-ray culling (core/shadow.c) must change no decision of a right
+/* Shadow-ray culling (core/light/shadow.c) must change no decision of a right
  * kernel: for random occluders (a sphere, a triangle and a box at scales
  * 2, 64 and 8000), lights of every kind (a point light just outside the
  * sphere in every other world) and points both anywhere and placed so
@@ -530,7 +530,7 @@ static void test_spot_early_out(void)
  * random points, and the grazing points must be blocked often enough
  * (both ways) for the check to mean something. */
 static double cull_pick(double lo, double hi) { return lo + (hi - lo) * spot_rand(); }
-/* The cone test of core/shadow.c as the host build makes it. */
+/* The cone test of core/light/shadow.c as the host build makes it. */
 static bool cone_out(const shadow_cull_t *e, const vec3_t *l)
 {
 #if FXRT_NUMBER == FXRT_Q16
@@ -905,7 +905,7 @@ static void test_sphere_occludes(long cases)
 #endif
 
 #if SHADOW_CULL && FXRT_NUMBER == FXRT_Q16
-/* The cone tests at their boundary (core/shade.h): with u along x in
+/* The cone tests at their boundary (core/light/shade.h): with u along x in
  * Q2.30 and l = (x, 0, 0), ldir . u = x 2^-16 exactly, and the limit is
  * lim14 2^-14. The high-word test culls only when the dot is strictly
  * above the limit by at least 2^-14, so never at equality; the 32-bit

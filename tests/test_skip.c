@@ -1,5 +1,5 @@
 /* The renderer skips what a scene does not need (issue 11), proved by the
- * work counters of core/fxrt_stats.h (this program and its core are built
+ * work counters of core/math/stats.h (this program and its core are built
  * with FXRT_STATS 1, once per number type, see tests/skip.mk):
  *   - a light behind a surface (n . l <= 0) sends no shadow ray;
  *   - a directional light's l is never normalised per pixel;
@@ -8,7 +8,7 @@
  *   - a spot light's cosine is computed once, at set-up;
  *   - flat materials cost no lighting at all;
  *   - a shadow ray tests a sphere's exact kernel only near the sphere's
- *     shadow (culling, core/shadow.c).
+ *     shadow (culling, core/light/shadow.c).
  * Issue 12 (secondary rays and supersampling):
  *   - secondary rays use the world-space kernels and the scene's bounds:
  *     reflected rays that miss the box around the bounded objects test no
@@ -310,7 +310,7 @@ static double dbl(num_t x)
 
 /* A reflective plane with three flat spheres on it, depth 1: every plane
  * pixel sends one reflected ray; those that miss the sphere around the
- * spheres' box (padded by one unit, core/world.c, core/trace.c) test no
+ * spheres' box (padded by one unit, core/scene/world.c, core/light/trace.c) test no
  * sphere, the others all three. */
 static void test_bounds(void)
 {
@@ -340,7 +340,7 @@ static void test_bounds(void)
         }
         /* the mirrored rays that miss the bounds sphere, in double: the
          * sphere through the corners of the spheres' box [-2, 2] x [0, 1] x
-         * [-0.5, 0.5], its radius padded by one unit (core/world.c) */
+         * [-0.5, 0.5], its radius padded by one unit (core/scene/world.c) */
         long miss = 0;
         const double c[3] = {0, 0.5, 0}, rad = sqrt(2.0 * 2.0 + 0.5 * 0.5 + 0.5 * 0.5) + 1.0;
         for (int y = 0; y < H; y++)
@@ -368,7 +368,7 @@ static void test_bounds(void)
     }
 }
 
-/* Shadow-ray culling (core/shadow.c): a sphere above a plane, a point
+/* Shadow-ray culling (core/light/shadow.c): a sphere above a plane, a point
  * light above both. The sphere's exact kernel must run for every plane
  * pixel in its shadow (the light's bit clear in the key: those rays are
  * blocked, so they were tested) and, with the light's cone around the

@@ -1,4 +1,4 @@
-/* The bounce model of issue 12 (core/trace.c) against an independent
+/* The bounce model of issue 12 (core/light/trace.c) against an independent
  * oracle: a recursive double tracer written here from the issue's
  * formulas (its own intersections, with an epsilon for self-intersection
  * instead of the core's rule; its own Snell, Schlick, cut-off and depth),

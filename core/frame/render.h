@@ -119,7 +119,7 @@ static inline uint32_t render_key(uint16_t id, uint8_t mask) { return (uint32_t)
 
 /* With samples N > 1 (world_set_samples), render_row and
  * render_row_reference give each pixel the mean of its N x N cell-centre
- * rays, each clamped to [0, 1], rounded to 8 bits (core/render_sample.c);
+ * rays, each clamped to [0, 1], rounded to 8 bits (core/frame/render_sample.c);
  * keys are then not written (they are defined at one sample per pixel). */
 
 /* Render output row `row` (0 = top) into rgb in the FXRT_PIXEL format:

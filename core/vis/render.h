@@ -78,7 +78,7 @@ typedef struct {
  * always false). */
 #define RENDER_SROW_SLOTS (RENDER_SROWS ? FXRT_COHERENT_SPHERES : 1)
 
-/* Run mode of the sampling pass (core/render_sample.c): the coherent loop
+/* Run mode of the sampling pass (core/frame/render_sample.c): the coherent loop
  * can describe a fine row as runs of one owner each instead of one owner
  * per column. */
 #define RENDER_RUNS (FXRT_MAX_SAMPLES > 1 && RENDER_COHERENT)
