@@ -222,6 +222,35 @@ static void check_ratio(fxw_t a, fxw_t b, fx_t x)
                 x, got, exact);
 }
 
+/* fxw_ratio_by's mantissas: 0, or in (2^29, 2^31] (math/fx.c) */
+#define RATIO_M_MIN ((uint64_t)1 << 29 | 1)
+#define RATIO_M_MAX ((uint64_t)1 << 31)
+/* fxw_ratio_mul's rule, exactly (fx.h): for a quotient q = (m, e, neg),
+ * x q is m |x| 2^-e rounded once, half up, given q's sign and x's, and
+ * saturated; 0 for x = 0. Checked in 128-bit integers on quotients made
+ * directly, over the exponents where the product is neither 0 nor
+ * saturated by size alone (e in -31 .. 63), m over fxw_ratio_by's range, x of
+ * every size: the inline path (e 33 .. 63) and fxw_ratio_mul_wide's. */
+static long ratio_rule_e[3]; /* e < 1, 1 .. 32, 33 .. 63 */
+static long ratio_rule_sat;
+static void check_ratio_rule(uint32_t m, int e, bool qneg, fx_t x)
+{
+    fxw_ratio_t q = {m, (int16_t)e, qneg ? -1 : 0};
+    fx_t got = fxw_ratio_mul(&q, x);
+    u128_t p = (u128_t)m * (uint64_t)(x < 0 ? -(int64_t)x : (int64_t)x);
+    u128_t mag = e >= 1 ? (p + ((u128_t)1 << (e - 1))) >> e : p << -e;
+    bool neg = qneg != (x < 0);
+    int64_t want;
+    if (mag > (u128_t)INT32_MAX + (neg ? 1 : 0)) {
+        want = neg ? INT32_MIN : INT32_MAX;
+        ratio_rule_sat++;
+    } else
+        want = neg ? -(int64_t)mag : (int64_t)mag;
+    ratio_rule_e[e < 1 ? 0 : e <= 32 ? 1 : 2]++;
+    CHECK_SWEEP(got == want, "fxw_ratio_mul({m %u, e %d, %s}, %d) = %d, the rule gives %lld", m, e,
+                qneg ? "negative" : "positive", x, got, (long long)want);
+}
+
 static void check_cot(fx_t deg)
 {
     fx_t c = fx_cot_deg(deg);
@@ -813,6 +842,9 @@ int main(int argc, char **argv)
         check_ratio(((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
                     ((fxw_t)(rng() >> 1) >> (rng() % 63)) * ((rng() & 1) ? 1 : -1),
                     (fx_t)((int32_t)(uint32_t)rng() >> (rng() % 32)));
+        check_ratio_rule(rng() % 16 == 0 ? 0 : (uint32_t)(RATIO_M_MIN + rng() % (RATIO_M_MAX - RATIO_M_MIN + 1)),
+                         -31 + (int)(rng() % 95), rng() & 1,
+                         (fx_t)((int32_t)(uint32_t)rng() >> (rng() % 32)));
         check_norm(rand_fx(), rand_fx(), rand_fx());
         check_vec();
         check_sincos(rand_fx());
@@ -821,6 +853,13 @@ int main(int argc, char **argv)
         if (i % 16 == 0)
             check_cot((fx_t)(rng() % (uint64_t)F16(90)));
     }
+    /* every path of the rule, and its saturation, met often */
+    CHECK_MSG(ratio_rule_e[0] > 1000 && ratio_rule_e[1] > 1000 && ratio_rule_e[2] > 1000 && ratio_rule_sat > 1000,
+              "fxw_ratio_mul's rule met on every path: e < 1 %ld, 1..32 %ld, 33..63 %ld times, saturated %ld",
+              ratio_rule_e[0], ratio_rule_e[1], ratio_rule_e[2], ratio_rule_sat);
+    for (int e = 1; e <= 32; e++) /* and at each edge of the 32-bit path: the largest m and x, the smallest */
+        for (int k = 0; k < 4; k++)
+            check_ratio_rule(k & 1 ? RATIO_M_MAX : RATIO_M_MIN, e, k & 2, k & 2 ? INT32_MIN : INT32_MAX);
     printf("worst error in LSB over %ld random inputs each:\n", n_random);
     printf("  fx_mul %.3f  fx_div %.3f  fx_sqrt %.3f  fxw_sqrt %.3f  fxw_div %.3f\n", max_err_mul,
            max_err_div, max_err_sqrt, max_err_wsqrt, max_err_wdiv);

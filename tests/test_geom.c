@@ -369,13 +369,14 @@ static void test_cam_small(void)
 static int cam_rows_diff(const cam_t *c, int32_t y, int32_t step, const char *what, int i, int *direct, int *other)
 {
     cam_row_t row;
+    ray_t a; /* one ray for the row, as the shading pass keeps it */
     int bad = 0;
-    cam_row(c, y, &row);
+    memset(&a, 0, sizeof a);
+    cam_row(c, y, &row, &a);
     *direct += row.direct;
     *other += !row.direct;
     for (int32_t x = 0; x < c->width; x += step) {
-        ray_t a, b;
-        memset(&a, 0, sizeof a);
+        ray_t b;
         memset(&b, 0, sizeof b);
         cam_row_ray(c, &row, x, &a);
         cam_ray_raw(c, x, y, &b);

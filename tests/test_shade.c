@@ -1170,7 +1170,7 @@ static void test_shadow_rows(long worlds)
         }
         for (int y = 0; y < RH; y++) {
             shadow_rows_setup(&w, &rcam, y, &tab);
-            uint32_t mask = tab.rows[0];
+            uint32_t mask = tab.pl[0].row;
             if (!(mask & (7u << SHADOW_SLOT_SPHERE)))
                 continue;
             for (int x = 0; x < RW; x++) {

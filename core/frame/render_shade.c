@@ -57,6 +57,7 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
     f->ratio = numw_ratio_num(num);
     f->index = o->index;
     f->kind = o->geom;
+    shade_flat_prep(w, f, o->flat ? NULL : &r->shade.k[oi]);
     r->shade.flat_of = oi;
     return true;
 }
@@ -75,7 +76,8 @@ static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *
     const render_obj_t *o = &r->vis.obj[oi];
     const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
     if (one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray)))
-        return shade_flat_k(r->vis.world, &r->shade.flat, ray, k, mask);
+        return r->shade.flat.lambert ? shade_flat_plane(r->vis.world, &r->shade.flat, k, ray, mask)
+                                     : shade_flat_k(r->vis.world, &r->shade.flat, ray, k, mask);
     return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, r->vis.cam, k, mask);
 }
 
@@ -92,29 +94,30 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
      * they hold for this row's camera rays only. */
     SHADE_IF_CULL(if (SHADOW_ROWS && r->shade.any_lit) shadow_rows_setup(r->vis.world, cam, y, &r->shade.cull);)
     bool one_eye = cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM;
-    cam_row(cam, y, &r->shade.row);
+    cam_row(cam, y, &r->shade.row, &r->shade.ray);
+    uint32_t *keys = r->keys; /* (read once: the loop does not change it) */
+    ray_t *ray = &r->shade.ray;
     for (int32_t x = 0; x < w; x++) {
         uint16_t oi = r->vis.painted[x];
         if (oi == RENDER_VIS_NONE) {
-            if (r->keys)
-                r->keys[x] = RENDER_KEY_MISS;
+            if (keys)
+                keys[x] = RENDER_KEY_MISS;
             continue;
         }
         const render_obj_t *o = &r->vis.obj[oi];
         bool lit = !o->flat;
-        if (!lit && !r->keys)
+        if (!lit && !keys)
             continue;
-        ray_t *ray = &r->shade.ray;
         uint8_t mask = 0;
         cam_row_ray(cam, &r->shade.row, x, ray);
         color_t c;
         FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) /* its triangle: the visibility pass's (vis/rays.c) */
                       c = (cam_ray_unit(cam, ray), shade_model_k(r->vis.world, o->index, ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
-                                        r->keys ? &mask : NULL));
+                                        keys ? &mask : NULL));
                       else)
-        c = render_shade_obj(r, oi, ray, r->keys ? &mask : NULL, one_eye);
-        if (r->keys)
-            r->keys[x] = render_key(o->id, mask);
+        c = render_shade_obj(r, oi, ray, keys ? &mask : NULL, one_eye);
+        if (keys)
+            keys[x] = render_key(o->id, mask);
         if (!lit)
             continue;
         rgb8_t p = color_to_rgb8(c);

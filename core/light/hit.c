@@ -24,20 +24,6 @@ static inline __attribute__((always_inline)) bool shade_needs_unit(const world_t
     return false;
 }
 
-/* A camera ray's point on the plane of a FLAT form's object with unit
- * normal n, from the ray's origin o and its direction r of any length
- * (cam_ray_raw's, not normalised): o + (num / (r . n)) r with num =
- * (a - o) . n prepared as a ratio (geom_flat_num); *rn gets r . n. Without
- * the unit direction's rounding (its 0.5 LSB per component, times t) the
- * point is within 0.5 LSB + 2^-29 |p - o| per component in Q16.16. */
-static inline __attribute__((always_inline)) vec3_t shade_flat_point(const numw_ratio_num_t *num, const vec3_t *o,
-                                                                     const vec3_t *r, const vec3_t *n, numw_t *rn)
-{
-    *rn = vec3_dotw_unit(*r, *n);
-    numw_ratio_t q = numw_ratio_by(num, *rn);
-    return vec3_add(*o, vec3_make(num_ratio_mul(&q, r->x), num_ratio_mul(&q, r->y), num_ratio_mul(&q, r->z)));
-}
-
 /* The colour at the ray's t on object obj (kind, index), whose geometric
  * normal there is n: the light sum and the bounces. */
 static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w, const geom_common_t *obj,
@@ -111,6 +97,8 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, ray_t
 
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask)
 {
+    if (f->lambert)
+        return shade_flat_plane(w, f, k, ray, mask);
     if (f->obj->mat.kind == MATERIAL_FLAT && !mask)
         return f->obj->color;
     geom_kind_t kind = (geom_kind_t)f->kind;

@@ -104,11 +104,11 @@ bool shade_spot_surely_out(const light_t *L, vec3_t v)
  * reach p. The caller then passes the distance SHADE_FAR_DIST, and
  * shadow_blocked casts the shadow ray from the light's end of the
  * segment (light/shadow.c). Rare, so out of line. */
-static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, vec3_t p)
+static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, const vec3_t *p)
 {
     vec3_t pos = L->position, l = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    vec3_t v = vec3_make((fx_t)(((int64_t)pos.x - p.x) / 4), (fx_t)(((int64_t)pos.y - p.y) / 4),
-                         (fx_t)(((int64_t)pos.z - p.z) / 4));
+    vec3_t v = vec3_make((fx_t)(((int64_t)pos.x - p->x) / 4), (fx_t)(((int64_t)pos.y - p->y) / 4),
+                         (fx_t)(((int64_t)pos.z - p->z) / 4));
     num_t len;
     (void)vec3_unit_len(v, &l, &len); /* |v| > 8191: not zero */
     if (L->kind == LIGHT_SPOT && !shade_in_cone(L, v, len))
@@ -165,7 +165,7 @@ static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const
  * (shade_light_unit makes l from them). Inlined: with iv NULL, what
  * shade_lights always did. */
 enum { SHADE_DARK, SHADE_DIR, SHADE_INV };
-static inline __attribute__((always_inline)) int shade_light_dir(const light_t *L, vec3_t p, vec3_t *l, num_t *dist,
+static inline __attribute__((always_inline)) int shade_light_dir(const light_t *L, const vec3_t *p, vec3_t *l, num_t *dist,
                                                                  num_inv3_t *iv, num_t va[3])
 {
     *dist = NUM_MAX;
@@ -174,7 +174,7 @@ static inline __attribute__((always_inline)) int shade_light_dir(const light_t *
         va[0] = va[1] = va[2] = NUM_ZERO; /* (unused; shade_lights_plane takes these lights itself) */
         return SHADE_DIR;
     }
-    vec3_t v = vec3_sub(L->position, p);
+    vec3_t v = vec3_sub(L->position, *p);
     va[0] = v.x, va[1] = v.y, va[2] = v.z;
     /* Spot: (-l) . s >= cos(angle) with l = v / |v|, compared as
      * (-v) . s >= cos(angle) |v| (no rounding of l in the test). */
@@ -223,27 +223,24 @@ static inline __attribute__((always_inline)) int shade_light_dir(const light_t *
 }
 
 /* Is light i (L) blocked from p by an object (shadow_blocked), where the
- * frame's tables do not already say it is not? For SHADE_INV (iv not
- * NULL) the unit direction l is made here first, for the shadow ray. */
+ * frame's tables do not already say it is not? pls: the object's entries
+ * of the frame's tables, a plane's (NULL: none), whose row masks say so.
+ * For SHADE_INV (iv not NULL) the unit direction l is made here first,
+ * for the shadow ray. */
 static inline __attribute__((always_inline)) bool shade_shadowed(const world_t *w, geom_kind_t kind,
                                                                  uint16_t index GEOM_PART_PARAM,
                                                                  const geom_common_t *obj, bool inside,
-                                                                 const vec3_t *p, const light_t *L, uint8_t i,
+                                                                 const vec3_t *p, const light_t *L, unsigned i,
                                                                  vec3_t *l, num_t dist, const shade_k_t *k,
-                                                                 const num_inv3_t *iv, num_t va[3])
+                                                                 const shade_plane_light_t *pls, const num_inv3_t *iv,
+                                                                 num_t va[3])
 {
 #if FXRT_SHADOWS
-#if SHADOW_CULL
-    const shadow_cull_t *cull = k && k->cull ? k->cull->cull + (size_t)i * SHADOW_CULL_SLOTS : NULL;
-    /* A plane's pixel: its row's mask (shade.h, shadow rows). */
-    uint32_t skip = SHADOW_ROWS && kind == GEOM_PLANE && cull ? k->cull->rows[(size_t)index * FXRT_MAX_LIGHTS + i] : 0;
-#else
-    const shadow_cull_row_t *cull = NULL;
-    uint32_t skip = 0;
-    (void)k, (void)i;
-#endif
+    uint32_t skip = SHADOW_ROWS && pls ? pls[i].row : 0; /* a plane's pixel: its row's mask (shade.h, shadow rows) */
     if (!L->shadows || (skip & SHADOW_ROW_CLEAR && (dist < SHADE_FAR_DIST || L->kind == LIGHT_DIRECTIONAL)))
         return false;
+    const shadow_cull_row_t *cull = NULL;
+    SHADE_IF_CULL(if (k && k->cull) cull = k->cull->cull + (size_t)i * SHADOW_CULL_SLOTS;)
     if (iv) {
         FXRT_COUNT(l_units);
         num_inv3_unit(iv, va, va);
@@ -252,7 +249,7 @@ static inline __attribute__((always_inline)) bool shade_shadowed(const world_t *
     return shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, p, L, l, dist, cull, skip);
 #else
     (void)w, (void)kind, (void)index, (void)obj, (void)inside, (void)p, (void)L, (void)i, (void)l, (void)dist,
-        (void)k, (void)iv, (void)va;
+        (void)k, (void)pls, (void)iv, (void)va;
     return false;
 #endif
 }
@@ -288,13 +285,15 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     FXRT_IF_MODEL(vec3_t n_wind = n; bool msmooth = part && part->smooth; (void)n_wind; /* (shadows only) */
                   if (msmooth) n = vec3_dotw_units(d, part->ns) > 0 ? vec3_neg_unit(part->ns) : part->ns;)
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
-    uint8_t bits = 0;
+    unsigned bits = 0;
     (void)kind, (void)index; /* only shadow rays need to know the object */
+    const shade_plane_light_t *pls = NULL; /* a plane's entries of the frame's tables */
+    SHADE_IF_CULL(if (SHADE_HEIGHTS && kind == GEOM_PLANE && k && k->cull) pls = k->cull->pl + (size_t)index * FXRT_MAX_LIGHTS;)
     const light_t *L = w->lights;
-    for (uint8_t i = 0; i < w->n_lights; i++, L++) {
+    for (unsigned i = 0, n_lights = w->n_lights; i < n_lights; i++, L++) {
         vec3_t l;
         num_t dist, va[3];
-        if (shade_light_dir(L, *pp, &l, &dist, NULL, va) == SHADE_DARK)
+        if (shade_light_dir(L, pp, &l, &dist, NULL, va) == SHADE_DARK)
             continue;
         numw_t ndlw = vec3_dotw_units(n, l);
         if (ndlw <= 0)
@@ -303,9 +302,9 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
             FXRT_IF_SMOOTH(if (smooth && L->shadows && vec3_dotw_units(n_face, l) <= 0) continue;) /* the terminator */
             FXRT_IF_MODEL(if (msmooth && L->shadows && vec3_dotw_units(n_wind, l) <= 0) continue;)
         }
-        if (shade_shadowed(w, kind, index GEOM_PART_ARG(part), obj, inside, pp, L, i, &l, dist, k, NULL, va))
+        if (shade_shadowed(w, kind, index GEOM_PART_ARG(part), obj, inside, pp, L, i, &l, dist, k, pls, NULL, va))
             continue;
-        bits = (uint8_t)(bits | (1u << i));
+        bits |= 1u << i;
         if (!lit || clear)
             continue;
         num_t ndl = numw_round_fits(ndlw); /* n, l unit: |n . l| < 2, no saturation */
@@ -316,7 +315,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
 #endif
     }
     if (mask)
-        *mask = bits;
+        *mask = (uint8_t)bits;
     return c;
 }
 
@@ -344,37 +343,48 @@ shade_height_t shade_plane_height(const world_t *w, uint16_t index, const light_
 void shade_plane_heights(const world_t *w, shadow_table_t *t)
 {
     FXRT_IF_PLANE(for (uint16_t j = 0; SHADE_HEIGHTS && j < w->n_planes; j++) for (uint8_t i = 0; i < w->n_lights; i++)
-                      t->h[(size_t)j * FXRT_MAX_LIGHTS + i] = shade_plane_height(w, j, &w->lights[i]);)
+                      t->pl[(size_t)j * FXRT_MAX_LIGHTS + i].h = shade_plane_height(w, j, &w->lights[i]);)
     (void)w, (void)t;
 }
 
-/* shade_lights for a Lambert plane (k not NULL; shade_sum's choice,
- * shade_sum.h). Lambert's term needs only n . l, and for a point or spot
- * light that is h / |v|, v = L - p, with h = n . (L - a) the same at
- * every point of the plane (shade_plane_height; once per frame in the
- * frame's tables, where it has them): one inverse square root and one
- * product (fx_inv3, fx_inv3_mul) instead of the unit vector l and a dot
- * product; l is made only for a shadow ray. */
-color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *pp,
-                           const vec3_t *n_geo_p, int8_t facing, const vec3_t *dp, const shade_k_t *k, uint8_t *mask)
+void shade_flat_prep(const world_t *w, shade_flat_t *f, const shade_k_t *k)
+{
+    f->lambert = f->kind == GEOM_PLANE && f->obj->mat.kind == MATERIAL_LAMBERT && k;
+    f->pls = NULL;
+    SHADE_IF_CULL(if (SHADE_HEIGHTS && f->lambert && k->cull) f->pls = k->cull->pl + (size_t)f->index * FXRT_MAX_LIGHTS;)
+    (void)w;
+}
+
+/* shade_lights for Lambert plane `index` (obj) with constants k; pls: its
+ * entries of the frame's tables (NULL: none).
+ * Lambert's term needs only n . l, and for a point or spot light that is
+ * h / |v|, v = L - p, with h = n . (L - a) the same at every point of the
+ * plane (shade_plane_height; once per frame in the frame's tables, where
+ * it has them): one inverse square root and one product (fx_inv3,
+ * fx_inv3_mul) instead of the unit vector l and a dot product; l is made
+ * only for a shadow ray. The loop keeps each light's n . l, and the
+ * colour is summed after it, in the lights' order (the same values): the
+ * loop, with its calls, keeps no colour live. */
+static inline __attribute__((always_inline)) color_t shade_plane_sum(const world_t *w, const geom_common_t *obj,
+                                                                     uint16_t index, const shade_k_t *k,
+                                                                     const shade_plane_light_t *pls, const vec3_t *pp,
+                                                                     bool inside, uint8_t *mask)
 {
     if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
         return k->ambient;
-    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : facing != 0;
     int side = inside ? -1 : 1;
-    const shade_height_t *hk = NULL;
-    SHADE_IF_CULL(if (k->cull && SHADE_HEIGHTS) hk = k->cull->h + (size_t)index * FXRT_MAX_LIGHTS;)
-    color_t c = k->ambient;
-    uint8_t bits = 0;
+    num_t ndls[FXRT_MAX_LIGHTS];
+    unsigned bits = 0, n = w->n_lights;
     const light_t *L = w->lights;
-    for (uint8_t i = 0; i < w->n_lights; i++, L++) {
+    for (unsigned i = 0; i < n; i++, L++) {
         vec3_t l;
-        num_t dist, va[3], ndl;
+        num_t dist, va[3], ndl = NUM_ZERO;
         num_inv3_t iv;
         int how = SHADE_DIR;
+        ndls[i] = NUM_ZERO;
         if (L->kind == LIGHT_DIRECTIONAL) {
             /* n . l, turned to the ray's side: no product at all. */
-            numw_sticky_t s = hk ? hk[i].ndl : shade_plane_height(w, index, L).ndl;
+            numw_sticky_t s = pls ? pls[i].h.ndl : shade_plane_height(w, index, L).ndl;
             s = inside ? -s : s;
             if (s <= 0)
                 continue; /* behind the surface: no shadow ray either */
@@ -382,32 +392,54 @@ color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t 
             l = L->dir, dist = NUM_MAX;
             va[0] = va[1] = va[2] = NUM_ZERO; /* (unused) */
         } else {
-            how = shade_light_dir(L, *pp, &l, &dist, &iv, va);
+            how = shade_light_dir(L, pp, &l, &dist, &iv, va);
             if (how == SHADE_DARK)
                 continue;
             if (how == SHADE_INV) {
-                shade_height_t h = hk ? hk[i] : shade_plane_height(w, index, L);
+                shade_height_t h = pls ? pls[i].h : shade_plane_height(w, index, L);
                 if (numw_mant_sign(h.h) != side)
                     continue; /* behind the surface: no shadow ray either */
                 ndl = num_inv3_mul(&iv, h.h); /* |n . l| <= 1 + 1 LSB */
                 ndl = inside ? num_neg_fits(ndl) : ndl;
             } else {
                 /* beyond SHADE_FAR_DIST (shade_light_far's l) */
-                numw_t ndlw = vec3_dotw_units(inside ? vec3_neg_unit(*n_geo_p) : *n_geo_p, l);
-                if (ndlw <= 0)
-                    continue;
-                ndl = numw_round_fits(ndlw);
+                FXRT_IF_PLANE(const vec3_t *n_geo = &w->planes[index].n;
+                              numw_t ndlw = vec3_dotw_units(inside ? vec3_neg_unit(*n_geo) : *n_geo, l);
+                              if (ndlw <= 0) continue; ndl = numw_round_fits(ndlw);)
             }
         }
-        if (shade_shadowed(w, GEOM_PLANE, index GEOM_PART_ARG(NULL), obj, inside, pp, L, i, &l, dist, k,
+        if (shade_shadowed(w, GEOM_PLANE, index GEOM_PART_ARG(NULL), obj, inside, pp, L, i, &l, dist, k, pls,
                            how == SHADE_INV ? &iv : NULL, va))
             continue;
-        bits = (uint8_t)(bits | (1u << i));
-        c = shade_madd(c, k->kd[i], ndl);
+        bits |= 1u << i;
+        ndls[i] = ndl;
     }
+    color_t c = k->ambient;
+    for (unsigned i = 0; i < n; i++)
+        if (bits & (1u << i))
+            c = shade_madd(c, k->kd[i], ndls[i]);
     if (mask)
-        *mask = bits;
+        *mask = (uint8_t)bits;
     return c;
+}
+
+color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
+                         uint8_t *mask)
+{
+    numw_t rn;
+    vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
+    FXRT_COUNT(shaded);
+    return shade_plane_sum(w, f->obj, f->index, k, f->pls, &p, rn > 0, mask);
+}
+
+/* (shade_sum.h) For a Lambert plane with constants k. */
+color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *pp,
+                           const vec3_t *n_geo_p, int8_t facing, const vec3_t *dp, const shade_k_t *k, uint8_t *mask)
+{
+    const shade_plane_light_t *pls = NULL;
+    SHADE_IF_CULL(if (SHADE_HEIGHTS && k->cull) pls = k->cull->pl + (size_t)index * FXRT_MAX_LIGHTS;)
+    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : facing != 0;
+    return shade_plane_sum(w, obj, index, k, pls, pp, inside, mask);
 }
 
 #if !FX_HAVE_UMULL

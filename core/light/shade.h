@@ -113,14 +113,19 @@ typedef union {
     numw_mant_t h;
     numw_sticky_t ndl;
 } shade_height_t;
-/* The frame's shadow-ray tables: the cull table, and the current row's
- * masks, rows[plane * FXRT_MAX_LIGHTS + light]. */
+/* What the frame keeps per plane and light, side by side, so that one
+ * pointer finds a plane's (shade_flat_t): the current row's mask (row,
+ * where SHADOW_ROWS; else 0) and the height (h, shade_plane_height, once
+ * per frame: shade_plane_heights). */
+typedef struct {
+    uint32_t row;
+    shade_height_t h;
+} shade_plane_light_t;
+/* The frame's shadow-ray tables: the cull table, and per plane and light
+ * (pl[plane * FXRT_MAX_LIGHTS + light]) the row's mask and the height. */
 typedef struct {
     shadow_cull_t cull[SHADOW_CULL ? FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS : 1];
-    uint32_t rows[SHADOW_ROWS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
-    /* h[plane * FXRT_MAX_LIGHTS + light]: shade_plane_height, once per
-     * frame (shade_plane_heights). */
-    shade_height_t h[SHADE_HEIGHTS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
+    shade_plane_light_t pl[SHADE_HEIGHTS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
 } shadow_table_t;
 /* The masks of image row y (counted from the bottom) of a perspective
  * camera cam, for every plane and light of w; all zero for another view.
@@ -191,8 +196,36 @@ typedef struct {
     const vec3_t *n;
     uint16_t index;
     uint8_t kind;
+    /* A Lambert plane with constants (shade_flat_prep): its light sum
+     * takes shade_flat_plane, and pls points to its entries of the
+     * frame's tables (NULL: the frame keeps none). */
+    bool lambert;
+    const shade_plane_light_t *pls;
 } shade_flat_t;
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
+/* Set f->lambert and f->pls for f's object with constants k (NULL: none). */
+void shade_flat_prep(const world_t *w, shade_flat_t *f, const shade_k_t *k);
+/* shade_flat_k's value for a Lambert plane (f->lambert, k its constants)
+ * along a camera ray: its hit point, then shade_lights_plane's light sum
+ * (and mask), with what the light sum needs of the frame found once per
+ * plane (shade_flat_prep) instead of at every pixel. */
+color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
+                         uint8_t *mask);
+
+/* A camera ray's point on the plane of a FLAT form's object with unit
+ * normal n, from the ray's origin o and its direction r of any length
+ * (cam_ray_raw's, not normalised): o + (num / (r . n)) r with num =
+ * (a - o) . n prepared as a ratio (geom_flat_num); *rn gets r . n. Without
+ * the unit direction's rounding (its 0.5 LSB per component, times t) the
+ * point is within 0.5 LSB + 2^-29 |p - o| per component in Q16.16. */
+static inline __attribute__((always_inline)) vec3_t shade_flat_point(const numw_ratio_num_t *num, const vec3_t *o,
+                                                                     const vec3_t *r, const vec3_t *n, numw_t *rn)
+{
+    *rn = vec3_dotw_unit(*r, *n);
+    numw_ratio_t q = numw_ratio_by(num, *rn);
+    return vec3_add(*o, vec3_make(num_ratio_mul(&q, r->x), num_ratio_mul(&q, r->y), num_ratio_mul(&q, r->z)));
+}
+
 
 /* shade_object_k for model `index` along a camera ray whose nearest
  * triangle tri is known (the visibility pass found it): that triangle is

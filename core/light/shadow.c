@@ -288,9 +288,10 @@ __attribute__((unused)) static bool shadow_rows_light(const light_t *L)
     return L->shadows;
 }
 
-/* Plane pl's masks on the row of rays f + ix u (|ix| <= ixe), one per light. */
+/* Plane pl's masks on the row of rays f + ix u (|ix| <= ixe), one per light
+ * (pls[i].row). */
 __attribute__((unused)) static void shadow_rows_plane(const world_t *w, const cam_t *cam, vec3_t f, int32_t ixe,
-                                                      vec3_t m1, const geom_plane_t *pl, uint32_t *rows)
+                                                      vec3_t m1, const geom_plane_t *pl, shade_plane_light_t *pls)
 {
     /* The farthest hit of the row: at an end, each in front. */
     vec3_t e = cam->e;
@@ -310,15 +311,15 @@ __attribute__((unused)) static void shadow_rows_plane(const world_t *w, const ca
     for (uint8_t i = 0; i < w->n_lights; i++) {
         const light_t *L = &w->lights[i];
         if (shadow_rows_light(L))
-            rows[i] = L->kind == LIGHT_DIRECTIONAL ? shadow_row_mask_dir(w, L, e, fe, pl->n, m1, t_max)
+            pls[i].row = L->kind == LIGHT_DIRECTIONAL ? shadow_row_mask_dir(w, L, e, fe, pl->n, m1, t_max)
                                                    : shadow_row_mask(w, L, e, pl->n, pl->a, m1, t_max);
     }
 }
 
 void shadow_rows_clear(shadow_table_t *t)
 {
-    for (size_t i = 0; i < sizeof t->rows / sizeof t->rows[0]; i++)
-        t->rows[i] = 0;
+    for (size_t i = 0; i < sizeof t->pl / sizeof t->pl[0]; i++)
+        t->pl[i].row = 0;
 }
 
 void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_table_t *t)
@@ -335,7 +336,7 @@ void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_tab
     if (!vec3_normalize(&m1))
         return;
     FXRT_IF_PLANE(for (uint16_t j = 0; j < w->n_planes && SHADOW_ROWS; j++)
-                      shadow_rows_plane(w, cam, f, ixe, m1, &w->planes[j], t->rows + (size_t)j * FXRT_MAX_LIGHTS);)
+                      shadow_rows_plane(w, cam, f, ixe, m1, &w->planes[j], t->pl + (size_t)j * FXRT_MAX_LIGHTS);)
     (void)w, (void)ixe;
 }
 

@@ -446,6 +446,18 @@ fx_t fxw_ratio_mul_wide(const fxw_ratio_t *q, fx_t x)
         return fx_signed_sat(UINT64_MAX, neg);
     uint64_t p = fx_umul32(q->m, fx_uabs32(x)); /* <= 2^62 */
     int e = q->e;
+    if (e >= 1 && e <= 32) {
+        /* The usual case here (a plane's point beyond t = 1): the rounded
+         * (p + 2^(e-1)) >> e in 32-bit words, the same value. It is at
+         * least 2^31, and saturates, exactly when hi >> (e - 1) is not 0. */
+        uint32_t lo = (uint32_t)p, hi = (uint32_t)(p >> 32), half = (uint32_t)1 << (e - 1);
+        lo += half;
+        hi += lo < half ? 1u : 0u; /* <= 2^30 + 1 (m <= 2^31) */
+        if (hi >> (e - 1))
+            return neg ? FX_MIN : FX_MAX;
+        uint32_t r = (hi << (32 - e)) | (lo >> (e - 1) >> 1);
+        return neg ? -(fx_t)r : (fx_t)r;
+    }
     if (e >= 64)
         return 0; /* p 2^-e < 1/4 */
     if (e >= 1)

@@ -213,12 +213,17 @@ void cam_ray(const cam_t *cam, int32_t x, int32_t y, ray_t *ray)
     cam_ray_unit(cam, ray);
 }
 
-void cam_row(const cam_t *cam, int32_t y, cam_row_t *row)
+void cam_row(const cam_t *cam, int32_t y, cam_row_t *row, ray_t *ray)
 {
     int32_t iy = 2 * y - cam->height + 1;
     row->y = y;
     row->direct = cam->kind == CAM_PERSPECTIVE && cam->small;
     row->viy = vec3_make(num_mul_int_fits(cam->v.x, iy), num_mul_int_fits(cam->v.y, iy), num_mul_int_fits(cam->v.z, iy));
+    if (NUM_EXACT) /* (cam_row_ray's sum, in another order: exact) */
+        row->viy = vec3_make(num_add_fits(cam->fwd.x, row->viy.x), num_add_fits(cam->fwd.y, row->viy.y),
+                             num_add_fits(cam->fwd.z, row->viy.z));
+    if (row->direct)
+        ray->o = cam->e;
 }
 
 void cam_ray_unit(const cam_t *cam, ray_t *ray)

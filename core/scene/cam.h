@@ -101,16 +101,19 @@ void cam_ray_raw(const cam_t *cam, int32_t x, int32_t y, ray_t *ray);
 void cam_ray_unit(const cam_t *cam, ray_t *ray);
 
 /* A row of camera rays (the shading pass): cam_row forms row y's part
- * (2y - H + 1) v once; cam_row_ray then gives cam_ray_raw's ray for (x, y),
- * the same values: fwd + ((2x - W + 1) u + (2y - H + 1) v), exact in
- * Q16.16 where cam->small holds (else, and for an orthographic camera, it
- * calls cam_ray_raw). */
+ * (2y - H + 1) v once, and where the row is direct, the origin of the
+ * ray `ray` the row's pixels use (the eye); cam_row_ray then gives
+ * cam_ray_raw's ray for (x, y) in that ray, the same values: fwd + ((2x
+ * - W + 1) u + (2y - H + 1) v), exact in Q16.16 where cam->small holds
+ * (else, and for an orthographic camera, it calls cam_ray_raw, which
+ * sets the whole ray). In Q16.16 the row keeps fwd + (2y - H + 1) v as
+ * one vector: integer sums in any order are the same. */
 typedef struct {
-    vec3_t viy;   /* (2y - H + 1) v */
+    vec3_t viy;   /* (2y - H + 1) v; in Q16.16 fwd + (2y - H + 1) v */
     int32_t y;
     bool direct;  /* a perspective camera with cam->small */
 } cam_row_t;
-void cam_row(const cam_t *cam, int32_t y, cam_row_t *row);
+void cam_row(const cam_t *cam, int32_t y, cam_row_t *row, ray_t *ray);
 static inline void cam_row_ray(const cam_t *cam, const cam_row_t *row, int32_t x, ray_t *ray)
 {
     if (!row->direct) {
@@ -118,10 +121,14 @@ static inline void cam_row_ray(const cam_t *cam, const cam_row_t *row, int32_t x
         return;
     }
     int32_t ix = 2 * x - cam->width + 1;
-    ray->o = cam->e;
-    ray->d = vec3_make(num_add_fits(cam->fwd.x, num_add_fits(num_mul_int_fits(cam->u.x, ix), row->viy.x)),
-                       num_add_fits(cam->fwd.y, num_add_fits(num_mul_int_fits(cam->u.y, ix), row->viy.y)),
-                       num_add_fits(cam->fwd.z, num_add_fits(num_mul_int_fits(cam->u.z, ix), row->viy.z)));
+    if (NUM_EXACT)
+        ray->d = vec3_make(num_add_fits(row->viy.x, num_mul_int_fits(cam->u.x, ix)),
+                           num_add_fits(row->viy.y, num_mul_int_fits(cam->u.y, ix)),
+                           num_add_fits(row->viy.z, num_mul_int_fits(cam->u.z, ix)));
+    else
+        ray->d = vec3_make(num_add_fits(cam->fwd.x, num_add_fits(num_mul_int_fits(cam->u.x, ix), row->viy.x)),
+                           num_add_fits(cam->fwd.y, num_add_fits(num_mul_int_fits(cam->u.y, ix), row->viy.y)),
+                           num_add_fits(cam->fwd.z, num_add_fits(num_mul_int_fits(cam->u.z, ix), row->viy.z)));
 }
 
 #endif
