@@ -97,8 +97,6 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, ray_t
 
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask)
 {
-    if (f->lambert)
-        return shade_flat_plane(w, f, k, ray, mask);
     if (f->obj->mat.kind == MATERIAL_FLAT && !mask)
         return f->obj->color;
     geom_kind_t kind = (geom_kind_t)f->kind;

@@ -222,6 +222,15 @@ static inline __attribute__((always_inline)) int shade_light_dir(const light_t *
     return SHADE_DIR;
 }
 
+/* Plane `index`'s entries of the frame's tables (shade.h), from its
+ * constants k, or NULL where the frame keeps none. */
+static inline const shade_plane_light_t *shade_plane_entries(const shade_k_t *k, uint16_t index)
+{
+    SHADE_IF_CULL(if (SHADE_HEIGHTS && k && k->cull) return k->cull->pl + (size_t)index * FXRT_MAX_LIGHTS;)
+    (void)k, (void)index;
+    return NULL;
+}
+
 /* Is light i (L) blocked from p by an object (shadow_blocked), where the
  * frame's tables do not already say it is not? pls: the object's entries
  * of the frame's tables, a plane's (NULL: none), whose row masks say so.
@@ -287,8 +296,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
     unsigned bits = 0;
     (void)kind, (void)index; /* only shadow rays need to know the object */
-    const shade_plane_light_t *pls = NULL; /* a plane's entries of the frame's tables */
-    SHADE_IF_CULL(if (SHADE_HEIGHTS && kind == GEOM_PLANE && k && k->cull) pls = k->cull->pl + (size_t)index * FXRT_MAX_LIGHTS;)
+    const shade_plane_light_t *pls = kind == GEOM_PLANE ? shade_plane_entries(k, index) : NULL;
     const light_t *L = w->lights;
     for (unsigned i = 0, n_lights = w->n_lights; i < n_lights; i++, L++) {
         vec3_t l;
@@ -347,12 +355,10 @@ void shade_plane_heights(const world_t *w, shadow_table_t *t)
     (void)w, (void)t;
 }
 
-void shade_flat_prep(const world_t *w, shade_flat_t *f, const shade_k_t *k)
+void shade_flat_prep(shade_flat_t *f, const shade_k_t *k)
 {
     f->lambert = f->kind == GEOM_PLANE && f->obj->mat.kind == MATERIAL_LAMBERT && k;
-    f->pls = NULL;
-    SHADE_IF_CULL(if (SHADE_HEIGHTS && f->lambert && k->cull) f->pls = k->cull->pl + (size_t)f->index * FXRT_MAX_LIGHTS;)
-    (void)w;
+    f->pls = f->lambert ? shade_plane_entries(k, f->index) : NULL;
 }
 
 /* shade_lights for Lambert plane `index` (obj) with constants k; pls: its
@@ -436,8 +442,7 @@ color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_
 color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *pp,
                            const vec3_t *n_geo_p, int8_t facing, const vec3_t *dp, const shade_k_t *k, uint8_t *mask)
 {
-    const shade_plane_light_t *pls = NULL;
-    SHADE_IF_CULL(if (SHADE_HEIGHTS && k->cull) pls = k->cull->pl + (size_t)index * FXRT_MAX_LIGHTS;)
+    const shade_plane_light_t *pls = shade_plane_entries(k, index);
     bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : facing != 0;
     return shade_plane_sum(w, obj, index, k, pls, pp, inside, mask);
 }

@@ -196,15 +196,15 @@ typedef struct {
     const vec3_t *n;
     uint16_t index;
     uint8_t kind;
-    /* A Lambert plane with constants (shade_flat_prep): its light sum
-     * takes shade_flat_plane, and pls points to its entries of the
-     * frame's tables (NULL: the frame keeps none). */
+    /* A Lambert plane with constants (shade_flat_prep): the shading pass
+     * takes shade_flat_plane for it (shade_flat_k's value), and pls points
+     * to its entries of the frame's tables (NULL: the frame keeps none). */
     bool lambert;
     const shade_plane_light_t *pls;
 } shade_flat_t;
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
 /* Set f->lambert and f->pls for f's object with constants k (NULL: none). */
-void shade_flat_prep(const world_t *w, shade_flat_t *f, const shade_k_t *k);
+void shade_flat_prep(shade_flat_t *f, const shade_k_t *k);
 /* shade_flat_k's value for a Lambert plane (f->lambert, k its constants)
  * along a camera ray: its hit point, then shade_lights_plane's light sum
  * (and mask), with what the light sum needs of the frame found once per
