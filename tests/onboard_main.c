@@ -128,8 +128,9 @@ static int onb_run(const onb_scene_t *s, uint64_t *ticks)
 }
 
 /* The core's inline assembly (Armv6-M: fx_lin2_small, fx128_add_to,
- * fx_add, fx_sub; Armv7-M: fx_lin2_small, fx128_add, fx128_sub; the C
- * elsewhere) against
+ * fx_add, fx_sub; Armv7-M: fx_lin2_small, fx128_add, fx128_sub,
+ * port_channel_q16, and port_channel_f32 on the M4F; the C elsewhere)
+ * against
  * plain 64-bit C arithmetic (libgcc's products on the M0), on edge values
  * and pseudo-random ones: the number of mismatches. */
 static uint32_t onb_rng_state = 0x9E3779B9u;
@@ -176,6 +177,25 @@ __attribute__((noinline)) static uint32_t onb_check_arith(void)
         int32_t wd = ed > INT32_MAX ? INT32_MAX : ed < INT32_MIN ? INT32_MIN : (int32_t)ed;
         bad += fx_add(p, q) != ws;
         bad += fx_sub(p, q) != wd;
+        /* A colour channel (port_channel_q16: USAT on Armv7-M): c rounded
+         * half up in 64 bits, then clamped; c drawn from every int32 and
+         * from the channel's range and a little beyond. */
+        int32_t c = (n & 1) ? (int32_t)onb_word() : (int32_t)(onb_rng() % (260u << 16)) - (2 << 16);
+        int64_t cr = ((int64_t)c + 32768) >> 16;
+        bad += port_channel_q16(c) != (cr < 0 ? 0 : cr > 255 ? 255 : cr);
+        /* The same for a float (port_channel_f32: VCVT and USAT on the
+         * M4F): any bit pattern (NaN, infinities, subnormals), or a value
+         * in -8..264 in steps of 2^-12. The sum c + 1/2 is the float
+         * one, as specified; the clamp is compared in double. */
+        union {
+            uint32_t u;
+            float f;
+        } fb;
+        fb.u = onb_word();
+        float cf = (n & 2) ? fb.f : (float)((int32_t)(onb_rng() % (272u << 12)) - (8 << 12)) / 4096.0f;
+        volatile float half = 0.5f;
+        double t = (double)(cf + half);
+        bad += port_channel_f32(cf) != (!(t >= 1.0) ? 0 : t >= 256.0 ? 255 : (uint32_t)t);
     }
     return bad;
 }
@@ -188,7 +208,7 @@ int main(void)
     if (arith) {
         semihost_puts("error=arith: ");
         semihost_put_u64(arith);
-        semihost_puts(" mismatches of fx_lin2_small / fx128_add / fx128_sub / fx128_add_to / fx_add / fx_sub against 64-bit C\n");
+        semihost_puts(" mismatches of fx_lin2_small / fx128_add / fx128_sub / fx128_add_to / fx_add / fx_sub / port_channel_q16 / port_channel_f32 against 64-bit C\n");
         failed = 1;
     }
     uint64_t total = 0;

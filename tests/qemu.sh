@@ -248,17 +248,22 @@ check "a scene with the same build name: its own frame, not the previous scene's
     cmp -s "$out/other-host-20.ppm" "$BUILD/qemu/mps2-an385/tri_angle-q16-20x10.ppm"
 
 # Float and double builds on target (the float frame is IEEE-exact too).
-NUMBER_RUNS="mps2-an385:double mps2-an386:float microbit:float"
-full && NUMBER_RUNS="mps2-an385:float $NUMBER_RUNS"
-for bn in $NUMBER_RUNS; do
-    b=${bn%:*} n=${bn#*:}
-    "$FXRT" render scenes/abb9-two-spheres.scene --number $n --size $SIZE -o "$out/host-$n.ppm"
-    check "$b $n run" run_fw SCENE=scenes/abb9-two-spheres.scene BOARD=$b NUMBER=$n SIZE=$SIZE
-    echo "$b $n: $(grep instructions= "$out/run.log")"
-    check "$b $n frame identical to the host $n render" cmp -s "$out/host-$n.ppm" "$BUILD/qemu/$b/abb9-two-spheres-$n-$SIZE.ppm"
+# The M4F's float run is a lit scene: its channels take every value, and
+# its hard-float build rounds them with port_channel_f32's VCVT and USAT.
+NUMBER_RUNS="mps2-an385:double:abb9-two-spheres mps2-an386:float:lit/shadows microbit:float:abb9-two-spheres"
+full && NUMBER_RUNS="mps2-an385:float:abb9-two-spheres $NUMBER_RUNS"
+for bns in $NUMBER_RUNS; do
+    IFS=: read -r b n sc <<<"$bns"
+    name=$(basename "$sc")
+    "$FXRT" render scenes/$sc.scene --number $n --size $SIZE -o "$out/host-$n.ppm"
+    check "$b $n $name run" run_fw SCENE=scenes/$sc.scene BOARD=$b NUMBER=$n SIZE=$SIZE
+    echo "$b $n $name: $(grep instructions= "$out/run.log")"
+    check "$b $n $name frame identical to the host $n render" cmp -s "$out/host-$n.ppm" "$BUILD/qemu/$b/$name-$n-$SIZE.ppm"
 done
 check "M4F float build uses FPU instructions" \
-    bash -c "arm-none-eabi-objdump -d $BUILD/fw/mps2-an386/abb9-two-spheres-float-$SIZE-full/fxrt.elf | grep -qE 'v(sqrt|mul|add)[a-z]*\.f32'"
+    bash -c "arm-none-eabi-objdump -d $BUILD/fw/mps2-an386/shadows-float-$SIZE-full/fxrt.elf | grep -qE 'v(sqrt|mul|add)[a-z]*\.f32'"
+check "M4F float build rounds its channels with VCVT and USAT (port_channel_f32)" \
+    bash -c "arm-none-eabi-objdump -d $BUILD/fw/mps2-an386/shadows-float-$SIZE-full/fxrt.elf | grep -A2 'vcvt.s32.f32' | grep -q usat"
 
 # Streaming on the big boards and RGB565 full frames.
 check "mps2-an385 streaming run" run_fw SCENE=scenes/abb7-box.scene BOARD=mps2-an385 SIZE=$SIZE FB=stream

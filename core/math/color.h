@@ -80,11 +80,7 @@ static inline color_t color_scale(color_t a, num_t s)
  * conversion truncates a non-negative value. Inline: once per pixel. */
 static inline uint8_t color_channel(num_t c)
 {
-    if (!(c > NUM_ZERO))
-        return 0;
-    if (c >= COLOR_MAX)
-        return 255;
-    return (uint8_t)num_round_uint(c);
+    return num_channel8(c); /* (port/asm.h: without branches on the M3 and M4F) */
 }
 static inline rgb8_t color_to_rgb8(color_t c)
 {

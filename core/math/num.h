@@ -197,7 +197,8 @@ static inline num_t num_mul_int_fits(num_t a, int32_t i) { return (fx_t)((uint32
  * lies in [0, 2 lim] exactly when |d| <= lim). */
 static inline bool numw_abs_gt(numw_t d, numw_t lim) { return (uint64_t)d + (uint64_t)lim > 2 * (uint64_t)lim; }
 /* c rounded to the nearest integer, ties up, for 0 < c < 32767. */
-static inline uint32_t num_round_uint(num_t c) { return ((uint32_t)c + FX_HALF) >> FX_FRAC_BITS; }
+/* c clamped to 0..255 and rounded half up (math/color.h, color_channel). */
+static inline uint8_t num_channel8(num_t c) { return port_channel_q16(c); }
 /* v / |v| in place, each component within 0.504 LSB (fx_normalize3: no
  * division, no 64-bit root), or false (v unchanged) for the zero vector;
  * num_normalize3_len also gives |v| within 2^-24 relative + 0.5 LSB
@@ -250,6 +251,7 @@ typedef float num_t;
 #define NUM(x) ((float)(x))
 #define NUM_MAX __FLT_MAX__
 static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrtf(a) : 0.0f; }
+static inline uint8_t num_channel8(num_t c) { return port_channel_f32(c); }
 /* A 32-bit key that grows with a > 0: the bits of a positive IEEE number
  * grow with it (a double's top 32 of them). */
 static inline int32_t num_order_key(num_t a)
@@ -267,6 +269,7 @@ typedef double num_t;
 #define NUM(x) ((double)(x))
 #define NUM_MAX __DBL_MAX__
 static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrt(a) : 0.0; }
+static inline uint8_t num_channel8(num_t c) { return !(c > 0.0) ? 0 : c >= 255.0 ? 255 : (uint8_t)(uint32_t)(c + 0.5); }
 static inline int32_t num_order_key(num_t a)
 {
     union {
@@ -348,7 +351,6 @@ static inline num_t num_ratio_mul(const numw_ratio_t *q, num_t x) { return *q * 
 static inline numw_t numw_muldiv_int(num_t a, int32_t m, int32_t d) { return a * (num_t)m / (num_t)d; }
 static inline numw_t numw_mul_int(numw_t w, int32_t i) { return w * (num_t)i; }
 static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b) { return a < t * b; }
-static inline uint32_t num_round_uint(num_t c) { return (uint32_t)(c + NUM(0.5)); }
 static inline bool numw_abs_gt(numw_t d, numw_t lim) { return d > lim || d < -lim; }
 static inline num_t num_mul_fits(num_t a, num_t b) { return a * b; }
 static inline num_t num_add_fits(num_t a, num_t b) { return a + b; }

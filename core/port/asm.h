@@ -7,6 +7,8 @@
  *
  *   port_add_sat32, port_sub_sat32  a + b, a - b saturating (int32)
  *   port_smul32, port_smlal32       a b, acc + a b (32 x 32 -> 64 bits)
+ *   port_channel_q16                a colour channel's 8-bit value (Q16.16)
+ *   port_channel_f32                the same for a float (hard float only)
  *   PORT_STORE3_LOOP(p, end, ...)   the row fill's three-word stores
  *   PORT_HAVE_LIN2                  1: port_lin2_small (Armv6-M, Armv7-M)
  *   PORT_HAVE_CHAIN128              1: PORT_CHAIN128 (Armv7-M)
@@ -41,6 +43,17 @@ static inline int64_t port_smul32_c(int32_t a, int32_t b)
 static inline int64_t port_smlal32_c(int64_t acc, int32_t a, int32_t b)
 {
     return (int64_t)((uint64_t)acc + (uint64_t)port_smul32_c(a, b));
+}
+/* A colour channel's 8-bit value (math/color.h, color_channel): c (in
+ * 1/255 units) clamped to 0..255 and rounded half up, floor(c + 1/2), for
+ * c in Q16.16 (any int32) or in float (any value: NaN gives 0). */
+static inline uint8_t port_channel_q16_c(int32_t c)
+{
+    return c <= 0 ? 0 : c >= (255 << 16) ? 255 : (uint8_t)(((uint32_t)c + 0x8000u) >> 16);
+}
+static inline uint8_t port_channel_f32_c(float c)
+{
+    return !(c > 0.0f) ? 0 : c >= 255.0f ? 255 : (uint8_t)(uint32_t)(c + 0.5f);
 }
 /* Store words x0, x1, x2 at p, p + 1, p + 2, p + 3, ... until p reaches
  * end (p + 3 k); p is advanced to end. */
@@ -95,6 +108,8 @@ static inline int64_t port_smlal32_c(int64_t acc, int32_t a, int32_t b)
 #define port_sub_sat32(a, b) PORT_SAT_ASM("subs", a, b)
 #define port_smul32 port_smul32_c
 #define port_smlal32 port_smlal32_c
+#define port_channel_q16 port_channel_q16_c
+#define port_channel_f32 port_channel_f32_c
 #define PORT_STORE3_LOOP PORT_STORE3_LOOP_THUMB
 
 #define PORT_LIN_TERM(lo_off, hi_off, f)                                                                   \
@@ -175,6 +190,41 @@ static inline __attribute__((always_inline)) int64_t port_smlal32(int64_t acc, i
 }
 #define PORT_STORE3_LOOP PORT_STORE3_LOOP_THUMB
 
+/* port_channel_q16 without a branch: with q = floor(c / 2^15) (no
+ * overflow, unlike c + 2^15), floor((q + 1) / 2) = floor((c + 2^15) /
+ * 2^16), and USAT clamps it to 0..255; 3 instructions, where gcc's C
+ * takes 6 with two branches. */
+static inline __attribute__((always_inline)) uint8_t port_channel_q16(int32_t c)
+{
+    int32_t t;
+    __asm__("asr %0, %1, #15\n\t"
+            "add %0, %0, #1\n\t"
+            "usat %0, #8, %0, asr #1"
+            : "=&r"(t)
+            : "r"(c));
+    return (uint8_t)t;
+}
+#if FXRT_PORT_V7M_VFP
+/* port_channel_f32 with single-precision VFP (the M4F): c + 1/2 as the
+ * twin adds it, then VCVT.S32 truncates towards zero and saturates (NaN
+ * gives 0) and USAT clamps to 0..255; 4 instructions, where gcc's C takes
+ * 12 with two compares and branches. The same value for every c: c <= 0
+ * or NaN gives 0 both ways, c >= 255 gives 255, and in between both
+ * truncate c + 1/2. */
+static inline __attribute__((always_inline)) uint8_t port_channel_f32(float c)
+{
+    float t = c + 0.5f;
+    uint32_t u;
+    __asm__("vcvt.s32.f32 %1, %1\n\t"
+            "vmov %0, %1\n\t"
+            "usat %0, #8, %0"
+            : "=r"(u), "+t"(t));
+    return (uint8_t)u;
+}
+#else
+#define port_channel_f32 port_channel_f32_c
+#endif
+
 /* port_lin2_small: per factor f, the low word's product accumulated into
  * the sum by UMLAL, then the high word's (modulo 2^32) and the low word
  * times f's sign word (-1 or 0: f sign-extended to 64 bits) into its high
@@ -225,6 +275,8 @@ static inline __attribute__((always_inline)) uint64_t port_lin2_small(const int6
 #define port_sub_sat32 port_sub_sat32_c
 #define port_smul32 port_smul32_c
 #define port_smlal32 port_smlal32_c
+#define port_channel_q16 port_channel_q16_c
+#define port_channel_f32 port_channel_f32_c
 #define PORT_STORE3_LOOP PORT_STORE3_LOOP_C
 #define PORT_HAVE_LIN2 0
 #define PORT_HAVE_CHAIN128 0

@@ -54,6 +54,13 @@
 #else
 #define FXRT_PORT_V7M_ASM 0
 #endif
+/* Armv7-M with single-precision VFP registers (the M4F): port/asm.h's
+ * float kernels. */
+#if FXRT_PORT_V7M_ASM && defined(__ARM_FP) && (__ARM_FP & 4)
+#define FXRT_PORT_V7M_VFP 1
+#else
+#define FXRT_PORT_V7M_VFP 0
+#endif
 /* A compile-time check, in C11 and in a C++ program that includes fxrt.h;
  * and the C linkage that fxrt.h gives its declarations in a C++ program
  * (the core is C: tests/examples.sh links a C++ program against it). */
