@@ -57,7 +57,7 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
     f->ratio = numw_ratio_num(num);
     f->index = o->index;
     f->kind = o->geom;
-    shade_flat_prep(f, o->flat ? NULL : &r->shade.k[oi]);
+    shade_flat_prep(f, w, o->flat ? NULL : &r->shade.k[oi]);
     r->shade.flat_of = oi;
     return true;
 }

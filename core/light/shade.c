@@ -355,10 +355,34 @@ void shade_plane_heights(const world_t *w, shadow_table_t *t)
     (void)w, (void)t;
 }
 
-void shade_flat_prep(shade_flat_t *f, const shade_k_t *k)
+void shade_flat_prep(shade_flat_t *f, const world_t *w, const shade_k_t *k)
 {
-    f->lambert = f->kind == GEOM_PLANE && f->obj->mat.kind == MATERIAL_LAMBERT && k;
+    f->lambert = f->kind == GEOM_PLANE && f->obj->mat.kind == MATERIAL_LAMBERT && k ? SHADE_FLAT_LAMBERT : 0;
     f->pls = f->lambert ? shade_plane_entries(k, f->index) : NULL;
+    unsigned dir = 0;
+    for (unsigned i = 0; f->lambert && i < w->n_lights; i++)
+        dir += w->lights[i].kind == LIGHT_DIRECTIONAL;
+    if (f->lambert && dir == w->n_lights)
+        f->lambert = SHADE_FLAT_DIRECTIONAL;
+}
+
+/* Under directional lights only (SHADE_FLAT_DIRECTIONAL), does no light
+ * need a shadow ray from the points of the plane with entries pls, on the
+ * current row and on the ray's side (inside: the back)? A light does not
+ * when its shadows are off, when its row mask is SHADOW_ROW_CLEAR, or
+ * when it lies behind that side. Then shade_plane_sum never reads the
+ * hit point: each light's n . l is the plane's (pls[i].h.ndl), and
+ * shade_shadowed returns false before it looks at p. */
+static inline bool shade_plane_row_unshadowed(const world_t *w, const shade_plane_light_t *pls, bool inside)
+{
+    const light_t *L = w->lights;
+    for (unsigned i = 0, n = w->n_lights; i < n; i++, L++) {
+        if (!FXRT_SHADOWS || !L->shadows || (SHADOW_ROWS && pls && pls[i].row & SHADOW_ROW_CLEAR))
+            continue;
+        if (!pls || (inside ? -pls[i].h.ndl : pls[i].h.ndl) > 0)
+            return false;
+    }
+    return true;
 }
 
 /* shade_lights for Lambert plane `index` (obj) with constants k; pls: its
@@ -433,8 +457,14 @@ color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_
                          uint8_t *mask)
 {
     numw_t rn;
-    vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
     FXRT_COUNT(shaded);
+    if (f->lambert == SHADE_FLAT_DIRECTIONAL) {
+        rn = vec3_dotw_unit(ray->d, *f->n); /* (the side: shade_flat_point's rn) */
+        if (shade_plane_row_unshadowed(w, f->pls, rn > 0))
+            return shade_plane_sum(w, f->obj, f->index, k, f->pls, NULL, rn > 0, mask);
+    }
+    FXRT_COUNT(plane_points);
+    vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
     return shade_plane_sum(w, f->obj, f->index, k, f->pls, &p, rn > 0, mask);
 }
 

@@ -198,17 +198,23 @@ typedef struct {
     uint8_t kind;
     /* A Lambert plane with constants (shade_flat_prep): the shading pass
      * takes shade_flat_plane for it (shade_flat_k's value), and pls points
-     * to its entries of the frame's tables (NULL: the frame keeps none). */
-    bool lambert;
+     * to its entries of the frame's tables (NULL: the frame keeps none).
+     * SHADE_FLAT_DIRECTIONAL: every light of the world is directional. */
+    uint8_t lambert;
     const shade_plane_light_t *pls;
 } shade_flat_t;
+enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2 };
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
-/* Set f->lambert and f->pls for f's object with constants k (NULL: none). */
-void shade_flat_prep(shade_flat_t *f, const shade_k_t *k);
+/* Set f->lambert and f->pls for f's object of world w with constants k
+ * (NULL: none). */
+void shade_flat_prep(shade_flat_t *f, const world_t *w, const shade_k_t *k);
 /* shade_flat_k's value for a Lambert plane (f->lambert, k its constants)
  * along a camera ray: its hit point, then shade_lights_plane's light sum
  * (and mask), with what the light sum needs of the frame found once per
- * plane (shade_flat_prep) instead of at every pixel. */
+ * plane (shade_flat_prep) instead of at every pixel. Under directional
+ * lights only, where no light needs a shadow ray on this row (each has
+ * shadows off, or its row mask is SHADOW_ROW_CLEAR), nothing in the sum
+ * depends on the point: the hit point is not made. */
 color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
                          uint8_t *mask);
 
