@@ -97,6 +97,15 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
     cam_row(cam, y, &r->shade.row, &r->shade.ray);
     uint32_t *keys = r->keys; /* (read once: the loop does not change it) */
     ray_t *ray = &r->shade.ray;
+    /* Where registers are many (not Armv6-M), the row and the camera's u
+     * and fwd in locals, which the calls below cannot change: no reload
+     * per pixel. Armv6-M reads them from the frame (its 2 KB stack). */
+    struct {
+        cam_row_t row;
+        vec3_t u, fwd;
+    } own = {r->shade.row, cam->u, cam->fwd};
+    const cam_row_t *cr = FXRT_PORT_SMALL_ISA ? &r->shade.row : &own.row;
+    const vec3_t *u = FXRT_PORT_SMALL_ISA ? &cam->u : &own.u, *fwd = FXRT_PORT_SMALL_ISA ? &cam->fwd : &own.fwd;
     for (int32_t x = 0; x < w; x++) {
         uint16_t oi = r->vis.painted[x];
         if (oi == RENDER_VIS_NONE) {
@@ -109,7 +118,10 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         if (!lit && !keys)
             continue;
         uint8_t mask = 0;
-        cam_row_ray(cam, &r->shade.row, x, ray);
+        if (cr->direct)
+            cam_row_dir(cr, u, fwd, 2 * x - w + 1, ray);
+        else
+            cam_ray_raw(cam, x, cr->y, ray);
         color_t c;
         FXRT_IF_MODEL(if (o->geom == GEOM_MODEL) /* its triangle: the visibility pass's (vis/rays.c) */
                       c = (cam_ray_unit(cam, ray), shade_model_k(r->vis.world, o->index, ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,

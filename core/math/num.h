@@ -213,7 +213,9 @@ typedef fx_mant_t numw_mant_t;
 static inline bool num_inv3(const num_t v[3], num_inv3_t *q, num_t *len) { return fx_inv3(v, q, len); }
 static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[3]) { fx_inv3_unit(q, v, u); }
 static inline numw_mant_t numw_mant(numw_t h) { return fx_mant64(h); }
-static inline int numw_mant_sign(numw_mant_t h) { return (h > 63) - (h < 0); } /* (m's sign: fx_mant_t) */
+/* Has h the sign of the side seen, negative for the back (inside), else
+ * positive? (m's sign: fx_mant_t) */
+static inline bool numw_mant_faces(numw_mant_t h, bool inside) { return inside ? h < 0 : h > 63; }
 static inline num_t num_inv3_mul(const num_inv3_t *q, numw_mant_t h) { return fx_inv3_mul(q, h); }
 /* A wide x (|x| < 2^44 LSB^2, so that (x >> 14) * 2 fits) kept to
  * 2^-3 LSB with a sticky bit (x's lower bits not all zero):
@@ -387,7 +389,7 @@ static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[
     u[2] = v[2] * q->inv;
 }
 static inline numw_mant_t numw_mant(numw_t h) { return h; }
-static inline int numw_mant_sign(numw_mant_t h) { return (h > 0) - (h < 0); }
+static inline bool numw_mant_faces(numw_mant_t h, bool inside) { return inside ? h < 0 : h > 0; }
 static inline num_t num_inv3_mul(const num_inv3_t *q, numw_mant_t h) { return h * q->inv; }
 typedef numw_t numw_sticky_t;
 static inline numw_sticky_t numw_sticky(numw_t x) { return x; }

@@ -114,21 +114,26 @@ typedef struct {
     bool direct;  /* a perspective camera with cam->small */
 } cam_row_t;
 void cam_row(const cam_t *cam, int32_t y, cam_row_t *row, ray_t *ray);
+/* cam_row_ray's direction for a direct row from the camera's u and fwd,
+ * given (a caller may keep copies of them in registers), and ix = 2x - W + 1. */
+static inline void cam_row_dir(const cam_row_t *row, const vec3_t *u, const vec3_t *fwd, int32_t ix, ray_t *ray)
+{
+    if (NUM_EXACT)
+        ray->d = vec3_make(num_add_fits(row->viy.x, num_mul_int_fits(u->x, ix)),
+                           num_add_fits(row->viy.y, num_mul_int_fits(u->y, ix)),
+                           num_add_fits(row->viy.z, num_mul_int_fits(u->z, ix)));
+    else
+        ray->d = vec3_make(num_add_fits(fwd->x, num_add_fits(num_mul_int_fits(u->x, ix), row->viy.x)),
+                           num_add_fits(fwd->y, num_add_fits(num_mul_int_fits(u->y, ix), row->viy.y)),
+                           num_add_fits(fwd->z, num_add_fits(num_mul_int_fits(u->z, ix), row->viy.z)));
+}
 static inline void cam_row_ray(const cam_t *cam, const cam_row_t *row, int32_t x, ray_t *ray)
 {
     if (!row->direct) {
         cam_ray_raw(cam, x, row->y, ray);
         return;
     }
-    int32_t ix = 2 * x - cam->width + 1;
-    if (NUM_EXACT)
-        ray->d = vec3_make(num_add_fits(row->viy.x, num_mul_int_fits(cam->u.x, ix)),
-                           num_add_fits(row->viy.y, num_mul_int_fits(cam->u.y, ix)),
-                           num_add_fits(row->viy.z, num_mul_int_fits(cam->u.z, ix)));
-    else
-        ray->d = vec3_make(num_add_fits(cam->fwd.x, num_add_fits(num_mul_int_fits(cam->u.x, ix), row->viy.x)),
-                           num_add_fits(cam->fwd.y, num_add_fits(num_mul_int_fits(cam->u.y, ix), row->viy.y)),
-                           num_add_fits(cam->fwd.z, num_add_fits(num_mul_int_fits(cam->u.z, ix), row->viy.z)));
+    cam_row_dir(row, &cam->u, &cam->fwd, 2 * x - cam->width + 1, ray);
 }
 
 #endif
