@@ -513,66 +513,88 @@ static void test_plane_heights(void)
     }
 }
 
-/* A lambert plane under directional lights only (light/shade.c,
- * shade_flat_plane): n . l is the same at every point, so where no light
- * needs a shadow ray on the row (shadows off, the row's mask clear, or
- * the light behind the side seen) the pixel's hit point is not made. The colour and mask are checked
- * against their value computed here in double; the hit points counted
- * (plane_points) against the plane's pixels and shadow rays. */
+/* A plane under directional lights only (light/shade_sum.h,
+ * shade_plane_row_unshadowed): where no light needs a shadow ray on the
+ * row (shadows off, the row's mask clear, or the light behind the side
+ * seen) nothing in the light sum depends on the point, so the pixel's
+ * hit point is not made: counted (plane_points) against the plane's
+ * pixels and shadow rays, for a lambert and a phong plane. The frame is
+ * checked against the general path, which the same world takes with a
+ * black point light added (it adds exactly 0 to every channel): the
+ * same pixels, and a hit point at every plane pixel; the lambert plane's
+ * colour and mask also against their value computed here in double. */
+static uint8_t img_general[W * H * 3];
+static void directional_world(int phong, int mode, bool black_point)
+{
+    fxrt_world_init(&world, COL(0.1, 0.1, 0.1));
+    world_set_ambient(&world, FRAC(0.25, 0.3, 0.35));
+    int32_t pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.55, 0.7, 0.35));
+    lit(pid, phong ? MATERIAL_PHONG : MATERIAL_LAMBERT, 24);
+    CHECK(world_add_sphere(&world, P(0.3, 1.0, 0.2), V(0.5), COL(0.9, 0.2, 0.1)) >= 0);
+    /* light 0 from above (shadows on in mode 1), light 1 from below
+     * (shadows on, but it lights the other side: no shadow ray) */
+    CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(-0.3, -1, -0.2), V(0), FRAC(0.9, 0.8, 0.6),
+                          mode > 0) == 0);
+    CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(0.2, 1, 0.1), V(0), FRAC(1, 1, 1), true) == 1);
+    if (mode == 2)
+        CHECK(world_add_light(&world, LIGHT_POINT, P(-3, 5, 2), P(0, 0, 0), V(0), FRAC(0.3, 0.3, 0.3), false) == 2);
+    if (black_point)
+        CHECK(world_add_light(&world, LIGHT_POINT, P(2, 6, -1), P(0, 0, 0), V(0), FRAC(0, 0, 0), false) >= 2);
+}
 static void test_directional_plane(void)
 {
     cam_t cam;
     camera(&cam);
-    for (int mode = 0; mode < 3; mode++) { /* shadows off; shadows on; and a point light */
-        fxrt_world_init(&world, COL(0.1, 0.1, 0.1));
-        world_set_ambient(&world, FRAC(0.25, 0.3, 0.35));
-        int32_t pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.55, 0.7, 0.35));
-        lit(pid, MATERIAL_LAMBERT, 0);
-        CHECK(world_add_sphere(&world, P(0.3, 1.0, 0.2), V(0.5), COL(0.9, 0.2, 0.1)) >= 0);
-        /* light 0 from above (shadows on from mode 1), light 1 from below
-         * (shadows on, but it lights the other side: no shadow ray) */
-        CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(-0.3, -1, -0.2), V(0), FRAC(0.9, 0.8, 0.6),
-                              mode > 0) == 0);
-        CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(0.2, 1, 0.1), V(0), FRAC(1, 1, 1), true) == 1);
-        if (mode == 2)
-            CHECK(world_add_light(&world, LIGHT_POINT, P(-3, 5, 2), P(0, 0, 0), V(0), FRAC(0.3, 0.3, 0.3), false) == 2);
-        render(&cam, true);
-        long plane = count_id((uint16_t)pid), lit0 = 0, same = 0;
-        CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
-        /* Light 0 alone, without shadows: c_d (.) (c_a + c_l n . l) per channel, l = -dir unit. */
-        double ndl = 1.0 / sqrt(0.09 + 1.0 + 0.04), cd[3] = {0.55, 0.7, 0.35}, ca[3] = {0.25, 0.3, 0.35},
-               cl[3] = {0.9, 0.8, 0.6};
-        int want[3];
-        for (int c = 0; c < 3; c++)
-            want[c] = (int)floor(255.0 * cd[c] * (ca[c] + cl[c] * ndl) + 0.5);
-        for (int i = 0; i < W * H; i++) {
-            if ((keys[i] >> 8) != (uint32_t)pid)
-                continue;
-            lit0 += (keys[i] & 0xFF) == 1u;
-            bool near = true;
+    for (int phong = 0; phong < 2; phong++)
+        for (int mode = 0; mode < 3; mode++) { /* shadows off; shadows on; and a point light */
+            const char *mat = phong ? "phong" : "lambert";
+            directional_world(phong, mode, true);
+            render(&cam, false);
+            memcpy(img_general, img, sizeof img);
+            uint32_t general_pts = fxrt_stats.plane_points;
+            directional_world(phong, mode, false);
+            render(&cam, true);
+            long plane = count_id(0), lit0 = 0, same = 0;
+            CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
+            CHECK_MSG(general_pts == (uint32_t)plane, "%s, with a black point light: %u hit points for %ld pixels",
+                      mat, (unsigned)general_pts, plane);
+            /* Light 0 alone, without shadows: c_d (.) (c_a + c_l n . l) per channel, l = -dir unit. */
+            double ndl = 1.0 / sqrt(0.09 + 1.0 + 0.04), cd[3] = {0.55, 0.7, 0.35}, ca[3] = {0.25, 0.3, 0.35},
+                   cl[3] = {0.9, 0.8, 0.6};
+            int want[3];
             for (int c = 0; c < 3; c++)
-                near &= abs(img[3 * i + c] - want[c]) <= 1;
-            same += near;
+                want[c] = (int)floor(255.0 * cd[c] * (ca[c] + cl[c] * ndl) + 0.5);
+            for (int i = 0; i < W * H; i++) {
+                if ((keys[i] >> 8) != 0u)
+                    continue;
+                lit0 += (keys[i] & 0xFF) == 1u;
+                bool near = true;
+                for (int c = 0; c < 3; c++)
+                    near &= abs(img[3 * i + c] - want[c]) <= 1;
+                same += near;
+            }
+            if (mode == 0) {
+                CHECK_MSG(lit0 == plane, "%s, directional, shadows off: %ld of %ld plane pixels lit by light 0 alone",
+                          mat, lit0, plane);
+                if (!phong)
+                    CHECK_MSG(same == plane, "lambert, directional, shadows off: %ld of %ld plane pixels at (%d, %d, %d) +- 1",
+                              same, plane, want[0], want[1], want[2]);
+            }
+            render(&cam, false);
+            CHECK_MSG(memcmp(img, img_general, sizeof img) == 0, "%s, mode %d: the frame differs from the general path's",
+                      mat, mode);
+            uint32_t pts = fxrt_stats.plane_points, rays = fxrt_stats.shadow_rays;
+            if (mode == 0)
+                CHECK_MSG(pts == 0 && rays == 0, "%s, directional, shadows off: %u hit points, %u shadow rays", mat,
+                          (unsigned)pts, (unsigned)rays);
+            else if (mode == 1)
+                CHECK_MSG(lit0 < plane && rays > 0 && pts >= rays && pts < (uint32_t)plane / 2,
+                          "%s, directional, shadows on: %u hit points for %u shadow rays, %ld plane pixels (%ld lit)",
+                          mat, (unsigned)pts, (unsigned)rays, plane, lit0);
+            else
+                CHECK_MSG(pts == (uint32_t)plane, "%s, and a point light: %u hit points for %ld plane pixels", mat,
+                          (unsigned)pts, plane);
         }
-        if (mode == 0) {
-            CHECK_MSG(lit0 == plane, "directional, shadows off: %ld of %ld plane pixels lit by light 0 alone", lit0,
-                      plane);
-            CHECK_MSG(same == plane, "directional, shadows off: %ld of %ld plane pixels at (%d, %d, %d) +- 1", same,
-                      plane, want[0], want[1], want[2]);
-        }
-        render(&cam, false);
-        uint32_t pts = fxrt_stats.plane_points, rays = fxrt_stats.shadow_rays;
-        if (mode == 0)
-            CHECK_MSG(pts == 0 && rays == 0, "directional, shadows off: %u hit points, %u shadow rays", (unsigned)pts,
-                      (unsigned)rays);
-        else if (mode == 1)
-            CHECK_MSG(lit0 < plane && rays > 0 && pts >= rays && pts < (uint32_t)plane / 2,
-                      "directional, shadows on: %u hit points for %u shadow rays, %ld plane pixels (%ld lit)",
-                      (unsigned)pts, (unsigned)rays, plane, lit0);
-        else
-            CHECK_MSG(pts == (uint32_t)plane, "and a point light: %u hit points for %ld plane pixels", (unsigned)pts,
-                      plane);
-    }
 }
 
 int main(void)

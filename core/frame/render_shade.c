@@ -75,9 +75,17 @@ static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *
 {
     const render_obj_t *o = &r->vis.obj[oi];
     const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
-    if (one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray)))
-        return r->shade.flat.lambert ? shade_flat_plane(r->vis.world, &r->shade.flat, k, ray, mask)
-                                     : shade_flat_k(r->vis.world, &r->shade.flat, ray, k, mask);
+    if (one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray))) {
+        const shade_flat_t *f = &r->shade.flat;
+        color_t c;
+        /* (a lambert plane under directional lights only: its own call,
+         * which makes no hit point where it needs none) */
+        if (f->flags == (SHADE_FLAT_LAMBERT | SHADE_FLAT_DIRECTIONAL) &&
+            shade_flat_plane_dir(r->vis.world, f, k, ray, mask, &c))
+            return c;
+        return f->flags & SHADE_FLAT_LAMBERT ? shade_flat_plane(r->vis.world, f, k, ray, mask)
+                                             : shade_flat_k(r->vis.world, f, ray, k, mask);
+    }
     return shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, r->vis.cam, k, mask);
 }
 

@@ -109,6 +109,16 @@ color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const 
     vec3_normalize(&ray->d); /* cam_ray_unit's, for a pinhole camera */
     /* d . n is the quotient's divisor and the light sum's side test. */
     numw_t dn = vec3_dotw_units(ray->d, *f->n);
+    /* A plane under directional lights only, with no bounce, where no
+     * light needs a shadow ray on this row: the light sum reads no hit
+     * point (light/shade_sum.h, shade_plane_row_unshadowed), so none is
+     * made. It gets the eye instead, a point all the same: a world
+     * changed after the set-up (a light added) gives a wrong pixel, not
+     * a fault. */
+    if ((f->flags & SHADE_FLAT_DIRECTIONAL) && !material_bounces(f->obj->mat.kind) &&
+        shade_plane_row_unshadowed(w, f->pls, dn > 0))
+        return shade_sum(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), &ray->o, f->n, dn > 0, &ray->d, k, mask);
+    FXRT_COUNT(plane_points);
     num_t t = numw_div_by(&f->num, dn);
     return shade_hit(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), ray, t, f->n, dn > 0, k, mask);
 }

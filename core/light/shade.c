@@ -366,32 +366,13 @@ void shade_plane_heights(const world_t *w, shadow_table_t *t)
 
 void shade_flat_prep(shade_flat_t *f, const world_t *w, const shade_k_t *k)
 {
-    f->lambert = f->kind == GEOM_PLANE && f->obj->mat.kind == MATERIAL_LAMBERT && k ? SHADE_FLAT_LAMBERT : 0;
-    f->pls = f->lambert ? shade_plane_entries(k, f->index) : NULL;
+    bool plane = f->kind == GEOM_PLANE && k;
+    f->pls = plane ? shade_plane_entries(k, f->index) : NULL;
     unsigned dir = 0;
-    for (unsigned i = 0; f->lambert && i < w->n_lights; i++)
+    for (unsigned i = 0; plane && i < w->n_lights; i++)
         dir += w->lights[i].kind == LIGHT_DIRECTIONAL;
-    if (f->lambert && dir == w->n_lights)
-        f->lambert = SHADE_FLAT_DIRECTIONAL;
-}
-
-/* Under directional lights only (SHADE_FLAT_DIRECTIONAL), does no light
- * need a shadow ray from the points of the plane with entries pls, on the
- * current row and on the ray's side (inside: the back)? A light does not
- * when its shadows are off, when its row mask is SHADOW_ROW_CLEAR, or
- * when it lies behind that side. Then shade_plane_sum never reads the
- * hit point: each light's n . l is the plane's (pls[i].h.ndl), and
- * shade_shadowed returns false before it looks at p. */
-static inline bool shade_plane_row_unshadowed(const world_t *w, const shade_plane_light_t *pls, bool inside)
-{
-    const light_t *L = w->lights;
-    for (unsigned i = 0, n = w->n_lights; i < n; i++, L++) {
-        if (!FXRT_SHADOWS || !L->shadows || (SHADOW_ROWS && pls && pls[i].row & SHADOW_ROW_CLEAR))
-            continue;
-        if (!pls || (inside ? -pls[i].h.ndl : pls[i].h.ndl) > 0)
-            return false;
-    }
-    return true;
+    f->flags = (uint8_t)((plane && f->obj->mat.kind == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
+                         (plane && dir == w->n_lights ? SHADE_FLAT_DIRECTIONAL : 0));
 }
 
 /* shade_lights for Lambert plane `index` (obj) with constants k; pls: its
@@ -475,19 +456,54 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum(const world
     return c;
 }
 
+/* shade_plane_sum where no light needs the point (directional lights
+ * only, shade_plane_row_unshadowed): each light's stored n . l turned to
+ * the ray's side, the same terms in the same order. A light that is not
+ * directional (a world changed after the set-up) is left out: a wrong
+ * pixel, not a fault. */
+static inline __attribute__((always_inline)) color_t shade_plane_sum_dir(const world_t *w, uint16_t index,
+                                                                         const shade_k_t *k,
+                                                                         const shade_plane_light_t *pls, bool inside,
+                                                                         uint8_t *mask)
+{
+    if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
+        return k->ambient;
+    color_t c = k->ambient;
+    unsigned bits = 0;
+    const light_t *L = w->lights;
+    for (unsigned i = 0, n = w->n_lights; i < n; i++, L++) {
+        if (L->kind != LIGHT_DIRECTIONAL)
+            continue;
+        numw_sticky_t s = pls ? pls[i].h.ndl : shade_plane_height(w, index, L).ndl;
+        if ((inside ? -s : s) <= 0)
+            continue; /* behind the surface */
+        bits |= 1u << i;
+        c = shade_madd(c, k->kd[i], numw_sticky_round(inside ? -s : s));
+    }
+    if (mask)
+        *mask = (uint8_t)bits;
+    return c;
+}
+
 color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
                          uint8_t *mask)
 {
     numw_t rn;
     FXRT_COUNT(shaded);
-    if (f->lambert == SHADE_FLAT_DIRECTIONAL) {
-        rn = vec3_dotw_unit(ray->d, *f->n); /* (the side: shade_flat_point's rn) */
-        if (shade_plane_row_unshadowed(w, f->pls, rn > 0))
-            return shade_plane_sum(w, f->obj, f->index, k, f->pls, NULL, rn > 0, mask);
-    }
     FXRT_COUNT(plane_points);
     vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
     return shade_plane_sum(w, f->obj, f->index, k, f->pls, &p, rn > 0, mask);
+}
+
+bool shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
+                          uint8_t *mask, color_t *c)
+{
+    numw_t rn = vec3_dotw_unit(ray->d, *f->n); /* (the side: shade_flat_point's rn) */
+    if (!shade_plane_row_unshadowed(w, f->pls, rn > 0))
+        return false;
+    FXRT_COUNT(shaded);
+    *c = shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, mask);
+    return true;
 }
 
 /* (shade_sum.h) For a Lambert plane with constants k. */

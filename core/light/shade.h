@@ -196,27 +196,35 @@ typedef struct {
     const vec3_t *n;
     uint16_t index;
     uint8_t kind;
-    /* A Lambert plane with constants (shade_flat_prep): the shading pass
-     * takes shade_flat_plane for it (shade_flat_k's value), and pls points
-     * to its entries of the frame's tables (NULL: the frame keeps none).
-     * SHADE_FLAT_DIRECTIONAL: every light of the world is directional. */
-    uint8_t lambert;
+    /* A plane with constants (shade_flat_prep): pls points to its entries
+     * of the frame's tables (NULL: the frame keeps none), and flags has
+     * SHADE_FLAT_LAMBERT for a Lambert plane, which the shading pass
+     * takes to shade_flat_plane (shade_flat_k's value), and
+     * SHADE_FLAT_DIRECTIONAL when every light of the world is
+     * directional. */
+    uint8_t flags;
     const shade_plane_light_t *pls;
 } shade_flat_t;
 enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2 };
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
-/* Set f->lambert and f->pls for f's object of world w with constants k
+/* Set f->flags and f->pls for f's object of world w with constants k
  * (NULL: none). */
 void shade_flat_prep(shade_flat_t *f, const world_t *w, const shade_k_t *k);
-/* shade_flat_k's value for a Lambert plane (f->lambert, k its constants)
+/* shade_flat_k's value for a Lambert plane (SHADE_FLAT_LAMBERT, k its constants)
  * along a camera ray: its hit point, then shade_lights_plane's light sum
  * (and mask), with what the light sum needs of the frame found once per
  * plane (shade_flat_prep) instead of at every pixel. Under directional
  * lights only, where no light needs a shadow ray on this row (each has
- * shadows off, or its row mask is SHADOW_ROW_CLEAR), nothing in the sum
- * depends on the point: the hit point is not made. */
+ * shadows off, its row mask SHADOW_ROW_CLEAR, or lies behind the side
+ * seen: light/shade_sum.h, shade_plane_row_unshadowed), nothing in the
+ * sum depends on the point, and shade_flat_plane_dir makes no hit point. */
 color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
                          uint8_t *mask);
+/* shade_flat_plane's value into *c, for a plane with SHADE_FLAT_DIRECTIONAL
+ * too, where no light needs a shadow ray on this row (false: one does, *c
+ * untouched; shade_flat_plane then). */
+bool shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
+                          uint8_t *mask, color_t *c);
 
 /* A camera ray's point on the plane of a FLAT form's object with unit
  * normal n, from the ray's origin o and its direction r of any length

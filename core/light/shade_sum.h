@@ -25,6 +25,27 @@ static inline __attribute__((always_inline)) color_t shade_lights_of(const world
         return shade_lights_plane(w, obj, index, p, n_geo, facing, d, k, mask);
     return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
 }
+/* Under directional lights only (SHADE_FLAT_DIRECTIONAL), does no light
+ * need a shadow ray from the points of the plane with entries pls, on the
+ * current row and on the ray's side (inside: the back)? A light does not
+ * when its shadows are off, when its row mask is SHADOW_ROW_CLEAR, or
+ * when it lies behind that side. Then the light sum never reads the hit
+ * point: a directional light's l is its direction, a Lambert plane's
+ * n . l the plane's (pls[i].h.ndl), and shade_shadowed returns false
+ * before it looks at p (light/shade.c, shade_flat_plane; light/hit.c,
+ * shade_flat_k). */
+static inline bool shade_plane_row_unshadowed(const world_t *w, const shade_plane_light_t *pls, bool inside)
+{
+    const light_t *L = w->lights;
+    for (unsigned i = 0, n = w->n_lights; i < n; i++, L++) {
+        if (!FXRT_SHADOWS || !L->shadows || (SHADOW_ROWS && pls && pls[i].row & SHADOW_ROW_CLEAR))
+            continue;
+        if (!pls || (inside ? -pls[i].h.ndl : pls[i].h.ndl) > 0)
+            return false;
+    }
+    return true;
+}
+
 /* shade_sum without per-frame constants (the ray caster, arbitrary rays):
  * they are computed on its own frame. It calls shade_lights, not
  * shade_sum: no cycle in the call graph (tests/norecurse.sh). */

@@ -196,7 +196,6 @@ static inline num_t num_mul_int_fits(num_t a, int32_t i) { return (fx_t)((uint32
 /* |d| > lim for 0 <= lim, |d| < 2^62: in one unsigned comparison (d + lim
  * lies in [0, 2 lim] exactly when |d| <= lim). */
 static inline bool numw_abs_gt(numw_t d, numw_t lim) { return (uint64_t)d + (uint64_t)lim > 2 * (uint64_t)lim; }
-/* c rounded to the nearest integer, ties up, for 0 < c < 32767. */
 /* c clamped to 0..255 and rounded half up (math/color.h, color_channel). */
 static inline uint8_t num_channel8(num_t c) { return port_channel_q16(c); }
 /* v / |v| in place, each component within 0.504 LSB (fx_normalize3: no

@@ -23,7 +23,7 @@ typedef struct {
     uint32_t bounds_skips;   /* of those, rays that missed the bounds box */
     uint32_t flat_nums;      /* hit numerators (a - e) . n of planes and triangles (frame/render_shade.c) */
     uint32_t d_normalised;   /* camera rays normalised by the shading pass (light/hit.c) */
-    uint32_t plane_points;   /* hit points a Lambert plane's pixel made (light/shade.c, shade_flat_plane) */
+    uint32_t plane_points;   /* hit points the shading pass made for planes and triangles (light/shade.c, light/hit.c) */
 } fxrt_stats_t;
 extern fxrt_stats_t fxrt_stats; /* (defined always; unused and dropped by the linker unless FXRT_STATS) */
 #if FXRT_STATS
