@@ -77,12 +77,10 @@ static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *
     const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
     if (one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray))) {
         const shade_flat_t *f = &r->shade.flat;
-        color_t c;
         /* (a lambert plane under directional lights only: its own call,
          * which makes no hit point where it needs none) */
-        if (f->flags == (SHADE_FLAT_LAMBERT | SHADE_FLAT_DIRECTIONAL) &&
-            shade_flat_plane_dir(r->vis.world, f, k, ray, mask, &c))
-            return c;
+        if (f->flags == (SHADE_FLAT_LAMBERT | SHADE_FLAT_DIRECTIONAL))
+            return shade_flat_plane_dir(r->vis.world, f, k, ray, mask);
         return f->flags & SHADE_FLAT_LAMBERT ? shade_flat_plane(r->vis.world, f, k, ray, mask)
                                              : shade_flat_k(r->vis.world, f, ray, k, mask);
     }

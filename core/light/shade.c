@@ -261,10 +261,11 @@ static inline __attribute__((always_inline)) bool shade_shadowed(const world_t *
     /* In float and double a copy of p: the callers' point does not
      * escape, and stays in registers where no shadow ray is cast (matched
      * scene, M4F float: -7 instructions per pixel; Q16.16 pays for the
-     * copy: M3 +1.9, micro:bit +25). */
+     * copy: M3 +1.9, micro:bit +25). Not on Armv6-M, whose 2 KB stack
+     * has no room for it (micro:bit, double: 32 bytes deeper). */
     vec3_t pc = *p;
-    return shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside, NUM_EXACT ? p : &pc, L, l, dist, cull,
-                          skip);
+    return shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside,
+                          NUM_EXACT || FXRT_PORT_SMALL_ISA ? p : &pc, L, l, dist, cull, skip);
 #else
     (void)w, (void)kind, (void)index, (void)obj, (void)inside, (void)p, (void)L, (void)i, (void)l, (void)dist,
         (void)k, (void)pls, (void)iv, (void)va;
@@ -495,15 +496,14 @@ color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_
     return shade_plane_sum(w, f->obj, f->index, k, f->pls, &p, rn > 0, mask);
 }
 
-bool shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
-                          uint8_t *mask, color_t *c)
+color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
+                             uint8_t *mask)
 {
     numw_t rn = vec3_dotw_unit(ray->d, *f->n); /* (the side: shade_flat_point's rn) */
     if (!shade_plane_row_unshadowed(w, f->pls, rn > 0))
-        return false;
+        return shade_flat_plane(w, f, k, ray, mask);
     FXRT_COUNT(shaded);
-    *c = shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, mask);
-    return true;
+    return shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, mask);
 }
 
 /* (shade_sum.h) For a Lambert plane with constants k. */

@@ -220,11 +220,11 @@ void shade_flat_prep(shade_flat_t *f, const world_t *w, const shade_k_t *k);
  * sum depends on the point, and shade_flat_plane_dir makes no hit point. */
 color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
                          uint8_t *mask);
-/* shade_flat_plane's value into *c, for a plane with SHADE_FLAT_DIRECTIONAL
- * too, where no light needs a shadow ray on this row (false: one does, *c
- * untouched; shade_flat_plane then). */
-bool shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
-                          uint8_t *mask, color_t *c);
+/* shade_flat_plane's value for a plane with SHADE_FLAT_DIRECTIONAL too:
+ * without a hit point where no light needs a shadow ray on this row, else
+ * shade_flat_plane's own (a tail call: no frame deeper). */
+color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
+                             uint8_t *mask);
 
 /* A camera ray's point on the plane of a FLAT form's object with unit
  * normal n, from the ray's origin o and its direction r of any length
