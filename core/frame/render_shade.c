@@ -13,6 +13,10 @@ void render_shade_setup(render_t *r, const world_t *w)
 {
     render_shade_t *sh = &r->shade;
     sh->any_lit = w->n_lit > 0;
+    unsigned dir = 0;
+    for (unsigned i = 0; i < w->n_lights; i++)
+        dir += w->lights[i].kind == LIGHT_DIRECTIONAL;
+    sh->all_directional = dir == w->n_lights;
     sh->flat_of = RENDER_VIS_NONE;
     SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull.cull), shade_plane_heights(w, &sh->cull);
                   shadow_rows_clear(&sh->cull);)
@@ -57,7 +61,7 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
     f->ratio = numw_ratio_num(num);
     f->index = o->index;
     f->kind = o->geom;
-    shade_flat_prep(f, w, o->flat ? NULL : &r->shade.k[oi]);
+    shade_flat_prep(f, r->shade.all_directional, o->flat ? NULL : &r->shade.k[oi]);
     r->shade.flat_of = oi;
     return true;
 }

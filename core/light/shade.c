@@ -365,15 +365,12 @@ void shade_plane_heights(const world_t *w, shadow_table_t *t)
     (void)w, (void)t;
 }
 
-void shade_flat_prep(shade_flat_t *f, const world_t *w, const shade_k_t *k)
+void shade_flat_prep(shade_flat_t *f, bool all_directional, const shade_k_t *k)
 {
     bool plane = f->kind == GEOM_PLANE && k;
     f->pls = plane ? shade_plane_entries(k, f->index) : NULL;
-    unsigned dir = 0;
-    for (unsigned i = 0; plane && i < w->n_lights; i++)
-        dir += w->lights[i].kind == LIGHT_DIRECTIONAL;
     f->flags = (uint8_t)((plane && f->obj->mat.kind == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
-                         (plane && dir == w->n_lights ? SHADE_FLAT_DIRECTIONAL : 0));
+                         (plane && all_directional ? SHADE_FLAT_DIRECTIONAL : 0));
 }
 
 /* shade_lights for Lambert plane `index` (obj) with constants k; pls: its

@@ -207,9 +207,10 @@ typedef struct {
 } shade_flat_t;
 enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2 };
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
-/* Set f->flags and f->pls for f's object of world w with constants k
- * (NULL: none). */
-void shade_flat_prep(shade_flat_t *f, const world_t *w, const shade_k_t *k);
+/* Set f->flags and f->pls for f's object with constants k (NULL: none);
+ * all_directional: every light of the world is directional (the shading
+ * pass finds it once per frame). */
+void shade_flat_prep(shade_flat_t *f, bool all_directional, const shade_k_t *k);
 /* shade_flat_k's value for a Lambert plane (SHADE_FLAT_LAMBERT, k its constants)
  * along a camera ray: its hit point, then shade_lights_plane's light sum
  * (and mask), with what the light sum needs of the frame found once per
