@@ -254,7 +254,8 @@ FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_M
  *   FXRT_ABLATE_FLAT_NUM  a plane's or triangle's hit numerator (a - e) . n
  *                         computed again at every lit pixel instead of
  *                         once per run of that object's pixels
- *                         (frame/render_shade.c)
+ *                         (frame/render_shade.c), and every pixel shaded
+ *                         on its own (no FXRT_SHADE_RUNS)
  *   FXRT_ABLATE_BVH_QUICK a model's boxes tested by their exact quotients
  *                         alone, without the quick test's reciprocals
  *                         (scene/bvh.c)
@@ -303,6 +304,23 @@ FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0x1fff) == 0, "FXRT_ABLATE: an unknown bit 
 #define FXRT_SPHERE_SEARCH (!FXRT_PORT_SMALL_ISA)
 #endif
 FXRT_STATIC_ASSERT(FXRT_SPHERE_SEARCH == 0 || FXRT_SPHERE_SEARCH == 1, "FXRT_SPHERE_SEARCH must be 0 or 1");
+
+/* FXRT_SHADE_RUNS: how the shading pass (frame/render_shade.c) takes the
+ * lit pixels of a plane or a triangle seen by a pinhole camera, in a
+ * frame without pixel keys (the frame is the same either way):
+ *   1 = a run of one object's pixels at once: a Lambert plane's in one
+ *       call (light/shade.c, shade_flat_plane_run), another's in a loop
+ *       without the tests each pixel otherwise takes
+ *   0 = every pixel through those tests and its own call
+ * Default: 1, except in double on Armv6-M, the soft-float reference: its
+ * deepest lit scene (course-phong-directional) uses 1,512 B of the
+ * micro:bit's 2,048 B stack, and the runs make the row loop's frame 64 B
+ * larger (the run's arguments, the loop's locals): past the asserted
+ * 512 B margin. */
+#ifndef FXRT_SHADE_RUNS
+#define FXRT_SHADE_RUNS (!(FXRT_PORT_SMALL_ISA && FXRT_NUMBER == FXRT_DOUBLE))
+#endif
+FXRT_STATIC_ASSERT(FXRT_SHADE_RUNS == 0 || FXRT_SHADE_RUNS == 1, "FXRT_SHADE_RUNS must be 0 or 1");
 
 /* FXRT_FLOAT_STEP (float and double builds only; Q16.16 always steps,
  * exactly):

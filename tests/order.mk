@@ -1,7 +1,8 @@
 # The visiting order (render_setup sorts the objects nearest first each
 # frame), the shadow rows (light/shadow.c: per-row masks of the objects
 # that cannot block a plane's shadow rays), the flat objects' hit
-# numerators kept across pixels (frame/render_shade.c) and a model's quick
+# numerators kept across pixels, with the runs of their pixels shaded at
+# once (frame/render_shade.c, FXRT_SHADE_RUNS) and a model's quick
 # box test (scene/bvh.c) must not change a frame:
 # tests/order.sh renders every scene with the host tool and with the host
 # tool built again with all four switched off (FXRT_ABLATE_ORDER,

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Nearest first (vis/order.c), the shadow rows (light/shadow.c, a
 # plane's per-row masks of the objects that cannot block its shadow rays),
-# the flat objects' hit numerators kept across pixels
-# (frame/render_shade.c) and a model's quick box test (scene/bvh.c: boxes
+# the flat objects' hit numerators kept across pixels, with the runs of
+# their pixels shaded at once (frame/render_shade.c, FXRT_SHADE_RUNS,
+# which needs the numerators) and a model's quick box test (scene/bvh.c: boxes
 # by reciprocals, the walk's order by the exact quotients where those are
 # too close) change the work, never a pixel: every scene in scenes/ and
 # its subfolders at 96x72, in q16, float and double, with the host tool

@@ -164,7 +164,7 @@ static void render_sample_fine(render_t *r, int32_t row, int32_t j, bool referen
 static void render_sample_put(uint8_t *rgb, int32_t x, uint8_t cr, uint8_t cg, uint8_t cb)
 {
     rgb8_t p = {cr, cg, cb};
-    render_put_pixel(rgb, x, p);
+    color_put_pixel(rgb, x, p);
 }
 
 #if FXRT_ADAPTIVE

@@ -71,15 +71,24 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
 #undef RENDER_FLAT_OF_FLAT
 #undef RENDER_FLAT_OF
 
+/* Is vis object oi of a FLAT form, and now r->shade.flat's? one_eye: a
+ * pinhole camera, whose flat objects keep their hit numerators (only
+ * ray->o is read). */
+static inline __attribute__((always_inline)) bool render_flat_of(render_t *r, uint16_t oi, const ray_t *ray,
+                                                                   bool one_eye)
+{
+    return one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray));
+}
+
 /* The colour of vis object oi along camera ray `ray` as cam_ray_raw makes
- * it (d not normalised; normalised here where it is needed). one_eye: a
- * pinhole camera, whose flat objects keep their hit numerators. */
+ * it (d not normalised; normalised here where it is needed). flat: the
+ * object is r->shade.flat's (render_flat_of). */
 static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *r, uint16_t oi, ray_t *ray,
-                                                                       uint8_t *mask, bool one_eye)
+                                                                       uint8_t *mask, bool flat)
 {
     const render_obj_t *o = &r->vis.obj[oi];
     const shade_k_t *k = o->flat ? NULL : &r->shade.k[oi];
-    if (one_eye && (r->shade.flat_of == oi || render_flat_take(r, oi, ray))) {
+    if (flat) {
         const shade_flat_t *f = &r->shade.flat;
         /* (a lambert plane under directional lights only: its own call,
          * which makes no hit point where it needs none) */
@@ -93,7 +102,8 @@ static inline __attribute__((always_inline)) color_t render_shade_obj(render_t *
 
 color_t render_shade_object(render_t *r, uint16_t oi, ray_t *ray, uint8_t *mask)
 {
-    return render_shade_obj(r, oi, ray, mask, r->vis.cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM);
+    return render_shade_obj(r, oi, ray, mask,
+                            render_flat_of(r, oi, ray, r->vis.cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM));
 }
 
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
@@ -127,6 +137,25 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         bool lit = !o->flat;
         if (!lit && !keys)
             continue;
+        bool flat = FXRT_IF_MODEL(o->geom != GEOM_MODEL &&) render_flat_of(r, oi, ray, one_eye);
+        /* A run of pixels of one lit flat object (no keys, a direct row):
+         * a Lambert plane's in one call (light/shade.c), another's in a
+         * loop without the tests above. */
+        if (FXRT_SHADE_RUNS && flat && lit && !keys && cr->direct) {
+            int32_t end = x + 1;
+            while (end < w && r->vis.painted[end] == oi)
+                end++;
+            const shade_k_t *k = &r->shade.k[oi];
+            if (r->shade.flat.flags & SHADE_FLAT_LAMBERT)
+                shade_flat_plane_run(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, x, end, ray, rgb);
+            else
+                for (int32_t i = x; i < end; i++) {
+                    cam_row_dir(cr, u, fwd, 2 * i - w + 1, ray);
+                    color_put_pixel(rgb, i, color_to_rgb8(shade_flat_k(r->vis.world, &r->shade.flat, ray, k, NULL)));
+                }
+            x = end - 1;
+            continue;
+        }
         uint8_t mask = 0;
         if (cr->direct)
             cam_row_dir(cr, u, fwd, 2 * x - w + 1, ray);
@@ -137,13 +166,13 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
                       c = (cam_ray_unit(cam, ray), shade_model_k(r->vis.world, o->index, ray, r->vis.model_tri[x], lit ? &r->shade.k[oi] : NULL,
                                         keys ? &mask : NULL));
                       else)
-        c = render_shade_obj(r, oi, ray, keys ? &mask : NULL, one_eye);
+        c = render_shade_obj(r, oi, ray, keys ? &mask : NULL, flat);
         if (keys)
             keys[x] = render_key(o->id, mask);
         if (!lit)
             continue;
         rgb8_t p = color_to_rgb8(c);
-        render_put_pixel(rgb, x, p);
+        color_put_pixel(rgb, x, p);
     }
     SHADE_IF_CULL(if (SHADOW_ROWS && r->shade.any_lit) shadow_rows_clear(&r->shade.cull);)
 }

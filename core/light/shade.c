@@ -483,14 +483,21 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum_dir(const w
     return c;
 }
 
-color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
-                         uint8_t *mask)
+static inline __attribute__((always_inline)) color_t shade_flat_plane_at(const world_t *w, const shade_flat_t *f,
+                                                                          const shade_k_t *k, const ray_t *ray,
+                                                                          uint8_t *mask)
 {
     numw_t rn;
     FXRT_COUNT(shaded);
     FXRT_COUNT(plane_points);
     vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
     return shade_plane_sum(w, f->obj, f->index, k, f->pls, &p, rn > 0, mask);
+}
+
+color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
+                         uint8_t *mask)
+{
+    return shade_flat_plane_at(w, f, k, ray, mask);
 }
 
 color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
@@ -501,6 +508,25 @@ color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shad
         return shade_flat_plane(w, f, k, ray, mask);
     FXRT_COUNT(shaded);
     return shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, mask);
+}
+
+void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                          const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                          uint8_t *rgb)
+{
+    const bool dir = f->flags & SHADE_FLAT_DIRECTIONAL;
+    for (; x < end; x++) {
+        cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
+        color_t c;
+        /* (shade_flat_plane_dir's value, inline: no frame deeper) */
+        numw_t rn = dir ? vec3_dotw_unit(ray->d, *f->n) : 0;
+        if (dir && shade_plane_row_unshadowed(w, f->pls, rn > 0)) {
+            FXRT_COUNT(shaded);
+            c = shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, NULL);
+        } else
+            c = shade_flat_plane_at(w, f, k, ray, NULL);
+        color_put_pixel(rgb, x, color_to_rgb8(c));
+    }
 }
 
 /* (shade_sum.h) For a Lambert plane with constants k. */

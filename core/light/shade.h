@@ -227,6 +227,18 @@ color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_
 color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
                              uint8_t *mask);
 
+/* The pixels x .. end - 1 of a direct row (cam_row_t) that all show the
+ * Lambert plane f, with constants k, in a frame without keys: each
+ * pixel's camera ray from ray->o along cam_row_dir(row, u, fwd,
+ * 2 x - width + 1) (left in *ray), its colour shade_flat_plane's (or
+ * shade_flat_plane_dir's, by f->flags), written to pixel x of the row
+ * rgb (color_put_pixel). The same values as one call per pixel; one call
+ * per run of pixels keeps f's and k's values, and the loop's, in
+ * registers. */
+void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                          const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                          uint8_t *rgb);
+
 /* A camera ray's point on the plane of a FLAT form's object with unit
  * normal n, from the ray's origin o and its direction r of any length
  * (cam_ray_raw's, not normalised): o + (num / (r . n)) r with num =

@@ -27,6 +27,25 @@ typedef struct {
     uint8_t r, g, b;
 } rgb8_t;
 
+/* RGB565 of an 8-bit colour: each channel's top bits. */
+static inline uint16_t color_565(rgb8_t c)
+{
+    return (uint16_t)(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
+}
+/* Pixel x of a row in the pixel format (FXRT_PIXEL); RGB888 by byte
+ * stores (a 3-byte memcpy is a library call on the Cortex-M0). */
+typedef uint16_t __attribute__((may_alias)) color_px16_t;
+static inline void color_put_pixel(uint8_t *rgb, int32_t x, rgb8_t c)
+{
+    if (FXRT_PIXEL == FXRT_RGB565) {
+        ((color_px16_t *)(void *)rgb)[x] = color_565(c);
+        return;
+    }
+    rgb[3 * x + 0] = c.r;
+    rgb[3 * x + 1] = c.g;
+    rgb[3 * x + 2] = c.b;
+}
+
 /* Full intensity, 255 in 1/255 units. */
 #define COLOR_MAX NUM(255)
 

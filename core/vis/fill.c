@@ -12,8 +12,8 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
     typedef uint32_t __attribute__((may_alias)) word_t;
     int32_t x = xa;
 #if FXRT_PIXEL == FXRT_RGB565
-    uint16_t v = render_565(c);
-    render_px16_t *p16 = (render_px16_t *)(void *)rgb;
+    uint16_t v = color_565(c);
+    color_px16_t *p16 = (color_px16_t *)(void *)rgb;
     if (((uintptr_t)rgb & 3u) == 0) {
         for (; x <= xb && (x & 1); x++)
             p16[x] = v;
@@ -28,7 +28,7 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
         /* Aligned rows (the firmware's framebuffer and bands). may_alias:
          * the buffer is bytes. */
         for (; x <= xb && (x & 3); x++)
-            render_put_pixel(rgb, x, c);
+            color_put_pixel(rgb, x, c);
         if (x + 3 <= xb) {
             union {
                 uint8_t b[12];
@@ -46,6 +46,6 @@ void render_fill_rgb(uint8_t *rgb, int32_t xa, int32_t xb, rgb8_t c)
         }
     }
     for (; x <= xb; x++)
-        render_put_pixel(rgb, x, c);
+        color_put_pixel(rgb, x, c);
 #endif
 }

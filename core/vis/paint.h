@@ -34,7 +34,7 @@ static inline bool render_free(const vis_t *r, uint32_t tag, uint32_t cur)
 static inline void render_paint(vis_t *r, uint16_t oi, int32_t x, uint8_t *rgb)
 {
     render_mark(r, x, oi);
-    ((render_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
+    ((color_px16_t *)(void *)rgb)[x] = r->obj[oi].px;
 }
 #else
 static inline void render_paint(vis_t *r, uint16_t oi, int32_t x, uint8_t *rgb)

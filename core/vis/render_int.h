@@ -17,25 +17,6 @@
  * float and double with FXRT_FLOAT_STEP; never with FXRT_NO_STEP. */
 #define RENDER_STEPPED (!FXRT_NO_STEP && (FXRT_NUMBER == FXRT_Q16 || FXRT_FLOAT_STEP))
 
-/* RGB565 of an 8-bit colour: each channel's top bits. */
-RENDER_MAYBE_UNUSED static uint16_t render_565(rgb8_t c)
-{
-    return (uint16_t)(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
-}
-/* Pixel x of a row in the pixel format (FXRT_PIXEL); RGB888 by byte
- * stores (a 3-byte memcpy is a library call on the Cortex-M0). */
-typedef uint16_t __attribute__((may_alias)) render_px16_t;
-static inline void render_put_pixel(uint8_t *rgb, int32_t x, rgb8_t c)
-{
-#if FXRT_PIXEL == FXRT_RGB565
-    ((render_px16_t *)(void *)rgb)[x] = render_565(c);
-#else
-    rgb[3 * x + 0] = c.r;
-    rgb[3 * x + 1] = c.g;
-    rgb[3 * x + 2] = c.b;
-#endif
-}
-
 /* Face i of a flat object (a box's faces carry a fourth edge). */
 static inline render_flat_t *render_face(const render_obj_t *o, int i)
 {

@@ -65,7 +65,7 @@ static void render_add(vis_t *r, geom_kind_t kind, uint16_t index, const geom_co
     o->id = c->id;
     o->rgb = c->rgb;
 #if FXRT_PIXEL == FXRT_RGB565
-    o->px = render_565(c->rgb);
+    o->px = color_565(c->rgb);
 #endif
     o->ranged = false;
     o->flat = !geom_lit(c);
