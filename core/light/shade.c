@@ -380,9 +380,7 @@ void shade_flat_prep(shade_flat_t *f, bool all_directional, const shade_k_t *k)
  * plane (shade_plane_height; once per frame in the frame's tables, where
  * it has them): one inverse square root and one product (fx_inv3,
  * fx_inv3_mul) instead of the unit vector l and a dot product; l is made
- * only for a shadow ray. The loop keeps each light's n . l, and the
- * colour is summed after it, in the lights' order (the same values): the
- * loop, with its calls, keeps no colour live. */
+ * only for a shadow ray. */
 static inline __attribute__((always_inline)) color_t shade_plane_sum(const world_t *w, const geom_common_t *obj,
                                                                      uint16_t index, const shade_k_t *k,
                                                                      const shade_plane_light_t *pls, const vec3_t *pp,
@@ -390,15 +388,7 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum(const world
 {
     if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
         return k->ambient;
-    /* Q16.16 with 32 x 32 -> 64-bit products (the M3, the M4F): each
-     * light's n . l kept, the colour summed after the loop, which then
-     * keeps no colour live across its calls (matched scene, M3: 569.6
-     * against 573.9 instructions per pixel summed in the loop). Elsewhere
-     * in the loop (micro:bit 1,477.3 against 1,502.2; M4F float 330.7
-     * against 333.6). The same sums, in the lights' order, either way. */
-    const bool after = NUM_EXACT && FX_HAVE_UMULL;
-    num_t ndls[FXRT_MAX_LIGHTS];
-    color_t c = after ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : k->ambient;
+    color_t c = k->ambient;
     unsigned bits = 0, n = w->n_lights;
     const light_t *L = w->lights;
     for (unsigned i = 0; i < n; i++, L++) {
@@ -406,8 +396,6 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum(const world
         num_t dist, va[3], ndl = NUM_ZERO;
         num_inv3_t iv;
         int how = SHADE_DIR;
-        if (after)
-            ndls[i] = NUM_ZERO;
         if (L->kind == LIGHT_DIRECTIONAL) {
             /* n . l, turned to the ray's side: no product at all. */
             numw_sticky_t s = pls ? pls[i].h.ndl : shade_plane_height(w, index, L).ndl;
@@ -438,16 +426,7 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum(const world
                            how == SHADE_INV ? &iv : NULL, va))
             continue;
         bits |= 1u << i;
-        if (after)
-            ndls[i] = ndl;
-        else
-            c = shade_madd(c, k->kd[i], ndl);
-    }
-    if (after) {
-        c = k->ambient;
-        for (unsigned i = 0; i < n; i++)
-            if (bits & (1u << i))
-                c = shade_madd(c, k->kd[i], ndls[i]);
+        c = shade_madd(c, k->kd[i], ndl);
     }
     if (mask)
         *mask = (uint8_t)bits;
