@@ -138,20 +138,22 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
         if (!lit && !keys)
             continue;
         bool flat = FXRT_IF_MODEL(o->geom != GEOM_MODEL &&) render_flat_of(r, oi, ray, one_eye);
-        /* A run of pixels of one lit flat object (no keys, a direct row):
-         * a Lambert plane's in one call (light/shade.c), another's in a
+        /* A run of pixels of one lit object (no keys, a direct row): a
+         * Lambert plane's in one call (light/shade.c), another's in a
          * loop without the tests above. */
-        if (FXRT_SHADE_RUNS && flat && lit && !keys && cr->direct) {
+        if (FXRT_SHADE_RUNS && lit && !keys && cr->direct FXRT_IF_MODEL(&&o->geom != GEOM_MODEL)) {
             int32_t end = x + 1;
             while (end < w && r->vis.painted[end] == oi)
                 end++;
             const shade_k_t *k = &r->shade.k[oi];
-            if (r->shade.flat.flags & SHADE_FLAT_LAMBERT)
+            if (flat && (r->shade.flat.flags & SHADE_FLAT_LAMBERT))
                 shade_flat_plane_run(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, x, end, ray, rgb);
             else
                 for (int32_t i = x; i < end; i++) {
                     cam_row_dir(cr, u, fwd, 2 * i - w + 1, ray);
-                    color_put_pixel(rgb, i, color_to_rgb8(shade_flat_k(r->vis.world, &r->shade.flat, ray, k, NULL)));
+                    color_t c = flat ? shade_flat_k(r->vis.world, &r->shade.flat, ray, k, NULL)
+                                     : shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, cam, k, NULL);
+                    color_put_pixel(rgb, i, color_to_rgb8(c));
                 }
             x = end - 1;
             continue;
