@@ -306,12 +306,12 @@ FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0x1fff) == 0, "FXRT_ABLATE: an unknown bit 
 FXRT_STATIC_ASSERT(FXRT_SPHERE_SEARCH == 0 || FXRT_SPHERE_SEARCH == 1, "FXRT_SPHERE_SEARCH must be 0 or 1");
 
 /* FXRT_SHADE_RUNS: how the shading pass (frame/render_shade.c) takes the
- * lit pixels of a plane or a triangle seen by a pinhole camera, in a
- * frame without pixel keys (the frame is the same either way):
- *   1 = a run of one object's pixels at once: a Lambert plane's in one
- *       call (light/shade.c, shade_flat_plane_run), another's in a loop
- *       without the tests each pixel otherwise takes
- *   0 = every pixel through those tests and its own call
+ * lit pixels of a pinhole camera's rows, in a frame without pixel keys
+ * (the frame is the same either way):
+ *   1 = a run of one object's pixels at once (not a model's): a Lambert
+ *       plane's in one call (light/shade.c, shade_flat_plane_run),
+ *       another's in a loop without the tests each pixel otherwise takes
+ *   0 = every pixel through those tests
  * Default: 1, except in double on Armv6-M, the soft-float reference: its
  * deepest lit scene (course-phong-directional) uses 1,512 B of the
  * micro:bit's 2,048 B stack, and the runs make the row loop's frame 64 B
