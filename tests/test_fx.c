@@ -493,6 +493,36 @@ static long check_dot3(const int32_t a[3], const int32_t u[3], bool units, long 
     return numw_dot3_unit(a[0], a[1], a[2], u[0], u[1], u[2]) != (int64_t)want;
 }
 
+/* numw_pow_int's shortcut: 0 without the products where b k <= (k - 12)
+ * 2^31 (b: x in Q1.31). The loop is monotone in b (each rounded product
+ * of non-negative values is), so its value 0 at the largest such b, for
+ * every exponent the scene format allows, proves the shortcut gives the
+ * loop's value everywhere; sampled pairs check the monotony, and the
+ * shortcut is checked not to fire just above that b. */
+static void check_pow_zero(void)
+{
+    long bad = 0, bad_mono = 0;
+    for (uint32_t k = NUM_POW_ZERO_K + 1; k <= FXRT_PHONG_MAX_EXPONENT; k++) {
+        uint32_t bt = (uint32_t)((((uint64_t)(k - NUM_POW_ZERO_K)) << 31) / k);
+        if (numw_pow_loop(bt, k) != 0 || numw_pow_int((numw_t)bt << 1, k) != 0)
+            bad++;
+        if (numw_pow_int(((numw_t)bt + 1) << 1, k) != numw_pow_loop(bt + 1, k))
+            bad++;
+        for (int i = 0; i < 64; i++) {
+            uint32_t b1 = (uint32_t)(rng() >> 33), b2 = (uint32_t)(rng() >> 33);
+            if (b1 > b2) {
+                uint32_t t = b1;
+                b1 = b2;
+                b2 = t;
+            }
+            if (numw_pow_loop(b1, k) > numw_pow_loop(b2, k))
+                bad_mono++;
+        }
+    }
+    CHECK_MSG(bad == 0, "numw_pow_int: %ld exponents where the shortcut's region is not all 0", bad);
+    CHECK_MSG(bad_mono == 0, "numw_pow_loop: %ld sampled pairs out of order", bad_mono);
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1)
@@ -501,6 +531,7 @@ int main(int argc, char **argv)
         n_random = atol(getenv("FX_TEST_RANDOM"));
 
     check_fixed_cases();
+    check_pow_zero();
     for (int i = 0; i < N_HARD; i++) {
         check_sqrt(hard[i]);
         check_rsqrt(hard[i]);

@@ -158,11 +158,9 @@ static inline bool numw_lt_mul(numw_t a, num_t t, numw_t b)
  * with 32 x 32 -> 64-bit products rounded to nearest, so the ~log2(k)
  * roundings add below 2^-22 in all and the result is x^k within 0.51 LSB
  * of Q16.16 for the given x. */
-static inline num_t numw_pow_int(numw_t x, uint32_t k)
+static inline num_t numw_pow_loop(uint32_t b, uint32_t k)
 {
-    uint32_t b = x <= 0 ? 0u : (x >= ((int64_t)1 << 32) ? 0x80000000u : (uint32_t)((uint64_t)x >> 1));
     uint32_t acc = 0x80000000u; /* 1.0 in Q1.31 */
-    FXRT_COUNT(phong);
     while (k) {
         if (k & 1u) {
             acc = (uint32_t)((fx_umul32(acc, b) + 0x40000000u) >> 31);
@@ -175,6 +173,20 @@ static inline num_t numw_pow_int(numw_t x, uint32_t k)
         }
     }
     return (fx_t)((acc + 0x4000u) >> 15);
+}
+/* The same, 0 without the products where x <= 1 - NUM_POW_ZERO_K / k: there
+ * x^k <= e^-12 < 2^-17.3, and the loop's value is 0 too (tests/test_fx.c
+ * proves it for every k up to FXRT_PHONG_MAX_EXPONENT at the largest such
+ * x, and the loop is monotone in x). Most of a Phong surface lies there,
+ * away from its highlight. */
+#define NUM_POW_ZERO_K 12u
+static inline num_t numw_pow_int(numw_t x, uint32_t k)
+{
+    uint32_t b = x <= 0 ? 0u : (x >= ((int64_t)1 << 32) ? 0x80000000u : (uint32_t)((uint64_t)x >> 1));
+    FXRT_COUNT(phong);
+    if (k > NUM_POW_ZERO_K && fx_umul32(b, k) <= (uint64_t)(k - NUM_POW_ZERO_K) << 31)
+        return 0;
+    return numw_pow_loop(b, k);
 }
 
 /* a b and a + b for a result that fits (the caller's bound): num_mul's
