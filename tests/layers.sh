@@ -62,6 +62,7 @@ host_configs=(
     "double-all:-DFXRT_NUMBER=3 $ALL -DFXRT_STATS=1"
     "q16-nohw-all:-DFXRT_NUMBER=1 $NOHW $ALL"
     "q16-unlit-565:-DFXRT_NUMBER=1 -DFXRT_MAX_LIGHTS=0 -DFXRT_MAX_SAMPLES=1 -DFXRT_PIXEL=2"
+    "q16-models-noshadows:-DFXRT_NUMBER=1 -DFXRT_SHADOWS=0 ${BARE_ALL_KINDS[*]}"
     "float-lit-flat:-DFXRT_NUMBER=2 -DFXRT_SHADOWS=0 -DFXRT_PHONG=0 -DFXRT_MAX_DEPTH=0 -DFXRT_MAX_SAMPLES=2 -DFXRT_ADAPTIVE=0 -DFXRT_SHADOW_CULL=0"
     "q16-ablate:-DFXRT_NUMBER=1 $ABLATE $ALL"
     "q16-spheres-stream-reference:-DFXRT_NUMBER=1 -DFXRT_MAX_PLANES=0 -DFXRT_MAX_TRIANGLES=0 -DFXRT_MAX_BOXES=0 -DFXRT_FB_MODE=2 -DFXRT_RENDERER=2 -DFXRT_MESH_MAX=0 -DFXRT_ORDER_MAX=0"
@@ -69,7 +70,7 @@ host_configs=(
 )
 # make test checks the configurations marked quick (every number type,
 # features on and off, streaming, Armv6-M); make test-full all of them.
-quick=" q16-all float-all double-all q16-unlit-565 q16-spheres-stream-reference m0-q16 "
+quick=" q16-all float-all double-all q16-unlit-565 q16-models-noshadows q16-spheres-stream-reference m0-q16 "
 in_scope() { full || [[ $quick == *" $1 "* ]]; }
 for c in "${host_configs[@]}"; do
     in_scope "${c%%:*}" && layers "host-${c%%:*}" gcc nm -O0 ${c#*:}

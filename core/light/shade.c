@@ -269,6 +269,7 @@ static inline __attribute__((always_inline)) bool shade_shadowed(const world_t *
 #else
     (void)w, (void)kind, (void)index, (void)obj, (void)inside, (void)p, (void)L, (void)i, (void)l, (void)dist,
         (void)k, (void)pls, (void)iv, (void)va;
+    FXRT_IF_MODEL((void)part;)
     return false;
 #endif
 }
