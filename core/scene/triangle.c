@@ -37,11 +37,13 @@ static numw_t geom_edge(vec3_t p, vec3_t q, const ray_t *ray)
 
 /* Does the ray's line pass inside the triangle? When all three edge tests
  * agree in sign (either winding; a zero means the ray grazes that edge
- * and counts). */
+ * and counts). Two of opposite strict signs decide it without the third. */
 static bool geom_triangle_inside(const geom_triangle_t *tr, const ray_t *ray)
 {
     numw_t e0 = geom_edge(tr->a, tr->b, ray);
     numw_t e1 = geom_edge(tr->b, tr->c, ray);
+    if ((e0 < 0 && e1 > 0) || (e0 > 0 && e1 < 0))
+        return false;
     numw_t e2 = geom_edge(tr->c, tr->a, ray);
     bool neg = e0 < 0 || e1 < 0 || e2 < 0;
     bool pos = e0 > 0 || e1 > 0 || e2 > 0;
