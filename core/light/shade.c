@@ -490,11 +490,50 @@ color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shad
     return shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, mask);
 }
 
+/* Does every pixel of columns x..end-1 see plane normal n from one side
+ * (shade_flat_plane_dir's rn > 0 at all of them, or at none)? 0 (and
+ * ray holds the first column's ray) when it does, -1 when it may not. In
+ * Q16.16 rn is exact and linear in the column (the ray's direction is
+ * row + u ix, exactly), so the two ends decide; in float and double each
+ * end must also lie beyond 2^-12 of its |d|_1, far above the rounding of
+ * d and of the dot product between them. */
+static int shade_plane_run_side(const cam_row_t *row, const vec3_t *u, const vec3_t *fwd, const vec3_t *n,
+                                int32_t width, int32_t x, int32_t end, ray_t *ray)
+{
+    cam_row_dir(row, u, fwd, 2 * (end - 1) - width + 1, ray);
+    numw_t r1 = vec3_dotw_unit(ray->d, *n);
+    num_t m1 = num_add(num_abs(ray->d.x), num_add(num_abs(ray->d.y), num_abs(ray->d.z)));
+    cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
+    numw_t r0 = vec3_dotw_unit(ray->d, *n);
+    if ((r0 > 0) != (r1 > 0))
+        return -1;
+    if (!NUM_EXACT) {
+        num_t m0 = num_add(num_abs(ray->d.x), num_add(num_abs(ray->d.y), num_abs(ray->d.z)));
+        num_t m = num_mul(m0 > m1 ? m0 : m1, (num_t)(1.0 / 4096));
+        if (!(num_abs((num_t)r0) > m && num_abs((num_t)r1) > m))
+            return -1;
+    }
+    return 0;
+}
+
 void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                           const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                           uint8_t *rgb)
 {
     const bool dir = f->flags & SHADE_FLAT_DIRECTIONAL;
+    if (dir && end - x > 1 && shade_plane_run_side(row, u, fwd, f->n, width, x, end, ray) >= 0) {
+        /* One side of the plane over the whole run: where no light needs
+         * a shadow ray there, every pixel has the same colour. */
+        bool inside = vec3_dotw_unit(ray->d, *f->n) > 0;
+        if (shade_plane_row_unshadowed(w, f->pls, inside)) {
+            rgb8_t v = color_to_rgb8(shade_plane_sum_dir(w, f->index, k, f->pls, inside, NULL));
+            for (; x < end; x++) {
+                FXRT_COUNT(shaded);
+                color_put_pixel(rgb, x, v);
+            }
+            return;
+        }
+    }
     for (; x < end; x++) {
         cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
         color_t c;
