@@ -600,6 +600,13 @@ static void test_directional_plane(void)
             else
                 CHECK_MSG(pts == (uint32_t)plane, "%s, and a point light: %u hit points for %ld plane pixels", mat,
                           (unsigned)pts, plane);
+            /* In runs (FXRT_SHADE_RUNS), a lambert plane's run under
+             * directional lights with no shadow ray on its row takes one
+             * light sum, not one per pixel: at most a few per row. */
+            if (mode == 0 && !phong && FXRT_SHADE_RUNS)
+                CHECK_MSG(fxrt_stats.dir_sums <= 3u * H && fxrt_stats.dir_sums < (uint32_t)plane / 4,
+                          "lambert, directional, shadows off: %u light sums for %ld plane pixels on %d rows",
+                          (unsigned)fxrt_stats.dir_sums, plane, H);
         }
 }
 

@@ -444,6 +444,7 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum_dir(const w
                                                                          const shade_plane_light_t *pls, bool inside,
                                                                          uint8_t *mask)
 {
+    FXRT_COUNT(dir_sums);
     if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
         return k->ambient;
     color_t c = k->ambient;
