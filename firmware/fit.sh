@@ -294,31 +294,51 @@ if [[ ${1:-} == table ]]; then
     size=${FIT_SIZE:-160x120}
     info=${BENCH_BOARD_INFO:-"mps2-an385:M3:full mps2-an386:M4F:full microbit:M0:stream"}
     mkdir -p "$BUILD/fit"
-    scene=$BUILD/fit/probe.scene
-    {
-        echo "# firmware/fit.sh table: one object of each kind"
-        echo "camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45"
-        echo "plane point 0 -1 0 normal 0 1 0 color 0.2 0.6 0.2"
-        echo "sphere center -1 0 -4 radius 0.5 color 0.9 0.2 0.2"
-        echo "triangle a 0 0 -4 b 1 0 -4 c 0.5 1 -4 color 0.2 0.2 0.9"
-        echo "box min 0.5 -1 -5 max 1.5 0 -4 color 0.9 0.9 0.2"
-    } >"$scene"
+    # Two probe scenes, the same objects: unlit (flat colours, lighting
+    # compiled out) and lit (one point light with shadows, Phong materials:
+    # each object then also keeps its shading constants and its shadow-ray
+    # culling entries). The box is in general position, so the eye sees
+    # three of its faces, the most a box seen from outside in perspective
+    # can need (an orthographic camera, or an eye inside the box, needs up
+    # to six: a figure per box that such scenes exceed).
+    probe_scene() { # FILE lit(0|1)
+        local mat=""
+        [[ $2 == 1 ]] && mat=" material phong specular 0.5 0.5 0.5 exponent 32"
+        {
+            echo "# firmware/fit.sh table: one object of each kind"
+            echo "camera perspective eye 0 0 0 gaze 0 0 -1 up 0 1 0 fov 45"
+            [[ $2 == 1 ]] && echo "light point position 2 4 1 color 1 1 1"
+            echo "plane point 0 -2 0 normal 0 1 0 color 0.2 0.6 0.2$mat"
+            echo "sphere center -1 0 -4 radius 0.5 color 0.9 0.2 0.2$mat"
+            echo "triangle a 0 0 -4 b 1 0 -4 c 0.5 1 -4 color 0.2 0.2 0.9$mat"
+            echo "box min 0.5 -1.5 -5 max 1.5 -0.5 -4 color 0.9 0.9 0.2$mat"
+        } >"$1"
+    }
     tab=$BUILD/fit/ram-table.md
     {
     echo "RAM per object and the most objects that fit, Q16.16 firmware at $size (\`make ram-table\`, measured by firmware/fit.sh from the compiled firmware; $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u '+%Y-%m-%d'))."
     echo
-    echo "| board | frame | RAM | RAM without objects | plane | sphere | triangle | box | most planes | most spheres | most triangles | most boxes | most mixed |"
-    echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+    echo "| board | frame | scene | RAM | RAM without objects | plane | sphere | triangle | box | most planes | most spheres | most triangles | most boxes | most mixed |"
+    echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
     for i in $info; do
         b=${i%%:*} cpu=$(cut -d: -f2 <<<"$i") fb=${i##*:}
-        out=$(make -s --no-print-directory BUILD="$BUILD" fw SCENE="$scene" BOARD="$b" NUMBER=q16 SIZE="$size" FB="$fb" \
-            FIT_REPORT=1 2>&1) || { echo "$out" >&2; die "make fw of $scene for $b failed"; }
-        line=$(grep '^FIT ' <<<"$out" | tail -n 1)
-        [[ -n $line ]] || { echo "$out" >&2; die "no FIT line for $b"; }
-        g() { sed -nE "s/.*(^| )$1=([^ ]+).*/\2/p" <<<"$line"; }
-        printf '| %s (%s) | %s | %s | %s | %s B | %s B | %s B | %s B | %s | %s | %s | %s | %s |\n' "$b" "$cpu" "$fb" \
-            "$(g ram)" "$(g fixed)" "$(g per_planes)" "$(g per_spheres)" "$(g per_triangles)" "$(g per_boxes)" \
-            "$(g alone_planes)" "$(g alone_spheres)" "$(g alone_triangles)" "$(g alone_boxes)" "$(g mixed)"
+        for lit in 0 1; do
+            scene=$BUILD/fit/probe-$([[ $lit == 1 ]] && echo lit || echo unlit).scene
+            probe_scene "$scene" $lit
+            out=$(make -s --no-print-directory BUILD="$BUILD" fw SCENE="$scene" BOARD="$b" NUMBER=q16 SIZE="$size" FB="$fb" \
+                FIT_REPORT=1 2>&1) || { echo "$out" >&2; die "make fw of $scene for $b failed"; }
+            line=$(grep '^FIT ' <<<"$out" | tail -n 1)
+            [[ -n $line ]] || { echo "$out" >&2; die "no FIT line for $b"; }
+            g() { sed -nE "s/.*(^| )$1=([^ ]+).*/\2/p" <<<"$line"; }
+            # (the probe's box must need its 3 faces, or its figure is not the worst case)
+            faces=$(sed -nE 's/^#define FXRT_RENDER_BOX_FACES ([0-9]+).*/\1/p' \
+                "$BUILD/fw/$b/$(basename "$scene" .scene)-q16-$size-$fb/scene_config.h")
+            [[ $faces == 3 ]] || die "the probe's box needs ${faces:-no} faces, not 3"
+            printf '| %s (%s) | %s | %s | %s | %s | %s B | %s B | %s B | %s B | %s | %s | %s | %s | %s |\n' "$b" "$cpu" "$fb" \
+                "$([[ $lit == 1 ]] && echo "lit (1 point light, shadows, Phong)" || echo unlit)" \
+                "$(g ram)" "$(g fixed)" "$(g per_planes)" "$(g per_spheres)" "$(g per_triangles)" "$(g per_boxes)" \
+                "$(g alone_planes)" "$(g alone_spheres)" "$(g alone_triangles)" "$(g alone_boxes)" "$(g mixed)"
+        done
     done
     echo
     echo "\"Most\" counts are of one kind alone (with the frame, stack and renderer state of a scene that uses every kind);"
