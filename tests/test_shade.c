@@ -515,6 +515,114 @@ static void test_spot_early_out(void)
 }
 #endif
 
+/* shade_spot_block_out, which lets a block of a plane's run skip every
+ * pixel's spot cone test, against that test itself (the pixel's: in
+ * Q16.16 (-v) . s >= cos |v| with |v| from fx_normalize3_len and s, cos
+ * in Q2.30; in float and double (-v) . s >= cos |v| in their arithmetic).
+ * Random spots (every direction, half-angles 1 to 90 degrees, at scales
+ * 2, 100 and 8000), and segments from the light's distance 0.01 to 8000,
+ * of lengths from 1e-4 to 10 units, placed anywhere or crossing the cone's
+ * edge. Wherever the block test says "out", 33 points along the segment,
+ * each moved by up to the computed points' error (4 LSB per coordinate in
+ * Q16.16, 2^-22 of the scale in float and double), must be outside by the
+ * pixel's test; and it must say "out" for most short segments far outside
+ * (over 10 degrees off the cone, shorter than 1 % of the distance). */
+static bool spot_pixel_in(const light_t *L, vec3_t p)
+{
+    vec3_t v = vec3_sub(L->position, p);
+#if FXRT_NUMBER == FXRT_Q16
+    fx_t u[3] = {v.x, v.y, v.z}, len;
+    if (!fx_normalize3_len(u, &len))
+        return false;
+    int64_t lhs = -((int64_t)v.x * L->axis30[0] + (int64_t)v.y * L->axis30[1] + (int64_t)v.z * L->axis30[2]);
+    return len < SHADE_FAR_DIST && lhs >= (int64_t)len * L->cos30;
+#else
+    numw_t v2 = vec3_dotw(v, v);
+    if (!(v2 > 0))
+        return false;
+    return vec3_dotw(vec3_neg(v), L->dir) >= numw_mul(L->cos_angle, numw_sqrt(v2));
+#endif
+}
+static void test_spot_block_out(void)
+{
+    long wrong = 0, said = 0, far = 0, far_caught = 0, tried = 0;
+    for (int k = 0; k < 40000; k++) {
+        double pos[3], s[3], q[3], pa[3], pb[3], o[3] = {0, 0, 0};
+        double scale = k % 3 == 0 ? 8000 : k % 3 == 1 ? 100 : 2;
+        for (int i = 0; i < 3; i++)
+            pos[i] = (2 * spot_rand() - 1) * scale;
+        spot_unit(s);
+        double angle = k % 10 == 0 ? 90 : 1 + 89 * spot_rand();
+        static world_t w;
+        fxrt_world_init(&w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+        double dir[3] = {s[0] * 1000, s[1] * 1000, s[2] * 1000};
+        int32_t li = world_add_light(&w, LIGHT_SPOT, V(pos), V(dir), N(angle), color_make(NUM_ONE, NUM_ONE, NUM_ONE),
+                                     false);
+        if (li < 0)
+            continue; /* (a light the world refuses: none to test) */
+        const light_t *L = &w.lights[li];
+        /* the segment's middle at an angle off the axis: near the edge
+         * (within 5 degrees) or anywhere */
+        double dist = exp(log(1e-2) + spot_rand() * (log(8000.0) - log(1e-2)));
+        double len = exp(log(1e-4) + spot_rand() * (log(10.0) - log(1e-4)));
+        spot_unit(q);
+        double qs = q[0] * s[0] + q[1] * s[1] + q[2] * s[2], n = 0, m[3], t[3];
+        for (int i = 0; i < 3; i++)
+            q[i] -= qs * s[i], n += q[i] * q[i];
+        n = sqrt(n);
+        double th = (k % 2 ? angle + (2 * spot_rand() - 1) * 5 : 180 * spot_rand()) * (3.14159265358979323846 / 180);
+        for (int i = 0; i < 3; i++)
+            m[i] = pos[i] + dist * (cos(th) * s[i] + sin(th) * q[i] / n);
+        spot_unit(t);
+        for (int i = 0; i < 3; i++)
+            pa[i] = m[i] - 0.5 * len * t[i], pb[i] = m[i] + 0.5 * len * t[i];
+        bool range = true;
+        for (int i = 0; i < 3; i++)
+            range = range && fabs(pa[i]) < 16000 && fabs(pb[i]) < 16000;
+        if (!range)
+            continue;
+        tried++;
+        vec3_t A = V(pa), B = V(pb), O = V(o);
+        bool out = shade_spot_block_out(L, &O, &A, &B);
+        if (out) {
+            said++;
+            for (int j = 0; j <= 32; j++) {
+                double pp[3];
+                for (int i = 0; i < 3; i++) {
+                    double a = D(i == 0 ? A.x : i == 1 ? A.y : A.z);
+                    double b = D(i == 0 ? B.x : i == 1 ? B.y : B.z);
+#if FXRT_NUMBER == FXRT_Q16
+                    double wob = (double)((int)(spot_rand() * 9) - 4) / 65536;
+#else
+                    double wob = (2 * spot_rand() - 1) * scale / 4194304;
+#endif
+                    pp[i] = a + (b - a) * j / 32 + wob;
+                }
+                wrong += spot_pixel_in(L, V(pp));
+            }
+        }
+        /* the angle off the axis of the segment's two ends, in double */
+        double off_min = 180;
+        for (int e = 0; e < 2; e++) {
+            const double *p = e ? pb : pa;
+            double vv[3] = {p[0] - pos[0], p[1] - pos[1], p[2] - pos[2]};
+            double vn = sqrt(vv[0] * vv[0] + vv[1] * vv[1] + vv[2] * vv[2]);
+            double c = (vv[0] * s[0] + vv[1] * s[1] + vv[2] * s[2]) / vn;
+            double off = acos(c > 1 ? 1 : c < -1 ? -1 : c) * (180 / 3.14159265358979323846);
+            off_min = off < off_min ? off : off_min;
+        }
+        if (angle < 80 && off_min > angle + 10 && off_min < 170 && len < 0.01 * dist && dist > 0.05) {
+            far++;
+            far_caught += out;
+        }
+    }
+    printf("spot block test: %ld of %ld segments said out (%ld of %ld short ones over 10 degrees outside), "
+           "%ld points of them inside\n", said, tried, far_caught, far, wrong);
+    CHECK_MSG(wrong == 0, "spot block test: %ld points of segments it puts outside are inside the cone", wrong);
+    CHECK_MSG(far > 2000 && far_caught * 10 >= far * 9, "spot block test caught %ld of %ld short segments far outside",
+              far_caught, far);
+}
+
 #if SHADOW_CULL
 /* Shadow-ray culling (core/light/shadow.c) must change no decision of a right
  * kernel: for random occluders (a sphere, a triangle and a box at scales
@@ -1360,5 +1468,6 @@ int main(void)
         check_centre((const char *[]){"far spot aimed at p", "far spot 5.1 degrees off", "far spot 4.9 degrees off"}[k],
                      &f, e3);
     }
+    test_spot_block_out(); /* (last: the sweeps above keep their random numbers) */
     return check_report("test_shade_" NUM_NAME);
 }

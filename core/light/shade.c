@@ -117,6 +117,81 @@ static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, const 
 }
 #endif
 
+/* (shade.h) Spot L and a block of a plane's run with end points pa, pb.
+ * Every pixel x of the block has an exact hit point p(x) on the segment
+ * between the exact ones of the ends (the camera ray is linear in x and
+ * its plane denominator keeps one sign over the run), so with M the
+ * midpoint of pa and pb, every computed hit point q of the block lies
+ * within R of M, R = |pb - pa| / 2 + 3 e, e the computed points' error.
+ * The pixel's cone test says outside when (-v) . s < c dist, v = L - q,
+ * dist its computed |v|. Since (-v) . s <= lhs_M + R |s| and |v| >=
+ * |v_M| - R, it does wherever lhs_M + 2 R' < c |v_M| for an R' that also
+ * covers the test's own roundings; and that is decided exactly.
+ *
+ * Q16.16 (units: LSB): shade_flat_point's coordinates are within 0.5 +
+ * 2^-29 |t r_i| <= 4.5 LSB of the exact point (|t r_i| < 2^31), so e <=
+ * 4.5 sqrt(3) < 8 and R <= |pb - pa|_1 / 2 + 24. The test's dist is
+ * within 2^-24 |v| + 0.5 of |v| (fx_inv3, fx_normalize3_len), s has
+ * |s| <= 2^30 + 1 and c = cos30 <= 2^30, so the pixel is outside where
+ *   lhs_M + R (2^31 + 2) + 2^6 |v_M| + 2^29 < c |v_M|   (Q18.46),
+ * which R' = |pb - pa|_1 / 2 + 128 + |v_M|_1 / 2^20 covers with room:
+ * 2^31 104 > 2 R + 2^29 + 2^31, and 2^31 |v_M|_1 / 2^20 >= 2^6 |v_M|
+ * beyond the floor's loss. Only for |v_i| < 2^29 at both ends (then no
+ * point of the block takes the far path, and no value overflows: 2 v_M
+ * and the products below stay within 2^62) and c > 0. In doubled units
+ * (V = 2 v_M, exact): lhs = -V . s, x = lhs + 2 (2 R') 2^30, and outside
+ * where x < 0 or x^2 < c^2 |V|^2, exact 128-bit products.
+ *
+ * Float and double: R' = |pb - pa|_1 / 2 + 2^-14 (|pa|_1 + |pb|_1 +
+ * |o|_1 + |L|_1 + 1), and outside where lhs_M + 2 R' + 2^-14 (|lhs_M| +
+ * |v_M|) < c |v_M|: margins of 2^-14, against roundings near 2^-18
+ * relative at most in float (the point and the ray's sum, whose terms can
+ * cancel in a wide view; the root, the products) and far less in double. */
+#if FXRT_NUMBER != FXRT_Q16
+static num_t shade_l1(vec3_t v) { return num_abs(v.x) + num_abs(v.y) + num_abs(v.z); }
+#endif
+bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb)
+{
+#if FXRT_NUMBER == FXRT_Q16
+    (void)o;
+    const int64_t lim = (int64_t)1 << 29;
+    if (L->kind != LIGHT_SPOT || L->cos30 <= 0)
+        return false;
+    const fx_t P[3] = {L->position.x, L->position.y, L->position.z}, A[3] = {pa->x, pa->y, pa->z},
+               B[3] = {pb->x, pb->y, pb->z};
+    int32_t V[3];
+    int64_t dl1 = 0, vl1 = 0;
+    for (int j = 0; j < 3; j++) {
+        int64_t va = (int64_t)P[j] - A[j], vb = (int64_t)P[j] - B[j], dj = (int64_t)B[j] - A[j];
+        if (va >= lim || va <= -lim || vb >= lim || vb <= -lim)
+            return false;
+        V[j] = (int32_t)(va + vb); /* |V| < 2^30 */
+        dl1 += dj < 0 ? -dj : dj;
+        vl1 += V[j] < 0 ? -(int64_t)V[j] : V[j];
+    }
+    /* 2 R' = |pb - pa|_1 + 256 + |V|_1 / 2^20 (|V|_1 = 2 |v_M|_1) < 2^30 + 2^12 */
+    int64_t r2 = dl1 + 256 + (vl1 >> 20);
+    int64_t lhs = -fx_smlal32(fx_smlal32(fx_smul32(V[0], L->axis30[0]), V[1], L->axis30[1]), V[2], L->axis30[2]);
+    int64_t x = lhs + r2 * ((int64_t)1 << 31); /* |lhs| < 3 2^60, r2 2^31 < 2^61.1 */
+    if (x < 0)
+        return true;
+    uint64_t m2 = (uint64_t)fx_smlal32(fx_smlal32(fx_smul32(V[0], V[0]), V[1], V[1]), V[2], V[2]); /* < 3 2^60 */
+    uint64_t ahi, alo, bhi, blo;
+    shade_umul64((uint64_t)x, (uint64_t)x, &ahi, &alo);
+    shade_umul64(fx_umul32((uint32_t)L->cos30, (uint32_t)L->cos30), m2, &bhi, &blo);
+    return ahi < bhi || (ahi == bhi && alo < blo);
+#else
+    if (L->kind != LIGHT_SPOT || !(L->cos_angle > NUM_ZERO))
+        return false;
+    const num_t eps = (num_t)(1.0 / 16384);
+    vec3_t m = vec3_scale(vec3_add(*pa, *pb), (num_t)0.5), v = vec3_sub(L->position, m), dp = vec3_sub(*pb, *pa);
+    num_t s = shade_l1(*pa) + shade_l1(*pb) + shade_l1(*o) + shade_l1(L->position) + NUM_ONE;
+    num_t r = shade_l1(dp) * (num_t)0.5 + eps * s;
+    num_t lhs = -vec3_dot(v, L->dir), dist = num_sqrt(vec3_dot(v, v));
+    return lhs + (r + r) + eps * (num_abs(lhs) + dist) < L->cos_angle * dist;
+#endif
+}
+
 color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, vec3_t p, vec3_t n_geo,
                     vec3_t d, uint8_t *mask)
 {
@@ -517,6 +592,86 @@ static int shade_plane_run_side(const cam_row_t *row, const vec3_t *u, const vec
     return 0;
 }
 
+/* Plane f's hit point at column x (shade_flat_point's; ray: its camera ray). */
+static vec3_t shade_plane_point_at(const shade_flat_t *f, const cam_row_t *row, const vec3_t *u, const vec3_t *fwd,
+                                   int32_t width, int32_t x, ray_t *ray)
+{
+    numw_t rn;
+    cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
+    return shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
+}
+
+/* Pixels x..end-1 of a run on Lambert plane f, one by one (dir: every
+ * light is directional). */
+static inline __attribute__((always_inline)) void shade_plane_pixels(const world_t *w, const shade_flat_t *f,
+                                                                     const shade_k_t *k, const cam_row_t *row,
+                                                                     const vec3_t *u, const vec3_t *fwd, int32_t width,
+                                                                     int32_t x, int32_t end, ray_t *ray, uint8_t *rgb,
+                                                                     bool dir)
+{
+    for (; x < end; x++) {
+        cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
+        color_t c;
+        /* (shade_flat_plane_dir's value, inline: no frame deeper) */
+        numw_t rn = dir ? vec3_dotw_unit(ray->d, *f->n) : 0;
+        if (dir && shade_plane_row_unshadowed(w, f->pls, rn > 0)) {
+            FXRT_COUNT(shaded);
+            c = shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, NULL);
+        } else
+            c = shade_flat_plane_at(w, f, k, ray, NULL);
+        color_put_pixel(rgb, x, color_to_rgb8(c));
+    }
+}
+
+/* Has w lights, all of them spots? */
+static bool shade_all_spots(const world_t *w)
+{
+    for (unsigned i = 0; i < w->n_lights; i++)
+        if (w->lights[i].kind != LIGHT_SPOT)
+            return false;
+    return w->n_lights > 0;
+}
+
+/* A run on Lambert plane f under spot lights only: blocks of
+ * SHADE_SPOT_BLOCK pixels that no spot reaches (shade_plane_spots_out)
+ * are the ambient term alone, the light sum's value there; the others
+ * pixel by pixel. */
+static __attribute__((noinline)) void shade_flat_spot_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k,
+                                                          const cam_row_t *row, const vec3_t *u, const vec3_t *fwd,
+                                                          int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                                          uint8_t *rgb)
+{
+    /* A block x..last is tested on the segment from x's hit point to the
+     * next block's first pixel's (last + 1, in the run: the exact points
+     * of x..last lie on it), so each block makes one new point; the run's
+     * last block ends on its own last pixel. */
+    vec3_t pa = shade_plane_point_at(f, row, u, fwd, width, x, ray);
+    while (x < end) {
+        int32_t last = end - x > SHADE_SPOT_BLOCK ? x + SHADE_SPOT_BLOCK - 1 : end - 1;
+        int32_t e = last + 1 < end ? last + 1 : last;
+        if (e == x) { /* one pixel left */
+            shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, false);
+            return;
+        }
+        vec3_t pb = shade_plane_point_at(f, row, u, fwd, width, e, ray);
+        bool out = true;
+        for (unsigned i = 0; out && i < w->n_lights; i++)
+            out = shade_spot_block_out(&w->lights[i], &ray->o, &pa, &pb);
+        if (out) {
+            FXRT_COUNT(spot_blocks);
+            rgb8_t v = color_to_rgb8(k->ambient);
+            for (; x <= last; x++) {
+                FXRT_COUNT(shaded);
+                color_put_pixel(rgb, x, v);
+            }
+        } else {
+            shade_plane_pixels(w, f, k, row, u, fwd, width, x, last + 1, ray, rgb, false);
+            x = last + 1;
+        }
+        pa = pb;
+    }
+}
+
 void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                           const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                           uint8_t *rgb)
@@ -535,18 +690,11 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
             return;
         }
     }
-    for (; x < end; x++) {
-        cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
-        color_t c;
-        /* (shade_flat_plane_dir's value, inline: no frame deeper) */
-        numw_t rn = dir ? vec3_dotw_unit(ray->d, *f->n) : 0;
-        if (dir && shade_plane_row_unshadowed(w, f->pls, rn > 0)) {
-            FXRT_COUNT(shaded);
-            c = shade_plane_sum_dir(w, f->index, k, f->pls, rn > 0, NULL);
-        } else
-            c = shade_flat_plane_at(w, f, k, ray, NULL);
-        color_put_pixel(rgb, x, color_to_rgb8(c));
+    if (!dir && shade_all_spots(w)) {
+        shade_flat_spot_run(w, f, k, row, u, fwd, width, x, end, ray, rgb);
+        return;
     }
+    shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, dir);
 }
 
 /* (shade_sum.h) For a Lambert plane with constants k. */

@@ -307,5 +307,14 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
  * p too, so it changes no frame (tests/test_shade.c checks this near the
  * cone's edge). False for |v_i| >= 16384 (the full test decides). */
 bool shade_spot_surely_out(const light_t *L, vec3_t v);
+/* Does spot L reach no pixel of a block of a plane's run, whose first and
+ * last pixels' hit points are pa and pb (shade_flat_point's, from eye o)?
+ * True only where the light sum's own cone test would reject every pixel
+ * of the block (their exact hit points lie on the segment between the
+ * exact ones of its ends); false where it cannot show that, near the
+ * cone's edge or far away. The proof is in light/shade.c. */
+/* The pixels of such a block (light/shade.c, shade_flat_plane_run). */
+#define SHADE_SPOT_BLOCK 4
+bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb);
 
 #endif

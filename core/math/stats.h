@@ -25,6 +25,7 @@ typedef struct {
     uint32_t d_normalised;   /* camera rays normalised by the shading pass (light/hit.c) */
     uint32_t plane_points;   /* hit points the shading pass made for planes and triangles (light/shade.c, light/hit.c) */
     uint32_t dir_sums;       /* a plane's light sums under directional lights only (light/shade.c: per pixel, or per run) */
+    uint32_t spot_blocks;    /* blocks of a plane's run that no spot reaches (light/shade.c: shade_plane_spots_out) */
 } fxrt_stats_t;
 extern fxrt_stats_t fxrt_stats; /* (defined always; unused and dropped by the linker unless FXRT_STATS) */
 #if FXRT_STATS
