@@ -115,44 +115,45 @@ static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, const 
         return vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     return l;
 }
-#endif
 
-/* (shade.h) Spot L and a block of a plane's run with end points pa, pb.
- * Every pixel x of the block has an exact hit point p(x) on the segment
- * between the exact ones of the ends (the camera ray is linear in x and
- * its plane denominator keeps one sign over the run), so with M the
- * midpoint of pa and pb, every computed hit point q of the block lies
- * within R of M, R = |pb - pa| / 2 + 3 e, e the computed points' error.
- * The pixel's cone test says outside when (-v) . s < c dist, v = L - q,
- * dist its computed |v|. Since (-v) . s <= lhs_M + R |s| and |v| >=
- * |v_M| - R, it does wherever lhs_M + 2 R' < c |v_M| for an R' that also
- * covers the test's own roundings; and that is decided exactly.
+/* (shade.h) Spot L and a block of a plane's run whose segment runs from
+ * pa to pb. Every pixel of the block has its exact hit point on the
+ * segment between the exact points of pa's and pb's pixels (the camera
+ * ray is linear in the column and its plane denominator keeps one sign
+ * over the run), so every computed hit point q of the block lies within
+ * R = |pb - pa| / 2 + 3 e of the midpoint M of pa and pb, e the computed
+ * points' error. With v = L - q, lhs = (-v) . s and G = c |v| - lhs (s
+ * the cone's axis as the light keeps it, c its cosine), the pixel's cone
+ * test says outside where G exceeds the test's own rounding. For q = M +
+ * w, |w| <= R: lhs_q = lhs_M + w . s exactly, and |v_q| >= (q - L) . u
+ * with u = (M - L) / |v_M| (Cauchy-Schwarz), so
+ *   G_q >= G_M - w . (s - c u) >= G_M - R K,
+ *   K^2 = |s - c u|^2 = |s|^2 - c^2 + 2 c G_M / |v_M|,
+ * which is small near the cone's edge (K -> sin(angle) for a unit s):
+ * the block is outside where G_M - R K exceeds the rounding's bound.
  *
- * Q16.16 (units: LSB): shade_flat_point's coordinates are within 0.5 +
+ * Q16.16 (lengths in LSB, doubled: V = 2 v_M exact, |V| < 2^30 sqrt 3;
+ * s and c in Q2.30): shade_flat_point's coordinates are within 0.5 +
  * 2^-29 |t r_i| <= 4.5 LSB of the exact point (|t r_i| < 2^31), so e <=
- * 4.5 sqrt(3) < 8 and R <= |pb - pa|_1 / 2 + 24. The test's dist is
- * within 2^-24 |v| + 0.5 of |v| (fx_inv3, fx_normalize3_len), s has
- * |s| <= 2^30 + 1 and c = cos30 <= 2^30, so the pixel is outside where
- *   lhs_M + R (2^31 + 2) + 2^6 |v_M| + 2^29 < c |v_M|   (Q18.46),
- * which R' = |pb - pa|_1 / 2 + 128 + |v_M|_1 / 2^20 covers with room:
- * 2^31 104 > 2 R + 2^29 + 2^31, and 2^31 |v_M|_1 / 2^20 >= 2^6 |v_M|
- * beyond the floor's loss. Only for |v_i| < 2^29 at both ends (then no
- * point of the block takes the far path, and no value overflows: 2 v_M
- * and the products below stay within 2^62) and c > 0. In doubled units
- * (V = 2 v_M, exact): lhs = -V . s, x = lhs + 2 (2 R') 2^30, and outside
- * where x < 0 or x^2 < c^2 |V|^2, exact 128-bit products.
+ * 4.5 sqrt 3 < 8 and 2 R <= R2 = |pb - pa|_1 + 256. The pixel's distance
+ * is within 2^-24 |v| + 0.5 of |v| (fx_inv3, fx_normalize3_len), so the
+ * pixel is outside where 2 G_q > 2^6 |V_q| + 2^30 (units 2^-30 LSB), and
+ * |V_q| <= |V| + R2. With m = floor(sqrt(|V|^2)) (exact) and G2 = c |V|
+ * + (V . s) = 2 G_M: G2 >= c m + V . s = g; G2 / |V| <= (c (m + 1) + V .
+ * s) / m rounded up = q; |s|^2 <= 2^60 + 2^33. So the block is outside
+ * where g - S > 0 and (g - S)^2 > R2^2 (2^60 + 2^33 - c^2 + 2 c q), S =
+ * 2^6 (m + 1 + R2) + 2^30: exact 128-bit products. Only for |v_i| <
+ * 2^29 at both ends (no point of the block takes the far path; every
+ * value within 2^62.5), m >= 2^10 (q < 2^31.1) and c > 0.
  *
- * Float and double: R' = |pb - pa|_1 / 2 + 2^-14 (|pa|_1 + |pb|_1 +
- * |o|_1 + |L|_1 + 1), and outside where lhs_M + 2 R' + 2^-14 (|lhs_M| +
- * |v_M|) < c |v_M|: margins of 2^-14, against roundings near 2^-18
- * relative at most in float (the point and the ray's sum, whose terms can
- * cancel in a wide view; the root, the products) and far less in double. */
-#if FXRT_NUMBER != FXRT_Q16
-static num_t shade_l1(vec3_t v) { return num_abs(v.x) + num_abs(v.y) + num_abs(v.z); }
-#endif
+ * Float and double: the same test in their arithmetic, with R = |pb -
+ * pa|_1 / 2 + 2^-14 (|pa|_1 + |pb|_1 + |o|_1 + |L|_1 + 1) and a margin
+ * of 2^-14 (|lhs| + c |v_M| + R (1 + K) + 1) on G: against roundings near
+ * 2^-18 relative at most in float (the point and the ray's sum, whose
+ * terms can cancel in a wide view; the roots, the products) and far less
+ * in double. */
 bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb)
 {
-#if FXRT_NUMBER == FXRT_Q16
     (void)o;
     const int64_t lim = (int64_t)1 << 29;
     if (L->kind != LIGHT_SPOT || L->cos30 <= 0)
@@ -160,37 +161,54 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
     const fx_t P[3] = {L->position.x, L->position.y, L->position.z}, A[3] = {pa->x, pa->y, pa->z},
                B[3] = {pb->x, pb->y, pb->z};
     int32_t V[3];
-    int64_t dl1 = 0, vl1 = 0;
+    int64_t dl1 = 0;
     for (int j = 0; j < 3; j++) {
         int64_t va = (int64_t)P[j] - A[j], vb = (int64_t)P[j] - B[j], dj = (int64_t)B[j] - A[j];
         if (va >= lim || va <= -lim || vb >= lim || vb <= -lim)
             return false;
-        V[j] = (int32_t)(va + vb); /* |V| < 2^30 */
-        dl1 += dj < 0 ? -dj : dj;
-        vl1 += V[j] < 0 ? -(int64_t)V[j] : V[j];
+        V[j] = (int32_t)(va + vb);
+        dl1 += dj < 0 ? -dj : dj; /* < 2^30 */
     }
-    /* 2 R' = |pb - pa|_1 + 256 + |V|_1 / 2^20 (|V|_1 = 2 |v_M|_1) < 2^30 + 2^12 */
-    int64_t r2 = dl1 + 256 + (vl1 >> 20);
-    int64_t lhs = -fx_smlal32(fx_smlal32(fx_smul32(V[0], L->axis30[0]), V[1], L->axis30[1]), V[2], L->axis30[2]);
-    int64_t x = lhs + r2 * ((int64_t)1 << 31); /* |lhs| < 3 2^60, r2 2^31 < 2^61.1 */
-    if (x < 0)
-        return true;
+    int64_t r2 = dl1 + 256;
+    int64_t vs = fx_smlal32(fx_smlal32(fx_smul32(V[0], L->axis30[0]), V[1], L->axis30[1]), V[2], L->axis30[2]);
     uint64_t m2 = (uint64_t)fx_smlal32(fx_smlal32(fx_smul32(V[0], V[0]), V[1], V[1]), V[2], V[2]); /* < 3 2^60 */
+    uint32_t m = fx_isqrt64(m2);
+    if (m < 1024 || r2 >= lim)
+        return false;
+    int64_t c = L->cos30;
+    int64_t g = c * m + vs - ((int64_t)(m + 1 + r2) << 6) - ((int64_t)1 << 30); /* g - S, |.| < 2^62.3 */
+    if (g <= 0)
+        return false;
+    uint32_t q = fx_udiv64_32((uint64_t)(c * (m + 1) + vs), m) + 1u;
+    uint64_t k2 = ((uint64_t)1 << 60) + ((uint64_t)1 << 33) - fx_umul32((uint32_t)c, (uint32_t)c) +
+                  (fx_umul32((uint32_t)c, q) << 1); /* < 2^62.5 */
     uint64_t ahi, alo, bhi, blo;
-    shade_umul64((uint64_t)x, (uint64_t)x, &ahi, &alo);
-    shade_umul64(fx_umul32((uint32_t)L->cos30, (uint32_t)L->cos30), m2, &bhi, &blo);
-    return ahi < bhi || (ahi == bhi && alo < blo);
+    shade_umul64((uint64_t)g, (uint64_t)g, &ahi, &alo);
+    shade_umul64((uint64_t)(r2 * r2), k2, &bhi, &blo);
+    return ahi > bhi || (ahi == bhi && alo > blo);
+}
 #else
+/* (shade.h) shade_spot_block_out in float and double: the Q16.16 comment
+ * above has the proof and this arithmetic's margins. */
+static num_t shade_l1(vec3_t v) { return num_abs(v.x) + num_abs(v.y) + num_abs(v.z); }
+bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb)
+{
     if (L->kind != LIGHT_SPOT || !(L->cos_angle > NUM_ZERO))
         return false;
     const num_t eps = (num_t)(1.0 / 16384);
     vec3_t m = vec3_scale(vec3_add(*pa, *pb), (num_t)0.5), v = vec3_sub(L->position, m), dp = vec3_sub(*pb, *pa);
     num_t s = shade_l1(*pa) + shade_l1(*pb) + shade_l1(*o) + shade_l1(L->position) + NUM_ONE;
     num_t r = shade_l1(dp) * (num_t)0.5 + eps * s;
-    num_t lhs = -vec3_dot(v, L->dir), dist = num_sqrt(vec3_dot(v, v));
-    return lhs + (r + r) + eps * (num_abs(lhs) + dist) < L->cos_angle * dist;
-#endif
+    num_t dist = num_sqrt(vec3_dot(v, v));
+    if (!(dist > NUM_ZERO))
+        return false;
+    num_t lhs = -vec3_dot(v, L->dir), c = L->cos_angle, g = c * dist - lhs;
+    num_t k2 = vec3_dot(L->dir, L->dir) - c * c + (c + c) * g / dist;
+    num_t k = num_sqrt(k2 > NUM_ZERO ? k2 : NUM_ZERO);
+    return g - r * k - eps * (num_abs(lhs) + c * dist + r * (NUM_ONE + k) + NUM_ONE) > NUM_ZERO;
 }
+#endif
+
 
 color_t shade_point(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, vec3_t p, vec3_t n_geo,
                     vec3_t d, uint8_t *mask)

@@ -314,7 +314,7 @@ bool shade_spot_surely_out(const light_t *L, vec3_t v);
  * exact ones of its ends); false where it cannot show that, near the
  * cone's edge or far away. The proof is in light/shade.c. */
 /* The pixels of such a block (light/shade.c, shade_flat_plane_run). */
-#define SHADE_SPOT_BLOCK 4
+#define SHADE_SPOT_BLOCK 12
 bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb);
 
 #endif
