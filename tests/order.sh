@@ -18,7 +18,9 @@
 # triangles, 1 or 2 lights with shadows: point or spot lights, some near
 # the plane, some far, in the first 40; directional lights, some grazing
 # the plane, in the last 20; a perspective camera of 10 to 150 degrees,
-# seen from near or far): the rows' margins where shadows graze them.
+# seen from near or far): the rows' margins where shadows graze them. And
+# 24 random planes under spot lights only: the runs' blocks that no spot
+# reaches.
 set -u
 . "$(dirname "$0")/lib.sh"
 NOORDER=${NOORDER:-$BUILD/ablated/fxrt}
@@ -106,6 +108,33 @@ for seed in $(seq 1 60); do
                 if (k < 0.5) printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", cx, cy, cz, r
                 else if (k < 0.8) printf "box min %.4f %.4f %.4f max %.4f %.4f %.4f color 0.9 0.3 0.2 material lambert\n", cx - r, cy - r, cz - r, cx + r, cy + r / 2, cz + r
                 else printf "triangle a %.4f %.4f %.4f b %.4f %.4f %.4f c %.4f %.4f %.4f color 0.3 0.9 0.3 material lambert\n", cx - r, cy, cz, cx + r, cy + r, cz, cx, cy, cz + r
+            }
+        }' >"$out/$name.scene"
+    scenes+=("$out/$name.scene")
+done
+# Random planes under spot lights only (1 or 2 spots of 3 to 80 degrees,
+# near the plane or far, aimed down at random; a Lambert or a Phong
+# plane, level or tilted; a camera of 10 to 150 degrees, near or far):
+# the runs' blocks that no spot reaches (light/shade.c,
+# shade_flat_spot_blocks) against the pixel-by-pixel light sum.
+for seed in $(seq 1 24); do
+    name=spots-$seed
+    awk -v seed="$seed" 'function u(a, b) { return a + (b - a) * rand() }
+        BEGIN { srand(seed + 500); s = seed % 4 == 0 ? 200 : 6
+            print "image 96 72"
+            print "background 0.1 0.1 0.2"
+            h = u(0.3, 3) * s
+            printf "camera perspective eye %.4f %.4f %.4f gaze %.4f %.4f %.4f up 0 1 0 fov %.2f\n", u(-s, s), h, u(-s, s), u(-1, 1), -u(0.1, 1), u(-1, 1), u(10, 150)
+            printf "ambient %.3f %.3f %.3f\n", u(0.05, 0.4), u(0.05, 0.4), u(0.05, 0.4)
+            nl = 1 + (seed % 3 == 0)
+            for (i = 0; i < nl; i++)
+                printf "light spot position %.4f %.4f %.4f direction %.4f -1 %.4f angle %.1f color %.2f %.2f %.2f shadows %s\n", u(-s, s), rand() < 0.3 ? u(0.05, 0.5) : u(0.5, 3) * s, u(-s, s), u(-1, 1), u(-1, 1), u(3, 80), u(0.3, 1), u(0.3, 1), u(0.3, 1), rand() < 0.5 ? "on" : "off"
+            mat = seed % 2 ? "material lambert" : sprintf("material phong specular %.2f %.2f %.2f exponent %d", u(0, 1), u(0, 1), u(0, 1), int(u(1, 200)))
+            printf "plane point 0 0 0 normal %.4f 1 %.4f color %.3f %.3f %.3f %s\n", seed % 3 ? 0 : u(-0.4, 0.4), seed % 3 ? 0 : u(-0.4, 0.4), u(0, 1), u(0, 1), u(0, 1), mat
+            no = 1 + int(rand() * 4)
+            for (i = 0; i < no; i++) {
+                r = u(0.05, 0.6) * s / 6
+                printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", u(-s, s) / 2, u(0, 1.5) * s / 6 + r, u(-s, s) / 2, r
             }
         }' >"$out/$name.scene"
     scenes+=("$out/$name.scene")

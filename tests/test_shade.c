@@ -583,7 +583,7 @@ static void test_spot_block_out(void)
             continue;
         tried++;
         vec3_t A = V(pa), B = V(pb), O = V(o);
-        bool out = shade_spot_block_out(L, &O, &A, &B);
+        bool out = shade_spot_block_out(L, &O, &A, &B, NUM_ZERO);
         if (out) {
             said++;
             for (int j = 0; j <= 32; j++) {

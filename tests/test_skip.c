@@ -236,6 +236,48 @@ static void test_spot(void)
               (unsigned)fxrt_stats.shaded);
 }
 
+/* A Lambert or Phong plane under spot lights only: in runs
+ * (FXRT_SHADE_RUNS), blocks of pixels that no spot reaches take the
+ * ambient term without a light sum (light/shade.c, shade_flat_spot_blocks):
+ * they must cover most of the plane's pixels outside every cone, and each
+ * such pixel is c_d (.) c_a, as computed here in double (+-1). */
+static void test_spot_blocks(void)
+{
+    cam_t cam;
+    camera(&cam);
+    for (int phong = 0; phong < 2; phong++) {
+        fxrt_world_init(&world, COL(0, 0, 0));
+        world_set_ambient(&world, FRAC(0.3, 0.45, 0.2));
+        lit(world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.7, 0.55, 0.9)), phong ? MATERIAL_PHONG : MATERIAL_LAMBERT,
+            phong ? 20 : 0);
+        world_add_light(&world, LIGHT_SPOT, P(0, 4, 0), P(0, -1, 0), V(20), FRAC(1, 1, 1), false);
+        world_add_light(&world, LIGHT_SPOT, P(1, 4, 0), P(0, -1, 0.2), V(12.5), FRAC(0.5, 0.2, 1), true);
+        render(&cam, true);
+        long dark = 0, right = 0;
+        int want[3] = {(int)floor(255.0 * 0.7 * 0.3 + 0.5), (int)floor(255.0 * 0.55 * 0.45 + 0.5),
+                       (int)floor(255.0 * 0.9 * 0.2 + 0.5)};
+        static uint32_t dark_keys[W * H];
+        memcpy(dark_keys, keys, sizeof dark_keys);
+        render(&cam, false);
+        for (int i = 0; i < W * H; i++) {
+            if (dark_keys[i] != render_key(0, 0))
+                continue;
+            dark++;
+            bool near = true;
+            for (int c = 0; c < 3; c++)
+                near &= abs(img[3 * i + c] - want[c]) <= 1;
+            right += near;
+        }
+        const char *mat = phong ? "phong" : "lambert";
+        CHECK_MSG(dark > W * H / 4 && right == dark, "%s under spots: %ld of %ld plane pixels outside the cones at c_d c_a",
+                  mat, right, dark);
+        if (FXRT_SHADE_RUNS)
+            CHECK_MSG(fxrt_stats.spot_blocks * SHADE_SPOT_BLOCK >= (uint32_t)dark / 2,
+                      "%s under spots: %u blocks of %d pixels for %ld pixels outside the cones", mat,
+                      (unsigned)fxrt_stats.spot_blocks, SHADE_SPOT_BLOCK, dark);
+    }
+}
+
 /* Flat materials: lights in the world, but nothing shaded and no pixel
  * differs from the world without lights. */
 static void test_flat(void)
@@ -622,6 +664,7 @@ int main(void)
     test_directional_plane();
     test_pow();
     test_spot();
+    test_spot_blocks();
     test_flat();
     return check_report("test_skip_" NUM_NAME);
 }

@@ -13,10 +13,13 @@ void render_shade_setup(render_t *r, const world_t *w)
 {
     render_shade_t *sh = &r->shade;
     sh->any_lit = w->n_lit > 0;
-    unsigned dir = 0;
-    for (unsigned i = 0; i < w->n_lights; i++)
+    unsigned dir = 0, spot = 0;
+    for (unsigned i = 0; i < w->n_lights; i++) {
         dir += w->lights[i].kind == LIGHT_DIRECTIONAL;
+        spot += w->lights[i].kind == LIGHT_SPOT;
+    }
     sh->all_directional = dir == w->n_lights;
+    sh->all_spots = spot > 0 && spot == w->n_lights;
     sh->flat_of = RENDER_VIS_NONE;
     SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull.cull), shade_plane_heights(w, &sh->cull);
                   shadow_rows_clear(&sh->cull);)
@@ -61,7 +64,7 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
     f->ratio = numw_ratio_num(num);
     f->index = o->index;
     f->kind = o->geom;
-    shade_flat_prep(f, r->shade.all_directional, o->flat ? NULL : &r->shade.k[oi]);
+    shade_flat_prep(f, r->shade.all_directional, r->shade.all_spots, o->flat ? NULL : &r->shade.k[oi]);
     r->shade.flat_of = oi;
     return true;
 }
@@ -106,6 +109,19 @@ color_t render_shade_object(render_t *r, uint16_t oi, ray_t *ray, uint8_t *mask)
                             render_flat_of(r, oi, ray, r->vis.cam->kind == CAM_PERSPECTIVE && !FXRT_NO_FLAT_NUM));
 }
 
+/* Pixel x of a run of object o (flat: a flat piece, r->shade.flat) on a
+ * direct row of camera cam, w pixels wide. */
+static inline __attribute__((always_inline)) void render_shade_run_px(render_t *r, const render_obj_t *o, bool flat,
+                                                                      const shade_k_t *k, const cam_row_t *cr,
+                                                                      const vec3_t *u, const vec3_t *fwd, const cam_t *cam,
+                                                                      int32_t w, int32_t x, ray_t *ray, uint8_t *rgb)
+{
+    cam_row_dir(cr, u, fwd, 2 * x - w + 1, ray);
+    color_t c = flat ? shade_flat_k(r->vis.world, &r->shade.flat, ray, k, NULL)
+                     : shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, cam, k, NULL);
+    color_put_pixel(rgb, x, color_to_rgb8(c));
+}
+
 void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
 {
     const cam_t *cam = r->vis.cam;
@@ -148,13 +164,17 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
             const shade_k_t *k = &r->shade.k[oi];
             if (flat && (r->shade.flat.flags & SHADE_FLAT_LAMBERT))
                 shade_flat_plane_run(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, x, end, ray, rgb);
+            else if (flat && (r->shade.flat.flags & SHADE_FLAT_SPOTS))
+                /* a Phong plane under spots: the blocks that no spot
+                 * reaches, then each other block pixel by pixel */
+                for (int32_t i = x, stop; i < end;)
+                    for (i = shade_flat_spot_blocks(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray, rgb,
+                                                    &stop);
+                         i < stop; i++)
+                        render_shade_run_px(r, o, true, k, cr, u, fwd, cam, w, i, ray, rgb);
             else
-                for (int32_t i = x; i < end; i++) {
-                    cam_row_dir(cr, u, fwd, 2 * i - w + 1, ray);
-                    color_t c = flat ? shade_flat_k(r->vis.world, &r->shade.flat, ray, k, NULL)
-                                     : shade_object_k(r->vis.world, (geom_kind_t)o->geom, o->index, ray, cam, k, NULL);
-                    color_put_pixel(rgb, i, color_to_rgb8(c));
-                }
+                for (int32_t i = x; i < end; i++)
+                    render_shade_run_px(r, o, flat, k, cr, u, fwd, cam, w, i, ray, rgb);
             x = end - 1;
             continue;
         }

@@ -152,7 +152,7 @@ static __attribute__((noinline)) vec3_t shade_light_far(const light_t *L, const 
  * 2^-18 relative at most in float (the point and the ray's sum, whose
  * terms can cancel in a wide view; the roots, the products) and far less
  * in double. */
-bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb)
+bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb, num_t slack)
 {
     (void)o;
     const int64_t lim = (int64_t)1 << 29;
@@ -169,7 +169,9 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
         V[j] = (int32_t)(va + vb);
         dl1 += dj < 0 ? -dj : dj; /* < 2^30 */
     }
-    int64_t r2 = dl1 + 256;
+    if (slack < 0 || slack >= (fx_t)1 << 28)
+        return false;
+    int64_t r2 = dl1 + 256 + 2 * (int64_t)slack;
     int64_t vs = fx_smlal32(fx_smlal32(fx_smul32(V[0], L->axis30[0]), V[1], L->axis30[1]), V[2], L->axis30[2]);
     uint64_t m2 = (uint64_t)fx_smlal32(fx_smlal32(fx_smul32(V[0], V[0]), V[1], V[1]), V[2], V[2]); /* < 3 2^60 */
     uint32_t m = fx_isqrt64(m2);
@@ -187,18 +189,58 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
     shade_umul64((uint64_t)(r2 * r2), k2, &bhi, &blo);
     return ahi > bhi || (ahi == bhi && alo > blo);
 }
+
+/* A bound on how far the hit point of shade_flat_k's unit-direction path
+ * (a plane that is not Lambert: d normalised, then t = N / (d . n) and o +
+ * t d) lies from the exact hit of the exact ray, in num units, from the
+ * point p, rn = d . n (d not normalised) that shade_flat_point gives for
+ * the same ray; negative where the ray grazes the plane (|cos| below
+ * 2^-8) or the values are out of range: no block there. With u the exact
+ * unit direction, d' = u + eps the normalised one (|eps| <= 0.873 LSB in
+ * Q16.16: fx_normalize3's 0.504 per component; below 2^-22 relative in
+ * float) and a = u . n: the exact hit along d' lies within 2 |eps| t /
+ * (|a| - |eps|) of the one along u (t = |p - o|), and its rounding (t's
+ * quotient and the product) adds under 2 LSB. |a| >= |rn| / |d|_1, so
+ * Q16.16 takes 2 |p - o|_1 |d|_1 / |rn| + 4 LSB, and float and double
+ * 2^-18 |p - o|_1 |d|_1 / |rn|. Along a run |a| has no interior minimum
+ * (the cosine of the angle to n along an arc of directions that keeps one
+ * side), so the larger of a block's two ends bounds its pixels. */
+static num_t shade_unit_point_slack(const ray_t *ray, const vec3_t *p, numw_t rn)
+{
+    uint64_t d1 = 0, t1 = 0, arn = rn < 0 ? (uint64_t)0 - (uint64_t)rn : (uint64_t)rn;
+    const fx_t D[3] = {ray->d.x, ray->d.y, ray->d.z}, P[3] = {p->x, p->y, p->z}, O[3] = {ray->o.x, ray->o.y, ray->o.z};
+    for (int j = 0; j < 3; j++) {
+        int64_t dj = D[j], tj = (int64_t)P[j] - O[j];
+        d1 += (uint64_t)(dj < 0 ? -dj : dj);
+        t1 += (uint64_t)(tj < 0 ? -tj : tj);
+    }
+    while (d1 >= (uint64_t)1 << 24) { /* (d |d|_1 / |rn| only grows: d1 rounded up, arn down) */
+        d1 = (d1 >> 1) + 1;
+        arn >>= 1;
+    }
+    if (t1 >= (uint64_t)1 << 34 || arn < d1 << 8)
+        return -1;
+    uint64_t num = 2 * t1 * d1; /* < 2^59; num / arn < t1 / 2^7 < 2^27 */
+    int sh = 0;
+    while ((arn >> sh) >= (uint64_t)1 << 32)
+        sh++;
+    uint64_t q = fx_udiv64_32((num >> sh) + 1, (uint32_t)(arn >> sh)) + 1u;
+    return (fx_t)(q + 4);
+}
 #else
 /* (shade.h) shade_spot_block_out in float and double: the Q16.16 comment
  * above has the proof and this arithmetic's margins. */
 static num_t shade_l1(vec3_t v) { return num_abs(v.x) + num_abs(v.y) + num_abs(v.z); }
-bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb)
+bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb, num_t slack)
 {
     if (L->kind != LIGHT_SPOT || !(L->cos_angle > NUM_ZERO))
         return false;
     const num_t eps = (num_t)(1.0 / 16384);
     vec3_t m = vec3_scale(vec3_add(*pa, *pb), (num_t)0.5), v = vec3_sub(L->position, m), dp = vec3_sub(*pb, *pa);
     num_t s = shade_l1(*pa) + shade_l1(*pb) + shade_l1(*o) + shade_l1(L->position) + NUM_ONE;
-    num_t r = shade_l1(dp) * (num_t)0.5 + eps * s;
+    if (!(slack >= NUM_ZERO))
+        return false;
+    num_t r = shade_l1(dp) * (num_t)0.5 + eps * s + slack;
     num_t dist = num_sqrt(vec3_dot(v, v));
     if (!(dist > NUM_ZERO))
         return false;
@@ -206,6 +248,15 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
     num_t k2 = vec3_dot(L->dir, L->dir) - c * c + (c + c) * g / dist;
     num_t k = num_sqrt(k2 > NUM_ZERO ? k2 : NUM_ZERO);
     return g - r * k - eps * (num_abs(lhs) + c * dist + r * (NUM_ONE + k) + NUM_ONE) > NUM_ZERO;
+}
+
+/* (float and double: shade_unit_point_slack, the Q16.16 comment above) */
+static num_t shade_unit_point_slack(const ray_t *ray, const vec3_t *p, numw_t rn)
+{
+    num_t d1 = shade_l1(ray->d), t1 = shade_l1(vec3_sub(*p, ray->o)), arn = num_abs(rn);
+    if (!(arn >= d1 * (num_t)(1.0 / 256)))
+        return -NUM_ONE;
+    return t1 * d1 / arn * (num_t)(1.0 / 262144);
 }
 #endif
 
@@ -459,12 +510,14 @@ void shade_plane_heights(const world_t *w, shadow_table_t *t)
     (void)w, (void)t;
 }
 
-void shade_flat_prep(shade_flat_t *f, bool all_directional, const shade_k_t *k)
+void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, const shade_k_t *k)
 {
     bool plane = f->kind == GEOM_PLANE && k;
+    uint8_t m = f->obj->mat.kind;
     f->pls = plane ? shade_plane_entries(k, f->index) : NULL;
-    f->flags = (uint8_t)((plane && f->obj->mat.kind == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
-                         (plane && all_directional ? SHADE_FLAT_DIRECTIONAL : 0));
+    f->flags = (uint8_t)((plane && m == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
+                         (plane && all_directional ? SHADE_FLAT_DIRECTIONAL : 0) |
+                         (plane && all_spots && (m == MATERIAL_LAMBERT || m == MATERIAL_PHONG) ? SHADE_FLAT_SPOTS : 0));
 }
 
 /* shade_lights for Lambert plane `index` (obj) with constants k; pls: its
@@ -610,13 +663,17 @@ static int shade_plane_run_side(const cam_row_t *row, const vec3_t *u, const vec
     return 0;
 }
 
-/* Plane f's hit point at column x (shade_flat_point's; ray: its camera ray). */
+
+/* Plane f's hit point at column x (shade_flat_point's; ray: its camera
+ * ray), and with unit, shade_unit_point_slack's bound in *slack (else 0). */
 static vec3_t shade_plane_point_at(const shade_flat_t *f, const cam_row_t *row, const vec3_t *u, const vec3_t *fwd,
-                                   int32_t width, int32_t x, ray_t *ray)
+                                   int32_t width, int32_t x, bool unit, num_t *slack, ray_t *ray)
 {
     numw_t rn;
     cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
-    return shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
+    vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
+    *slack = unit ? shade_unit_point_slack(ray, &p, rn) : NUM_ZERO;
+    return p;
 }
 
 /* Pixels x..end-1 of a run on Lambert plane f, one by one (dir: every
@@ -641,52 +698,56 @@ static inline __attribute__((always_inline)) void shade_plane_pixels(const world
     }
 }
 
-/* Has w lights, all of them spots? */
-static bool shade_all_spots(const world_t *w)
-{
-    for (unsigned i = 0; i < w->n_lights; i++)
-        if (w->lights[i].kind != LIGHT_SPOT)
-            return false;
-    return w->n_lights > 0;
-}
-
-/* A run on Lambert plane f under spot lights only: blocks of
- * SHADE_SPOT_BLOCK pixels that no spot reaches (shade_plane_spots_out)
- * are the ambient term alone, the light sum's value there; the others
- * pixel by pixel. */
-static __attribute__((noinline)) void shade_flat_spot_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k,
-                                                          const cam_row_t *row, const vec3_t *u, const vec3_t *fwd,
-                                                          int32_t width, int32_t x, int32_t end, ray_t *ray,
-                                                          uint8_t *rgb)
+int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                               const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                               uint8_t *rgb, int32_t *stop)
 {
     /* A block x..last is tested on the segment from x's hit point to the
      * next block's first pixel's (last + 1, in the run: the exact points
      * of x..last lie on it), so each block makes one new point; the run's
      * last block ends on its own last pixel. */
-    vec3_t pa = shade_plane_point_at(f, row, u, fwd, width, x, ray);
+    const bool unit = !(f->flags & SHADE_FLAT_LAMBERT);
+    num_t sa, sb;
+    vec3_t pa = shade_plane_point_at(f, row, u, fwd, width, x, unit, &sa, ray);
     while (x < end) {
         int32_t last = end - x > SHADE_SPOT_BLOCK ? x + SHADE_SPOT_BLOCK - 1 : end - 1;
         int32_t e = last + 1 < end ? last + 1 : last;
-        if (e == x) { /* one pixel left */
-            shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, false);
-            return;
-        }
-        vec3_t pb = shade_plane_point_at(f, row, u, fwd, width, e, ray);
-        bool out = true;
-        for (unsigned i = 0; out && i < w->n_lights; i++)
-            out = shade_spot_block_out(&w->lights[i], &ray->o, &pa, &pb);
+        bool out = e > x;
         if (out) {
-            FXRT_COUNT(spot_blocks);
-            rgb8_t v = color_to_rgb8(k->ambient);
-            for (; x <= last; x++) {
-                FXRT_COUNT(shaded);
-                color_put_pixel(rgb, x, v);
-            }
-        } else {
-            shade_plane_pixels(w, f, k, row, u, fwd, width, x, last + 1, ray, rgb, false);
-            x = last + 1;
+            vec3_t pb = shade_plane_point_at(f, row, u, fwd, width, e, unit, &sb, ray);
+            num_t slack = sa < NUM_ZERO || sb < NUM_ZERO ? -NUM_ONE : sa > sb ? sa : sb;
+            for (unsigned i = 0; out && i < w->n_lights; i++)
+                out = shade_spot_block_out(&w->lights[i], &ray->o, &pa, &pb, slack);
+            pa = pb;
+            sa = sb;
         }
-        pa = pb;
+        if (!out) {
+            *stop = last + 1;
+            return x;
+        }
+        FXRT_COUNT(spot_blocks);
+        rgb8_t v = color_to_rgb8(k->ambient);
+        for (; x <= last; x++) {
+            FXRT_COUNT(shaded);
+            color_put_pixel(rgb, x, v);
+        }
+    }
+    *stop = end;
+    return end;
+}
+
+/* shade_flat_plane_run under spots only (SHADE_FLAT_SPOTS): the blocks
+ * that no spot reaches, then each other block pixel by pixel. */
+static __attribute__((noinline)) void shade_plane_spot_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k,
+                                                           const cam_row_t *row, const vec3_t *u, const vec3_t *fwd,
+                                                           int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                                           uint8_t *rgb)
+{
+    while (x < end) {
+        int32_t stop;
+        x = shade_flat_spot_blocks(w, f, k, row, u, fwd, width, x, end, ray, rgb, &stop);
+        shade_plane_pixels(w, f, k, row, u, fwd, width, x, stop, ray, rgb, false);
+        x = stop;
     }
 }
 
@@ -708,8 +769,8 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
             return;
         }
     }
-    if (!dir && shade_all_spots(w)) {
-        shade_flat_spot_run(w, f, k, row, u, fwd, width, x, end, ray, rgb);
+    if (f->flags & SHADE_FLAT_SPOTS) {
+        shade_plane_spot_run(w, f, k, row, u, fwd, width, x, end, ray, rgb);
         return;
     }
     shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, dir);

@@ -201,16 +201,17 @@ typedef struct {
      * SHADE_FLAT_LAMBERT for a Lambert plane, which the shading pass
      * takes to shade_flat_plane (shade_flat_k's value), and
      * SHADE_FLAT_DIRECTIONAL when every light of the world is
-     * directional. */
+     * directional, SHADE_FLAT_SPOTS for a Lambert or Phong plane when
+     * every light is a spot (shade_flat_spot_run). */
     uint8_t flags;
     const shade_plane_light_t *pls;
 } shade_flat_t;
-enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2 };
+enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2, SHADE_FLAT_SPOTS = 4 };
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
 /* Set f->flags and f->pls for f's object with constants k (NULL: none);
- * all_directional: every light of the world is directional (the shading
- * pass finds it once per frame). */
-void shade_flat_prep(shade_flat_t *f, bool all_directional, const shade_k_t *k);
+ * all_directional, all_spots: every light of the world is directional, or
+ * a spot, and there is one (the shading pass finds it once per frame). */
+void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, const shade_k_t *k);
 /* shade_flat_k's value for a Lambert plane (SHADE_FLAT_LAMBERT, k its constants)
  * along a camera ray: its hit point, then shade_lights_plane's light sum
  * (and mask), with what the light sum needs of the frame found once per
@@ -238,6 +239,16 @@ color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shad
 void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                           const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                           uint8_t *rgb);
+/* For a plane with SHADE_FLAT_SPOTS, from column x of a run that ends
+ * before end: writes the ambient term, the light sum's value there, to
+ * the leading blocks of SHADE_SPOT_BLOCK pixels that no spot reaches
+ * (shade_spot_block_out), and returns the first column not written; the
+ * caller shades that column's block, up to *stop, pixel by pixel
+ * (shade_flat_plane_run's or shade_flat_k's values), and calls again from
+ * *stop while it is below end. */
+int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                               const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                               uint8_t *rgb, int32_t *stop);
 
 /* A camera ray's point on the plane of a FLAT form's object with unit
  * normal n, from the ray's origin o and its direction r of any length
@@ -307,14 +318,17 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
  * p too, so it changes no frame (tests/test_shade.c checks this near the
  * cone's edge). False for |v_i| >= 16384 (the full test decides). */
 bool shade_spot_surely_out(const light_t *L, vec3_t v);
-/* Does spot L reach no pixel of a block of a plane's run, whose first and
- * last pixels' hit points are pa and pb (shade_flat_point's, from eye o)?
+/* Does spot L reach no pixel of a block of a plane's run, whose exact hit
+ * points lie on the segment between those of pa's and pb's pixels (pa, pb
+ * as shade_flat_point gives them, from eye o; slack, in num units, the
+ * pixels' own hit points' error beyond shade_flat_point's: 0 for a Lambert
+ * plane, negative for none)?
  * True only where the light sum's own cone test would reject every pixel
  * of the block (their exact hit points lie on the segment between the
  * exact ones of its ends); false where it cannot show that, near the
  * cone's edge or far away. The proof is in light/shade.c. */
 /* The pixels of such a block (light/shade.c, shade_flat_plane_run). */
 #define SHADE_SPOT_BLOCK 12
-bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb);
+bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb, num_t slack);
 
 #endif
