@@ -435,6 +435,26 @@ static void test_lambert_planes(void)
               "the planes are seen from both sides (%d, %d) and lit from both (%d, %d)", sides[0], sides[1], kinds[0],
               kinds[1]);
 }
+
+/* Sweep k's random spot (the two spot sweeps below): at a scale of 8000,
+ * 100 or 2 (*scale) from the origin (pos), aimed along unit s, of
+ * half-angle 90 (every tenth) or from min_angle to 90 degrees (*angle),
+ * in a world of its own; NULL where the world refuses it. */
+static const light_t *spot_random(int k, double min_angle, double pos[3], double s[3], double *scale, double *angle)
+{
+    static world_t w;
+    *scale = k % 3 == 0 ? 8000 : k % 3 == 1 ? 100 : 2;
+    for (int i = 0; i < 3; i++)
+        pos[i] = (2 * spot_rand() - 1) * *scale;
+    spot_unit(s);
+    *angle = k % 10 == 0 ? 90 : min_angle + (90 - min_angle) * spot_rand();
+    fxrt_world_init(&w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+    double dir[3] = {s[0] * 1000, s[1] * 1000, s[2] * 1000};
+    int32_t li = world_add_light(&w, LIGHT_SPOT, V(pos), V(dir), N(*angle), color_make(NUM_ONE, NUM_ONE, NUM_ONE),
+                                 false);
+    return li < 0 ? NULL : &w.lights[li];
+}
+
 #if FXRT_NUMBER == FXRT_Q16
 /* shade_spot_surely_out, the light loop's cheap early test for a spot's
  * cone, against the cone test it stands in front of: (-v) . s >= cos |v|
@@ -447,22 +467,12 @@ static void test_spot_early_out(void)
 {
     long wrong = 0, far_out = 0, far_caught = 0, edge = 0, edge_out = 0;
     for (int k = 0; k < 200000; k++) {
-        double pos[3], s[3], q[3], pp[3];
-        double scale = k % 3 == 0 ? 8000 : k % 3 == 1 ? 100 : 2;
-        for (int i = 0; i < 3; i++)
-            pos[i] = (2 * spot_rand() - 1) * scale;
-        spot_unit(s);
-        double angle = k % 10 == 0 ? 90 : 0.05 + 89.95 * spot_rand();
-        static world_t w;
-        fxrt_world_init(&w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
-        double dir[3] = {s[0] * 1000, s[1] * 1000, s[2] * 1000};
-        int32_t li = world_add_light(&w, LIGHT_SPOT, V(pos), V(dir), N(angle), color_make(NUM_ONE, NUM_ONE, NUM_ONE),
-                                     false);
-        if (li < 0) {
+        double pos[3], s[3], q[3], pp[3], scale, angle;
+        const light_t *L = spot_random(k, 0.05, pos, s, &scale, &angle);
+        if (!L) {
             wrong++;
             continue;
         }
-        const light_t *L = &w.lights[li];
         /* a point near the edge (theta = angle +- 0.01 degree) or anywhere */
         bool near_edge = k % 2 == 0;
         double dist = exp(log(1e-3) + spot_rand() * (log(20000.0) - log(1e-3)));
@@ -547,20 +557,10 @@ static void test_spot_block_out(void)
 {
     long wrong = 0, said = 0, far = 0, far_caught = 0, tried = 0;
     for (int k = 0; k < 40000; k++) {
-        double pos[3], s[3], q[3], pa[3], pb[3], o[3] = {0, 0, 0};
-        double scale = k % 3 == 0 ? 8000 : k % 3 == 1 ? 100 : 2;
-        for (int i = 0; i < 3; i++)
-            pos[i] = (2 * spot_rand() - 1) * scale;
-        spot_unit(s);
-        double angle = k % 10 == 0 ? 90 : 1 + 89 * spot_rand();
-        static world_t w;
-        fxrt_world_init(&w, color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
-        double dir[3] = {s[0] * 1000, s[1] * 1000, s[2] * 1000};
-        int32_t li = world_add_light(&w, LIGHT_SPOT, V(pos), V(dir), N(angle), color_make(NUM_ONE, NUM_ONE, NUM_ONE),
-                                     false);
-        if (li < 0)
+        double pos[3], s[3], q[3], pa[3], pb[3], o[3] = {0, 0, 0}, scale, angle;
+        const light_t *L = spot_random(k, 1, pos, s, &scale, &angle);
+        if (!L)
             continue; /* (a light the world refuses: none to test) */
-        const light_t *L = &w.lights[li];
         /* the segment's middle at an angle off the axis: near the edge
          * (within 5 degrees) or anywhere */
         double dist = exp(log(1e-2) + spot_rand() * (log(8000.0) - log(1e-2)));

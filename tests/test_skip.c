@@ -81,6 +81,17 @@ static void lit(int32_t id, material_kind_t k, int exponent)
     CHECK(world_set_material(&world, id, &m) == FXRT_OK);
 }
 
+/* A world of background bg and ambient amb with the floor y = 0 of colour
+ * c, Lambert or Phong (exponent k); returns the floor's id. */
+static int32_t lit_floor(bool phong, int k, color_t bg, color_t amb, color_t c)
+{
+    fxrt_world_init(&world, bg);
+    world_set_ambient(&world, amb);
+    int32_t pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), c);
+    lit(pid, phong ? MATERIAL_PHONG : MATERIAL_LAMBERT, k);
+    return pid;
+}
+
 static void camera(cam_t *cam)
 {
     CHECK(fxrt_camera_perspective(cam, P(0, 4, 6), P(0, -4, -6), P(0, 1, 0), V(45), W, H) == FXRT_OK);
@@ -246,10 +257,7 @@ static void test_spot_blocks(void)
     cam_t cam;
     camera(&cam);
     for (int phong = 0; phong < 2; phong++) {
-        fxrt_world_init(&world, COL(0, 0, 0));
-        world_set_ambient(&world, FRAC(0.3, 0.45, 0.2));
-        lit(world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.7, 0.55, 0.9)), phong ? MATERIAL_PHONG : MATERIAL_LAMBERT,
-            phong ? 20 : 0);
+        lit_floor(phong, 20, COL(0, 0, 0), FRAC(0.3, 0.45, 0.2), COL(0.7, 0.55, 0.9));
         world_add_light(&world, LIGHT_SPOT, P(0, 4, 0), P(0, -1, 0), V(20), FRAC(1, 1, 1), false);
         world_add_light(&world, LIGHT_SPOT, P(1, 4, 0), P(0, -1, 0.2), V(12.5), FRAC(0.5, 0.2, 1), true);
         render(&cam, true);
@@ -538,10 +546,7 @@ static void test_plane_heights(void)
     cam_t cam;
     camera(&cam);
     for (int phong = 0; phong < 2; phong++) {
-        fxrt_world_init(&world, COL(0.1, 0.1, 0.1));
-        world_set_ambient(&world, FRAC(0.3, 0.2, 0.1));
-        int32_t pid = world_add_plane(&world, P(0, 0, 0), P(0, 1, 0), COL(0.5, 0.6, 0.7));
-        lit(pid, phong ? MATERIAL_PHONG : MATERIAL_LAMBERT, 16);
+        int32_t pid = lit_floor(phong, 16, COL(0.1, 0.1, 0.1), FRAC(0.3, 0.2, 0.1), COL(0.5, 0.6, 0.7));
         CHECK(world_add_sphere(&world, P(0.3, 1.0, 0.2), V(0.5), COL(0.9, 0.2, 0.1)) >= 0);
         CHECK(world_add_light(&world, LIGHT_POINT, P(1, 4, 1.5), P(0, 0, 0), V(0), FRAC(1, 0.9, 0.8), true) == 0);
         render(&cam, true);
