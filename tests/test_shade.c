@@ -1242,8 +1242,9 @@ static void test_shadow_rows(long worlds)
         double pos[3] = {cull_pick(-scale, scale), k % 3 == 2 ? scale * cull_pick(0.0002, 0.002) : scale * cull_pick(0.1, 2),
                          cull_pick(-scale, scale)},
                dir[3] = {cull_pick(-1, 1), k % 3 == 2 ? -cull_pick(0.01, 0.1) : -cull_pick(0.2, 1), cull_pick(-1, 1)};
-        world_add_light(&w, dirl ? LIGHT_DIRECTIONAL : LIGHT_POINT, V(pos), V(dir), N(90),
-                        color_make(NUM_ONE, NUM_ONE, NUM_ONE), true);
+        if (world_add_light(&w, dirl ? LIGHT_DIRECTIONAL : LIGHT_POINT, V(pos), V(dir), N(90),
+                            color_make(NUM_ONE, NUM_ONE, NUM_ONE), true) != 0)
+            continue; /* (refused, FXRT_ERR_TINY in float and double: w.lights[0] would be another world's) */
         double n[3] = {0}, a[3] = {0}, L[3] = {0}, ld[3] = {0}, e[3] = {0}, fw[3] = {0}, u[3] = {0}, v[3] = {0};
         for (int i = 0; i < 3; i++) {
             n[i] = D(geom_axis(w.planes[0].n, i)), a[i] = D(geom_axis(w.planes[0].a, i));
