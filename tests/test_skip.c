@@ -258,8 +258,8 @@ static void test_spot_blocks(void)
     camera(&cam);
     for (int phong = 0; phong < 2; phong++) {
         lit_floor(phong, 20, COL(0, 0, 0), FRAC(0.3, 0.45, 0.2), COL(0.7, 0.55, 0.9));
-        world_add_light(&world, LIGHT_SPOT, P(0, 4, 0), P(0, -1, 0), V(20), FRAC(1, 1, 1), false);
-        world_add_light(&world, LIGHT_SPOT, P(1, 4, 0), P(0, -1, 0.2), V(12.5), FRAC(0.5, 0.2, 1), true);
+        CHECK(world_add_light(&world, LIGHT_SPOT, P(0, 4, 0), P(0, -1, 0), V(20), FRAC(1, 1, 1), false) == 0);
+        CHECK(world_add_light(&world, LIGHT_SPOT, P(1, 4, 0), P(0, -1, 0.2), V(12.5), FRAC(0.5, 0.2, 1), true) == 1);
         render(&cam, true);
         long dark = 0, right = 0;
         int want[3] = {(int)floor(255.0 * 0.7 * 0.3 + 0.5), (int)floor(255.0 * 0.55 * 0.45 + 0.5),
