@@ -202,7 +202,7 @@ typedef struct {
      * takes to shade_flat_plane (shade_flat_k's value), and
      * SHADE_FLAT_DIRECTIONAL when every light of the world is
      * directional, SHADE_FLAT_SPOTS for a Lambert or Phong plane when
-     * every light is a spot (shade_flat_spot_run). */
+     * every light is a spot (shade_flat_spot_blocks). */
     uint8_t flags;
     const shade_plane_light_t *pls;
 } shade_flat_t;
@@ -318,17 +318,17 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
  * p too, so it changes no frame (tests/test_shade.c checks this near the
  * cone's edge). False for |v_i| >= 16384 (the full test decides). */
 bool shade_spot_surely_out(const light_t *L, vec3_t v);
+/* The pixels of a block of a plane's run under spots only
+ * (shade_flat_spot_blocks; 12 took the fewest instructions of 4 to 24 on
+ * the course's spot scenes). */
+#define SHADE_SPOT_BLOCK 12
 /* Does spot L reach no pixel of a block of a plane's run, whose exact hit
  * points lie on the segment between those of pa's and pb's pixels (pa, pb
  * as shade_flat_point gives them, from eye o; slack, in num units, the
  * pixels' own hit points' error beyond shade_flat_point's: 0 for a Lambert
- * plane, negative for none)?
- * True only where the light sum's own cone test would reject every pixel
- * of the block (their exact hit points lie on the segment between the
- * exact ones of its ends); false where it cannot show that, near the
- * cone's edge or far away. The proof is in light/shade.c. */
-/* The pixels of such a block (light/shade.c, shade_flat_plane_run). */
-#define SHADE_SPOT_BLOCK 12
+ * plane, negative for none)? True only where the light sum's own cone
+ * test would reject every pixel of the block; false where it cannot show
+ * that, near the cone's edge or far away. The proof is in light/shade.c. */
 bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb, num_t slack);
 
 #endif
