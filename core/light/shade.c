@@ -230,17 +230,16 @@ static num_t shade_unit_point_slack(const ray_t *ray, const vec3_t *p, numw_t rn
 #else
 /* (shade.h) shade_spot_block_out in float and double: the Q16.16 comment
  * above has the proof and this arithmetic's margins. */
-static num_t shade_l1(vec3_t v) { return num_abs(v.x) + num_abs(v.y) + num_abs(v.z); }
 bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb, num_t slack)
 {
     if (L->kind != LIGHT_SPOT || !(L->cos_angle > NUM_ZERO))
         return false;
     const num_t eps = (num_t)(1.0 / 16384);
     vec3_t m = vec3_scale(vec3_add(*pa, *pb), (num_t)0.5), v = vec3_sub(L->position, m), dp = vec3_sub(*pb, *pa);
-    num_t s = shade_l1(*pa) + shade_l1(*pb) + shade_l1(*o) + shade_l1(L->position) + NUM_ONE;
+    num_t s = vec3_l1(*pa) + vec3_l1(*pb) + vec3_l1(*o) + vec3_l1(L->position) + NUM_ONE;
     if (!(slack >= NUM_ZERO))
         return false;
-    num_t r = shade_l1(dp) * (num_t)0.5 + eps * s + slack;
+    num_t r = vec3_l1(dp) * (num_t)0.5 + eps * s + slack;
     num_t dist = num_sqrt(vec3_dot(v, v));
     if (!(dist > NUM_ZERO))
         return false;
@@ -253,7 +252,7 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
 /* (float and double: shade_unit_point_slack, the Q16.16 comment above) */
 static num_t shade_unit_point_slack(const ray_t *ray, const vec3_t *p, numw_t rn)
 {
-    num_t d1 = shade_l1(ray->d), t1 = shade_l1(vec3_sub(*p, ray->o)), arn = num_abs(rn);
+    num_t d1 = vec3_l1(ray->d), t1 = vec3_l1(vec3_sub(*p, ray->o)), arn = num_abs(rn);
     if (!(arn >= d1 * (num_t)(1.0 / 256)))
         return -NUM_ONE;
     return t1 * d1 / arn * (num_t)(1.0 / 262144);
@@ -649,13 +648,13 @@ static int shade_plane_run_side(const cam_row_t *row, const vec3_t *u, const vec
 {
     cam_row_dir(row, u, fwd, 2 * (end - 1) - width + 1, ray);
     numw_t r1 = vec3_dotw_unit(ray->d, *n);
-    num_t m1 = num_add(num_abs(ray->d.x), num_add(num_abs(ray->d.y), num_abs(ray->d.z)));
+    num_t m1 = vec3_l1(ray->d);
     cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
     numw_t r0 = vec3_dotw_unit(ray->d, *n);
     if ((r0 > 0) != (r1 > 0))
         return -1;
     if (!NUM_EXACT) {
-        num_t m0 = num_add(num_abs(ray->d.x), num_add(num_abs(ray->d.y), num_abs(ray->d.z)));
+        num_t m0 = vec3_l1(ray->d);
         num_t m = num_mul(m0 > m1 ? m0 : m1, (num_t)(1.0 / 4096));
         if (!(num_abs((num_t)r0) > m && num_abs((num_t)r1) > m))
             return -1;

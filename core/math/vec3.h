@@ -76,6 +76,11 @@ static inline numw_t vec3_dotw_units(vec3_t u, vec3_t v)
 {
     return numw_dot3_units(u.x, u.y, u.z, v.x, v.y, v.z);
 }
+/* |a.x| + (|a.y| + |a.z|), the 1-norm (saturating in Q16.16). */
+static inline num_t vec3_l1(vec3_t a)
+{
+    return num_add(num_abs(a.x), num_add(num_abs(a.y), num_abs(a.z)));
+}
 /* a . b rounded once. */
 static inline num_t vec3_dot(vec3_t a, vec3_t b)
 {
