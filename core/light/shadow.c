@@ -43,11 +43,6 @@ static bool shadow_light_inside(const world_t *w, geom_kind_t kind, uint16_t ind
 #define CULL_REL                                                                                             \
     (NUM_EXACT ? NUM_ZERO : FXRT_NUMBER == FXRT_FLOAT ? NUM(1.0 / 262144) : NUM(1.0 / 1099511627776.0))
 
-static num_t shadow_l1(vec3_t v)
-{
-    return num_add(num_add(num_abs(v.x), num_abs(v.y)), num_abs(v.z));
-}
-
 /* Directional lights: v . (ldir x e_k) for the axis e_k, k = 0..2,
  * as one 2x2 determinant. ldir . (ldir x e_k) is exactly zero (the same
  * two products), so every point p + t ldir of a shadow ray has p's value:
@@ -67,7 +62,7 @@ static numw_t shadow_proj(vec3_t v, vec3_t l, int k)
 static num_t shadow_bound(vec3_t c, num_t r, const light_t *L)
 {
     num_t rr = num_add(num_add(r, num_mul(r, NUM(1.0 / 256))), NUM(1.0 / 1024));
-    return num_add(rr, num_mul(CULL_REL, num_add(shadow_l1(c), shadow_l1(L->position))));
+    return num_add(rr, num_mul(CULL_REL, num_add(vec3_l1(c), vec3_l1(L->position))));
 }
 
 /* The entry for an object with bounding sphere (c, r) seen from L. */
@@ -153,7 +148,7 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
         int s = SHADOW_SLOT_##K + i;                                                                          \
         geom_##k##_around(&w->ks[i], &c, &r);                                                                 \
         vec3_t v = vec3_sub(c, ref);                                                                          \
-        bool far = s < SHADOW_ROW_SLOTS && shadow_l1(v) < NUM(16384) && SHADOW_ROW_FAR(c, r, v);              \
+        bool far = s < SHADOW_ROW_SLOTS && vec3_l1(v) < NUM(16384) && SHADOW_ROW_FAR(c, r, v);              \
         if (far)                                                                                              \
             mask |= 1u << s;                                                                                  \
         all = all && far;                                                                                     \
@@ -170,8 +165,8 @@ static inline bool shadow_row_far_pt(num_t dc, num_t lim)
  * with CULL_REL 4 (|c|_1 + |e|_1 + |F(e)|) for float and double. */
 static inline num_t shadow_row_lim_dir(vec3_t c, vec3_t v, num_t fa, num_t el, num_t rd, num_t gup)
 {
-    num_t own = num_add(num_mul(num_add(shadow_l1(v), fa), NUM(1.0 / 8192)), NUM(1.0 / 16384));
-    num_t rel = num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(c), el), fa));
+    num_t own = num_add(num_mul(num_add(vec3_l1(v), fa), NUM(1.0 / 8192)), NUM(1.0 / 16384));
+    num_t rel = num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(vec3_l1(c), el), fa));
     return num_add(num_add(num_mul(rd, gup), own), rel);
 }
 
@@ -227,17 +222,17 @@ static uint32_t shadow_row_mask(const world_t *w, const light_t *L, vec3_t e, ve
     if (gl < NUM(1.0 / 64) || !vec3_normalize(&g))
         return 0;
     num_t kappa = num_div(NUM_ONE, num_sub(sine, NUM(1.0 / 4096)));
-    num_t le = shadow_l1(vec3_sub(pos, e));
+    num_t le = vec3_l1(vec3_sub(pos, e));
     /* g''s direction error: rl's and fl's (m''s rounding and the
      * products': at most 2^-14 (|L - e|_1 + |L - a|_1 + 2)) over sc |g|,
      * and g''s own rounding. */
-    num_t ang = num_mul(num_add(num_add(le, shadow_l1(vec3_sub(pos, a))), NUM(2)), NUM(1.0 / 16384));
+    num_t ang = num_mul(num_add(num_add(le, vec3_l1(vec3_sub(pos, a))), NUM(2)), NUM(1.0 / 16384));
     ang = num_add(num_div(ang, num_mul(sc, gl)), NUM(1.0 / 16384));
     num_t d_max = num_add(t_max, le);
     num_t eps = num_add(NUM(1.0 / 32768), num_mul(d_max, NUM(1.0 / 8192)));
     num_t delta = num_mul(num_add(num_mul(kappa, num_add(t_max, NUM_ONE)), NUM_ONE), NUM(1.0 / 8192));
     delta = num_add(num_add(delta, num_mul(ang, d_max)),
-                    num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(shadow_l1(e), t_max), shadow_l1(pos))));
+                    num_mul(num_mul_int(CULL_REL, 4), num_add(num_add(vec3_l1(e), t_max), vec3_l1(pos))));
     num_t margin = num_add(eps, delta);
     vec3_t ref = pos;
 #define SHADOW_ROW_FAR(c, r, v) shadow_row_far_pt(num_abs(vec3_dot(g, v)), num_add(shadow_bound(c, r, L), margin))
@@ -268,7 +263,7 @@ static uint32_t shadow_row_mask_dir(const world_t *w, const light_t *L, vec3_t e
     vec3_t g = vec3_sub(vec3_scale(n, a1), vec3_scale(m1, b1));
     num_t gup = num_add(vec3_len(g), NUM(1.0 / 8192));
     num_t kappa = num_div(NUM_ONE, num_sub(sine, NUM(1.0 / 4096)));
-    num_t el = shadow_l1(e), fa = num_abs(fe);
+    num_t el = vec3_l1(e), fa = num_abs(fe);
     num_t delta = num_add(num_mul(num_add(num_mul(kappa, num_add(t_max, NUM_ONE)), NUM_ONE), NUM(1.0 / 8192)),
                           num_mul(num_mul_int(CULL_REL, 4), num_add(el, t_max)));
     numw_t off = numw_mul(a1, fe); /* (m' . l) F(e) */
@@ -486,7 +481,7 @@ static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const
     rc->p1 = shadow_proj(*p, rc->ldir, axes[0]);
     rc->p2 = shadow_proj(*p, rc->ldir, axes[1]);
 #if FXRT_NUMBER != FXRT_Q16
-    rc->slack = num_mul(CULL_REL, shadow_l1(*p));
+    rc->slack = num_mul(CULL_REL, vec3_l1(*p));
 #endif
     return shadow_occluded_dir(w, ray, tmax, skip_id FXRT_IF_MODEL(, skip_tri), rc, row_skip);
 }
