@@ -523,6 +523,59 @@ static void check_pow_zero(void)
     CHECK_MSG(bad_mono == 0, "numw_pow_loop: %ld sampled pairs out of order", bad_mono);
 }
 
+/* fx_ratio_len_below and the specular term's shortcut (numw_pow_zero_at):
+ * against x = a / (2^16 sqrt(d2)) in long double, for vectors v of
+ * log-uniform components (2^-16 .. 2^8, d2 = |v|^2 exact) and a drawn
+ * over [-0.25, 2] |v| and close to each exponent's bound. Sound: true
+ * only where x <= (num / den)(1 - 2^-10); tight: true where x lies 2^-12
+ * below that; and where numw_pow_zero_at says 0, the value the full path
+ * would compute (num_inv3_only, num_inv3_mul, numw_pow_int) is 0. */
+static void check_ratio_below(void)
+{
+    long n = n_random / 4 + 1000, unsound = 0, loose = 0, e2e = 0, said = 0;
+    for (long i = 0; i < n; i++) {
+        fx_t v[3];
+        int64_t d2 = 0;
+        for (int j = 0; j < 3; j++) {
+            uint64_t r = rng();
+            int bits = (int)(r % 25); /* |v_j| below 2^bits LSB: up to 256.0 */
+            fx_t m = bits ? (fx_t)((r >> 32) >> (32 - bits)) : 0;
+            v[j] = (r & 64) ? -m : m;
+            d2 += (int64_t)v[j] * v[j];
+        }
+        if (d2 == 0)
+            continue;
+        uint32_t k = NUM_POW_ZERO_K + 1 + (uint32_t)(rng() % (FXRT_PHONG_MAX_EXPONENT - NUM_POW_ZERO_K));
+        long double bound = (long double)(k - NUM_POW_ZERO_K) / k * (1.0L - 1.0L / 1024);
+        long double len = sqrtl((long double)d2) * 65536.0L; /* |v| in Q32.32 units of a */
+        uint64_t r = rng();
+        long double x = (r & 1) ? -0.25L + 2.25L * (long double)(r >> 11) / 9007199254740992.0L
+                                : bound + ((long double)(r >> 11) / 9007199254740992.0L - 0.5L) / 1024;
+        fxw_t a = (fxw_t)llroundl(x * len);
+        long double xt = (long double)a / len;
+        bool below = fx_ratio_len_below(a, d2, k - NUM_POW_ZERO_K, k);
+        said += below;
+        if (below && xt > bound * (1.0L + 1e-15L))
+            unsound++;
+        if (!below && xt <= bound - 1.0L / 4096)
+            loose++;
+        num_inv3_t q;
+        if (numw_pow_zero_at(a, d2, k) &&
+            (!num_inv3_only(v, &q) || numw_pow_int(numw_from(num_inv3_mul(&q, numw_mant(a))), k) != 0))
+            e2e++;
+    }
+    CHECK_MSG(unsound == 0, "fx_ratio_len_below: %ld of %ld said below where x is above the bound", unsound, n);
+    CHECK_MSG(loose == 0, "fx_ratio_len_below: %ld of %ld not said below 2^-12 under the bound", loose, n);
+    CHECK_MSG(e2e == 0, "numw_pow_zero_at: %ld of %ld said 0 where the full path gives a term", e2e, n);
+    CHECK_MSG(said > n / 8 && said < n - n / 8, "fx_ratio_len_below: said below %ld times of %ld (draws one-sided)", said, n);
+    CHECK(fx_ratio_len_below(-5, 1, 1, 2) && fx_ratio_len_below(0, 1, 1, 2));
+    CHECK(!fx_ratio_len_below(1, 0, 1, 2) && !fx_ratio_len_below(1, -1, 1, 2) && !fx_ratio_len_below(1, 1, 1, 1025) &&
+          !fx_ratio_len_below(1, 1, 3, 2));
+    /* x = 0.5 exactly (a = 2^31 for |v| = 1.0, d2 = 2^32): below 0.51, not below 0.5 (1 - 2^-10) */
+    CHECK(fx_ratio_len_below((fxw_t)1 << 31, (fxw_t)1 << 32, 51, 100) &&
+          !fx_ratio_len_below((fxw_t)1 << 31, (fxw_t)1 << 32, 1, 2));
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1)
@@ -532,6 +585,7 @@ int main(int argc, char **argv)
 
     check_fixed_cases();
     check_pow_zero();
+    check_ratio_below();
     for (int i = 0; i < N_HARD; i++) {
         check_sqrt(hard[i]);
         check_rsqrt(hard[i]);

@@ -657,6 +657,63 @@ static void test_directional_plane(void)
         }
 }
 
+/* A Phong plane seen along raw camera rays (light/hit.c, shade_needs_unit;
+ * light/shade.c, shade_specular): in Q16.16, for an exponent k > 12, its
+ * pixels normalise no camera ray, and the specular term takes 1 / |d|
+ * only where it may not be 0. Under a directional light whose mirror
+ * point is in view, x = r . e at each plane pixel is computed here in
+ * double from the camera ray cam_ray_raw gives: the roots must cover the
+ * pixels with x > 1 - 12/k + 2^-10 (a term there) and lie within those
+ * with x > (1 - 12/k)(1 - 2^-10) - 2^-12. Float and double normalise
+ * every plane pixel's ray and take no such root. */
+static void test_raw_phong(void)
+{
+    cam_t cam;
+    camera(&cam);
+    static const int ks[] = {13, 24, 64, 300, 1024};
+    for (int ki = 0; ki < 5; ki++) {
+        int k = ks[ki];
+        int32_t pid = lit_floor(true, k, COL(0.1, 0.1, 0.1), FRAC(0.2, 0.2, 0.2), COL(0.6, 0.5, 0.4));
+        /* l towards (0, 4, -6) mirrors to the eye (0, 4, 6) at the origin; a little off it */
+        const double dir[3] = {0.3, -4, 6.2};
+        CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(dir[0], dir[1], dir[2]), V(0), FRAC(1, 1, 1),
+                              false) == 0);
+        render(&cam, true);
+        long plane = count_id((uint16_t)pid), must = 0, may = 0;
+        double ll = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]), l[3], r[3];
+        for (int c = 0; c < 3; c++)
+            l[c] = -dir[c] / ll;
+        for (int c = 0; c < 3; c++)
+            r[c] = 2 * l[1] * (c == 1) - l[c]; /* 2 (n . l) n - l, n = (0, 1, 0) */
+        double zero = 1.0 - 12.0 / k;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                if ((keys[W * y + x] >> 8) != (uint32_t)pid)
+                    continue;
+                ray_t ray;
+                cam_ray_raw(&cam, x, H - 1 - y, &ray);
+#if FXRT_NUMBER == FXRT_Q16
+                double d[3] = {ray.d.x / 65536.0, ray.d.y / 65536.0, ray.d.z / 65536.0};
+#else
+                double d[3] = {ray.d.x, ray.d.y, ray.d.z};
+#endif
+                double xe = -(r[0] * d[0] + r[1] * d[1] + r[2] * d[2]) / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                must += xe > zero + 1.0 / 1024;
+                may += xe > zero * (1.0 - 1.0 / 1024) - 1.0 / 4096;
+            }
+        uint32_t roots = fxrt_stats.raw_roots, units = fxrt_stats.d_normalised;
+        CHECK_MSG(plane > W * H / 2 && must > 0 && (k < 300 || may < plane / 2),
+                  "k %d: %ld plane pixels, %ld with a term, %ld near one", k, plane, must, may);
+        if (NUM_EXACT)
+            CHECK_MSG(units == 0 && roots >= (uint32_t)must && roots <= (uint32_t)may,
+                      "k %d: %u camera rays normalised, %u roots for %ld pixels with a term and %ld near one", k,
+                      (unsigned)units, (unsigned)roots, must, may);
+        else
+            CHECK_MSG(units == (uint32_t)plane && roots == 0, "k %d: %u camera rays normalised, %u roots, %ld plane pixels",
+                      k, (unsigned)units, (unsigned)roots, plane);
+    }
+}
+
 int main(void)
 {
     test_bounds();
@@ -667,6 +724,7 @@ int main(void)
     test_normalisations();
     test_plane_heights();
     test_directional_plane();
+    test_raw_phong();
     test_pow();
     test_spot();
     test_spot_blocks();

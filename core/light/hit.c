@@ -11,19 +11,6 @@ color_t shade_object(const world_t *w, geom_kind_t kind, uint16_t index, ray_t *
     return shade_object_k(w, kind, index, ray, cam, NULL, mask);
 }
 
-/* Does the light sum at a point of obj (kind, index) need the ray's unit
- * direction? Not for a flat or lambert material (no specular term, no
- * bounce), unless it is a smooth triangle (its normal's side test). */
-static inline __attribute__((always_inline)) bool shade_needs_unit(const world_t *w, const geom_common_t *obj,
-                                                                   geom_kind_t kind, uint16_t index)
-{
-    if (obj->mat.kind != MATERIAL_FLAT && obj->mat.kind != MATERIAL_LAMBERT)
-        return true;
-    FXRT_IF_SMOOTH(FXRT_IF_TRIANGLE(if (kind == GEOM_TRIANGLE && w->triangles[index].smooth) return true;))
-    (void)w, (void)kind, (void)index;
-    return false;
-}
-
 /* The colour at the ray's t on object obj (kind, index), whose geometric
  * normal there is n: the light sum and the bounces. */
 static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w, const geom_common_t *obj,
@@ -50,7 +37,8 @@ static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w,
         numw_ratio_num_t num = numw_ratio_num(geom_flat_num(&w->ks[index].a, &w->ks[index].n, &ray->o));       \
         numw_t rn;                                                                                              \
         vec3_t p = shade_flat_point(&num, &ray->o, &ray->d, &w->ks[index].n, &rn);                              \
-        return shade_sum(w, obj, kind, index GEOM_PART_ARG(NULL), &p, &w->ks[index].n, rn > 0, &ray->d, k, mask); \
+        return shade_sum(w, obj, kind, index GEOM_PART_ARG(NULL), &p, &w->ks[index].n, (rn > 0) | SHADE_FACING_RAW,  \
+                         &ray->d, k, mask);                                                                     \
     })
 #define HIT_FLAT_ROUND(K, ks)
 #define HIT_FLAT_FACES(K, ks)
@@ -95,6 +83,18 @@ color_t shade_object_k(const world_t *w, geom_kind_t kind, uint16_t index, ray_t
 #undef HIT_FLAT_FACES
 #undef HIT_FLAT_RAYS
 
+/* A plane under directional lights only, with no bounce, where no light
+ * needs a shadow ray on this row, on the side dn > 0 says: the light sum
+ * reads no hit point (light/shade_sum.h, shade_plane_row_unshadowed), so
+ * shade_flat_k makes none. It passes the eye instead, a point all the
+ * same: a world changed after the set-up (a light added) gives a wrong
+ * pixel, not a fault. */
+static inline __attribute__((always_inline)) bool shade_flat_eye(const world_t *w, const shade_flat_t *f, numw_t dn)
+{
+    return (f->flags & SHADE_FLAT_DIRECTIONAL) && !material_bounces(f->obj->mat.kind) &&
+           shade_plane_row_unshadowed(w, f->pls, dn > 0);
+}
+
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask)
 {
     if (f->obj->mat.kind == MATERIAL_FLAT && !mask)
@@ -102,21 +102,21 @@ color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const 
     geom_kind_t kind = (geom_kind_t)f->kind;
     if (!shade_needs_unit(w, f->obj, kind, f->index)) {
         numw_t rn;
+        /* (a Phong plane in Q16.16: the only one here with the flag) */
+        if (NUM_EXACT && (f->flags & SHADE_FLAT_DIRECTIONAL) &&
+            shade_flat_eye(w, f, rn = vec3_dotw_unit(ray->d, *f->n)))
+            return shade_sum(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), &ray->o, f->n,
+                             (rn > 0) | SHADE_FACING_RAW, &ray->d, k, mask);
+        FXRT_COUNT(plane_points);
         vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
-        return shade_sum(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), &p, f->n, rn > 0, &ray->d, k, mask);
+        return shade_sum(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), &p, f->n, (rn > 0) | SHADE_FACING_RAW,
+                         &ray->d, k, mask);
     }
     FXRT_COUNT(d_normalised);
     vec3_normalize(&ray->d); /* cam_ray_unit's, for a pinhole camera */
     /* d . n is the quotient's divisor and the light sum's side test. */
     numw_t dn = vec3_dotw_units(ray->d, *f->n);
-    /* A plane under directional lights only, with no bounce, where no
-     * light needs a shadow ray on this row: the light sum reads no hit
-     * point (light/shade_sum.h, shade_plane_row_unshadowed), so none is
-     * made. It gets the eye instead, a point all the same: a world
-     * changed after the set-up (a light added) gives a wrong pixel, not
-     * a fault. */
-    if ((f->flags & SHADE_FLAT_DIRECTIONAL) && !material_bounces(f->obj->mat.kind) &&
-        shade_plane_row_unshadowed(w, f->pls, dn > 0))
+    if (shade_flat_eye(w, f, dn))
         return shade_sum(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), &ray->o, f->n, dn > 0, &ray->d, k, mask);
     FXRT_COUNT(plane_points);
     num_t t = numw_div_by(&f->num, dn);

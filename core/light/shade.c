@@ -191,8 +191,9 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
 }
 
 /* A bound on how far the hit point of shade_flat_k's unit-direction path
- * (a plane that is not Lambert: d normalised, then t = N / (d . n) and o +
- * t d) lies from the exact hit of the exact ray, in num units, from the
+ * (d normalised, then t = N / (d . n) and o + t d: in float and double a
+ * plane that is not Lambert; never in Q16.16, where a Phong plane takes
+ * shade_flat_point's point too) lies from the exact hit of the exact ray, in num units, from the
  * point p, rn = d . n (d not normalised) that shade_flat_point gives for
  * the same ray; negative where the ray grazes the plane (|cos| below
  * 2^-8) or the values are out of range: no block there. With u the exact
@@ -200,32 +201,14 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
  * Q16.16: fx_normalize3's 0.504 per component; below 2^-22 relative in
  * float) and a = u . n: the exact hit along d' lies within 2 |eps| t /
  * (|a| - |eps|) of the one along u (t = |p - o|), and its rounding (t's
- * quotient and the product) adds under 2 LSB. |a| >= |rn| / |d|_1, so
- * Q16.16 takes 2 |p - o|_1 |d|_1 / |rn| + 4 LSB, and float and double
- * 2^-18 |p - o|_1 |d|_1 / |rn|. Along a run |a| has no interior minimum
+ * quotient and the product) adds far less. |a| >= |rn| / |d|_1, so
+ * float and double take 2^-18 |p - o|_1 |d|_1 / |rn|. Along a run |a| has no interior minimum
  * (the cosine of the angle to n along an arc of directions that keeps one
  * side), so the larger of a block's two ends bounds its pixels. */
 static num_t shade_unit_point_slack(const ray_t *ray, const vec3_t *p, numw_t rn)
 {
-    uint64_t d1 = 0, t1 = 0, arn = rn < 0 ? (uint64_t)0 - (uint64_t)rn : (uint64_t)rn;
-    const fx_t D[3] = {ray->d.x, ray->d.y, ray->d.z}, P[3] = {p->x, p->y, p->z}, O[3] = {ray->o.x, ray->o.y, ray->o.z};
-    for (int j = 0; j < 3; j++) {
-        int64_t dj = D[j], tj = (int64_t)P[j] - O[j];
-        d1 += (uint64_t)(dj < 0 ? -dj : dj);
-        t1 += (uint64_t)(tj < 0 ? -tj : tj);
-    }
-    while (d1 >= (uint64_t)1 << 24) { /* (d |d|_1 / |rn| only grows: d1 rounded up, arn down) */
-        d1 = (d1 >> 1) + 1;
-        arn >>= 1;
-    }
-    if (t1 >= (uint64_t)1 << 34 || arn < d1 << 8)
-        return -1;
-    uint64_t num = 2 * t1 * d1; /* < 2^59; num / arn < t1 / 2^7 < 2^27 */
-    int sh = 0;
-    while ((arn >> sh) >= (uint64_t)1 << 32)
-        sh++;
-    uint64_t q = fx_udiv64_32((num >> sh) + 1, (uint32_t)(arn >> sh)) + 1u;
-    return (fx_t)(q + 4);
+    (void)ray, (void)p, (void)rn;
+    return NUM_ZERO; /* (not called: shade_flat_spot_blocks' unit is false in Q16.16) */
 }
 #else
 /* (shade.h) shade_spot_block_out in float and double: the Q16.16 comment
@@ -282,16 +265,37 @@ __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_com
 }
 
 #if FXRT_PHONG
+/* shade_specular along a raw direction d (Q16.16, shade_needs_unit):
+ * r . e = a / |d| with a = -(r . d), made only where the term may not be
+ * 0: a > 0, and not where numw_pow_zero_at proves x^k 0 (most of a Phong
+ * plane, away from its highlight: no root there). |r| <= 1 + 2 LSB, so
+ * |a| < 2^49 (fx_mant64's bound). */
+static inline __attribute__((always_inline)) color_t shade_specular_raw(color_t c, const vec3_t *r, const vec3_t *d,
+                                                            const color_t *ks, uint16_t exponent)
+{
+    numw_t a = numw_neg_fits(vec3_dotw(*r, *d));
+    num_t dv[3] = {d->x, d->y, d->z};
+    num_inv3_t q;
+    if (a <= 0 || numw_pow_zero_at(a, vec3_dotw(*d, *d), exponent))
+        return c;
+    FXRT_COUNT(raw_roots);
+    if (!num_inv3_only(dv, &q))
+        return c;
+    return shade_madd(c, *ks, numw_pow_int(numw_from(num_inv3_mul(&q, numw_mant(a))), exponent));
+}
+
 /* c plus Phong's term c_s (.) c_l (ks) max(0, r . e)^k for the light at l.
  * Out of line on the M0 only (FXRT_INLINE_WIDE): there its temporaries,
  * inlined, made shade_lights' frame (the deepest on the shading path)
  * larger than the 16 KB boards' stack margin allows with shadow-ray
  * culling. */
 static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
-                                                const color_t *ks, uint16_t exponent)
+                                                const color_t *ks, uint16_t exponent, bool raw)
 {
     /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
     vec3_t r = vec3_sub(vec3_scale_unit_small(*n, num_add(ndl, ndl)), *l);
+    if (raw)
+        return shade_specular_raw(c, &r, d, ks, exponent);
     numw_t rde = numw_neg_fits(vec3_dotw_units(r, *d)); /* r . e = -(r . d), e = -d */
     if (rde > 0)
         c = shade_madd(c, *ks, numw_pow_int(rde, exponent));
@@ -433,7 +437,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     bool clear = m->kind == MATERIAL_TRANSPARENT;
     /* Two-sided: n faces the incoming ray (d . n_geo <= 0), from the
      * caller's facing where it knows it. */
-    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(d, n_geo) > 0 : facing != 0;
+    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(d, n_geo) > 0 : (facing & 1) != 0;
     vec3_t n = inside ? vec3_neg_unit(n_geo) : n_geo;
     /* A smooth triangle (scene/smooth.c): the interpolated normal n_s,
      * turned towards the ray on its own; the flat face's normal, turned
@@ -448,6 +452,9 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
     FXRT_IF_MODEL(vec3_t n_wind = n; bool msmooth = part && part->smooth; (void)n_wind; /* (shadows only) */
                   if (msmooth) n = vec3_dotw_units(d, part->ns) > 0 ? vec3_neg_unit(part->ns) : part->ns;)
     color_t c = clear ? color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO) : lit ? k->ambient : obj->color;
+    /* a Phong plane or triangle in Q16.16 seen along a raw d (shade_specular) */
+    bool raw = NUM_EXACT && FXRT_PHONG && facing > 1 && m->kind == MATERIAL_PHONG;
+    (void)raw;
     unsigned bits = 0;
     (void)kind, (void)index; /* only shadow rays need to know the object */
     const shade_plane_light_t *pls = kind == GEOM_PLANE ? shade_plane_entries(k, index) : NULL;
@@ -473,7 +480,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
         c = shade_madd(c, k->kd[i], ndl);
 #if FXRT_PHONG
         if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE)
-            c = shade_specular(c, &n, &l, &d, ndl, &k->ks[i], m->exponent);
+            c = shade_specular(c, &n, &l, &d, ndl, &k->ks[i], m->exponent, raw);
 #endif
     }
     if (mask)
@@ -705,7 +712,7 @@ int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const sh
      * next block's first pixel's (last + 1, in the run: the exact points
      * of x..last lie on it), so each block makes one new point; the run's
      * last block ends on its own last pixel. */
-    const bool unit = !(f->flags & SHADE_FLAT_LAMBERT);
+    const bool unit = shade_needs_unit(w, f->obj, GEOM_PLANE, f->index);
     num_t sa, sb;
     vec3_t pa = shade_plane_point_at(f, row, u, fwd, width, x, unit, &sa, ray);
     while (x < end) {
@@ -780,7 +787,7 @@ color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t 
                            const vec3_t *n_geo_p, int8_t facing, const vec3_t *dp, const shade_k_t *k, uint8_t *mask)
 {
     const shade_plane_light_t *pls = shade_plane_entries(k, index);
-    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : facing != 0;
+    bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : (facing & 1) != 0;
     return shade_plane_sum(w, obj, index, k, pls, pp, inside, mask);
 }
 

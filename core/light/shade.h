@@ -310,8 +310,13 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
 /* The light sum's side of a hit (light/shade_sum.h, `facing`): whether
  * the geometric normal faces away from the ray (d . n_geo > 0: 1) or not
  * (0), where the caller has d . n_geo already (a flat object's hit
- * divisor); SHADE_FACING_UNKNOWN: the light sum computes it. */
+ * divisor); SHADE_FACING_UNKNOWN: the light sum computes it. Or'ed with
+ * SHADE_FACING_RAW where d is a camera ray's raw direction (the object's
+ * light sum needs no unit direction, shade_needs_unit): in Q16.16 a
+ * Phong term then takes r . e from it as it is (light/shade.c,
+ * shade_specular). */
 #define SHADE_FACING_UNKNOWN (-1)
+#define SHADE_FACING_RAW 2
 /* Is the point p surely outside spot light L's cone (v = L's position -
  * p)? A cheap exact test that the light loop makes before normalising v:
  * true only where the cone test with v's normalised length would reject
@@ -326,7 +331,7 @@ bool shade_spot_surely_out(const light_t *L, vec3_t v);
  * points lie on the segment between those of pa's and pb's pixels (pa, pb
  * as shade_flat_point gives them, from eye o; slack, in num units, the
  * pixels' own hit points' error beyond shade_flat_point's: 0 for a Lambert
- * plane, negative for none)? True only where the light sum's own cone
+ * plane and for a Phong one in Q16.16, negative for none)? True only where the light sum's own cone
  * test would reject every pixel of the block; false where it cannot show
  * that, near the cone's edge or far away. The proof is in light/shade.c. */
 bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, const vec3_t *pb, num_t slack);

@@ -6,6 +6,28 @@
 #include "light/shade.h"
 
 #if FXRT_MAX_LIGHTS > 0
+/* Does the light sum at a point of obj (kind, index) need the ray's unit
+ * direction? Not for a flat or lambert material (no specular term, no
+ * bounce), nor in Q16.16 for a Phong one of exponent k > NUM_POW_ZERO_K
+ * on a piece of the FLAT form (a plane, a triangle): shade_lights takes
+ * its specular term's r . e from the raw direction (shade_specular),
+ * which skips the root where numw_pow_zero_at proves the term 0, and its
+ * hit point comes from a ratio (light/hit.c). With k <= NUM_POW_ZERO_K
+ * there is no such skip, and a root per light costs more than one unit
+ * direction per pixel. Float and double keep the unit direction: their
+ * raw path measured 1-2 % dearer on the M4F (a root and a division are
+ * an instruction each there, and x^k never underflows to 0). A smooth
+ * triangle needs it (its normal's side test). */
+static inline __attribute__((always_inline)) bool shade_needs_unit(const world_t *w, const geom_common_t *obj,
+                                                                   geom_kind_t kind, uint16_t index)
+{
+    FXRT_IF_SMOOTH(FXRT_IF_TRIANGLE(if (kind == GEOM_TRIANGLE && w->triangles[index].smooth) return true;))
+    (void)w, (void)index;
+    uint8_t m = obj->mat.kind;
+    return m != MATERIAL_FLAT && m != MATERIAL_LAMBERT &&
+           !(NUM_EXACT && m == MATERIAL_PHONG && obj->mat.exponent > NUM_POW_ZERO_K && ((GEOM_FLAT_KINDS >> kind) & 1u));
+}
+
 /* The light loop (k not NULL when the material is lit and not transparent). */
 color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
                      const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k,

@@ -247,6 +247,27 @@ static inline int fx_clz64(uint64_t v)
     return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)v);
 }
 
+bool fx_ratio_len_below(fxw_t a, fxw_t d2, uint32_t num, uint32_t den)
+{
+    if (d2 <= 0 || den == 0 || den > 1024u || num > den)
+        return false;
+    if (a <= 0)
+        return true;
+    /* d2 2^-2s in [2^30, 2^32) (s in -15..16), and a 2^-(s + 16): then
+     * x = a / (2^16 sqrt(d2)) = (a 2^-(s + 16)) / sqrt(d2 2^-2s), taken
+     * at a's upper bound au over d2's lower bound dl. */
+    uint64_t ud = (uint64_t)d2;
+    int e = 64 - fx_clz64(ud);
+    int s = e >= 31 ? (e - 31) >> 1 : -((32 - e) >> 1);
+    uint64_t dl = s >= 0 ? ud >> (2 * s) : ud << (-2 * s);
+    uint64_t au = ((uint64_t)a >> (s + 16)) + 1;
+    if (au >= ((uint64_t)1 << 17))
+        return false; /* x > 1.99: not below */
+    /* 512 den^2 au^2 <= 511 num^2 dl, exact: each side below 2^63; then
+     * x <= (num / den) sqrt(1 - 2^-9) <= (num / den)(1 - 2^-10). */
+    return ((uint64_t)den * den * au * au << 9) <= (uint64_t)num * num * 511u * dl;
+}
+
 /* An estimate of sqrt(n), n > 0, within a few units: the top 32 bits m
  * of n (taken with an even shift, so sqrt(n) ~ sqrt(m) 2^k) give a 24-bit
  * root R ~ 256 sqrt(m) as in fx_sqrt; for n >= 2^48 one more Newton step

@@ -558,6 +558,13 @@ typedef struct {
     bool big;
 } fx_inv3_t;
 bool fx_inv3(const fx_t v[3], fx_inv3_t *q, fx_t *len);
+/* Is x = a / sqrt(d2) at most (num / den)(1 - 2^-10), surely? a and d2
+ * are wide values with d2 > 0 (Q32.32: a dot product a . v and |v|^2, so
+ * x = a . v / |v|), num <= den <= 1024. Exact integer bounds on the top
+ * bits of a and d2: true only where it holds; false where it may not
+ * (within a relative 2^-14 or so of the bound) or the arguments are out
+ * of range. a <= 0 is below. */
+bool fx_ratio_len_below(fxw_t a, fxw_t d2, uint32_t num, uint32_t den);
 void fx_inv3_unit(const fx_inv3_t *q, const fx_t v[3], fx_t u[3]);
 /* A 64-bit integer H, |H| < 2^56, as m 2^e in 32 bits (4 bytes of RAM
  * per plane and light where the frame keeps it): bits 31..6 the signed

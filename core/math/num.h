@@ -22,6 +22,9 @@
 #include "math/fx.h"
 #include "math/stats.h"
 
+/* Q16.16's x^k is 0 where x <= 1 - NUM_POW_ZERO_K / k (numw_pow_int). */
+#define NUM_POW_ZERO_K 12u
+
 #if FXRT_NUMBER == FXRT_Q16
 
 typedef fx_t num_t;
@@ -179,7 +182,6 @@ static inline num_t numw_pow_loop(uint32_t b, uint32_t k)
  * proves it for every k up to FXRT_PHONG_MAX_EXPONENT at the largest such
  * x, and the loop is monotone in x). Most of a Phong surface lies there,
  * away from its highlight. */
-#define NUM_POW_ZERO_K 12u
 static inline num_t numw_pow_int(numw_t x, uint32_t k)
 {
     uint32_t b = x <= 0 ? 0u : (x >= ((int64_t)1 << 32) ? 0x80000000u : (uint32_t)((uint64_t)x >> 1));
@@ -187,6 +189,17 @@ static inline num_t numw_pow_int(numw_t x, uint32_t k)
     if (k > NUM_POW_ZERO_K && fx_umul32(b, k) <= (uint64_t)(k - NUM_POW_ZERO_K) << 31)
         return 0;
     return numw_pow_loop(b, k);
+}
+/* Is numw_pow_int(x, k) surely 0 at x = a / |d|, for a wide a > 0 and
+ * d2 = |d|^2 wide (the specular term's r . e along a raw direction d,
+ * light/shade.c)? It is where x <= 1 - NUM_POW_ZERO_K / k;
+ * fx_ratio_len_below proves x <= (1 - NUM_POW_ZERO_K / k)(1 - 2^-10) in
+ * integers, which leaves room for the rounding of the x num_inv3_mul
+ * would make from num_inv3_only's 1 / |d| (2 LSB, below the margin, which is above 2^-14 for every k
+ * > NUM_POW_ZERO_K). false: not sure, or k too small to have such x. */
+static inline bool numw_pow_zero_at(numw_t a, numw_t d2, uint32_t k)
+{
+    return k > NUM_POW_ZERO_K && fx_ratio_len_below(a, d2, k - NUM_POW_ZERO_K, k);
 }
 
 /* a b and a + b for a result that fits (the caller's bound): num_mul's
@@ -222,6 +235,8 @@ static inline bool num_normalize3_len(num_t v[3], num_t *len) { return fx_normal
 typedef fx_inv3_t num_inv3_t;
 typedef fx_mant_t numw_mant_t;
 static inline bool num_inv3(const num_t v[3], num_inv3_t *q, num_t *len) { return fx_inv3(v, q, len); }
+/* num_inv3 without the length: 1 / |v| for num_inv3_mul. */
+static inline bool num_inv3_only(const num_t v[3], num_inv3_t *q) { return fx_inv3(v, q, (fx_t *)0); }
 static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[3]) { fx_inv3_unit(q, v, u); }
 static inline numw_mant_t numw_mant(numw_t h) { return fx_mant64(h); }
 /* Has h the sign of the side seen, negative for the back (inside), else
@@ -402,6 +417,15 @@ static inline void num_inv3_unit(const num_inv3_t *q, const num_t v[3], num_t u[
 static inline numw_mant_t numw_mant(numw_t h) { return h; }
 static inline bool numw_mant_faces(numw_mant_t h, bool inside) { return inside ? h < 0 : h > 0; }
 static inline num_t num_inv3_mul(const num_inv3_t *q, numw_mant_t h) { return h * q->inv; }
+/* 1 / |v| (false for the zero vector), as written: one root, one division. */
+static inline bool num_inv3_only(const num_t v[3], num_inv3_t *q)
+{
+    num_t l2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    if (!(l2 > NUM_ZERO))
+        return false;
+    q->inv = NUM_ONE / num_sqrt(l2);
+    return true;
+}
 typedef numw_t numw_sticky_t;
 static inline numw_sticky_t numw_sticky(numw_t x) { return x; }
 static inline num_t numw_sticky_round(numw_sticky_t s) { return s; }
@@ -432,6 +456,12 @@ static inline num_t numw_pow_int(numw_t x, uint32_t k)
         }
     }
     return acc;
+}
+/* Never sure: x^k is 0 nowhere in (0, 1] here. */
+static inline bool numw_pow_zero_at(numw_t a, numw_t d2, uint32_t k)
+{
+    (void)a, (void)d2, (void)k;
+    return false;
 }
 
 #endif

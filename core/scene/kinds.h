@@ -97,6 +97,15 @@ FXRT_STATIC_ASSERT(FXRT_RENDER_MAX_OBJECTS <= 65535, "total object capacity (the
 /* Bit GEOM_KIND is set for each solid kind. */
 #define GEOM_SOLID_BIT(K, k, ks, cap, solid, ...) | (solid << GEOM_##K)
 #define GEOM_SOLID_KINDS (0u FXRT_KINDS(GEOM_SOLID_BIT))
+/* Bit GEOM_KIND is set for each kind of the FLAT form (a plane, a
+ * triangle: one flat piece, whose hit point the light sum can take from a
+ * ratio along the ray's raw direction, light/hit.c). */
+#define GEOM_FORM_FLAT_FLAT 1u
+#define GEOM_FORM_FLAT_ROUND 0u
+#define GEOM_FORM_FLAT_FACES 0u
+#define GEOM_FORM_FLAT_RAYS 0u
+#define GEOM_FLAT_BIT(K, k, ks, cap, solid, bounded, form, ...) | (GEOM_FORM_FLAT_##form << GEOM_##K)
+#define GEOM_FLAT_KINDS (0u FXRT_KINDS(GEOM_FLAT_BIT))
 
 /* One object as data (the public API's fxrt_object_t): p[] holds its
  * kind's fields in table order (plane point, normal; sphere centre;
