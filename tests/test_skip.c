@@ -678,6 +678,15 @@ static void test_raw_phong(void)
         const double dir[3] = {0.3, -4, 6.2};
         CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(dir[0], dir[1], dir[2]), V(0), FRAC(1, 1, 1),
                               false) == 0);
+        /* The general path first: a black point light added (it adds 0)
+         * keeps the plane's pixels off the directional runs. */
+        CHECK(world_add_light(&world, LIGHT_POINT, P(2, 6, -1), P(0, 0, 0), V(0), FRAC(0, 0, 0), false) == 1);
+        render(&cam, false);
+        memcpy(img_general, img, sizeof img);
+        world.n_lights = 1;
+        render(&cam, false);
+        CHECK_MSG(memcmp(img, img_general, sizeof img) == 0, "k %d: the directional runs' frame differs from the general path's", k);
+        uint32_t sums = fxrt_stats.dir_sums;
         render(&cam, true);
         long plane = count_id((uint16_t)pid), must = 0, may = 0;
         double ll = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]), l[3], r[3];
@@ -704,6 +713,11 @@ static void test_raw_phong(void)
         uint32_t roots = fxrt_stats.raw_roots, units = fxrt_stats.d_normalised;
         CHECK_MSG(plane > W * H / 2 && must > 0 && (k < 300 || may < plane / 2),
                   "k %d: %ld plane pixels, %ld with a term, %ld near one", k, plane, must, may);
+        /* In runs (Q16.16, FXRT_SHADE_RUNS), the stretches with no term
+         * take one light sum each: a few per row. */
+        if (NUM_EXACT && FXRT_SHADE_RUNS && k >= 300)
+            CHECK_MSG(sums > 0 && sums <= 3u * H, "k %d: %u light sums by the run for %ld plane pixels on %d rows", k,
+                      (unsigned)sums, plane, H);
         if (NUM_EXACT)
             CHECK_MSG(units == 0 && roots >= (uint32_t)must && roots <= (uint32_t)may,
                       "k %d: %u camera rays normalised, %u roots for %ld pixels with a term and %ld near one", k,

@@ -264,6 +264,14 @@ __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_com
     return shade_lights_of(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, &own, mask);
 }
 
+/* Phong's r = 2 (n . l) n - l for unit n and l, ndl their product rounded
+ * (0 < ndl <= 1: 2 ndl n fits without saturation): shade_specular's, and
+ * shade_flat_phong_run's, the same value. */
+static inline vec3_t shade_phong_r(const vec3_t *n, const vec3_t *l, num_t ndl)
+{
+    return vec3_sub(vec3_scale_unit_small(*n, num_add(ndl, ndl)), *l);
+}
+
 #if FXRT_PHONG
 /* shade_specular along a raw direction d (Q16.16, shade_needs_unit):
  * r . e = a / |d| with a = -(r . d), made only where the term may not be
@@ -292,8 +300,7 @@ static inline __attribute__((always_inline)) color_t shade_specular_raw(color_t 
 static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
                                                 const color_t *ks, uint16_t exponent, bool raw)
 {
-    /* 0 < n.l <= 1: 2 (n.l) n fits without saturation. */
-    vec3_t r = vec3_sub(vec3_scale_unit_small(*n, num_add(ndl, ndl)), *l);
+    vec3_t r = shade_phong_r(n, l, ndl);
     if (raw)
         return shade_specular_raw(c, &r, d, ks, exponent);
     numw_t rde = numw_neg_fits(vec3_dotw_units(r, *d)); /* r . e = -(r . d), e = -d */
@@ -523,6 +530,10 @@ void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, cons
     f->pls = plane ? shade_plane_entries(k, f->index) : NULL;
     f->flags = (uint8_t)((plane && m == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
                          (plane && all_directional ? SHADE_FLAT_DIRECTIONAL : 0) |
+                         (NUM_EXACT && FXRT_PHONG && plane && all_directional && m == MATERIAL_PHONG &&
+                                  f->obj->mat.exponent > NUM_POW_ZERO_K
+                              ? SHADE_FLAT_PHONG_DIR
+                              : 0) |
                          (plane && all_spots && (m == MATERIAL_LAMBERT || m == MATERIAL_PHONG) ? SHADE_FLAT_SPOTS : 0));
 }
 
@@ -780,6 +791,67 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
         return;
     }
     shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, dir);
+}
+
+/* The lights a Phong run tests at each pixel (shade_flat_phong_span): more
+ * reaching its side, and the run goes pixel by pixel. */
+#define SHADE_PHONG_RUN_LIGHTS 2
+
+int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                              const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                              uint8_t *rgb, int32_t *stop)
+{
+    /* Each light's a = -(r . d) (shade_specular_raw's) and |d|^2 along the
+     * run, exactly: d moves by 2u per column (cam_row_dir, exact in
+     * Q16.16), so a steps by -2 r . u, and |d|^2 by 4 d . u + 4 |u|^2,
+     * which steps by 8 |u|^2. */
+    numw_t a[SHADE_PHONG_RUN_LIGHTS], da[SHADE_PHONG_RUN_LIGHTS];
+    unsigned m = 0;
+    *stop = end;
+    bool fast = end - x > 1 && shade_plane_run_side(row, u, fwd, f->n, width, x, end, ray) >= 0;
+    bool inside = fast && vec3_dotw_unit(ray->d, *f->n) > 0; /* (ray: column x's) */
+    fast = fast && shade_plane_row_unshadowed(w, f->pls, inside);
+    vec3_t n = inside ? vec3_neg_unit(*f->n) : *f->n;
+    const light_t *L = w->lights;
+    for (unsigned i = 0; fast && i < w->n_lights; i++, L++) {
+        numw_t ndlw = vec3_dotw_units(n, L->dir);
+        if (L->kind != LIGHT_DIRECTIONAL || (ndlw > 0 && m == SHADE_PHONG_RUN_LIGHTS))
+            fast = false;
+        else if (ndlw > 0) { /* (a light behind the side adds no term) */
+            vec3_t r = shade_phong_r(&n, &L->dir, numw_round_fits(ndlw));
+            a[m] = numw_neg_fits(vec3_dotw(r, ray->d));
+            da[m++] = numw_neg_fits(numw_mul_int(vec3_dotw(r, *u), 2));
+        }
+    }
+    if (!fast)
+        return x;
+    numw_t uu = vec3_dotw(*u, *u), d2 = vec3_dotw(ray->d, ray->d);
+    numw_t g = numw_mul_int(numw_add(vec3_dotw(ray->d, *u), uu), 4), h = numw_mul_int(uu, 8);
+    uint16_t e = f->obj->mat.exponent;
+    rgb8_t v = {0, 0, 0};
+    int32_t first = end; /* the first column with a term, if any */
+    for (int32_t i = x; i < end; i++) {
+        bool zero = true;
+        for (unsigned j = 0; j < m; j++) {
+            zero = zero && (a[j] <= 0 || numw_pow_zero_at(a[j], d2, e));
+            a[j] = numw_add(a[j], da[j]);
+        }
+        d2 = numw_add(d2, g);
+        g = numw_add(g, h);
+        if (first == end && !zero) {
+            first = i;
+        } else if (first < end && zero) {
+            *stop = i;
+            break;
+        }
+    }
+    if (first > x)
+        v = color_to_rgb8(shade_plane_sum_dir(w, f->index, k, f->pls, inside, NULL));
+    for (int32_t i = x; i < first; i++) {
+        FXRT_COUNT(shaded);
+        color_put_pixel(rgb, i, v);
+    }
+    return first;
 }
 
 /* (shade_sum.h) For a Lambert plane with constants k. */

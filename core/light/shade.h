@@ -202,11 +202,13 @@ typedef struct {
      * takes to shade_flat_plane (shade_flat_k's value), and
      * SHADE_FLAT_DIRECTIONAL when every light of the world is
      * directional, SHADE_FLAT_SPOTS for a Lambert or Phong plane when
-     * every light is a spot (shade_flat_spot_blocks). */
+     * every light is a spot (shade_flat_spot_blocks), and
+     * SHADE_FLAT_PHONG_DIR in Q16.16 for a Phong plane of exponent k > 12
+     * when every light is directional (shade_flat_phong_run). */
     uint8_t flags;
     const shade_plane_light_t *pls;
 } shade_flat_t;
-enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2, SHADE_FLAT_SPOTS = 4 };
+enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2, SHADE_FLAT_SPOTS = 4, SHADE_FLAT_PHONG_DIR = 8 };
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
 /* Set f->flags and f->pls for f's object with constants k (NULL: none);
  * all_directional, all_spots: every light of the world is directional, or
@@ -246,6 +248,19 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
  * caller shades that column's block, up to *stop, pixel by pixel
  * (shade_flat_plane_run's or shade_flat_k's values), and calls again from
  * *stop while it is below end. */
+/* For a plane with SHADE_FLAT_PHONG_DIR, from column x of a run that ends
+ * before end, as shade_flat_spot_blocks: where the run keeps one side and
+ * no light needs a shadow ray on the row, writes the diffuse sum's colour
+ * (made once; shade_flat_k's value there) to the leading pixels whose
+ * specular terms are all surely 0 (numw_pow_zero_at, stepped exactly
+ * along the run), and returns the first column not written; the caller
+ * shades it and the columns after it up to *stop (where the terms are 0
+ * again) with shade_flat_k, and calls again from *stop while it is below
+ * end. The caller's deep calls run outside this frame (the M0's 2 KB
+ * stack). */
+int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                              const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                              uint8_t *rgb, int32_t *stop);
 int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                                const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                                uint8_t *rgb, int32_t *stop);
