@@ -530,8 +530,8 @@ void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, cons
     f->pls = plane ? shade_plane_entries(k, f->index) : NULL;
     f->flags = (uint8_t)((plane && m == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
                          (plane && all_directional ? SHADE_FLAT_DIRECTIONAL : 0) |
-                         (NUM_EXACT && FXRT_PHONG && plane && all_directional && m == MATERIAL_PHONG &&
-                                  f->obj->mat.exponent > NUM_POW_ZERO_K
+                         (FXRT_PHONG && plane && all_directional && m == MATERIAL_PHONG &&
+                                  (!NUM_EXACT || f->obj->mat.exponent > NUM_POW_ZERO_K)
                               ? SHADE_FLAT_PHONG_DIR
                               : 0) |
                          (plane && all_spots && (m == MATERIAL_LAMBERT || m == MATERIAL_PHONG) ? SHADE_FLAT_SPOTS : 0));
@@ -797,15 +797,28 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
  * reaching its side, and the run goes pixel by pixel. */
 #define SHADE_PHONG_RUN_LIGHTS 2
 
+/* Float and double (shade_flat_phong_span): is the specular term of r
+ * surely 0 at the pixel of raw direction d, whose light sum takes r . e
+ * = -(r . d') from the normalised d' (shade_flat_k)? Where -(r . d) lies
+ * below -2^-16 |r|_1 |d|_1: d' and the dot products round within 2^-20
+ * |r|_1 relative to |d| (float; far less in double), so -(r . d') < 0
+ * there too, and shade_specular adds nothing. */
+static inline bool shade_phong_none(const vec3_t *r, const vec3_t *d)
+{
+    return -vec3_dot(*r, *d) < -(num_t)(1.0 / 65536) * vec3_l1(*r) * vec3_l1(*d);
+}
+
 int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                               const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                               uint8_t *rgb, int32_t *stop)
 {
-    /* Each light's a = -(r . d) (shade_specular_raw's) and |d|^2 along the
-     * run, exactly: d moves by 2u per column (cam_row_dir, exact in
-     * Q16.16), so a steps by -2 r . u, and |d|^2 by 4 d . u + 4 |u|^2,
-     * which steps by 8 |u|^2. */
+    /* Q16.16: each light's a = -(r . d) (shade_specular_raw's) and |d|^2
+     * along the run, exactly: d moves by 2u per column (cam_row_dir, exact
+     * in Q16.16), so a steps by -2 r . u, and |d|^2 by 4 d . u + 4 |u|^2,
+     * which steps by 8 |u|^2. Float and double: r, and a made at each
+     * pixel (shade_phong_none). */
     numw_t a[SHADE_PHONG_RUN_LIGHTS], da[SHADE_PHONG_RUN_LIGHTS];
+    vec3_t rs[SHADE_PHONG_RUN_LIGHTS];
     unsigned m = 0;
     *stop = end;
     bool fast = end - x > 1 && shade_plane_run_side(row, u, fwd, f->n, width, x, end, ray) >= 0;
@@ -819,6 +832,7 @@ int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const sha
             fast = false;
         else if (ndlw > 0) { /* (a light behind the side adds no term) */
             vec3_t r = shade_phong_r(&n, &L->dir, numw_round_fits(ndlw));
+            rs[m] = r;
             a[m] = numw_neg_fits(vec3_dotw(r, ray->d));
             da[m++] = numw_neg_fits(numw_mul_int(vec3_dotw(r, *u), 2));
         }
@@ -832,8 +846,10 @@ int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const sha
     int32_t first = end; /* the first column with a term, if any */
     for (int32_t i = x; i < end; i++) {
         bool zero = true;
+        if (!NUM_EXACT)
+            cam_row_dir(row, u, fwd, 2 * i - width + 1, ray);
         for (unsigned j = 0; j < m; j++) {
-            zero = zero && (a[j] <= 0 || numw_pow_zero_at(a[j], d2, e));
+            zero = zero && (NUM_EXACT ? a[j] <= 0 || numw_pow_zero_at(a[j], d2, e) : shade_phong_none(&rs[j], &ray->d));
             a[j] = numw_add(a[j], da[j]);
         }
         d2 = numw_add(d2, g);
