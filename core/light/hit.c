@@ -37,8 +37,8 @@ static inline __attribute__((always_inline)) color_t shade_hit(const world_t *w,
         numw_ratio_num_t num = numw_ratio_num(geom_flat_num(&w->ks[index].a, &w->ks[index].n, &ray->o));       \
         numw_t rn;                                                                                              \
         vec3_t p = shade_flat_point(&num, &ray->o, &ray->d, &w->ks[index].n, &rn);                              \
-        return shade_sum(w, obj, kind, index GEOM_PART_ARG(NULL), &p, &w->ks[index].n, (rn > 0) | SHADE_FACING_RAW,  \
-                         &ray->d, k, mask);                                                                     \
+        return shade_sum(w, obj, kind, index GEOM_PART_ARG(NULL), &p, &w->ks[index].n,                          \
+                         (rn > 0) | SHADE_FACING_RAW, &ray->d, k, mask);                                        \
     })
 #define HIT_FLAT_ROUND(K, ks)
 #define HIT_FLAT_FACES(K, ks)

@@ -193,7 +193,8 @@ bool shade_spot_block_out(const light_t *L, const vec3_t *o, const vec3_t *pa, c
 /* A bound on how far the hit point of shade_flat_k's unit-direction path
  * (d normalised, then t = N / (d . n) and o + t d: in float and double a
  * plane that is not Lambert; never in Q16.16, where a Phong plane takes
- * shade_flat_point's point too) lies from the exact hit of the exact ray, in num units, from the
+ * shade_flat_point's point too) lies from the exact hit of the exact ray,
+ * in num units, from the
  * point p, rn = d . n (d not normalised) that shade_flat_point gives for
  * the same ray; negative where the ray grazes the plane (|cos| below
  * 2^-8) or the values are out of range: no block there. With u the exact
@@ -266,7 +267,7 @@ __attribute__((noinline)) color_t shade_sum_own(const world_t *w, const geom_com
 
 /* Phong's r = 2 (n . l) n - l for unit n and l, ndl their product rounded
  * (0 < ndl <= 1: 2 ndl n fits without saturation): shade_specular's, and
- * shade_flat_phong_run's, the same value. */
+ * shade_flat_phong_span's, the same value. */
 static inline vec3_t shade_phong_r(const vec3_t *n, const vec3_t *l, num_t ndl)
 {
     return vec3_sub(vec3_scale_unit_small(*n, num_add(ndl, ndl)), *l);
@@ -279,7 +280,7 @@ static inline vec3_t shade_phong_r(const vec3_t *n, const vec3_t *l, num_t ndl)
  * plane, away from its highlight: no root there). |r| <= 1 + 2 LSB, so
  * |a| < 2^49 (fx_mant64's bound). */
 static inline __attribute__((always_inline)) color_t shade_specular_raw(color_t c, const vec3_t *r, const vec3_t *d,
-                                                            const color_t *ks, uint16_t exponent)
+                                                                        const color_t *ks, uint16_t exponent)
 {
     numw_t a = numw_neg_fits(vec3_dotw(*r, *d));
     num_t dv[3] = {d->x, d->y, d->z};

@@ -203,8 +203,8 @@ typedef struct {
      * SHADE_FLAT_DIRECTIONAL when every light of the world is
      * directional, SHADE_FLAT_SPOTS for a Lambert or Phong plane when
      * every light is a spot (shade_flat_spot_blocks), and
-     * SHADE_FLAT_PHONG_DIR in Q16.16 for a Phong plane of exponent k > 12
-     * when every light is directional (shade_flat_phong_run). */
+     * SHADE_FLAT_PHONG_DIR for a Phong plane (in Q16.16 of exponent k >
+     * 12) when every light is directional (shade_flat_phong_span). */
     uint8_t flags;
     const shade_plane_light_t *pls;
 } shade_flat_t;
@@ -241,6 +241,19 @@ color_t shade_flat_plane_dir(const world_t *w, const shade_flat_t *f, const shad
 void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                           const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                           uint8_t *rgb);
+/* For a plane with SHADE_FLAT_PHONG_DIR, from column x of a run that ends
+ * before end, as shade_flat_spot_blocks: where the run keeps one side and
+ * no light needs a shadow ray on the row, writes the diffuse sum's colour
+ * (made once; shade_flat_k's value there) to the leading pixels whose
+ * specular terms are all surely 0 (Q16.16: numw_pow_zero_at, stepped
+ * exactly along the run; float and double: r . e < 0 surely), and
+ * returns the first column not written; the caller shades it and the
+ * columns after it up to *stop (where the terms are 0 again) with
+ * shade_flat_k, and calls again from *stop while it is below end. The
+ * caller's deep calls run outside this frame (the M0's 2 KB stack). */
+int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                              const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                              uint8_t *rgb, int32_t *stop);
 /* For a plane with SHADE_FLAT_SPOTS, from column x of a run that ends
  * before end: writes the ambient term, the light sum's value there, to
  * the leading blocks of SHADE_SPOT_BLOCK pixels that no spot reaches
@@ -248,19 +261,6 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
  * caller shades that column's block, up to *stop, pixel by pixel
  * (shade_flat_plane_run's or shade_flat_k's values), and calls again from
  * *stop while it is below end. */
-/* For a plane with SHADE_FLAT_PHONG_DIR, from column x of a run that ends
- * before end, as shade_flat_spot_blocks: where the run keeps one side and
- * no light needs a shadow ray on the row, writes the diffuse sum's colour
- * (made once; shade_flat_k's value there) to the leading pixels whose
- * specular terms are all surely 0 (numw_pow_zero_at, stepped exactly
- * along the run), and returns the first column not written; the caller
- * shades it and the columns after it up to *stop (where the terms are 0
- * again) with shade_flat_k, and calls again from *stop while it is below
- * end. The caller's deep calls run outside this frame (the M0's 2 KB
- * stack). */
-int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
-                              const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
-                              uint8_t *rgb, int32_t *stop);
 int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                                const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                                uint8_t *rgb, int32_t *stop);
