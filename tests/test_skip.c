@@ -364,6 +364,19 @@ static double dbl(num_t x)
 #endif
 }
 
+/* Pixel i's camera ray in double (raw: cam_ray_raw's direction, else
+ * cam_ray's unit one), where the keys say it shows object id. */
+static bool px_ray(const cam_t *cam, int i, int32_t id, bool raw, double o[3], double d[3])
+{
+    if ((keys[i] >> 8) != (uint32_t)id)
+        return false;
+    ray_t r;
+    (raw ? cam_ray_raw : cam_ray)(cam, i % W, H - 1 - i / W, &r);
+    o[0] = dbl(r.o.x), o[1] = dbl(r.o.y), o[2] = dbl(r.o.z);
+    d[0] = dbl(r.d.x), d[1] = dbl(r.d.y), d[2] = dbl(r.d.z);
+    return true;
+}
+
 /* A reflective plane with three flat spheres on it, depth 1: every plane
  * pixel sends one reflected ray; those that miss the sphere around the
  * spheres' box (padded by one unit, core/scene/world.c, core/light/trace.c) test no
@@ -399,20 +412,17 @@ static void test_bounds(void)
          * [-0.5, 0.5], its radius padded by one unit (core/scene/world.c) */
         long miss = 0;
         const double c[3] = {0, 0.5, 0}, rad = sqrt(2.0 * 2.0 + 0.5 * 0.5 + 0.5 * 0.5) + 1.0;
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++) {
-                if ((keys[W * y + x] >> 8) != (uint32_t)pid)
-                    continue;
-                ray_t r;
-                cam_ray(&cam, x, H - 1 - y, &r);
-                double o[3] = {dbl(r.o.x), dbl(r.o.y), dbl(r.o.z)}, d[3] = {dbl(r.d.x), dbl(r.d.y), dbl(r.d.z)};
-                double t = -o[1] / d[1], p[3] = {o[0] + t * d[0], 0, o[2] + t * d[2]};
-                d[1] = -d[1];
-                double oc[3] = {c[0] - p[0], c[1] - p[1], c[2] - p[2]};
-                double oc2 = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2];
-                double b = oc[0] * d[0] + oc[1] * d[1] + oc[2] * d[2];
-                miss += oc2 > rad * rad && (b < 0 || oc2 - b * b > rad * rad);
-            }
+        for (int i = 0; i < W * H; i++) {
+            double o[3], d[3];
+            if (!px_ray(&cam, i, pid, false, o, d))
+                continue;
+            double t = -o[1] / d[1], p[3] = {o[0] + t * d[0], 0, o[2] + t * d[2]};
+            d[1] = -d[1];
+            double oc[3] = {c[0] - p[0], c[1] - p[1], c[2] - p[2]};
+            double oc2 = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2];
+            double b = oc[0] * d[0] + oc[1] * d[1] + oc[2] * d[2];
+            miss += oc2 > rad * rad && (b < 0 || oc2 - b * b > rad * rad);
+        }
         printf("bounds (%s): %ld plane pixels, %lu reflected rays, %lu missed the bounds sphere (double: %ld), "
                "%lu sphere kernel calls = 3 x %lu rays inside the bounds\n",
                NUM_NAME, plane, sec, skips, miss, sphere_calls, sec - skips);
@@ -695,21 +705,14 @@ static void test_raw_phong(void)
         for (int c = 0; c < 3; c++)
             r[c] = 2 * l[1] * (c == 1) - l[c]; /* 2 (n . l) n - l, n = (0, 1, 0) */
         double zero = 1.0 - 12.0 / k;
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++) {
-                if ((keys[W * y + x] >> 8) != (uint32_t)pid)
-                    continue;
-                ray_t ray;
-                cam_ray_raw(&cam, x, H - 1 - y, &ray);
-#if FXRT_NUMBER == FXRT_Q16
-                double d[3] = {ray.d.x / 65536.0, ray.d.y / 65536.0, ray.d.z / 65536.0};
-#else
-                double d[3] = {ray.d.x, ray.d.y, ray.d.z};
-#endif
-                double xe = -(r[0] * d[0] + r[1] * d[1] + r[2] * d[2]) / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-                must += xe > zero + 1.0 / 1024;
-                may += xe > zero * (1.0 - 1.0 / 1024) - 1.0 / 4096;
-            }
+        for (int i = 0; i < W * H; i++) {
+            double o[3], d[3];
+            if (!px_ray(&cam, i, pid, true, o, d))
+                continue;
+            double xe = -(r[0] * d[0] + r[1] * d[1] + r[2] * d[2]) / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            must += xe > zero + 1.0 / 1024;
+            may += xe > zero * (1.0 - 1.0 / 1024) - 1.0 / 4096;
+        }
         uint32_t roots = fxrt_stats.raw_roots, units = fxrt_stats.d_normalised;
         CHECK_MSG(plane > W * H / 2 && must > 0 && (k < 300 || may < plane / 2),
                   "k %d: %ld plane pixels, %ld with a term, %ld near one", k, plane, must, may);

@@ -164,20 +164,14 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
             const shade_k_t *k = &r->shade.k[oi];
             if (flat && (r->shade.flat.flags & SHADE_FLAT_LAMBERT))
                 shade_flat_plane_run(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, x, end, ray, rgb);
-            else if (flat && (r->shade.flat.flags & SHADE_FLAT_PHONG_DIR))
-                /* a Phong plane under directional lights: the stretches
-                 * with no specular term at once, then each other pixel */
+            else if (flat && (r->shade.flat.flags & (SHADE_FLAT_PHONG_DIR | SHADE_FLAT_SPOTS)))
+                /* a Phong plane under directional lights (its stretches
+                 * with no specular term) or under spots (the blocks that
+                 * no spot reaches) at once, then each other pixel */
                 for (int32_t i = x, stop; i < end;)
-                    for (i = shade_flat_phong_span(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray, rgb,
-                                                   &stop);
-                         i < stop; i++)
-                        render_shade_run_px(r, o, true, k, cr, u, fwd, cam, w, i, ray, rgb);
-            else if (flat && (r->shade.flat.flags & SHADE_FLAT_SPOTS))
-                /* a Phong plane under spots: the blocks that no spot
-                 * reaches, then each other block pixel by pixel */
-                for (int32_t i = x, stop; i < end;)
-                    for (i = shade_flat_spot_blocks(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray, rgb,
-                                                    &stop);
+                    for (i = (r->shade.flat.flags & SHADE_FLAT_PHONG_DIR ? shade_flat_phong_span
+                                                                         : shade_flat_spot_blocks)(
+                             r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray, rgb, &stop);
                          i < stop; i++)
                         render_shade_run_px(r, o, true, k, cr, u, fwd, cam, w, i, ray, rgb);
             else
