@@ -297,12 +297,15 @@ static inline __attribute__((always_inline)) color_t shade_specular_raw(color_t 
  * Out of line on the M0 only (FXRT_INLINE_WIDE): there its temporaries,
  * inlined, made shade_lights' frame (the deepest on the shading path)
  * larger than the 16 KB boards' stack margin allows with shadow-ray
- * culling. */
-static FXRT_INLINE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
+ * culling. Not cloned either: GCC's copy with raw constant (float and
+ * double, where it is always false) took the M0's double build 32 bytes
+ * deeper (course-phong-directional on the micro:bit: 1,552 of 2,048
+ * bytes, over FXRT_STACK_MARGIN; 1,528 without the copy). */
+static FXRT_INLINE_WIDE FXRT_NOCLONE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
                                                 const color_t *ks, uint16_t exponent, bool raw)
 {
     vec3_t r = shade_phong_r(n, l, ndl);
-    if (raw)
+    if (NUM_EXACT && raw) /* (never in float and double: no frame for it there, the M0's 2 KB stack) */
         return shade_specular_raw(c, &r, d, ks, exponent);
     numw_t rde = numw_neg_fits(vec3_dotw_units(r, *d)); /* r . e = -(r . d), e = -d */
     if (rde > 0)
@@ -833,9 +836,13 @@ int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const sha
             fast = false;
         else if (ndlw > 0) { /* (a light behind the side adds no term) */
             vec3_t r = shade_phong_r(&n, &L->dir, numw_round_fits(ndlw));
-            rs[m] = r;
-            a[m] = numw_neg_fits(vec3_dotw(r, ray->d));
-            da[m++] = numw_neg_fits(numw_mul_int(vec3_dotw(r, *u), 2));
+            if (NUM_EXACT) {
+                a[m] = numw_neg_fits(vec3_dotw(r, ray->d));
+                da[m] = numw_neg_fits(numw_mul_int(vec3_dotw(r, *u), 2));
+            } else {
+                rs[m] = r;
+            }
+            m++;
         }
     }
     if (!fast)
@@ -851,10 +858,13 @@ int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const sha
             cam_row_dir(row, u, fwd, 2 * i - width + 1, ray);
         for (unsigned j = 0; j < m; j++) {
             zero = zero && (NUM_EXACT ? a[j] <= 0 || numw_pow_zero_at(a[j], d2, e) : shade_phong_none(&rs[j], &ray->d));
-            a[j] = numw_add(a[j], da[j]);
+            if (NUM_EXACT)
+                a[j] = numw_add(a[j], da[j]);
         }
-        d2 = numw_add(d2, g);
-        g = numw_add(g, h);
+        if (NUM_EXACT) {
+            d2 = numw_add(d2, g);
+            g = numw_add(g, h);
+        }
         if (first == end && !zero) {
             first = i;
         } else if (first < end && zero) {

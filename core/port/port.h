@@ -20,9 +20,13 @@
 #if defined(__ARM_ARCH_6M__)
 #define FXRT_PORT_SMALL_ISA 1
 #define FXRT_INLINE_WIDE __attribute__((noinline))
+/* ... and not cloned by GCC either, where a constant argument's copy
+ * made a deeper frame (light/shade.c, shade_specular). */
+#define FXRT_NOCLONE_WIDE __attribute__((noclone))
 #else
 #define FXRT_PORT_SMALL_ISA 0
 #define FXRT_INLINE_WIDE inline __attribute__((always_inline))
+#define FXRT_NOCLONE_WIDE
 #endif
 
 /* FXRT_PORT_BARE: a bare-metal Arm target (arm-none-eabi), where the
