@@ -169,9 +169,11 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
                  * with no specular term) or under spots (the blocks that
                  * no spot reaches) at once, then each other pixel */
                 for (int32_t i = x, stop; i < end;)
-                    for (i = (r->shade.flat.flags & SHADE_FLAT_PHONG_DIR ? shade_flat_phong_span
-                                                                         : shade_flat_spot_blocks)(
-                             r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray, rgb, &stop);
+                    for (i = r->shade.flat.flags & SHADE_FLAT_PHONG_DIR /* (direct calls: tests/norecurse.sh) */
+                                 ? shade_flat_phong_span(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray,
+                                                         rgb, &stop)
+                                 : shade_flat_spot_blocks(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray,
+                                                          rgb, &stop);
                          i < stop; i++)
                         render_shade_run_px(r, o, true, k, cr, u, fwd, cam, w, i, ray, rgb);
             else
