@@ -3,12 +3,13 @@
 # plane's per-row masks of the objects that cannot block its shadow rays),
 # the flat objects' hit numerators kept across pixels, with the runs of
 # their pixels shaded at once (frame/render_shade.c, FXRT_SHADE_RUNS,
-# which needs the numerators) and a model's quick box test (scene/bvh.c: boxes
+# which needs the numerators), a model's quick box test (scene/bvh.c: boxes
 # by reciprocals, the walk's order by the exact quotients where those are
-# too close) change the work, never a pixel: every scene in scenes/ and
-# its subfolders at 96x72, in q16, float and double, with the host tool
-# and with its build without all four (FXRT_ABLATE_ORDER,
-# FXRT_ABLATE_SHADOW_ROWS, FXRT_ABLATE_FLAT_NUM, FXRT_ABLATE_BVH_QUICK;
+# too close) and the triangles' shadow edges (light/shadow.c) change the
+# work, never a pixel: every scene in scenes/ and its subfolders at 96x72,
+# in q16, float and double, with the host tool and with its build without
+# all five (FXRT_ABLATE_ORDER, FXRT_ABLATE_SHADOW_ROWS,
+# FXRT_ABLATE_FLAT_NUM, FXRT_ABLATE_BVH_QUICK, FXRT_ABLATE_SHADOW_EDGES;
 # tests/order.mk), byte for byte. The lit scenes and two bench scenes
 # are rendered again with `samples 2 adaptive` and lights on every
 # object: the adaptive sampler's one ray per pixel takes the shading

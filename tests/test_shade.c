@@ -670,11 +670,42 @@ static bool light_towards(const light_t *L, vec3_t p, vec3_t *l, num_t *dist)
 #endif
 }
 
+/* The distance from triangle tv to the point where the line o + t d
+ * crosses its plane (double; a line parallel to it: infinity). */
+static double tri_dist(const double *tv[3], const double o[3], const double d[3])
+{
+    double e1[3], e2[3], n[3], ao[3];
+    for (int i = 0; i < 3; i++)
+        e1[i] = tv[1][i] - tv[0][i], e2[i] = tv[2][i] - tv[0][i], ao[i] = tv[0][i] - o[i];
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2], n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    double dn = dot(d, n);
+    if (dn == 0)
+        return INFINITY;
+    double t = dot(ao, n) / dn, x[3], best = INFINITY;
+    for (int i = 0; i < 3; i++)
+        x[i] = o[i] + t * d[i];
+    bool in = true;
+    for (int e = 0; e < 3; e++) {
+        const double *a = tv[e], *b = tv[(e + 1) % 3];
+        double ab[3], ax[3], c[3], ab2, s;
+        for (int i = 0; i < 3; i++)
+            ab[i] = b[i] - a[i], ax[i] = x[i] - a[i];
+        c[0] = ab[1] * ax[2] - ab[2] * ax[1], c[1] = ab[2] * ax[0] - ab[0] * ax[2], c[2] = ab[0] * ax[1] - ab[1] * ax[0];
+        in = in && dot(c, n) >= 0;
+        ab2 = dot(ab, ab);
+        s = ab2 > 0 ? fmin(fmax(dot(ax, ab) / ab2, 0), 1) : 0;
+        double q[3] = {ax[0] - s * ab[0], ax[1] - s * ab[1], ax[2] - s * ab[2]};
+        best = fmin(best, sqrt(dot(q, q)));
+    }
+    return in ? 0 : best;
+}
+
 static void test_shadow_cull(long cases)
 {
     static world_t w;
-    static shadow_cull_t table[FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS];
-    long differ = 0, blocked = 0, graze = 0, graze_blocked = 0, tests = 0, skipped = 0;
+    static shadow_table_t tab;
+    const shadow_cull_t *table = tab.cull;
+    long differ = 0, blocked = 0, graze = 0, graze_blocked = 0, tests = 0, skipped = 0, edge_skips = 0, tri_left = 0;
     long dot16_out = 0, dot16_exact = 0, dot16_wrong = 0, kernel_wrong = 0, kernel_wrong_by[3] = {0, 0, 0};
     long per_world = 200;
     for (long k = 0; k < cases; k += per_world) {
@@ -726,7 +757,7 @@ static void test_shadow_cull(long cases)
              * w.lights[li] and its cull slots would be another world's) */
             refused[li] = world_add_light(&w, kind, V(pos), V(dir), N(90), color_make(NUM_ONE, NUM_ONE, NUM_ONE), true) != li;
         }
-        shadow_cull_setup(&w, table);
+        shadow_cull_setup(&w, &tab);
         for (long j = 0; j < per_world && k + j < cases; j++) {
             int li = (int)(j % 3);
             if (refused[li])
@@ -787,8 +818,9 @@ static void test_shadow_cull(long cases)
             if (!light_towards(L, p, &l, &dist))
                 continue;
             const shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
-            bool full = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, NULL, 0);
-            bool culled = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, row, 0);
+            const shadow_edge_t *edges = SHADOW_EDGES ? tab.edges + (size_t)li * FXRT_MAX_TRIANGLES : NULL;
+            bool full = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, NULL, 0, NULL);
+            bool culled = shadow_blocked(&w, GEOM_PLANE, 0 GEOM_PART_ARG(NULL), &w.planes[0].obj, false, &p, L, &l, dist, row, 0, edges);
             tests++;
             if (full != culled) {
                 /* Culling may only skip an occluder whose bounding sphere
@@ -837,7 +869,14 @@ static void test_shadow_cull(long cases)
                     double t = fmin(fmax(dot(oc, d) / dd, 0), tm), q[3];
                     for (int i = 0; i < 3; i++)
                         q[i] = oc[i] - t * d[i];
-                    near = near || sqrt(dot(q, q)) <= br * (1 + 1.0 / 256) + 1.0 / 1024 + 1e-9 * (fabs(bc[0]) + fabs(bc[1]) + fabs(bc[2]));
+                    double mu = br / 256 + 1.0 / 1024 + 1e-9 * (fabs(bc[0]) + fabs(bc[1]) + fabs(bc[2]));
+                    /* The triangle's shadow edges cull inside its bound: there
+                     * the kernel is right where its hit, the ray's crossing
+                     * of the triangle's plane, lies within mu of the triangle. */
+                    if (ob == 1 && SHADOW_EDGES && L->kind != LIGHT_DIRECTIONAL)
+                        near = near || tri_dist(tv, o, d) <= mu;
+                    else
+                        near = near || sqrt(dot(q, q)) <= br + mu;
                 }
                 if (near || culled) {
                     differ++;
@@ -863,6 +902,20 @@ static void test_shadow_cull(long cases)
                     else
                         skip = dist <= e->pt.d_cap && (dist <= e->pt.d_near || cone_out(e, &l));
                     skipped += skip;
+                    /* and of the triangle's tests its cone leaves, how many
+                     * its edges skip (from the table's numbers, in double) */
+                    if (o == 1 && !skip && SHADOW_EDGES && L->kind != LIGHT_DIRECTIONAL) {
+                        const shadow_edge_t *g = &edges[0];
+                        bool eskip = false;
+                        for (int jj = 0; jj < 3; jj++) {
+                            /* (Q16.16: Q2.14 and whole units; the test adds 2^-11) */
+                            double q = NUM_EXACT ? 1.0 / 16384 : 1, cap = NUM_EXACT ? (double)g->cap : D(g->cap);
+                            double dv = (D(l.x) * g->m[jj][0] + D(l.y) * g->m[jj][1] + D(l.z) * g->m[jj][2]) * q;
+                            eskip = eskip || (D(dist) < cap && dv > g->lim[jj] * q + (NUM_EXACT ? 1.0 / 2048 : 0));
+                        }
+                        tri_left++;
+                        edge_skips += eskip;
+                    }
                 }
             }
 #if FXRT_NUMBER == FXRT_Q16
@@ -912,6 +965,9 @@ static void test_shadow_cull(long cases)
     CHECK_MSG(graze_blocked > graze / 10 && graze_blocked < graze * 9 / 10,
               "grazing rays: %ld of %ld blocked (the check needs both answers often)", graze_blocked, graze);
     CHECK_MSG(skipped > 3 * random_pt / 2, "culling skipped only %ld of about %ld exact tests", skipped, 3 * random_pt);
+    printf("shadow edges: %ld of the %ld triangle tests the cones leave (random points) skipped\n", edge_skips, tri_left);
+    CHECK_MSG(!SHADOW_EDGES || edge_skips * 4 > tri_left, "shadow edges skipped only %ld of %ld triangle tests", edge_skips,
+              tri_left);
 }
 #endif
 

@@ -21,7 +21,7 @@ void render_shade_setup(render_t *r, const world_t *w)
     sh->all_directional = dir == w->n_lights;
     sh->all_spots = spot > 0 && spot == w->n_lights;
     sh->flat_of = RENDER_VIS_NONE;
-    SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, sh->cull.cull), shade_plane_heights(w, &sh->cull);
+    SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, &sh->cull), shade_plane_heights(w, &sh->cull);
                   shadow_rows_clear(&sh->cull);)
     for (uint16_t i = 0; sh->any_lit && i < r->vis.count; i++) {
         const geom_common_t *c = world_common(w, (geom_kind_t)r->vis.obj[i].geom, r->vis.obj[i].index);

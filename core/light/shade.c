@@ -410,7 +410,9 @@ static inline __attribute__((always_inline)) bool shade_shadowed(const world_t *
     if (!L->shadows || (skip & SHADOW_ROW_CLEAR && (dist < SHADE_FAR_DIST || L->kind == LIGHT_DIRECTIONAL)))
         return false;
     const shadow_cull_row_t *cull = NULL;
-    SHADE_IF_CULL(if (k && k->cull) cull = k->cull->cull + (size_t)i * SHADOW_CULL_SLOTS;)
+    const shadow_edge_t *edges = NULL;
+    SHADE_IF_CULL(if (k && k->cull) cull = k->cull->cull + (size_t)i * SHADOW_CULL_SLOTS,
+                  edges = SHADOW_EDGES ? k->cull->edges + (size_t)i * FXRT_MAX_TRIANGLES : NULL;)
     if (iv) {
         FXRT_COUNT(l_units);
         num_inv3_unit(iv, va, va);
@@ -423,7 +425,7 @@ static inline __attribute__((always_inline)) bool shade_shadowed(const world_t *
      * has no room for it (micro:bit, double: 32 bytes deeper). */
     vec3_t pc = *p;
     return shadow_blocked(w, kind, index GEOM_PART_ARG(part), obj, inside,
-                          NUM_EXACT || FXRT_PORT_SMALL_ISA ? p : &pc, L, l, dist, cull, skip);
+                          NUM_EXACT || FXRT_PORT_SMALL_ISA ? p : &pc, L, l, dist, cull, skip, edges);
 #else
     (void)w, (void)kind, (void)index, (void)obj, (void)inside, (void)p, (void)L, (void)i, (void)l, (void)dist,
         (void)k, (void)pls, (void)iv, (void)va;

@@ -56,10 +56,11 @@ typedef union {
         numw_t r;      /* bounding radius with margins */
     } dir;             /* directional lights */
 } shadow_cull_t;
-/* Fill table[light * SHADOW_CULL_SLOTS + slot] for world w (every light:
+/* Fill t->cull[light * SHADOW_CULL_SLOTS + slot] for world w (every light:
  * a point or spot light's row holds cones, a directional light's the
- * objects' projections). Once per frame. */
-void shadow_cull_setup(const world_t *w, shadow_cull_t *table);
+ * objects' projections) and t->edges. Once per frame. */
+struct shadow_table;
+void shadow_cull_setup(const world_t *w, struct shadow_table *t);
 #if FXRT_NUMBER == FXRT_Q16
 /* A point or spot light's cone test, ldir . u > lim (shadow_culled_pt,
  * light/shadow.c). Q16.16 keeps u in Q2.30 and lim in Q18.14 rounded up,
@@ -87,6 +88,24 @@ static inline bool shadow_cone_out16(const shadow_cull_t *e, const vec3_t *l)
 }
 #endif
 typedef shadow_cull_t shadow_cull_row_t; /* a light's row of the table */
+
+/* Shadow edges (light/shadow.c, shadow_edge_entry): for each point or spot
+ * light and each triangle, the three planes through the light and one
+ * edge each, as unit normals m facing the triangle's third vertex. A ray
+ * that the exact test finds blocked meets the triangle (up to the
+ * kernels' rounding) far enough from the light that ldir . m <= lim for
+ * all three; a ray in the triangle's cone with ldir . m > lim for one of
+ * them skips it (the cone's bounding sphere holds much more than the
+ * triangle). Q16.16 keeps m and lim in Q2.14 (lim rounded up) and tests
+ * in 32-bit products, adding 2^-11, as shadow_cone_out16; float and double
+ * keep the values (lim with the same 2^-11). A lim of 2 or more never
+ * skips. */
+#define SHADOW_EDGES (SHADOW_CULL && FXRT_MAX_TRIANGLES > 0 && !FXRT_NO_SHADOW_EDGES)
+typedef struct {
+    num_q14_t m[3][3];
+    num_q14_t lim[3];
+    num_q14_t cap; /* for dist < cap only (Q16.16: whole units) */
+} shadow_edge_t;
 
 /* Shadow rows (light/shadow.c, shadow_rows_setup): on an image row, the
  * points a plane shows lie on one line, and the shadow rays from them lie
@@ -123,9 +142,11 @@ typedef struct {
 } shade_plane_light_t;
 /* The frame's shadow-ray tables: the cull table, and per plane and light
  * (pl[plane * FXRT_MAX_LIGHTS + light]) the row's mask and the height. */
-typedef struct {
+typedef struct shadow_table {
     shadow_cull_t cull[SHADOW_CULL ? FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS : 1];
     shade_plane_light_t pl[SHADE_HEIGHTS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
+    /* edges[light * FXRT_MAX_TRIANGLES + triangle] (shadow edges above) */
+    shadow_edge_t edges[SHADOW_EDGES ? FXRT_MAX_LIGHTS * FXRT_MAX_TRIANGLES : 1];
 } shadow_table_t;
 /* The masks of image row y (counted from the bottom) of a perspective
  * camera cam, for every plane and light of w; all zero for another view.
@@ -308,10 +329,11 @@ color_t shade_point_k(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PA
  * triangle it starts on (part), and tests the model's others with its
  * other objects (self-shadowing). obj: world_common(w, kind, index).
  * cull: the light's row of the cull table, or NULL (no culling). */
-/* skip: the row's mask for (plane, light) (shadow rows above), or 0. */
+/* skip: the row's mask for (plane, light) (shadow rows above), or 0.
+ * edges: with cull, the light's row of the shadow edges (or NULL). */
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const geom_common_t *obj,
                     bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull,
-                    uint32_t skip);
+                    uint32_t skip, const shadow_edge_t *edges);
 
 /* Q16.16: a point or spot light at a distance of at least SHADE_FAR_DIST
  * from p may lie beyond the range (shade_lights computes |v| within 0.5

@@ -112,8 +112,75 @@ __attribute__((unused)) static void shadow_cull_entry(shadow_cull_t *e, const li
     e->pt.d_near = num_min(near, cap);
 }
 
-void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
+/* v as an edge entry keeps it (shade.h): in Q16.16, v (|v| < 2) in Q2.14
+ * rounded to nearest (how 0) or up (1, and 1 LSB more for a division's
+ * rounding), or v's whole units (how -1: 0 <= v < 2^15); in float and
+ * double v itself, with the test's 2^-11 added for how 1. */
+static num_q14_t shadow_q14(num_t v, int how)
 {
+    if (NUM_EXACT)
+        return (num_q14_t)(how < 0 ? (int32_t)v >> 16 : how > 0 ? ((int32_t)v + 4) >> 2 : ((int32_t)v + 2) >> 2);
+    return (num_q14_t)(how > 0 ? num_add(v, NUM(1.0 / 2048)) : v);
+}
+
+/* The shadow edges (shade.h) of triangle tr seen from point or spot light
+ * L. A hit the exact test finds lies at a point x = p + t ldir of the
+ * ray, 0 < t < dist, within mu of the triangle (the kernels' rounding:
+ * mu = R' - r, shadow_bound), so m . (x - L) >= -mu for each edge's
+ * plane through L (unit normal m facing the triangle). With L' = p + dist
+ * ldir, |L' - L| <= eps = 2^-15 + cap 2^-13 for dist < cap (shadow_cull_entry's
+ * bound), x - L = (L' - L) - s ldir with s = dist - t, and
+ * s >= near = (|c - L| - R' - eps) (1 - 2^-12) (as in the cone's entry),
+ * so m . (x - L) <= eps - s (m . ldir): a ray with m . ldir > (eps + mu)
+ * / near finds no hit. lim adds 2^-13 for m's own rounding. cap: twice
+ * the distance to the far side of the bound, and 16; never where the light
+ * is near the bound or the triangle's plane (an edge plane's normal would
+ * be noise), or a difference leaves 2^14 (P - L might saturate). */
+__attribute__((unused)) static void shadow_edge_entry(shadow_edge_t *g, const light_t *L, const geom_triangle_t *tr)
+{
+    vec3_t m[3];
+    num_t lim = NUM(2.5); /* (never) */
+    const vec3_t *v[3] = {&tr->a, &tr->b, &tr->c};
+    vec3_t c;
+    num_t r, len;
+    geom_triangle_around(tr, &c, &r);
+    num_t rr = shadow_bound(c, r, L);
+    bool ok = !tr->degenerate && vec3_unit_len(vec3_sub(c, L->position), &m[0], &len);
+    for (int j = 0; ok && j < 3; j++) {
+        vec3_t a = v[j][0], pos = L->position;
+        const num_t big = NUM(16384);
+        ok = num_abs(num_sub(a.x, pos.x)) < big && num_abs(num_sub(a.y, pos.y)) < big &&
+             num_abs(num_sub(a.z, pos.z)) < big;
+    }
+    /* (kept in whole units: dist below them) */
+    num_t cap = ok ? num_min(num_add(num_mul_int(num_add(len, rr), 2), NUM(16)), NUM(16383)) : NUM_ZERO;
+    num_t eps = num_add(NUM(1.0 / 32768), num_mul(cap, NUM(1.0 / 8192)));
+    num_t near = ok ? num_mul(num_sub(num_sub(len, rr), eps), NUM(1.0 - 1.0 / 4096)) : NUM_ZERO;
+    for (int j = 0; ok && j < 3; j++) {
+        vec3_t a = vec3_sub(v[j][0], L->position), b = vec3_sub(v[(j + 1) % 3][0], L->position);
+        vec3_t k = vec3_sub(v[(j + 2) % 3][0], L->position);
+        ok = vec3_unit_cross(a, b, &m[j]);
+        /* the third vertex clearly on one side: at least 2^-8 of |k|_1 */
+        numw_t side = vec3_dotw_unit(k, m[j]);
+        num_t sd = numw_round_fits(side < 0 ? numw_sub(numw_from(NUM_ZERO), side) : side);
+        ok = ok && sd > num_mul(vec3_l1(k), NUM(1.0 / 256));
+        if (ok && side < 0)
+            m[j] = vec3_neg(m[j]);
+    }
+    if (ok && near > NUM(1.0 / 64))
+        lim = num_add(num_div(num_add(eps, num_sub(rr, r)), near), NUM(1.0 / 8192));
+    bool use = lim < NUM(1.5);
+    g->cap = use ? shadow_q14(cap, -1) : 0;
+    for (int j = 0; j < 3; j++) {
+        for (int i = 0; i < 3; i++)
+            g->m[j][i] = use ? shadow_q14((&m[j].x)[i], 0) : 0;
+        g->lim[j] = use ? shadow_q14(lim, 1) : (num_q14_t)(NUM_EXACT ? INT16_MAX : 4);
+    }
+}
+
+void shadow_cull_setup(const world_t *w, shadow_table_t *t)
+{
+    shadow_cull_t *table = t->cull;
     for (uint8_t li = 0; li < w->n_lights; li++) {
         const light_t *L = &w->lights[li];
         shadow_cull_t *row = table + (size_t)li * SHADOW_CULL_SLOTS;
@@ -127,6 +194,10 @@ void shadow_cull_setup(const world_t *w, shadow_cull_t *table)
         FXRT_KINDS(SHADOW_CULL_ROW)
 #undef SHADOW_CULL_ROW
         (void)row, (void)c, (void)r, (void)L; /* (no bounded kind: no cull entry) */
+        if (SHADOW_EDGES && L->kind != LIGHT_DIRECTIONAL) {
+            FXRT_IF_TRIANGLE(for (uint16_t i = 0; i < w->n_triangles; i++) shadow_edge_entry(
+                                 &t->edges[SHADOW_EDGES ? (size_t)li * FXRT_MAX_TRIANGLES + i : 0], L, &w->triangles[i]);)
+        }
     }
 }
 
@@ -340,6 +411,7 @@ void shadow_rows_setup(const world_t *w, const cam_t *cam, int32_t y, shadow_tab
  * in float and double, a margin for their rounding: CULL_REL |p|_1). */
 typedef struct {
     const shadow_cull_t *row;
+    const shadow_edge_t *edges; /* the light's shadow edges (NULL: none) */
     vec3_t ldir;
     num_t dist;
     numw_t p1, p2;
@@ -385,6 +457,25 @@ static SHADOW_CULLED_INLINE bool shadow_culled_dir(const shadow_ray_cull_t *rc, 
            numw_abs_gt(numw_sub_exact(rc->p2, e->dir.c2), lim);
 }
 
+/* A triangle's shadow edges (shade.h), for a ray its cone did not skip
+ * (i: its index). */
+static SHADOW_CULLED_INLINE bool shadow_edge_out(const shadow_edge_t *g, int j, const vec3_t *l)
+{
+    const num_q14_t *m = g->m[j];
+    if (NUM_EXACT) { /* Q4.28 */
+        int32_t dot = ((int32_t)l->x >> 2) * m[0] + ((int32_t)l->y >> 2) * m[1] + ((int32_t)l->z >> 2) * m[2];
+        return dot > (int32_t)g->lim[j] * 16384 + (1 << 17);
+    }
+    return vec3_dotw_unit(*l, vec3_make((num_t)m[0], (num_t)m[1], (num_t)m[2])) > numw_from((num_t)g->lim[j]);
+}
+static SHADOW_CULLED_INLINE bool shadow_edges_out(const shadow_ray_cull_t *rc, ptrdiff_t i)
+{
+    const shadow_edge_t *g = rc->edges + i;
+    if (!rc->edges || (NUM_EXACT ? (int32_t)rc->dist >> 16 >= g->cap : !(rc->dist < (num_t)g->cap)))
+        return false;
+    return shadow_edge_out(g, 0, &rc->ldir) || shadow_edge_out(g, 1, &rc->ldir) || shadow_edge_out(g, 2, &rc->ldir);
+}
+
 /* Which culling a loop makes: a constant in each instance of
  * shadow_occluded_loop, so that each has its test inlined and no test of
  * the light's kind or of a missing table per object. */
@@ -397,6 +488,9 @@ enum { SHADOW_CULLS = SHADOW_CULL };
     (SHADOW_CULLS && (mode == SHADOW_CULL_PT    ? shadow_culled_pt(rc, e)                                              \
                      : mode == SHADOW_CULL_DIR ? shadow_culled_dir(rc, e)                                             \
                                                : false))
+/* A triangle's shadow edges, for a point or spot light. */
+enum { SHADOW_EDGES_ON = SHADOW_EDGES }; /* (as SHADOW_CULLS) */
+#define SHADOW_EDGE_SKIP(K, i) (SHADOW_EDGES_ON && GEOM_##K == GEOM_TRIANGLE && mode == SHADOW_CULL_PT && shadow_edges_out(rc, i))
 /* The next object's cull entry. */
 #define SHADOW_NEXT(e) ((e) = mode != SHADOW_CULL_NONE ? (e) + 1 : (e))
 /* The light's row mask (shade.h, row_skip) from a kind's first slot on
@@ -442,7 +536,7 @@ static inline __attribute__((always_inline)) bool shadow_occluded_loop(const wor
         const geom_##k##_t *o = w->ks;                                                                        \
         uint32_t sk = SHADOW_ROW_SKIP(SHADOW_SLOT_##K);                                                       \
         for (uint16_t n = w->n_##ks; n > 0; n--, o++) {                                                       \
-            if (!(sk & 1) && !SHADOW_SKIP(e) && SHADOW_HITS(k, t1, o))                                      \
+            if (!(sk & 1) && !SHADOW_SKIP(e) && !SHADOW_EDGE_SKIP(K, o - w->ks) && SHADOW_HITS(k, t1, o))  \
                 return true;                                                                                  \
             SHADOW_NEXT(e);                                                                                   \
             sk >>= 1;                                                                                         \
@@ -488,7 +582,7 @@ static __attribute__((noinline)) bool shadow_blocked_dir(const world_t *w, const
 
 bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART_PARAM, const geom_common_t *obj,
                     bool inside, const vec3_t *p, const light_t *l, const vec3_t *ldir, num_t dist, const shadow_cull_row_t *cull,
-                    uint32_t skip)
+                    uint32_t skip, const shadow_edge_t *edges)
 {
     FXRT_COUNT(shadow_rays);
     bool solid = (GEOM_SOLID_KINDS >> kind) & 1u;
@@ -509,6 +603,7 @@ bool shadow_blocked(const world_t *w, geom_kind_t kind, uint16_t index GEOM_PART
     if (SHADOW_CULL && cull) {
         shadow_ray_cull_t rc;
         rc.row = cull;
+        rc.edges = SHADOW_EDGES ? edges : NULL;
         rc.ldir = *ldir;
         rc.dist = dist;
         if (l->kind == LIGHT_DIRECTIONAL)

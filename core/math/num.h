@@ -29,6 +29,7 @@
 
 typedef fx_t num_t;
 typedef fxw_t numw_t;
+typedef int16_t num_q14_t; /* a value below 2 kept small: Q2.14 (light/shadow.c's edges) */
 #define NUM_NAME "q16"
 #define NUM(x) F16(x) /* constant literal */
 #define NUM_ZERO 0
@@ -309,6 +310,7 @@ static inline int32_t num_order_key(num_t a)
 }
 #endif
 typedef num_t numw_t;
+typedef num_t num_q14_t; /* (Q16.16: Q2.14; here the value itself) */
 #define NUM_ZERO NUM(0)
 #define NUM_ONE NUM(1)
 #define NUM_EXACT 0
