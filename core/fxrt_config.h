@@ -392,6 +392,17 @@ FXRT_STATIC_ASSERT(FXRT_PHONG == 0 || FXRT_PHONG == 1, "FXRT_PHONG must be 0 or 
 #define FXRT_SHADOW_CULL 1
 #endif
 FXRT_STATIC_ASSERT(FXRT_SHADOW_CULL == 0 || FXRT_SHADOW_CULL == 1, "FXRT_SHADOW_CULL must be 0 or 1");
+/* FXRT_SHADOW_EDGES 1 (default; with FXRT_SHADOW_CULL) also gives each
+ * point and spot light a triangle's three edge planes, once per frame: a
+ * shadow ray inside the triangle's cone but outside one of them skips its
+ * exact test too (light/shadow.c; the same frames). 26 bytes of RAM per
+ * light and triangle in Q16.16. The scene compiler emits 0 for a scene
+ * without a triangle or without a point or spot light with shadows, and
+ * firmware/fit.sh builds a scene that does not fit RAM again with 0. */
+#ifndef FXRT_SHADOW_EDGES
+#define FXRT_SHADOW_EDGES 1
+#endif
+FXRT_STATIC_ASSERT(FXRT_SHADOW_EDGES == 0 || FXRT_SHADOW_EDGES == 1, "FXRT_SHADOW_EDGES must be 0 or 1");
 FXRT_STATIC_ASSERT(FXRT_MAX_LIGHTS > 0 || (!FXRT_SHADOWS && !FXRT_PHONG), "FXRT_SHADOWS and FXRT_PHONG need FXRT_MAX_LIGHTS > 0");
 /* FXRT_STATS 1 counts the shading work (core/math/stats.h) for tests;
  * 0 (default) compiles the counters out. */

@@ -28,7 +28,8 @@
 # --sphere-rows, as make does on every board) that does not fit RAM is
 # first compiled again without it (FXRT_COHERENT_SPHERES 0 in DIR's
 # scene_config.h, the objects in DIR rebuilt): the state is an optimisation
-# (same frames) that the micro:bit keeps only where RAM allows.
+# (same frames) that the micro:bit keeps only where RAM allows. The
+# triangles' shadow edges (FXRT_SHADOW_EDGES) follow, in the same way.
 #
 # link mode reads what make wrote into DIR: fit-cflags (FW_CFLAGS), fit-src
 # (the firmware sources), fit-ldflags (FW_LDFLAGS without -T and -Map), and
@@ -103,16 +104,16 @@ compile_all() {
 # probe KIND CAP: compile every firmware source with FXRT_MAX_<KIND> = CAP
 # (KIND base: the scene's capacities) into $WORK/KIND-CAP/, link it; prints
 # "RAM FLASH". Probes keep no sphere row-coherence state
-# (FXRT_COHERENT_SPHERES 0): a scene of many objects is built without it
-# where it does not fit (link mode above), so the figures per object and
-# the most objects that fit are those without it; its flat pieces keep
-# their guesses.
+# (FXRT_COHERENT_SPHERES 0) and no shadow edges (FXRT_SHADOW_EDGES 0): a
+# scene of many objects is built without them where they do not fit (link
+# mode above), so the figures per object and the most objects that fit are
+# those without them; its flat pieces keep their guesses.
 probe() {
     local kind=$1 cap=$2 pdir=$WORK/$1-$2 s flags=()
     mkdir -p "$pdir"
     sed -E -e "s/^#define FXRT_MAX_$(macro "$kind") .*/#define FXRT_MAX_$(macro "$kind") $cap/" \
-        -e '/^#define FXRT_(COHERENT_SPHERES |NO_COHERENCE )/d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
-    printf '#define FXRT_COHERENT_SPHERES 0\n' >>"$pdir/scene_config.h"
+        -e '/^#define FXRT_(COHERENT_SPHERES |NO_COHERENCE |SHADOW_EDGES )/d' "$DIR/scene_config.h" >"$pdir/scene_config.h"
+    printf '#define FXRT_COHERENT_SPHERES 0\n#define FXRT_SHADOW_EDGES 0\n' >>"$pdir/scene_config.h"
     # A box brings its faces: when the scene compiler sized the face pool
     # (FXRT_RENDER_BOX_FACES, the faces this camera needs), the extra boxes
     # get as many faces as the scene's boxes have on average, so the per-box
@@ -230,6 +231,21 @@ if [[ ${1:-} == link ]]; then
             read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
         fi
         [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: the spheres' row state does not fit; built without it" >&2
+    fi
+    # The same for the triangles' shadow edges (FXRT_SHADOW_EDGES 0: the
+    # frames are the same, shadow rays in a triangle's cone take its exact
+    # test), after the sphere rows.
+    if [[ $NEED_RAM -gt $RAM_LEN ]] && grep -q '^#define FXRT_SHADOW_EDGES 1$' "$DIR/scene_config.h"; then
+        sed -i -E 's|^#define FXRT_SHADOW_EDGES 1$|#define FXRT_SHADOW_EDGES 0 /* firmware/fit.sh: the shadow edges do not fit */|' \
+            "$DIR/scene_config.h"
+        probe_sources
+        ONLY=$PROBE_SRC compile_all "$WORK/noedges" "compile without shadow edges" "${CFLAGS[@]}"
+        read -r NEED_RAM _ < <(trial_link "$WORK/noedges" "$WORK/noedges.elf")
+        if [[ $NEED_RAM -le $RAM_LEN ]]; then
+            compile_all "$DIR" "compile without shadow edges" "${CFLAGS[@]}" -MMD -MP
+            read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
+        fi
+        [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: the triangles' shadow edges do not fit; built without them" >&2
     fi
     if [[ ${FIT_QUICK:-0} == 1 && ( $NEED_RAM -gt $RAM_LEN || $NEED_FLASH -gt $FLASH_LEN ) ]]; then
         # make bench: only the verdict, without the per-kind probes

@@ -215,6 +215,13 @@ int ENGINE_SYM(scenec_emit)(FILE *cfg, FILE *data, const char *path, const scene
     fprintf(cfg, "#define FXRT_MAX_LIGHTS %d\n#define FXRT_SHADOWS %d\n#define FXRT_PHONG %d\n", max_lights,
             lit && shadows, lit && phong);
     fprintf(cfg, "#define SCENE_LIGHTS %d\n", n_lights);
+    /* A triangle's shadow edges only where a point or spot light casts
+     * shadows on a scene with triangles (light/shadow.c): else their RAM
+     * would buy nothing. */
+    int edges = 0;
+    for (int i = 0; i < d.nlights; i++)
+        edges |= d.lights[i].shadows && d.lights[i].kind != FXRT_LIGHT_DIRECTIONAL;
+    fprintf(cfg, "#define FXRT_SHADOW_EDGES %d\n", lit && edges && w.n_triangles > 0);
     /* Secondary rays: the bounce stack holds the scene's depth when some
      * object is reflective or transparent, else bounces are compiled out
      * (FXRT_MAX_DEPTH 0: no bounce code is linked). Supersampling: the

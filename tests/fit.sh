@@ -9,7 +9,9 @@
 #    streaming), byte-identical to the host's Q16.16 frame, leaving the
 #    stack margin unused, built again without its spheres' row state
 #    (which does not fit; mixed16's does, and is kept); the firmware's
-#    stack check can fail a run.
+#    stack check can fail a run. The triangles' shadow edges: kept where
+#    they fit, left out without a point or spot light with shadows, and
+#    built again without where they do not fit.
 #  - firmware/fit.sh: a scene too big for the micro:bit fails at build time
 #    with "does not fit" and what fits, a non-zero exit and no ELF; the
 #    count it states is right: that many spheres build and render, one more
@@ -118,6 +120,46 @@ for scene in "$m48" scenes/bench/mixed16.scene; do
         bad "$name does not build for the micro:bit: $(grep -v 'make: \*\*\*' "$out/last.log" | head -n 5)"
     fi
 done
+
+# The triangles' shadow edges (light/shadow.c: 26 B per point or spot
+# light and triangle): kept where they fit (the lit room), not emitted by
+# the scene compiler where no point or spot light casts shadows (a
+# directional light only), and a scene that fits only without them is
+# built again without them (firmware/fit.sh) and renders as on the host:
+# 41 triangles under two point lights.
+edges_cfg() { echo "$(dirname "$(elf_of "$1")")/scene_config.h"; }
+if fw scenes/lit/room.scene; then
+    check "room on the micro:bit: keeps its shadow edges (they fit)" \
+        grep -q '^#define FXRT_SHADOW_EDGES 1$' "$(edges_cfg scenes/lit/room.scene)"
+else
+    bad "room does not build for the micro:bit: $(head -n 5 "$out/last.log")"
+fi
+if fw scenes/lit/course-lambert-directional.scene; then
+    check "course-lambert-directional (a directional light): no shadow edges" \
+        grep -q '^#define FXRT_SHADOW_EDGES 0$' "$(edges_cfg scenes/lit/course-lambert-directional.scene)"
+else
+    bad "course-lambert-directional does not build for the micro:bit: $(head -n 5 "$out/last.log")"
+fi
+tris=$out/tris41.scene
+{
+    echo "# 41 triangles on a floor under two point lights (tests/fit.sh)"
+    echo "camera perspective eye 0 3 8 gaze 0 -0.3 -1 up 0 1 0 fov 60"
+    echo "ambient 0.1 0.1 0.1"
+    echo "light point position 2 6 3 color 1 1 1"
+    echo "light point position -3 5 2 color 0.5 0.5 0.5"
+    echo "plane point 0 0 0 normal 0 1 0 color 0.8 0.8 0.8 material lambert"
+    for i in $(seq 0 40); do
+        awk -v i="$i" 'BEGIN { x = i % 7 - 3; z = -int(i / 7)
+            printf "triangle a %g 0 %g b %g 0 %g c %g 0.8 %g color 0.9 0.3 0.2 material lambert\n", x, z, x + 0.6, z, x, z }'
+    done
+} >"$tris"
+if fw "$tris"; then
+    check "41 triangles, two point lights: built again without shadow edges (they do not fit)" \
+        grep -q '^#define FXRT_SHADOW_EDGES 0 /\* firmware/fit.sh' "$(edges_cfg "$tris")"
+    render_same "$tris" "41 triangles, two point lights, on the micro:bit"
+else
+    bad "41 triangles, two point lights: does not build for the micro:bit: $(head -n 5 "$out/last.log")"
+fi
 
 # The stack check can fail: a margin as large as the whole reservation
 # leaves no run passing, with the check's message and a non-zero exit.

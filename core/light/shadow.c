@@ -100,14 +100,9 @@ __attribute__((unused)) static void shadow_cull_entry(shadow_cull_t *e, const li
         cap = SHADE_FAR_DIST - 1; /* the far path (shade.h) is never culled */
     /* s + eps >= |c - L| - R' with s < dist |ldir| <= dist (1 + 2^-12). */
     num_t near = num_sub(num_mul(num_sub(len, rho), NUM(1.0 - 1.0 / 4096)), NUM(1.0 / 32768));
-#if FXRT_NUMBER == FXRT_Q16
-    /* u in Q2.30 (exact) and lim in Q18.14, rounded up (shade.h). */
-    e->pt.u = vec3_make(u.x * (1 << 14), u.y * (1 << 14), u.z * (1 << 14));
-    e->pt.lim = (num_neg(cosv) + 3) >> 2;
-#else
-    e->pt.u = u;
-    e->pt.lim = num_neg(cosv);
-#endif
+    /* Q16.16: u in Q2.30 (exact) and lim in Q18.14, rounded up (shade.h). */
+    e->pt.u = NUM_EXACT ? vec3_make(u.x * (1 << 14), u.y * (1 << 14), u.z * (1 << 14)) : u;
+    e->pt.lim = NUM_EXACT ? (num_t)(((int32_t)num_neg(cosv) + 3) >> 2) : num_neg(cosv);
     e->pt.d_cap = cap;
     e->pt.d_near = num_min(near, cap);
 }
