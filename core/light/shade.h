@@ -145,8 +145,10 @@ typedef struct {
 typedef struct shadow_table {
     shadow_cull_t cull[SHADOW_CULL ? FXRT_MAX_LIGHTS * SHADOW_CULL_SLOTS : 1];
     shade_plane_light_t pl[SHADE_HEIGHTS ? FXRT_MAX_PLANES * FXRT_MAX_LIGHTS : 1];
-    /* edges[light * FXRT_MAX_TRIANGLES + triangle] (shadow edges above) */
-    shadow_edge_t edges[SHADOW_EDGES ? FXRT_MAX_LIGHTS * FXRT_MAX_TRIANGLES : 1];
+    /* edges[light * FXRT_MAX_TRIANGLES + triangle] (shadow edges above);
+     * none at all without them (a GNU zero-length array, last: a scene
+     * that cannot use them pays no byte, not even an element's padding) */
+    __extension__ shadow_edge_t edges[SHADOW_EDGES ? FXRT_MAX_LIGHTS * FXRT_MAX_TRIANGLES : 0];
 } shadow_table_t;
 /* The masks of image row y (counted from the bottom) of a perspective
  * camera cam, for every plane and light of w; all zero for another view.
