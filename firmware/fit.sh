@@ -204,6 +204,28 @@ mixed() {
     echo $((1 + 3 * m))
 }
 
+# without ON OFF TAG WHAT MESSAGE (link mode): where the scene needs more
+# RAM than the board has and DIR's scene_config.h says "#define ON", it
+# says "#define OFF" instead (an optimisation that keeps the frames) and
+# the scene is compiled again. RAM first, from the sources that hold it
+# (probe_sources): a scene that does not fit without it either is not
+# compiled again (its message gives that RAM, and the flash of the build
+# with it). Updates NEED_RAM and NEED_FLASH.
+without() {
+    local on=$1 off=$2 tag=$3 what=$4 msg=$5
+    [[ $NEED_RAM -gt $RAM_LEN ]] && grep -q "^#define $on\$" "$DIR/scene_config.h" || return 0
+    sed -i -E "s|^#define $on\$|#define $off /* firmware/fit.sh: $what do not fit */|" "$DIR/scene_config.h"
+    probe_sources
+    ONLY=$PROBE_SRC compile_all "$WORK/$tag" "compile without $what" "${CFLAGS[@]}"
+    read -r NEED_RAM _ < <(trial_link "$WORK/$tag" "$WORK/$tag.elf")
+    if [[ $NEED_RAM -le $RAM_LEN ]]; then
+        compile_all "$DIR" "compile without $what" "${CFLAGS[@]}" -MMD -MP
+        read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
+    fi
+    [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: $msg" >&2
+    return 0
+}
+
 if [[ ${1:-} == link ]]; then
     [[ $# -eq 3 ]] || die "usage: firmware/fit.sh link DIR ELF"
     setup "$2"
@@ -215,38 +237,13 @@ if [[ ${1:-} == link ]]; then
     # every board) that does not fit RAM is compiled again without it
     # (FXRT_COHERENT_SPHERES 0: the frames are the same, the spheres find
     # their runs without the row before's), and everything below is decided
-    # for that build.
-    if [[ $NEED_RAM -gt $RAM_LEN ]] && grep -q '^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$' "$DIR/scene_config.h"; then
-        sed -i -E 's|^#define FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES$|#define FXRT_COHERENT_SPHERES 0 /* firmware/fit.sh: the row state does not fit */|' \
-            "$DIR/scene_config.h"
-        # RAM first, from the sources that hold it (probe_sources): a
-        # scene that does not fit without the row state either is not
-        # compiled again (its message gives that RAM, and the flash of the
-        # build with the row state).
-        probe_sources
-        ONLY=$PROBE_SRC compile_all "$WORK/norows" "compile without sphere rows" "${CFLAGS[@]}"
-        read -r NEED_RAM _ < <(trial_link "$WORK/norows" "$WORK/norows.elf")
-        if [[ $NEED_RAM -le $RAM_LEN ]]; then
-            compile_all "$DIR" "compile without sphere rows" "${CFLAGS[@]}" -MMD -MP
-            read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
-        fi
-        [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: the spheres' row state does not fit; built without it" >&2
-    fi
-    # The same for the triangles' shadow edges (FXRT_SHADOW_EDGES 0: the
-    # frames are the same, shadow rays in a triangle's cone take its exact
-    # test), after the sphere rows.
-    if [[ $NEED_RAM -gt $RAM_LEN ]] && grep -q '^#define FXRT_SHADOW_EDGES 1$' "$DIR/scene_config.h"; then
-        sed -i -E 's|^#define FXRT_SHADOW_EDGES 1$|#define FXRT_SHADOW_EDGES 0 /* firmware/fit.sh: the shadow edges do not fit */|' \
-            "$DIR/scene_config.h"
-        probe_sources
-        ONLY=$PROBE_SRC compile_all "$WORK/noedges" "compile without shadow edges" "${CFLAGS[@]}"
-        read -r NEED_RAM _ < <(trial_link "$WORK/noedges" "$WORK/noedges.elf")
-        if [[ $NEED_RAM -le $RAM_LEN ]]; then
-            compile_all "$DIR" "compile without shadow edges" "${CFLAGS[@]}" -MMD -MP
-            read -r NEED_RAM NEED_FLASH < <(trial_link "$DIR" "$WORK/trial.elf")
-        fi
-        [[ ${FIT_REPORT:-0} == 1 ]] && echo "fit: $BOARD: the triangles' shadow edges do not fit; built without them" >&2
-    fi
+    # for that build. Then the same for the triangles' shadow edges
+    # (FXRT_SHADOW_EDGES 0: the same frames, shadow rays in a triangle's
+    # cone take its exact test).
+    without 'FXRT_COHERENT_SPHERES FXRT_MAX_SPHERES' 'FXRT_COHERENT_SPHERES 0' norows \
+        "sphere rows" "the spheres' row state does not fit; built without it"
+    without 'FXRT_SHADOW_EDGES 1' 'FXRT_SHADOW_EDGES 0' noedges \
+        "shadow edges" "the triangles' shadow edges do not fit; built without them"
     if [[ ${FIT_QUICK:-0} == 1 && ( $NEED_RAM -gt $RAM_LEN || $NEED_FLASH -gt $FLASH_LEN ) ]]; then
         # make bench: only the verdict, without the per-kind probes
         echo "${SCENE:-$DIR}: does not fit $BOARD ($RAM_LEN B RAM, $FLASH_LEN B flash): needs $NEED_RAM B RAM, $NEED_FLASH B flash (FIT_QUICK=1: no per-kind figures)" >&2
