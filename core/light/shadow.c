@@ -465,8 +465,10 @@ static SHADOW_CULLED_INLINE bool shadow_edge_out(const shadow_edge_t *g, int j, 
 }
 static SHADOW_CULLED_INLINE bool shadow_edges_out(const shadow_ray_cull_t *rc, ptrdiff_t i)
 {
+    if (!rc->edges)
+        return false;
     const shadow_edge_t *g = rc->edges + i;
-    if (!rc->edges || (NUM_EXACT ? (int32_t)rc->dist >> 16 >= g->cap : !(rc->dist < (num_t)g->cap)))
+    if (NUM_EXACT ? (int32_t)rc->dist >> 16 >= g->cap : !(rc->dist < (num_t)g->cap))
         return false;
     return shadow_edge_out(g, 0, &rc->ldir) || shadow_edge_out(g, 1, &rc->ldir) || shadow_edge_out(g, 2, &rc->ldir);
 }
