@@ -259,13 +259,10 @@ FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_M
  *   FXRT_ABLATE_BVH_QUICK a model's boxes tested by their exact quotients
  *                         alone, without the quick test's reciprocals
  *                         (scene/bvh.c)
- *   FXRT_ABLATE_SHADOW_EDGES no edge planes: a shadow ray towards a point
- *                         or spot light inside a triangle's cone takes the
- *                         exact test (light/shadow.c; RAM: 24 B per light
- *                         and triangle in Q16.16)
  * The renderer reads them as FXRT_NO_BOUNDS ... FXRT_NO_ORDER,
  * FXRT_NO_CUTOFF, FXRT_BOUND_NO_LIGHT_SUM, FXRT_NO_SHADOW_ROWS,
- * FXRT_NO_FLAT_NUM, FXRT_NO_BVH_QUICK and FXRT_NO_SHADOW_EDGES (0 or 1). */
+ * FXRT_NO_FLAT_NUM and FXRT_NO_BVH_QUICK (0 or 1). (The triangles' shadow
+ * edges have their own switch, FXRT_SHADOW_EDGES, below.) */
 #define FXRT_ABLATE_BOUNDS 0x001
 #define FXRT_ABLATE_STEP 0x002
 #define FXRT_ABLATE_LONE 0x004
@@ -279,11 +276,10 @@ FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_M
 #define FXRT_ABLATE_SHADOW_ROWS 0x400
 #define FXRT_ABLATE_FLAT_NUM 0x800
 #define FXRT_ABLATE_BVH_QUICK 0x1000
-#define FXRT_ABLATE_SHADOW_EDGES 0x2000
 #ifndef FXRT_ABLATE
 #define FXRT_ABLATE 0
 #endif
-FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0x3fff) == 0, "FXRT_ABLATE: an unknown bit (the FXRT_ABLATE_ names only)");
+FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0x1fff) == 0, "FXRT_ABLATE: an unknown bit (the FXRT_ABLATE_ names only)");
 #define FXRT_NO_BOUNDS (((FXRT_ABLATE) & FXRT_ABLATE_BOUNDS) != 0)
 #define FXRT_NO_STEP (((FXRT_ABLATE) & FXRT_ABLATE_STEP) != 0)
 #define FXRT_NO_LONE (((FXRT_ABLATE) & FXRT_ABLATE_LONE) != 0)
@@ -297,7 +293,6 @@ FXRT_STATIC_ASSERT(((FXRT_ABLATE) & ~0x3fff) == 0, "FXRT_ABLATE: an unknown bit 
 #define FXRT_NO_SHADOW_ROWS (((FXRT_ABLATE) & FXRT_ABLATE_SHADOW_ROWS) != 0)
 #define FXRT_NO_FLAT_NUM (((FXRT_ABLATE) & FXRT_ABLATE_FLAT_NUM) != 0)
 #define FXRT_NO_BVH_QUICK (((FXRT_ABLATE) & FXRT_ABLATE_BVH_QUICK) != 0)
-#define FXRT_NO_SHADOW_EDGES (((FXRT_ABLATE) & FXRT_ABLATE_SHADOW_EDGES) != 0)
 
 
 /* FXRT_SPHERE_SEARCH: how the fast Q16.16 renderer finds the run of a

@@ -9,7 +9,7 @@
 # work, never a pixel: every scene in scenes/ and its subfolders at 96x72,
 # in q16, float and double, with the host tool and with its build without
 # all five (FXRT_ABLATE_ORDER, FXRT_ABLATE_SHADOW_ROWS,
-# FXRT_ABLATE_FLAT_NUM, FXRT_ABLATE_BVH_QUICK, FXRT_ABLATE_SHADOW_EDGES;
+# FXRT_ABLATE_FLAT_NUM, FXRT_ABLATE_BVH_QUICK; FXRT_SHADOW_EDGES 0;
 # tests/order.mk), byte for byte. The lit scenes and two bench scenes
 # are rendered again with `samples 2 adaptive` and lights on every
 # object: the adaptive sampler's one ray per pixel takes the shading

@@ -100,7 +100,7 @@ typedef shadow_cull_t shadow_cull_row_t; /* a light's row of the table */
  * in 32-bit products, adding 2^-11, as shadow_cone_out16; float and double
  * keep the values (lim with the same 2^-11). A lim of 2 or more never
  * skips. */
-#define SHADOW_EDGES (SHADOW_CULL && FXRT_SHADOW_EDGES && FXRT_MAX_TRIANGLES > 0 && !FXRT_NO_SHADOW_EDGES)
+#define SHADOW_EDGES (SHADOW_CULL && FXRT_SHADOW_EDGES && FXRT_MAX_TRIANGLES > 0)
 typedef struct {
     num_q14_t m[3][3];
     num_q14_t lim[3];

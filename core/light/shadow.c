@@ -133,14 +133,14 @@ static num_q14_t shadow_q14(num_t v, int how)
  * be noise), or a difference leaves 2^14 (P - L might saturate). */
 __attribute__((unused)) static void shadow_edge_entry(shadow_edge_t *g, const light_t *L, const geom_triangle_t *tr)
 {
-    vec3_t m[3];
+    vec3_t m[3], u;
     num_t lim = NUM(2.5); /* (never) */
     const vec3_t *v[3] = {&tr->a, &tr->b, &tr->c};
     vec3_t c;
     num_t r, len;
     geom_triangle_around(tr, &c, &r);
     num_t rr = shadow_bound(c, r, L);
-    bool ok = !tr->degenerate && vec3_unit_len(vec3_sub(c, L->position), &m[0], &len);
+    bool ok = !tr->degenerate && vec3_unit_len(vec3_sub(c, L->position), &u, &len); /* (len only) */
     for (int j = 0; ok && j < 3; j++) {
         vec3_t a = v[j][0], pos = L->position;
         const num_t big = NUM(16384);
