@@ -21,7 +21,8 @@
 # the plane, in the last 20; a perspective camera of 10 to 150 degrees,
 # seen from near or far): the rows' margins where shadows graze them. And
 # 24 random planes under spot lights only: the runs' blocks that no spot
-# reaches.
+# reaches. And 40 random Phong planes under point lights: the runs' blocks
+# without a specular term.
 set -u
 . "$(dirname "$0")/lib.sh"
 NOORDER=${NOORDER:-$BUILD/ablated/fxrt}
@@ -133,6 +134,39 @@ for seed in $(seq 1 24); do
             mat = seed % 2 ? "material lambert" : sprintf("material phong specular %.2f %.2f %.2f exponent %d", u(0, 1), u(0, 1), u(0, 1), int(u(1, 200)))
             printf "plane point 0 0 0 normal %.4f 1 %.4f color %.3f %.3f %.3f %s\n", seed % 3 ? 0 : u(-0.4, 0.4), seed % 3 ? 0 : u(-0.4, 0.4), u(0, 1), u(0, 1), u(0, 1), mat
             no = 1 + int(rand() * 4)
+            for (i = 0; i < no; i++) {
+                r = u(0.05, 0.6) * s / 6
+                printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", u(-s, s) / 2, u(0, 1.5) * s / 6 + r, u(-s, s) / 2, r
+            }
+        }' >"$out/$name.scene"
+    scenes+=("$out/$name.scene")
+done
+# Random Phong planes under point lights, with a spot in some (1 to 3
+# lights, some near the plane, some far, some behind it; exponents 1 to
+# 1000, every specular colour; level or tilted; a camera of 10 to 150
+# degrees, near the plane or far, some looking along it): the runs'
+# blocks without a specular term (light/shade.c, shade_flat_phong_blocks,
+# the Lambert sum there) against the pixel-by-pixel Phong sum.
+for seed in $(seq 1 40); do
+    name=phong-points-$seed
+    awk -v seed="$seed" 'function u(a, b) { return a + (b - a) * rand() }
+        BEGIN { srand(seed + 900); s = seed % 5 == 0 ? 300 : 6
+            print "image 96 72"
+            print "background 0.1 0.1 0.2"
+            h = seed % 7 == 0 ? u(0.01, 0.2) : u(0.3, 3) * s
+            printf "camera perspective eye %.4f %.4f %.4f gaze %.4f %.4f %.4f up 0 1 0 fov %.2f\n", u(-s, s), h, u(-s, s), u(-1, 1), seed % 7 == 0 ? -u(0, 0.1) : -u(0.1, 1), u(-1, 1), u(10, 150)
+            printf "ambient %.3f %.3f %.3f\n", u(0, 0.4), u(0, 0.4), u(0, 0.4)
+            nl = 1 + int(rand() * 3)
+            for (i = 0; i < nl; i++) {
+                lh = rand() < 0.2 ? -u(0.1, 2) * s : rand() < 0.3 ? u(0.05, 0.5) : u(0.5, 3) * s
+                if (i == 1 && seed % 3 == 0)
+                    printf "light spot position %.4f %.4f %.4f direction %.4f -1 %.4f angle %.1f color %.2f %.2f %.2f shadows %s\n", u(-s, s), lh, u(-s, s), u(-1, 1), u(-1, 1), u(3, 80), u(0, 1), u(0, 1), u(0, 1), rand() < 0.5 ? "on" : "off"
+                else
+                    printf "light point position %.4f %.4f %.4f color %.2f %.2f %.2f shadows %s\n", u(-s, s), lh, u(-s, s), u(0, 1), u(0, 1), u(0, 1), rand() < 0.5 ? "on" : "off"
+            }
+            k = rand() < 0.2 ? 1 + int(rand() * 12) : int(u(13, 1000))
+            printf "plane point 0 %.4f 0 normal %.4f 1 %.4f color %.3f %.3f %.3f material phong specular %.2f %.2f %.2f exponent %d\n", seed % 4 ? 0 : u(-1, 1), seed % 3 ? 0 : u(-0.6, 0.6), seed % 3 ? 0 : u(-0.6, 0.6), u(0, 1), u(0, 1), u(0, 1), u(0, 1), u(0, 1), u(0, 1), k
+            no = int(rand() * 4)
             for (i = 0; i < no; i++) {
                 r = u(0.05, 0.6) * s / 6
                 printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", u(-s, s) / 2, u(0, 1.5) * s / 6 + r, u(-s, s) / 2, r

@@ -8,7 +8,7 @@ define skip_rules
 $(BUILD)/tests/test_skip_$(1): tests/test_skip.c tests/check.h $(wildcard core/*.h core/*/*.c core/*/*.h)
 	@mkdir -p $$(@D)
 	@echo "  CC/LD $(1) $$@"
-	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_STATS=1 -DFXRT_NUMBER=$$(call num_id,$(1)) -Icore -Wl,--wrap=geom_sphere_hit -Wl,--wrap=geom_sphere_occludes -Wl,--wrap=render_setup \
+	$$(Q)$$(CC) $$(CFLAGS_H) -DFXRT_STATS=1 -DFXRT_NUMBER=$$(call num_id,$(1)) -Icore -Wl,--wrap=geom_sphere_hit -Wl,--wrap=geom_sphere_occludes -Wl,--wrap=render_setup -Wl,--wrap=shade_flat_plane_pixels \
 	  -o $$@ tests/test_skip.c $$(wildcard core/*/*.c) -lm
 endef
 $(foreach n,$(SKIP_NUMBERS),$(eval $(call skip_rules,$(n))))

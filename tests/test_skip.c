@@ -547,10 +547,12 @@ static void test_samples(void)
 
 /* A lambert plane takes n . l from the light's height over it
  * (light/shade.c, shade_lights_plane): under a point light it makes the
- * unit vector l only for its shadow rays, where a phong plane makes one
- * at every pixel. Every pixel still takes the light vector's length. A
- * flat sphere above casts the shadow; without keys its pixels are not
- * shaded, so every count below is the plane's. */
+ * unit vector l only for its shadow rays. A phong plane makes one at every
+ * pixel that its specular term needs, but not in the blocks of its runs
+ * where the term is surely 0 (shade_flat_phong_blocks: the Lambert sum
+ * there). Every pixel still takes the light vector's length. A flat
+ * sphere above casts the shadow; without keys its pixels are not shaded,
+ * so every count below is the plane's. */
 static void test_plane_heights(void)
 {
     cam_t cam;
@@ -567,9 +569,15 @@ static void test_plane_heights(void)
         CHECK_MSG(fxrt_stats.l_normalised == (uint32_t)plane, "%s plane: %u light vectors for %ld pixels",
                   phong ? "phong" : "lambert", (unsigned)fxrt_stats.l_normalised, plane);
         CHECK_MSG(rays > 0 && rays < (uint32_t)plane / 2, "%u shadow rays for %ld plane pixels", (unsigned)rays, plane);
-        if (phong)
-            CHECK_MSG(fxrt_stats.l_units == (uint32_t)plane, "phong plane: %u unit vectors l for %ld pixels",
-                      (unsigned)fxrt_stats.l_units, plane);
+        if (phong) {
+            /* each pixel outside the blocks makes l once, with or without a shadow ray */
+            uint32_t in_blocks = fxrt_stats.phong_blocks * SHADE_SPOT_BLOCK;
+            CHECK_MSG(fxrt_stats.phong_blocks > 0 && in_blocks < (uint32_t)plane &&
+                          fxrt_stats.l_units >= (uint32_t)plane - in_blocks &&
+                          fxrt_stats.l_units <= (uint32_t)plane - in_blocks + rays,
+                      "phong plane: %u unit vectors l for %ld pixels, %u in blocks without a term, %u shadow rays",
+                      (unsigned)fxrt_stats.l_units, plane, (unsigned)in_blocks, (unsigned)rays);
+        }
         else
             CHECK_MSG(fxrt_stats.l_units == rays, "lambert plane: %u unit vectors l for %u shadow rays",
                       (unsigned)fxrt_stats.l_units, (unsigned)rays);
@@ -698,7 +706,7 @@ static void test_raw_phong(void)
         CHECK_MSG(memcmp(img, img_general, sizeof img) == 0, "k %d: the directional runs' frame differs from the general path's", k);
         uint32_t sums = fxrt_stats.dir_sums;
         render(&cam, true);
-        long plane = count_id((uint16_t)pid), must = 0, may = 0;
+        long plane = count_id((uint16_t)pid), must = 0, may = 0, pos = 0, may_pos = 0;
         double ll = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]), l[3], r[3];
         for (int c = 0; c < 3; c++)
             l[c] = -dir[c] / ll;
@@ -712,6 +720,8 @@ static void test_raw_phong(void)
             double xe = -(r[0] * d[0] + r[1] * d[1] + r[2] * d[2]) / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             must += xe > zero + 1.0 / 1024;
             may += xe > zero * (1.0 - 1.0 / 1024) - 1.0 / 4096;
+            pos += xe > 1.0 / 4096;
+            may_pos += xe > -1.0 / 4096;
         }
         uint32_t roots = fxrt_stats.raw_roots, units = fxrt_stats.d_normalised;
         CHECK_MSG(plane > W * H / 2 && must > 0 && (k < 300 || may < plane / 2),
@@ -725,10 +735,124 @@ static void test_raw_phong(void)
             CHECK_MSG(units == 0 && roots >= (uint32_t)must && roots <= (uint32_t)may,
                       "k %d: %u camera rays normalised, %u roots for %ld pixels with a term and %ld near one", k,
                       (unsigned)units, (unsigned)roots, must, may);
-        else
-            CHECK_MSG(units == (uint32_t)plane && roots == 0, "k %d: %u camera rays normalised, %u roots, %ld plane pixels",
-                      k, (unsigned)units, (unsigned)roots, plane);
+        else /* the raw direction too: its root where r . d < 0 (shade_specular_at) */
+            CHECK_MSG(units == 0 && roots >= (uint32_t)pos && roots <= (uint32_t)may_pos,
+                      "k %d: %u camera rays normalised, %u roots for %ld pixels with r . e > 0 and %ld near it", k,
+                      (unsigned)units, (unsigned)roots, pos, may_pos);
     }
+}
+
+/* Which pixels the runs shade with the Lambert sum on a Phong plane
+ * (shade_flat_phong_blocks' blocks without a specular term): recorded by
+ * the wrapped shade_flat_plane_pixels, called from frame/render_shade.c. */
+static uint8_t lambert_px[W * H];
+void __real_shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                                    const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                    uint8_t *rgb);
+void __wrap_shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                                    const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                    uint8_t *rgb);
+void __wrap_shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                                    const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                    uint8_t *rgb)
+{
+    for (int32_t i = x; i < end && row->y >= 0 && row->y < H && i >= 0 && i < W; i++)
+        lambert_px[(H - 1 - row->y) * W + i] = 1;
+    __real_shade_flat_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb);
+}
+
+static uint32_t rng_state = 12345u;
+static double rnd(double a, double b)
+{
+    rng_state = rng_state * 1664525u + 1013904223u;
+    return a + (b - a) * (double)(rng_state >> 8) / 16777216.0;
+}
+
+/* A Phong plane under point lights (light/shade.c,
+ * shade_flat_phong_blocks): the runs shade the blocks where every light's
+ * specular term is surely 0 with the Lambert sum. An oracle that shares
+ * nothing with the blocks' ellipsoid bound: at every such pixel, from
+ * the plane's and the lights' stored values in double, the exact hit
+ * point of the pixel's camera ray, and there x = r . e with r = 2 (n . l)
+ * n - l (n turned to the ray), for each light in front of that side. Its
+ * term must be 0: x at most 1 - 12/k less 2^-9 in Q16.16 for k > 12, where
+ * numw_pow_int gives 0, and x below -2^-13 otherwise (float and double,
+ * and Q16.16 for k <= 12: only x <= 0 gives no term). 40 random scenes:
+ * exponents 1 to 1000, tilted planes, one or two point lights (some
+ * below the plane), cameras near and far. The blocks must take a fair
+ * share of the plane (30 % in Q16.16, 20 % in double, whose bound is x <=
+ * 0), and some plane pixels must have a term (the test is not empty). */
+static void test_phong_blocks(void)
+{
+    long plane_px = 0, taken = 0, with_term = 0, bad_px = 0, not_plane = 0;
+    double worst = -2;
+    for (int seed = 0; seed < 40; seed++) {
+        cam_t cam;
+        double ex = rnd(-6, 6), ey = seed % 8 == 0 ? rnd(0.2, 0.6) : rnd(1, 7), ez = rnd(-6, 6);
+        CHECK(fxrt_camera_perspective(&cam, P(ex, ey, ez), P(rnd(-2, 2) - ex, -ey, rnd(-2, 2) - ez), P(0, 1, 0),
+                                      V(rnd(30, 120)), W, H) == FXRT_OK);
+        fxrt_world_init(&world, COL(0.1, 0.1, 0.2));
+        world_set_ambient(&world, FRAC(0.1, 0.1, 0.1));
+        bool tilt = seed % 3 == 0;
+        int32_t pid = world_add_plane(&world, P(0, rnd(-0.5, 0.5), 0), P(tilt ? rnd(-0.5, 0.5) : 0, 1, tilt ? rnd(-0.5, 0.5) : 0),
+                                      COL(rnd(0, 1), rnd(0, 1), rnd(0, 1)));
+        int k = seed % 5 == 0 ? 1 + (int)rnd(0, 12) : (int)exp(rnd(log(13.0), log(1000.0)));
+        material_t m = {0};
+        m.kind = MATERIAL_PHONG;
+        m.exponent = (uint16_t)k;
+        m.specular = FRAC(rnd(0.1, 1), rnd(0.1, 1), rnd(0.1, 1));
+        CHECK(world_set_material(&world, pid, &m) == FXRT_OK);
+        int nl = 1 + seed % 2;
+        for (int i = 0; i < nl; i++)
+            CHECK(world_add_light(&world, LIGHT_POINT, P(rnd(-6, 6), seed % 7 == 3 ? -rnd(0.5, 3) : rnd(0.2, 6), rnd(-6, 6)),
+                                  P(0, 0, 0), V(0), FRAC(rnd(0.3, 1), rnd(0.3, 1), rnd(0.3, 1)), seed % 4 == 0) == i);
+        render(&cam, true);
+        memset(lambert_px, 0, sizeof lambert_px);
+        render(&cam, false);
+        const geom_plane_t *pl = &world.planes[pid];
+        double a[3] = {dbl(pl->a.x), dbl(pl->a.y), dbl(pl->a.z)}, n0[3] = {dbl(pl->n.x), dbl(pl->n.y), dbl(pl->n.z)};
+        double c = NUM_EXACT && k > 12 ? 1.0 - 12.0 / k - 1.0 / 512 : -1.0 / 8192;
+        for (int i = 0; i < W * H; i++) {
+            double o[3], d[3];
+            if (!px_ray(&cam, i, pid, true, o, d)) {
+                not_plane += lambert_px[i];
+                continue;
+            }
+            plane_px++;
+            taken += lambert_px[i];
+            double dn = d[0] * n0[0] + d[1] * n0[1] + d[2] * n0[2], s = dn > 0 ? -1 : 1;
+            double t = ((a[0] - o[0]) * n0[0] + (a[1] - o[1]) * n0[1] + (a[2] - o[2]) * n0[2]) / dn;
+            double p[3], dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), xmax = -2;
+            for (int j = 0; j < 3; j++)
+                p[j] = o[j] + t * d[j];
+            for (unsigned li = 0; li < world.n_lights; li++) {
+                const vec3_t *q = &world.lights[li].position;
+                double l[3] = {dbl(q->x) - p[0], dbl(q->y) - p[1], dbl(q->z) - p[2]};
+                double ll = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]), ndl = 0, x = 0;
+                for (int j = 0; j < 3; j++)
+                    ndl += s * n0[j] * l[j] / ll;
+                if (ndl <= 0)
+                    continue; /* behind the side seen: no term */
+                for (int j = 0; j < 3; j++)
+                    x -= (2 * ndl * s * n0[j] - l[j] / ll) * d[j] / dl;
+                xmax = x > xmax ? x : xmax;
+            }
+            with_term += xmax > (NUM_EXACT && k > 12 ? 1.0 - 12.0 / k : 0) + 1.0 / 512;
+            if (lambert_px[i]) {
+                worst = xmax - c > worst ? xmax - c : worst;
+                bad_px += xmax > c;
+            }
+        }
+    }
+    CHECK_MSG(bad_px == 0 && not_plane == 0,
+              "phong blocks: %ld pixels of the blocks with a term (the largest x lies %.3g above its bound), %ld not "
+              "the plane's", bad_px, worst, not_plane);
+    CHECK_MSG(taken * 10 > plane_px * (NUM_EXACT ? 3 : 2) && with_term > 0,
+              "phong blocks: %ld of %ld plane pixels in blocks without a term, %ld plane pixels with one", taken,
+              plane_px, with_term);
+    printf("phong blocks (%s): %ld of %ld plane pixels in blocks without a term (%.0f %%), %ld with a term; the "
+           "blocks' largest x lies %.3g below its bound\n",
+           NUM_NAME, taken, plane_px, 100.0 * taken / plane_px, with_term, -worst);
 }
 
 int main(void)
@@ -745,6 +869,7 @@ int main(void)
     test_pow();
     test_spot();
     test_spot_blocks();
+    test_phong_blocks();
     test_flat();
     return check_report("test_skip_" NUM_NAME);
 }

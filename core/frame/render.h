@@ -66,6 +66,7 @@ typedef struct {
     bool any_lit;
     bool all_directional; /* every light directional (shade_flat_prep), once per frame */
     bool all_spots;       /* every light a spot, and one at least (shade_flat_prep), once per frame */
+    bool no_directional;  /* no light directional (shade_flat_prep), once per frame */
     /* Per object (index into vis.obj): its shading constants, once per frame. */
     shade_k_t k[FXRT_RENDER_MAX_OBJECTS];
     /* The flat object whose hit numerator the shading pass keeps (vis

@@ -20,6 +20,7 @@ void render_shade_setup(render_t *r, const world_t *w)
     }
     sh->all_directional = dir == w->n_lights;
     sh->all_spots = spot > 0 && spot == w->n_lights;
+    sh->no_directional = dir == 0;
     sh->flat_of = RENDER_VIS_NONE;
     SHADE_IF_CULL(if (sh->any_lit) shadow_cull_setup(w, &sh->cull), shade_plane_heights(w, &sh->cull);
                   shadow_rows_clear(&sh->cull);)
@@ -64,7 +65,8 @@ static __attribute__((noinline)) bool render_flat_take(render_t *r, uint16_t oi,
     f->ratio = numw_ratio_num(num);
     f->index = o->index;
     f->kind = o->geom;
-    shade_flat_prep(f, r->shade.all_directional, r->shade.all_spots, o->flat ? NULL : &r->shade.k[oi]);
+    shade_flat_prep(f, r->shade.all_directional, r->shade.all_spots, r->shade.no_directional,
+                    o->flat ? NULL : &r->shade.k[oi]);
     r->shade.flat_of = oi;
     return true;
 }
@@ -164,6 +166,20 @@ void render_shade_row(render_t *r, int32_t row, uint8_t *rgb)
             const shade_k_t *k = &r->shade.k[oi];
             if (flat && (r->shade.flat.flags & SHADE_FLAT_LAMBERT))
                 shade_flat_plane_run(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, x, end, ray, rgb);
+            else if (flat && (r->shade.flat.flags & SHADE_FLAT_PHONG_POINT))
+                /* a Phong plane under point and spot lights: the blocks
+                 * that no light reaches, those without a specular term
+                 * (the Lambert sum), and each other pixel */
+                for (int32_t i = x, stop; i < end; i = stop) {
+                    bool lambert;
+                    i = shade_flat_phong_blocks(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, end, ray, rgb,
+                                                &stop, &lambert);
+                    if (lambert)
+                        shade_flat_plane_pixels(r->vis.world, &r->shade.flat, k, cr, u, fwd, w, i, stop, ray, rgb);
+                    else
+                        for (; i < stop; i++)
+                            render_shade_run_px(r, o, true, k, cr, u, fwd, cam, w, i, ray, rgb);
+                }
             else if (flat && (r->shade.flat.flags & (SHADE_FLAT_PHONG_DIR | SHADE_FLAT_SPOTS)))
                 /* a Phong plane under directional lights (its stretches
                  * with no specular term) or under spots (the blocks that

@@ -102,8 +102,8 @@ color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const 
     geom_kind_t kind = (geom_kind_t)f->kind;
     if (!shade_needs_unit(w, f->obj, kind, f->index)) {
         numw_t rn;
-        /* (a Phong plane in Q16.16: the only one here with the flag) */
-        if (NUM_EXACT && (f->flags & SHADE_FLAT_DIRECTIONAL) &&
+        /* (a Phong plane: the only one here with the flag) */
+        if ((f->flags & SHADE_FLAT_DIRECTIONAL) &&
             shade_flat_eye(w, f, rn = vec3_dotw_unit(ray->d, *f->n)))
             return shade_sum(w, f->obj, kind, f->index GEOM_PART_ARG(NULL), &ray->o, f->n,
                              (rn > 0) | SHADE_FACING_RAW, &ray->d, k, mask);

@@ -3,6 +3,13 @@
 
 #if FXRT_MAX_LIGHTS > 0
 
+/* What only the specular term needs (FXRT_PHONG): its code, or nothing. */
+#if FXRT_PHONG
+#define SHADE_IF_PHONG(...) __VA_ARGS__
+#else
+#define SHADE_IF_PHONG(...)
+#endif
+
 /* Colour arithmetic of the light sum. Every term is at most 255 (1/255
  * units) times fractions <= 1, and the sum of the ambient term and two
  * terms per light stays below 255 (1 + 2 FXRT_MAX_LIGHTS) = 4335, far
@@ -25,12 +32,10 @@ void shade_consts(const world_t *w, const geom_common_t *obj, shade_k_t *k)
     SHADE_IF_CULL(k->cull = NULL;)
     for (uint8_t i = 0; i < w->n_lights; i++) {
         k->kd[i] = shade_filter(obj->color, w->lights[i].color);
-#if FXRT_PHONG
         /* The specular colour (fractions) in 1/255 units: exact in Q16.16. */
-        color_t s = obj->mat.specular;
-        color_t s255 = color_make(num_mul_int(s.r, 255), num_mul_int(s.g, 255), num_mul_int(s.b, 255));
-        k->ks[i] = shade_filter(s255, w->lights[i].color);
-#endif
+        SHADE_IF_PHONG(color_t s = obj->mat.specular;
+                       color_t s255 = color_make(num_mul_int(s.r, 255), num_mul_int(s.g, 255), num_mul_int(s.b, 255));
+                       k->ks[i] = shade_filter(s255, w->lights[i].color);)
     }
 }
 
@@ -274,43 +279,48 @@ static inline vec3_t shade_phong_r(const vec3_t *n, const vec3_t *l, num_t ndl)
 }
 
 #if FXRT_PHONG
-/* shade_specular along a raw direction d (Q16.16, shade_needs_unit):
- * r . e = a / |d| with a = -(r . d), made only where the term may not be
+/* c plus Phong's term c_s (.) c_l (ks) max(0, r . e)^k for a = -(r . d)
+ * (r . e, e = -d): x = a / |d| along a raw direction d (raw), x = a along
+ * a unit one. In Q16.16 along a raw d, made only where the term may not be
  * 0: a > 0, and not where numw_pow_zero_at proves x^k 0 (most of a Phong
- * plane, away from its highlight: no root there). |r| <= 1 + 2 LSB, so
- * |a| < 2^49 (fx_mant64's bound). */
-static inline __attribute__((always_inline)) color_t shade_specular_raw(color_t c, const vec3_t *r, const vec3_t *d,
-                                                                        const color_t *ks, uint16_t exponent)
+ * plane, away from its highlight: no root there); |a| < 2^49 (fx_mant64's
+ * bound). Float and double along a raw d (the plane runs): a / |d|, the
+ * root only where a > 0. */
+static inline __attribute__((always_inline)) color_t shade_specular_at(color_t c, numw_t a, const vec3_t *d,
+                                                                       const color_t *ks, uint16_t exponent, bool raw)
 {
-    numw_t a = numw_neg_fits(vec3_dotw(*r, *d));
-    num_t dv[3] = {d->x, d->y, d->z};
-    num_inv3_t q;
-    if (a <= 0 || numw_pow_zero_at(a, vec3_dotw(*d, *d), exponent))
+    if (a <= 0)
         return c;
-    FXRT_COUNT(raw_roots);
-    if (!num_inv3_only(dv, &q))
-        return c;
-    return shade_madd(c, *ks, numw_pow_int(numw_from(num_inv3_mul(&q, numw_mant(a))), exponent));
+    if (raw && NUM_EXACT) {
+        num_t dv[3] = {d->x, d->y, d->z};
+        num_inv3_t q;
+        if (numw_pow_zero_at(a, vec3_dotw(*d, *d), exponent))
+            return c;
+        FXRT_COUNT(raw_roots);
+        if (!num_inv3_only(dv, &q))
+            return c;
+        a = numw_from(num_inv3_mul(&q, numw_mant(a)));
+    } else if (raw) {
+        FXRT_COUNT(raw_roots);
+        a = a / numw_sqrt(vec3_dotw(*d, *d)); /* (float and double; |d| > 0: a camera ray) */
+    }
+    return shade_madd(c, *ks, numw_pow_int(a, exponent));
 }
 
-/* c plus Phong's term c_s (.) c_l (ks) max(0, r . e)^k for the light at l.
- * Out of line on the M0 only (FXRT_INLINE_WIDE): there its temporaries,
- * inlined, made shade_lights' frame (the deepest on the shading path)
- * larger than the 16 KB boards' stack margin allows with shadow-ray
- * culling. Not cloned either: GCC's copy with raw constant (float and
- * double, where it is always false) took the M0's double build 32 bytes
- * deeper (course-phong-directional on the micro:bit: 1,552 of 2,048
- * bytes, over FXRT_STACK_MARGIN; 1,528 without the copy). */
+/* c plus Phong's term for the light at l (shade_specular_at), r made from
+ * n, l and ndl. Out of line on the M0 only (FXRT_INLINE_WIDE): there its
+ * temporaries, inlined, made shade_lights' frame (the deepest on the
+ * shading path) larger than the 16 KB boards' stack margin allows with
+ * shadow-ray culling. Not cloned either: GCC's copy with raw constant
+ * (float and double, where it is always false) took the M0's double build
+ * 32 bytes deeper (course-phong-directional on the micro:bit: 1,552 of
+ * 2,048 bytes, over FXRT_STACK_MARGIN; 1,528 without the copy). */
 static FXRT_INLINE_WIDE FXRT_NOCLONE_WIDE color_t shade_specular(color_t c, const vec3_t *n, const vec3_t *l, const vec3_t *d, num_t ndl,
                                                 const color_t *ks, uint16_t exponent, bool raw)
 {
     vec3_t r = shade_phong_r(n, l, ndl);
-    if (NUM_EXACT && raw) /* (never in float and double: no frame for it there, the M0's 2 KB stack) */
-        return shade_specular_raw(c, &r, d, ks, exponent);
-    numw_t rde = numw_neg_fits(vec3_dotw_units(r, *d)); /* r . e = -(r . d), e = -d */
-    if (rde > 0)
-        c = shade_madd(c, *ks, numw_pow_int(rde, exponent));
-    return c;
+    numw_t a = numw_neg_fits(raw ? vec3_dotw(r, *d) : vec3_dotw_units(r, *d)); /* r . e = -(r . d), e = -d */
+    return shade_specular_at(c, a, d, ks, exponent, raw);
 }
 #endif
 
@@ -491,10 +501,8 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
             continue;
         num_t ndl = numw_round_fits(ndlw); /* n, l unit: |n . l| < 2, no saturation */
         c = shade_madd(c, k->kd[i], ndl);
-#if FXRT_PHONG
-        if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE)
-            c = shade_specular(c, &n, &l, &d, ndl, &k->ks[i], m->exponent, raw);
-#endif
+        SHADE_IF_PHONG(if (m->kind == MATERIAL_PHONG || m->kind == MATERIAL_REFLECTIVE) c =
+                           shade_specular(c, &n, &l, &d, ndl, &k->ks[i], m->exponent, raw);)
     }
     if (mask)
         *mask = (uint8_t)bits;
@@ -529,10 +537,26 @@ void shade_plane_heights(const world_t *w, shadow_table_t *t)
     (void)w, (void)t;
 }
 
-void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, const shade_k_t *k)
+/* shade_phong_block_zero's factor s = sqrt(2 / (1 + c')) for exponent k
+ * (shade_flat_prep), rounded up: c' = c - 2^-8 in Q16.16, where the term
+ * is 0 for x <= c = 1 - NUM_POW_ZERO_K / k (numw_pow_int; c = 0 for k <=
+ * NUM_POW_ZERO_K, where only x <= 0 gives 0), and c' = -2^-12 in float and
+ * double, where only x <= 0 does. */
+static num_t shade_phong_factor(uint16_t k)
+{
+    num_t c = NUM_EXACT && k > NUM_POW_ZERO_K ? num_sub(NUM_ONE, num_div(num_from_int(NUM_POW_ZERO_K), num_from_int(k)))
+                                               : NUM_ZERO;
+    c = num_sub(c, NUM_EXACT ? NUM(1.0 / 256) : NUM(1.0 / 4096));
+    num_t s = num_sqrt(num_div(NUM(2), num_add(NUM_ONE, c)));
+    return num_add(s, NUM_EXACT ? (num_t)4 : num_mul(s, NUM(1.0 / 1048576)));
+}
+
+void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, bool no_directional, const shade_k_t *k)
 {
     bool plane = f->kind == GEOM_PLANE && k;
     uint8_t m = f->obj->mat.kind;
+    bool phong_point = FXRT_PHONG && plane && no_directional && m == MATERIAL_PHONG;
+    f->phong_s = phong_point ? shade_phong_factor(f->obj->mat.exponent) : NUM_ZERO;
     f->pls = plane ? shade_plane_entries(k, f->index) : NULL;
     f->flags = (uint8_t)((plane && m == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
                          (plane && all_directional ? SHADE_FLAT_DIRECTIONAL : 0) |
@@ -540,27 +564,37 @@ void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, cons
                                   (!NUM_EXACT || f->obj->mat.exponent > NUM_POW_ZERO_K)
                               ? SHADE_FLAT_PHONG_DIR
                               : 0) |
-                         (plane && all_spots && (m == MATERIAL_LAMBERT || m == MATERIAL_PHONG) ? SHADE_FLAT_SPOTS : 0));
+                         (plane && all_spots && (m == MATERIAL_LAMBERT || m == MATERIAL_PHONG) ? SHADE_FLAT_SPOTS : 0) |
+                         (phong_point ? SHADE_FLAT_PHONG_POINT : 0));
 }
 
-/* shade_lights for Lambert plane `index` (obj) with constants k; pls: its
- * entries of the frame's tables (NULL: none).
+/* shade_lights for Lambert or Phong plane `index` (obj) with constants k;
+ * pls: its entries of the frame's tables (NULL: none); d: the ray's
+ * direction, raw or unit (shade_specular_at), read for a Phong plane only
+ * (phong: the caller knows it is one).
  * Lambert's term needs only n . l, and for a point or spot light that is
  * h / |v|, v = L - p, with h = n . (L - a) the same at every point of the
  * plane (shade_plane_height; once per frame in the frame's tables, where
  * it has them): one inverse square root and one product (fx_inv3,
  * fx_inv3_mul) instead of the unit vector l and a dot product; l is made
- * only for a shadow ray. */
+ * only for a shadow ray. A Phong plane's term needs l (Phong's r): made
+ * from 1 / |v| too (fx_inv3_unit), before the shadow ray, which takes
+ * it. */
 static inline __attribute__((always_inline)) color_t shade_plane_sum(const world_t *w, const geom_common_t *obj,
                                                                      uint16_t index, const shade_k_t *k,
                                                                      const shade_plane_light_t *pls, const vec3_t *pp,
-                                                                     bool inside, uint8_t *mask)
+                                                                     bool inside, const vec3_t *d, bool raw,
+                                                                     bool phong, uint8_t *mask)
 {
     if (FXRT_BOUND_NO_LIGHT_SUM && !mask)
         return k->ambient;
     color_t c = k->ambient;
     unsigned bits = 0, n = w->n_lights;
     const light_t *L = w->lights;
+    phong = FXRT_PHONG && phong;
+    vec3_t nt = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO); /* Phong: n turned to the ray's side */
+    (void)d, (void)raw, (void)nt; /* (FXRT_PHONG 0) */
+    FXRT_IF_PLANE(if (phong) nt = inside ? vec3_neg_unit(w->planes[index].n) : w->planes[index].n;)
     for (unsigned i = 0; i < n; i++, L++) {
         vec3_t l;
         num_t dist, va[3], ndl = NUM_ZERO;
@@ -585,6 +619,12 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum(const world
                     continue; /* behind the surface: no shadow ray either */
                 ndl = num_inv3_mul(&iv, h.h); /* |n . l| <= 1 + 1 LSB */
                 ndl = inside ? num_neg_fits(ndl) : ndl;
+                if (phong) { /* l for Phong's r, and for the shadow ray */
+                    FXRT_COUNT(l_units);
+                    num_inv3_unit(&iv, va, va);
+                    l = vec3_make(va[0], va[1], va[2]);
+                    how = SHADE_DIR;
+                }
             } else {
                 /* beyond SHADE_FAR_DIST (shade_light_far's l) */
                 FXRT_IF_PLANE(const vec3_t *n_geo = &w->planes[index].n;
@@ -597,6 +637,7 @@ static inline __attribute__((always_inline)) color_t shade_plane_sum(const world
             continue;
         bits |= 1u << i;
         c = shade_madd(c, k->kd[i], ndl);
+        SHADE_IF_PHONG(if (phong) c = shade_specular(c, &nt, &l, d, ndl, &k->ks[i], obj->mat.exponent, raw);)
     }
     if (mask)
         *mask = (uint8_t)bits;
@@ -641,7 +682,7 @@ static inline __attribute__((always_inline)) color_t shade_flat_plane_at(const w
     FXRT_COUNT(shaded);
     FXRT_COUNT(plane_points);
     vec3_t p = shade_flat_point(&f->ratio, &ray->o, &ray->d, f->n, &rn);
-    return shade_plane_sum(w, f->obj, f->index, k, f->pls, &p, rn > 0, mask);
+    return shade_plane_sum(w, f->obj, f->index, k, f->pls, &p, rn > 0, &ray->d, true, false, mask);
 }
 
 color_t shade_flat_plane(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const ray_t *ray,
@@ -774,6 +815,129 @@ static __attribute__((noinline)) void shade_plane_spot_run(const world_t *w, con
     }
 }
 
+void shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                             const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                             uint8_t *rgb)
+{
+    shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, false);
+}
+
+/* Phong on a plane under a point or spot light L, seen from the eye o.
+ * With L' = L - 2 h n, the light's mirror image in the plane (h = n . (L -
+ * a)), the reflected direction at a point p of the plane is r = (p - L')
+ * / |p - L'|, and with e = (o - p) / |o - p| the term's x = r . e is the
+ * cosine of the outer angle phi of the triangle L', p, o at p. By the law
+ * of cosines D^2 = A^2 + B^2 + 2 A B x (D = |L' - o|, A = |p - L'|, B =
+ * |p - o|), and 2 A B <= (A + B)^2 / 2, so x > c' gives A + B < D sqrt(2 /
+ * (1 + c')) = D s: every point where x > c' lies inside the ellipsoid
+ * with foci L' and o and that sum. shade_phong_mirror makes L' and the
+ * bound S = D s + 2^-11 |h| (the mirror's rounding: n is unit within
+ * 2^-15, so L' lies within 2^-13 |h| of the exact image, and A and D each
+ * move by that) for shade_phong_block_zero; false where a coordinate of
+ * L, o, the plane's point a or L' is 4096 or more (then no block is
+ * skipped: every value below stays far inside Q16.16). */
+static bool shade_phong_mirror(const world_t *w, uint16_t index, const light_t *L, const vec3_t *o, num_t fs,
+                               vec3_t *lm, num_t *bound)
+{
+    FXRT_IF_PLANE(const geom_plane_t *pl = &w->planes[index];
+                  const num_t lim = NUM(4096);
+                  if (L->kind == LIGHT_DIRECTIONAL || !(vec3_linf(L->position) < lim) || !(vec3_linf(*o) < lim) ||
+                      !(vec3_linf(pl->a) < lim)) return false;
+                  num_t h = numw_round_fits(vec3_dotw_unit(vec3_sub(L->position, pl->a), pl->n));
+                  if (!(num_abs(h) < NUM(8192))) return false; /* (2 h: vec3_scale_unit_small's bound) */
+                  *lm = vec3_sub(L->position, vec3_scale_unit_small(pl->n, num_add(h, h)));
+                  if (!(vec3_linf(*lm) < lim)) return false;
+                  *bound = num_add(num_mul(numw_sqrt(vec3_dotw(vec3_sub(*lm, *o), vec3_sub(*lm, *o))), fs),
+                                   num_mul(num_abs(h), NUM(1.0 / 2048)));
+                  return true;)
+    (void)w, (void)index, (void)L, (void)o, (void)fs, (void)lm, (void)bound;
+    return false;
+}
+
+/* Is the term of the light with mirror image lm and bound S
+ * (shade_phong_mirror) surely 0 at every pixel of a block whose segment
+ * runs from pa to pb (as shade_spot_block_out's: every computed hit point
+ * of the block lies within R of the midpoint M, 2 R <= |pb - pa|_1 + 256
+ * LSB in Q16.16, + 2^-14 (|pa|_1 + |pb|_1 + |o|_1 + 1) in float and
+ * double)? A and B move by at most R each from M to such a point, so the
+ * block lies outside the ellipsoid where A_M + B_M - 2 R > S, with a
+ * margin of 2^-10 (A_M + B_M + S) + 2^-8 for the roots and the midpoint.
+ * Then x <= c' at every pixel, for the exact point and eye direction.
+ * The light sum takes x from the computed point p and the ray's direction
+ * d: p lies within 8 LSB of the exact point (shade_flat_point) and B_M -
+ * 2 R > 1/8 is asked, so d and o - p differ by less than 2^-10 in angle
+ * (float: 2^-14 |p|_1 over the same B), and l, r and the quotient round
+ * within 2^-13: x rises by less than 2^-8 over c' (Q16.16: to at most c,
+ * where numw_pow_int is 0) and by less than 2^-12 in float and double (to
+ * at most 0: no term). Coordinates below 4096, as shade_phong_mirror's. */
+static bool shade_phong_block_zero(const vec3_t *lm, num_t bound, const vec3_t *o, const vec3_t *pa, const vec3_t *pb)
+{
+    const num_t lim = NUM(4096);
+    if (!(vec3_linf(*pa) < lim) || !(vec3_linf(*pb) < lim))
+        return false;
+    vec3_t m = vec3_make(num_half(num_add(pa->x, pb->x)), num_half(num_add(pa->y, pb->y)),
+                         num_half(num_add(pa->z, pb->z)));
+    vec3_t va = vec3_sub(m, *lm), vb = vec3_sub(m, *o);
+    num_t r2 = num_add(vec3_l1(vec3_sub(*pb, *pa)),
+                       NUM_EXACT ? (num_t)256
+                                 : num_mul(NUM(1.0 / 16384), vec3_l1(*pa) + vec3_l1(*pb) + vec3_l1(*o) + NUM_ONE));
+    num_t a = numw_sqrt(vec3_dotw(va, va)), b = numw_sqrt(vec3_dotw(vb, vb)), f = num_add(a, b);
+    num_t margin = num_add(num_mul(num_add(f, bound), NUM(1.0 / 1024)), NUM(1.0 / 256));
+    return num_sub(b, r2) > NUM(1.0 / 8) && num_sub(num_sub(f, r2), margin) > bound;
+}
+
+int32_t shade_flat_phong_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                                const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                uint8_t *rgb, int32_t *stop, bool *lambert)
+{
+    enum { BLOCK_NEED, BLOCK_ZERO, BLOCK_OUT };
+    vec3_t lm[FXRT_MAX_LIGHTS] = {{NUM_ZERO, NUM_ZERO, NUM_ZERO}};
+    num_t bound[FXRT_MAX_LIGHTS] = {NUM_ZERO}, sa;
+    uint32_t ok = 0;
+    unsigned n = w->n_lights;
+    cam_row_dir(row, u, fwd, 2 * x - width + 1, ray); /* (ray->o: the eye) */
+    for (unsigned i = 0; i < n; i++)
+        ok |= (uint32_t)shade_phong_mirror(w, f->index, &w->lights[i], &ray->o, f->phong_s, &lm[i], &bound[i]) << i;
+    vec3_t pa = shade_plane_point_at(f, row, u, fwd, width, x, false, &sa, ray);
+    int32_t start = x;
+    int kind = BLOCK_NEED;
+    while (x < end) {
+        int32_t last = end - x > SHADE_SPOT_BLOCK ? x + SHADE_SPOT_BLOCK - 1 : end - 1;
+        int32_t e = last + 1 < end ? last + 1 : last;
+        int b = BLOCK_NEED;
+        if (e > x) {
+            vec3_t pb = shade_plane_point_at(f, row, u, fwd, width, e, false, &sa, ray);
+            bool out = true, zero = true;
+            for (unsigned i = 0; i < n && (out || zero); i++) {
+                bool o = shade_spot_block_out(&w->lights[i], &ray->o, &pa, &pb, NUM_ZERO);
+                out = out && o;
+                zero = zero && (o || ((ok >> i & 1u) && shade_phong_block_zero(&lm[i], bound[i], &ray->o, &pa, &pb)));
+            }
+            b = out ? BLOCK_OUT : zero ? BLOCK_ZERO : BLOCK_NEED;
+            pa = pb;
+        }
+        if (start == x && b == BLOCK_OUT) { /* nothing pending: the ambient term at once */
+            FXRT_COUNT(spot_blocks);
+            rgb8_t v = color_to_rgb8(k->ambient);
+            for (; x <= last; x++) {
+                FXRT_COUNT(shaded);
+                color_put_pixel(rgb, x, v);
+            }
+            start = x;
+            continue;
+        }
+        if (start < x && b != kind)
+            break;
+        kind = b;
+        x = last + 1;
+        if (b == BLOCK_ZERO)
+            FXRT_COUNT(phong_blocks);
+    }
+    *stop = x;
+    *lambert = kind == BLOCK_ZERO;
+    return start;
+}
+
 void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                           const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                           uint8_t *rgb)
@@ -883,13 +1047,13 @@ int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const sha
     return first;
 }
 
-/* (shade_sum.h) For a Lambert plane with constants k. */
+/* (shade_sum.h) For a Lambert or Phong plane with constants k. */
 color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *pp,
                            const vec3_t *n_geo_p, int8_t facing, const vec3_t *dp, const shade_k_t *k, uint8_t *mask)
 {
     const shade_plane_light_t *pls = shade_plane_entries(k, index);
     bool inside = facing == SHADE_FACING_UNKNOWN ? vec3_dotw_units(*dp, *n_geo_p) > 0 : (facing & 1) != 0;
-    return shade_plane_sum(w, obj, index, k, pls, pp, inside, mask);
+    return shade_plane_sum(w, obj, index, k, pls, pp, inside, dp, facing > 1, obj->mat.kind == MATERIAL_PHONG, mask);
 }
 
 #if !FX_HAVE_UMULL

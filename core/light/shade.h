@@ -227,16 +227,26 @@ typedef struct {
      * directional, SHADE_FLAT_SPOTS for a Lambert or Phong plane when
      * every light is a spot (shade_flat_spot_blocks), and
      * SHADE_FLAT_PHONG_DIR for a Phong plane (in Q16.16 of exponent k >
-     * 12) when every light is directional (shade_flat_phong_span). */
+     * 12) when every light is directional (shade_flat_phong_span), and
+     * SHADE_FLAT_PHONG_POINT for a Phong plane when no light is
+     * directional (shade_flat_phong_blocks), with phong_s its factor. */
     uint8_t flags;
     const shade_plane_light_t *pls;
+    num_t phong_s;
 } shade_flat_t;
-enum { SHADE_FLAT_LAMBERT = 1, SHADE_FLAT_DIRECTIONAL = 2, SHADE_FLAT_SPOTS = 4, SHADE_FLAT_PHONG_DIR = 8 };
+enum {
+    SHADE_FLAT_LAMBERT = 1,
+    SHADE_FLAT_DIRECTIONAL = 2,
+    SHADE_FLAT_SPOTS = 4,
+    SHADE_FLAT_PHONG_DIR = 8,
+    SHADE_FLAT_PHONG_POINT = 16
+};
 color_t shade_flat_k(const world_t *w, const shade_flat_t *f, ray_t *ray, const shade_k_t *k, uint8_t *mask);
 /* Set f->flags and f->pls for f's object with constants k (NULL: none);
  * all_directional, all_spots: every light of the world is directional, or
- * a spot, and there is one (the shading pass finds it once per frame). */
-void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, const shade_k_t *k);
+ * a spot, and there is one; no_directional: no light is directional (the
+ * shading pass finds them once per frame). */
+void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, bool no_directional, const shade_k_t *k);
 /* shade_flat_k's value for a Lambert plane (SHADE_FLAT_LAMBERT, k its constants)
  * along a camera ray: its hit point, then shade_lights_plane's light sum
  * (and mask), with what the light sum needs of the frame found once per
@@ -287,6 +297,28 @@ int32_t shade_flat_phong_span(const world_t *w, const shade_flat_t *f, const sha
 int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                                const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                                uint8_t *rgb, int32_t *stop);
+
+/* For a plane with SHADE_FLAT_PHONG_POINT (a Phong plane under point and
+ * spot lights), from column x of a run that ends before end, in blocks
+ * of SHADE_SPOT_BLOCK pixels: writes the ambient term to the leading
+ * blocks that no light reaches (shade_spot_block_out, as
+ * shade_flat_spot_blocks), then returns the first column not written and
+ * in *stop the end of the blocks that follow it of one kind: with
+ * *lambert, blocks where every light's specular term is surely 0
+ * (shade_phong_block_zero), which the caller shades with
+ * shade_flat_plane_pixels (the Lambert sum, the same value); without,
+ * blocks that need the term, which it shades pixel by pixel
+ * (shade_flat_k). The caller calls again from *stop while it is below
+ * end; the deep calls run outside this frame (the M0's 2 KB stack). */
+int32_t shade_flat_phong_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                                const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                uint8_t *rgb, int32_t *stop, bool *lambert);
+/* Pixels x .. end - 1 of a run on plane f, each with the Lambert light sum
+ * of shade_flat_plane (no specular term), written as
+ * shade_flat_plane_run writes them. */
+void shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
+                             const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
+                             uint8_t *rgb);
 
 /* A camera ray's point on the plane of a FLAT form's object with unit
  * normal n, from the ray's origin o and its direction r of any length

@@ -17,13 +17,19 @@
  * direction per pixel. Float and double keep the unit direction: their
  * raw path measured 1-2 % dearer on the M4F (a root and a division are
  * an instruction each there, and x^k never underflows to 0). A smooth
- * triangle needs it (its normal's side test). */
+ * triangle needs it (its normal's side test). A Phong plane does not, in
+ * any number type: its light sum (shade_lights_plane) takes the raw
+ * direction, and its hit point is the one shade_flat_point makes for the
+ * plane's runs (light/shade.c, shade_flat_phong_blocks), so that a run's
+ * pixels and one pixel at a time agree. */
 static inline __attribute__((always_inline)) bool shade_needs_unit(const world_t *w, const geom_common_t *obj,
                                                                    geom_kind_t kind, uint16_t index)
 {
     FXRT_IF_SMOOTH(FXRT_IF_TRIANGLE(if (kind == GEOM_TRIANGLE && w->triangles[index].smooth) return true;))
     (void)w, (void)index;
     uint8_t m = obj->mat.kind;
+    if (kind == GEOM_PLANE && m == MATERIAL_PHONG)
+        return false;
     return m != MATERIAL_FLAT && m != MATERIAL_LAMBERT &&
            !(NUM_EXACT && m == MATERIAL_PHONG && obj->mat.exponent > NUM_POW_ZERO_K && ((GEOM_FLAT_KINDS >> kind) & 1u));
 }
@@ -32,18 +38,20 @@ static inline __attribute__((always_inline)) bool shade_needs_unit(const world_t
 color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
                      const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k,
                      uint8_t *mask);
-/* The light loop of a Lambert plane (light/shade.c): n . l from the
- * plane's height over it. */
+/* The light loop of a Lambert or Phong plane (light/shade.c): n . l from
+ * the plane's height over it, and Phong's r . e without l. */
 color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *p,
                            const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
-/* shade_lights, or shade_lights_plane for a Lambert plane (k not NULL). */
+/* shade_lights, or shade_lights_plane for a Lambert or Phong plane (k not
+ * NULL). */
 static inline __attribute__((always_inline)) color_t shade_lights_of(const world_t *w, const geom_common_t *obj,
                                                                      geom_kind_t kind, uint16_t index GEOM_PART_PARAM,
                                                                      const vec3_t *p, const vec3_t *n_geo,
                                                                      int8_t facing, const vec3_t *d,
                                                                      const shade_k_t *k, uint8_t *mask)
 {
-    if (kind == GEOM_PLANE && obj->mat.kind == MATERIAL_LAMBERT && k)
+    if (kind == GEOM_PLANE && k &&
+        (obj->mat.kind == MATERIAL_LAMBERT || (FXRT_PHONG && obj->mat.kind == MATERIAL_PHONG)))
         return shade_lights_plane(w, obj, index, p, n_geo, facing, d, k, mask);
     return shade_lights(w, obj, kind, index GEOM_PART_ARG(part), p, n_geo, facing, d, k, mask);
 }

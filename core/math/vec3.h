@@ -81,6 +81,13 @@ static inline num_t vec3_l1(vec3_t a)
 {
     return num_add(num_abs(a.x), num_add(num_abs(a.y), num_abs(a.z)));
 }
+/* max(|a.x|, |a.y|, |a.z|), the largest magnitude (saturating in Q16.16). */
+static inline num_t vec3_linf(vec3_t a)
+{
+    num_t x = num_abs(a.x), y = num_abs(a.y), z = num_abs(a.z);
+    x = x > y ? x : y;
+    return x > z ? x : z;
+}
 /* a . b rounded once. */
 static inline num_t vec3_dot(vec3_t a, vec3_t b)
 {
