@@ -538,7 +538,8 @@ void shade_plane_heights(const world_t *w, shadow_table_t *t)
 }
 
 /* shade_phong_block_zero's factor s = sqrt(2 / (1 + c')) for exponent k
- * (shade_flat_prep), rounded up: c' = c - 2^-8 in Q16.16, where the term
+ * (once per call of shade_flat_phong_blocks: not kept in the frame's
+ * state, which the micro:bit's RAM holds), rounded up: c' = c - 2^-8 in Q16.16, where the term
  * is 0 for x <= c = 1 - NUM_POW_ZERO_K / k (numw_pow_int; c = 0 for k <=
  * NUM_POW_ZERO_K, where only x <= 0 gives 0), and c' = -2^-12 in float and
  * double, where only x <= 0 does. */
@@ -556,7 +557,6 @@ void shade_flat_prep(shade_flat_t *f, bool all_directional, bool all_spots, bool
     bool plane = f->kind == GEOM_PLANE && k;
     uint8_t m = f->obj->mat.kind;
     bool phong_point = FXRT_PHONG && plane && no_directional && m == MATERIAL_PHONG;
-    f->phong_s = phong_point ? shade_phong_factor(f->obj->mat.exponent) : NUM_ZERO;
     f->pls = plane ? shade_plane_entries(k, f->index) : NULL;
     f->flags = (uint8_t)((plane && m == MATERIAL_LAMBERT ? SHADE_FLAT_LAMBERT : 0) |
                          (plane && all_directional ? SHADE_FLAT_DIRECTIONAL : 0) |
@@ -895,9 +895,10 @@ int32_t shade_flat_phong_blocks(const world_t *w, const shade_flat_t *f, const s
     num_t bound[FXRT_MAX_LIGHTS] = {NUM_ZERO}, sa;
     uint32_t ok = 0;
     unsigned n = w->n_lights;
+    num_t fs = shade_phong_factor(f->obj->mat.exponent);
     cam_row_dir(row, u, fwd, 2 * x - width + 1, ray); /* (ray->o: the eye) */
     for (unsigned i = 0; i < n; i++)
-        ok |= (uint32_t)shade_phong_mirror(w, f->index, &w->lights[i], &ray->o, f->phong_s, &lm[i], &bound[i]) << i;
+        ok |= (uint32_t)shade_phong_mirror(w, f->index, &w->lights[i], &ray->o, fs, &lm[i], &bound[i]) << i;
     vec3_t pa = shade_plane_point_at(f, row, u, fwd, width, x, false, &sa, ray);
     int32_t start = x;
     int kind = BLOCK_NEED;
@@ -968,11 +969,12 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
 #define SHADE_PHONG_RUN_LIGHTS 2
 
 /* Float and double (shade_flat_phong_span): is the specular term of r
- * surely 0 at the pixel of raw direction d, whose light sum takes r . e
- * = -(r . d') from the normalised d' (shade_flat_k)? Where -(r . d) lies
- * below -2^-16 |r|_1 |d|_1: d' and the dot products round within 2^-20
- * |r|_1 relative to |d| (float; far less in double), so -(r . d') < 0
- * there too, and shade_specular adds nothing. */
+ * surely 0 at the pixel of raw direction d, whose light sum takes a =
+ * -(r . d) along the same d (shade_flat_k, shade_specular_at)? Where
+ * -(r . d) lies below -2^-16 |r|_1 |d|_1: the light sum's r is this r
+ * (the same n . l), and its dot product the same value, so a < 0 there
+ * and shade_specular adds nothing; the margin keeps the test from
+ * hanging on the dot product's rounding. */
 static inline bool shade_phong_none(const vec3_t *r, const vec3_t *d)
 {
     return -vec3_dot(*r, *d) < -(num_t)(1.0 / 65536) * vec3_l1(*r) * vec3_l1(*d);

@@ -229,10 +229,9 @@ typedef struct {
      * SHADE_FLAT_PHONG_DIR for a Phong plane (in Q16.16 of exponent k >
      * 12) when every light is directional (shade_flat_phong_span), and
      * SHADE_FLAT_PHONG_POINT for a Phong plane when no light is
-     * directional (shade_flat_phong_blocks), with phong_s its factor. */
+     * directional (shade_flat_phong_blocks). */
     uint8_t flags;
     const shade_plane_light_t *pls;
-    num_t phong_s;
 } shade_flat_t;
 enum {
     SHADE_FLAT_LAMBERT = 1,
