@@ -114,6 +114,15 @@ for seed in $(seq 1 60); do
         }' >"$out/$name.scene"
     scenes+=("$out/$name.scene")
 done
+# The random plane scenes' awk: u(a, b) uniform, and no spheres on the
+# plane (radius up to a tenth of the scale s, within s / 2 of the origin).
+AWK_PLANES='function u(a, b) { return a + (b - a) * rand() }
+function spheres(no, s,   i, r) {
+    for (i = 0; i < no; i++) {
+        r = u(0.05, 0.6) * s / 6
+        printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", u(-s, s) / 2, u(0, 1.5) * s / 6 + r, u(-s, s) / 2, r
+    }
+}'
 # Random planes under spot lights only (1 or 2 spots of 3 to 80 degrees,
 # near the plane or far, aimed down at random; a Lambert or a Phong
 # plane, level or tilted; a camera of 10 to 150 degrees, near or far):
@@ -121,7 +130,7 @@ done
 # shade_flat_spot_blocks) against the pixel-by-pixel light sum.
 for seed in $(seq 1 24); do
     name=spots-$seed
-    awk -v seed="$seed" 'function u(a, b) { return a + (b - a) * rand() }
+    awk -v seed="$seed" "$AWK_PLANES"'
         BEGIN { srand(seed + 500); s = seed % 4 == 0 ? 200 : 6
             print "image 96 72"
             print "background 0.1 0.1 0.2"
@@ -134,10 +143,7 @@ for seed in $(seq 1 24); do
             mat = seed % 2 ? "material lambert" : sprintf("material phong specular %.2f %.2f %.2f exponent %d", u(0, 1), u(0, 1), u(0, 1), int(u(1, 200)))
             printf "plane point 0 0 0 normal %.4f 1 %.4f color %.3f %.3f %.3f %s\n", seed % 3 ? 0 : u(-0.4, 0.4), seed % 3 ? 0 : u(-0.4, 0.4), u(0, 1), u(0, 1), u(0, 1), mat
             no = 1 + int(rand() * 4)
-            for (i = 0; i < no; i++) {
-                r = u(0.05, 0.6) * s / 6
-                printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", u(-s, s) / 2, u(0, 1.5) * s / 6 + r, u(-s, s) / 2, r
-            }
+            spheres(no, s)
         }' >"$out/$name.scene"
     scenes+=("$out/$name.scene")
 done
@@ -149,7 +155,7 @@ done
 # the Lambert sum there) against the pixel-by-pixel Phong sum.
 for seed in $(seq 1 40); do
     name=phong-points-$seed
-    awk -v seed="$seed" 'function u(a, b) { return a + (b - a) * rand() }
+    awk -v seed="$seed" "$AWK_PLANES"'
         BEGIN { srand(seed + 900); s = seed % 5 == 0 ? 300 : 6
             print "image 96 72"
             print "background 0.1 0.1 0.2"
@@ -167,10 +173,7 @@ for seed in $(seq 1 40); do
             k = rand() < 0.2 ? 1 + int(rand() * 12) : int(u(13, 1000))
             printf "plane point 0 %.4f 0 normal %.4f 1 %.4f color %.3f %.3f %.3f material phong specular %.2f %.2f %.2f exponent %d\n", seed % 4 ? 0 : u(-1, 1), seed % 3 ? 0 : u(-0.6, 0.6), seed % 3 ? 0 : u(-0.6, 0.6), u(0, 1), u(0, 1), u(0, 1), u(0, 1), u(0, 1), u(0, 1), k
             no = int(rand() * 4)
-            for (i = 0; i < no; i++) {
-                r = u(0.05, 0.6) * s / 6
-                printf "sphere center %.4f %.4f %.4f radius %.4f color 0.2 0.6 0.9 material lambert\n", u(-s, s) / 2, u(0, 1.5) * s / 6 + r, u(-s, s) / 2, r
-            }
+            spheres(no, s)
         }' >"$out/$name.scene"
     scenes+=("$out/$name.scene")
 done

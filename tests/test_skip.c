@@ -746,12 +746,7 @@ static void test_raw_phong(void)
  * (shade_flat_phong_blocks' blocks without a specular term): recorded by
  * the wrapped shade_flat_plane_pixels, called from frame/render_shade.c. */
 static uint8_t lambert_px[W * H];
-void __real_shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
-                                    const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
-                                    uint8_t *rgb);
-void __wrap_shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
-                                    const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
-                                    uint8_t *rgb);
+__typeof__(shade_flat_plane_pixels) __real_shade_flat_plane_pixels, __wrap_shade_flat_plane_pixels;
 void __wrap_shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                                     const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                                     uint8_t *rgb)
