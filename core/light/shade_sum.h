@@ -39,7 +39,7 @@ color_t shade_lights(const world_t *w, const geom_common_t *obj, geom_kind_t kin
                      const vec3_t *p, const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k,
                      uint8_t *mask);
 /* The light loop of a Lambert or Phong plane (light/shade.c): n . l from
- * the plane's height over it, and Phong's r . e without l. */
+ * the plane's height over it, and a Phong term's l from the same 1 / |v|. */
 color_t shade_lights_plane(const world_t *w, const geom_common_t *obj, uint16_t index, const vec3_t *p,
                            const vec3_t *n_geo, int8_t facing, const vec3_t *d, const shade_k_t *k, uint8_t *mask);
 /* shade_lights, or shade_lights_plane for a Lambert or Phong plane (k not
