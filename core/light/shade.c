@@ -762,6 +762,20 @@ static inline __attribute__((always_inline)) void shade_plane_pixels(const world
     }
 }
 
+/* A block x..last that no light reaches: the ambient term, the light
+ * sum's value there, to each pixel (shade_flat_spot_blocks,
+ * shade_flat_phong_blocks); returns last + 1. */
+static inline int32_t shade_block_ambient(const shade_k_t *k, uint8_t *rgb, int32_t x, int32_t last)
+{
+    FXRT_COUNT(spot_blocks);
+    rgb8_t v = color_to_rgb8(k->ambient);
+    for (; x <= last; x++) {
+        FXRT_COUNT(shaded);
+        color_put_pixel(rgb, x, v);
+    }
+    return x;
+}
+
 int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const shade_k_t *k, const cam_row_t *row,
                                const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                                uint8_t *rgb, int32_t *stop)
@@ -789,12 +803,7 @@ int32_t shade_flat_spot_blocks(const world_t *w, const shade_flat_t *f, const sh
             *stop = last + 1;
             return x;
         }
-        FXRT_COUNT(spot_blocks);
-        rgb8_t v = color_to_rgb8(k->ambient);
-        for (; x <= last; x++) {
-            FXRT_COUNT(shaded);
-            color_put_pixel(rgb, x, v);
-        }
+        x = shade_block_ambient(k, rgb, x, last);
     }
     *stop = end;
     return end;
@@ -918,13 +927,7 @@ int32_t shade_flat_phong_blocks(const world_t *w, const shade_flat_t *f, const s
             pa = pb;
         }
         if (start == x && b == BLOCK_OUT) { /* nothing pending: the ambient term at once */
-            FXRT_COUNT(spot_blocks);
-            rgb8_t v = color_to_rgb8(k->ambient);
-            for (; x <= last; x++) {
-                FXRT_COUNT(shaded);
-                color_put_pixel(rgb, x, v);
-            }
-            start = x;
+            start = x = shade_block_ambient(k, rgb, x, last);
             continue;
         }
         if (start < x && b != kind)
