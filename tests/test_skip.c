@@ -566,8 +566,12 @@ static void test_plane_heights(void)
         CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
         render(&cam, false);
         uint32_t rays = fxrt_stats.shadow_rays;
-        CHECK_MSG(fxrt_stats.l_normalised == (uint32_t)plane, "%s plane: %u light vectors for %ld pixels",
-                  phong ? "phong" : "lambert", (unsigned)fxrt_stats.l_normalised, plane);
+        /* a pixel from its run's forms (light/shade.c, shade_plane_forms)
+         * takes no light vector, and there are some */
+        CHECK_MSG(fxrt_stats.l_normalised + fxrt_stats.plane_forms == (uint32_t)plane &&
+                      fxrt_stats.plane_forms > (uint32_t)plane / 8,
+                  "%s plane: %u light vectors and %u pixels from forms for %ld pixels", phong ? "phong" : "lambert",
+                  (unsigned)fxrt_stats.l_normalised, (unsigned)fxrt_stats.plane_forms, plane);
         CHECK_MSG(rays > 0 && rays < (uint32_t)plane / 2, "%u shadow rays for %ld plane pixels", (unsigned)rays, plane);
         if (phong) {
             /* each pixel outside the blocks makes l once, with or without a shadow ray */
@@ -591,7 +595,7 @@ static void test_plane_heights(void)
  * hit point is not made: counted (plane_points) against the plane's
  * pixels and shadow rays, for a lambert and a phong plane. The frame is
  * checked against the general path, which the same world takes with a
- * black point light added (it adds exactly 0 to every channel): the
+ * black spot light added (it adds exactly 0 to every channel): the
  * same pixels, and a hit point at every plane pixel; the lambert plane's
  * colour and mask also against their value computed here in double. */
 static uint8_t img_general[W * H * 3];
@@ -609,8 +613,8 @@ static void directional_world(int phong, int mode, bool black_point)
     CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(0.2, 1, 0.1), V(0), FRAC(1, 1, 1), true) == 1);
     if (mode == 2)
         CHECK(world_add_light(&world, LIGHT_POINT, P(-3, 5, 2), P(0, 0, 0), V(0), FRAC(0.3, 0.3, 0.3), false) == 2);
-    if (black_point)
-        CHECK(world_add_light(&world, LIGHT_POINT, P(2, 6, -1), P(0, 0, 0), V(0), FRAC(0, 0, 0), false) >= 2);
+    if (black_point) /* a spot: no run's forms either (shade_plane_forms) */
+        CHECK(world_add_light(&world, LIGHT_SPOT, P(2, 6, -1), P(0, -1, 0), V(80), FRAC(0, 0, 0), false) >= 2);
 }
 static void test_directional_plane(void)
 {
@@ -627,7 +631,7 @@ static void test_directional_plane(void)
             render(&cam, true);
             long plane = count_id(0), lit0 = 0, same = 0;
             CHECK_MSG(plane > W * H / 4, "plane covers %ld pixels", plane);
-            CHECK_MSG(general_pts == (uint32_t)plane, "%s, with a black point light: %u hit points for %ld pixels",
+            CHECK_MSG(general_pts == (uint32_t)plane, "%s, with a black spot light: %u hit points for %ld pixels",
                       mat, (unsigned)general_pts, plane);
             /* Light 0 alone, without shadows: c_d (.) (c_a + c_l n . l) per channel, l = -dir unit. */
             double ndl = 1.0 / sqrt(0.09 + 1.0 + 0.04), cd[3] = {0.55, 0.7, 0.35}, ca[3] = {0.25, 0.3, 0.35},
@@ -662,9 +666,10 @@ static void test_directional_plane(void)
                 CHECK_MSG(lit0 < plane && rays > 0 && pts >= rays && pts < (uint32_t)plane / 2,
                           "%s, directional, shadows on: %u hit points for %u shadow rays, %ld plane pixels (%ld lit)",
                           mat, (unsigned)pts, (unsigned)rays, plane, lit0);
-            else
-                CHECK_MSG(pts == (uint32_t)plane, "%s, and a point light: %u hit points for %ld plane pixels", mat,
-                          (unsigned)pts, plane);
+            else /* (a lambert plane's runs from their forms: no hit point) */
+                CHECK_MSG(pts + fxrt_stats.plane_forms == (uint32_t)plane && (phong || fxrt_stats.plane_forms > 0),
+                          "%s, and a point light: %u hit points and %u pixels from forms for %ld plane pixels", mat,
+                          (unsigned)pts, (unsigned)fxrt_stats.plane_forms, plane);
             /* In runs (FXRT_SHADE_RUNS), a lambert plane's run under
              * directional lights with no shadow ray on its row takes one
              * light sum, not one per pixel: at most a few per row. */
@@ -850,6 +855,61 @@ static void test_phong_blocks(void)
            NUM_NAME, taken, plane_px, 100.0 * taken / plane_px, with_term, -worst);
 }
 
+/* A Lambert plane's run under point (and directional) lights that need no
+ * shadow ray takes n . l from the run's forms, without a hit point
+ * (light/shade.c, shade_plane_forms), and a pixel whose colour lies near
+ * a step of its 8-bit value from the hit point's path: the frame must be
+ * the one the pixel-by-pixel path gives (the same world rendered with
+ * keys, which takes no runs), byte for byte, over 60 random scenes
+ * (tilted planes of any colour, 1 to 3 point lights near, far, low and
+ * below the plane, with shadows on or off, a directional light in some, a
+ * sphere in some: rows that need shadow rays; cameras near and far). And
+ * the forms must take most of the plane: the guard's band is narrow. */
+static uint8_t img_pixels[W * H * 3];
+static void test_plane_forms(void)
+{
+    long plane_px = 0, formed = 0, diff = 0;
+    for (int seed = 0; seed < 60; seed++) {
+        cam_t cam;
+        double ex = rnd(-8, 8), ey = seed % 6 == 0 ? rnd(0.3, 1) : rnd(1, 9), ez = rnd(-8, 8);
+        CHECK(fxrt_camera_perspective(&cam, P(ex, ey, ez), P(rnd(-2, 2) - ex, -ey, rnd(-2, 2) - ez), P(0, 1, 0),
+                                      V(rnd(25, 110)), W, H) == FXRT_OK);
+        fxrt_world_init(&world, COL(0.1, 0.1, 0.2));
+        world_set_ambient(&world, FRAC(rnd(0, 0.3), rnd(0, 0.3), rnd(0, 0.3)));
+        bool tilt = seed % 3 == 0;
+        int32_t pid = world_add_plane(&world, P(0, rnd(-0.5, 0.5), 0),
+                                      P(tilt ? rnd(-0.6, 0.6) : 0, 1, tilt ? rnd(-0.6, 0.6) : 0),
+                                      COL(rnd(0, 1), rnd(0, 1), rnd(0, 1)));
+        lit(pid, MATERIAL_LAMBERT, 1);
+        int nl = 1 + seed % 3;
+        for (int i = 0; i < nl; i++) {
+            double h = seed % 7 == 3 && i == 0 ? -rnd(0.5, 3) : seed % 5 == 1 ? rnd(0.1, 0.5) : rnd(0.5, 12);
+            CHECK(world_add_light(&world, LIGHT_POINT, P(rnd(-9, 9), h, rnd(-9, 9)), P(0, 0, 0), V(0),
+                                  FRAC(rnd(0.1, 1), rnd(0.1, 1), rnd(0.1, 1)), seed % 4 == 0) == i);
+        }
+        if (seed % 3 == 1)
+            CHECK(world_add_light(&world, LIGHT_DIRECTIONAL, P(0, 0, 0), P(rnd(-1, 1), -1, rnd(-1, 1)), V(0),
+                                  FRAC(rnd(0.1, 0.6), rnd(0.1, 0.6), rnd(0.1, 0.6)), seed % 2 == 0) == nl);
+        if (seed % 5 == 2)
+            CHECK(world_add_sphere(&world, P(rnd(-2, 2), rnd(0.5, 2), rnd(-2, 2)), V(rnd(0.3, 1)),
+                                   COL(0.5, 0.5, 0.5)) >= 0);
+        render(&cam, true);
+        memcpy(img_pixels, img, sizeof img);
+        long px = count_id((uint16_t)pid);
+        plane_px += px;
+        render(&cam, false);
+        formed += fxrt_stats.plane_forms;
+        CHECK_MSG(fxrt_stats.plane_forms <= (uint32_t)px, "plane forms, seed %d: %u pixels from forms of %ld", seed,
+                  (unsigned)fxrt_stats.plane_forms, px);
+        for (int i = 0; i < W * H * 3; i++)
+            diff += img[i] != img_pixels[i];
+    }
+    CHECK_MSG(diff == 0, "plane forms: %ld channels differ from the pixel-by-pixel path", diff);
+    CHECK_MSG(formed * 2 > plane_px, "plane forms: %ld of %ld plane pixels from forms", formed, plane_px);
+    printf("plane forms (%s): %ld of %ld plane pixels from the runs' forms (%.0f %%); %ld channels differ from "
+           "pixel by pixel\n", NUM_NAME, formed, plane_px, 100.0 * formed / plane_px, diff);
+}
+
 int main(void)
 {
     test_bounds();
@@ -865,6 +925,7 @@ int main(void)
     test_spot();
     test_spot_blocks();
     test_phong_blocks();
+    test_plane_forms();
     test_flat();
     return check_report("test_skip_" NUM_NAME);
 }

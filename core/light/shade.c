@@ -762,6 +762,298 @@ static inline __attribute__((always_inline)) void shade_plane_pixels(const world
     }
 }
 
+/* A plane's n . l along a run (shade_plane_forms). On a run the camera
+ * ray is d(k) = d_0 + 2 k u at the run's k-th pixel (cam_row_dir), and
+ * its hit point is p = e + t d with t = h_e / q, h_e = n . (a - e), q = n
+ * . d. A point light at L then has L - p = W / q with W = g q - d h_e
+ * (g = L - e): linear in k, since q is. So n . l = h_L / |L - p| = |h_L|
+ * |q| / |W| (h_L = n . (L - a), turned to the side seen), with no hit
+ * point, and |W|^2 is a quadratic in k. Q16.16: q and h_e (exact wide
+ * dot products) are scaled by one 2^-rho into 31 bits, q stepped as q0 +
+ * k dq (both rounded: within (1 + k) / 2 of the exact q 2^-rho); W, formed
+ * from those in exact 64-bit products, is linear in k, and scaled by
+ * 2^-sigma into 30 bits: W~(k) = W~0 + k D~ (each rounded: within (1 + k)
+ * / 2 per component), whose |W~|^2 = P is stepped exactly by its
+ * differences; n . l = |h_L| |q| 2^-sigma / sqrt(P) in raw units
+ * (fx_mul_rsqrt64). The point W / q stands for lies on the camera ray at
+ * t = h_e' / q', off p by |p - e| (r_q + r_h) (their relative errors);
+ * the set-up asks that this be below 2^-14 |h_L|, and that W~'s own
+ * error be below 2^-16 |W~| (|W| >= |q| |h_L| (1 - 2^-14)): n . l within
+ * a few LSB (delta, per light and run). Float and double make q and W at
+ * each pixel from its ray (no stepping).
+ * The frame stays the one the hit point's path gives (pixel by pixel,
+ * shade_plane_sum): the two values of n . l lie within delta of each
+ * other, so the colours within sum kd delta (and the products' rounding)
+ * per channel; a pixel whose colour lies that near a step of its 8-bit
+ * value (c + 1/2 an integer) is made again on that path (a few % of
+ * them). Runs where a light needs a shadow ray (a point or directional
+ * light with shadows, off the row's SHADOW_ROW_CLEAR), a spot,
+ * coordinates of 4096 or more, or (Q16.16) any bound fails go pixel by
+ * pixel. */
+enum { SHADE_FORM_NONE, SHADE_FORM_CONST, SHADE_FORM_POINT };
+
+/* The plane's point a, or NULL (no planes). */
+static const vec3_t *shade_plane_a(const world_t *w, uint16_t index)
+{
+    FXRT_IF_PLANE(return &w->planes[index].a;)
+    (void)w, (void)index;
+    return NULL;
+}
+
+/* Per number type: shade_form_t (a light's form), shade_form_run_t (the
+ * run's), shade_forms_begin (the set-up for pixels x..end-1, from the
+ * first pixel's ray; false where a bound fails), shade_forms_at (pixel
+ * x's values), shade_form_ndl (a point light's n . l there, and its step
+ * to the next pixel) and shade_forms_next (the run's step). */
+#if FXRT_NUMBER == FXRT_Q16
+typedef struct {
+    uint8_t how;        /* SHADE_FORM_ */
+    int8_t e;           /* |h_L|'s exponent less sigma */
+    uint32_t hm;        /* |h_L|'s mantissa (fx_mant_t) */
+    num_t ndl;          /* SHADE_FORM_CONST: a directional light's n . l */
+    num_t delta;        /* SHADE_FORM_POINT: bound on |n . l - the hit point's| */
+    int64_t P, dP, ddP; /* |W~(k)|^2 and its differences */
+} shade_form_t;
+typedef struct {
+    int32_t q, dq; /* |q'| at the current pixel, and its step */
+} shade_form_run_t;
+
+static int shade_bits_linf(vec3_t v) { return fx_bits64(vec3_linf(v)); }
+
+static bool shade_forms_begin(const world_t *w, const shade_plane_light_t *pls, const vec3_t *n, const vec3_t *a,
+                              const cam_row_t *row, const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x,
+                              int32_t end, const ray_t *ray, shade_form_t *fm, shade_form_run_t *run)
+{
+    const vec3_t *d0 = &ray->d, *e = &ray->o;
+    ray_t r1;
+    cam_row_dir(row, u, fwd, 2 * (end - 1) - width + 1, &r1);
+    const vec3_t *de = &r1.d;
+    int32_t K = end - x;
+    int64_t Q0 = vec3_dotw_unit(*d0, *n), Qe = vec3_dotw_unit(*de, *n), Qs = 2 * vec3_dotw_unit(*u, *n);
+    int64_t He = vec3_dotw_unit(vec3_sub(*a, *e), *n);
+    if (Q0 == 0 || Qe == 0 || (Q0 < 0) != (Qe < 0) || He == 0 || (He < 0) != (Q0 < 0))
+        return false;
+    int b0 = fx_bits64(Q0), be = fx_bits64(Qe), bh = fx_bits64(He);
+    int rho = (b0 > be ? b0 : be) > bh ? (b0 > be ? b0 : be) : bh;
+    rho = rho > 30 ? rho - 30 : 0;
+    int64_t q = fx_shr_round64(Q0, rho), s = fx_shr_round64(Qs, rho), h = fx_shr_round64(He, rho);
+    int64_t qe = q + (int64_t)(K - 1) * s;
+    if (q == 0 || qe == 0 || (q < 0) != (qe < 0) || (qe < 0 ? -qe : qe) >= ((int64_t)1 << 31))
+        return false;
+    int bq = fx_bits64((q < 0 ? -q : q) < (qe < 0 ? -qe : qe) ? q : qe), bK = fx_bits64(K + 1);
+    /* |p - e| < 2^lpe at both ends (|d|_inf |h_e| / |q| 2^-16, and sqrt(3)) */
+    int l0 = shade_bits_linf(*d0) + bh - b0, l1 = shade_bits_linf(*de) + bh - be;
+    int lpe = (l0 > l1 ? l0 : l1) + 2 - 16;
+    int rq = bK - bq > 1 - fx_bits64(h) ? bK - bq : 1 - fx_bits64(h); /* log2 of r_q + r_h, less 1 */
+    if (lpe > 12)
+        return false;
+    for (unsigned i = 0; i < w->n_lights; i++) {
+        if (fm[i].how != SHADE_FORM_POINT)
+            continue;
+        int32_t hm = fx_mant_m(pls[i].h.h);
+        int eh = fx_mant_e(pls[i].h.h);
+        /* |h_L| >= 2^(eh - 8) units (|hm| >= 2^24, Q32.32) */
+        if (eh - 8 < -4 || rq + 1 + lpe > eh - 8 - 14)
+            return false;
+        vec3_t g = vec3_sub(w->lights[i].position, *e);
+        const int32_t G[3] = {g.x, g.y, g.z}, D0[3] = {d0->x, d0->y, d0->z}, De[3] = {de->x, de->y, de->z},
+                      U[3] = {u->x, u->y, u->z};
+        int64_t W0[3], Wd[3];
+        int bw = 0;
+        for (int c = 0; c < 3; c++) {
+            W0[c] = (int64_t)G[c] * q - (int64_t)D0[c] * h;
+            int64_t We = (int64_t)G[c] * qe - (int64_t)De[c] * h;
+            Wd[c] = (int64_t)G[c] * s - 2 * ((int64_t)U[c] * h);
+            int b = fx_bits64(W0[c]) > fx_bits64(We) ? fx_bits64(W0[c]) : fx_bits64(We);
+            bw = b > bw ? b : bw;
+        }
+        int sigma = bw > 29 ? bw - 29 : 0;
+        /* |W~(k)| >= 2^(bq - 1 + 24 + eh - 16 - 1 - sigma); its error < 2^bK */
+        if (bq + eh + 6 - sigma < bK + 16)
+            return false;
+        int64_t P = 0, dP = 0, dd = 0;
+        for (int c = 0; c < 3; c++) {
+            int64_t w0 = fx_shr_round64(W0[c], sigma), wd = fx_shr_round64(Wd[c], sigma);
+            P += w0 * w0;
+            dP += 2 * w0 * wd + wd * wd;
+            dd += 2 * wd * wd;
+        }
+        fm[i].P = P, fm[i].dP = dP, fm[i].ddP = dd;
+        fm[i].hm = fx_uabs32(hm);
+        fm[i].e = (int8_t)(eh - sigma);
+        /* Here 0.6 LSB and 2^16 (2^ef + 2^ew) (ef, ew: the two relative
+         * bounds above); the hit point's path 0.5 LSB + 2^-23 relative
+         * (fx_inv3_mul) and n . l / |L - p| <= 1 / |h_L| LSB for its point
+         * (within 0.5 LSB + 2^-29 |p - e| per component of the exact
+         * hit, shade_flat_point: 1 LSB here), doubled. */
+        int ef = rq + 1 + lpe - (eh - 8) + 16, ew = bK - (bq + eh + 6 - sigma) + 16;
+        fm[i].delta = 2 + (ef > 0 ? (num_t)1 << ef : 1) + (ew > 0 ? (num_t)1 << ew : 1) +
+                      (eh < 9 ? (num_t)1 << (9 - eh) : 1);
+    }
+    run->q = (int32_t)(q < 0 ? -q : q);
+    run->dq = (int32_t)(q < 0 ? -s : s);
+    return true;
+}
+static inline void shade_forms_at(shade_form_run_t *run, int32_t x) { (void)run, (void)x; }
+static inline num_t shade_form_ndl(shade_form_t *m, const shade_form_run_t *run)
+{
+    num_t ndl = fx_mul_rsqrt64(m->hm, (uint32_t)run->q, m->e, (uint64_t)m->P);
+    m->P += m->dP;
+    m->dP += m->ddP;
+    return ndl;
+}
+static inline void shade_forms_next(shade_form_run_t *run) { run->q += run->dq; }
+/* Lies channel value c within lim of a step of color_channel (c + 1/2 an
+ * integer)? */
+static inline bool shade_form_near(num_t c, num_t lim)
+{
+    uint32_t t = ((uint32_t)c + 0x8000u) & 0xffffu;
+    return (num_t)(t < 0x8000u ? t : 0x10000u - t) <= lim;
+}
+/* A light's share of the colour's bound: kd delta, and the product's
+ * rounding (1 LSB in the two paths). */
+static inline num_t shade_form_share(num_t kd, num_t delta) { return kd ? (num_t)(((int64_t)kd * delta) >> 16) + 2 : 0; }
+#else
+/* Float and double: each path's n . l within SHADE_FORM_K (|e|_1 + |L|_1 +
+ * 2 |p - e|_1 + 1) / |h_L| + K of the exact value (the products' and
+ * sums' rounding, 2^-24 or 2^-53 of the magnitudes, many times over),
+ * |h_L| >= 1/16. */
+#define SHADE_FORM_K (FXRT_NUMBER == FXRT_FLOAT ? (num_t)(1.0 / 131072) : (num_t)(1.0 / 1099511627776.0))
+typedef struct {
+    uint8_t how; /* SHADE_FORM_ */
+    num_t ndl;   /* SHADE_FORM_CONST: a directional light's n . l */
+    num_t delta; /* SHADE_FORM_POINT: bound on |n . l - the hit point's| */
+    vec3_t g;    /* L - e */
+    num_t h;     /* |h_L| */
+} shade_form_t;
+typedef struct {
+    const cam_row_t *row;
+    const vec3_t *u, *fwd, *n;
+    ray_t *ray;
+    int32_t width;
+    num_t he, q, aq; /* h_e, and the current pixel's q and |q| */
+} shade_form_run_t;
+
+static bool shade_forms_begin(const world_t *w, const shade_plane_light_t *pls, const vec3_t *n, const vec3_t *a,
+                              const cam_row_t *row, const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x,
+                              int32_t end, ray_t *ray, shade_form_t *fm, shade_form_run_t *run)
+{
+    run->row = row, run->u = u, run->fwd = fwd, run->n = n, run->ray = ray, run->width = width;
+    run->he = numw_round_fits(vec3_dotw_unit(vec3_sub(*a, ray->o), *n));
+    /* |p - e|_1 at the run's ends (the largest along it) */
+    num_t pe = NUM_ZERO, el = vec3_l1(ray->o);
+    for (int32_t j = 0; j < 2; j++) {
+        ray_t r1;
+        cam_row_dir(row, u, fwd, 2 * (j ? end - 1 : x) - width + 1, &r1);
+        num_t q = numw_round_fits(vec3_dotw_unit(r1.d, *n));
+        if (!(num_abs(q) > NUM_ZERO))
+            return false;
+        num_t t = num_abs(run->he / q) * vec3_l1(r1.d);
+        pe = t > pe ? t : pe;
+    }
+    for (unsigned i = 0; i < w->n_lights; i++)
+        if (fm[i].how == SHADE_FORM_POINT) {
+            fm[i].g = vec3_sub(w->lights[i].position, ray->o);
+            fm[i].h = num_abs(pls[i].h.h);
+            if (!(fm[i].h > NUM(1.0 / 16)))
+                return false;
+            fm[i].delta = SHADE_FORM_K * ((el + vec3_l1(w->lights[i].position) + pe + pe + NUM_ONE) / fm[i].h + NUM_ONE);
+        }
+    return true;
+}
+static inline void shade_forms_at(shade_form_run_t *run, int32_t x)
+{
+    cam_row_dir(run->row, run->u, run->fwd, 2 * x - run->width + 1, run->ray);
+    run->q = numw_round_fits(vec3_dotw_unit(run->ray->d, *run->n));
+    run->aq = num_abs(run->q);
+}
+static inline num_t shade_form_ndl(shade_form_t *m, const shade_form_run_t *run)
+{
+    vec3_t W = vec3_sub(vec3_scale(m->g, run->q), vec3_scale(run->ray->d, run->he));
+    return m->h * run->aq / num_sqrt(vec3_dot(W, W));
+}
+static inline void shade_forms_next(shade_form_run_t *run) { (void)run; }
+static inline bool shade_form_near(num_t c, num_t lim)
+{
+    num_t f = c + (num_t)0.5;
+    num_t t = f - (num_t)(int32_t)f;
+    return !(f >= NUM_ZERO && f < (num_t)65536) || (t < (num_t)0.5 ? t : NUM_ONE - t) <= lim;
+}
+static inline num_t shade_form_share(num_t kd, num_t delta) { return kd != NUM_ZERO ? kd * delta + 256 * SHADE_FORM_K : NUM_ZERO; }
+#endif
+
+/* Plane f's pixels x..end-1 from the run's forms (above): true where it
+ * wrote them, false (nothing written) where the run does not qualify. */
+static __attribute__((noinline)) bool shade_plane_forms(const world_t *w, const shade_flat_t *f, const shade_k_t *k,
+                                                        const cam_row_t *row, const vec3_t *u, const vec3_t *fwd,
+                                                        int32_t width, int32_t x, int32_t end, ray_t *ray,
+                                                        uint8_t *rgb)
+{
+    const shade_plane_light_t *pls = f->pls;
+    const vec3_t *a = shade_plane_a(w, f->index);
+    const num_t lim = NUM(4096);
+    const unsigned nl = w->n_lights;
+    /* First what needs no point: a spot, or a light that needs a shadow
+     * ray on this row (a light behind the side seen would not: rare,
+     * and left to the pixels), or far away. */
+    for (unsigned i = 0; pls && i < nl; i++) {
+        const light_t *L = &w->lights[i];
+        if (L->kind == LIGHT_SPOT || (FXRT_SHADOWS && L->shadows && !(SHADOW_ROWS && (pls[i].row & SHADOW_ROW_CLEAR))) ||
+            (L->kind == LIGHT_POINT && !(vec3_linf(L->position) < lim)))
+            return false;
+    }
+    if (FXRT_BOUND_NO_LIGHT_SUM || !pls || !a || end - x < 2 || !(vec3_linf(*a) < lim) ||
+        shade_plane_run_side(row, u, fwd, f->n, width, x, end, ray) < 0 || !(vec3_linf(ray->o) < lim))
+        return false;
+    const bool inside = vec3_dotw_unit(ray->d, *f->n) > 0; /* (ray: column x's) */
+    shade_form_t fm[FXRT_MAX_LIGHTS] = {{0}};
+    shade_form_run_t run;
+    bool any = false;
+    for (unsigned i = 0; i < nl; i++) {
+        if (w->lights[i].kind == LIGHT_DIRECTIONAL) {
+            numw_sticky_t sd = inside ? -pls[i].h.ndl : pls[i].h.ndl;
+            if (sd <= 0)
+                continue; /* behind the side seen */
+            fm[i].how = SHADE_FORM_CONST;
+            fm[i].ndl = numw_sticky_round(sd);
+        } else if (numw_mant_faces(pls[i].h.h, inside)) { /* (else behind the side seen) */
+            fm[i].how = SHADE_FORM_POINT;
+            any = true;
+        }
+    }
+    if (!any || !shade_forms_begin(w, pls, f->n, a, row, u, fwd, width, x, end, ray, fm, &run))
+        return false;
+    /* How far the colour may lie from the hit point's path's, per channel */
+    color_t near = color_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    for (unsigned i = 0; i < nl; i++)
+        if (fm[i].how == SHADE_FORM_POINT)
+            near = color_make(near.r + shade_form_share(k->kd[i].r, fm[i].delta),
+                              near.g + shade_form_share(k->kd[i].g, fm[i].delta),
+                              near.b + shade_form_share(k->kd[i].b, fm[i].delta));
+    for (; x < end; x++) {
+        shade_forms_at(&run, x);
+        color_t c = k->ambient;
+        for (unsigned i = 0; i < nl; i++) {
+            shade_form_t *m = &fm[i];
+            if (m->how != SHADE_FORM_NONE)
+                c = shade_madd(c, k->kd[i], m->how == SHADE_FORM_CONST ? m->ndl : shade_form_ndl(m, &run));
+        }
+        shade_forms_next(&run);
+        if ((near.r > NUM_ZERO && shade_form_near(c.r, near.r)) || (near.g > NUM_ZERO && shade_form_near(c.g, near.g)) ||
+            (near.b > NUM_ZERO && shade_form_near(c.b, near.b))) {
+            /* near a step of the 8-bit value: the hit point's path, whose
+             * value this is (the frame is the same either way) */
+            cam_row_dir(row, u, fwd, 2 * x - width + 1, ray);
+            c = shade_flat_plane_at(w, f, k, ray, NULL);
+        } else {
+            FXRT_COUNT(shaded);
+            FXRT_COUNT(plane_forms);
+        }
+        color_put_pixel(rgb, x, color_to_rgb8(c));
+    }
+    return true;
+}
+
 /* A block x..last that no light reaches: the ambient term, the light
  * sum's value there, to each pixel (shade_flat_spot_blocks,
  * shade_flat_phong_blocks); returns last + 1. */
@@ -828,6 +1120,8 @@ void shade_flat_plane_pixels(const world_t *w, const shade_flat_t *f, const shad
                              const vec3_t *u, const vec3_t *fwd, int32_t width, int32_t x, int32_t end, ray_t *ray,
                              uint8_t *rgb)
 {
+    if (shade_plane_forms(w, f, k, row, u, fwd, width, x, end, ray, rgb))
+        return;
     shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, false);
 }
 
@@ -964,6 +1258,8 @@ void shade_flat_plane_run(const world_t *w, const shade_flat_t *f, const shade_k
         shade_plane_spot_run(w, f, k, row, u, fwd, width, x, end, ray, rgb);
         return;
     }
+    if (!dir && shade_plane_forms(w, f, k, row, u, fwd, width, x, end, ray, rgb))
+        return;
     shade_plane_pixels(w, f, k, row, u, fwd, width, x, end, ray, rgb, dir);
 }
 

@@ -199,8 +199,10 @@ void shadow_cull_setup(const world_t *w, shadow_table_t *t)
 /* The mask of one row, plane and light: bit s for slot s's object when
  * SHADOW_ROW_FAR(c, r, v) (its bounding sphere c, r, and v = c - ref, the
  * caller's reference point: the light, or the eye), SHADOW_ROW_CLEAR when every
- * bounded object is skipped and the plane is the world's only one (no
- * other plane can block the light either). */
+ * bounded object is skipped (those past slot 30 too, which have no bit:
+ * the same on the host, with its large capacities, as on a board) and
+ * the plane is the world's only one (no other plane can block the light
+ * either). */
 #define SHADOW_ROW_MASK()                                                                                     \
     uint32_t mask = 0;                                                                                        \
     bool all = true;                                                                                          \
@@ -214,8 +216,8 @@ void shadow_cull_setup(const world_t *w, shadow_table_t *t)
         int s = SHADOW_SLOT_##K + i;                                                                          \
         geom_##k##_around(&w->ks[i], &c, &r);                                                                 \
         vec3_t v = vec3_sub(c, ref);                                                                          \
-        bool far = s < SHADOW_ROW_SLOTS && vec3_l1(v) < NUM(16384) && SHADOW_ROW_FAR(c, r, v);              \
-        if (far)                                                                                              \
+        bool far = vec3_l1(v) < NUM(16384) && SHADOW_ROW_FAR(c, r, v);                                      \
+        if (far && s < SHADOW_ROW_SLOTS)                                                                      \
             mask |= 1u << s;                                                                                  \
         all = all && far;                                                                                     \
     }))

@@ -363,6 +363,46 @@ fx_t fx_rsqrt(fx_t a)
 }
 
 
+int fx_bits64(int64_t v)
+{
+    uint64_t a = fx_uabs64(v);
+    return a ? 64 - fx_clz64(a) : 0;
+}
+
+int64_t fx_shr_round64(int64_t v, int s)
+{
+    if (s <= 0)
+        return v;
+    int64_t h = (int64_t)1 << (s - 1);
+    return v >= 0 ? (v + h) >> s : -((h - v) >> s);
+}
+
+/* round(a b 2^e / sqrt(P)) (fx.h): P = m 2^r with m in [2^30, 2^32) and
+ * r even, 1 / sqrt(P) = Y 2^(-46 - r/2) (fx_rsqrt_q46; m keeps P's top
+ * 32 bits: within 2^-31 relative), b shifted up into [2^30, 2^31) (e
+ * down as much), hi = floor(b Y / 2^32) >= 2^28, and the
+ * product a hi shifted by 14 + r/2 - e, rounded once, half up. */
+fx_t fx_mul_rsqrt64(uint32_t a, uint32_t b, int e, uint64_t P)
+{
+    int r = 32 - fx_clz64(P);
+    r += r & 1;
+    uint32_t m = r >= 0 ? (uint32_t)(P >> r) : (uint32_t)(P << -r);
+    if (b == 0)
+        return 0;
+    int z = fx_clz32(b) - 1; /* b in [2^30, 2^31): hi >= 2^28 */
+    b <<= z;
+    e -= z;
+    uint32_t hi = (uint32_t)(fx_umul32(b, fx_rsqrt_q46(m)) >> 32);
+    uint64_t p = fx_umul32(hi, a);
+    int S = 14 + (r >> 1) - e;
+    if (S >= 64)
+        return 0;
+    if (S <= 0)
+        return p ? FX_MAX : 0;
+    p = (p + ((uint64_t)1 << (S - 1))) >> S;
+    return p > (uint64_t)FX_MAX ? FX_MAX : (fx_t)p;
+}
+
 /* fxw_div in two steps: the dividend's magnitude shifted up as far as it
  * goes (k <= 16) and the bits the divisor must lose, 16 - k; then the
  * division. When d must lose bits, the result is either saturated anyway

@@ -356,6 +356,16 @@ fx_t fx_sqrt(fx_t a);
  * Newton steps as fx_sqrt plus one Newton step in three 32x32->64-bit
  * products; no division. */
 fx_t fx_rsqrt(fx_t a);
+/* Significant bits of |v| (0 for 0), and round(v / 2^s) for 0 <= s < 63,
+ * ties away from zero (v itself for s <= 0; |v| < 2^62). */
+int fx_bits64(int64_t v);
+int64_t fx_shr_round64(int64_t v, int s);
+/* round(a b 2^e / sqrt(P)) in raw units for P > 0, a < 2^26, b < 2^31,
+ * saturated at FX_MAX: within 0.5 LSB + 2^-23 relative (the inverse
+ * root's 2^-25, the 32 bits kept of P and of b Y). A plane's n . l along
+ * a run (light/shade.c, shade_plane_forms): the height times |n . d| over
+ * |W| = sqrt(P), P stepped exactly. One inverse root, two products. */
+fx_t fx_mul_rsqrt64(uint32_t a, uint32_t b, int e, uint64_t P);
 
 /* floor(sqrt(n)) for any 64-bit unsigned n (exact). */
 uint32_t fx_isqrt64(uint64_t n);

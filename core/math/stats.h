@@ -27,6 +27,7 @@ typedef struct {
     uint32_t dir_sums;       /* a plane's light sums under directional lights only (light/shade.c: per pixel, or per run) */
     uint32_t spot_blocks;    /* blocks of a plane's run that no spot reaches (light/shade.c: shade_plane_spots_out) */
     uint32_t phong_blocks;   /* blocks of a Phong plane's run without a specular term (light/shade.c: shade_flat_phong_blocks) */
+    uint32_t plane_forms;    /* plane pixels whose n . l came from the run's forms, without a hit point (light/shade.c: shade_plane_forms) */
     uint32_t raw_roots;      /* 1 / |d| made for a Phong term along a raw direction (light/shade.c) */
 } fxrt_stats_t;
 extern fxrt_stats_t fxrt_stats; /* (defined always; unused and dropped by the linker unless FXRT_STATS) */
