@@ -914,10 +914,12 @@ static inline bool shade_form_near(num_t c, num_t lim)
  * rounding (1 LSB in the two paths). */
 static inline num_t shade_form_share(num_t kd, num_t delta) { return kd ? (num_t)(((int64_t)kd * delta) >> 16) + 2 : 0; }
 #else
-/* Float and double: each path's n . l within SHADE_FORM_K (|e|_1 + |L|_1 +
- * 2 |p - e|_1 + 1) / |h_L| + K of the exact value (the products' and
- * sums' rounding, 2^-24 or 2^-53 of the magnitudes, many times over),
- * |h_L| >= 1/16. */
+/* Float and double: each path's n . l = h / |v| (v = L - p, |v| >= h =
+ * |h_L| and |v| >= r - B, r = |p - e|, B = |L - e|) within K h (A + 2 r)
+ * / |v|^2 of the exact value, A = |e|_1 + |L|_1 + 1 (the products' and
+ * sums' rounding, 2^-24 or 2^-53 of the magnitudes they take, many times
+ * over: K = SHADE_FORM_K). Over r that is largest at r = B + h: delta =
+ * K ((A + 2 B + 2 h) / h + 1), whatever the run's length; h >= 1/16. */
 #define SHADE_FORM_K (FXRT_NUMBER == FXRT_FLOAT ? (num_t)(1.0 / 131072) : (num_t)(1.0 / 1099511627776.0))
 typedef struct {
     uint8_t how; /* SHADE_FORM_ */
@@ -940,24 +942,17 @@ static bool shade_forms_begin(const world_t *w, const shade_plane_light_t *pls, 
 {
     run->row = row, run->u = u, run->fwd = fwd, run->n = n, run->ray = ray, run->width = width;
     run->he = numw_round_fits(vec3_dotw_unit(vec3_sub(*a, ray->o), *n));
-    /* |p - e|_1 at the run's ends (the largest along it) */
-    num_t pe = NUM_ZERO, el = vec3_l1(ray->o);
-    for (int32_t j = 0; j < 2; j++) {
-        ray_t r1;
-        cam_row_dir(row, u, fwd, 2 * (j ? end - 1 : x) - width + 1, &r1);
-        num_t q = numw_round_fits(vec3_dotw_unit(r1.d, *n));
-        if (!(num_abs(q) > NUM_ZERO))
-            return false;
-        num_t t = num_abs(run->he / q) * vec3_l1(r1.d);
-        pe = t > pe ? t : pe;
-    }
+    (void)x, (void)end;
+    num_t el = vec3_l1(ray->o);
     for (unsigned i = 0; i < w->n_lights; i++)
         if (fm[i].how == SHADE_FORM_POINT) {
-            fm[i].g = vec3_sub(w->lights[i].position, ray->o);
+            const vec3_t *L = &w->lights[i].position;
+            fm[i].g = vec3_sub(*L, ray->o);
             fm[i].h = num_abs(pls[i].h.h);
             if (!(fm[i].h > NUM(1.0 / 16)))
                 return false;
-            fm[i].delta = SHADE_FORM_K * ((el + vec3_l1(w->lights[i].position) + pe + pe + NUM_ONE) / fm[i].h + NUM_ONE);
+            num_t b = vec3_l1(fm[i].g);
+            fm[i].delta = SHADE_FORM_K * ((el + vec3_l1(*L) + b + b + fm[i].h + fm[i].h + NUM_ONE) / fm[i].h + NUM_ONE);
         }
     return true;
 }
