@@ -250,7 +250,9 @@ FXRT_STATIC_ASSERT(0 <= FXRT_COHERENT_SPHERES && FXRT_COHERENT_SPHERES <= FXRT_M
  *                         get the full light loop)
  *   FXRT_ABLATE_SHADOW_ROWS no per-row shadow masks on planes: every
  *                         shadow ray from a plane takes the per-ray cull
- *                         and the exact tests (light/shadow.c)
+ *                         and the exact tests (light/shadow.c), and no
+ *                         run takes a plane's n . l from its forms where
+ *                         a light casts shadows (light/shade.c)
  *   FXRT_ABLATE_FLAT_NUM  a plane's or triangle's hit numerator (a - e) . n
  *                         computed again at every lit pixel instead of
  *                         once per run of that object's pixels
@@ -310,7 +312,9 @@ FXRT_STATIC_ASSERT(FXRT_SPHERE_SEARCH == 0 || FXRT_SPHERE_SEARCH == 1, "FXRT_SPH
  * lit pixels of a pinhole camera's rows, in a frame without pixel keys
  * (the frame is the same either way):
  *   1 = a run of one object's pixels at once (not a model's): a Lambert
- *       plane's in one call (light/shade.c, shade_flat_plane_run),
+ *       plane's in one call (light/shade.c, shade_flat_plane_run; under
+ *       point lights without a shadow ray, n . l from the run's forms,
+ *       shade_plane_forms, with no hit point),
  *       another's in a loop without the tests each pixel otherwise takes
  *   0 = every pixel through those tests
  * Default: 1, except in double on Armv6-M, the soft-float reference: its
