@@ -768,6 +768,31 @@ static double rnd(double a, double b)
     return a + (b - a) * (double)(rng_state >> 8) / 16777216.0;
 }
 
+/* A random view of a random plane (test_phong_blocks, test_plane_forms):
+ * the eye within reach in x and z, at a height up to high (low_lo to
+ * low_hi for every low_every-th seed), looking down within 2 of the
+ * origin with a field of view in fov_lo..fov_hi degrees; the plane near y
+ * = 0 of any colour, tilted by up to tilt in x and z for every third
+ * seed, in a world of ambient amb. Returns the plane's id. */
+typedef struct {
+    double reach;
+    int low_every;
+    double low_lo, low_hi, high, fov_lo, fov_hi, tilt;
+} plane_view_t;
+static int32_t random_plane(int seed, const plane_view_t *v, color_t amb, cam_t *cam)
+{
+    double ex = rnd(-v->reach, v->reach), ey = seed % v->low_every == 0 ? rnd(v->low_lo, v->low_hi) : rnd(1, v->high),
+           ez = rnd(-v->reach, v->reach);
+    CHECK(fxrt_camera_perspective(cam, P(ex, ey, ez), P(rnd(-2, 2) - ex, -ey, rnd(-2, 2) - ez), P(0, 1, 0),
+                                  V(rnd(v->fov_lo, v->fov_hi)), W, H) == FXRT_OK);
+    fxrt_world_init(&world, COL(0.1, 0.1, 0.2));
+    world_set_ambient(&world, amb);
+    bool tilt = seed % 3 == 0;
+    return world_add_plane(&world, P(0, rnd(-0.5, 0.5), 0),
+                           P(tilt ? rnd(-v->tilt, v->tilt) : 0, 1, tilt ? rnd(-v->tilt, v->tilt) : 0),
+                           COL(rnd(0, 1), rnd(0, 1), rnd(0, 1)));
+}
+
 /* A Phong plane under point lights (light/shade.c,
  * shade_flat_phong_blocks): the runs shade the blocks where every light's
  * specular term is surely 0 with the Lambert sum. An oracle that shares
@@ -788,14 +813,8 @@ static void test_phong_blocks(void)
     double worst = -2;
     for (int seed = 0; seed < 40; seed++) {
         cam_t cam;
-        double ex = rnd(-6, 6), ey = seed % 8 == 0 ? rnd(0.2, 0.6) : rnd(1, 7), ez = rnd(-6, 6);
-        CHECK(fxrt_camera_perspective(&cam, P(ex, ey, ez), P(rnd(-2, 2) - ex, -ey, rnd(-2, 2) - ez), P(0, 1, 0),
-                                      V(rnd(30, 120)), W, H) == FXRT_OK);
-        fxrt_world_init(&world, COL(0.1, 0.1, 0.2));
-        world_set_ambient(&world, FRAC(0.1, 0.1, 0.1));
-        bool tilt = seed % 3 == 0;
-        int32_t pid = world_add_plane(&world, P(0, rnd(-0.5, 0.5), 0), P(tilt ? rnd(-0.5, 0.5) : 0, 1, tilt ? rnd(-0.5, 0.5) : 0),
-                                      COL(rnd(0, 1), rnd(0, 1), rnd(0, 1)));
+        static const plane_view_t view = {6, 8, 0.2, 0.6, 7, 30, 120, 0.5};
+        int32_t pid = random_plane(seed, &view, FRAC(0.1, 0.1, 0.1), &cam);
         int k = seed % 5 == 0 ? 1 + (int)rnd(0, 12) : (int)exp(rnd(log(13.0), log(1000.0)));
         material_t m = {0};
         m.kind = MATERIAL_PHONG;
@@ -871,15 +890,9 @@ static void test_plane_forms(void)
     long plane_px = 0, formed = 0, diff = 0;
     for (int seed = 0; seed < 60; seed++) {
         cam_t cam;
-        double ex = rnd(-8, 8), ey = seed % 6 == 0 ? rnd(0.3, 1) : rnd(1, 9), ez = rnd(-8, 8);
-        CHECK(fxrt_camera_perspective(&cam, P(ex, ey, ez), P(rnd(-2, 2) - ex, -ey, rnd(-2, 2) - ez), P(0, 1, 0),
-                                      V(rnd(25, 110)), W, H) == FXRT_OK);
-        fxrt_world_init(&world, COL(0.1, 0.1, 0.2));
-        world_set_ambient(&world, FRAC(rnd(0, 0.3), rnd(0, 0.3), rnd(0, 0.3)));
-        bool tilt = seed % 3 == 0;
-        int32_t pid = world_add_plane(&world, P(0, rnd(-0.5, 0.5), 0),
-                                      P(tilt ? rnd(-0.6, 0.6) : 0, 1, tilt ? rnd(-0.6, 0.6) : 0),
-                                      COL(rnd(0, 1), rnd(0, 1), rnd(0, 1)));
+        static const plane_view_t view = {8, 6, 0.3, 1, 9, 25, 110, 0.6};
+        color_t amb = FRAC(rnd(0, 0.3), rnd(0, 0.3), rnd(0, 0.3));
+        int32_t pid = random_plane(seed, &view, amb, &cam);
         lit(pid, MATERIAL_LAMBERT, 1);
         int nl = 1 + seed % 3;
         for (int i = 0; i < nl; i++) {
